@@ -1,0 +1,49 @@
+# contact: 2D frictionless penalty contact with PETSc/TAO.
+#   make run    install what is missing, build, mesh, solve the hertz scene
+#   make test   the same set-up, then the test suite
+SHELL := /bin/bash
+CC      = mpicc
+# recursive (=) so that pkg-config runs after install-deps has put PETSc in place
+PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
+PETSC_LIBS   = $(shell pkg-config --libs petsc)
+CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
+LDLIBS  = $(PETSC_LIBS) -lmetis -lm
+SRCS    = $(wildcard src/*.c)
+OBJS    = $(patsubst src/%.c,build/obj/%.o,$(SRCS))
+DEPS_STAMP = build/.deps-installed
+PYTHON ?= python3
+NP ?= 1
+SCENE ?= hertz
+export OMPI_ALLOW_RUN_AS_ROOT = 1
+export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
+export OMPI_MCA_rmaps_base_oversubscribe = 1
+MPIEXEC = mpiexec --oversubscribe -n $(NP)
+
+.PHONY: all deps meshes run test clean
+all: bin/contact
+
+$(DEPS_STAMP): scripts/install-deps.sh
+	@mkdir -p build
+	sh scripts/install-deps.sh
+	@touch $@
+deps: $(DEPS_STAMP)
+
+build/obj/%.o: src/%.c $(wildcard include/*.h) $(DEPS_STAMP)
+	@mkdir -p build/obj
+	$(CC) $(CFLAGS) -c $< -o $@
+
+bin/contact: $(OBJS)
+	@mkdir -p bin
+	$(CC) -o $@ $(OBJS) $(LDLIBS)
+
+meshes: bin/contact
+	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only
+
+run: bin/contact meshes
+	$(MPIEXEC) ./bin/contact -options_file meshes/$(SCENE)/$(SCENE).opts
+
+test: bin/contact meshes
+	$(PYTHON) -m pytest -q tests
+
+clean:
+	rm -rf build bin

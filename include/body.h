@@ -1,0 +1,65 @@
+#pragma once
+#include "contact.h"
+#include "exact.h"
+
+/* A Dirichlet condition: a named physical group, constrained components and values. */
+typedef struct {
+  char      group[CONTACT_NAME_LEN];
+  PetscInt  ncomp, comps[2];
+  PetscReal values[2];
+  PetscBool exact;   /* values from the body's exact solution */
+  PetscInt  tag;     /* Gmsh physical tag */
+  DMLabel   label;   /* faces of the group and their closure */
+  PetscReal reaction[2];
+} BodyBC;
+
+/* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
+   conditions and the per-cell geometry cache used by the element loops. */
+typedef struct _n_Body *Body;
+struct _n_Body {
+  char      name[CONTACT_NAME_LEN];
+  MPI_Comm  comm;
+  char      geo[PETSC_MAX_PATH_LEN], msh[PETSC_MAX_PATH_LEN];
+  PetscReal h;
+  PetscInt  ngeoparams;
+  char     *geoparams[16];
+  PetscReal E, nu, param[2]; /* param = {lambda, mu} */
+  PetscInt  nbc, qdeg;
+  void     *bcctx[CONTACT_MAX_BC][2];
+  BodyBC    bc[CONTACT_MAX_BC];
+  ExactSolution exact;
+  PetscBool hasExact;
+
+  PetscInt  nphys;
+  char    **physNames;
+  PetscInt *physDims, *physTags;
+
+  DM        dm;
+  PetscFE   fe, feScalar;
+  PetscBool simplex;
+  PetscInt  dim, ncells, nb, nq, ncellsGlobal;
+  PetscInt *cdof;  /* [ncells][nb]: local offset of the first component of each node */
+  PetscReal *dNdx; /* [ncells][nq][nb][2] */
+  PetscReal *wdetJ;/* [ncells][nq] */
+  PetscReal *xq;   /* [ncells][nq][2] */
+  PetscReal *xnode;/* [ncells][nb][2] node coordinates */
+  const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
+  Vec       Xg, Gg, Xl, Gl, bcl;
+  PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
+  PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
+  PetscReal energy;
+  PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
+};
+
+PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
+PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride, const char meshDir[]);
+PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
+PetscErrorCode BodyDestroy(Body *);
+PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
+PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
+PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
+PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
+PetscErrorCode BodyAssembleHessian(Body, Mat H);
+PetscErrorCode BodyComputeReactions(Body, Vec Gl);
+PetscErrorCode BodyComputeErrorL2(Body, Vec Xl, PetscReal *err, PetscReal *norm);
+PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, Vec *coords, Vec *disp, Vec *stress, Vec *vonmises, IS *topology);

@@ -1,0 +1,24 @@
+#pragma once
+/* Shared types of the contact solver: one Body per elastic body, a Problem that
+   joins the bodies (and later contact terms) into one TAO unknown. */
+#include <petscdmplex.h>
+#include <petsctao.h>
+
+#define CONTACT_MAX_BODIES 8
+#define CONTACT_MAX_BC     8
+#define CONTACT_NAME_LEN   64
+
+/* Log stages and events, registered once in ContactInitializeLogging(). */
+typedef struct {
+  PetscLogStage mesh, setup, solve, output;
+  PetscLogEvent elasEnergyGrad, elasHessian, meshGenerate, partition, writeOutput;
+} ContactLog;
+extern ContactLog contactLog;
+PetscErrorCode ContactInitializeLogging(void);
+
+/* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */
+void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal *W);
+void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal sigma[]);
+void ElasticityTangent(const PetscReal params[], PetscReal C[]);
+PetscReal ElasticityStressZZ(const PetscReal params[], const PetscReal gradu[]);
+PetscReal ElasticityVonMises(PetscReal sxx, PetscReal syy, PetscReal szz, PetscReal sxy);

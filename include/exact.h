@@ -1,0 +1,18 @@
+#pragma once
+#include <petscsys.h>
+
+/* An exact (analytical or manufactured) displacement field with its body force
+   f = -div sigma(u), for patch tests and convergence studies (exact.c). */
+typedef struct {
+  char      name[64];
+  PetscReal params[16];
+  PetscInt  nparams;
+  PetscReal lambda, mu;
+  void (*u)(const PetscReal params[], const PetscReal x[], PetscReal u[]);
+  void (*f)(const PetscReal params[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[]);
+} ExactSolution;
+
+PetscErrorCode ExactSolutionRegisterAll(void);
+PetscErrorCode ExactSolutionSetType(ExactSolution *, const char[]);
+PetscErrorCode ExactSolutionFinalize(void);
+extern PetscFunctionList ExactSolutionList;

@@ -1,0 +1,48 @@
+#pragma once
+#include "body.h"
+
+/* An energy term beside the bodies' elastic energy (contact pairs): it reads the
+   bodies' local displacement vectors and adds into their local gradients and into
+   the joined Hessian. */
+typedef struct _n_EnergyTerm *EnergyTerm;
+struct _n_EnergyTerm {
+  char name[CONTACT_NAME_LEN];
+  void *ctx;
+  PetscErrorCode (*energygrad)(EnergyTerm, Body[], PetscReal *energy);
+  PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
+  PetscErrorCode (*destroy)(EnergyTerm);
+};
+
+/* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
+typedef struct _n_Problem *Problem;
+struct _n_Problem {
+  MPI_Comm  comm;
+  char      scene[CONTACT_NAME_LEN];
+  char      output[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], meshDir[PETSC_MAX_PATH_LEN];
+  PetscReal meshSize;
+  PetscInt  nbodies;
+  Body      bodies[CONTACT_MAX_BODIES];
+  PetscInt  nterms;
+  EnergyTerm terms[CONTACT_MAX_BODIES];
+  PetscInt  partitioner;
+  PetscBool partitionView, taylor;
+  PetscInt  offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
+  Vec       X, G;
+  Mat       H;
+  Tao       tao;
+  PetscInt  nEnergyEvals, nHessianEvals;
+  PetscReal energy, gnorm;
+  PetscReal time[5]; /* mesh, setup, solve, output, total */
+  PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
+  PetscInt  taylorN;
+};
+
+PetscErrorCode ProblemCreate(MPI_Comm, Problem *);
+PetscErrorCode ProblemSetFromOptions(Problem);
+PetscErrorCode ProblemSetUp(Problem);
+PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
+PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
+PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
+PetscErrorCode ProblemTaylorTest(Problem);
+PetscErrorCode ProblemDestroy(Problem *);
+PetscErrorCode ProblemWriteOutput(Problem, PetscBool converged);

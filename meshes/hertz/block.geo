@@ -1,0 +1,35 @@
+// Block: the rectangle [x0, x0+W] x [-H/2, H/2] on a structured Quad9 grid,
+// symmetric about y = 0. Edges: "contact" (left), "push" (right), "top", "bottom".
+// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H.
+If (!Exists(h))  h = 0.1;  EndIf
+If (!Exists(x0)) x0 = 0.0; EndIf
+If (!Exists(W))  W = 1.0;  EndIf
+If (!Exists(H))  H = 2.0;  EndIf
+
+nx = Ceil(W / h - 1e-9);
+ny = 2 * Ceil(0.5 * H / h - 1e-9);
+
+Point(1) = {x0, -H/2, 0, h};
+Point(2) = {x0 + W, -H/2, 0, h};
+Point(3) = {x0 + W, H/2, 0, h};
+Point(4) = {x0, H/2, 0, h};
+Line(1) = {1, 2};   // bottom
+Line(2) = {2, 3};   // right
+Line(3) = {3, 4};   // top
+Line(4) = {4, 1};   // left
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = nx + 1;
+Transfinite Curve{2, 4} = ny + 1;
+Transfinite Surface{1};
+Recombine Surface{1};
+
+Physical Curve("contact") = {4};
+Physical Curve("push") = {2};
+Physical Curve("top") = {3};
+Physical Curve("bottom") = {1};
+Physical Surface("body") = {1};
+
+Mesh.ElementOrder = 2;
+Mesh.SecondOrderIncomplete = 0;
+Mesh.MshFileVersion = 2.2;

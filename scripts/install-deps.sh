@@ -1,0 +1,44 @@
+#!/bin/sh
+# Install what `contact` needs on Debian 12, skipping what is already there.
+# Debian: PETSc (with TAO, HDF5, MUMPS), METIS, Gmsh, Open MPI, HDF5, pkg-config.
+# Python: h5py, numpy, matplotlib, pytest (pip, or Debian packages as a fallback).
+set -eu
+
+DEB_PKGS="petsc-dev libmetis-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc"
+PY_MODS="h5py numpy matplotlib pytest"
+
+missing=""
+for p in $DEB_PKGS; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing="$missing $p"
+  fi
+done
+if [ -n "$missing" ]; then
+  echo "install-deps: installing Debian packages:$missing"
+  SUDO=""
+  if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends $missing
+fi
+
+PY="${PYTHON:-python3}"
+pymissing=""
+for m in $PY_MODS; do
+  if ! "$PY" -c "import $m" >/dev/null 2>&1; then pymissing="$pymissing $m"; fi
+done
+if [ -n "$pymissing" ]; then
+  echo "install-deps: installing Python modules:$pymissing"
+  if ! "$PY" -m pip install -q $pymissing 2>/dev/null; then
+    if ! "$PY" -m pip install -q --break-system-packages $pymissing 2>/dev/null; then
+      debs=""
+      for m in $pymissing; do debs="$debs python3-$m"; done
+      SUDO=""
+      if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+      $SUDO apt-get install -y -qq --no-install-recommends $debs
+    fi
+  fi
+fi
+for m in $PY_MODS; do
+  "$PY" -c "import $m" || { echo "install-deps: Python module $m still missing" >&2; exit 1; }
+done

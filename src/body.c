@@ -1,0 +1,590 @@
+/* An elastic body: options, mesh (Gmsh -> DMPlex), P2/Q2 displacement with
+   Dirichlet constraints, the per-cell geometry cache and the element loops that
+   evaluate the pointwise kernels of elasticity.c. */
+#include "body.h"
+#include "meshgen.h"
+#include "partition.h"
+
+PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
+{
+  Body b;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&b));
+  b->comm = comm;
+  PetscCall(PetscStrncpy(b->name, name, sizeof(b->name)));
+  b->h  = 0.1;
+  b->E  = 1.0;
+  b->nu = 0.0;
+  *body = b;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckFinite(MPI_Comm comm, const char opt[], PetscReal v)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!PetscIsInfOrNanReal(v), comm, PETSC_ERR_USER_INPUT, "option %s: value %g is not a finite number", opt, (double)v);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char meshDir[])
+{
+  char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
+  char     *bcnames[CONTACT_MAX_BC];
+  PetscInt  nbc = CONTACT_MAX_BC, ngp = 16;
+  PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, setE, setNu;
+  PetscInt  qdeg = 4;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
+  PetscOptionsBegin(b->comm, prefix, "Body options", NULL);
+  PetscCall(PetscOptionsString("-geo", "Gmsh .geo file of the body", NULL, b->geo, b->geo, sizeof(b->geo), &hasGeo));
+  PetscCall(PetscOptionsString("-mesh", "Ready-made second-order Gmsh .msh file (instead of -geo)", NULL, b->msh, b->msh, sizeof(b->msh), &hasMsh));
+  PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
+  PetscCall(PetscOptionsStringArray("-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
+  PetscCall(PetscOptionsReal("-E", "Young's modulus (required)", NULL, b->E, &b->E, &setE));
+  PetscCall(PetscOptionsReal("-nu", "Poisson's ratio (required)", NULL, b->nu, &b->nu, &setNu));
+  PetscCall(PetscOptionsStringArray("-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
+  PetscCall(PetscOptionsString("-exact", "Exact solution for verification: none, affine, trig", NULL, exact, exact, sizeof(exact), NULL));
+  b->exact.nparams = 16;
+  PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
+  PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (exact on straight cells from 2)", NULL, qdeg, &qdeg, NULL));
+  PetscOptionsEnd();
+  b->ngeoparams = ngp;
+  b->qdeg       = qdeg;
+  PetscCheck(hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
+  PetscCheck(setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
+  PetscCheck(setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sE", prefix));
+  PetscCall(CheckFinite(b->comm, opt, b->E));
+  PetscCheck(b->E > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: Young's modulus must be > 0, got %g", opt, (double)b->E);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%snu", prefix));
+  PetscCall(CheckFinite(b->comm, opt, b->nu));
+  PetscCheck(b->nu > -1.0 && b->nu < 0.5, b->comm, PETSC_ERR_USER_INPUT, "option %s: Poisson's ratio must be in (-1, 0.5), got %g", opt, (double)b->nu);
+  if (meshSizeOverride > 0) b->h = meshSizeOverride;
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%smesh_size", prefix));
+  PetscCall(CheckFinite(b->comm, opt, b->h));
+  PetscCheck(b->h > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: mesh size must be > 0, got %g", opt, (double)b->h);
+  PetscCheck(qdeg >= 2 && qdeg <= 12, b->comm, PETSC_ERR_USER_INPUT, "option -%squadrature_degree: must be in [2, 12], got %" PetscInt_FMT, prefix, qdeg);
+  b->param[1] = b->E / (2.0 * (1.0 + b->nu));
+  b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
+  if (strcmp(exact, "none")) {
+    PetscCall(ExactSolutionSetType(&b->exact, exact));
+    b->hasExact      = PETSC_TRUE;
+    b->exact.lambda  = b->param[0];
+    b->exact.mu      = b->param[1];
+  }
+  b->nbc = nbc;
+  for (PetscInt i = 0; i < nbc; ++i) {
+    BodyBC   *bc = &b->bc[i];
+    char      bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL};
+    PetscInt  nc = 2, nv = 2;
+    PetscBool setc, setv;
+
+    PetscCall(PetscStrncpy(bc->group, bcnames[i], sizeof(bc->group)));
+    PetscCall(PetscFree(bcnames[i]));
+    PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
+    bc->values[0] = bc->values[1] = 0.0;
+    PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
+    PetscCall(PetscOptionsStringArray("-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
+    PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
+    PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
+    PetscOptionsEnd();
+    if (!setc) {
+      bc->ncomp    = 2;
+      bc->comps[0] = 0;
+      bc->comps[1] = 1;
+    } else {
+      bc->ncomp = nc;
+      for (PetscInt c = 0; c < nc; ++c) {
+        PetscBool isx, isy;
+        PetscCall(PetscStrcmp(comps[c], "x", &isx));
+        PetscCall(PetscStrcmp(comps[c], "y", &isy));
+        PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
+        bc->comps[c] = isx ? 0 : 1;
+        PetscCall(PetscFree(comps[c]));
+      }
+    }
+    PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
+    for (PetscInt c = 0; c < bc->ncomp; ++c) {
+      PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
+      PetscCall(CheckFinite(b->comm, opt, bc->values[c]));
+    }
+    PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
+  }
+  if (hasGeo && !hasMsh) {
+    PetscLogDouble t0, t1;
+    PetscCall(PetscTime(&t0));
+    PetscCall(PetscLogStagePush(contactLog.mesh));
+    PetscCall(MeshGenerate(b->comm, b->geo, b->h, b->ngeoparams, b->geoparams, meshDir, b->msh, sizeof(b->msh)));
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscTime(&t1));
+    b->tmesh += t1 - t0;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyGetPhysicalTag(Body b, const char group[], PetscInt dim, PetscInt *tag)
+{
+  char known[1024] = "";
+
+  PetscFunctionBeginUser;
+  *tag = -1;
+  for (PetscInt i = 0; i < b->nphys; ++i) {
+    PetscBool same;
+    PetscCall(PetscStrcmp(b->physNames[i], group, &same));
+    if (same && b->physDims[i] == dim) {
+      *tag = b->physTags[i];
+      PetscFunctionReturn(0);
+    }
+    if (b->physDims[i] == dim) {
+      PetscCall(PetscStrlcat(known, " ", sizeof(known)));
+      PetscCall(PetscStrlcat(known, b->physNames[i], sizeof(known)));
+    }
+  }
+  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has no physical curve '%s' (it has:%s)", b->name, b->msh, group, known);
+}
+
+static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  void  **c  = (void **)ctx;
+  Body    b  = (Body)c[0];
+  BodyBC *bc = (BodyBC *)c[1];
+
+  (void)dim; (void)t;
+  for (PetscInt i = 0; i < Nc; ++i) u[i] = 0.0;
+  if (bc->exact) {
+    PetscReal ue[2];
+    b->exact.u(b->exact.params, x, ue);
+    for (PetscInt i = 0; i < Nc && i < 2; ++i) u[i] = ue[i];
+  } else
+    for (PetscInt i = 0; i < bc->ncomp; ++i) u[bc->comps[i]] = bc->values[i];
+  return 0;
+}
+
+/* Reads the mesh, checks it is second order and of one cell type. */
+static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
+{
+  PetscInt    cStart, cEnd, nTypes[2] = {0, 0}, gTypes[2];
+  char        prefix[2 * CONTACT_NAME_LEN];
+  FILE       *fp;
+  PetscMPIInt rank;
+  int         readable = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  if (rank == 0) {
+    fp = fopen(b->msh, "r");
+    if (!fp) readable = 0;
+    else fclose(fp);
+  }
+  PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, b->comm));
+  PetscCheck(readable, b->comm, PETSC_ERR_FILE_OPEN, "body %s: cannot open mesh file %s", b->name, b->msh);
+  PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
+  PetscCall(DMPlexCreateFromFile(b->comm, b->msh, b->name, PETSC_TRUE, &b->dm));
+  PetscCall(PetscObjectSetName((PetscObject)b->dm, b->name));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)b->dm, prefix));
+  PetscCall(DMGetDimension(b->dm, &b->dim));
+  PetscCheck(b->dim == 2, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is %" PetscInt_FMT "D; the solver is 2D", b->name, b->msh, b->dim);
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(b->dm, c, &ct));
+    if (ct == DM_POLYTOPE_TRIANGLE) nTypes[0]++;
+    else if (ct == DM_POLYTOPE_QUADRILATERAL) nTypes[1]++;
+    else SETERRQ(b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has a cell of type %s", b->name, b->msh, DMPolytopeTypes[ct]);
+  }
+  PetscCall(MPIU_Allreduce(nTypes, gTypes, 2, MPIU_INT, MPI_SUM, b->comm));
+  PetscCheck(gTypes[0] + gTypes[1] > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has no cells", b->name, b->msh);
+  PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes triangles and quadrilaterals", b->name, b->msh);
+  b->simplex      = gTypes[0] ? PETSC_TRUE : PETSC_FALSE;
+  b->ncellsGlobal = gTypes[0] + gTypes[1];
+  PetscCall(DMPlexDistributeWith(&b->dm, (PartitionType)partitioner, view, b->name));
+  PetscCall(DMViewFromOptions(b->dm, NULL, "-dm_view"));
+  PetscFunctionReturn(0);
+}
+
+/* Reference coordinates of the nodes of the scalar element, in basis order. */
+PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
+{
+  PetscDualSpace sp;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFEGetDualSpace(b->feScalar, &sp));
+  for (PetscInt a = 0; a < b->nb; ++a) {
+    PetscQuadrature  fq;
+    const PetscReal *pts;
+    PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
+    PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
+    ref[2 * a]     = pts[0];
+    ref[2 * a + 1] = pts[1];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Caches per cell the local dof offsets, the nodal coordinates, the physical
+   basis gradients and the quadrature weights times det J. The node positions
+   come from evaluating the mesh's own coordinate field (continuous Q2 on quads,
+   cellwise P2 on triangles as PETSc's Gmsh reader stores them) at the reference
+   nodes of the displacement element, so no node ordering is assumed. */
+static PetscErrorCode BodyBuildCellCache(Body b)
+{
+  PetscSection       s;
+  DM                 cdm;
+  Vec                coords;
+  PetscTabulation    T, Tc;
+  PetscQuadrature    q;
+  PetscInt           cStart, cEnd, nq, nf, ncb, ncc;
+  const PetscReal   *qw;
+  PetscReal          ref[9 * 2];
+  PetscObject        obj;
+  PetscFE            cfe;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
+  PetscCall(DMGetNumFields(cdm, &nf));
+  PetscCheck(nf == 1, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
+  PetscCall(DMGetField(cdm, 0, NULL, &obj));
+  cfe = (PetscFE)obj;
+  PetscCall(PetscFEGetDimension(cfe, &ncb));
+  PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
+  PetscCall(PetscFEGetDimension(b->feScalar, &b->nb));
+  PetscCall(PetscFEGetQuadrature(b->feScalar, &q));
+  PetscCall(PetscQuadratureGetData(q, NULL, NULL, &nq, NULL, &qw));
+  PetscCall(PetscFEGetCellTabulation(b->feScalar, 1, &T));
+  PetscCall(BodyGetReferenceNodes(b, ref));
+  PetscCall(PetscFECreateTabulation(cfe, 1, b->nb, ref, 0, &Tc));
+  b->nq     = nq;
+  b->ncells = cEnd - cStart;
+  b->B      = T->T[0];
+  PetscCall(PetscMalloc5(b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * 2, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * 2, &b->xq, b->ncells * b->nb * 2, &b->xnode));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
+    PetscScalar *xc = NULL;
+    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2];
+
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt i = 0; i < ncl; ++i) {
+      PetscInt p = cl[2 * i], dof, off;
+      PetscCall(PetscSectionGetDof(s, p, &dof));
+      if (!dof) continue;
+      PetscCheck(k < b->nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT " has more nodes than the element", c);
+      PetscCall(PetscSectionGetOffset(s, p, &off));
+      b->cdof[ci * b->nb + k++] = off;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    PetscCheck(k == b->nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT ": %" PetscInt_FMT " nodes, element has %" PetscInt_FMT, c, k, b->nb);
+    PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &ncc, &xc));
+    PetscCheck(ncc == ncb, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, b->name, c, b->msh, ncc, ncb);
+    for (PetscInt a = 0; a < b->nb; ++a) {
+      x[a][0] = x[a][1] = 0.0;
+      for (PetscInt f = 0; f < ncb; ++f)
+        for (PetscInt d = 0; d < 2; ++d) x[a][d] += PetscRealPart(xc[f]) * Tc->T[0][(a * ncb + f) * 2 + d];
+    }
+    PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *D = &T->T[1][iq * b->nb * 2];
+      PetscReal        J[4] = {0, 0, 0, 0}, detJ, iJ[4], xx[2] = {0, 0};
+      for (PetscInt a = 0; a < b->nb; ++a) {
+        for (PetscInt i = 0; i < 2; ++i) {
+          xx[i] += x[a][i] * b->B[iq * b->nb + a];
+          for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[a][i] * D[a * 2 + j];
+        }
+      }
+      detJ = J[0] * J[3] - J[1] * J[2];
+      PetscCheck(detJ > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s is inverted or degenerate (det J = %g)", b->name, c, b->msh, (double)detJ);
+      iJ[0] = J[3] / detJ;
+      iJ[1] = -J[1] / detJ;
+      iJ[2] = -J[2] / detJ;
+      iJ[3] = J[0] / detJ;
+      b->wdetJ[ci * nq + iq]        = qw[iq] * detJ;
+      b->xq[(ci * nq + iq) * 2]     = xx[0];
+      b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
+      for (PetscInt a = 0; a < b->nb; ++a) {
+        PetscReal *g = &b->dNdx[((ci * nq + iq) * b->nb + a) * 2];
+        g[0] = D[a * 2] * iJ[0] + D[a * 2 + 1] * iJ[2];
+        g[1] = D[a * 2] * iJ[1] + D[a * 2 + 1] * iJ[3];
+      }
+    }
+  }
+  PetscCall(PetscTabulationDestroy(&Tc));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
+{
+  PetscQuadrature q;
+  PetscDS         ds;
+  DMLabel         faces;
+  PetscInt        qdeg = b->qdeg;
+  PetscLogDouble  t0, t1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.mesh));
+  PetscCall(BodyReadMesh(b, partitioner, partitionView));
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscTime(&t1));
+  b->tmesh += t1 - t0;
+  PetscCall(PetscLogStagePush(contactLog.setup));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, b->simplex, 2, PETSC_DETERMINE, &b->fe));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, b->simplex, 2, PETSC_DETERMINE, &b->feScalar));
+  if (b->simplex) PetscCall(PetscDTSimplexQuadrature(2, qdeg, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  else PetscCall(PetscDTGaussTensorQuadrature(2, 1, (qdeg + 2) / 2, -1.0, 1.0, &q));
+  PetscCall(PetscFESetQuadrature(b->fe, q));
+  PetscCall(PetscFESetQuadrature(b->feScalar, q));
+  PetscCall(PetscQuadratureDestroy(&q));
+  PetscCall(PetscObjectSetName((PetscObject)b->fe, "displacement"));
+  PetscCall(DMSetField(b->dm, 0, NULL, (PetscObject)b->fe));
+  PetscCall(DMCreateDS(b->dm));
+  PetscCall(DMGetDS(b->dm, &ds));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC  *bc = &b->bc[i];
+    char     lname[2 * CONTACT_NAME_LEN];
+    IS       is = NULL;
+    PetscInt n = 0, gn, one = 1;
+    void   **ctx = b->bcctx[i];
+
+    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &bc->tag));
+    PetscCall(PetscSNPrintf(lname, sizeof(lname), "bc_%s", bc->group));
+    PetscCall(DMCreateLabel(b->dm, lname));
+    PetscCall(DMGetLabel(b->dm, lname, &bc->label));
+    if (faces) PetscCall(DMLabelGetStratumIS(faces, bc->tag, &is));
+    if (is) {
+      const PetscInt *pts;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+      for (PetscInt j = 0; j < n; ++j) PetscCall(DMLabelSetValue(bc->label, pts[j], 1));
+      PetscCall(ISRestoreIndices(is, &pts));
+      PetscCall(ISDestroy(&is));
+    }
+    PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
+    PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: physical group '%s' of mesh %s has no edges", b->name, bc->group, b->msh);
+    PetscCall(DMPlexLabelComplete(b->dm, bc->label));
+    ctx[0] = b;
+    ctx[1] = bc;
+    PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
+  }
+  PetscCall(DMCreateLocalVector(b->dm, &b->Xl));
+  PetscCall(VecDuplicate(b->Xl, &b->Gl));
+  PetscCall(VecDuplicate(b->Xl, &b->bcl));
+  PetscCall(VecSet(b->bcl, 0.0));
+  PetscCall(DMPlexInsertBoundaryValues(b->dm, PETSC_TRUE, b->bcl, 0.0, NULL, NULL, NULL));
+  PetscCall(DMCreateGlobalVector(b->dm, &b->Xg));
+  PetscCall(VecDuplicate(b->Xg, &b->Gg));
+  PetscCall(VecGetLocalSize(b->Xg, &b->nlocal));
+  PetscCall(VecGetSize(b->Xg, &b->nglobal));
+  PetscCall(BodyBuildCellCache(b));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(b->bcl, Xl));
+  PetscCall(DMGlobalToLocalBegin(b->dm, Xg, INSERT_VALUES, Xl));
+  PetscCall(DMGlobalToLocalEnd(b->dm, Xg, INSERT_VALUES, Xl));
+  PetscFunctionReturn(0);
+}
+
+/* Pi_b(u) = int W(grad u) dA - int f . u dA and its gradient, added into Gl. */
+PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec Gl)
+{
+  const PetscScalar *x;
+  PetscScalar       *g;
+  PetscReal          e = 0.0;
+  const PetscInt     nb = b->nb, nq = b->nq;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
+  PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(VecGetArray(Gl, &g));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt *dof = &b->cdof[c * nb];
+    PetscReal       u[9][2], ge[9][2];
+
+    for (PetscInt a = 0; a < nb; ++a) {
+      u[a][0]  = PetscRealPart(x[dof[a]]);
+      u[a][1]  = PetscRealPart(x[dof[a] + 1]);
+      ge[a][0] = ge[a][1] = 0.0;
+    }
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
+      const PetscReal  w  = b->wdetJ[c * nq + iq];
+      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4];
+
+      for (PetscInt a = 0; a < nb; ++a) {
+        gu[0] += u[a][0] * dN[2 * a];
+        gu[1] += u[a][0] * dN[2 * a + 1];
+        gu[2] += u[a][1] * dN[2 * a];
+        gu[3] += u[a][1] * dN[2 * a + 1];
+      }
+      ElasticityEnergyDensity(b->param, gu, &W);
+      ElasticityStress(b->param, gu, s);
+      e += w * W;
+      for (PetscInt a = 0; a < nb; ++a) {
+        ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1]);
+        ge[a][1] += w * (s[2] * dN[2 * a] + s[3] * dN[2 * a + 1]);
+      }
+      if (b->hasExact) {
+        PetscReal f[2], uq[2] = {0, 0};
+        const PetscReal *B = &b->B[iq * nb];
+        b->exact.f(b->exact.params, b->param[0], b->param[1], &b->xq[(c * nq + iq) * 2], f);
+        for (PetscInt a = 0; a < nb; ++a) {
+          uq[0] += B[a] * u[a][0];
+          uq[1] += B[a] * u[a][1];
+        }
+        e -= w * (f[0] * uq[0] + f[1] * uq[1]);
+        for (PetscInt a = 0; a < nb; ++a) {
+          ge[a][0] -= w * f[0] * B[a];
+          ge[a][1] -= w * f[1] * B[a];
+        }
+      }
+    }
+    for (PetscInt a = 0; a < nb; ++a) {
+      g[dof[a]] += ge[a][0];
+      g[dof[a] + 1] += ge[a][1];
+    }
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &x));
+  PetscCall(VecRestoreArray(Gl, &g));
+  PetscCall(PetscLogFlops(b->ncells * nq * (nb * 16.0 + 30.0)));
+  PetscCall(PetscLogEventEnd(contactLog.elasEnergyGrad, 0, 0, 0, 0));
+  b->energy = e;
+  *energy   = e;
+  PetscFunctionReturn(0);
+}
+
+/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA, added into H at l2b indices. */
+PetscErrorCode BodyAssembleHessian(Body b, Mat H)
+{
+  const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
+  PetscReal      C[16];
+  PetscScalar    K[18 * 18];
+  PetscInt       idx[18];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
+  ElasticityTangent(b->param, C);
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    for (PetscInt a = 0; a < nb; ++a) {
+      idx[2 * a]     = b->l2b[b->cdof[c * nb + a]];
+      idx[2 * a + 1] = b->l2b[b->cdof[c * nb + a] + 1];
+    }
+    PetscCall(PetscArrayzero(K, n * n));
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
+      const PetscReal  w  = b->wdetJ[c * nq + iq];
+      for (PetscInt a = 0; a < nb; ++a)
+        for (PetscInt i = 0; i < 2; ++i)
+          for (PetscInt bb = 0; bb < nb; ++bb)
+            for (PetscInt j = 0; j < 2; ++j) {
+              PetscReal v = 0.0;
+              for (PetscInt k = 0; k < 2; ++k)
+                for (PetscInt l = 0; l < 2; ++l) v += dN[2 * a + k] * C[((i * 2 + k) * 2 + j) * 2 + l] * dN[2 * bb + l];
+              K[(2 * a + i) * n + 2 * bb + j] += w * v;
+            }
+    }
+    PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  }
+  PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Reaction of each Dirichlet group: the sum of dPi/du over its constrained dofs.
+   Gl holds only this rank's cell contributions, so summing over every local
+   point of the group on every rank counts each cell once. */
+PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
+{
+  PetscSection       s;
+  const PetscScalar *g;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(VecGetArrayRead(Gl, &g));
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC   *bc = &b->bc[i];
+    IS        is;
+    PetscReal r[2] = {0, 0};
+
+    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
+    if (is) {
+      const PetscInt *pts;
+      PetscInt        n;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+      for (PetscInt j = 0; j < n; ++j) {
+        PetscInt dof, off;
+        PetscCall(PetscSectionGetDof(s, pts[j], &dof));
+        if (!dof) continue;
+        PetscCall(PetscSectionGetOffset(s, pts[j], &off));
+        for (PetscInt k = 0; k < bc->ncomp; ++k) r[bc->comps[k]] += PetscRealPart(g[off + bc->comps[k]]);
+      }
+      PetscCall(ISRestoreIndices(is, &pts));
+      PetscCall(ISDestroy(&is));
+    }
+    PetscCall(MPIU_Allreduce(r, bc->reaction, 2, MPIU_REAL, MPIU_SUM, b->comm));
+  }
+  PetscCall(VecRestoreArrayRead(Gl, &g));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyComputeErrorL2(Body b, Vec Xl, PetscReal *err, PetscReal *norm)
+{
+  const PetscScalar *x;
+  PetscReal          loc[2] = {0, 0}, glob[2];
+  const PetscInt     nb = b->nb, nq = b->nq;
+
+  PetscFunctionBeginUser;
+  *err = *norm = 0.0;
+  if (!b->hasExact) PetscFunctionReturn(0);
+  PetscCall(VecGetArrayRead(Xl, &x));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *B = &b->B[iq * nb];
+      PetscReal        uh[2] = {0, 0}, ue[2];
+      for (PetscInt a = 0; a < nb; ++a) {
+        uh[0] += B[a] * PetscRealPart(x[b->cdof[c * nb + a]]);
+        uh[1] += B[a] * PetscRealPart(x[b->cdof[c * nb + a] + 1]);
+      }
+      b->exact.u(b->exact.params, &b->xq[(c * nq + iq) * 2], ue);
+      loc[0] += b->wdetJ[c * nq + iq] * (PetscSqr(uh[0] - ue[0]) + PetscSqr(uh[1] - ue[1]));
+      loc[1] += b->wdetJ[c * nq + iq] * (PetscSqr(ue[0]) + PetscSqr(ue[1]));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &x));
+  PetscCall(MPIU_Allreduce(loc, glob, 2, MPIU_REAL, MPIU_SUM, b->comm));
+  *err  = PetscSqrtReal(glob[0]);
+  *norm = PetscSqrtReal(glob[1]);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyDestroy(Body *body)
+{
+  Body b = *body;
+
+  PetscFunctionBeginUser;
+  if (!b) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < b->ngeoparams; ++i) PetscCall(PetscFree(b->geoparams[i]));
+  for (PetscInt i = 0; i < b->nphys; ++i) PetscCall(PetscFree(b->physNames[i]));
+  PetscCall(PetscFree(b->physNames));
+  PetscCall(PetscFree2(b->physDims, b->physTags));
+  PetscCall(PetscFree5(b->cdof, b->dNdx, b->wdetJ, b->xq, b->xnode));
+  PetscCall(PetscFree(b->l2b));
+  PetscCall(VecDestroy(&b->Xg));
+  PetscCall(VecDestroy(&b->Gg));
+  PetscCall(VecDestroy(&b->Xl));
+  PetscCall(VecDestroy(&b->Gl));
+  PetscCall(VecDestroy(&b->bcl));
+  PetscCall(PetscFEDestroy(&b->fe));
+  PetscCall(PetscFEDestroy(&b->feScalar));
+  PetscCall(DMDestroy(&b->dm));
+  PetscCall(PetscFree(b));
+  *body = NULL;
+  PetscFunctionReturn(0);
+}

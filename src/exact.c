@@ -1,0 +1,90 @@
+/* Exact displacement fields with their body forces, chosen by name
+   (-<body>_exact NAME, -<body>_exact_params p0,p1,...).
+
+   affine: u = (p0 + p1 x + p2 y, p3 + p4 x + p5 y). Constant strain, so
+           f = -div sigma = 0 and the strain energy is W(eps) times the area:
+           the patch test.
+   trig:   u = A (sin(k x) cos(k y), cos(k x) sin(k y)), params {A, k}.
+           div u = 2 A k cos(k x) cos(k y), Laplacian u = -2 k^2 u and
+           grad div u = -2 k^2 u, so
+           f = -(mu Lap u + (lambda + mu) grad div u) = 2 k^2 (lambda + 2 mu) u:
+           a manufactured solution for convergence studies. */
+#include "exact.h"
+
+PetscFunctionList ExactSolutionList = NULL;
+
+static void AffineU(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  u[0] = p[0] + p[1] * x[0] + p[2] * x[1];
+  u[1] = p[3] + p[4] * x[0] + p[5] * x[1];
+}
+
+static void ZeroF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
+{
+  (void)p; (void)lambda; (void)mu; (void)x;
+  f[0] = f[1] = 0.0;
+}
+
+static void TrigU(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  const PetscReal A = p[0], k = p[1];
+
+  u[0] = A * PetscSinReal(k * x[0]) * PetscCosReal(k * x[1]);
+  u[1] = A * PetscCosReal(k * x[0]) * PetscSinReal(k * x[1]);
+}
+
+static void TrigF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
+{
+  const PetscReal k = p[1];
+  PetscReal       u[2];
+
+  TrigU(p, x, u);
+  f[0] = 2.0 * k * k * (lambda + 2.0 * mu) * u[0];
+  f[1] = 2.0 * k * k * (lambda + 2.0 * mu) * u[1];
+}
+
+static PetscErrorCode ExactSetAffine(ExactSolution *e)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(e->nparams == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution affine needs 6 parameters (u0, dux/dx, dux/dy, v0, duy/dx, duy/dy), got %" PetscInt_FMT, e->nparams);
+  e->u = AffineU;
+  e->f = ZeroF;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ExactSetTrig(ExactSolution *e)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(e->nparams == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution trig needs 2 parameters (A, k), got %" PetscInt_FMT, e->nparams);
+  e->u = TrigU;
+  e->f = TrigF;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ExactSolutionRegisterAll(void)
+{
+  PetscFunctionBeginUser;
+  if (ExactSolutionList) PetscFunctionReturn(0);
+  PetscCall(PetscFunctionListAdd(&ExactSolutionList, "affine", ExactSetAffine));
+  PetscCall(PetscFunctionListAdd(&ExactSolutionList, "trig", ExactSetTrig));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ExactSolutionSetType(ExactSolution *e, const char name[])
+{
+  PetscErrorCode (*set)(ExactSolution *) = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListFind(ExactSolutionList, name, &set));
+  PetscCheck(set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "unknown exact solution '%s' (known: affine, trig)", name);
+  PetscCall(PetscStrncpy(e->name, name, sizeof(e->name)));
+  PetscCall((*set)(e));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ExactSolutionFinalize(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&ExactSolutionList));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,64 @@
+static const char help[] = "Frictionless contact between 2D linear-elastic bodies by the penalty method,\n"
+                           "minimised with TAO. A scene is an options file: see meshes/hertz/hertz.opts.\n"
+                           "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
+
+#include "problem.h"
+
+ContactLog contactLog;
+
+PetscErrorCode ContactInitializeLogging(void)
+{
+  PetscClassId id;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscClassIdRegister("Contact", &id));
+  PetscCall(PetscLogStageRegister("Mesh", &contactLog.mesh));
+  PetscCall(PetscLogStageRegister("Setup", &contactLog.setup));
+  PetscCall(PetscLogStageRegister("Solve", &contactLog.solve));
+  PetscCall(PetscLogStageRegister("Output", &contactLog.output));
+  PetscCall(PetscLogEventRegister("ElasEnergyGrad", id, &contactLog.elasEnergyGrad));
+  PetscCall(PetscLogEventRegister("ElasHessian", id, &contactLog.elasHessian));
+  PetscCall(PetscLogEventRegister("MeshGenerate", id, &contactLog.meshGenerate));
+  PetscCall(PetscLogEventRegister("MeshPartition", id, &contactLog.partition));
+  PetscCall(PetscLogEventRegister("WriteOutput", id, &contactLog.writeOutput));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  Problem        problem;
+  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE;
+  PetscLogDouble t0, t1, t2, t3;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscTime(&t0));
+  PetscCall(ContactInitializeLogging());
+  PetscCall(ExactSolutionRegisterAll());
+  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Program options", NULL);
+  PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, meshOnly, &meshOnly, NULL));
+  PetscOptionsEnd();
+  PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
+  PetscCall(ProblemSetFromOptions(problem));
+  if (!meshOnly) {
+    PetscCall(ProblemSetUp(problem));
+    PetscCall(PetscTime(&t1));
+    PetscCall(ProblemSolve(problem, &converged));
+    PetscCall(PetscTime(&t2));
+    if (problem->taylor) PetscCall(ProblemTaylorTest(problem));
+    for (PetscInt i = 0; i < problem->nbodies; ++i) problem->time[0] += problem->bodies[i]->tmesh;
+    problem->time[1] = (t1 - t0) - problem->time[0];
+    problem->time[2] = t2 - t1;
+    if (converged) PetscCall(ProblemWriteOutput(problem, converged));
+    else {
+      TaoConvergedReason reason;
+      PetscCall(TaoGetConvergedReason(problem->tao, &reason));
+      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s); no output written\n", TaoConvergedReasons[reason]));
+    }
+    PetscCall(PetscTime(&t3));
+    problem->time[4] = t3 - t0;
+  } else converged = PETSC_TRUE;
+  PetscCall(ProblemDestroy(&problem));
+  PetscCall(ExactSolutionFinalize());
+  PetscCall(PetscFinalize());
+  return converged ? 0 : 2;
+}

@@ -1,0 +1,154 @@
+/* Mesh generation with Gmsh and the physical names of a Gmsh file. */
+#include <sys/stat.h>
+#include <unistd.h>
+#include <errno.h>
+#include <ctype.h>
+#include <math.h>
+#include "contact.h"
+#include "meshgen.h"
+
+static PetscErrorCode MakeDirs(const char path[])
+{
+  char buf[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(buf, path, sizeof(buf)));
+  for (char *p = buf + 1; *p; ++p) {
+    if (*p != '/') continue;
+    *p = 0;
+    if (mkdir(buf, 0777) && errno != EEXIST) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create directory %s: %s", buf, strerror(errno));
+    *p = '/';
+  }
+  if (mkdir(buf, 0777) && errno != EEXIST) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create directory %s: %s", buf, strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+/* Parameters are "name=value" with a finite number; they become -setnumber name value. */
+static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], char value[])
+{
+  const char *eq = strchr(p, '=');
+  char       *end;
+  double      v;
+
+  PetscFunctionBeginUser;
+  PetscCheck(eq && eq != p, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' for %s is not name=value", p, geo);
+  PetscCheck((size_t)(eq - p) < 64, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter name too long in '%s'", p);
+  for (const char *c = p; c < eq; ++c) PetscCheck(isalnum((unsigned char)*c) || *c == '_', PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' for %s: name must be letters, digits or _", p, geo);
+  v = strtod(eq + 1, &end);
+  PetscCheck(end != eq + 1 && *end == 0 && isfinite(v), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' for %s: value is not a finite number", p, geo);
+  PetscCall(PetscStrncpy(name, p, (size_t)(eq - p) + 1));
+  PetscCall(PetscSNPrintf(value, 64, "%.17g", v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char dir[], char msh[], size_t len)
+{
+  PetscMPIInt rank;
+  int         err = 0;
+  char        errmsg[PETSC_MAX_PATH_LEN + 256] = "";
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16];
+    const char *slash = strrchr(geo, '/');
+    struct stat sg, sm;
+    size_t      l;
+
+    PetscCall(PetscLogEventBegin(contactLog.meshGenerate, 0, 0, 0, 0));
+    PetscCall(PetscStrncpy(base, slash ? slash + 1 : geo, sizeof(base)));
+    PetscCall(PetscStrlen(base, &l));
+    if (l > 4 && !strcmp(base + l - 4, ".geo")) base[l - 4] = 0;
+    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %.17g", (double)h));
+    PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%g", (double)h));
+    for (PetscInt i = 0; i < nparams; ++i) {
+      char name[64], value[64], part[160];
+
+      PetscCall(CheckParam(geo, params[i], name, value));
+      PetscCall(PetscSNPrintf(part, sizeof(part), " -setnumber %s %s", name, value));
+      PetscCall(PetscStrlcat(cmd, part, sizeof(cmd)));
+      PetscCall(PetscSNPrintf(part, sizeof(part), "_%s%s", name, value));
+      PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
+    }
+    PetscCall(MakeDirs(dir));
+    PetscCall(PetscSNPrintf(msh, len, "%s/%s-%s.msh", dir, base, tag));
+    if (stat(geo, &sg)) {
+      err = 1;
+      PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read geometry file %s: %s", geo, strerror(errno)));
+    } else if (stat(msh, &sm) || sm.st_mtime < sg.st_mtime) {
+      PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp%d.msh", msh, (int)getpid()));
+      PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
+      PetscCall(PetscStrlcat(cmd, " '", sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, geo, sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, "' -o '", sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, tmp, sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, "' > '", sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, log, sizeof(cmd)));
+      PetscCall(PetscStrlcat(cmd, "' 2>&1", sizeof(cmd)));
+      PetscCall(PetscInfo(NULL, "Meshing: %s\n", cmd));
+      if (system(cmd) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
+        err = 1;
+        (void)unlink(tmp);
+        PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g); see %s", geo, (double)h, log));
+      } else if (rename(tmp, msh)) {
+        err = 1;
+        PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot rename %s to %s: %s", tmp, msh, strerror(errno)));
+      }
+    }
+    PetscCall(PetscLogEventEnd(contactLog.meshGenerate, 0, 0, 0, 0));
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(errmsg, sizeof(errmsg), MPI_CHAR, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "%s", errmsg);
+  PetscCallMPI(MPI_Bcast(msh, (int)len, MPI_CHAR, 0, comm));
+  PetscFunctionReturn(0);
+}
+
+/* Gmsh 2.2 and 4.1 both store "$PhysicalNames / n / dim tag \"name\"". */
+PetscErrorCode MeshReadPhysicalNames(MPI_Comm comm, const char msh[], PetscInt *n, char ***names, PetscInt **dims, PetscInt **tags)
+{
+  PetscMPIInt rank;
+  int         cnt = 0, err = 0;
+  char        buf[CONTACT_MAX_BC * 16 * CONTACT_NAME_LEN];
+  int         idata[2 * 128];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(buf, sizeof(buf)));
+  if (rank == 0) {
+    FILE *fp = fopen(msh, "r");
+    char  line[1024];
+
+    if (!fp) err = 1;
+    else {
+      while (fgets(line, sizeof(line), fp)) {
+        if (!strncmp(line, "$PhysicalNames", 14)) {
+          if (fscanf(fp, "%d", &cnt) != 1 || cnt < 0 || cnt > 128) { err = 2; break; }
+          for (int i = 0; i < cnt; ++i) {
+            char name[256];
+            if (fscanf(fp, "%d %d \"%255[^\"]\"", &idata[2 * i], &idata[2 * i + 1], name) != 3) { err = 2; break; }
+            PetscCall(PetscStrncpy(buf + i * CONTACT_NAME_LEN, name, CONTACT_NAME_LEN));
+          }
+          break;
+        }
+        if (!strncmp(line, "$Nodes", 6)) break;
+      }
+      fclose(fp);
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(err != 1, comm, PETSC_ERR_FILE_OPEN, "cannot open mesh file %s", msh);
+  PetscCheck(err != 2, comm, PETSC_ERR_FILE_UNEXPECTED, "mesh file %s: malformed $PhysicalNames section", msh);
+  PetscCallMPI(MPI_Bcast(&cnt, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(idata, 2 * cnt, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(buf, cnt * CONTACT_NAME_LEN, MPI_CHAR, 0, comm));
+  *n = cnt;
+  PetscCall(PetscMalloc1(cnt + 1, names));
+  PetscCall(PetscMalloc2(cnt + 1, dims, cnt + 1, tags));
+  for (int i = 0; i < cnt; ++i) {
+    PetscCall(PetscStrallocpy(buf + i * CONTACT_NAME_LEN, &(*names)[i]));
+    (*dims)[i] = idata[2 * i];
+    (*tags)[i] = idata[2 * i + 1];
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,542 @@
+/* Output: per body the second-order nodal mesh (coordinates, Tri6/Quad9
+   connectivity in XDMF node order), displacement, stress (xx, yy, zz, xy) and
+   von Mises stress averaged at the nodes, in one HDF5 file with an XDMF file
+   beside it, and a JSON summary of the run. Every file is written under a
+   temporary name and renamed only when complete. */
+#include <errno.h>
+#include <unistd.h>
+#include <sys/stat.h>
+#include <petscviewerhdf5.h>
+#include "problem.h"
+
+typedef struct {
+  Vec       coords, disp, stress, vm;
+  IS        topo;
+  PetscInt  nnodes, ncells;
+  PetscReal umax, unorm2;
+} BodyFields;
+
+static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, v));
+  PetscCall(VecSetSizes(*v, n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(*v, bs));
+  PetscCall(VecSetType(*v, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(0);
+}
+
+/* A clone of the body's DM with k unconstrained dofs on every node point. */
+static PetscErrorCode CreateNodalDM(Body b, PetscInt k, DM *ndm)
+{
+  PetscSection s, ns;
+  PetscInt     pStart, pEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(DMClone(b->dm, ndm));
+  PetscCall(PetscSectionCreate(PETSC_COMM_SELF, &ns));
+  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
+  PetscCall(PetscSectionSetChart(ns, pStart, pEnd));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    if (dof) PetscCall(PetscSectionSetDof(ns, p, k));
+  }
+  PetscCall(PetscSectionSetUp(ns));
+  PetscCall(DMSetLocalSection(*ndm, ns));
+  PetscCall(PetscSectionDestroy(&ns));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CopyToBlockVec(DM ndm, Vec loc, InsertMode mode, Vec out)
+{
+  Vec                g;
+  const PetscScalar *a;
+  PetscScalar       *o;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(ndm, &g));
+  PetscCall(VecZeroEntries(g));
+  PetscCall(DMLocalToGlobalBegin(ndm, loc, mode, g));
+  PetscCall(DMLocalToGlobalEnd(ndm, loc, mode, g));
+  PetscCall(VecGetLocalSize(g, &n));
+  PetscCall(VecGetArrayRead(g, &a));
+  PetscCall(VecGetArray(out, &o));
+  PetscCall(PetscArraycpy(o, a, n));
+  PetscCall(VecRestoreArray(out, &o));
+  PetscCall(VecRestoreArrayRead(g, &a));
+  PetscCall(DMRestoreGlobalVector(ndm, &g));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
+{
+  DM                 n2, n5;
+  PetscSection       s, s2, s5, gs2;
+  Vec                l2, l5;
+  const PetscScalar *ua;
+  PetscScalar       *a2, *a5;
+  PetscInt           pStart, pEnd, cStart, cEnd, nloc2, nb = b->nb, *topo;
+  PetscReal          refpts[9 * 2];
+  PetscTabulation    Tn;
+  PetscReal          loc[2] = {0, 0}, glob[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(CreateNodalDM(b, 2, &n2));
+  PetscCall(CreateNodalDM(b, 5, &n5));
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(DMGetLocalSection(n2, &s2));
+  PetscCall(DMGetLocalSection(n5, &s5));
+  PetscCall(DMGetGlobalSection(n2, &gs2));
+  PetscCall(DMGetLocalVector(n2, &l2));
+  PetscCall(DMGetLocalVector(n5, &l5));
+  PetscCall(VecGetLocalSize(l2, &nloc2));
+  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
+
+  /* coordinates and displacement at nodes */
+  PetscCall(DMGetGlobalVector(n2, &F->coords));
+  {
+    PetscInt ng;
+    PetscCall(VecGetLocalSize(F->coords, &ng));
+    PetscCall(DMRestoreGlobalVector(n2, &F->coords));
+    PetscCall(CreateBlockVec(b->comm, ng, 2, "geometry", &F->coords));
+    PetscCall(CreateBlockVec(b->comm, ng, 2, "displacement", &F->disp));
+    PetscCall(CreateBlockVec(b->comm, ng / 2 * 4, 4, "stress", &F->stress));
+    PetscCall(CreateBlockVec(b->comm, ng / 2, 1, "von_mises", &F->vm));
+    PetscCall(VecGetSize(F->coords, &F->nnodes));
+    F->nnodes /= 2;
+  }
+  PetscCall(VecGetArrayRead(b->Xl, &ua));
+  PetscCall(VecGetArray(l2, &a2));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt *cl = NULL, ncl, k = 0;
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt i = 0; i < ncl; ++i) {
+      PetscInt p = cl[2 * i], dof, off;
+      PetscCall(PetscSectionGetDof(s2, p, &dof));
+      if (!dof) continue;
+      PetscCall(PetscSectionGetOffset(s2, p, &off));
+      a2[off]     = b->xnode[((c - cStart) * nb + k) * 2];
+      a2[off + 1] = b->xnode[((c - cStart) * nb + k) * 2 + 1];
+      k++;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+  }
+  PetscCall(VecRestoreArray(l2, &a2));
+  PetscCall(CopyToBlockVec(n2, l2, INSERT_VALUES, F->coords));
+  PetscCall(VecGetArray(l2, &a2));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt dof, off, uoff;
+    PetscCall(PetscSectionGetDof(s2, p, &dof));
+    if (!dof) continue;
+    PetscCall(PetscSectionGetOffset(s2, p, &off));
+    PetscCall(PetscSectionGetOffset(s, p, &uoff));
+    a2[off]     = ua[uoff];
+    a2[off + 1] = ua[uoff + 1];
+  }
+  PetscCall(VecRestoreArray(l2, &a2));
+  PetscCall(CopyToBlockVec(n2, l2, INSERT_VALUES, F->disp));
+
+  /* stress evaluated in each cell at its nodes, averaged over the cells of a node */
+  PetscCall(BodyGetReferenceNodes(b, refpts));
+  PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
+  PetscCall(VecSet(l5, 0.0));
+  PetscCall(VecGetArray(l5, &a5));
+  PetscCall(PetscMalloc1((cEnd - cStart) * nb, &topo));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt *cl = NULL, ncl, k = 0, pts[9], depth[9], corners[4], nc = 0, ci = c - cStart, node[9];
+    PetscReal x[9][2], u[9][2];
+
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt i = 0; i < ncl; ++i) {
+      PetscInt p = cl[2 * i], dof, off, goff;
+      PetscCall(PetscSectionGetDof(s, p, &dof));
+      if (!dof) continue;
+      PetscCall(PetscSectionGetOffset(s, p, &off));
+      PetscCall(PetscSectionGetOffset(gs2, p, &goff));
+      PetscCall(DMPlexGetPointDepth(b->dm, p, &depth[k]));
+      pts[k]  = p;
+      node[k] = (goff >= 0 ? goff : -(goff + 1)) / 2;
+      x[k][0] = b->xnode[(ci * nb + k) * 2];
+      x[k][1] = b->xnode[(ci * nb + k) * 2 + 1];
+      u[k][0] = PetscRealPart(ua[off]);
+      u[k][1] = PetscRealPart(ua[off + 1]);
+      if (depth[k] == 0) corners[nc++] = k;
+      k++;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
+    for (PetscInt i = 0; i < nc; ++i) topo[ci * nb + i] = node[corners[i]];
+    for (PetscInt i = 0; i < k; ++i) {
+      if (depth[i] == 1) {
+        const PetscInt *cone;
+        PetscInt        j0 = -1, j1 = -1;
+        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
+        for (PetscInt j = 0; j < nc; ++j) {
+          if (pts[corners[j]] == cone[0]) j0 = j;
+          if (pts[corners[j]] == cone[1]) j1 = j;
+        }
+        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
+        topo[ci * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
+      } else if (depth[i] == 2) topo[ci * nb + 2 * nc] = node[i];
+    }
+    for (PetscInt a = 0; a < nb; ++a) {
+      const PetscReal *D = &Tn->T[1][a * nb * 2];
+      PetscReal        J[4] = {0, 0, 0, 0}, iJ[4], detJ, gu[4] = {0, 0, 0, 0}, sig[4], off5;
+      PetscInt         off;
+      for (PetscInt q = 0; q < nb; ++q)
+        for (PetscInt i = 0; i < 2; ++i)
+          for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[q][i] * D[q * 2 + j];
+      detJ  = J[0] * J[3] - J[1] * J[2];
+      iJ[0] = J[3] / detJ;
+      iJ[1] = -J[1] / detJ;
+      iJ[2] = -J[2] / detJ;
+      iJ[3] = J[0] / detJ;
+      for (PetscInt q = 0; q < nb; ++q) {
+        const PetscReal gx = D[q * 2] * iJ[0] + D[q * 2 + 1] * iJ[2], gy = D[q * 2] * iJ[1] + D[q * 2 + 1] * iJ[3];
+        gu[0] += u[q][0] * gx;
+        gu[1] += u[q][0] * gy;
+        gu[2] += u[q][1] * gx;
+        gu[3] += u[q][1] * gy;
+      }
+      ElasticityStress(b->param, gu, sig);
+      PetscCall(PetscSectionGetOffset(s5, pts[a], &off));
+      off5 = ElasticityStressZZ(b->param, gu);
+      a5[off] += sig[0];
+      a5[off + 1] += sig[3];
+      a5[off + 2] += off5;
+      a5[off + 3] += sig[1];
+      a5[off + 4] += 1.0;
+    }
+  }
+  PetscCall(VecRestoreArray(l5, &a5));
+  PetscCall(PetscTabulationDestroy(&Tn));
+  PetscCall(VecRestoreArrayRead(b->Xl, &ua));
+  {
+    Vec                g5;
+    const PetscScalar *g;
+    PetscScalar       *st, *vm;
+    const PetscScalar *d;
+    PetscInt           n;
+    PetscCall(DMGetGlobalVector(n5, &g5));
+    PetscCall(VecZeroEntries(g5));
+    PetscCall(DMLocalToGlobalBegin(n5, l5, ADD_VALUES, g5));
+    PetscCall(DMLocalToGlobalEnd(n5, l5, ADD_VALUES, g5));
+    PetscCall(VecGetLocalSize(F->vm, &n));
+    PetscCall(VecGetArrayRead(g5, &g));
+    PetscCall(VecGetArray(F->stress, &st));
+    PetscCall(VecGetArray(F->vm, &vm));
+    PetscCall(VecGetArrayRead(F->disp, &d));
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal cnt = PetscRealPart(g[5 * i + 4]);
+      PetscReal       um2;
+      for (PetscInt j = 0; j < 4; ++j) st[4 * i + j] = g[5 * i + j] / cnt;
+      vm[i] = ElasticityVonMises(PetscRealPart(st[4 * i]), PetscRealPart(st[4 * i + 1]), PetscRealPart(st[4 * i + 2]), PetscRealPart(st[4 * i + 3]));
+      um2   = PetscSqr(PetscRealPart(d[2 * i])) + PetscSqr(PetscRealPart(d[2 * i + 1]));
+      loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
+      loc[1] += um2;
+    }
+    PetscCall(VecRestoreArrayRead(F->disp, &d));
+    PetscCall(VecRestoreArray(F->vm, &vm));
+    PetscCall(VecRestoreArray(F->stress, &st));
+    PetscCall(VecRestoreArrayRead(g5, &g));
+    PetscCall(DMRestoreGlobalVector(n5, &g5));
+  }
+  PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
+  PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
+  F->umax   = glob[0];
+  F->unorm2 = glob[1];
+  PetscCall(ISCreateGeneral(b->comm, (cEnd - cStart) * nb, topo, PETSC_OWN_POINTER, &F->topo));
+  PetscCall(ISSetBlockSize(F->topo, nb));
+  PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
+  F->ncells = b->ncellsGlobal;
+  PetscCall(DMRestoreLocalVector(n2, &l2));
+  PetscCall(DMRestoreLocalVector(n5, &l5));
+  PetscCall(DMDestroy(&n2));
+  PetscCall(DMDestroy(&n5));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyFieldsDestroy(BodyFields *F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&F->coords));
+  PetscCall(VecDestroy(&F->disp));
+  PetscCall(VecDestroy(&F->stress));
+  PetscCall(VecDestroy(&F->vm));
+  PetscCall(ISDestroy(&F->topo));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode EnsureParentDir(MPI_Comm comm, const char path[])
+{
+  char        dir[PETSC_MAX_PATH_LEN], *slash;
+  PetscMPIInt rank;
+  int         err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscStrncpy(dir, path, sizeof(dir)));
+  slash = strrchr(dir, '/');
+  if (rank == 0 && slash && slash != dir) {
+    *slash = 0;
+    for (char *p = dir + 1; *p; ++p) {
+      if (*p != '/') continue;
+      *p = 0;
+      if (mkdir(dir, 0777) && errno != EEXIST) err = errno;
+      *p = '/';
+    }
+    if (mkdir(dir, 0777) && errno != EEXIST) err = errno;
+    if (!err && access(dir, W_OK)) err = errno;
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "cannot write output %s: directory %s: %s", path, dir, strerror(err));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode RenameOnRoot(MPI_Comm comm, const char from[], const char to[])
+{
+  PetscMPIInt rank;
+  int         err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0 && rename(from, to)) err = errno;
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", from, to, strerror(err));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteXDMF(Problem p, BodyFields F[], const char path[], const char h5[])
+{
+  PetscMPIInt rank;
+  const char *base = strrchr(h5, '/');
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  base = base ? base + 1 : h5;
+  if (rank == 0) {
+    FILE *fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path);
+    fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->scene);
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      Body        b = p->bodies[i];
+      const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
+      const char *g  = b->name;
+      PetscInt    N = F[i].nnodes, C = F[i].ncells;
+      fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
+      fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
+      fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
+      fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
+      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0*$0)\" Dimensions=\"%d 3\">\n", (int)N);
+      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 0 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
+      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 1 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
+      fprintf(fp, "     </DataItem>\n    </Attribute>\n");
+      fprintf(fp, "    <Attribute Name=\"stress (xx yy zz xy)\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 4\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/stress</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      fprintf(fp, "    <Attribute Name=\"von_mises\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/von_mises</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      fprintf(fp, "   </Grid>\n");
+    }
+    fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
+    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
+{
+  PetscViewer v;
+  char       *opts, version[256];
+  PetscMPIInt size;
+  PetscInt    its;
+  const char *names[5] = {"time_mesh", "time_setup", "time_solve", "time_output", "time_total"};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5Open(p->comm, path, FILE_MODE_WRITE, &v));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    char group[2 * CONTACT_NAME_LEN];
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    PetscCall(VecView(F[i].coords, v));
+    PetscCall(VecView(F[i].disp, v));
+    PetscCall(VecView(F[i].stress, v));
+    PetscCall(VecView(F[i].vm, v));
+    PetscCall(ISView(F[i].topo, v));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+  }
+  PetscCall(PetscOptionsGetAll(NULL, &opts));
+  PetscCall(PetscGetVersion(version, sizeof(version)));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(PetscViewerHDF5PushGroup(v, "/metadata"));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->scene));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "ranks", PETSC_INT, &size));
+  PetscCall(TaoGetIterationNumber(p->tao, &its));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "iterations", PETSC_INT, &its));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "energy", PETSC_REAL, &p->energy));
+  for (PetscInt k = 0; k < 4; ++k) PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", names[k], PETSC_REAL, &p->time[k]));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscCall(PetscFree(opts));
+  PetscCall(PetscViewerDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+static void JsonReal(FILE *fp, PetscReal v)
+{
+  if (PetscIsInfOrNanReal(v)) fprintf(fp, "null");
+  else fprintf(fp, "%.17g", (double)v);
+}
+
+static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, const char path[])
+{
+  PetscMPIInt        rank, size;
+  PetscInt           its, dofs;
+  TaoConvergedReason reason;
+  TaoType            type;
+  PetscReal          umax = 0, unorm2 = 0;
+  const char        *tnames[5] = {"mesh", "setup", "solve", "output", "total"};
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(TaoGetIterationNumber(p->tao, &its));
+  PetscCall(TaoGetConvergedReason(p->tao, &reason));
+  PetscCall(TaoGetType(p->tao, &type));
+  PetscCall(VecGetSize(p->X, &dofs));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    umax = PetscMax(umax, F[i].umax);
+    unorm2 += F[i].unorm2;
+  }
+  if (rank == 0) {
+    FILE *fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->scene, (int)dofs, (int)size, type);
+    fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], converged ? "true" : "false", (int)its);
+    fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->nEnergyEvals, (int)p->nHessianEvals);
+    fprintf(fp, "  \"energy\": ");
+    JsonReal(fp, p->energy);
+    fprintf(fp, ",\n  \"gradient_norm\": ");
+    JsonReal(fp, p->gnorm);
+    fprintf(fp, ",\n  \"max_displacement\": ");
+    JsonReal(fp, umax);
+    fprintf(fp, ",\n  \"displacement_norm\": ");
+    JsonReal(fp, PetscSqrtReal(unorm2));
+    fprintf(fp, ",\n  \"reactions\": {");
+    for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
+      for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
+        fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
+        JsonReal(fp, p->bodies[i]->bc[j].reaction[0]);
+        fprintf(fp, ", ");
+        JsonReal(fp, p->bodies[i]->bc[j].reaction[1]);
+        fprintf(fp, "]");
+      }
+    fprintf(fp, "\n  },\n  \"bodies\": {");
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      Body      b = p->bodies[i];
+      PetscReal err, nrm;
+      PetscCall(BodyComputeErrorL2(b, b->Xl, &err, &nrm));
+      fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+      JsonReal(fp, b->energy);
+      fprintf(fp, ", \"max_displacement\": ");
+      JsonReal(fp, F[i].umax);
+      fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
+      JsonReal(fp, b->h);
+      if (b->hasExact) {
+        fprintf(fp, ", \"exact\": \"%s\", \"l2_error\": ", b->exact.name);
+        JsonReal(fp, err);
+        fprintf(fp, ", \"l2_norm\": ");
+        JsonReal(fp, nrm);
+      }
+      fprintf(fp, "}");
+    }
+    fprintf(fp, "\n  },\n");
+    if (p->taylor) {
+      fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
+      JsonReal(fp, p->taylorRates[0]);
+      fprintf(fp, ", \"hessian_order\": ");
+      JsonReal(fp, p->taylorRates[1]);
+      fprintf(fp, ", \"eps\": [");
+      for (PetscInt k = 0; k < p->taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->taylorEps[k]);
+      fprintf(fp, "], \"gradient_remainder\": [");
+      for (PetscInt k = 0; k < p->taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->taylorRemainders[0][k]);
+      fprintf(fp, "], \"hessian_relative_remainder\": [");
+      for (PetscInt k = 0; k < p->taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->taylorRemainders[1][k]);
+      fprintf(fp, "]},\n");
+    }
+    fprintf(fp, "  \"time\": {");
+    for (PetscInt k = 0; k < 5; ++k) {
+      fprintf(fp, "%s\"%s\": ", k ? ", " : "", tnames[k]);
+      JsonReal(fp, p->time[k]);
+    }
+    fprintf(fp, "}\n}\n");
+    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  } else {
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      PetscReal err, nrm;
+      PetscCall(BodyComputeErrorL2(p->bodies[i], p->bodies[i]->Xl, &err, &nrm));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Writes the HDF5 + XDMF (unless -output none) and the JSON summary (unless
+   -summary none), each to "<name>.tmp" first and renamed at the end. */
+PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
+{
+  BodyFields F[CONTACT_MAX_BODIES];
+  PetscBool  h5, js;
+  char       tmp[PETSC_MAX_PATH_LEN + 8], xdmf[PETSC_MAX_PATH_LEN + 8], xtmp[PETSC_MAX_PATH_LEN + 16];
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.output));
+  PetscCall(PetscLogEventBegin(contactLog.writeOutput, 0, 0, 0, 0));
+  PetscCall(PetscStrcmp(p->output, "none", &h5));
+  PetscCall(PetscStrcmp(p->summary, "none", &js));
+  h5 = (PetscBool)!h5;
+  js = (PetscBool)!js;
+  PetscCall(PetscMemzero(F, sizeof(F)));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeFields(p->bodies[i], &F[i]));
+  if (h5) {
+    size_t l;
+    PetscCall(EnsureParentDir(p->comm, p->output));
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->output));
+    PetscCall(PetscStrncpy(xdmf, p->output, sizeof(xdmf)));
+    PetscCall(PetscStrlen(xdmf, &l));
+    if (l > 3 && !strcmp(xdmf + l - 3, ".h5")) xdmf[l - 3] = 0;
+    PetscCall(PetscStrlcat(xdmf, ".xdmf", sizeof(xdmf)));
+    PetscCall(PetscSNPrintf(xtmp, sizeof(xtmp), "%s.tmp", xdmf));
+    PetscCall(WriteHDF5(p, F, tmp));
+    PetscCall(WriteXDMF(p, F, xtmp, p->output));
+  }
+  PetscCall(PetscTime(&t1));
+  p->time[3] = t1 - t0;
+  if (js) {
+    PetscCall(EnsureParentDir(p->comm, p->summary));
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
+    PetscCall(WriteJSON(p, F, converged, tmp));
+  }
+  if (h5) {
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->output));
+    PetscCall(RenameOnRoot(p->comm, tmp, p->output));
+    PetscCall(RenameOnRoot(p->comm, xtmp, xdmf));
+  }
+  if (js) {
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
+    PetscCall(RenameOnRoot(p->comm, tmp, p->summary));
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyFieldsDestroy(&F[i]));
+  PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
+  if (h5) PetscCall(PetscPrintf(p->comm, "Wrote %s and %s\n", p->output, xdmf));
+  if (js) PetscCall(PetscPrintf(p->comm, "Wrote %s\n", p->summary));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,313 @@
+/* The scene as one minimisation problem: the bodies' unconstrained dofs joined
+   into one vector X (on each rank: body 0's owned dofs, then body 1's, ...), the
+   total energy Pi(X) = sum_b Pi_b + sum_terms E_t, its gradient and Hessian, and
+   the TAO solve. Energy terms (contact pairs) work on the bodies' local vectors
+   and are added beside the bodies' elastic terms without touching them. */
+#include "problem.h"
+#include "partition.h"
+
+PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
+{
+  Problem p;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&p));
+  p->comm        = comm;
+  p->meshSize    = -1.0;
+  p->partitioner = PARTITION_METIS;
+  PetscCall(PetscStrncpy(p->scene, "scene", sizeof(p->scene)));
+  *problem = p;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetFromOptions(Problem p)
+{
+  char     *names[CONTACT_MAX_BODIES];
+  PetscInt  nb = CONTACT_MAX_BODIES;
+  PetscBool set;
+  char      def[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
+  PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->scene, p->scene, sizeof(p->scene), NULL));
+  PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_", NULL, names, &nb, &set));
+  PetscCall(PetscOptionsReal("-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size; -1: per body)", NULL, p->meshSize, &p->meshSize, NULL));
+  PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
+  PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
+  PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->meshDir, p->meshDir, sizeof(p->meshDir), NULL));
+  PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.h5", p->scene));
+  PetscCall(PetscStrncpy(p->output, def, sizeof(p->output)));
+  PetscCall(PetscOptionsString("-output", "HDF5 output file, an XDMF file beside it (none: no output)", NULL, p->output, p->output, sizeof(p->output), NULL));
+  PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.json", p->scene));
+  PetscCall(PetscStrncpy(p->summary, def, sizeof(p->summary)));
+  PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, p->summary, p->summary, sizeof(p->summary), NULL));
+  PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->partitioner, (PetscEnum *)&p->partitioner, NULL));
+  PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->partitionView, &p->partitionView, NULL));
+  PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
+  PetscOptionsEnd();
+  PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
+  PetscCheck(p->meshSize == -1.0 || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be > 0, got %g", (double)p->meshSize);
+  p->nbodies = nb;
+  for (PetscInt i = 0; i < nb; ++i) {
+    for (PetscInt j = 0; j < i; ++j) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(names[i], names[j], &same));
+      PetscCheck(!same, p->comm, PETSC_ERR_USER_INPUT, "option -bodies: body '%s' given twice", names[i]);
+    }
+    PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
+    PetscCall(PetscFree(names[i]));
+  }
+  for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize, p->meshDir));
+  PetscFunctionReturn(0);
+}
+
+/* For each body, local dof -> index in X (-1 for constrained dofs): the global
+   indices are scattered to the local vector, which leaves constrained dofs alone. */
+static PetscErrorCode ProblemBuildIndexMaps(Problem p)
+{
+  PetscInt rstart;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetOwnershipRange(p->X, &rstart, NULL));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body               b = p->bodies[i];
+    PetscScalar       *a;
+    const PetscScalar *l;
+    PetscInt           n;
+
+    PetscCall(VecGetArray(b->Xg, &a));
+    for (PetscInt k = 0; k < b->nlocal; ++k) a[k] = (PetscScalar)(rstart + p->offset[i] + k);
+    PetscCall(VecRestoreArray(b->Xg, &a));
+    PetscCall(VecSet(b->Xl, -1.0));
+    PetscCall(DMGlobalToLocalBegin(b->dm, b->Xg, INSERT_VALUES, b->Xl));
+    PetscCall(DMGlobalToLocalEnd(b->dm, b->Xg, INSERT_VALUES, b->Xl));
+    PetscCall(VecGetLocalSize(b->Xl, &n));
+    PetscCall(PetscMalloc1(n, &b->l2b));
+    PetscCall(VecGetArrayRead(b->Xl, &l));
+    for (PetscInt k = 0; k < n; ++k) b->l2b[k] = (PetscInt)PetscFloorReal(PetscRealPart(l[k]) + 0.5);
+    PetscCall(VecRestoreArrayRead(b->Xl, &l));
+    PetscCall(VecZeroEntries(b->Xg));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetUp(Problem p)
+{
+  PetscInt nloc = 0;
+  Mat      pre;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
+  PetscCall(PetscLogStagePush(contactLog.setup));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    p->offset[i] = nloc;
+    nloc += p->bodies[i]->nlocal;
+  }
+  PetscCall(VecCreateMPI(p->comm, nloc, PETSC_DETERMINE, &p->X));
+  PetscCall(PetscObjectSetName((PetscObject)p->X, "u"));
+  PetscCall(VecDuplicate(p->X, &p->G));
+  PetscCall(ProblemBuildIndexMaps(p));
+  PetscCall(MatCreate(p->comm, &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetUp(pre));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, pre));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(p->comm, &p->H));
+  PetscCall(MatSetSizes(p->H, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetOptionsPrefix(p->H, "hessian_"));
+  PetscCall(MatSetType(p->H, MATAIJ));
+  PetscCall(MatSetFromOptions(p->H));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->H));
+  PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+/* Scatters X to every body's local vector (Dirichlet values inserted). */
+static PetscErrorCode ProblemScatterToBodies(Problem p, Vec X)
+{
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body b = p->bodies[i];
+    PetscCall(VecPlaceArray(b->Xg, x + p->offset[i]));
+    PetscCall(BodyGlobalToLocal(b, b->Xg, b->Xl));
+    PetscCall(VecResetArray(b->Xg));
+  }
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
+{
+  Problem      p = (Problem)ctx;
+  PetscReal    e = 0.0, eb, et;
+  PetscScalar *g;
+
+  PetscFunctionBeginUser;
+  (void)tao;
+  PetscCall(ProblemScatterToBodies(p, X));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+    PetscCall(BodyComputeEnergyGradient(p->bodies[i], p->bodies[i]->Xl, &eb, p->bodies[i]->Gl));
+    e += eb;
+  }
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscCall(p->terms[t]->energygrad(p->terms[t], p->bodies, &et));
+    e += et;
+  }
+  PetscCall(VecZeroEntries(G));
+  PetscCall(VecGetArray(G, &g));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body b = p->bodies[i];
+    PetscCall(VecPlaceArray(b->Gg, g + p->offset[i]));
+    PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
+    PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
+    PetscCall(VecResetArray(b->Gg));
+  }
+  PetscCall(VecRestoreArray(G, &g));
+  PetscCall(MPIU_Allreduce(&e, f, 1, MPIU_REAL, MPIU_SUM, p->comm));
+  p->nEnergyEvals++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
+{
+  Problem p = (Problem)ctx;
+
+  PetscFunctionBeginUser;
+  (void)tao;
+  (void)H;
+  PetscCall(ProblemScatterToBodies(p, X));
+  PetscCall(MatZeroEntries(P));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], P));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, P));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  if (H != P) {
+    PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
+  }
+  p->nHessianEvals++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
+{
+  TaoConvergedReason reason;
+  PetscInt           its;
+  PetscReal          f, gnorm;
+  TaoType            type;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(contactLog.solve));
+  PetscCall(TaoCreate(p->comm, &p->tao));
+  PetscCall(TaoSetType(p->tao, TAOLMVM));
+  /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
+  PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
+  PetscCall(VecZeroEntries(p->X));
+  PetscCall(TaoSetSolution(p->tao, p->X));
+  PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
+  PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
+  PetscCall(TaoSetFromOptions(p->tao));
+  PetscCall(TaoSolve(p->tao));
+  PetscCall(TaoGetSolutionStatus(p->tao, &its, &f, &gnorm, NULL, NULL, &reason));
+  PetscCall(TaoGetType(p->tao, &type));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &p->energy, p->G, p));
+  p->nEnergyEvals--;
+  PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+  *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations\n", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
+  PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+/* Taylor remainders at the solution u along a random direction v:
+     r1(e) = |Pi(u + e v) - Pi(u) - e g(u).v|      falls like e^2,
+     r2(e) = |g(u + e v) - g(u) - e H(u) v|        falls like e^2 (zero for a
+   quadratic energy, so it is reported relative to e |H v|). */
+PetscErrorCode ProblemTaylorTest(Problem p)
+{
+  Vec         U, V, W, G0, G1, HV;
+  PetscRandom rnd;
+  PetscReal   f0, f1, gv, umax, hvn;
+  const PetscInt n = 8;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(p->X, &U));
+  PetscCall(VecCopy(p->X, U));
+  PetscCall(VecDuplicate(p->X, &V));
+  PetscCall(VecDuplicate(p->X, &W));
+  PetscCall(VecDuplicate(p->X, &G0));
+  PetscCall(VecDuplicate(p->X, &G1));
+  PetscCall(VecDuplicate(p->X, &HV));
+  PetscCall(PetscRandomCreate(p->comm, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1.0, 1.0));
+  PetscCall(PetscRandomSetSeed(rnd, 7));
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecSetRandom(V, rnd));
+  PetscCall(VecNorm(U, NORM_INFINITY, &umax));
+  if (umax == 0.0) umax = 1e-3;
+  PetscCall(VecScale(V, 0.1 * umax));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p));
+  PetscCall(ProblemComputeHessian(p->tao, U, p->H, p->H, p));
+  PetscCall(MatMult(p->H, V, HV));
+  PetscCall(VecNorm(HV, NORM_2, &hvn));
+  PetscCall(VecDot(G0, V, &gv));
+  p->taylorN = n;
+  PetscCall(PetscPrintf(p->comm, "Taylor test: eps, |E(u+eps v)-E(u)-eps g.v|, |g(u+eps v)-g(u)-eps H v|/(eps |H v|)\n"));
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal eps = PetscPowReal(2.0, -(PetscReal)k), r2;
+    PetscCall(VecWAXPY(W, eps, V, U));
+    PetscCall(ProblemComputeObjectiveGradient(p->tao, W, &f1, G1, p));
+    PetscCall(VecAXPY(G1, -1.0, G0));
+    PetscCall(VecAXPY(G1, -eps, HV));
+    PetscCall(VecNorm(G1, NORM_2, &r2));
+    p->taylorEps[k]           = eps;
+    p->taylorRemainders[0][k] = PetscAbsReal(f1 - f0 - eps * gv);
+    p->taylorRemainders[1][k] = r2 / (eps * hvn);
+    PetscCall(PetscPrintf(p->comm, "  %.4e  %.6e  %.6e\n", (double)eps, (double)p->taylorRemainders[0][k], (double)p->taylorRemainders[1][k]));
+  }
+  /* rate of the gradient remainder over the last halvings; for r2 the rate of
+     r2 itself, i.e. 1 + rate of the relative remainder */
+  p->taylorRates[0] = PetscLog2Real(p->taylorRemainders[0][n - 2] / p->taylorRemainders[0][n - 1]);
+  p->taylorRates[1] = 1.0 + PetscLog2Real(p->taylorRemainders[1][n - 2] / p->taylorRemainders[1][n - 1]);
+  PetscCall(PetscPrintf(p->comm, "  observed orders: gradient remainder %.3f, Hessian remainder %.3f\n", (double)p->taylorRates[0], (double)p->taylorRates[1]));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f0, p->G, p));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&U));
+  PetscCall(VecDestroy(&V));
+  PetscCall(VecDestroy(&W));
+  PetscCall(VecDestroy(&G0));
+  PetscCall(VecDestroy(&G1));
+  PetscCall(VecDestroy(&HV));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemDestroy(Problem *problem)
+{
+  Problem p = *problem;
+
+  PetscFunctionBeginUser;
+  if (!p) PetscFunctionReturn(0);
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    if (p->terms[t]->destroy) PetscCall(p->terms[t]->destroy(p->terms[t]));
+    PetscCall(PetscFree(p->terms[t]));
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
+  PetscCall(TaoDestroy(&p->tao));
+  PetscCall(MatDestroy(&p->H));
+  PetscCall(VecDestroy(&p->X));
+  PetscCall(VecDestroy(&p->G));
+  PetscCall(PetscFree(p));
+  *problem = NULL;
+  PetscFunctionReturn(0);
+}
