@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <unistd.h>
 #include <sys/stat.h>
+#include <petscsf.h>
 #include <petscviewerhdf5.h>
 #include "problem.h"
 
@@ -27,126 +28,53 @@ static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, con
   PetscFunctionReturn(0);
 }
 
-/* A clone of the body's DM with k unconstrained dofs on every node point. */
-static PetscErrorCode CreateNodalDM(Body b, PetscInt k, DM *ndm)
+/* Node values are computed per local point (arrays over the chart); owned
+   points are numbered by a global section of one dof per node, and the stress
+   sums of the cells around a node are reduced from ghosts to owners over the
+   point SF. */
+static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
 {
-  PetscSection s, ns;
-  PetscInt     pStart, pEnd;
+  PetscSection       s, ns, gs;
+  PetscSF            sf;
+  const PetscScalar *ua;
+  PetscInt           pStart, pEnd, cStart, cEnd, nb = b->nb, *topo, nown = 0, rstart, nroots;
+  PetscReal         *xp, *sp, *sr, refpts[9 * 2];
+  PetscTabulation    Tn;
+  PetscReal          loc[2] = {0, 0}, glob[2];
+  PetscScalar       *ax, *au, *as, *av;
+  MPI_Datatype       five;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(DMClone(b->dm, ndm));
-  PetscCall(PetscSectionCreate(PETSC_COMM_SELF, &ns));
+  PetscCall(DMGetPointSF(b->dm, &sf));
   PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
+  PetscCall(PetscSectionCreate(b->comm, &ns)); /* its comm numbers the owned nodes */
   PetscCall(PetscSectionSetChart(ns, pStart, pEnd));
   for (PetscInt p = pStart; p < pEnd; ++p) {
     PetscInt dof;
     PetscCall(PetscSectionGetDof(s, p, &dof));
-    if (dof) PetscCall(PetscSectionSetDof(ns, p, k));
+    if (dof) PetscCall(PetscSectionSetDof(ns, p, 1));
   }
   PetscCall(PetscSectionSetUp(ns));
-  PetscCall(DMSetLocalSection(*ndm, ns));
-  PetscCall(PetscSectionDestroy(&ns));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode CopyToBlockVec(DM ndm, Vec loc, InsertMode mode, Vec out)
-{
-  Vec                g;
-  const PetscScalar *a;
-  PetscScalar       *o;
-  PetscInt           n;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalVector(ndm, &g));
-  PetscCall(VecZeroEntries(g));
-  PetscCall(DMLocalToGlobalBegin(ndm, loc, mode, g));
-  PetscCall(DMLocalToGlobalEnd(ndm, loc, mode, g));
-  PetscCall(VecGetLocalSize(g, &n));
-  PetscCall(VecGetArrayRead(g, &a));
-  PetscCall(VecGetArray(out, &o));
-  PetscCall(PetscArraycpy(o, a, n));
-  PetscCall(VecRestoreArray(out, &o));
-  PetscCall(VecRestoreArrayRead(g, &a));
-  PetscCall(DMRestoreGlobalVector(ndm, &g));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
-{
-  DM                 n2, n5;
-  PetscSection       s, s2, s5, gs2;
-  Vec                l2, l5;
-  const PetscScalar *ua;
-  PetscScalar       *a2, *a5;
-  PetscInt           pStart, pEnd, cStart, cEnd, nloc2, nb = b->nb, *topo;
-  PetscReal          refpts[9 * 2];
-  PetscTabulation    Tn;
-  PetscReal          loc[2] = {0, 0}, glob[2];
-
-  PetscFunctionBeginUser;
-  PetscCall(CreateNodalDM(b, 2, &n2));
-  PetscCall(CreateNodalDM(b, 5, &n5));
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(DMGetLocalSection(n2, &s2));
-  PetscCall(DMGetLocalSection(n5, &s5));
-  PetscCall(DMGetGlobalSection(n2, &gs2));
-  PetscCall(DMGetLocalVector(n2, &l2));
-  PetscCall(DMGetLocalVector(n5, &l5));
-  PetscCall(VecGetLocalSize(l2, &nloc2));
-  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
-  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
-
-  /* coordinates and displacement at nodes */
-  PetscCall(DMGetGlobalVector(n2, &F->coords));
-  {
-    PetscInt ng;
-    PetscCall(VecGetLocalSize(F->coords, &ng));
-    PetscCall(DMRestoreGlobalVector(n2, &F->coords));
-    PetscCall(CreateBlockVec(b->comm, ng, 2, "geometry", &F->coords));
-    PetscCall(CreateBlockVec(b->comm, ng, 2, "displacement", &F->disp));
-    PetscCall(CreateBlockVec(b->comm, ng / 2 * 4, 4, "stress", &F->stress));
-    PetscCall(CreateBlockVec(b->comm, ng / 2, 1, "von_mises", &F->vm));
-    PetscCall(VecGetSize(F->coords, &F->nnodes));
-    F->nnodes /= 2;
-  }
-  PetscCall(VecGetArrayRead(b->Xl, &ua));
-  PetscCall(VecGetArray(l2, &a2));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    PetscInt *cl = NULL, ncl, k = 0;
-    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-    for (PetscInt i = 0; i < ncl; ++i) {
-      PetscInt p = cl[2 * i], dof, off;
-      PetscCall(PetscSectionGetDof(s2, p, &dof));
-      if (!dof) continue;
-      PetscCall(PetscSectionGetOffset(s2, p, &off));
-      a2[off]     = b->xnode[((c - cStart) * nb + k) * 2];
-      a2[off + 1] = b->xnode[((c - cStart) * nb + k) * 2 + 1];
-      k++;
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-  }
-  PetscCall(VecRestoreArray(l2, &a2));
-  PetscCall(CopyToBlockVec(n2, l2, INSERT_VALUES, F->coords));
-  PetscCall(VecGetArray(l2, &a2));
+  PetscCall(PetscSectionCreateGlobalSection(ns, sf, PETSC_FALSE, PETSC_FALSE, &gs));
   for (PetscInt p = pStart; p < pEnd; ++p) {
-    PetscInt dof, off, uoff;
-    PetscCall(PetscSectionGetDof(s2, p, &dof));
-    if (!dof) continue;
-    PetscCall(PetscSectionGetOffset(s2, p, &off));
-    PetscCall(PetscSectionGetOffset(s, p, &uoff));
-    a2[off]     = ua[uoff];
-    a2[off + 1] = ua[uoff + 1];
+    PetscInt gdof;
+    PetscCall(PetscSectionGetDof(gs, p, &gdof));
+    if (gdof > 0) nown += gdof;
   }
-  PetscCall(VecRestoreArray(l2, &a2));
-  PetscCall(CopyToBlockVec(n2, l2, INSERT_VALUES, F->disp));
-
-  /* stress evaluated in each cell at its nodes, averaged over the cells of a node */
+  rstart = 0;
+  PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
+  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
+  PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
+  PetscCall(VecGetSize(F->vm, &F->nnodes));
+  PetscCall(PetscCalloc3(2 * (pEnd - pStart), &xp, 5 * (pEnd - pStart), &sp, 5 * (pEnd - pStart), &sr));
+  PetscCall(PetscMalloc1((cEnd - cStart) * nb, &topo));
   PetscCall(BodyGetReferenceNodes(b, refpts));
   PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
-  PetscCall(VecSet(l5, 0.0));
-  PetscCall(VecGetArray(l5, &a5));
-  PetscCall(PetscMalloc1((cEnd - cStart) * nb, &topo));
+  PetscCall(VecGetArrayRead(b->Xl, &ua));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt *cl = NULL, ncl, k = 0, pts[9], depth[9], corners[4], nc = 0, ci = c - cStart, node[9];
     PetscReal x[9][2], u[9][2];
@@ -157,14 +85,16 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
       PetscCall(PetscSectionGetDof(s, p, &dof));
       if (!dof) continue;
       PetscCall(PetscSectionGetOffset(s, p, &off));
-      PetscCall(PetscSectionGetOffset(gs2, p, &goff));
+      PetscCall(PetscSectionGetOffset(gs, p, &goff));
       PetscCall(DMPlexGetPointDepth(b->dm, p, &depth[k]));
       pts[k]  = p;
-      node[k] = (goff >= 0 ? goff : -(goff + 1)) / 2;
+      node[k] = goff >= 0 ? goff : -(goff + 1);
       x[k][0] = b->xnode[(ci * nb + k) * 2];
       x[k][1] = b->xnode[(ci * nb + k) * 2 + 1];
       u[k][0] = PetscRealPart(ua[off]);
       u[k][1] = PetscRealPart(ua[off + 1]);
+      xp[2 * (p - pStart)]     = x[k][0];
+      xp[2 * (p - pStart) + 1] = x[k][1];
       if (depth[k] == 0) corners[nc++] = k;
       k++;
     }
@@ -184,10 +114,11 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
         topo[ci * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
       } else if (depth[i] == 2) topo[ci * nb + 2 * nc] = node[i];
     }
+    /* stress of this cell at each of its nodes */
     for (PetscInt a = 0; a < nb; ++a) {
       const PetscReal *D = &Tn->T[1][a * nb * 2];
-      PetscReal        J[4] = {0, 0, 0, 0}, iJ[4], detJ, gu[4] = {0, 0, 0, 0}, sig[4], off5;
-      PetscInt         off;
+      PetscReal        J[4] = {0, 0, 0, 0}, iJ[4], detJ, gu[4] = {0, 0, 0, 0}, sig[4];
+      PetscReal       *acc = &sp[5 * (pts[a] - pStart)];
       for (PetscInt q = 0; q < nb; ++q)
         for (PetscInt i = 0; i < 2; ++i)
           for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[q][i] * D[q * 2 + j];
@@ -204,48 +135,55 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
         gu[3] += u[q][1] * gy;
       }
       ElasticityStress(b->param, gu, sig);
-      PetscCall(PetscSectionGetOffset(s5, pts[a], &off));
-      off5 = ElasticityStressZZ(b->param, gu);
-      a5[off] += sig[0];
-      a5[off + 1] += sig[3];
-      a5[off + 2] += off5;
-      a5[off + 3] += sig[1];
-      a5[off + 4] += 1.0;
+      acc[0] += sig[0];
+      acc[1] += sig[3];
+      acc[2] += ElasticityStressZZ(b->param, gu);
+      acc[3] += sig[1];
+      acc[4] += 1.0;
     }
   }
-  PetscCall(VecRestoreArray(l5, &a5));
   PetscCall(PetscTabulationDestroy(&Tn));
-  PetscCall(VecRestoreArrayRead(b->Xl, &ua));
-  {
-    Vec                g5;
-    const PetscScalar *g;
-    PetscScalar       *st, *vm;
-    const PetscScalar *d;
-    PetscInt           n;
-    PetscCall(DMGetGlobalVector(n5, &g5));
-    PetscCall(VecZeroEntries(g5));
-    PetscCall(DMLocalToGlobalBegin(n5, l5, ADD_VALUES, g5));
-    PetscCall(DMLocalToGlobalEnd(n5, l5, ADD_VALUES, g5));
-    PetscCall(VecGetLocalSize(F->vm, &n));
-    PetscCall(VecGetArrayRead(g5, &g));
-    PetscCall(VecGetArray(F->stress, &st));
-    PetscCall(VecGetArray(F->vm, &vm));
-    PetscCall(VecGetArrayRead(F->disp, &d));
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscReal cnt = PetscRealPart(g[5 * i + 4]);
-      PetscReal       um2;
-      for (PetscInt j = 0; j < 4; ++j) st[4 * i + j] = g[5 * i + j] / cnt;
-      vm[i] = ElasticityVonMises(PetscRealPart(st[4 * i]), PetscRealPart(st[4 * i + 1]), PetscRealPart(st[4 * i + 2]), PetscRealPart(st[4 * i + 3]));
-      um2   = PetscSqr(PetscRealPart(d[2 * i])) + PetscSqr(PetscRealPart(d[2 * i + 1]));
-      loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
-      loc[1] += um2;
-    }
-    PetscCall(VecRestoreArrayRead(F->disp, &d));
-    PetscCall(VecRestoreArray(F->vm, &vm));
-    PetscCall(VecRestoreArray(F->stress, &st));
-    PetscCall(VecRestoreArrayRead(g5, &g));
-    PetscCall(DMRestoreGlobalVector(n5, &g5));
+  PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
+  PetscCall(PetscArraycpy(sr, sp, 5 * (pEnd - pStart)));
+  if (nroots >= 0) {
+    PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
+    PetscCallMPI(MPI_Type_commit(&five));
+    PetscCall(PetscSFReduceBegin(sf, five, sp, sr, MPI_SUM));
+    PetscCall(PetscSFReduceEnd(sf, five, sp, sr, MPI_SUM));
+    PetscCallMPI(MPI_Type_free(&five));
   }
+  PetscCall(VecGetArray(F->coords, &ax));
+  PetscCall(VecGetArray(F->disp, &au));
+  PetscCall(VecGetArray(F->stress, &as));
+  PetscCall(VecGetArray(F->vm, &av));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    PetscInt dof, goff, off, i;
+    PetscReal um2, *st = &sr[5 * (p - pStart)];
+    PetscCall(PetscSectionGetDof(ns, p, &dof));
+    if (!dof) continue;
+    PetscCall(PetscSectionGetDof(gs, p, &dof));
+    if (dof <= 0) continue;
+    PetscCall(PetscSectionGetOffset(gs, p, &goff));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    i         = goff - rstart;
+    ax[2 * i]     = xp[2 * (p - pStart)];
+    ax[2 * i + 1] = xp[2 * (p - pStart) + 1];
+    au[2 * i]     = ua[off];
+    au[2 * i + 1] = ua[off + 1];
+    for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
+    av[i]  = ElasticityVonMises(st[0] / st[4], st[1] / st[4], st[2] / st[4], st[3] / st[4]);
+    um2    = PetscSqr(PetscRealPart(ua[off])) + PetscSqr(PetscRealPart(ua[off + 1]));
+    loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
+    loc[1] += um2;
+  }
+  PetscCall(VecRestoreArray(F->coords, &ax));
+  PetscCall(VecRestoreArray(F->disp, &au));
+  PetscCall(VecRestoreArray(F->stress, &as));
+  PetscCall(VecRestoreArray(F->vm, &av));
+  PetscCall(VecRestoreArrayRead(b->Xl, &ua));
+  PetscCall(PetscFree3(xp, sp, sr));
+  PetscCall(PetscSectionDestroy(&ns));
+  PetscCall(PetscSectionDestroy(&gs));
   PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
   F->umax   = glob[0];
@@ -254,10 +192,6 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
   PetscCall(ISSetBlockSize(F->topo, nb));
   PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
   F->ncells = b->ncellsGlobal;
-  PetscCall(DMRestoreLocalVector(n2, &l2));
-  PetscCall(DMRestoreLocalVector(n5, &l5));
-  PetscCall(DMDestroy(&n2));
-  PetscCall(DMDestroy(&n5));
   PetscFunctionReturn(0);
 }
 
