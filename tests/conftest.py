@@ -1,0 +1,58 @@
+"""Helpers shared by the tests: run bin/contact on a scene and read its JSON
+summary and HDF5 output."""
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+BIN = ROOT / "bin" / "contact"
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+class RunResult:
+    def __init__(self, proc, summary_path, output_path):
+        self.returncode = proc.returncode
+        self.stdout = proc.stdout
+        self.stderr = proc.stderr
+        self.summary_path = summary_path
+        self.output_path = output_path
+        self.summary = None
+        if proc.returncode == 0 and summary_path.exists():
+            self.summary = json.loads(summary_path.read_text())
+
+    def h5(self):
+        import h5py
+        return h5py.File(self.output_path, "r")
+
+
+def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True):
+    """Runs bin/contact from the repository root with outputs in tmp_path."""
+    summary = Path(tmp_path) / f"{name}.json"
+    output = Path(tmp_path) / f"{name}.h5"
+    cmd = [str(BIN)] + [str(a) for a in args] + ["-summary", str(summary), "-output", str(output)]
+    if ranks > 1:
+        cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
+    proc = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=timeout)
+    res = RunResult(proc, summary, output)
+    if check and proc.returncode != 0:
+        raise AssertionError(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
+    return res
+
+
+def lookup(summary, key):
+    """Value of a dotted key ("bodies.block.max_displacement") in a summary."""
+    v = summary
+    for part in key.split("."):
+        v = v[part]
+    return v
+
+
+@pytest.fixture
+def contact(tmp_path):
+    def _run(args, **kw):
+        return run_contact(args, tmp_path, **kw)
+    return _run

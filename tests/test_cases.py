@@ -1,0 +1,79 @@
+"""The regression harness: every tests/cases/*.toml is a case (scene, options,
+expected figures with tolerances and where each expected value comes from).
+Adding a case needs no code. Case keys:
+
+  description     what the case shows
+  options_file    the scene
+  args            extra options
+  ranks           list of rank counts; each [[expect]] is checked at each
+  [[expect]]      key (dotted, in the JSON summary) or dataset (in the HDF5),
+                  value, rtol and/or atol, reduce (max, min, maxabs) for lists,
+                  source (why the value is right)
+  [compare_ranks] keys that must agree between the rank counts, rtol
+  [convergence]   option, values, key, min_rate: the observed order of key
+                  between successive values must be at least min_rate
+"""
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import lookup, run_contact
+
+CASES = sorted((Path(__file__).parent / "cases").glob("*.toml"))
+
+
+def load(path):
+    with open(path, "rb") as f:
+        case = tomllib.load(f)
+    for e in case.get("expect", []):
+        assert "source" in e, f"{path.name}: every expectation names its source"
+    return case
+
+
+def check_value(label, got, e):
+    want = e["value"]
+    rtol, atol = e.get("rtol", 0.0), e.get("atol", 0.0)
+    got = np.asarray(got, dtype=float)
+    if "reduce" in e:
+        got = {"max": np.max, "min": np.min, "maxabs": lambda a: np.max(np.abs(a))}[e["reduce"]](got)
+    err = np.abs(got - np.asarray(want, dtype=float))
+    bound = atol + rtol * np.abs(np.asarray(want, dtype=float))
+    assert np.all(err <= bound), (f"{label}: got {got if np.size(got) < 8 else '...'} want {want} "
+                                  f"(max error {np.max(err):.3e} > tolerance; source: {e['source']})")
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_case(path, tmp_path):
+    case = load(path)
+    base = ["-options_file", case["options_file"]] + [str(a) for a in case.get("args", [])]
+    results = {}
+    if "convergence" in case:
+        conv = case["convergence"]
+        errs = []
+        for v in conv["values"]:
+            r = run_contact(base + [conv["option"], str(v)], tmp_path, name=f"c{v}")
+            errs.append(lookup(r.summary, conv["key"]))
+        rates = [math.log(errs[i] / errs[i + 1]) / math.log(conv["values"][i] / conv["values"][i + 1])
+                 for i in range(len(errs) - 1)]
+        print(f"{conv['key']}: {errs}, observed orders {rates}")
+        assert min(rates) >= conv["min_rate"], f"observed orders {rates} < {conv['min_rate']} ({conv['source']})"
+        return
+    for n in case.get("ranks", [1]):
+        r = run_contact(base, tmp_path, ranks=n, name=f"np{n}")
+        results[n] = r
+        for e in case.get("expect", []):
+            if "key" in e:
+                check_value(f"{e['key']} at {n} ranks", lookup(r.summary, e["key"]), e)
+            else:
+                with r.h5() as f:
+                    check_value(f"{e['dataset']} at {n} ranks", f[e["dataset"]][...], e)
+    if "compare_ranks" in case:
+        cmp = case["compare_ranks"]
+        ref = results[min(results)]
+        for n, r in results.items():
+            for key in cmp["keys"]:
+                a, b = lookup(ref.summary, key), lookup(r.summary, key)
+                assert abs(a - b) <= cmp["rtol"] * max(abs(a), abs(b)), f"{key}: {a} at {min(results)} ranks, {b} at {n}"

@@ -1,0 +1,123 @@
+"""Patch test: on distorted Tri6 and Quad9 meshes with curved (quadratic) edges,
+inside and on the boundary, an affine displacement imposed on the boundary is
+reproduced at every node to 1e-10, and the energy equals the exact strain energy
+W(eps) * area, with the area of the curved domain computed here independently
+(Green's theorem on the quadratic boundary edges, Simpson's rule being exact for
+the cubic integrand)."""
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, run_contact
+
+E, NU = 1000.0, 0.3
+A = [1e-3, 2e-3, -1e-3, -2e-3, 5e-4, 3e-3]   # u = (a0 + a1 x + a2 y, a3 + a4 x + a5 y)
+
+
+def read_msh22(path):
+    lines = path.read_text().splitlines()
+    i = lines.index("$Nodes")
+    n = int(lines[i + 1])
+    ids, xyz = [], []
+    for line in lines[i + 2:i + 2 + n]:
+        p = line.split()
+        ids.append(int(p[0]))
+        xyz.append([float(v) for v in p[1:4]])
+    j = lines.index("$Elements")
+    elems = [list(map(int, l.split())) for l in lines[j + 2:j + 2 + int(lines[j + 1])]]
+    return lines, dict(zip(ids, map(np.array, xyz))), elems
+
+
+def write_msh22(path, lines, nodes):
+    i = lines.index("$Nodes")
+    n = int(lines[i + 1])
+    out = lines[:i + 2]
+    for line in lines[i + 2:i + 2 + n]:
+        k = int(line.split()[0])
+        x = nodes[k]
+        out.append(f"{k} {x[0]:.17g} {x[1]:.17g} 0")
+    out += lines[i + 2 + n:]
+    path.write_text("\n".join(out) + "\n")
+
+
+def distort(lines, nodes, elems, h, seed):
+    """Moves interior vertices by up to 0.15 h, then every mid-edge node off its
+    chord by up to 0.08 of the edge length (curved edges, boundary included),
+    and each Quad9 centre node a little off the Q2 interpolation."""
+    rng = np.random.default_rng(seed)
+    corners = {9: 3, 10: 4, 8: 2}  # Tri6, Quad9, Line3: number of vertices
+    vertices, boundary, edges, centres = set(), set(), {}, {}
+    for e in elems:
+        t, ntags = e[1], e[2]
+        conn = e[3 + ntags:]
+        if t not in corners:
+            continue
+        nv = corners[t]
+        vertices.update(conn[:nv])
+        if t == 8:
+            boundary.update(conn[:2])
+            edges[tuple(sorted(conn[:2]))] = conn[2]
+        else:
+            for k in range(nv):
+                edges[tuple(sorted((conn[k], conn[(k + 1) % nv])))] = conn[nv + k]
+            if t == 10:
+                centres[conn[8]] = (conn[:4], conn[4:8])
+    for v in vertices - boundary:
+        nodes[v][:2] += rng.uniform(-0.15 * h, 0.15 * h, 2)
+    for (a, b), m in edges.items():
+        d = nodes[b][:2] - nodes[a][:2]
+        normal = np.array([-d[1], d[0]])
+        nodes[m][:2] = 0.5 * (nodes[a][:2] + nodes[b][:2]) + rng.uniform(-0.08, 0.08) * normal
+    for c, (vs, ms) in centres.items():
+        q2 = -0.25 * sum(nodes[v][:2] for v in vs) + 0.5 * sum(nodes[m][:2] for m in ms)
+        nodes[c][:2] = q2 + rng.uniform(-0.02 * h, 0.02 * h, 2)
+    return [(e, e[3 + e[2]:]) for e in elems if e[1] == 8]
+
+
+def area_of(boundary_edges, nodes):
+    """Area inside the boundary Line3 edges (oriented counter-clockwise)."""
+    total = 0.0
+    for _, (a, b, m) in boundary_edges:
+        pa, pb, pm = nodes[a][:2], nodes[b][:2], nodes[m][:2]
+        def x(t):
+            return pa * (1 - t) * (1 - 2 * t) + 4 * pm * t * (1 - t) + pb * t * (2 * t - 1)
+        def dx(t):
+            return pa * (4 * t - 3) + pm * (4 - 8 * t) + pb * (4 * t - 1)
+        f = [x(t)[0] * dx(t)[1] for t in (0.0, 0.5, 1.0)]
+        total += (f[0] + 4 * f[1] + f[2]) / 6
+    return total
+
+
+def strain_energy_density():
+    lam = E * NU / ((1 + NU) * (1 - 2 * NU))
+    mu = E / (2 * (1 + NU))
+    exx, eyy, exy = A[1], A[5], 0.5 * (A[2] + A[4])
+    return 0.5 * lam * (exx + eyy) ** 2 + mu * (exx ** 2 + eyy ** 2 + 2 * exy ** 2)
+
+
+@pytest.mark.parametrize("quads", [0, 1], ids=["tri6", "quad9"])
+@pytest.mark.parametrize("ranks", [1, 2])
+def test_patch(quads, ranks, tmp_path):
+    h = 0.25
+    msh = tmp_path / "square.msh"
+    subprocess.run(["gmsh", "-2", "-v", "0", "-format", "msh22", str(ROOT / "meshes/square/square.geo"),
+                    "-setnumber", "h", str(h), "-setnumber", "quads", str(quads), "-o", str(msh)], check=True)
+    lines, nodes, elems = read_msh22(msh)
+    bedges = distort(lines, nodes, elems, h, seed=11 + quads)
+    write_msh22(msh, lines, nodes)
+    area = area_of(bedges, nodes)
+    assert abs(area - 1.0) > 1e-4, "the boundary should be curved"
+    r = run_contact(["-options_file", "meshes/square/square.opts", "-square_mesh", msh,
+                     "-square_exact", "affine", "-square_exact_params", ",".join(map(str, A)),
+                     "-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "lu",
+                     "-tao_gttol", "1e-14"], tmp_path, ranks=ranks)
+    with r.h5() as f:
+        x = f["bodies/square/geometry"][...]
+        u = f["bodies/square/displacement"][...]
+    exact = np.stack([A[0] + A[1] * x[:, 0] + A[2] * x[:, 1], A[3] + A[4] * x[:, 0] + A[5] * x[:, 1]], axis=1)
+    scale = np.abs(exact).max()
+    print(f"max nodal error {np.abs(u - exact).max() / scale:.2e}, area {area:.6f}, energy {r.summary['energy']:.15e} vs {strain_energy_density() * area:.15e}")
+    assert np.abs(u - exact).max() <= 1e-10 * scale
+    w = strain_energy_density()
+    assert abs(r.summary["energy"] - w * area) <= 1e-10 * w * area
