@@ -33,6 +33,7 @@ struct _n_Problem {
   PetscInt  nEnergyEvals, nHessianEvals;
   PetscReal energy, gnorm;
   PetscReal time[5]; /* mesh, setup, solve, output, total */
+  PetscLogDouble t0; /* start of the run */
   PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
   PetscInt  taylorN;
 };

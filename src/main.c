@@ -24,13 +24,50 @@ PetscErrorCode ContactInitializeLogging(void)
   PetscFunctionReturn(0);
 }
 
-int main(int argc, char **argv)
+/* Errors caused by the input (options, files) are reported in one line on the
+   first rank of the communicator that raised them; anything else gets PETSc's
+   full traceback. */
+static PetscBool IsInputError(PetscErrorCode n)
+{
+  switch (n) {
+  case PETSC_ERR_USER_INPUT:
+  case PETSC_ERR_FILE_OPEN:
+  case PETSC_ERR_FILE_READ:
+  case PETSC_ERR_FILE_WRITE:
+  case PETSC_ERR_FILE_UNEXPECTED:
+  case PETSC_ERR_ARG_OUTOFRANGE:
+  case PETSC_ERR_ARG_UNKNOWN_TYPE:
+  case PETSC_ERR_ARG_WRONG:
+  case PETSC_ERR_NOT_CONVERGED:
+    return PETSC_TRUE;
+  default:
+    return PETSC_FALSE;
+  }
+}
+
+static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
+{
+  if (IsInputError(n)) {
+    if (p == PETSC_ERROR_INITIAL) {
+      PetscMPIInt rank = 0;
+      if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
+      if (!rank) {
+        fprintf(stderr, "contact: error: %s\n", mess ? mess : "unknown");
+        fflush(stderr);
+      }
+    }
+    return n;
+  }
+  return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
+}
+
+static PetscErrorCode Run(int *status)
 {
   Problem        problem;
   PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE;
   PetscLogDouble t0, t1, t2, t3;
 
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscFunctionBeginUser;
   PetscCall(PetscTime(&t0));
   PetscCall(ContactInitializeLogging());
   PetscCall(ExactSolutionRegisterAll());
@@ -48,6 +85,7 @@ int main(int argc, char **argv)
     for (PetscInt i = 0; i < problem->nbodies; ++i) problem->time[0] += problem->bodies[i]->tmesh;
     problem->time[1] = (t1 - t0) - problem->time[0];
     problem->time[2] = t2 - t1;
+    problem->t0      = t0;
     if (converged) PetscCall(ProblemWriteOutput(problem, converged));
     else {
       TaoConvergedReason reason;
@@ -58,7 +96,20 @@ int main(int argc, char **argv)
     problem->time[4] = t3 - t0;
   } else converged = PETSC_TRUE;
   PetscCall(ProblemDestroy(&problem));
+  *status = converged ? 0 : 2;
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  PetscErrorCode ierr;
+  int            status = 1;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscPushErrorHandler(ContactErrorHandler, NULL));
+  ierr = Run(&status);
+  if (ierr) status = 1;
   PetscCall(ExactSolutionFinalize());
   PetscCall(PetscFinalize());
-  return converged ? 0 : 2;
+  return status;
 }

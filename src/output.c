@@ -453,6 +453,8 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
   }
   PetscCall(PetscTime(&t1));
   p->time[3] = t1 - t0;
+  PetscCall(PetscTime(&t1));
+  p->time[4] = t1 - p->t0;
   if (js) {
     PetscCall(EnsureParentDir(p->comm, p->summary));
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
