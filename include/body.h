@@ -48,6 +48,10 @@ struct _n_Body {
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
   PetscReal energy;
+  PetscInt  pStart, pEnd;   /* chart */
+  PetscReal *xpoint;        /* [chart][2] reference coordinates of node points */
+  PetscBool *owned;         /* [chart] point owned by this rank */
+  PetscSection nodeGS;      /* global numbering of the node points */
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
 };
 
@@ -56,6 +60,7 @@ PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride, const char m
 PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
 PetscErrorCode BodyDestroy(Body *);
 PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
+PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);

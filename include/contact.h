@@ -3,6 +3,7 @@
    joins the bodies (and later contact terms) into one TAO unknown. */
 #include <petscdmplex.h>
 #include <petsctao.h>
+#include <petscsf.h>
 
 #define CONTACT_MAX_BODIES 8
 #define CONTACT_MAX_BC     8

@@ -314,6 +314,63 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscFunctionReturn(0);
 }
 
+/* Per chart point: reference coordinates of its node, whether this rank owns it,
+   and a global node numbering (one dof per node point, numbered over b->comm). */
+static PetscErrorCode BodyBuildNodeData(Body b)
+{
+  PetscSection    s, ns;
+  PetscSF         sf;
+  PetscInt        nleaves, cStart, cEnd;
+  const PetscInt *leaves;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(PetscSectionGetChart(s, &b->pStart, &b->pEnd));
+  PetscCall(PetscCalloc2(2 * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt *cl = NULL, ncl, k = 0;
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt i = 0; i < ncl; ++i) {
+      PetscInt p = cl[2 * i], dof;
+      PetscCall(PetscSectionGetDof(s, p, &dof));
+      if (!dof) continue;
+      b->xpoint[2 * (p - b->pStart)]     = b->xnode[((c - cStart) * b->nb + k) * 2];
+      b->xpoint[2 * (p - b->pStart) + 1] = b->xnode[((c - cStart) * b->nb + k) * 2 + 1];
+      k++;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+  }
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) b->owned[p - b->pStart] = PETSC_TRUE;
+  PetscCall(DMGetPointSF(b->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  for (PetscInt i = 0; i < nleaves && leaves; ++i) b->owned[leaves[i] - b->pStart] = PETSC_FALSE;
+  if (!leaves)
+    for (PetscInt i = 0; i < nleaves; ++i) b->owned[i] = PETSC_FALSE;
+  PetscCall(PetscSectionCreate(b->comm, &ns));
+  PetscCall(PetscSectionSetChart(ns, b->pStart, b->pEnd));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    if (dof) PetscCall(PetscSectionSetDof(ns, p, 1));
+  }
+  PetscCall(PetscSectionSetUp(ns));
+  PetscCall(PetscSectionCreateGlobalSection(ns, sf, PETSC_FALSE, PETSC_FALSE, &b->nodeGS));
+  PetscCall(PetscSectionDestroy(&ns));
+  PetscFunctionReturn(0);
+}
+
+/* Global node number of a node point (owned or ghost). */
+PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
+{
+  PetscInt off;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSectionGetOffset(b->nodeGS, p, &off));
+  *node = off >= 0 ? off : -(off + 1);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
 {
   PetscQuadrature q;
@@ -379,6 +436,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(VecGetLocalSize(b->Xg, &b->nlocal));
   PetscCall(VecGetSize(b->Xg, &b->nglobal));
   PetscCall(BodyBuildCellCache(b));
+  PetscCall(BodyBuildNodeData(b));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -576,6 +634,8 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(PetscFree2(b->physDims, b->physTags));
   PetscCall(PetscFree5(b->cdof, b->dNdx, b->wdetJ, b->xq, b->xnode));
   PetscCall(PetscFree(b->l2b));
+  PetscCall(PetscFree2(b->xpoint, b->owned));
+  PetscCall(PetscSectionDestroy(&b->nodeGS));
   PetscCall(VecDestroy(&b->Xg));
   PetscCall(VecDestroy(&b->Gg));
   PetscCall(VecDestroy(&b->Xl));

@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
-#include "problem.h"
+#include "contactpair.h"
 
 typedef struct {
   Vec       coords, disp, stress, vm;
@@ -304,6 +304,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
+  PetscCall(ContactPairsWriteHDF5(p, v));
   PetscCall(PetscOptionsGetAll(NULL, &opts));
   PetscCall(PetscGetVersion(version, sizeof(version)));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
@@ -371,7 +372,9 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
         JsonReal(fp, p->bodies[i]->bc[j].reaction[1]);
         fprintf(fp, "]");
       }
-    fprintf(fp, "\n  },\n  \"bodies\": {");
+    fprintf(fp, "\n  },\n");
+    PetscCall(ContactPairsWriteJSON(p, fp));
+    fprintf(fp, "  \"bodies\": {");
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       Body      b = p->bodies[i];
       PetscReal err, nrm;

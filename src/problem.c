@@ -5,6 +5,7 @@
    and are added beside the bodies' elastic terms without touching them. */
 #include "problem.h"
 #include "partition.h"
+#include "contactpair.h"
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 {
@@ -58,8 +59,11 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(PetscFree(names[i]));
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize, p->meshDir));
+  PetscCall(ContactPairsCreateFromOptions(p));
   PetscFunctionReturn(0);
 }
+
+static PetscErrorCode ProblemScatterToBodies(Problem, Vec);
 
 /* For each body, local dof -> index in X (-1 for constrained dofs): the global
    indices are scattered to the local vector, which leaves constrained dofs alone. */
@@ -107,6 +111,8 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(PetscObjectSetName((PetscObject)p->X, "u"));
   PetscCall(VecDuplicate(p->X, &p->G));
   PetscCall(ProblemBuildIndexMaps(p));
+  PetscCall(ContactPairsSetUp(p));
+  PetscCall(ProblemScatterToBodies(p, p->X));
   PetscCall(MatCreate(p->comm, &pre));
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
   PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
@@ -223,6 +229,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   p->nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+  PetscCall(ContactPairsReport(p));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations\n", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));

@@ -1,0 +1,1029 @@
+/* Two-way penalty contact between curved quadratic surfaces.
+
+   A pair names a surface S_A on body A and S_B on body B. With S_A as slave,
+
+     E_AB(u) = 1/2 k_p int_{S_A} <-g(X)>_+^2 dS,   <z>_+ = max(z, 0),
+
+   where X runs over the slave surface in the reference configuration (dS is its
+   reference length: Gauss points on each curved quadratic edge, weights times
+   |dX/dxi|) and g is the signed normal gap in the current configuration: the
+   slave point x_s = X + u is projected onto the closest point x_m(eta*) of the
+   master surface, each master edge being the quadratic curve through its three
+   current nodes (not a chord), and g = (x_s - x_m(eta*)) . n(eta*) with n the
+   master body's outward unit normal. The pair's energy is (E_AB + E_BA) / 2 and
+   the contact pressure at a slave point is p = k_p <-g>_+.
+
+   Gradient. At an orthogonal projection x_s - x_m = g n and x_m' . n = 0, so
+   the variations of eta* and of n drop out:
+     dg = n . (sum_i N_i(xi) du_i - sum_j M_j(eta*) du_j)
+   (N slave, M master edge shape functions): this is the exact derivative of g,
+   including its dependence on the closest point and the normal. It is
+   approximate only where the projection falls on a kink between two master
+   edges (eta* at an edge end), a set of measure zero.
+   dE_AB = -k_p int <-g>_+ dg dS.
+
+   Hessian (documented approximation, Gauss-Newton): d2E_AB ~ k_p int H(-g) dg dg dS.
+   The neglected term -k_p int <-g>_+ d2g dS is of the order of the penetration
+   times the surface curvature; the approximation is symmetric positive
+   semi-definite, which Newton-type TAO solvers need.
+
+   Search. Master edges are hashed into square cells by the bounding box of their
+   Bezier control polygon, inflated by the cell size; the (cell, edge) keys are
+   sorted (n_m log n_m) and each slave point finds its candidates by binary
+   search (log n_m), rebuilt at every evaluation from the current coordinates.
+
+   Parallel. Surfaces are curves, small beside the bodies: every rank holds the
+   whole surface (nodes, edges, current coordinates gathered each evaluation),
+   integrates the slave edges it owns, and the gradient on surface nodes is
+   summed over ranks and added by the rank that owns each node. */
+#include <petscviewerhdf5.h>
+#include "contactpair.h"
+
+#define CP_MAX_PAIRS 4
+
+typedef struct {
+  PetscInt   body, tag;
+  char       group[CONTACT_NAME_LEN];
+  PetscInt   nn, ne;      /* surface nodes and edges (whole surface, every rank) */
+  PetscInt  *enodes;      /* [ne][3]: nodes at eta = -1, +1, 0 */
+  PetscReal *esign;       /* [ne] +-1 so that (t_y, -t_x) * esign is outward */
+  PetscReal *s0, *edir, *elen; /* arc position of the walk entering the edge, direction, length */
+  PetscInt  *nodeId;      /* [nn] global node number, sorted */
+  PetscReal *X, *x, *g;   /* [nn][2] reference, current coordinates, gradient */
+  PetscInt  *big;         /* [nn][2] index in the joined vector, -1 if constrained */
+  PetscBool *endNode;     /* [nn] node on a single edge: an end of the surface */
+  PetscInt   nloc, *locNode, *locOff; /* owned node points: surface node, local offset */
+  PetscInt   nown, *ownEdges;          /* edges this rank integrates as slave */
+  /* search structure over this surface as master */
+  PetscInt   nkeys, *keys, *kedge, nx, ny;
+  PetscReal  lo[2], cell;
+  /* results of the last evaluation with this surface as slave (owned points) */
+  PetscInt   nq, nqmax;
+  PetscReal *qdata;       /* [nq][8]: s, X, Y, x, y, gap, pressure, weight */
+  PetscReal  force[2];    /* contact force on this surface's body */
+  /* report (rank 0 after ContactPairsReport) */
+  PetscInt   nprof;
+  PetscReal *prof;        /* [nprof][8] sorted by s */
+  PetscReal  pmax, a, l2err, sc, ptotal;
+} Surface;
+
+typedef struct {
+  char      name[CONTACT_NAME_LEN];
+  Surface   S[2];
+  PetscReal kp;
+  PetscInt  nqp;          /* Gauss points per slave edge */
+  PetscReal xi[8], wxi[8];
+  PetscBool hertz;
+  PetscReal radii[2], Estar, Rstar;
+  PetscReal maxPen, P, hertzA, hertzPmax, femPmax, femA, l2err;
+  PetscReal force[2];
+  PetscBool reported;
+} ContactPair;
+
+static PetscLogEvent CP_EnergyGrad, CP_Search, CP_Hessian;
+
+static inline void EdgeShape(PetscReal e, PetscReal N[3], PetscReal dN[3])
+{
+  N[0]  = 0.5 * e * (e - 1.0);
+  N[1]  = 0.5 * e * (e + 1.0);
+  N[2]  = 1.0 - e * e;
+  dN[0] = e - 0.5;
+  dN[1] = e + 0.5;
+  dN[2] = -2.0 * e;
+}
+
+static inline void EdgeEval(const PetscReal *x, const PetscInt *en, PetscReal e, PetscReal p[2], PetscReal t[2])
+{
+  PetscReal N[3], dN[3];
+
+  EdgeShape(e, N, dN);
+  p[0] = p[1] = t[0] = t[1] = 0.0;
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt d = 0; d < 2; ++d) {
+      p[d] += N[i] * x[2 * en[i] + d];
+      t[d] += dN[i] * x[2 * en[i] + d];
+    }
+}
+
+/* Closest point on the quadratic edge: Newton on f(eta) = |x(eta) - p|^2 / 2
+   from the best of five samples, eta kept in [-1, 1]. Returns eta and the
+   squared distance. */
+static void EdgeProject(const PetscReal *x, const PetscInt *en, const PetscReal p[2], PetscReal *eta, PetscReal *dist2)
+{
+  PetscReal best = PETSC_MAX_REAL, e = 0.0, q[2], t[2];
+
+  for (PetscInt k = 0; k < 5; ++k) {
+    const PetscReal ek = -1.0 + 0.5 * k;
+    EdgeEval(x, en, ek, q, t);
+    const PetscReal d2 = PetscSqr(q[0] - p[0]) + PetscSqr(q[1] - p[1]);
+    if (d2 < best) {
+      best = d2;
+      e    = ek;
+    }
+  }
+  for (PetscInt it = 0; it < 30; ++it) {
+    PetscReal xpp[2], fp, fpp, de;
+    EdgeEval(x, en, e, q, t);
+    xpp[0] = x[2 * en[0]] + x[2 * en[1]] - 2.0 * x[2 * en[2]];
+    xpp[1] = x[2 * en[0] + 1] + x[2 * en[1] + 1] - 2.0 * x[2 * en[2] + 1];
+    fp     = (q[0] - p[0]) * t[0] + (q[1] - p[1]) * t[1];
+    fpp    = t[0] * t[0] + t[1] * t[1] + (q[0] - p[0]) * xpp[0] + (q[1] - p[1]) * xpp[1];
+    if (fpp <= 0) fpp = t[0] * t[0] + t[1] * t[1];
+    de = -fp / fpp;
+    e  = PetscMax(-1.0, PetscMin(1.0, e + de));
+    if (PetscAbsReal(de) < 1e-15) break;
+  }
+  EdgeEval(x, en, e, q, t);
+  *eta   = e;
+  *dist2 = PetscSqr(q[0] - p[0]) + PetscSqr(q[1] - p[1]);
+}
+
+static PetscErrorCode SurfaceBuildSearch(Surface *M)
+{
+  PetscReal hi[2], ext = 0.0;
+  PetscReal (*bb)[4];
+  PetscInt  n = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(M->ne, &bb));
+  M->lo[0] = M->lo[1] = PETSC_MAX_REAL;
+  hi[0] = hi[1] = -PETSC_MAX_REAL;
+  for (PetscInt e = 0; e < M->ne; ++e) {
+    const PetscInt *en = &M->enodes[3 * e];
+    for (PetscInt d = 0; d < 2; ++d) {
+      const PetscReal a = M->x[2 * en[0] + d], b = M->x[2 * en[1] + d], c = 2.0 * M->x[2 * en[2] + d] - 0.5 * (a + b);
+      bb[e][d]     = PetscMin(a, PetscMin(b, c));
+      bb[e][2 + d] = PetscMax(a, PetscMax(b, c));
+      ext          = PetscMax(ext, bb[e][2 + d] - bb[e][d]);
+      M->lo[d]     = PetscMin(M->lo[d], bb[e][d]);
+      hi[d]        = PetscMax(hi[d], bb[e][2 + d]);
+    }
+  }
+  /* cells no smaller than the largest edge, and at most 4096 per direction */
+  M->cell = PetscMax(ext, PetscMax(hi[0] - M->lo[0], hi[1] - M->lo[1]) / 4096.0);
+  if (M->cell <= 0) M->cell = 1.0;
+  M->lo[0] -= M->cell;
+  M->lo[1] -= M->cell;
+  M->nx = (PetscInt)((hi[0] - M->lo[0]) / M->cell) + 2;
+  M->ny = (PetscInt)((hi[1] - M->lo[1]) / M->cell) + 2;
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    n = 0;
+    for (PetscInt e = 0; e < M->ne; ++e) {
+      const PetscInt i0 = (PetscInt)((bb[e][0] - M->cell - M->lo[0]) / M->cell), i1 = (PetscInt)((bb[e][2] + M->cell - M->lo[0]) / M->cell);
+      const PetscInt j0 = (PetscInt)((bb[e][1] - M->cell - M->lo[1]) / M->cell), j1 = (PetscInt)((bb[e][3] + M->cell - M->lo[1]) / M->cell);
+      for (PetscInt i = PetscMax(i0, 0); i <= PetscMin(i1, M->nx - 1); ++i)
+        for (PetscInt j = PetscMax(j0, 0); j <= PetscMin(j1, M->ny - 1); ++j) {
+          if (pass) {
+            M->keys[n]  = i * M->ny + j;
+            M->kedge[n] = e;
+          }
+          n++;
+        }
+    }
+    if (!pass) {
+      if (n > M->nkeys) {
+        PetscCall(PetscFree2(M->keys, M->kedge));
+        PetscCall(PetscMalloc2(n, &M->keys, n, &M->kedge));
+      }
+      M->nkeys = n;
+    }
+  }
+  M->nkeys = n;
+  PetscCall(PetscSortIntWithArray(n, M->keys, M->kedge));
+  PetscCall(PetscFree(bb));
+  PetscFunctionReturn(0);
+}
+
+/* Closest master edge to p among the candidates of p's cell; *edge = -1 if none. */
+static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt *edge, PetscReal *eta)
+{
+  const PetscInt i = (PetscInt)((p[0] - M->lo[0]) / M->cell), j = (PetscInt)((p[1] - M->lo[1]) / M->cell);
+  PetscInt       key, lo = 0, hi = M->nkeys;
+  PetscReal      best = PETSC_MAX_REAL;
+
+  *edge = -1;
+  if (i < 0 || j < 0 || i >= M->nx || j >= M->ny) return;
+  key = i * M->ny + j;
+  while (lo < hi) {
+    const PetscInt mid = (lo + hi) / 2;
+    if (M->keys[mid] < key) lo = mid + 1;
+    else hi = mid;
+  }
+  for (PetscInt k = lo; k < M->nkeys && M->keys[k] == key; ++k) {
+    PetscReal e, d2;
+    EdgeProject(M->x, &M->enodes[3 * M->kedge[k]], p, &e, &d2);
+    if (d2 < best) {
+      best  = d2;
+      *edge = M->kedge[k];
+      *eta  = e;
+    }
+  }
+}
+
+/* Gathers the current coordinates x = X + u of the surface nodes on every rank. */
+static PetscErrorCode SurfaceUpdateCoordinates(Surface *S, Body b)
+{
+  const PetscScalar *u;
+  PetscReal         *du;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(2 * S->nn, &du));
+  PetscCall(VecGetArrayRead(b->Xl, &u));
+  for (PetscInt k = 0; k < S->nloc; ++k) {
+    du[2 * S->locNode[k]]     = PetscRealPart(u[S->locOff[k]]);
+    du[2 * S->locNode[k] + 1] = PetscRealPart(u[S->locOff[k] + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(b->Xl, &u));
+  PetscCall(MPIU_Allreduce(du, S->x, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  for (PetscInt k = 0; k < 2 * S->nn; ++k) S->x[k] += S->X[k];
+  PetscCall(PetscFree(du));
+  PetscFunctionReturn(0);
+}
+
+/* Sums the surface gradient over ranks and adds it where the node is owned. */
+static PetscErrorCode SurfaceAddGradient(Surface *S, Body b)
+{
+  PetscScalar *g;
+  PetscReal   *sum;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * S->nn, &sum));
+  PetscCall(MPIU_Allreduce(S->g, sum, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscCall(VecGetArray(b->Gl, &g));
+  for (PetscInt k = 0; k < S->nloc; ++k) {
+    g[S->locOff[k]] += sum[2 * S->locNode[k]];
+    g[S->locOff[k] + 1] += sum[2 * S->locNode[k] + 1];
+  }
+  PetscCall(VecRestoreArray(b->Gl, &g));
+  PetscCall(PetscFree(sum));
+  PetscFunctionReturn(0);
+}
+
+/* Arc position (reference length) at parameter xi of edge e, along the walk. */
+static PetscReal EdgeArc(const Surface *S, PetscInt e, PetscReal xi, const PetscReal gx[], const PetscReal gw[], PetscInt ng)
+{
+  PetscReal part = 0.0;
+
+  for (PetscInt q = 0; q < ng; ++q) {
+    const PetscReal h = 0.5 * (xi + 1.0), eta = -1.0 + h * (gx[q] + 1.0);
+    PetscReal       p[2], t[2];
+    EdgeEval(S->X, &S->enodes[3 * e], eta, p, t);
+    part += gw[q] * h * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  }
+  return S->edir[e] > 0 ? S->s0[e] + part : S->s0[e] + S->elen[e] - part;
+}
+
+/* One-sided term: slave S against master M, weight c (1/2 for two-way), adds
+   to the slave and master gradient arrays; records the slave points. */
+static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surface *M, PetscReal c, PetscReal *energy, Mat H)
+{
+  PetscReal e = 0.0, gx[8], gw[8];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  S->nq = 0;
+  if (S->nqmax < S->nown * cp->nqp) {
+    PetscCall(PetscFree(S->qdata));
+    S->nqmax = S->nown * cp->nqp;
+    PetscCall(PetscMalloc1(8 * S->nqmax + 8, &S->qdata));
+  }
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt  se = S->ownEdges[k];
+    const PetscInt *sn = &S->enodes[3 * se];
+    for (PetscInt q = 0; q < cp->nqp; ++q) {
+      PetscReal N[3], dN[3], Xs[2], T[2], xs[2], ts[2], w, eta = 0.0, xm[2], tm[2], n[2], tn, gap, pen;
+      PetscInt  me;
+      PetscReal *rec = &S->qdata[8 * S->nq++];
+
+      EdgeShape(cp->xi[q], N, dN);
+      EdgeEval(S->X, sn, cp->xi[q], Xs, T);
+      EdgeEval(S->x, sn, cp->xi[q], xs, ts);
+      w = cp->wxi[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+      rec[0] = EdgeArc(S, se, cp->xi[q], gx, gw, 8);
+      rec[1] = Xs[0];
+      rec[2] = Xs[1];
+      rec[3] = xs[0];
+      rec[4] = xs[1];
+      rec[5] = PETSC_MAX_REAL;
+      rec[6] = 0.0;
+      rec[7] = w;
+      SurfaceFindClosest(M, xs, &me, &eta);
+      if (me < 0) continue;
+      {
+        const PetscInt *mn = &M->enodes[3 * me];
+        /* beyond an end of the master surface: no contact */
+        if ((eta <= -1.0 && M->endNode[mn[0]]) || (eta >= 1.0 && M->endNode[mn[1]])) continue;
+        EdgeEval(M->x, mn, eta, xm, tm);
+        tn   = PetscSqrtReal(tm[0] * tm[0] + tm[1] * tm[1]);
+        n[0] = M->esign[me] * tm[1] / tn;
+        n[1] = -M->esign[me] * tm[0] / tn;
+        gap  = (xs[0] - xm[0]) * n[0] + (xs[1] - xm[1]) * n[1];
+        rec[5] = gap;
+        if (gap >= 0.0) continue;
+        pen    = -gap;
+        rec[6] = cp->kp * pen;
+        e += c * 0.5 * cp->kp * w * pen * pen;
+        cp->maxPen = PetscMax(cp->maxPen, pen);
+        {
+          PetscReal M3[3], dM3[3], f = c * cp->kp * w * pen;
+          EdgeShape(eta, M3, dM3);
+          if (!H) {
+            for (PetscInt i = 0; i < 3; ++i)
+              for (PetscInt d = 0; d < 2; ++d) {
+                S->g[2 * sn[i] + d] -= f * N[i] * n[d];
+                M->g[2 * mn[i] + d] += f * M3[i] * n[d];
+              }
+            S->force[0] += f * n[0];
+            S->force[1] += f * n[1];
+            M->force[0] -= f * n[0];
+            M->force[1] -= f * n[1];
+          } else {
+            PetscInt    idx[12];
+            PetscReal   dg[12];
+            PetscScalar K[144];
+            const PetscReal kw = c * cp->kp * w;
+            for (PetscInt i = 0; i < 3; ++i)
+              for (PetscInt d = 0; d < 2; ++d) {
+                idx[2 * i + d]     = S->big[2 * sn[i] + d];
+                idx[6 + 2 * i + d] = M->big[2 * mn[i] + d];
+                dg[2 * i + d]      = N[i] * n[d];
+                dg[6 + 2 * i + d]  = -M3[i] * n[d];
+              }
+            for (PetscInt i = 0; i < 12; ++i)
+              for (PetscInt j = 0; j < 12; ++j) K[i * 12 + j] = kw * dg[i] * dg[j];
+            PetscCall(MatSetValues(H, 12, idx, 12, idx, K, ADD_VALUES));
+          }
+        }
+      }
+    }
+  }
+  *energy += e;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PairEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  ContactPair *cp = (ContactPair *)t->ctx;
+  PetscReal    e  = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CP_EnergyGrad, 0, 0, 0, 0));
+  cp->maxPen = 0.0;
+  for (PetscInt s = 0; s < 2; ++s) {
+    Surface *S = &cp->S[s];
+    PetscCall(SurfaceUpdateCoordinates(S, bodies[S->body]));
+    PetscCall(PetscArrayzero(S->g, 2 * S->nn));
+    S->force[0] = S->force[1] = 0.0;
+  }
+  PetscCall(PetscLogEventBegin(CP_Search, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceBuildSearch(&cp->S[s]));
+  PetscCall(PetscLogEventEnd(CP_Search, 0, 0, 0, 0));
+  PetscCall(PairSlaveEnergyGradient(cp, &cp->S[0], &cp->S[1], 0.5, &e, NULL));
+  PetscCall(PairSlaveEnergyGradient(cp, &cp->S[1], &cp->S[0], 0.5, &e, NULL));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceAddGradient(&cp->S[s], bodies[cp->S[s].body]));
+  *energy = e;
+  PetscCall(PetscLogEventEnd(CP_EnergyGrad, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PairHessian(EnergyTerm t, Body bodies[], Mat H)
+{
+  ContactPair *cp = (ContactPair *)t->ctx;
+  PetscReal    e  = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CP_Hessian, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceUpdateCoordinates(&cp->S[s], bodies[cp->S[s].body]));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceBuildSearch(&cp->S[s]));
+  PetscCall(PairSlaveEnergyGradient(cp, &cp->S[0], &cp->S[1], 0.5, &e, H));
+  PetscCall(PairSlaveEnergyGradient(cp, &cp->S[1], &cp->S[0], 0.5, &e, H));
+  PetscCall(PetscLogEventEnd(CP_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SurfaceDestroy(Surface *S)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree3(S->enodes, S->esign, S->s0));
+  PetscCall(PetscFree2(S->edir, S->elen));
+  PetscCall(PetscFree(S->nodeId));
+  PetscCall(PetscFree4(S->X, S->x, S->g, S->big));
+  PetscCall(PetscFree(S->endNode));
+  PetscCall(PetscFree2(S->locNode, S->locOff));
+  PetscCall(PetscFree(S->ownEdges));
+  PetscCall(PetscFree2(S->keys, S->kedge));
+  PetscCall(PetscFree(S->qdata));
+  PetscCall(PetscFree(S->prof));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PairDestroy(EnergyTerm t)
+{
+  ContactPair *cp = (ContactPair *)t->ctx;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceDestroy(&cp->S[s]));
+  PetscCall(PetscFree(cp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactPairsCreateFromOptions(Problem p)
+{
+  char     *names[CP_MAX_PAIRS];
+  PetscInt  np = CP_MAX_PAIRS, nq = 4;
+  PetscReal kp = -1.0;
+  PetscBool setkp;
+
+  PetscFunctionBeginUser;
+  if (!CP_EnergyGrad) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactPair", &id));
+    PetscCall(PetscLogEventRegister("ContactEnergyGrad", id, &CP_EnergyGrad));
+    PetscCall(PetscLogEventRegister("ContactSearch", id, &CP_Search));
+    PetscCall(PetscLogEventRegister("ContactHessian", id, &CP_Hessian));
+  }
+  PetscOptionsBegin(p->comm, NULL, "Contact options", NULL);
+  PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces)", NULL, names, &np, NULL));
+  PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
+  PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
+  PetscOptionsEnd();
+  PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
+  for (PetscInt i = 0; i < np; ++i) {
+    ContactPair *cp;
+    EnergyTerm   t;
+    char         prefix[2 * CONTACT_NAME_LEN], *surf[2] = {NULL, NULL};
+    PetscInt     ns = 2, nr = 2;
+    PetscBool    setPair;
+
+    PetscCall(PetscNew(&cp));
+    PetscCall(PetscStrncpy(cp->name, names[i], sizeof(cp->name)));
+    PetscCall(PetscFree(names[i]));
+    cp->kp  = kp;
+    cp->nqp = nq;
+    PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, cp->xi, cp->wxi));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", cp->name));
+    PetscOptionsBegin(p->comm, prefix, "Contact pair options", NULL);
+    PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group", NULL, surf, &ns, &setPair));
+    PetscCall(PetscOptionsReal("-penalty", "Penalty k_p of this pair (default -contact_penalty)", NULL, cp->kp, &cp->kp, NULL));
+    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, cp->radii, &nr, &cp->hertz));
+    PetscOptionsEnd();
+    PetscCheck(setPair && ns == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
+    PetscCheck(!cp->hertz || nr == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
+    PetscCheck(!PetscIsInfOrNanReal(cp->kp) && cp->kp > 0, p->comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)cp->kp);
+    for (PetscInt s = 0; s < 2; ++s) {
+      char *colon = strchr(surf[s], ':');
+      PetscCheck(colon, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: '%s' is not body:group", prefix, surf[s]);
+      *colon            = 0;
+      cp->S[s].body     = -1;
+      for (PetscInt b = 0; b < p->nbodies; ++b) {
+        PetscBool same;
+        PetscCall(PetscStrcmp(p->bodies[b]->name, surf[s], &same));
+        if (same) cp->S[s].body = b;
+      }
+      PetscCheck(cp->S[s].body >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: no body named '%s'", prefix, surf[s]);
+      PetscCall(PetscStrncpy(cp->S[s].group, colon + 1, sizeof(cp->S[s].group)));
+      PetscCall(PetscFree(surf[s]));
+    }
+    for (PetscInt s = 0; s < 2; ++s) PetscCheck(!cp->hertz || (cp->radii[s] >= 0 && !PetscIsInfOrNanReal(cp->radii[s])), p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)cp->radii[s]);
+    PetscCheck(!cp->hertz || cp->radii[0] > 0 || cp->radii[1] > 0, p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);
+    PetscCall(PetscNew(&t));
+    PetscCall(PetscStrncpy(t->name, cp->name, sizeof(t->name)));
+    t->ctx        = cp;
+    t->energygrad = PairEnergyGradient;
+    t->hessian    = PairHessian;
+    t->destroy    = PairDestroy;
+    PetscCheck(p->nterms < CONTACT_MAX_BODIES, p->comm, PETSC_ERR_USER_INPUT, "too many contact pairs");
+    p->terms[p->nterms++] = t;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Builds the whole surface on every rank: the owned edges of the physical
+   group with their nodes' global numbers, reference coordinates and outward
+   normal sign, gathered from all ranks. */
+static PetscErrorCode SurfaceSetUp(Surface *S, Body b, const char pair[])
+{
+  DMLabel         faces;
+  IS              is = NULL;
+  PetscSection    s;
+  PetscInt        n = 0, *eid, nall, *ids;
+  PetscReal      *erl;
+  PetscMPIInt     size, *cnt, *disp, cntl;
+  const PetscInt *pts = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  if (faces) PetscCall(DMLabelGetStratumIS(faces, S->tag, &is));
+  if (is) {
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+  }
+  PetscCall(PetscMalloc2(3 * n + 1, &eid, 7 * n + 1, &erl));
+  {
+    PetscInt k = 0;
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscInt  e = pts[i];
+      const PetscInt *cone, *supp;
+      PetscInt        nsupp, *cl = NULL, ncl, nodes[3];
+      PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt2 = 0;
+
+      if (!b->owned[e - b->pStart]) continue;
+      PetscCall(DMPlexGetCone(b->dm, e, &cone));
+      nodes[0] = cone[0];
+      nodes[1] = cone[1];
+      nodes[2] = e;
+      for (PetscInt j = 0; j < 3; ++j) {
+        PetscCall(BodyGetNodeNumber(b, nodes[j], &eid[3 * k + j]));
+        erl[7 * k + 2 * j]     = b->xpoint[2 * (nodes[j] - b->pStart)];
+        erl[7 * k + 2 * j + 1] = b->xpoint[2 * (nodes[j] - b->pStart) + 1];
+      }
+      /* outward: away from the centroid of the cell on the edge */
+      PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
+      PetscCall(DMPlexGetSupport(b->dm, e, &supp));
+      PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: an edge of group '%s' of body %s is not on the boundary", pair, S->group, b->name);
+      PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+      for (PetscInt j = 0; j < ncl; ++j) {
+        PetscInt dof;
+        PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
+        if (!dof) continue;
+        xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
+        xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
+        cnt2 += 1;
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+      t[0]   = erl[7 * k + 2] - erl[7 * k];
+      t[1]   = erl[7 * k + 3] - erl[7 * k + 1];
+      nrm[0] = t[1];
+      nrm[1] = -t[0];
+      erl[7 * k + 6] = (nrm[0] * (erl[7 * k + 4] - xc[0] / cnt2) + nrm[1] * (erl[7 * k + 5] - xc[1] / cnt2)) > 0 ? 1.0 : -1.0;
+      k++;
+    }
+    n = k;
+  }
+  if (is) {
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  cntl = (PetscMPIInt)n;
+  PetscCallMPI(MPI_Allgather(&cntl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  S->ne = disp[size];
+  PetscCheck(S->ne > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: surface '%s' of body %s has no edges", pair, S->group, b->name);
+  {
+    PetscMPIInt rank;
+    PetscInt   *alle;
+    PetscReal  *allr;
+    PetscMPIInt *c3, *d3, *c7, *d7;
+    PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+    PetscCall(PetscMalloc4(size, &c3, size, &d3, size, &c7, size, &d7));
+    for (PetscMPIInt r = 0; r < size; ++r) {
+      c3[r] = 3 * cnt[r];
+      d3[r] = 3 * disp[r];
+      c7[r] = 7 * cnt[r];
+      d7[r] = 7 * disp[r];
+    }
+    PetscCall(PetscMalloc2(3 * S->ne, &alle, 7 * S->ne, &allr));
+    PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, b->comm));
+    PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, b->comm));
+    PetscCall(PetscFree4(c3, d3, c7, d7));
+    /* surface nodes: sorted unique global numbers */
+    nall = 3 * S->ne;
+    PetscCall(PetscMalloc1(nall, &ids));
+    PetscCall(PetscArraycpy(ids, alle, nall));
+    PetscCall(PetscSortRemoveDupsInt(&nall, ids));
+    S->nn = nall;
+    S->nodeId = ids;
+    PetscCall(PetscMalloc3(3 * S->ne, &S->enodes, S->ne, &S->esign, S->ne, &S->s0));
+    PetscCall(PetscMalloc2(S->ne, &S->edir, S->ne, &S->elen));
+    PetscCall(PetscMalloc4(2 * S->nn, &S->X, 2 * S->nn, &S->x, 2 * S->nn, &S->g, 2 * S->nn, &S->big));
+    PetscCall(PetscCalloc1(S->nn, &S->endNode));
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      for (PetscInt j = 0; j < 3; ++j) {
+        PetscInt loc;
+        PetscCall(PetscFindInt(alle[3 * e + j], S->nn, S->nodeId, &loc));
+        S->enodes[3 * e + j]  = loc;
+        S->X[2 * loc]         = allr[7 * e + 2 * j];
+        S->X[2 * loc + 1]     = allr[7 * e + 2 * j + 1];
+      }
+      S->esign[e] = allr[7 * e + 6];
+    }
+    PetscCall(PetscMalloc1(n + 1, &S->ownEdges));
+    S->nown = n;
+    for (PetscInt k = 0; k < n; ++k) S->ownEdges[k] = disp[rank] + k;
+    PetscCall(PetscFree2(alle, allr));
+  }
+  PetscCall(PetscFree2(cnt, disp));
+  PetscCall(PetscFree2(eid, erl));
+  PetscCall(PetscArraycpy(S->x, S->X, 2 * S->nn));
+  /* owned local node points on the surface; their indices in the joined vector */
+  {
+    PetscInt *bigl, k = 0;
+    PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
+    PetscCall(PetscMalloc1(2 * S->nn, &bigl));
+    for (PetscInt i = 0; i < 2 * S->nn; ++i) bigl[i] = -2;
+    for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
+      PetscInt dof, id, loc, off;
+      if (!b->owned[pt - b->pStart]) continue;
+      PetscCall(PetscSectionGetDof(s, pt, &dof));
+      if (!dof) continue;
+      PetscCall(BodyGetNodeNumber(b, pt, &id));
+      PetscCall(PetscFindInt(id, S->nn, S->nodeId, &loc));
+      if (loc < 0) continue;
+      PetscCall(PetscSectionGetOffset(s, pt, &off));
+      S->locNode[k] = loc;
+      S->locOff[k]  = off;
+      bigl[2 * loc]     = b->l2b[off];
+      bigl[2 * loc + 1] = b->l2b[off + 1];
+      k++;
+    }
+    S->nloc = k;
+    PetscCall(MPIU_Allreduce(bigl, S->big, 2 * S->nn, MPIU_INT, MPI_MAX, b->comm));
+    PetscCall(PetscFree(bigl));
+  }
+  /* ends of the surface, and the arc position along a walk over its chains */
+  {
+    PetscInt *deg, *adj, *adjStart;
+    PetscBool *done;
+    PetscReal gx[8], gw[8], s0 = 0.0;
+    PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+    PetscCall(PetscCalloc3(S->nn, &deg, S->nn + 1, &adjStart, S->ne, &done));
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      deg[S->enodes[3 * e]]++;
+      deg[S->enodes[3 * e + 1]]++;
+      S->elen[e] = 0.0;
+      for (PetscInt q = 0; q < 8; ++q) {
+        PetscReal pq[2], t[2];
+        EdgeEval(S->X, &S->enodes[3 * e], gx[q], pq, t);
+        S->elen[e] += gw[q] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      }
+    }
+    for (PetscInt v = 0; v < S->nn; ++v) {
+      adjStart[v + 1] = adjStart[v] + deg[v];
+      S->endNode[v]   = deg[v] == 1 ? PETSC_TRUE : PETSC_FALSE;
+      deg[v]          = 0;
+    }
+    PetscCall(PetscMalloc1(adjStart[S->nn] + 1, &adj));
+    for (PetscInt e = 0; e < S->ne; ++e)
+      for (PetscInt j = 0; j < 2; ++j) {
+        const PetscInt v = S->enodes[3 * e + j];
+        adj[adjStart[v] + deg[v]++] = e;
+      }
+    for (;;) {
+      PetscInt start = -1, v, e = -1;
+      /* start a chain at an unwalked end node (lowest arc first), else any unwalked edge */
+      for (PetscInt k = 0; k < S->ne && start < 0; ++k) {
+        if (done[k]) continue;
+        for (PetscInt j = 0; j < 2; ++j)
+          if (S->endNode[S->enodes[3 * k + j]] && start < 0) {
+            start = S->enodes[3 * k + j];
+            e     = k;
+          }
+      }
+      for (PetscInt k = 0; k < S->ne && start < 0; ++k)
+        if (!done[k]) {
+          start = S->enodes[3 * k];
+          e     = k;
+        }
+      if (start < 0) break;
+      v = start;
+      while (e >= 0) {
+        done[e]    = PETSC_TRUE;
+        S->edir[e] = S->enodes[3 * e] == v ? 1.0 : -1.0;
+        /* the arc position where the walk enters the edge: at eta = -1 if
+           dir > 0, at eta = +1 if dir < 0 (see EdgeArc) */
+        S->s0[e]   = s0;
+        s0 += S->elen[e];
+        v = S->edir[e] > 0 ? S->enodes[3 * e + 1] : S->enodes[3 * e];
+        {
+          PetscInt next = -1;
+          for (PetscInt j = adjStart[v]; j < adjStart[v + 1]; ++j)
+            if (!done[adj[j]]) next = adj[j];
+          e = next;
+        }
+      }
+    }
+    PetscCall(PetscFree3(deg, adjStart, done));
+    PetscCall(PetscFree(adj));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactPairsSetUp(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceSetUp(&cp->S[s], p->bodies[cp->S[s].body], cp->name));
+    if (cp->hertz) {
+      Body      b0 = p->bodies[cp->S[0].body], b1 = p->bodies[cp->S[1].body];
+      PetscReal iR = 0.0;
+      cp->Estar = 1.0 / ((1.0 - b0->nu * b0->nu) / b0->E + (1.0 - b1->nu * b1->nu) / b1->E);
+      for (PetscInt s = 0; s < 2; ++s)
+        if (cp->radii[s] > 0) iR += 1.0 / cp->radii[s];
+      cp->Rstar = 1.0 / iR;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Gathers one slave surface's points on rank 0, sorted by arc position, and
+   compares the profile with Hertz: p(s) = pmax sqrt(1 - ((s - sc)/a)^2), with
+   sc the pressure centroid. The computed half-width is half the length of the
+   zone p > 0, resolved to half the spacing of the slave points. */
+static PetscErrorCode SurfaceReport(ContactPair *cp, Surface *S, MPI_Comm comm)
+{
+  PetscMPIInt rank, size, *cnt, *disp, n8 = (PetscMPIInt)(8 * S->nq);
+  PetscReal  *all = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Gather(&n8, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
+  if (!rank) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(disp[size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(S->qdata, n8, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, comm));
+  if (!rank) {
+    PetscInt   n = disp[size] / 8, *perm, i0 = -1, i1 = -1;
+    PetscReal *sv, num = 0, den = 0, err = 0, nrm = 0;
+    PetscCall(PetscMalloc2(n + 1, &perm, n + 1, &sv));
+    for (PetscInt i = 0; i < n; ++i) {
+      perm[i] = i;
+      sv[i]   = all[8 * i];
+    }
+    PetscCall(PetscSortRealWithPermutation(n, sv, perm));
+    PetscCall(PetscFree(S->prof));
+    PetscCall(PetscMalloc1(8 * n + 8, &S->prof));
+    for (PetscInt i = 0; i < n; ++i) PetscCall(PetscArraycpy(&S->prof[8 * i], &all[8 * perm[i]], 8));
+    S->nprof  = n;
+    S->pmax   = 0.0;
+    S->ptotal = 0.0;
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal *r = &S->prof[8 * i];
+      if (r[5] >= PETSC_MAX_REAL / 2) S->prof[8 * i + 5] = PETSC_INFINITY;
+      S->pmax = PetscMax(S->pmax, r[6]);
+      S->ptotal += r[6] * r[7];
+      num += r[0] * r[6] * r[7];
+      den += r[6] * r[7];
+      if (r[6] > 0) {
+        if (i0 < 0) i0 = i;
+        i1 = i;
+      }
+    }
+    S->sc = den > 0 ? num / den : 0.0;
+    /* the zone ends half-way between the outermost loaded point and the next one */
+    S->a = 0.0;
+    if (i0 >= 0) {
+      const PetscReal lo = i0 > 0 ? 0.5 * (S->prof[8 * i0] + S->prof[8 * (i0 - 1)]) : S->prof[8 * i0];
+      const PetscReal hi = i1 < n - 1 ? 0.5 * (S->prof[8 * i1] + S->prof[8 * (i1 + 1)]) : S->prof[8 * i1];
+      S->a               = 0.5 * (hi - lo);
+    }
+    if (cp->hertz && cp->hertzA > 0) {
+      for (PetscInt i = 0; i < n; ++i) {
+        const PetscReal *r = &S->prof[8 * i];
+        const PetscReal  z = (r[0] - S->sc) / cp->hertzA;
+        const PetscReal  ph = PetscAbsReal(z) < 1 ? cp->hertzPmax * PetscSqrtReal(1 - z * z) : 0.0;
+        err += r[7] * PetscSqr(r[6] - ph);
+        nrm += r[7] * ph * ph;
+      }
+      S->l2err = PetscSqrtReal(err / nrm);
+    }
+    PetscCall(PetscFree2(perm, sv));
+    PetscCall(PetscFree(all));
+  }
+  PetscCall(PetscFree2(cnt, disp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactPairsReport(Problem p)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    PetscReal    f[4], pen;
+
+    f[0] = cp->S[0].force[0];
+    f[1] = cp->S[0].force[1];
+    f[2] = cp->S[1].force[0];
+    f[3] = cp->S[1].force[1];
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, f, 4, MPIU_REAL, MPIU_SUM, p->comm));
+    PetscCall(MPIU_Allreduce(&cp->maxPen, &pen, 1, MPIU_REAL, MPIU_MAX, p->comm));
+    cp->maxPen   = pen;
+    cp->force[0] = f[0];
+    cp->force[1] = f[1];
+    cp->P        = PetscSqrtReal(f[0] * f[0] + f[1] * f[1]);
+    if (cp->hertz) {
+      cp->hertzA    = PetscSqrtReal(4.0 * cp->P * cp->Rstar / (PETSC_PI * cp->Estar));
+      cp->hertzPmax = cp->hertzA > 0 ? 2.0 * cp->P / (PETSC_PI * cp->hertzA) : 0.0;
+    }
+    for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceReport(cp, &cp->S[s], p->comm));
+    cp->femPmax  = 0.5 * (cp->S[0].pmax + cp->S[1].pmax);
+    cp->femA     = 0.5 * (cp->S[0].a + cp->S[1].a);
+    cp->l2err    = 0.5 * (cp->S[0].l2err + cp->S[1].l2err);
+    cp->reported = PETSC_TRUE;
+    PetscCall(PetscPrintf(p->comm, "Contact pair %s (k_p = %g): %s:%s against %s:%s\n", cp->name, (double)cp->kp, p->bodies[cp->S[0].body]->name, cp->S[0].group, p->bodies[cp->S[1].body]->name, cp->S[1].group));
+    PetscCall(PetscPrintf(p->comm, "  contact force on %s: (%.6e, %.6e), P = %.6e\n", p->bodies[cp->S[0].body]->name, (double)f[0], (double)f[1], (double)cp->P));
+    PetscCall(PetscPrintf(p->comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)cp->maxPen, (double)(cp->femPmax / cp->kp)));
+    if (!rank) {
+      for (PetscInt s = 0; s < 2; ++s) {
+        Surface  *S = &cp->S[s];
+        PetscInt  first = -1, last = -1, step;
+        for (PetscInt i = 0; i < S->nprof; ++i)
+          if (S->prof[8 * i + 6] > 0) {
+            if (first < 0) first = i;
+            last = i;
+          }
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6f):\n", p->bodies[S->body]->name, S->group, (double)S->sc));
+        if (first < 0) {
+          PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
+          continue;
+        }
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12s %12s %12s %12s\n", "s - s_c", "p", cp->hertz ? "p Hertz" : "", "gap"));
+        first = PetscMax(0, first - 1);
+        last  = PetscMin(S->nprof - 1, last + 1);
+        step  = PetscMax(1, (last - first + 1) / 21);
+        for (PetscInt i = first; i <= last; i += step) {
+          const PetscReal *r = &S->prof[8 * i];
+          PetscReal        ph = 0.0;
+          if (cp->hertz && cp->hertzA > 0) {
+            const PetscReal z = (r[0] - S->sc) / cp->hertzA;
+            ph                = PetscAbsReal(z) < 1 ? cp->hertzPmax * PetscSqrtReal(1 - z * z) : 0.0;
+          }
+          if (cp->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.6f %12.6f %12.6f %12.4e\n", (double)(r[0] - S->sc), (double)r[6], (double)ph, (double)r[5]));
+          else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.6f %12.6f %12s %12.4e\n", (double)(r[0] - S->sc), (double)r[6], "", (double)r[5]));
+        }
+      }
+    }
+    if (cp->hertz) {
+      PetscCall(PetscPrintf(p->comm, "  Hertz (E* = %g, R* = %g): a = %.6f, p_max = %.6f\n", (double)cp->Estar, (double)cp->Rstar, (double)cp->hertzA, (double)cp->hertzPmax));
+      PetscCall(PetscPrintf(p->comm, "  computed:              a = %.6f (%+.2f %%), p_max = %.6f (%+.2f %%)\n", (double)cp->femA, (double)(100 * (cp->femA / cp->hertzA - 1)), (double)cp->femPmax, (double)(100 * (cp->femPmax / cp->hertzPmax - 1))));
+      PetscCall(PetscPrintf(p->comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * cp->l2err), (double)(100 * cp->S[0].l2err), (double)(100 * cp->S[1].l2err)));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+static void JR(FILE *fp, PetscReal v)
+{
+  if (PetscIsInfOrNanReal(v)) fprintf(fp, "null");
+  else fprintf(fp, "%.17g", (double)v);
+}
+
+/* Called on rank 0 only. */
+PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
+{
+  PetscFunctionBeginUser;
+  if (!p->nterms) PetscFunctionReturn(0);
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    if (!cp->reported) continue;
+    if (t == 0) {
+      /* the first pair's figures at top level */
+      fprintf(fp, "  \"contact_force\": ");
+      JR(fp, cp->P);
+      fprintf(fp, ",\n  \"max_penetration\": ");
+      JR(fp, cp->maxPen);
+      fprintf(fp, ",\n  \"fem_pmax\": ");
+      JR(fp, cp->femPmax);
+      fprintf(fp, ",\n  \"fem_a\": ");
+      JR(fp, cp->femA);
+      if (cp->hertz) {
+        fprintf(fp, ",\n  \"hertz_a\": ");
+        JR(fp, cp->hertzA);
+        fprintf(fp, ",\n  \"hertz_pmax\": ");
+        JR(fp, cp->hertzPmax);
+        fprintf(fp, ",\n  \"pressure_l2_error\": ");
+        JR(fp, cp->l2err);
+      }
+      fprintf(fp, ",\n");
+    }
+  }
+  fprintf(fp, "  \"contact\": {");
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    fprintf(fp, "%s\n    \"%s\": {\"penalty\": ", t ? "," : "", cp->name);
+    JR(fp, cp->kp);
+    fprintf(fp, ", \"force\": [");
+    JR(fp, cp->force[0]);
+    fprintf(fp, ", ");
+    JR(fp, cp->force[1]);
+    fprintf(fp, "], \"P\": ");
+    JR(fp, cp->P);
+    fprintf(fp, ", \"max_penetration\": ");
+    JR(fp, cp->maxPen);
+    fprintf(fp, ", \"fem_pmax\": ");
+    JR(fp, cp->femPmax);
+    fprintf(fp, ", \"fem_a\": ");
+    JR(fp, cp->femA);
+    if (cp->hertz) {
+      fprintf(fp, ", \"E_star\": ");
+      JR(fp, cp->Estar);
+      fprintf(fp, ", \"R_star\": ");
+      JR(fp, cp->Rstar);
+      fprintf(fp, ", \"hertz_a\": ");
+      JR(fp, cp->hertzA);
+      fprintf(fp, ", \"hertz_pmax\": ");
+      JR(fp, cp->hertzPmax);
+      fprintf(fp, ", \"pressure_l2_error\": ");
+      JR(fp, cp->l2err);
+    }
+    fprintf(fp, ", \"surfaces\": [");
+    for (PetscInt s = 0; s < 2; ++s) {
+      Surface *S = &cp->S[s];
+      fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"pmax\": ", s ? ", " : "", p->bodies[S->body]->name, S->group, (int)S->ne);
+      JR(fp, S->pmax);
+      fprintf(fp, ", \"a\": ");
+      JR(fp, S->a);
+      fprintf(fp, ", \"centre\": ");
+      JR(fp, S->sc);
+      fprintf(fp, ", \"pressure_integral\": ");
+      JR(fp, S->ptotal);
+      fprintf(fp, ", \"force\": [");
+      JR(fp, S->force[0]);
+      fprintf(fp, ", ");
+      JR(fp, S->force[1]);
+      fprintf(fp, "]");
+      if (cp->hertz) {
+        fprintf(fp, ", \"pressure_l2_error\": ");
+        JR(fp, S->l2err);
+      }
+      fprintf(fp, "}");
+    }
+    fprintf(fp, "]}");
+  }
+  fprintf(fp, "\n  },\n");
+  PetscFunctionReturn(0);
+}
+
+/* Per slave surface, /contact/<pair>/<body>_<group>/: s, X (reference), x
+   (current), gap, pressure, weight, all from rank 0 (collective). */
+PetscErrorCode ContactPairsWriteHDF5(Problem p, PetscViewer v)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    if (!cp->reported) continue;
+    for (PetscInt s = 0; s < 2; ++s) {
+      Surface    *S = &cp->S[s];
+      char        group[4 * CONTACT_NAME_LEN];
+      const char *names[6] = {"s", "X", "x", "gap", "pressure", "weight"};
+      const PetscInt cols[6] = {0, 1, 3, 5, 6, 7}, bs[6] = {1, 2, 2, 1, 1, 1};
+      PetscInt    n = rank ? 0 : S->nprof;
+
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", cp->name, p->bodies[S->body]->name, S->group));
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      for (PetscInt k = 0; k < 6; ++k) {
+        Vec          vec;
+        PetscScalar *a;
+        PetscCall(VecCreate(p->comm, &vec));
+        PetscCall(VecSetSizes(vec, n * bs[k], PETSC_DETERMINE));
+        PetscCall(VecSetBlockSize(vec, bs[k]));
+        PetscCall(VecSetType(vec, VECSTANDARD));
+        PetscCall(PetscObjectSetName((PetscObject)vec, names[k]));
+        PetscCall(VecGetArray(vec, &a));
+        for (PetscInt i = 0; i < n; ++i)
+          for (PetscInt j = 0; j < bs[k]; ++j) a[i * bs[k] + j] = S->prof[8 * i + cols[k] + j];
+        PetscCall(VecRestoreArray(vec, &a));
+        PetscCall(VecView(vec, v));
+        PetscCall(VecDestroy(&vec));
+      }
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, p->bodies[S->body]->name));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, S->group));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->sc));
+      PetscCall(PetscViewerHDF5PopGroup(v));
+    }
+    {
+      char group[2 * CONTACT_NAME_LEN];
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", cp->name));
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &cp->kp));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &cp->P));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &cp->maxPen));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &cp->femPmax));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &cp->femA));
+      if (cp->hertz) {
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &cp->Estar));
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &cp->Rstar));
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_a", PETSC_REAL, &cp->hertzA));
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_pmax", PETSC_REAL, &cp->hertzPmax));
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &cp->l2err));
+      }
+      PetscCall(PetscViewerHDF5PopGroup(v));
+    }
+  }
+  PetscFunctionReturn(0);
+}
