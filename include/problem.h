@@ -13,6 +13,9 @@ struct _n_EnergyTerm {
   PetscErrorCode (*destroy)(EnergyTerm);
 };
 
+typedef enum { H0_NONE, H0_ELASTIC } H0Type;
+extern const char *const H0Types[];
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
@@ -28,7 +31,8 @@ struct _n_Problem {
   PetscBool partitionView, taylor;
   PetscInt  offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
   Vec       X, G;
-  Mat       H;
+  Mat       H, K; /* Hessian, elastic stiffness of the bodies */
+  H0Type    h0;
   Tao       tao;
   PetscInt  nEnergyEvals, nHessianEvals;
   PetscReal energy, gnorm;
@@ -36,6 +40,7 @@ struct _n_Problem {
   PetscLogDouble t0; /* start of the run */
   PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
   PetscInt  taylorN;
+  PetscReal taylorScale;
 };
 
 PetscErrorCode ProblemCreate(MPI_Comm, Problem *);

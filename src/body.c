@@ -264,7 +264,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
     PetscScalar *xc = NULL;
-    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2];
+    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2], sign0 = 1.0;
 
     PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
     for (PetscInt i = 0; i < ncl; ++i) {
@@ -295,12 +295,14 @@ static PetscErrorCode BodyBuildCellCache(Body b)
         }
       }
       detJ = J[0] * J[3] - J[1] * J[2];
-      PetscCheck(detJ > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s is inverted or degenerate (det J = %g)", b->name, c, b->msh, (double)detJ);
+      /* clockwise cells are fine; a sign change inside a cell is not */
+      if (iq == 0) sign0 = detJ > 0 ? 1.0 : -1.0;
+      PetscCheck(detJ * sign0 > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s is inverted or degenerate (det J = %g)", b->name, c, b->msh, (double)detJ);
       iJ[0] = J[3] / detJ;
       iJ[1] = -J[1] / detJ;
       iJ[2] = -J[2] / detJ;
       iJ[3] = J[0] / detJ;
-      b->wdetJ[ci * nq + iq]        = qw[iq] * detJ;
+      b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ);
       b->xq[(ci * nq + iq) * 2]     = xx[0];
       b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
       for (PetscInt a = 0; a < b->nb; ++a) {

@@ -432,7 +432,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   char     *names[CP_MAX_PAIRS];
   PetscInt  np = CP_MAX_PAIRS, nq = 4;
   PetscReal kp = -1.0;
-  PetscBool setkp;
+  PetscBool setkp, disable = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   if (!CP_EnergyGrad) {
@@ -446,7 +446,12 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces)", NULL, names, &np, NULL));
   PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
+  PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
   PetscOptionsEnd();
+  if (disable) {
+    for (PetscInt i = 0; i < np; ++i) PetscCall(PetscFree(names[i]));
+    PetscFunctionReturn(0);
+  }
   PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   for (PetscInt i = 0; i < np; ++i) {
     ContactPair *cp;

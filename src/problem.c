@@ -7,6 +7,8 @@
 #include "partition.h"
 #include "contactpair.h"
 
+const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
+
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 {
   Problem p;
@@ -16,6 +18,8 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->comm        = comm;
   p->meshSize    = -1.0;
   p->partitioner = PARTITION_METIS;
+  p->h0          = H0_ELASTIC;
+  p->taylorScale = 0.1;
   PetscCall(PetscStrncpy(p->scene, "scene", sizeof(p->scene)));
   *problem = p;
   PetscFunctionReturn(0);
@@ -44,7 +48,9 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, p->summary, p->summary, sizeof(p->summary), NULL));
   PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->partitioner, (PetscEnum *)&p->partitioner, NULL));
   PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->partitionView, &p->partitionView, NULL));
+  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
+  PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
   PetscOptionsEnd();
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
   PetscCheck(p->meshSize == -1.0 || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be > 0, got %g", (double)p->meshSize);
@@ -129,6 +135,13 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->H));
   PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(MatDestroy(&pre));
+  /* the elastic stiffness does not depend on u: assembled once */
+  PetscCall(MatDuplicate(p->H, MAT_DO_NOT_COPY_VALUES, &p->K));
+  PetscCall(MatZeroEntries(p->K));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
+  PetscCall(MatAssemblyBegin(p->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(p->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(p->K, MAT_SPD, PETSC_TRUE));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -191,8 +204,7 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
   (void)tao;
   (void)H;
   PetscCall(ProblemScatterToBodies(p, X));
-  PetscCall(MatZeroEntries(P));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], P));
+  PetscCall(MatCopy(p->K, P, SUBSET_NONZERO_PATTERN));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, P));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
@@ -201,6 +213,32 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
     PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
   }
   p->nHessianEvals++;
+  PetscFunctionReturn(0);
+}
+
+/* LMVM with the elastic stiffness of the bodies as initial Hessian H0: each
+   iteration applies H0^-1 (factorised once, -h0_pc_type to change) before the
+   quasi-Newton update, so that L-BFGS only has to learn the contact terms. */
+static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
+{
+  PetscBool lmvm, blmvm;
+  KSP       ksp;
+  PC        pc;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
+  if (!(lmvm || blmvm) || p->h0 == H0_NONE) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(TaoLMVMSetH0(p->tao, p->K));
+  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
+  PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
 
@@ -222,6 +260,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
   PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   PetscCall(TaoSetFromOptions(p->tao));
+  PetscCall(ProblemSetLMVMInitialHessian(p));
   PetscCall(TaoSolve(p->tao));
   PetscCall(TaoGetSolutionStatus(p->tao, &its, &f, &gnorm, NULL, NULL, &reason));
   PetscCall(TaoGetType(p->tao, &type));
@@ -263,7 +302,7 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   PetscCall(VecSetRandom(V, rnd));
   PetscCall(VecNorm(U, NORM_INFINITY, &umax));
   if (umax == 0.0) umax = 1e-3;
-  PetscCall(VecScale(V, 0.1 * umax));
+  PetscCall(VecScale(V, p->taylorScale * umax));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p));
   PetscCall(ProblemComputeHessian(p->tao, U, p->H, p->H, p));
   PetscCall(MatMult(p->H, V, HV));
@@ -312,6 +351,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
   PetscCall(MatDestroy(&p->H));
+  PetscCall(MatDestroy(&p->K));
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->G));
   PetscCall(PetscFree(p));

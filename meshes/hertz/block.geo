@@ -1,10 +1,14 @@
 // Block: the rectangle [x0, x0+W] x [-H/2, H/2] on a structured Quad9 grid,
 // symmetric about y = 0. Edges: "contact" (left), "push" (right), "top", "bottom".
-// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H.
+// Optional grading (hc < h): an unstructured all-quad mesh of size hc at the
+// point (x0, 0), growing to h over a distance dc.
+// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H, hc, dc.
 If (!Exists(h))  h = 0.1;  EndIf
 If (!Exists(x0)) x0 = 0.0; EndIf
 If (!Exists(W))  W = 1.0;  EndIf
 If (!Exists(H))  H = 2.0;  EndIf
+If (!Exists(hc)) hc = h;   EndIf
+If (!Exists(dc)) dc = W;   EndIf
 
 nx = Ceil(W / h - 1e-9);
 ny = 2 * Ceil(0.5 * H / h - 1e-9);
@@ -19,10 +23,28 @@ Line(3) = {3, 4};   // top
 Line(4) = {4, 1};   // left
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-Transfinite Curve{1, 3} = nx + 1;
-Transfinite Curve{2, 4} = ny + 1;
-Transfinite Surface{1};
-Recombine Surface{1};
+If (hc < h)
+  Point(5) = {x0, 0, 0, hc};
+  Field[1] = Distance;
+  Field[1].PointsList = {5};
+  Field[2] = Threshold;
+  Field[2].InField = 1;
+  Field[2].SizeMin = hc;
+  Field[2].SizeMax = h;
+  Field[2].DistMin = 0;
+  Field[2].DistMax = dc;
+  Background Field = 2;
+  Mesh.MeshSizeExtendFromBoundary = 0;
+  Mesh.MeshSizeFromPoints = 0;
+  Mesh.Algorithm = 6;
+  Mesh.RecombinationAlgorithm = 3;
+  Recombine Surface{1};
+Else
+  Transfinite Curve{1, 3} = nx + 1;
+  Transfinite Curve{2, 4} = ny + 1;
+  Transfinite Surface{1};
+  Recombine Surface{1};
+EndIf
 
 Physical Curve("contact") = {4};
 Physical Curve("push") = {2};

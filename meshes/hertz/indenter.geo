@@ -1,24 +1,30 @@
 // Indenter: a full disc of radius R centred at (xc, yc), meshed with Tri6.
-// Boundary arcs are split at x = xclamp (arc x < xclamp is "clamp") and at
-// x = xcontact (arc x > xcontact is "contact"); the rest is "free".
-// Parameters (gmsh -setnumber NAME VALUE): h, R, xc, yc, xclamp, xcontact.
+// Facing dir = +1 (+x) or -1 (-x), its boundary arcs are split at x = xclamp
+// (the arc behind it, dir (x - xclamp) < 0, is "clamp") and at x = xcontact (the
+// arc in front, dir (x - xcontact) > 0, is "contact"); the rest is "free".
+// Optional grading: mesh size hc at the front point, growing to h over a
+// distance dc.
+// Parameters (gmsh -setnumber NAME VALUE): h, R, xc, yc, xclamp, xcontact, dir, hc, dc.
 If (!Exists(h))        h = 0.1;   EndIf
 If (!Exists(R))        R = 1.0;   EndIf
 If (!Exists(xc))       xc = -1.0; EndIf
 If (!Exists(yc))       yc = 0.0;  EndIf
 If (!Exists(xclamp))   xclamp = -1.8; EndIf
 If (!Exists(xcontact)) xcontact = -0.5; EndIf
+If (!Exists(dir))      dir = 1;    EndIf
+If (!Exists(hc))       hc = h;     EndIf
+If (!Exists(dc))       dc = R;     EndIf
 
-tc = Acos((xcontact - xc) / R);   // half-angle of the contact arc
-tk = Acos((xclamp - xc) / R);     // angle where the clamp arc starts
+tc = Acos(dir * (xcontact - xc) / R);   // half-angle of the contact arc
+tk = Acos(dir * (xclamp - xc) / R);     // angle where the clamp arc starts
 
 Point(1) = {xc, yc, 0, h};
-Point(2) = {xc + R*Cos(-tc), yc + R*Sin(-tc), 0, h};
-Point(3) = {xc + R*Cos(tc),  yc + R*Sin(tc),  0, h};
-Point(4) = {xc + R*Cos(tk),  yc + R*Sin(tk),  0, h};
-Point(5) = {xc + R*Cos(-tk), yc + R*Sin(-tk), 0, h};
-Point(6) = {xc + R, yc, 0, h};
-Point(7) = {xc - R, yc, 0, h};
+Point(2) = {xc + dir*R*Cos(-tc), yc + R*Sin(-tc), 0, h};
+Point(3) = {xc + dir*R*Cos(tc),  yc + R*Sin(tc),  0, h};
+Point(4) = {xc + dir*R*Cos(tk),  yc + R*Sin(tk),  0, h};
+Point(5) = {xc + dir*R*Cos(-tk), yc + R*Sin(-tk), 0, h};
+Point(6) = {xc + dir*R, yc, 0, hc};
+Point(7) = {xc - dir*R, yc, 0, h};
 
 Circle(1) = {2, 1, 6};   // contact, lower half
 Circle(2) = {6, 1, 3};   // contact, upper half
@@ -28,6 +34,20 @@ Circle(5) = {7, 1, 5};   // clamp, lower half
 Circle(6) = {5, 1, 2};   // free, lower
 Curve Loop(1) = {1, 2, 3, 4, 5, 6};
 Plane Surface(1) = {1};
+
+If (hc < h)
+  Field[1] = Distance;
+  Field[1].PointsList = {6};
+  Field[2] = Threshold;
+  Field[2].InField = 1;
+  Field[2].SizeMin = hc;
+  Field[2].SizeMax = h;
+  Field[2].DistMin = 0;
+  Field[2].DistMax = dc;
+  Background Field = 2;
+  Mesh.MeshSizeExtendFromBoundary = 0;
+  Mesh.MeshSizeFromPoints = 0;
+EndIf
 
 Physical Curve("contact") = {1, 2};
 Physical Curve("clamp") = {4, 5};
