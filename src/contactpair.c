@@ -304,7 +304,7 @@ static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surfa
       rec[2] = Xs[1];
       rec[3] = xs[0];
       rec[4] = xs[1];
-      rec[5] = PETSC_MAX_REAL;
+      rec[5] = PETSC_INFINITY;
       rec[6] = 0.0;
       rec[7] = w;
       SurfaceFindClosest(M, xs, &me, &eta);
@@ -773,7 +773,6 @@ static PetscErrorCode SurfaceReport(ContactPair *cp, Surface *S, MPI_Comm comm)
     S->ptotal = 0.0;
     for (PetscInt i = 0; i < n; ++i) {
       const PetscReal *r = &S->prof[8 * i];
-      if (r[5] >= PETSC_MAX_REAL / 2) S->prof[8 * i + 5] = PETSC_INFINITY;
       S->pmax = PetscMax(S->pmax, r[6]);
       S->ptotal += r[6] * r[7];
       num += r[0] * r[6] * r[7];
