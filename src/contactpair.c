@@ -506,6 +506,14 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
 /* Builds the whole surface on every rank: the owned edges of the physical
    group with their nodes' global numbers, reference coordinates and outward
    normal sign, gathered from all ranks. */
+static PetscBool NodeBefore(const Surface *S, PetscInt a, PetscInt b)
+{
+  const PetscReal tol = 1e-9 * (PetscAbsReal(S->X[2 * a]) + PetscAbsReal(S->X[2 * b]) + 1.0);
+
+  if (PetscAbsReal(S->X[2 * a] - S->X[2 * b]) > tol) return S->X[2 * a] < S->X[2 * b] ? PETSC_TRUE : PETSC_FALSE;
+  return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
+}
+
 static PetscErrorCode SurfaceSetUp(Surface *S, Body b, const char pair[])
 {
   DMLabel         faces;
@@ -680,18 +688,22 @@ static PetscErrorCode SurfaceSetUp(Surface *S, Body b, const char pair[])
       }
     for (;;) {
       PetscInt start = -1, v, e = -1;
-      /* start a chain at an unwalked end node (lowest arc first), else any unwalked edge */
-      for (PetscInt k = 0; k < S->ne && start < 0; ++k) {
+      /* start a chain at the unwalked end node of smallest (x, then y)
+         reference coordinate, so that the walk does not depend on the
+         partition; else at any unwalked edge */
+      for (PetscInt k = 0; k < S->ne; ++k) {
         if (done[k]) continue;
-        for (PetscInt j = 0; j < 2; ++j)
-          if (S->endNode[S->enodes[3 * k + j]] && start < 0) {
-            start = S->enodes[3 * k + j];
+        for (PetscInt j = 0; j < 2; ++j) {
+          const PetscInt w = S->enodes[3 * k + j];
+          if (S->endNode[w] && (start < 0 || NodeBefore(S, w, start))) {
+            start = w;
             e     = k;
           }
+        }
       }
       for (PetscInt k = 0; k < S->ne && start < 0; ++k)
         if (!done[k]) {
-          start = S->enodes[3 * k];
+          start = S->enodes[3 * k] < S->enodes[3 * k + 1] ? S->enodes[3 * k] : S->enodes[3 * k + 1];
           e     = k;
         }
       if (start < 0) break;

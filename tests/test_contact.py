@@ -1,0 +1,96 @@
+"""Contact physics checks on the hertz scenes (SPEC.md). Expected values come
+from equilibrium, symmetry, the penalty law and Hertz's solution."""
+import numpy as np
+import pytest
+
+from conftest import run_contact
+from symmetric_mesh import build
+
+NEWTON = ["-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "cholesky"]
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts"] + NEWTON
+
+
+def rel(a, b):
+    return abs(a - b) / max(abs(a), abs(b))
+
+
+def test_force_balance(tmp_path):
+    """At convergence the contact force on the block equals the reaction at its pushed edge."""
+    s = run_contact(HERTZ + ["-output", "none"], tmp_path).summary
+    fc = s["contact"]["interface"]["force"][0]   # on the indenter = minus that on the block
+    r = s["reactions"]["block:push"][0]          # dPi/du_x summed over the pushed edge
+    print(f"contact force {fc!r}, reaction {r!r}")
+    assert rel(fc, r) <= 1e-6
+    assert rel(s["reactions"]["indenter:clamp"][0], -r) <= 1e-6
+
+
+def test_symmetry(tmp_path):
+    """Mirror-symmetric meshes (structured block, reflected disc): p(y) = p(-y)."""
+    msh = tmp_path / "disc.msh"
+    build(msh, 0.1)
+    r = run_contact(HERTZ + ["-indenter_mesh", msh], tmp_path)
+    with r.h5() as f:
+        for k, g in f["contact/interface"].items():
+            s, p, sc = g["s"][...], g["pressure"][...], g.attrs["centre"]
+            assert np.abs((s - sc) + (s - sc)[::-1]).max() < 1e-9
+            err = np.abs(p - p[::-1]).max() / p.max()
+            print(f"{k}: max |p(s) - p(-s)| / p_max = {err:.2e}")
+            assert err <= 1e-6
+    assert abs(r.summary["contact"]["interface"]["force"][1]) <= 1e-6 * r.summary["contact_force"]
+
+
+def test_penetration_and_hertz_small(tmp_path):
+    """hertz-small (a/R = 0.1, graded meshes, size 0.004 at the contact): p_max and a
+    within 2 % of Hertz, the largest penetration is p_max(Hertz)/k_p within 1 %."""
+    s = run_contact(["-options_file", "meshes/hertz-small/hertz-small.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
+    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error", "max_penetration")})
+    assert 0.08 <= s["hertz_a"] <= 0.12
+    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.02
+    assert rel(s["fem_a"], s["hertz_a"]) <= 0.02
+    assert rel(s["max_penetration"], s["hertz_pmax"] / 2e6) <= 0.01
+    assert s["pressure_l2_error"] <= 0.05
+
+
+def test_twodiscs(tmp_path):
+    """Two discs of radii 1 and 2, E 1000 and 3000, nu 0.3 and 0.25: Hertz with that E*, R*."""
+    s = run_contact(["-options_file", "meshes/twodiscs/twodiscs.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
+    c = s["contact"]["interface"]
+    estar = 1.0 / ((1 - 0.3 ** 2) / 1000 + (1 - 0.25 ** 2) / 3000)
+    assert rel(c["E_star"], estar) <= 1e-12 and rel(c["R_star"], 2.0 / 3.0) <= 1e-12
+    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
+    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.02
+    assert rel(s["fem_a"], s["hertz_a"]) <= 0.02
+
+
+def test_reference_profile_error(tmp_path):
+    """The reference scene at h = 0.06: profile error against Hertz measured at 10.7 %
+    (a/R = 0.36 and a block of width 1: Hertz is not exact here)."""
+    s = run_contact(HERTZ + ["-mesh_size", "0.06", "-output", "none"], tmp_path).summary
+    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
+    assert s["pressure_l2_error"] <= 0.12
+    assert rel(s["contact_force"], 54.86) <= 0.005
+
+
+def test_force_converges(tmp_path):
+    """The contact force converges as h falls: successive differences shrink
+    monotonically over h = 0.1, 0.06, 0.04 (not from h = 0.2: see README)."""
+    P = [run_contact(HERTZ + ["-mesh_size", str(h), "-output", "none"], tmp_path, name=f"h{h}").summary["contact_force"]
+         for h in (0.1, 0.06, 0.04)]
+    print("P:", P)
+    assert (P[1] - P[0]) * (P[2] - P[1]) >= 0, "monotone"
+    assert abs(P[2] - P[1]) < abs(P[1] - P[0])
+
+
+def test_ranks(tmp_path):
+    """The reference scene at 1, 2 and 3 ranks: same P and pressure profile to 1e-8."""
+    runs = [run_contact(HERTZ + ["-tao_gttol", "1e-13"], tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3)]
+    P0 = runs[0].summary["contact_force"]
+    with runs[0].h5() as f:
+        p0 = {k: g["pressure"][...] for k, g in f["contact/interface"].items()}
+    for r in runs[1:]:
+        assert rel(r.summary["contact_force"], P0) <= 1e-8
+        with r.h5() as f:
+            for k, g in f["contact/interface"].items():
+                p = g["pressure"][...]
+                assert p.shape == p0[k].shape
+                assert np.abs(p - p0[k]).max() <= 1e-8 * np.abs(p0[k]).max()
