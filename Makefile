@@ -41,6 +41,9 @@ meshes: bin/contact
 
 run: bin/contact meshes
 	$(MPIEXEC) ./bin/contact -options_file meshes/$(SCENE)/$(SCENE).opts
+	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 -o out/$(SCENE)-pressure.png
+	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 --field -o out/$(SCENE)-vonmises.png
+	@echo "Figures: out/$(SCENE)-pressure.png out/$(SCENE)-vonmises.png; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
 test: bin/contact meshes
 	$(PYTHON) -m pytest -q tests

@@ -268,10 +268,10 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   p->nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
-  PetscCall(ContactPairsReport(p));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations\n", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
+  PetscCall(ContactPairsReport(p));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
