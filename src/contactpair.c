@@ -896,36 +896,34 @@ static void JR(FILE *fp, PetscReal v)
   else fprintf(fp, "%.17g", (double)v);
 }
 
-/* Called on rank 0 only. */
+static void JKV(FILE *fp, const char sep[], const char key[], PetscReal v)
+{
+  fprintf(fp, "%s\"%s\": ", sep, key);
+  JR(fp, v);
+}
+
+/* The figures of a pair, each preceded by sep. */
+static void PairFiguresJSON(FILE *fp, const ContactPair *cp, const char sep[], const char forceKey[])
+{
+  JKV(fp, sep, forceKey, cp->P);
+  JKV(fp, sep, "max_penetration", cp->maxPen);
+  JKV(fp, sep, "fem_pmax", cp->femPmax);
+  JKV(fp, sep, "fem_a", cp->femA);
+  if (!cp->hertz) return;
+  JKV(fp, sep, "E_star", cp->Estar);
+  JKV(fp, sep, "R_star", cp->Rstar);
+  JKV(fp, sep, "hertz_a", cp->hertzA);
+  JKV(fp, sep, "hertz_pmax", cp->hertzPmax);
+  JKV(fp, sep, "pressure_l2_error", cp->l2err);
+}
+
+/* Called on rank 0 only: the first pair's figures at top level, then every pair. */
 PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
 {
   PetscFunctionBeginUser;
-  if (!p->nterms) PetscFunctionReturn(0);
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
-    if (!cp->reported) continue;
-    if (t == 0) {
-      /* the first pair's figures at top level */
-      fprintf(fp, "  \"contact_force\": ");
-      JR(fp, cp->P);
-      fprintf(fp, ",\n  \"max_penetration\": ");
-      JR(fp, cp->maxPen);
-      fprintf(fp, ",\n  \"fem_pmax\": ");
-      JR(fp, cp->femPmax);
-      fprintf(fp, ",\n  \"fem_a\": ");
-      JR(fp, cp->femA);
-      if (cp->hertz) {
-        fprintf(fp, ",\n  \"hertz_a\": ");
-        JR(fp, cp->hertzA);
-        fprintf(fp, ",\n  \"hertz_pmax\": ");
-        JR(fp, cp->hertzPmax);
-        fprintf(fp, ",\n  \"pressure_l2_error\": ");
-        JR(fp, cp->l2err);
-      }
-      fprintf(fp, ",\n");
-    }
-  }
-  fprintf(fp, "  \"contact\": {");
+  if (!p->nterms || !((ContactPair *)p->terms[0]->ctx)->reported) PetscFunctionReturn(0);
+  PairFiguresJSON(fp, (ContactPair *)p->terms[0]->ctx, ",\n  ", "contact_force");
+  fprintf(fp, ",\n  \"contact\": {");
   for (PetscInt t = 0; t < p->nterms; ++t) {
     ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
     fprintf(fp, "%s\n    \"%s\": {\"penalty\": ", t ? "," : "", cp->name);
@@ -934,51 +932,27 @@ PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
     JR(fp, cp->force[0]);
     fprintf(fp, ", ");
     JR(fp, cp->force[1]);
-    fprintf(fp, "], \"P\": ");
-    JR(fp, cp->P);
-    fprintf(fp, ", \"max_penetration\": ");
-    JR(fp, cp->maxPen);
-    fprintf(fp, ", \"fem_pmax\": ");
-    JR(fp, cp->femPmax);
-    fprintf(fp, ", \"fem_a\": ");
-    JR(fp, cp->femA);
-    if (cp->hertz) {
-      fprintf(fp, ", \"E_star\": ");
-      JR(fp, cp->Estar);
-      fprintf(fp, ", \"R_star\": ");
-      JR(fp, cp->Rstar);
-      fprintf(fp, ", \"hertz_a\": ");
-      JR(fp, cp->hertzA);
-      fprintf(fp, ", \"hertz_pmax\": ");
-      JR(fp, cp->hertzPmax);
-      fprintf(fp, ", \"pressure_l2_error\": ");
-      JR(fp, cp->l2err);
-    }
+    fprintf(fp, "]");
+    PairFiguresJSON(fp, cp, ", ", "P");
     fprintf(fp, ", \"surfaces\": [");
     for (PetscInt s = 0; s < 2; ++s) {
-      Surface *S = &cp->S[s];
-      fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"pmax\": ", s ? ", " : "", p->bodies[S->body]->name, S->group, (int)S->ne);
-      JR(fp, S->pmax);
-      fprintf(fp, ", \"a\": ");
-      JR(fp, S->a);
-      fprintf(fp, ", \"centre\": ");
-      JR(fp, S->sc);
-      fprintf(fp, ", \"pressure_integral\": ");
-      JR(fp, S->ptotal);
+      const Surface *S = &cp->S[s];
+      fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d", s ? ", " : "", p->bodies[S->body]->name, S->group, (int)S->ne);
+      JKV(fp, ", ", "pmax", S->pmax);
+      JKV(fp, ", ", "a", S->a);
+      JKV(fp, ", ", "centre", S->sc);
+      JKV(fp, ", ", "pressure_integral", S->ptotal);
       fprintf(fp, ", \"force\": [");
       JR(fp, S->force[0]);
       fprintf(fp, ", ");
       JR(fp, S->force[1]);
       fprintf(fp, "]");
-      if (cp->hertz) {
-        fprintf(fp, ", \"pressure_l2_error\": ");
-        JR(fp, S->l2err);
-      }
+      if (cp->hertz) JKV(fp, ", ", "pressure_l2_error", S->l2err);
       fprintf(fp, "}");
     }
     fprintf(fp, "]}");
   }
-  fprintf(fp, "\n  },\n");
+  fprintf(fp, "\n  }");
   PetscFunctionReturn(0);
 }
 

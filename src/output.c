@@ -372,9 +372,9 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
         JsonReal(fp, p->bodies[i]->bc[j].reaction[1]);
         fprintf(fp, "]");
       }
-    fprintf(fp, "\n  },\n");
+    fprintf(fp, "\n  }");
     PetscCall(ContactPairsWriteJSON(p, fp));
-    fprintf(fp, "  \"bodies\": {");
+    fprintf(fp, ",\n  \"bodies\": {");
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       Body      b = p->bodies[i];
       PetscReal err, nrm;
