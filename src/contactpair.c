@@ -56,7 +56,7 @@ typedef struct {
   PetscInt   nown, *ownEdges;          /* edges this rank integrates as slave */
   /* search structure over this surface as master */
   PetscInt   nkeys, *keys, *kedge, nx, ny;
-  PetscReal  lo[2], cell;
+  PetscReal  lo[2], cell, reach;
   /* results of the last evaluation with this surface as slave (owned points) */
   PetscInt   nq, nqmax;
   PetscReal *qdata;       /* [nq][8]: s, X, Y, x, y, gap, pressure, weight */
@@ -162,6 +162,9 @@ static PetscErrorCode SurfaceBuildSearch(Surface *M)
   /* cells no smaller than the largest edge, and at most 4096 per direction */
   M->cell = PetscMax(ext, PetscMax(hi[0] - M->lo[0], hi[1] - M->lo[1]) / 4096.0);
   if (M->cell <= 0) M->cell = 1.0;
+  /* how far from the surface a slave point is still matched: a tenth of the
+     surface's extent, enough for any penetration a solver iterate makes */
+  M->reach = PetscMax(M->cell, 0.1 * PetscMax(hi[0] - M->lo[0], hi[1] - M->lo[1]));
   M->lo[0] -= M->cell;
   M->lo[1] -= M->cell;
   M->nx = (PetscInt)((hi[0] - M->lo[0]) / M->cell) + 2;
@@ -194,14 +197,11 @@ static PetscErrorCode SurfaceBuildSearch(Surface *M)
   PetscFunctionReturn(0);
 }
 
-/* Closest master edge to p among the candidates of p's cell; *edge = -1 if none. */
-static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt *edge, PetscReal *eta)
+/* Candidates of one cell: the closest one updates (best, edge, eta). */
+static void SurfaceSearchCell(const Surface *M, PetscInt i, PetscInt j, const PetscReal p[2], PetscReal *best, PetscInt *edge, PetscReal *eta)
 {
-  const PetscInt i = (PetscInt)((p[0] - M->lo[0]) / M->cell), j = (PetscInt)((p[1] - M->lo[1]) / M->cell);
-  PetscInt       key, lo = 0, hi = M->nkeys;
-  PetscReal      best = PETSC_MAX_REAL;
+  PetscInt key, lo = 0, hi = M->nkeys;
 
-  *edge = -1;
   if (i < 0 || j < 0 || i >= M->nx || j >= M->ny) return;
   key = i * M->ny + j;
   while (lo < hi) {
@@ -212,11 +212,37 @@ static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt 
   for (PetscInt k = lo; k < M->nkeys && M->keys[k] == key; ++k) {
     PetscReal e, d2;
     EdgeProject(M->x, &M->enodes[3 * M->kedge[k]], p, &e, &d2);
-    if (d2 < best) {
-      best  = d2;
+    if (d2 < *best) {
+      *best = d2;
       *edge = M->kedge[k];
       *eta  = e;
     }
+  }
+}
+
+/* Closest master edge to p: the candidates of p's cell, then of rings of cells
+   around it until some are found (plus one more ring, which may hold a closer
+   edge), up to M->reach; *edge = -1 if none. Deeply penetrated points thus keep
+   a gap, and the energy stays continuous. */
+static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt *edge, PetscReal *eta)
+{
+  const PetscInt i = (PetscInt)PetscFloorReal((p[0] - M->lo[0]) / M->cell), j = (PetscInt)PetscFloorReal((p[1] - M->lo[1]) / M->cell);
+  const PetscInt rmax = (PetscInt)(M->reach / M->cell) + 1;
+  PetscReal      best = PETSC_MAX_REAL;
+  PetscInt       found = -1;
+
+  *edge = -1;
+  if (i < -rmax || j < -rmax || i >= M->nx + rmax || j >= M->ny + rmax) return;
+  for (PetscInt r = 0; r <= rmax && (found < 0 || r <= found + 1); ++r) {
+    for (PetscInt a = -r; a <= r; ++a) {
+      SurfaceSearchCell(M, i + a, j - r, p, &best, edge, eta);
+      if (r) SurfaceSearchCell(M, i + a, j + r, p, &best, edge, eta);
+    }
+    for (PetscInt b = -r + 1; b <= r - 1; ++b) {
+      SurfaceSearchCell(M, i - r, j + b, p, &best, edge, eta);
+      SurfaceSearchCell(M, i + r, j + b, p, &best, edge, eta);
+    }
+    if (found < 0 && *edge >= 0) found = r;
   }
 }
 
