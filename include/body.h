@@ -38,6 +38,7 @@ struct _n_Body {
   PetscFE   fe, feScalar;
   PetscBool simplex;
   PetscInt  dim, ncells, nb, nq, ncellsGlobal;
+  PetscInt *cpts;  /* [ncells][nb]: node points of each cell, in basis order */
   PetscInt *cdof;  /* [ncells][nb]: local offset of the first component of each node */
   PetscReal *dNdx; /* [ncells][nq][nb][2] */
   PetscReal *wdetJ;/* [ncells][nq] */
@@ -60,6 +61,7 @@ PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride, const char m
 PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
 PetscErrorCode BodyDestroy(Body *);
 PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
+PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[]);
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);

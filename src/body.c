@@ -223,7 +223,28 @@ PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
   PetscFunctionReturn(0);
 }
 
-/* Caches per cell the local dof offsets, the nodal coordinates, the physical
+/* At one reference point of an element with nb nodes at x, given the reference
+   basis gradients D[a][2]: returns det J and the physical gradients dNdx[a][2]. */
+PetscReal BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[])
+{
+  PetscReal J[4] = {0, 0, 0, 0}, detJ, iJ[4];
+
+  for (PetscInt a = 0; a < nb; ++a)
+    for (PetscInt i = 0; i < 2; ++i)
+      for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[a][i] * D[a * 2 + j];
+  detJ  = J[0] * J[3] - J[1] * J[2];
+  iJ[0] = J[3] / detJ;
+  iJ[1] = -J[1] / detJ;
+  iJ[2] = -J[2] / detJ;
+  iJ[3] = J[0] / detJ;
+  for (PetscInt a = 0; a < nb; ++a) {
+    dNdx[2 * a]     = D[a * 2] * iJ[0] + D[a * 2 + 1] * iJ[2];
+    dNdx[2 * a + 1] = D[a * 2] * iJ[1] + D[a * 2 + 1] * iJ[3];
+  }
+  return detJ;
+}
+
+/* Caches per cell the node points, their local dof offsets, the nodal coordinates, the physical
    basis gradients and the quadrature weights times det J. The node positions
    come from evaluating the mesh's own coordinate field (continuous Q2 on quads,
    cellwise P2 on triangles as PETSc's Gmsh reader stores them) at the reference
@@ -260,7 +281,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   b->nq     = nq;
   b->ncells = cEnd - cStart;
   b->B      = T->T[0];
-  PetscCall(PetscMalloc5(b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * 2, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * 2, &b->xq, b->ncells * b->nb * 2, &b->xnode));
+  PetscCall(PetscMalloc6(b->ncells * b->nb, &b->cpts, b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * 2, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * 2, &b->xq, b->ncells * b->nb * 2, &b->xnode));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
     PetscScalar *xc = NULL;
@@ -273,6 +294,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
       if (!dof) continue;
       PetscCheck(k < b->nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cell %" PetscInt_FMT " has more nodes than the element", c);
       PetscCall(PetscSectionGetOffset(s, p, &off));
+      b->cpts[ci * b->nb + k]   = p;
       b->cdof[ci * b->nb + k++] = off;
     }
     PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
@@ -286,30 +308,17 @@ static PetscErrorCode BodyBuildCellCache(Body b)
     }
     PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *D = &T->T[1][iq * b->nb * 2];
-      PetscReal        J[4] = {0, 0, 0, 0}, detJ, iJ[4], xx[2] = {0, 0};
-      for (PetscInt a = 0; a < b->nb; ++a) {
-        for (PetscInt i = 0; i < 2; ++i) {
-          xx[i] += x[a][i] * b->B[iq * b->nb + a];
-          for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[a][i] * D[a * 2 + j];
-        }
-      }
-      detJ = J[0] * J[3] - J[1] * J[2];
+      const PetscReal detJ = BodyElementGradients(b->nb, (const PetscReal(*)[2])x, &T->T[1][iq * b->nb * 2], &b->dNdx[(ci * nq + iq) * b->nb * 2]);
+      PetscReal       xx[2] = {0, 0};
+
       /* clockwise cells are fine; a sign change inside a cell is not */
       if (iq == 0) sign0 = detJ > 0 ? 1.0 : -1.0;
       PetscCheck(detJ * sign0 > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s is inverted or degenerate (det J = %g)", b->name, c, b->msh, (double)detJ);
-      iJ[0] = J[3] / detJ;
-      iJ[1] = -J[1] / detJ;
-      iJ[2] = -J[2] / detJ;
-      iJ[3] = J[0] / detJ;
+      for (PetscInt a = 0; a < b->nb; ++a)
+        for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
       b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ);
       b->xq[(ci * nq + iq) * 2]     = xx[0];
       b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
-      for (PetscInt a = 0; a < b->nb; ++a) {
-        PetscReal *g = &b->dNdx[((ci * nq + iq) * b->nb + a) * 2];
-        g[0] = D[a * 2] * iJ[0] + D[a * 2 + 1] * iJ[2];
-        g[1] = D[a * 2] * iJ[1] + D[a * 2 + 1] * iJ[3];
-      }
     }
   }
   PetscCall(PetscTabulationDestroy(&Tc));
@@ -322,26 +331,17 @@ static PetscErrorCode BodyBuildNodeData(Body b)
 {
   PetscSection    s, ns;
   PetscSF         sf;
-  PetscInt        nleaves, cStart, cEnd;
+  PetscInt        nleaves;
   const PetscInt *leaves;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(PetscSectionGetChart(s, &b->pStart, &b->pEnd));
   PetscCall(PetscCalloc2(2 * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
-  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    PetscInt *cl = NULL, ncl, k = 0;
-    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-    for (PetscInt i = 0; i < ncl; ++i) {
-      PetscInt p = cl[2 * i], dof;
-      PetscCall(PetscSectionGetDof(s, p, &dof));
-      if (!dof) continue;
-      b->xpoint[2 * (p - b->pStart)]     = b->xnode[((c - cStart) * b->nb + k) * 2];
-      b->xpoint[2 * (p - b->pStart) + 1] = b->xnode[((c - cStart) * b->nb + k) * 2 + 1];
-      k++;
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+  for (PetscInt k = 0; k < b->ncells * b->nb; ++k) {
+    const PetscInt p = b->cpts[k] - b->pStart;
+    b->xpoint[2 * p]     = b->xnode[2 * k];
+    b->xpoint[2 * p + 1] = b->xnode[2 * k + 1];
   }
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) b->owned[p - b->pStart] = PETSC_TRUE;
   PetscCall(DMGetPointSF(b->dm, &sf));
@@ -634,7 +634,7 @@ PetscErrorCode BodyDestroy(Body *body)
   for (PetscInt i = 0; i < b->nphys; ++i) PetscCall(PetscFree(b->physNames[i]));
   PetscCall(PetscFree(b->physNames));
   PetscCall(PetscFree2(b->physDims, b->physTags));
-  PetscCall(PetscFree5(b->cdof, b->dNdx, b->wdetJ, b->xq, b->xnode));
+  PetscCall(PetscFree6(b->cpts, b->cdof, b->dNdx, b->wdetJ, b->xq, b->xnode));
   PetscCall(PetscFree(b->l2b));
   PetscCall(PetscFree2(b->xpoint, b->owned));
   PetscCall(PetscSectionDestroy(&b->nodeGS));

@@ -29,16 +29,16 @@ static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, con
 }
 
 /* Node values are computed per local point (arrays over the chart); owned
-   points are numbered by a global section of one dof per node, and the stress
-   sums of the cells around a node are reduced from ghosts to owners over the
-   point SF. */
+   points are numbered by the body's node numbering, and the stress sums of the
+   cells around a node are reduced from ghosts to owners over the point SF. */
 static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
 {
-  PetscSection       s, ns, gs;
+  PetscSection       s;
   PetscSF            sf;
   const PetscScalar *ua;
-  PetscInt           pStart, pEnd, cStart, cEnd, nb = b->nb, *topo, nown = 0, rstart, nroots;
-  PetscReal         *xp, *sp, *sr, refpts[9 * 2];
+  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
+  PetscInt           nown = 0, rstart = 0, nroots, *topo;
+  PetscReal         *sp, *sr, refpts[9 * 2];
   PetscTabulation    Tn;
   PetscReal          loc[2] = {0, 0}, glob[2];
   PetscScalar       *ax, *au, *as, *av;
@@ -47,61 +47,38 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(DMGetPointSF(b->dm, &sf));
-  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
-  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
-  PetscCall(PetscSectionCreate(b->comm, &ns)); /* its comm numbers the owned nodes */
-  PetscCall(PetscSectionSetChart(ns, pStart, pEnd));
-  for (PetscInt p = pStart; p < pEnd; ++p) {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(s, p, &dof));
-    if (dof) PetscCall(PetscSectionSetDof(ns, p, 1));
-  }
-  PetscCall(PetscSectionSetUp(ns));
-  PetscCall(PetscSectionCreateGlobalSection(ns, sf, PETSC_FALSE, PETSC_FALSE, &gs));
-  for (PetscInt p = pStart; p < pEnd; ++p) {
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
     PetscInt gdof;
-    PetscCall(PetscSectionGetDof(gs, p, &gdof));
+    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
     if (gdof > 0) nown += gdof;
   }
-  rstart = 0;
   PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
   PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
   PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
   PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
   PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
   PetscCall(VecGetSize(F->vm, &F->nnodes));
-  PetscCall(PetscCalloc3(2 * (pEnd - pStart), &xp, 5 * (pEnd - pStart), &sp, 5 * (pEnd - pStart), &sr));
-  PetscCall(PetscMalloc1((cEnd - cStart) * nb, &topo));
+  PetscCall(PetscCalloc2(5 * np, &sp, 5 * np, &sr));
+  PetscCall(PetscMalloc1(b->ncells * nb, &topo));
   PetscCall(BodyGetReferenceNodes(b, refpts));
   PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
   PetscCall(VecGetArrayRead(b->Xl, &ua));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    PetscInt *cl = NULL, ncl, k = 0, pts[9], depth[9], corners[4], nc = 0, ci = c - cStart, node[9];
-    PetscReal x[9][2], u[9][2];
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt  *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
+    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * 2];
+    PetscInt         depth[9], corners[4], nc = 0, node[9];
+    PetscReal        u[9][2], dNdx[9 * 2];
 
-    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-    for (PetscInt i = 0; i < ncl; ++i) {
-      PetscInt p = cl[2 * i], dof, off, goff;
-      PetscCall(PetscSectionGetDof(s, p, &dof));
-      if (!dof) continue;
-      PetscCall(PetscSectionGetOffset(s, p, &off));
-      PetscCall(PetscSectionGetOffset(gs, p, &goff));
-      PetscCall(DMPlexGetPointDepth(b->dm, p, &depth[k]));
-      pts[k]  = p;
-      node[k] = goff >= 0 ? goff : -(goff + 1);
-      x[k][0] = b->xnode[(ci * nb + k) * 2];
-      x[k][1] = b->xnode[(ci * nb + k) * 2 + 1];
-      u[k][0] = PetscRealPart(ua[off]);
-      u[k][1] = PetscRealPart(ua[off + 1]);
-      xp[2 * (p - pStart)]     = x[k][0];
-      xp[2 * (p - pStart) + 1] = x[k][1];
+    for (PetscInt k = 0; k < nb; ++k) {
+      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
+      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
+      u[k][0] = PetscRealPart(ua[dof[k]]);
+      u[k][1] = PetscRealPart(ua[dof[k] + 1]);
       if (depth[k] == 0) corners[nc++] = k;
-      k++;
     }
-    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
     /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
-    for (PetscInt i = 0; i < nc; ++i) topo[ci * nb + i] = node[corners[i]];
-    for (PetscInt i = 0; i < k; ++i) {
+    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
+    for (PetscInt i = 0; i < nb; ++i) {
       if (depth[i] == 1) {
         const PetscInt *cone;
         PetscInt        j0 = -1, j1 = -1;
@@ -111,28 +88,19 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
           if (pts[corners[j]] == cone[1]) j1 = j;
         }
         PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
-        topo[ci * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
-      } else if (depth[i] == 2) topo[ci * nb + 2 * nc] = node[i];
+        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
+      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
     }
     /* stress of this cell at each of its nodes */
     for (PetscInt a = 0; a < nb; ++a) {
-      const PetscReal *D = &Tn->T[1][a * nb * 2];
-      PetscReal        J[4] = {0, 0, 0, 0}, iJ[4], detJ, gu[4] = {0, 0, 0, 0}, sig[4];
-      PetscReal       *acc = &sp[5 * (pts[a] - pStart)];
-      for (PetscInt q = 0; q < nb; ++q)
-        for (PetscInt i = 0; i < 2; ++i)
-          for (PetscInt j = 0; j < 2; ++j) J[i * 2 + j] += x[q][i] * D[q * 2 + j];
-      detJ  = J[0] * J[3] - J[1] * J[2];
-      iJ[0] = J[3] / detJ;
-      iJ[1] = -J[1] / detJ;
-      iJ[2] = -J[2] / detJ;
-      iJ[3] = J[0] / detJ;
+      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4];
+      PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
+      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
       for (PetscInt q = 0; q < nb; ++q) {
-        const PetscReal gx = D[q * 2] * iJ[0] + D[q * 2 + 1] * iJ[2], gy = D[q * 2] * iJ[1] + D[q * 2 + 1] * iJ[3];
-        gu[0] += u[q][0] * gx;
-        gu[1] += u[q][0] * gy;
-        gu[2] += u[q][1] * gx;
-        gu[3] += u[q][1] * gy;
+        gu[0] += u[q][0] * dNdx[2 * q];
+        gu[1] += u[q][0] * dNdx[2 * q + 1];
+        gu[2] += u[q][1] * dNdx[2 * q];
+        gu[3] += u[q][1] * dNdx[2 * q + 1];
       }
       ElasticityStress(b->param, gu, sig);
       acc[0] += sig[0];
@@ -144,7 +112,7 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
   }
   PetscCall(PetscTabulationDestroy(&Tn));
   PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
-  PetscCall(PetscArraycpy(sr, sp, 5 * (pEnd - pStart)));
+  PetscCall(PetscArraycpy(sr, sp, 5 * np));
   if (nroots >= 0) {
     PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
     PetscCallMPI(MPI_Type_commit(&five));
@@ -156,18 +124,16 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
   PetscCall(VecGetArray(F->disp, &au));
   PetscCall(VecGetArray(F->stress, &as));
   PetscCall(VecGetArray(F->vm, &av));
-  for (PetscInt p = pStart; p < pEnd; ++p) {
-    PetscInt dof, goff, off, i;
-    PetscReal um2, *st = &sr[5 * (p - pStart)];
-    PetscCall(PetscSectionGetDof(ns, p, &dof));
-    if (!dof) continue;
-    PetscCall(PetscSectionGetDof(gs, p, &dof));
-    if (dof <= 0) continue;
-    PetscCall(PetscSectionGetOffset(gs, p, &goff));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt   gdof, goff, off, i;
+    PetscReal  um2, *st = &sr[5 * (p - b->pStart)];
+    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
+    if (gdof <= 0) continue;
+    PetscCall(PetscSectionGetOffset(b->nodeGS, p, &goff));
     PetscCall(PetscSectionGetOffset(s, p, &off));
-    i         = goff - rstart;
-    ax[2 * i]     = xp[2 * (p - pStart)];
-    ax[2 * i + 1] = xp[2 * (p - pStart) + 1];
+    i             = goff - rstart;
+    ax[2 * i]     = b->xpoint[2 * (p - b->pStart)];
+    ax[2 * i + 1] = b->xpoint[2 * (p - b->pStart) + 1];
     au[2 * i]     = ua[off];
     au[2 * i + 1] = ua[off + 1];
     for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
@@ -181,14 +147,12 @@ static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
   PetscCall(VecRestoreArray(F->stress, &as));
   PetscCall(VecRestoreArray(F->vm, &av));
   PetscCall(VecRestoreArrayRead(b->Xl, &ua));
-  PetscCall(PetscFree3(xp, sp, sr));
-  PetscCall(PetscSectionDestroy(&ns));
-  PetscCall(PetscSectionDestroy(&gs));
+  PetscCall(PetscFree2(sp, sr));
   PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
   F->umax   = glob[0];
   F->unorm2 = glob[1];
-  PetscCall(ISCreateGeneral(b->comm, (cEnd - cStart) * nb, topo, PETSC_OWN_POINTER, &F->topo));
+  PetscCall(ISCreateGeneral(b->comm, b->ncells * nb, topo, PETSC_OWN_POINTER, &F->topo));
   PetscCall(ISSetBlockSize(F->topo, nb));
   PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
   F->ncells = b->ncellsGlobal;
