@@ -303,36 +303,25 @@ static PetscReal EdgeArc(const Surface *S, PetscInt e, PetscReal xi, const Petsc
    to the slave and master gradient arrays; records the slave points. */
 static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surface *M, PetscReal c, PetscReal *energy, Mat H)
 {
-  PetscReal e = 0.0, gx[8], gw[8];
+  PetscReal e = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
   S->nq = 0;
-  if (S->nqmax < S->nown * cp->nqp) {
-    PetscCall(PetscFree(S->qdata));
-    S->nqmax = S->nown * cp->nqp;
-    PetscCall(PetscMalloc1(8 * S->nqmax + 8, &S->qdata));
-  }
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt  se = S->ownEdges[k];
     const PetscInt *sn = &S->enodes[3 * se];
     for (PetscInt q = 0; q < cp->nqp; ++q) {
-      PetscReal N[3], dN[3], Xs[2], T[2], xs[2], ts[2], w, eta = 0.0, xm[2], tm[2], n[2], tn, gap, pen;
+      PetscReal N[3], dN[3], xs[2], ts[2], w, eta = 0.0, xm[2], tm[2], n[2], tn, gap, pen;
       PetscInt  me;
-      PetscReal *rec = &S->qdata[8 * S->nq++];
+      PetscReal *rec = &S->qdata[8 * S->nq++]; /* s, X, Y and weight set in SurfaceSetUpSlavePoints */
 
       EdgeShape(cp->xi[q], N, dN);
-      EdgeEval(S->X, sn, cp->xi[q], Xs, T);
       EdgeEval(S->x, sn, cp->xi[q], xs, ts);
-      w = cp->wxi[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
-      rec[0] = EdgeArc(S, se, cp->xi[q], gx, gw, 8);
-      rec[1] = Xs[0];
-      rec[2] = Xs[1];
+      w      = rec[7];
       rec[3] = xs[0];
       rec[4] = xs[1];
       rec[5] = PETSC_INFINITY;
       rec[6] = 0.0;
-      rec[7] = w;
       SurfaceFindClosest(M, xs, &me, &eta);
       if (me < 0) continue;
       {
@@ -756,12 +745,39 @@ static PetscErrorCode SurfaceSetUp(Surface *S, Body b, const char pair[])
   PetscFunctionReturn(0);
 }
 
+/* The slave points of the owned edges depend only on the reference geometry:
+   their arc position, reference coordinates and weight are set once. */
+static PetscErrorCode SurfaceSetUpSlavePoints(Surface *S, const ContactPair *cp)
+{
+  PetscReal gx[8], gw[8];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  S->nqmax = S->nown * cp->nqp;
+  PetscCall(PetscCalloc1(8 * S->nqmax + 8, &S->qdata));
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt se = S->ownEdges[k];
+    for (PetscInt q = 0; q < cp->nqp; ++q) {
+      PetscReal *rec = &S->qdata[8 * (k * cp->nqp + q)], X[2], T[2];
+      EdgeEval(S->X, &S->enodes[3 * se], cp->xi[q], X, T);
+      rec[0] = EdgeArc(S, se, cp->xi[q], gx, gw, 8);
+      rec[1] = X[0];
+      rec[2] = X[1];
+      rec[7] = cp->wxi[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactPairsSetUp(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt t = 0; t < p->nterms; ++t) {
     ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
-    for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceSetUp(&cp->S[s], p->bodies[cp->S[s].body], cp->name));
+    for (PetscInt s = 0; s < 2; ++s) {
+      PetscCall(SurfaceSetUp(&cp->S[s], p->bodies[cp->S[s].body], cp->name));
+      PetscCall(SurfaceSetUpSlavePoints(&cp->S[s], cp));
+    }
     if (cp->hertz) {
       Body      b0 = p->bodies[cp->S[0].body], b1 = p->bodies[cp->S[1].body];
       PetscReal iR = 0.0;
