@@ -16,6 +16,10 @@ typedef struct {
 } ContactLog;
 extern ContactLog contactLog;
 PetscErrorCode ContactInitializeLogging(void);
+/* mkdir -p; returns 0 or errno (meshgen.c). */
+int ContactMakeDirs(const char dir[]);
+/* A real in JSON: null for NaN and Inf (output.c). */
+void ContactJSONReal(FILE *fp, PetscReal v);
 
 /* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */
 void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal *W);

@@ -932,16 +932,10 @@ PetscErrorCode ContactPairsReport(Problem p)
   PetscFunctionReturn(0);
 }
 
-static void JR(FILE *fp, PetscReal v)
-{
-  if (PetscIsInfOrNanReal(v)) fprintf(fp, "null");
-  else fprintf(fp, "%.17g", (double)v);
-}
-
 static void JKV(FILE *fp, const char sep[], const char key[], PetscReal v)
 {
   fprintf(fp, "%s\"%s\": ", sep, key);
-  JR(fp, v);
+  ContactJSONReal(fp, v);
 }
 
 /* The figures of a pair, each preceded by sep. */
@@ -969,11 +963,11 @@ PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
   for (PetscInt t = 0; t < p->nterms; ++t) {
     ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
     fprintf(fp, "%s\n    \"%s\": {\"penalty\": ", t ? "," : "", cp->name);
-    JR(fp, cp->kp);
+    ContactJSONReal(fp, cp->kp);
     fprintf(fp, ", \"force\": [");
-    JR(fp, cp->force[0]);
+    ContactJSONReal(fp, cp->force[0]);
     fprintf(fp, ", ");
-    JR(fp, cp->force[1]);
+    ContactJSONReal(fp, cp->force[1]);
     fprintf(fp, "]");
     PairFiguresJSON(fp, cp, ", ", "P");
     fprintf(fp, ", \"surfaces\": [");
@@ -985,9 +979,9 @@ PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
       JKV(fp, ", ", "centre", S->sc);
       JKV(fp, ", ", "pressure_integral", S->ptotal);
       fprintf(fp, ", \"force\": [");
-      JR(fp, S->force[0]);
+      ContactJSONReal(fp, S->force[0]);
       fprintf(fp, ", ");
-      JR(fp, S->force[1]);
+      ContactJSONReal(fp, S->force[1]);
       fprintf(fp, "]");
       if (cp->hertz) JKV(fp, ", ", "pressure_l2_error", S->l2err);
       fprintf(fp, "}");

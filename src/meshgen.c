@@ -7,20 +7,20 @@
 #include "contact.h"
 #include "meshgen.h"
 
-static PetscErrorCode MakeDirs(const char path[])
+/* mkdir -p: creates dir and its parents; returns 0 or the errno of the failure. */
+int ContactMakeDirs(const char dir[])
 {
   char buf[PETSC_MAX_PATH_LEN];
 
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(buf, path, sizeof(buf)));
+  if (PetscStrncpy(buf, dir, sizeof(buf))) return ENAMETOOLONG;
   for (char *p = buf + 1; *p; ++p) {
     if (*p != '/') continue;
     *p = 0;
-    if (mkdir(buf, 0777) && errno != EEXIST) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create directory %s: %s", buf, strerror(errno));
+    if (mkdir(buf, 0777) && errno != EEXIST) return errno;
     *p = '/';
   }
-  if (mkdir(buf, 0777) && errno != EEXIST) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create directory %s: %s", buf, strerror(errno));
-  PetscFunctionReturn(0);
+  if (mkdir(buf, 0777) && errno != EEXIST) return errno;
+  return 0;
 }
 
 /* Parameters are "name=value" with a finite number; they become -setnumber name value. */
@@ -70,9 +70,11 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscSNPrintf(part, sizeof(part), "_%s%s", name, value));
       PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
     }
-    PetscCall(MakeDirs(dir));
     PetscCall(PetscSNPrintf(msh, len, "%s/%s-%s.msh", dir, base, tag));
-    if (stat(geo, &sg)) {
+    if ((err = ContactMakeDirs(dir))) {
+      PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot create mesh directory %s: %s", dir, strerror(err)));
+      err = 1;
+    } else if (stat(geo, &sg)) {
       err = 1;
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read geometry file %s: %s", geo, strerror(errno)));
     } else if (stat(msh, &sm) || sm.st_mtime < sg.st_mtime) {

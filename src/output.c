@@ -5,7 +5,6 @@
    temporary name and renamed only when complete. */
 #include <errno.h>
 #include <unistd.h>
-#include <sys/stat.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 #include "contactpair.h"
@@ -182,13 +181,7 @@ static PetscErrorCode EnsureParentDir(MPI_Comm comm, const char path[])
   slash = strrchr(dir, '/');
   if (rank == 0 && slash && slash != dir) {
     *slash = 0;
-    for (char *p = dir + 1; *p; ++p) {
-      if (*p != '/') continue;
-      *p = 0;
-      if (mkdir(dir, 0777) && errno != EEXIST) err = errno;
-      *p = '/';
-    }
-    if (mkdir(dir, 0777) && errno != EEXIST) err = errno;
+    err    = ContactMakeDirs(dir);
     if (!err && access(dir, W_OK)) err = errno;
   }
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
@@ -287,7 +280,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
   PetscFunctionReturn(0);
 }
 
-static void JsonReal(FILE *fp, PetscReal v)
+void ContactJSONReal(FILE *fp, PetscReal v)
 {
   if (PetscIsInfOrNanReal(v)) fprintf(fp, "null");
   else fprintf(fp, "%.17g", (double)v);
@@ -320,20 +313,20 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], converged ? "true" : "false", (int)its);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->nEnergyEvals, (int)p->nHessianEvals);
     fprintf(fp, "  \"energy\": ");
-    JsonReal(fp, p->energy);
+    ContactJSONReal(fp, p->energy);
     fprintf(fp, ",\n  \"gradient_norm\": ");
-    JsonReal(fp, p->gnorm);
+    ContactJSONReal(fp, p->gnorm);
     fprintf(fp, ",\n  \"max_displacement\": ");
-    JsonReal(fp, umax);
+    ContactJSONReal(fp, umax);
     fprintf(fp, ",\n  \"displacement_norm\": ");
-    JsonReal(fp, PetscSqrtReal(unorm2));
+    ContactJSONReal(fp, PetscSqrtReal(unorm2));
     fprintf(fp, ",\n  \"reactions\": {");
     for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
       for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
         fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
-        JsonReal(fp, p->bodies[i]->bc[j].reaction[0]);
+        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[0]);
         fprintf(fp, ", ");
-        JsonReal(fp, p->bodies[i]->bc[j].reaction[1]);
+        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[1]);
         fprintf(fp, "]");
       }
     fprintf(fp, "\n  }");
@@ -344,25 +337,25 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
       PetscReal err, nrm;
       PetscCall(BodyComputeErrorL2(b, b->Xl, &err, &nrm));
       fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
-      JsonReal(fp, b->energy);
+      ContactJSONReal(fp, b->energy);
       fprintf(fp, ", \"max_displacement\": ");
-      JsonReal(fp, F[i].umax);
+      ContactJSONReal(fp, F[i].umax);
       fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
-      JsonReal(fp, b->h);
+      ContactJSONReal(fp, b->h);
       if (b->hasExact) {
         fprintf(fp, ", \"exact\": \"%s\", \"l2_error\": ", b->exact.name);
-        JsonReal(fp, err);
+        ContactJSONReal(fp, err);
         fprintf(fp, ", \"l2_norm\": ");
-        JsonReal(fp, nrm);
+        ContactJSONReal(fp, nrm);
       }
       fprintf(fp, "}");
     }
     fprintf(fp, "\n  },\n");
     if (p->taylor) {
       fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
-      JsonReal(fp, p->taylorRates[0]);
+      ContactJSONReal(fp, p->taylorRates[0]);
       fprintf(fp, ", \"hessian_order\": ");
-      JsonReal(fp, p->taylorRates[1]);
+      ContactJSONReal(fp, p->taylorRates[1]);
       fprintf(fp, ", \"eps\": [");
       for (PetscInt k = 0; k < p->taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->taylorEps[k]);
       fprintf(fp, "], \"gradient_remainder\": [");
@@ -374,7 +367,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
     fprintf(fp, "  \"time\": {");
     for (PetscInt k = 0; k < 5; ++k) {
       fprintf(fp, "%s\"%s\": ", k ? ", " : "", tnames[k]);
-      JsonReal(fp, p->time[k]);
+      ContactJSONReal(fp, p->time[k]);
     }
     fprintf(fp, "}\n}\n");
     PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
