@@ -19,7 +19,12 @@ int ContactMakeDirs(const char dir[])
     if (mkdir(buf, 0777) && errno != EEXIST) return errno;
     *p = '/';
   }
-  if (mkdir(buf, 0777) && errno != EEXIST) return errno;
+  if (mkdir(buf, 0777)) {
+    struct stat st;
+    if (errno != EEXIST) return errno;
+    if (stat(buf, &st)) return errno;
+    if (!S_ISDIR(st.st_mode)) return ENOTDIR;
+  }
   return 0;
 }
 
