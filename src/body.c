@@ -165,21 +165,11 @@ static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], Pe
 /* Reads the mesh, checks it is second order and of one cell type. */
 static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 {
-  PetscInt    cStart, cEnd, nTypes[2] = {0, 0}, gTypes[2];
-  char        prefix[2 * CONTACT_NAME_LEN];
-  FILE       *fp;
-  PetscMPIInt rank;
-  int         readable = 1;
+  PetscInt cStart, cEnd, nTypes[2] = {0, 0}, gTypes[2];
+  char     prefix[2 * CONTACT_NAME_LEN];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  if (rank == 0) {
-    fp = fopen(b->msh, "r");
-    if (!fp) readable = 0;
-    else fclose(fp);
-  }
-  PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, b->comm));
-  PetscCheck(readable, b->comm, PETSC_ERR_FILE_OPEN, "body %s: cannot open mesh file %s", b->name, b->msh);
+  /* first read of the file: an unreadable mesh stops here, on every rank */
   PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
   PetscCall(DMPlexCreateFromFile(b->comm, b->msh, b->name, PETSC_TRUE, &b->dm));
   PetscCall(PetscObjectSetName((PetscObject)b->dm, b->name));
