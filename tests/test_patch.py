@@ -9,39 +9,14 @@ import subprocess
 import numpy as np
 import pytest
 
+import msh22
 from conftest import ROOT, run_contact
 
 E, NU = 1000.0, 0.3
 A = [1e-3, 2e-3, -1e-3, -2e-3, 5e-4, 3e-3]   # u = (a0 + a1 x + a2 y, a3 + a4 x + a5 y)
 
 
-def read_msh22(path):
-    lines = path.read_text().splitlines()
-    i = lines.index("$Nodes")
-    n = int(lines[i + 1])
-    ids, xyz = [], []
-    for line in lines[i + 2:i + 2 + n]:
-        p = line.split()
-        ids.append(int(p[0]))
-        xyz.append([float(v) for v in p[1:4]])
-    j = lines.index("$Elements")
-    elems = [list(map(int, l.split())) for l in lines[j + 2:j + 2 + int(lines[j + 1])]]
-    return lines, dict(zip(ids, map(np.array, xyz))), elems
-
-
-def write_msh22(path, lines, nodes):
-    i = lines.index("$Nodes")
-    n = int(lines[i + 1])
-    out = lines[:i + 2]
-    for line in lines[i + 2:i + 2 + n]:
-        k = int(line.split()[0])
-        x = nodes[k]
-        out.append(f"{k} {x[0]:.17g} {x[1]:.17g} 0")
-    out += lines[i + 2 + n:]
-    path.write_text("\n".join(out) + "\n")
-
-
-def distort(lines, nodes, elems, h, seed):
+def distort(nodes, elems, h, seed):
     """Moves interior vertices by up to 0.15 h, then every mid-edge node off its
     chord by up to 0.08 of the edge length (curved edges, boundary included),
     and each Quad9 centre node a little off the Q2 interpolation."""
@@ -103,9 +78,9 @@ def test_patch(quads, ranks, tmp_path):
     msh = tmp_path / "square.msh"
     subprocess.run(["gmsh", "-2", "-v", "0", "-format", "msh22", str(ROOT / "meshes/square/square.geo"),
                     "-setnumber", "h", str(h), "-setnumber", "quads", str(quads), "-o", str(msh)], check=True)
-    lines, nodes, elems = read_msh22(msh)
-    bedges = distort(lines, nodes, elems, h, seed=11 + quads)
-    write_msh22(msh, lines, nodes)
+    names, nodes, elems = msh22.read(msh)
+    bedges = distort(nodes, elems, h, seed=11 + quads)
+    msh22.write(msh, names, nodes, elems)
     area = area_of(bedges, nodes)
     assert abs(area - 1.0) > 1e-4, "the boundary should be curved"
     r = run_contact(["-options_file", "meshes/square/square.opts", "-square_mesh", msh,
