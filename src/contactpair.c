@@ -58,7 +58,7 @@ typedef struct {
   PetscInt   nkeys, *keys, *kedge, nx, ny;
   PetscReal  lo[2], cell, reach;
   /* results of the last evaluation with this surface as slave (owned points) */
-  PetscInt   nq, nqmax;
+  PetscInt   nq;
   PetscReal *qdata;       /* [nq][8]: s, X, Y, x, y, gap, pressure, weight */
   PetscReal  force[2];    /* contact force on this surface's body */
   /* report (rank 0 after ContactPairsReport) */
@@ -753,8 +753,7 @@ static PetscErrorCode SurfaceSetUpSlavePoints(Surface *S, const ContactPair *cp)
 
   PetscFunctionBeginUser;
   PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
-  S->nqmax = S->nown * cp->nqp;
-  PetscCall(PetscCalloc1(8 * S->nqmax + 8, &S->qdata));
+  PetscCall(PetscCalloc1(8 * S->nown * cp->nqp + 8, &S->qdata));
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt se = S->ownEdges[k];
     for (PetscInt q = 0; q < cp->nqp; ++q) {

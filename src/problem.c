@@ -246,7 +246,6 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
 {
   TaoConvergedReason reason;
   PetscInt           its;
-  PetscReal          f, gnorm;
   TaoType            type;
 
   PetscFunctionBeginUser;
@@ -262,7 +261,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoSetFromOptions(p->tao));
   PetscCall(ProblemSetLMVMInitialHessian(p));
   PetscCall(TaoSolve(p->tao));
-  PetscCall(TaoGetSolutionStatus(p->tao, &its, &f, &gnorm, NULL, NULL, &reason));
+  PetscCall(TaoGetSolutionStatus(p->tao, &its, NULL, NULL, NULL, NULL, &reason));
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &p->energy, p->G, p));
   p->nEnergyEvals--;
