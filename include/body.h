@@ -68,5 +68,6 @@ PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
+PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
 PetscErrorCode BodyComputeErrorL2(Body, Vec Xl, PetscReal *err, PetscReal *norm);
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, Vec *coords, Vec *disp, Vec *stress, Vec *vonmises, IS *topology);

@@ -6,8 +6,9 @@
    the joined Hessian. */
 typedef struct _n_EnergyTerm *EnergyTerm;
 struct _n_EnergyTerm {
-  char name[CONTACT_NAME_LEN];
-  void *ctx;
+  char      name[CONTACT_NAME_LEN];
+  PetscBool couples[CONTACT_MAX_BODIES]; /* bodies whose motion the term resists */
+  void     *ctx;
   PetscErrorCode (*energygrad)(EnergyTerm, Body[], PetscReal *energy);
   PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
   PetscErrorCode (*destroy)(EnergyTerm);
@@ -49,6 +50,7 @@ PetscErrorCode ProblemSetUp(Problem);
 PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
 PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
+PetscErrorCode ProblemCheckUnusedOptions(Problem, PetscBool final);
 PetscErrorCode ProblemTaylorTest(Problem);
 PetscErrorCode ProblemDestroy(Problem *);
 PetscErrorCode ProblemWriteOutput(Problem, PetscBool converged);

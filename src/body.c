@@ -584,6 +584,93 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
   PetscFunctionReturn(0);
 }
 
+/* Number of rigid motions (x and y translation, rotation) that the Dirichlet
+   conditions leave free. A constrained component c at node x removes the part
+   of the rigid motion r(x) = (t_x - w y, t_y + w x) in that component, i.e. the
+   row e_c . dr/d(t_x, t_y, w); the free motions are the null space of the sum
+   of the rows' outer products (coordinates centred and scaled for conditioning). */
+PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
+{
+  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[2], ghi[2], c[2], L;
+  PetscReal M[9] = {0}, Mg[9];
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
+    if (!dof) continue;
+    for (PetscInt d = 0; d < 2; ++d) {
+      lo[d] = PetscMin(lo[d], b->xpoint[2 * p + d]);
+      hi[d] = PetscMax(hi[d], b->xpoint[2 * p + d]);
+    }
+  }
+  PetscCall(MPIU_Allreduce(lo, glo, 2, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCall(MPIU_Allreduce(hi, ghi, 2, MPIU_REAL, MPIU_MAX, b->comm));
+  c[0] = 0.5 * (glo[0] + ghi[0]);
+  c[1] = 0.5 * (glo[1] + ghi[1]);
+  L    = PetscMax(ghi[0] - glo[0], ghi[1] - glo[1]);
+  if (!(L > 0)) L = 1.0;
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC *bc = &b->bc[i];
+    IS      is;
+
+    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
+    if (!is) continue;
+    {
+      const PetscInt *pts;
+      PetscInt        n;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+      for (PetscInt j = 0; j < n; ++j) {
+        PetscInt  dof, q = pts[j] - b->pStart;
+        PetscReal x, y;
+        PetscCall(PetscSectionGetDof(s, pts[j], &dof));
+        if (!dof) continue;
+        x = (b->xpoint[2 * q] - c[0]) / L;
+        y = (b->xpoint[2 * q + 1] - c[1]) / L;
+        for (PetscInt k = 0; k < bc->ncomp; ++k) {
+          const PetscReal r[3] = {bc->comps[k] == 0 ? 1.0 : 0.0, bc->comps[k] == 1 ? 1.0 : 0.0, bc->comps[k] == 0 ? -y : x};
+          for (PetscInt a = 0; a < 3; ++a)
+            for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
+        }
+      }
+      PetscCall(ISRestoreIndices(is, &pts));
+    }
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  /* rank by Gaussian elimination with full pivoting, relative tolerance */
+  {
+    PetscReal tol = 1e-10 * (Mg[0] + Mg[4] + Mg[8]);
+    PetscInt  rank = 0;
+    PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+    for (PetscInt step = 0; step < 3; ++step) {
+      PetscInt  pr = -1, pc = -1;
+      PetscReal best = tol;
+      for (PetscInt a = 0; a < 3; ++a)
+        for (PetscInt e = 0; e < 3; ++e)
+          if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
+            best = PetscAbsReal(Mg[3 * a + e]);
+            pr   = a;
+            pc   = e;
+          }
+      if (pr < 0) break;
+      used[pr] = PETSC_TRUE;
+      ++rank;
+      for (PetscInt a = 0; a < 3; ++a) {
+        PetscReal f;
+        if (used[a]) continue;
+        f = Mg[3 * a + pc] / Mg[3 * pr + pc];
+        for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
+      }
+    }
+    *nfree = 3 - rank;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyComputeErrorL2(Body b, Vec Xl, PetscReal *err, PetscReal *norm)
 {
   const PetscScalar *x;

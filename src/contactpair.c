@@ -463,10 +463,6 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
   PetscOptionsEnd();
-  if (disable) {
-    for (PetscInt i = 0; i < np; ++i) PetscCall(PetscFree(names[i]));
-    PetscFunctionReturn(0);
-  }
   PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   for (PetscInt i = 0; i < np; ++i) {
     ContactPair *cp;
@@ -506,9 +502,15 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     }
     for (PetscInt s = 0; s < 2; ++s) PetscCheck(!cp->hertz || (cp->radii[s] >= 0 && !PetscIsInfOrNanReal(cp->radii[s])), p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)cp->radii[s]);
     PetscCheck(!cp->hertz || cp->radii[0] > 0 || cp->radii[1] > 0, p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);
+    if (disable) { /* read and checked like the others, then dropped */
+      PetscCall(PetscFree(cp));
+      continue;
+    }
     PetscCall(PetscNew(&t));
     PetscCall(PetscStrncpy(t->name, cp->name, sizeof(t->name)));
-    t->ctx        = cp;
+    t->ctx                  = cp;
+    t->couples[cp->S[0].body] = PETSC_TRUE;
+    t->couples[cp->S[1].body] = PETSC_TRUE;
     t->energygrad = PairEnergyGradient;
     t->hessian    = PairHessian;
     t->destroy    = PairDestroy;
@@ -922,7 +924,8 @@ PetscErrorCode ContactPairsReport(Problem p)
         }
       }
     }
-    if (cp->hertz) {
+    if (cp->hertz && !(cp->P > 0)) PetscCall(PetscPrintf(p->comm, "  no contact force: nothing to compare with Hertz\n"));
+    else if (cp->hertz) {
       PetscCall(PetscPrintf(p->comm, "  Hertz (E* = %g, R* = %g): a = %.6f, p_max = %.6f\n", (double)cp->Estar, (double)cp->Rstar, (double)cp->hertzA, (double)cp->hertzPmax));
       PetscCall(PetscPrintf(p->comm, "  computed:              a = %.6f (%+.2f %%), p_max = %.6f (%+.2f %%)\n", (double)cp->femA, (double)(100 * (cp->femA / cp->hertzA - 1)), (double)cp->femPmax, (double)(100 * (cp->femPmax / cp->hertzPmax - 1))));
       PetscCall(PetscPrintf(p->comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * cp->l2err), (double)(100 * cp->S[0].l2err), (double)(100 * cp->S[1].l2err)));

@@ -39,6 +39,7 @@ static PetscBool IsInputError(PetscErrorCode n)
   case PETSC_ERR_ARG_UNKNOWN_TYPE:
   case PETSC_ERR_ARG_WRONG:
   case PETSC_ERR_NOT_CONVERGED:
+  case PETSC_ERR_FP:
     return PETSC_TRUE;
   default:
     return PETSC_FALSE;
@@ -86,6 +87,7 @@ static PetscErrorCode Run(int *status)
     problem->time[1] = (t1 - t0) - problem->time[0];
     problem->time[2] = t2 - t1;
     problem->t0      = t0;
+    PetscCall(ProblemCheckUnusedOptions(problem, PETSC_TRUE));
     if (converged) PetscCall(ProblemWriteOutput(problem, converged));
     else {
       TaoConvergedReason reason;

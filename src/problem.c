@@ -101,6 +101,28 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
   PetscFunctionReturn(0);
 }
 
+/* A body whose Dirichlet conditions leave a rigid motion free is held only by
+   contact; with no contact pair at all its energy has a flat direction and the
+   minimisation is singular, which is refused here rather than left to a solver
+   that would never converge. Held by contact alone, it is allowed, with a
+   warning: frictionless contact may or may not fix the motion. */
+static PetscErrorCode ProblemCheckSupports(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body      b = p->bodies[i];
+    PetscInt  nfree;
+    PetscBool contact = PETSC_FALSE;
+
+    PetscCall(BodyCountFreeRigidModes(b, &nfree));
+    if (!nfree) continue;
+    for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
+    PetscCheck(contact, p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free and it is in no contact pair, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree, b->name);
+    PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: body %s is held only by contact in %" PetscInt_FMT " rigid motion(s); frictionless contact may not fix them\n", b->name, nfree));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
   PetscInt nloc = 0;
@@ -109,6 +131,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
   PetscCall(PetscLogStagePush(contactLog.setup));
+  PetscCall(ProblemCheckSupports(p));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->offset[i] = nloc;
     nloc += p->bodies[i]->nlocal;
@@ -163,10 +186,30 @@ static PetscErrorCode ProblemScatterToBodies(Problem p, Vec X)
   PetscFunctionReturn(0);
 }
 
+/* 1 if the local vector has a NaN or Inf entry. */
+static PetscErrorCode VecHasNonFinite(Vec v, PetscReal *bad)
+{
+  const PetscScalar *a;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArrayRead(v, &a));
+  for (PetscInt k = 0; k < n && *bad == 0.0; ++k)
+    if (PetscIsInfOrNanScalar(a[k])) *bad = 1.0;
+  PetscCall(VecRestoreArrayRead(v, &a));
+  PetscFunctionReturn(0);
+}
+
+/* Pi(X) and its gradient. Each part (body, energy term) is checked for NaN and
+   Inf, in its energy and in the gradient it adds, so that a non-finite value
+   stops the solve naming its source; the flags travel in the energy's sum. */
 PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
 {
   Problem      p = (Problem)ctx;
-  PetscReal    e = 0.0, eb, et;
+  PetscReal    sum[1 + CONTACT_MAX_BODIES + CONTACT_MAX_BODIES] = {0}, all[1 + CONTACT_MAX_BODIES + CONTACT_MAX_BODIES], eb, et;
+  PetscReal   *bad = sum + 1;
+  const PetscInt nparts = p->nbodies + p->nterms;
   PetscScalar *g;
 
   PetscFunctionBeginUser;
@@ -175,11 +218,27 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscCall(VecZeroEntries(p->bodies[i]->Gl));
     PetscCall(BodyComputeEnergyGradient(p->bodies[i], p->bodies[i]->Xl, &eb, p->bodies[i]->Gl));
-    e += eb;
+    if (PetscIsInfOrNanReal(eb)) bad[i] = 1.0;
+    else PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &bad[i]));
+    sum[0] += eb;
   }
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscCall(p->terms[t]->energygrad(p->terms[t], p->bodies, &et));
-    e += et;
+    if (PetscIsInfOrNanReal(et)) bad[p->nbodies + t] = 1.0;
+    sum[0] += et;
+  }
+  if (p->nterms) {
+    PetscReal gbad = 0.0;
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &gbad));
+    if (gbad != 0.0)
+      for (PetscInt t = 0; t < p->nterms; ++t) bad[p->nbodies + t] = 1.0;
+  }
+  PetscCall(MPIU_Allreduce(sum, all, 1 + nparts, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt k = 0; k < nparts; ++k) {
+    PetscInt its = 0;
+    if (p->tao) PetscCall(TaoGetIterationNumber(p->tao, &its));
+    PetscCheck(all[1 + k] == 0.0, p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair",
+               k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
   }
   PetscCall(VecZeroEntries(G));
   PetscCall(VecGetArray(G, &g));
@@ -191,7 +250,7 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
     PetscCall(VecResetArray(b->Gg));
   }
   PetscCall(VecRestoreArray(G, &g));
-  PetscCall(MPIU_Allreduce(&e, f, 1, MPIU_REAL, MPIU_SUM, p->comm));
+  *f = all[0];
   p->nEnergyEvals++;
   PetscFunctionReturn(0);
 }
@@ -242,6 +301,27 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscFunctionReturn(0);
 }
 
+/* Unused options are an error: a misspelled option would otherwise be silently
+   ignored. Before the solve, every option must have been read, except those that
+   PETSc reads lazily during the solve (viewers, monitors, factorisation packages
+   -mat_*); after it (final), all of them. */
+PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
+{
+  PetscInt  n;
+  char    **names, **values;
+  char      bad[256] = "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt i = 0; i < n && !bad[0]; ++i) {
+    PetscBool lazy = (PetscBool)(strstr(names[i], "view") || strstr(names[i], "monitor") || !strncmp(names[i], "mat_", 4));
+    if (final || !lazy) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscCheck(!bad[0], p->comm, PETSC_ERR_ARG_WRONG, "unknown or unused option %s (misspelled? see -help)", bad);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
 {
   TaoConvergedReason reason;
@@ -260,6 +340,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   PetscCall(TaoSetFromOptions(p->tao));
   PetscCall(ProblemSetLMVMInitialHessian(p));
+  PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(TaoSolve(p->tao));
   PetscCall(TaoGetSolutionStatus(p->tao, &its, NULL, NULL, NULL, NULL, &reason));
   PetscCall(TaoGetType(p->tao, &type));
