@@ -68,6 +68,10 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   PetscCheck(qdeg >= 2 && qdeg <= 12, b->comm, PETSC_ERR_USER_INPUT, "option -%squadrature_degree: must be in [2, 12], got %" PetscInt_FMT, prefix, qdeg);
   b->param[1] = b->E / (2.0 * (1.0 + b->nu));
   b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
+  for (PetscInt k = 0; k < b->exact.nparams; ++k) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sexact_params", prefix));
+    PetscCall(CheckFinite(b->comm, opt, b->exact.params[k]));
+  }
   if (strcmp(exact, "none")) {
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     b->hasExact      = PETSC_TRUE;
@@ -250,14 +254,20 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   const PetscReal   *qw;
   PetscReal          ref[9 * 2];
   PetscObject        obj;
+  PetscClassId       cid = 0;
   PetscFE            cfe;
+  PetscReal          bad[4] = {0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J */
+  PetscMPIInt        rank, size, first;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(DMGetCoordinateDM(b->dm, &cdm));
   PetscCall(DMGetNumFields(cdm, &nf));
-  PetscCheck(nf == 1, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
-  PetscCall(DMGetField(cdm, 0, NULL, &obj));
+  obj = NULL;
+  if (nf == 1) PetscCall(DMGetField(cdm, 0, NULL, &obj));
+  if (obj) PetscCall(PetscObjectGetClassId(obj, &cid));
+  /* a first-order mesh has affine coordinates, not a P2/Q2 coordinate field */
+  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
   cfe = (PetscFE)obj;
   PetscCall(PetscFEGetDimension(cfe, &ncb));
   PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
@@ -303,7 +313,12 @@ static PetscErrorCode BodyBuildCellCache(Body b)
 
       /* clockwise cells are fine; a sign change inside a cell is not */
       if (iq == 0) sign0 = detJ > 0 ? 1.0 : -1.0;
-      PetscCheck(detJ * sign0 > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s is inverted or degenerate (det J = %g)", b->name, c, b->msh, (double)detJ);
+      if (!(detJ * sign0 > 0) && bad[0] == 0.0) {
+        bad[0] = 1.0;
+        bad[1] = x[b->nb - 1][0];
+        bad[2] = x[b->nb - 1][1];
+        bad[3] = detJ;
+      }
       for (PetscInt a = 0; a < b->nb; ++a)
         for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
       b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ);
@@ -312,6 +327,13 @@ static PetscErrorCode BodyBuildCellCache(Body b)
     }
   }
   PetscCall(PetscTabulationDestroy(&Tc));
+  /* the check is collective, so that every rank stops with the same message */
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  first = bad[0] != 0.0 ? rank : size;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
+  if (first < size) PetscCallMPI(MPI_Bcast(bad, 4, MPIU_REAL, first, b->comm));
+  PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g) (det J = %g)", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[3]);
   PetscFunctionReturn(0);
 }
 

@@ -340,6 +340,11 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   PetscCall(TaoSetFromOptions(p->tao));
   PetscCall(ProblemSetLMVMInitialHessian(p));
+  {
+    PetscReal tol[3];
+    PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+    for (PetscInt k = 0; k < 3; ++k) PetscCheck(!PetscIsInfOrNanReal(tol[k]) && tol[k] >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -tao_%s: must be a finite number >= 0, got %g", k == 0 ? "gatol" : k == 1 ? "grtol" : "gttol", (double)tol[k]);
+  }
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(TaoSolve(p->tao));
   PetscCall(TaoGetSolutionStatus(p->tao, &its, NULL, NULL, NULL, NULL, &reason));
