@@ -18,6 +18,9 @@ extern ContactLog contactLog;
 PetscErrorCode ContactInitializeLogging(void);
 /* mkdir -p; returns 0 or errno (meshgen.c). */
 int ContactMakeDirs(const char dir[]);
+/* Interrupted or failed output removes its temporary files (output.c). */
+PetscErrorCode ContactOutputInstallSignalHandlers(void);
+void           ContactOutputRemovePending(void);
 /* A real in JSON: null for NaN and Inf (output.c). */
 void ContactJSONReal(FILE *fp, PetscReal v);
 

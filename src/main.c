@@ -109,8 +109,12 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ContactErrorHandler, NULL));
+  PetscCall(ContactOutputInstallSignalHandlers());
   ierr = Run(&status);
-  if (ierr) status = 1;
+  if (ierr) {
+    status = 1;
+    ContactOutputRemovePending();
+  }
   PetscCall(ExactSolutionFinalize());
   PetscCall(PetscFinalize());
   return status;

@@ -4,6 +4,7 @@
    beside it, and a JSON summary of the run. Every file is written under a
    temporary name and renamed only when complete. */
 #include <errno.h>
+#include <signal.h>
 #include <unistd.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
@@ -16,6 +17,54 @@ typedef struct {
   PetscReal umax, unorm2;
   PetscReal l2err, l2norm; /* against the body's exact solution, if any */
 } BodyFields;
+
+/* Temporary files being written: a failed or interrupted run removes them, so
+   that it leaves neither a half-written file nor a changed final one. The
+   signal handler only calls async-signal-safe functions (unlink, signal, raise). */
+#define MAX_PENDING 3
+static char         pending[MAX_PENDING][PETSC_MAX_PATH_LEN + 16];
+static volatile int npending;
+
+static void RemovePendingOnSignal(int sig)
+{
+  for (int i = 0; i < npending; ++i) unlink(pending[i]);
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
+/* SIGINT, SIGTERM, SIGHUP: remove the temporaries, then die of the signal. */
+PetscErrorCode ContactOutputInstallSignalHandlers(void)
+{
+  struct sigaction sa;
+  const int        sigs[] = {SIGINT, SIGTERM, SIGHUP};
+
+  PetscFunctionBeginUser;
+  memset(&sa, 0, sizeof(sa));
+  sa.sa_handler = RemovePendingOnSignal;
+  sigemptyset(&sa.sa_mask);
+  for (size_t i = 0; i < sizeof(sigs) / sizeof(sigs[0]); ++i) PetscCheck(!sigaction(sigs[i], &sa, NULL), PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the handler of signal %d", sigs[i]);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PendingAdd(const char path[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(npending < MAX_PENDING, PETSC_COMM_SELF, PETSC_ERR_PLIB, "too many temporary files");
+  PetscCall(PetscStrncpy(pending[npending], path, sizeof(pending[0])));
+  npending = npending + 1;
+  PetscFunctionReturn(0);
+}
+
+/* Removes the temporaries of an output that did not complete (rank 0 names them). */
+void ContactOutputRemovePending(void)
+{
+  PetscMPIInt rank = 0;
+
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  if (!rank)
+    for (int i = 0; i < npending; ++i) unlink(pending[i]);
+  npending = 0;
+}
 
 static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
 {
@@ -404,6 +453,8 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
     if (l > 3 && !strcmp(xdmf + l - 3, ".h5")) xdmf[l - 3] = 0;
     PetscCall(PetscStrlcat(xdmf, ".xdmf", sizeof(xdmf)));
     PetscCall(PetscSNPrintf(xtmp, sizeof(xtmp), "%s.tmp", xdmf));
+    PetscCall(PendingAdd(tmp));
+    PetscCall(PendingAdd(xtmp));
     PetscCall(WriteHDF5(p, F, tmp));
     PetscCall(WriteXDMF(p, F, xtmp, p->output));
   }
@@ -414,6 +465,7 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
   if (js) {
     PetscCall(EnsureParentDir(p->comm, p->summary));
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
+    PetscCall(PendingAdd(tmp));
     PetscCall(WriteJSON(p, F, converged, tmp));
   }
   if (h5) {
@@ -425,6 +477,7 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
     PetscCall(RenameOnRoot(p->comm, tmp, p->summary));
   }
+  npending = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyFieldsDestroy(&F[i]));
   PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
