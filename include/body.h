@@ -45,7 +45,7 @@ struct _n_Body {
   PetscReal *xq;   /* [ncells][nq][2] */
   PetscReal *xnode;/* [ncells][nb][2] node coordinates */
   const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
-  Vec       Xg, Gg, Xl, Gl, bcl;
+  Vec       Xg, Gg, Xl, Gl, bcl, bclFull; /* bcl: Dirichlet values of the load step, bclFull: the scene's */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
   PetscReal energy;
@@ -65,6 +65,7 @@ PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const P
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
+PetscErrorCode BodySetLoadFactor(Body, PetscReal);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);

@@ -12,6 +12,7 @@ struct _n_EnergyTerm {
   PetscErrorCode (*energygrad)(EnergyTerm, Body[], PetscReal *energy);
   PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
   PetscErrorCode (*destroy)(EnergyTerm);
+  PetscErrorCode (*setpenaltyfactor)(EnergyTerm, PetscReal); /* continuation: k_p times the factor */
 };
 
 typedef enum { H0_NONE, H0_ELASTIC } H0Type;
@@ -42,6 +43,8 @@ struct _n_Problem {
   PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
   PetscInt  taylorN;
   PetscReal taylorScale;
+  PetscInt  loadSteps, penaltyStages, stagesDone;
+  PetscReal penaltyStart, stageRtol;
 };
 
 PetscErrorCode ProblemCreate(MPI_Comm, Problem *);

@@ -445,6 +445,8 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(VecDuplicate(b->Xl, &b->bcl));
   PetscCall(VecSet(b->bcl, 0.0));
   PetscCall(DMPlexInsertBoundaryValues(b->dm, PETSC_TRUE, b->bcl, 0.0, NULL, NULL, NULL));
+  PetscCall(VecDuplicate(b->bcl, &b->bclFull));
+  PetscCall(VecCopy(b->bcl, b->bclFull));
   PetscCall(DMCreateGlobalVector(b->dm, &b->Xg));
   PetscCall(VecDuplicate(b->Xg, &b->Gg));
   PetscCall(VecGetLocalSize(b->Xg, &b->nlocal));
@@ -452,6 +454,14 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(BodyBuildCellCache(b));
   PetscCall(BodyBuildNodeData(b));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+/* Load stepping: the Dirichlet values become f times the scene's. */
+PetscErrorCode BodySetLoadFactor(Body b, PetscReal f)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecAXPBY(b->bcl, f, 0.0, b->bclFull));
   PetscFunctionReturn(0);
 }
 
@@ -742,6 +752,7 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(VecDestroy(&b->Xl));
   PetscCall(VecDestroy(&b->Gl));
   PetscCall(VecDestroy(&b->bcl));
+  PetscCall(VecDestroy(&b->bclFull));
   PetscCall(PetscFEDestroy(&b->fe));
   PetscCall(PetscFEDestroy(&b->feScalar));
   PetscCall(DMDestroy(&b->dm));

@@ -70,7 +70,7 @@ typedef struct {
 typedef struct {
   char      name[CONTACT_NAME_LEN];
   Surface   S[2];
-  PetscReal kp;
+  PetscReal kp, kpScene; /* penalty in use (continuation), the scene's */
   PetscInt  nqp;          /* Gauss points per slave edge */
   PetscReal xi[8], wxi[8];
   PetscBool hertz;
@@ -442,6 +442,15 @@ static PetscErrorCode PairDestroy(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode PairSetPenaltyFactor(EnergyTerm t, PetscReal f)
+{
+  ContactPair *cp = (ContactPair *)t->ctx;
+
+  PetscFunctionBeginUser;
+  cp->kp = f * cp->kpScene;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactPairsCreateFromOptions(Problem p)
 {
   char     *names[CP_MAX_PAIRS];
@@ -486,6 +495,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     PetscCheck(setPair && ns == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
     PetscCheck(!cp->hertz || nr == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
     PetscCheck(!PetscIsInfOrNanReal(cp->kp) && cp->kp > 0, p->comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)cp->kp);
+    cp->kpScene = cp->kp;
     for (PetscInt s = 0; s < 2; ++s) {
       char *colon = strchr(surf[s], ':');
       PetscCheck(colon, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: '%s' is not body:group", prefix, surf[s]);
@@ -514,6 +524,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     t->energygrad = PairEnergyGradient;
     t->hessian    = PairHessian;
     t->destroy    = PairDestroy;
+    t->setpenaltyfactor = PairSetPenaltyFactor;
     PetscCheck(p->nterms < CONTACT_MAX_BODIES, p->comm, PETSC_ERR_USER_INPUT, "too many contact pairs");
     p->terms[p->nterms++] = t;
   }

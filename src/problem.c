@@ -20,6 +20,10 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->partitioner = PARTITION_METIS;
   p->h0          = H0_ELASTIC;
   p->taylorScale = 0.1;
+  p->loadSteps     = 1;
+  p->penaltyStages = 1;
+  p->penaltyStart  = 1e-2;
+  p->stageRtol     = 1e-3;
   PetscCall(PetscStrncpy(p->scene, "scene", sizeof(p->scene)));
   *problem = p;
   PetscFunctionReturn(0);
@@ -51,7 +55,15 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
+  PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
+  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
+  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
+  PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->stageRtol, &p->stageRtol, NULL));
   PetscOptionsEnd();
+  PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
+  PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
+  PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
+  PetscCheck(p->stageRtol > 0 && p->stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->stageRtol);
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
   PetscCheck(p->meshSize == -1.0 || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be > 0, got %g", (double)p->meshSize);
   p->nbodies = nb;
@@ -295,8 +307,33 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
   PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscFunctionReturn(0);
+}
+
+/* Newton types (nls, ntr): the Gauss-Newton Hessian is symmetric positive
+   definite, so its Cholesky factorisation is the default preconditioner
+   (CHOLMOD on one rank, MUMPS on several), with nls taking the factored step
+   directly; -tao_nls_ksp_type, -tao_nls_pc_type, ... still override. */
+static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
+{
+  PetscBool   nls, ntr;
+  KSP         ksp;
+  PC          pc;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONLS, &nls));
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONTR, &ntr));
+  if (!nls && !ntr) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(TaoGetKSP(p->tao, &ksp));
+  if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
@@ -322,6 +359,58 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoadFactor(p->bodies[i], load));
+  for (PetscInt t = 0; t < p->nterms; ++t)
+    if (p->terms[t]->setpenaltyfactor) PetscCall(p->terms[t]->setpenaltyfactor(p->terms[t], penalty));
+  PetscFunctionReturn(0);
+}
+
+/* Load stepping (outer) and penalty continuation (inner): each stage is a TAO
+   solve from the last stage's solution. Intermediate stages stop when their
+   gradient norm has fallen by -stage_rtol; the last one stops where a single
+   solve from rest would, at -tao_gttol times the gradient norm of the full
+   problem at rest, which makes the result independent of the staging. */
+static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  const PetscInt nstages = p->loadSteps * p->penaltyStages;
+  PetscReal      gatol, grtol, gttol, g0, f;
+
+  PetscFunctionBeginUser;
+  *its = 0;
+  p->stagesDone = 0;
+  if (nstages == 1) {
+    PetscCall(TaoSolve(p->tao));
+    PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
+    p->stagesDone = 1;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f, p->G, p));
+  p->nEnergyEvals--;
+  PetscCall(VecNorm(p->G, NORM_2, &g0));
+  for (PetscInt l = 1; l <= p->loadSteps; ++l) {
+    for (PetscInt s = 1; s <= p->penaltyStages; ++s) {
+      const PetscBool last    = (PetscBool)(l == p->loadSteps && s == p->penaltyStages);
+      const PetscReal penalty = p->penaltyStages > 1 ? PetscPowReal(p->penaltyStart, (PetscReal)(p->penaltyStages - s) / (p->penaltyStages - 1)) : 1.0;
+      PetscInt        n;
+
+      PetscCall(ProblemSetStage(p, (PetscReal)l / p->loadSteps, penalty));
+      if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+      else PetscCall(TaoSetTolerances(p->tao, gatol, grtol, p->stageRtol));
+      PetscCall(TaoSolve(p->tao));
+      PetscCall(TaoGetSolutionStatus(p->tao, &n, NULL, NULL, NULL, NULL, reason));
+      PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->stagesDone + 1, (double)l / p->loadSteps, (double)penalty, TaoConvergedReasons[*reason], n));
+      *its += n;
+      p->stagesDone++;
+      if (*reason <= 0) PetscFunctionReturn(0);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
 {
   TaoConvergedReason reason;
@@ -340,21 +429,23 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   PetscCall(TaoSetFromOptions(p->tao));
   PetscCall(ProblemSetLMVMInitialHessian(p));
+  PetscCall(ProblemSetNewtonDefaults(p));
   {
     PetscReal tol[3];
     PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
     for (PetscInt k = 0; k < 3; ++k) PetscCheck(!PetscIsInfOrNanReal(tol[k]) && tol[k] >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -tao_%s: must be a finite number >= 0, got %g", k == 0 ? "gatol" : k == 1 ? "grtol" : "gttol", (double)tol[k]);
   }
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
-  PetscCall(TaoSolve(p->tao));
-  PetscCall(TaoGetSolutionStatus(p->tao, &its, NULL, NULL, NULL, NULL, &reason));
+  PetscCall(ProblemSolveStaged(p, &its, &reason));
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &p->energy, p->G, p));
   p->nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations\n", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
+  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
+  if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
+  PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
   PetscCall(ContactPairsReport(p));
   PetscCall(PetscLogStagePop());
