@@ -64,7 +64,7 @@ typedef struct {
   /* report (rank 0 after ContactPairsReport) */
   PetscInt   nprof;
   PetscReal *prof;        /* [nprof][8] sorted by s */
-  PetscReal  pmax, a, l2err, sc, ptotal;
+  PetscReal  pmax, a, am, l2err, sc, ptotal; /* am: half-width from the second moment */
 } Surface;
 
 typedef struct {
@@ -75,7 +75,7 @@ typedef struct {
   PetscReal xi[8], wxi[8];
   PetscBool hertz;
   PetscReal radii[2], Estar, Rstar;
-  PetscReal maxPen, P, hertzA, hertzPmax, femPmax, femA, l2err;
+  PetscReal maxPen, P, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
   PetscReal force[2];
   PetscBool reported;
 } ContactPair;
@@ -849,6 +849,13 @@ static PetscErrorCode SurfaceReport(ContactPair *cp, Surface *S, MPI_Comm comm)
       }
     }
     S->sc = den > 0 ? num / den : 0.0;
+    /* Hertz's p ~ sqrt(1 - (s/a)^2) has int p s^2 / int p = a^2/4: a half-width
+       from the whole profile, not from where its last loaded point happens to be */
+    {
+      PetscReal m2 = 0.0;
+      for (PetscInt i = 0; i < n; ++i) m2 += S->prof[8 * i + 6] * S->prof[8 * i + 7] * PetscSqr(S->prof[8 * i] - S->sc);
+      S->am = den > 0 ? 2.0 * PetscSqrtReal(m2 / den) : 0.0;
+    }
     /* the zone ends half-way between the outermost loaded point and the next one */
     S->a = 0.0;
     if (i0 >= 0) {
@@ -864,7 +871,7 @@ static PetscErrorCode SurfaceReport(ContactPair *cp, Surface *S, MPI_Comm comm)
         err += r[7] * PetscSqr(r[6] - ph);
         nrm += r[7] * ph * ph;
       }
-      S->l2err = PetscSqrtReal(err / nrm);
+      S->l2err = nrm > 0 ? PetscSqrtReal(err / nrm) : PETSC_INFINITY;
     }
     PetscCall(PetscFree2(perm, sv));
     PetscCall(PetscFree(all));
@@ -900,6 +907,7 @@ PetscErrorCode ContactPairsReport(Problem p)
     for (PetscInt s = 0; s < 2; ++s) PetscCall(SurfaceReport(cp, &cp->S[s], p->comm));
     cp->femPmax  = 0.5 * (cp->S[0].pmax + cp->S[1].pmax);
     cp->femA     = 0.5 * (cp->S[0].a + cp->S[1].a);
+    cp->femAm    = 0.5 * (cp->S[0].am + cp->S[1].am);
     cp->l2err    = 0.5 * (cp->S[0].l2err + cp->S[1].l2err);
     cp->reported = PETSC_TRUE;
     PetscCall(PetscPrintf(p->comm, "Contact pair %s (k_p = %g): %s:%s against %s:%s\n", cp->name, (double)cp->kp, p->bodies[cp->S[0].body]->name, cp->S[0].group, p->bodies[cp->S[1].body]->name, cp->S[1].group));
@@ -914,7 +922,7 @@ PetscErrorCode ContactPairsReport(Problem p)
             if (first < 0) first = i;
             last = i;
           }
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6f):\n", p->bodies[S->body]->name, S->group, (double)S->sc));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", p->bodies[S->body]->name, S->group, (double)S->sc));
         if (first < 0) {
           PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
           continue;
@@ -930,16 +938,18 @@ PetscErrorCode ContactPairsReport(Problem p)
             const PetscReal z = (r[0] - S->sc) / cp->hertzA;
             ph                = PetscAbsReal(z) < 1 ? cp->hertzPmax * PetscSqrtReal(1 - z * z) : 0.0;
           }
-          if (cp->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.6f %12.6f %12.6f %12.4e\n", (double)(r[0] - S->sc), (double)r[6], (double)ph, (double)r[5]));
-          else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.6f %12.6f %12s %12.4e\n", (double)(r[0] - S->sc), (double)r[6], "", (double)r[5]));
+          if (cp->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12.6g %12.4e\n", (double)(r[0] - S->sc), (double)r[6], (double)ph, (double)r[5]));
+          else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12.4e\n", (double)(r[0] - S->sc), (double)r[6], "", (double)r[5]));
         }
       }
     }
     if (cp->hertz && !(cp->P > 0)) PetscCall(PetscPrintf(p->comm, "  no contact force: nothing to compare with Hertz\n"));
     else if (cp->hertz) {
-      PetscCall(PetscPrintf(p->comm, "  Hertz (E* = %g, R* = %g): a = %.6f, p_max = %.6f\n", (double)cp->Estar, (double)cp->Rstar, (double)cp->hertzA, (double)cp->hertzPmax));
-      PetscCall(PetscPrintf(p->comm, "  computed:              a = %.6f (%+.2f %%), p_max = %.6f (%+.2f %%)\n", (double)cp->femA, (double)(100 * (cp->femA / cp->hertzA - 1)), (double)cp->femPmax, (double)(100 * (cp->femPmax / cp->hertzPmax - 1))));
-      PetscCall(PetscPrintf(p->comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * cp->l2err), (double)(100 * cp->S[0].l2err), (double)(100 * cp->S[1].l2err)));
+      PetscCall(PetscPrintf(p->comm, "  Hertz (E* = %g, R* = %g): a = %.6g, p_max = %.6g\n", (double)cp->Estar, (double)cp->Rstar, (double)cp->hertzA, (double)cp->hertzPmax));
+      PetscCall(PetscPrintf(p->comm, "  computed:              a = %.6g (%+.2f %%), p_max = %.6g (%+.2f %%)\n", (double)cp->femA, (double)(100 * (cp->femA / cp->hertzA - 1)), (double)cp->femPmax, (double)(100 * (cp->femPmax / cp->hertzPmax - 1))));
+      PetscCall(PetscPrintf(p->comm, "  half-width from the profile's second moment: a = %.6g (%+.2f %%)\n", (double)cp->femAm, (double)(100 * (cp->femAm / cp->hertzA - 1))));
+      if (PetscIsInfOrNanReal(cp->l2err)) PetscCall(PetscPrintf(p->comm, "  relative L2 error of the pressure profile: n/a (a surface has no point inside Hertz's zone)\n"));
+      else PetscCall(PetscPrintf(p->comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * cp->l2err), (double)(100 * cp->S[0].l2err), (double)(100 * cp->S[1].l2err)));
     }
   }
   PetscFunctionReturn(0);
@@ -958,6 +968,7 @@ static void PairFiguresJSON(FILE *fp, const ContactPair *cp, const char sep[], c
   JKV(fp, sep, "max_penetration", cp->maxPen);
   JKV(fp, sep, "fem_pmax", cp->femPmax);
   JKV(fp, sep, "fem_a", cp->femA);
+  JKV(fp, sep, "fem_a_moment", cp->femAm);
   if (!cp->hertz) return;
   JKV(fp, sep, "E_star", cp->Estar);
   JKV(fp, sep, "R_star", cp->Rstar);
@@ -989,6 +1000,7 @@ PetscErrorCode ContactPairsWriteJSON(Problem p, FILE *fp)
       fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d", s ? ", " : "", p->bodies[S->body]->name, S->group, (int)S->ne);
       JKV(fp, ", ", "pmax", S->pmax);
       JKV(fp, ", ", "a", S->a);
+      JKV(fp, ", ", "a_moment", S->am);
       JKV(fp, ", ", "centre", S->sc);
       JKV(fp, ", ", "pressure_integral", S->ptotal);
       fprintf(fp, ", \"force\": [");
@@ -1054,6 +1066,7 @@ PetscErrorCode ContactPairsWriteHDF5(Problem p, PetscViewer v)
       PetscCall(PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &cp->maxPen));
       PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &cp->femPmax));
       PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &cp->femA));
+      PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a_moment", PETSC_REAL, &cp->femAm));
       if (cp->hertz) {
         PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &cp->Estar));
         PetscCall(PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &cp->Rstar));
