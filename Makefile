@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test clean
+.PHONY: all deps meshes run test stress clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -46,7 +46,13 @@ run: bin/contact meshes
 	@echo "Figures: out/$(SCENE)-pressure.png out/$(SCENE)-vonmises.png; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
 test: bin/contact meshes
-	$(PYTHON) -m pytest -q tests
+	$(PYTHON) -m pytest -q -m "not stress" tests
+
+# the long extremes (k_p up to 1e12 without continuation, h = 0.01) and 500
+# mutated meshes through the mesh reader
+stress: bin/contact meshes
+	$(PYTHON) -m pytest -q -m stress tests
+	$(PYTHON) tests/fuzz_msh.py --cases 500 --seed 1 --jobs 2
 
 clean:
 	rm -rf build bin

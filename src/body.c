@@ -61,6 +61,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%snu", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->nu));
   PetscCheck(b->nu > -1.0 && b->nu < 0.5, b->comm, PETSC_ERR_USER_INPUT, "option %s: Poisson's ratio must be in (-1, 0.5), got %g", opt, (double)b->nu);
+  /* lambda/mu = 2 nu/(1 - 2 nu) is 9 at nu = 0.45 and grows without bound */
+  if (b->nu >= 0.45) PetscCall(PetscFPrintf(b->comm, PETSC_STDERR, "contact: warning: body %s: nu = %g is nearly incompressible (lambda/mu = %.3g); P2/Q2 displacement elements may lock, so stresses and contact pressure converge more slowly\n", b->name, (double)b->nu, (double)(2 * b->nu / (1 - 2 * b->nu))));
   if (meshSizeOverride > 0) b->h = meshSizeOverride;
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%smesh_size", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->h));

@@ -1,0 +1,249 @@
+"""Stability at the extremes: penalties from 1e1 to 1e12, pushes from 0 to 0.3,
+an initial gap, other units, near-incompressible materials, stiffness contrast,
+very coarse meshes, 1 to 4 ranks. Every case checks numbers against an
+independent reference: Hertz, a rigid translation, exact similarity under a
+change of units, or another run of the same model.
+
+The slow cases (marked `stress`) run in `make stress`, not in `make test`."""
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import msh22
+from conftest import BIN, ENV, ROOT, run_contact
+
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
+SMALL = ["-options_file", "meshes/hertz-small/hertz-small.opts"]
+
+
+def finite_numbers(obj):
+    """Every number of a JSON summary is finite (NaN and Inf are written as null)."""
+    if isinstance(obj, dict):
+        return all(finite_numbers(v) for v in obj.values())
+    if isinstance(obj, list):
+        return all(finite_numbers(v) for v in obj)
+    return not isinstance(obj, float) or math.isfinite(obj)
+
+
+def solve(tmp_path, args, name, ranks=1, check=True):
+    r = run_contact(args, tmp_path, ranks=ranks, name=name, check=check)
+    if r.returncode == 0:
+        assert r.summary["converged"], r.stdout
+        assert finite_numbers(r.summary)
+    return r
+
+
+# -- penalty -----------------------------------------------------------------
+
+def penalty_sweep(tmp_path, kps, extra=()):
+    out = {}
+    for kp in kps:
+        r = solve(tmp_path, HERTZ + ["-contact_penalty", kp] + list(extra), f"kp{kp:g}")
+        out[kp] = r.summary
+    return out
+
+
+def check_penalty_sweep(res):
+    kps = sorted(res)
+    P = np.array([res[k]["contact_force"] for k in kps])
+    pen = np.array([res[k]["max_penetration"] for k in kps])
+    # the force converges as k_p grows: it rises towards a limit, by steps that shrink
+    assert np.all(np.diff(P) > 0), P
+    steps = np.abs(np.diff(P))
+    assert np.all(steps[1:] < steps[:-1]), steps
+    # the penetration falls like 1/k_p (log-log slope over the sweep)
+    slope = np.polyfit(np.log(kps), np.log(pen), 1)[0]
+    print("k_p", kps, "P", P, "penetration", pen, "slope", slope)
+    assert -1.1 < slope < -0.85, slope
+    return P
+
+
+def test_penalty_range(tmp_path):
+    """k_p = 1e4 ... 1e10 on the reference scene (Newton, h = 0.1)."""
+    res = penalty_sweep(tmp_path, [1e4, 1e6, 1e8, 1e10])
+    P = check_penalty_sweep(res)
+    assert abs(P[-1] - P[-2]) / P[-1] < 1e-3
+
+
+def test_penalty_extremes(tmp_path):
+    """k_p = 1e1: the bodies interpenetrate but the answer is finite and
+    consistent (force = reaction); k_p = 1e12 with penalty continuation gives
+    the stiff limit of the sweep above."""
+    soft = solve(tmp_path, HERTZ + ["-contact_penalty", "1e1"], "soft").summary
+    assert 0 < soft["contact_force"] < 5 and soft["max_penetration"] > 0.1
+    push = soft["reactions"]["block:push"][0]
+    assert abs(abs(push) - soft["contact_force"]) < 1e-6 * soft["contact_force"]
+    stiff = solve(tmp_path, HERTZ + ["-contact_penalty", "1e12", "-penalty_stages", "4", "-penalty_start", "1e-4"], "stiff").summary
+    ref = solve(tmp_path, HERTZ + ["-contact_penalty", "1e10"], "ref").summary
+    assert abs(stiff["contact_force"] - ref["contact_force"]) < 1e-5 * ref["contact_force"]
+    assert stiff["max_penetration"] < 1e-9
+
+
+@pytest.mark.stress
+def test_penalty_full_range(tmp_path):
+    """k_p = 1e1 ... 1e12 with the default solver, no continuation."""
+    res = penalty_sweep(tmp_path, [1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12])
+    check_penalty_sweep(res)
+    for kp in (1e1, 1e2, 1e3):
+        solve(tmp_path, HERTZ + ["-contact_penalty", kp], f"low{kp:g}")
+
+
+# -- push ----------------------------------------------------------------------
+
+def test_zero_push(tmp_path):
+    r = solve(tmp_path, HERTZ + ["-block_bc_push_values", "0,0"], "zero")
+    s = r.summary
+    assert s["iterations"] == 0
+    assert s["max_displacement"] == 0.0 and s["contact_force"] == 0.0 and s["energy"] == 0.0
+
+
+def graded_push(D):
+    """The hertz-small scene at push D, graded to the contact patch: its
+    estimated half-width a ~ 0.45 sqrt(D) (R = 1) sets the mesh size there
+    (a/12) and the penalty (10 E*/hc), so that the patch is resolved and the
+    penetration stays a fixed small fraction of D at every scale."""
+    a = 0.45 * math.sqrt(D)
+    hc = a / 12
+    kp = 10 * 549.45 / hc
+    return SMALL + ["-block_bc_push_values", f"{-D},0",
+                    "-indenter_geo_params", f"R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc={hc:.6g},dc=0.5",
+                    "-block_geo_params", f"x0=0,W=1,H=2,hc={hc:.6g},dc=0.5",
+                    "-contact_penalty", f"{kp:.6g}"]
+
+
+@pytest.mark.parametrize("D", [1e-9, 1e-6, 1e-3])
+def test_tiny_push_keeps_hertz_scaling(D, tmp_path):
+    """a = sqrt(4 P R*/(pi E*)) and p_max = 2 P/(pi a) hold at every scale: the
+    computed half-width (second moment of the profile) and peak pressure match
+    Hertz for the computed force to 2 %, from D = 1e-9 to 1e-3."""
+    s = solve(tmp_path, graded_push(D), "push").summary
+    ea = s["fem_a_moment"] / s["hertz_a"] - 1
+    ep = s["fem_pmax"] / s["hertz_pmax"] - 1
+    print(f"D {D:g}: P {s['contact_force']:.6g}, a {s['fem_a_moment']:.6g} ({100 * ea:+.2f} %), p_max ({100 * ep:+.2f} %), its {s['iterations']}")
+    assert abs(ea) < 0.02 and abs(ep) < 0.02
+    assert s["max_penetration"] < 0.01 * D
+
+
+@pytest.mark.parametrize("D", [0.15, 0.3])
+def test_large_push(D, tmp_path):
+    """Large pushes converge; force equals the pushed edge's reaction."""
+    s = solve(tmp_path, HERTZ + ["-block_bc_push_values", f"{-D},0"], "push").summary
+    push = s["reactions"]["block:push"][0]
+    assert abs(abs(push) - s["contact_force"]) < 1e-6 * s["contact_force"]
+
+
+# -- initial gap ---------------------------------------------------------------
+
+GAP = ["-indenter_geo_params", "R=1,xc=-1.01,yc=0,xclamp=-1.81,xcontact=-0.51"]
+
+
+def test_gap_larger_than_push(tmp_path):
+    """Bodies 0.01 apart, push 0.005: no contact, the block translates rigidly."""
+    r = solve(tmp_path, HERTZ + GAP + ["-block_bc_push_values", "-0.005,0"], "gap")
+    assert r.summary["contact_force"] == 0.0
+    with r.h5() as f:
+        u = f["bodies/block/displacement"][...]
+        v = f["bodies/indenter/displacement"][...]
+    assert np.max(np.abs(u[:, 0] + 0.005)) < 1e-12 and np.max(np.abs(u[:, 1])) < 1e-12
+    assert np.max(np.abs(v)) < 1e-12
+
+
+def test_gap_smaller_than_push(tmp_path):
+    """Bodies 0.01 apart pushed 0.02 give the contact of touching bodies pushed 0.01."""
+    a = solve(tmp_path, HERTZ + GAP + ["-block_bc_push_values", "-0.02,0"], "gap").summary
+    b = solve(tmp_path, HERTZ + ["-block_bc_push_values", "-0.01,0"], "touch").summary
+    assert a["contact_force"] > 0
+    assert abs(a["contact_force"] - b["contact_force"]) < 1e-5 * b["contact_force"]
+
+
+# -- units ---------------------------------------------------------------------
+
+def scaled_meshes(tmp_path, L):
+    """The scene's h = 0.1 meshes, generated once, with coordinates times L."""
+    d = tmp_path / "gen"
+    if not d.exists():
+        subprocess.run([str(BIN)] + HERTZ + ["-mesh_only", "-mesh_dir", str(d)], cwd=ROOT, env=ENV, check=True,
+                       capture_output=True)
+    out = []
+    for body in ("indenter", "block"):
+        (src,) = d.glob(f"{body}-*.msh")
+        names, nodes, elems = msh22.read(src)
+        dst = tmp_path / f"{body}-L{L:g}.msh"
+        msh22.write(dst, names, {i: L * x for i, x in nodes.items()}, elems)
+        out += [f"-{body}_mesh", dst]
+    return out
+
+
+def dimensionless(s):
+    R, E = s["R_star"], s["E_star"]
+    return np.array([s["contact_force"] / (E * R), s["fem_a"] / R, s["fem_a_moment"] / R, s["fem_pmax"] / E,
+                     s["max_penetration"] / R, s["pressure_l2_error"]])
+
+
+@pytest.mark.parametrize("E,L", [(2.1e11, 1.0), (1000.0, 1e3), (2.1e11, 1e3), (1000.0, 1e-6)])
+def test_units(E, L, tmp_path):
+    """Steel (Pa) and millimetres: the same dimensionless results to 1e-6."""
+    ref = solve(tmp_path, HERTZ + scaled_meshes(tmp_path, 1.0), "ref").summary
+    args = HERTZ + scaled_meshes(tmp_path, L) + [
+        "-indenter_E", E, "-block_E", E, "-contact_penalty", f"{2e6 * (E / 1000) / L:.17g}",
+        "-block_bc_push_values", f"{-0.15 * L:.17g},0", "-contact_interface_hertz_radii", f"{L:.17g},0"]
+    s = solve(tmp_path, args, "scaled").summary
+    a, b = dimensionless(ref), dimensionless(s)
+    print("reference", a, "\nscaled   ", b)
+    assert np.all(np.abs(b - a) <= 1e-6 * np.abs(a)), np.abs(b - a) / np.abs(a)
+
+
+# -- materials -----------------------------------------------------------------
+
+@pytest.mark.parametrize("nu", [0.0, 0.45, 0.49, 0.499])
+def test_poisson_ratio(nu, tmp_path):
+    """Converges for nu up to 0.499 and matches Hertz with that E*; a warning
+    names the locking risk from nu = 0.45."""
+    r = solve(tmp_path, SMALL + ["-indenter_nu", nu, "-block_nu", nu], "nu")
+    s = r.summary
+    warned = "nearly incompressible" in r.stderr
+    assert warned == (nu >= 0.45), r.stderr
+    for k, h in (("fem_a_moment", "hertz_a"), ("fem_pmax", "hertz_pmax")):
+        assert abs(s[k] / s[h] - 1) < 0.02, (k, s[k], s[h])
+
+
+@pytest.mark.parametrize("E1", [1.0, 1e6])
+def test_stiffness_contrast(E1, tmp_path):
+    """E1/E2 = 1e-3 and 1e3 (penalty scaled with E*): Hertz with that E* to 3 %
+    (the soft disc of E1/E2 = 1e-3 flattens more than Hertz's half-spaces:
+    p_max +2.2 %)."""
+    E2 = 1000.0
+    Es = 1 / ((1 - 0.09) / E1 + (1 - 0.09) / E2)
+    s = solve(tmp_path, SMALL + ["-indenter_E", E1, "-contact_penalty", f"{2e6 * Es / 549.45:.6g}"], "contrast").summary
+    assert abs(s["E_star"] / Es - 1) < 1e-12
+    for k, h in (("fem_a_moment", "hertz_a"), ("fem_pmax", "hertz_pmax")):
+        assert abs(s[k] / s[h] - 1) < 0.03, (k, s[k], s[h])
+
+
+# -- meshes and ranks ----------------------------------------------------------
+
+def test_coarse_mesh(tmp_path):
+    """h = 0.5, a handful of elements: runs, balances forces, and reports its
+    (large) disagreement with Hertz instead of hiding it."""
+    s = solve(tmp_path, HERTZ + ["-mesh_size", "0.5"], "coarse").summary
+    push = s["reactions"]["block:push"][0]
+    assert abs(abs(push) - s["contact_force"]) < 1e-6 * s["contact_force"]
+    assert s["pressure_l2_error"] > 0.2 and s["dofs"] < 1000
+
+
+@pytest.mark.stress
+def test_fine_mesh(tmp_path):
+    """h = 0.01 (about 460,000 dofs): converges, agrees with h = 0.03."""
+    s = solve(tmp_path, HERTZ + ["-mesh_size", "0.01"], "fine").summary
+    assert abs(s["contact_force"] / 54.84 - 1) < 2e-3 and s["pressure_l2_error"] < 0.12
+
+
+def test_ranks_1_to_4(tmp_path):
+    """The same answers on 1 to 4 ranks (3 and 4 oversubscribed)."""
+    res = [solve(tmp_path, HERTZ, f"np{n}", ranks=n).summary for n in (1, 2, 3, 4)]
+    for s in res[1:]:
+        for k in ("contact_force", "fem_pmax", "fem_a_moment", "max_penetration", "energy"):
+            assert abs(s[k] - res[0][k]) <= 1e-8 * abs(res[0][k]), (k, s[k], res[0][k])
