@@ -32,11 +32,12 @@ static void RemovePendingOnSignal(int sig)
   raise(sig);
 }
 
-/* SIGINT, SIGTERM, SIGHUP: remove the temporaries, then die of the signal. */
+/* SIGINT, SIGTERM, SIGHUP, SIGPIPE (output piped into head): remove the
+   temporaries, then die of the signal, quietly, as Unix tools do. */
 PetscErrorCode ContactOutputInstallSignalHandlers(void)
 {
   struct sigaction sa;
-  const int        sigs[] = {SIGINT, SIGTERM, SIGHUP};
+  const int        sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
   PetscFunctionBeginUser;
   memset(&sa, 0, sizeof(sa));
