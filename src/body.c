@@ -3,6 +3,7 @@
    evaluate the pointwise kernels of elasticity.c. */
 #include "body.h"
 #include "meshgen.h"
+#include "mshcheck.h"
 #include "partition.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
@@ -176,6 +177,7 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 
   PetscFunctionBeginUser;
   /* first read of the file: an unreadable mesh stops here, on every rank */
+  PetscCall(MeshCheckFile(b->comm, b->msh));
   PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
   PetscCall(DMPlexCreateFromFile(b->comm, b->msh, b->name, PETSC_TRUE, &b->dm));
   PetscCall(PetscObjectSetName((PetscObject)b->dm, b->name));
@@ -258,7 +260,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscObject        obj;
   PetscClassId       cid = 0;
   PetscFE            cfe;
-  PetscReal          bad[4] = {0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J */
+  PetscReal          bad[5] = {0, 0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J, det J at its first point */
   PetscMPIInt        rank, size, first;
 
   PetscFunctionBeginUser;
@@ -287,7 +289,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
     PetscScalar *xc = NULL;
-    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2], sign0 = 1.0;
+    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2], sign0 = 1.0, detJ0 = 0.0;
 
     PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
     for (PetscInt i = 0; i < ncl; ++i) {
@@ -314,12 +316,16 @@ static PetscErrorCode BodyBuildCellCache(Body b)
       PetscReal       xx[2] = {0, 0};
 
       /* clockwise cells are fine; a sign change inside a cell is not */
-      if (iq == 0) sign0 = detJ > 0 ? 1.0 : -1.0;
+      if (iq == 0) {
+        sign0 = detJ > 0 ? 1.0 : -1.0;
+        detJ0 = detJ;
+      }
       if (!(detJ * sign0 > 0) && bad[0] == 0.0) {
         bad[0] = 1.0;
         bad[1] = x[b->nb - 1][0];
         bad[2] = x[b->nb - 1][1];
         bad[3] = detJ;
+        bad[4] = sign0 * PetscAbsReal(detJ0);
       }
       for (PetscInt a = 0; a < b->nb; ++a)
         for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
@@ -334,8 +340,8 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscCallMPI(MPI_Comm_size(b->comm, &size));
   first = bad[0] != 0.0 ? rank : size;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
-  if (first < size) PetscCallMPI(MPI_Bcast(bad, 4, MPIU_REAL, first, b->comm));
-  PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g) (det J = %g)", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[3]);
+  if (first < size) PetscCallMPI(MPI_Bcast(bad, 5, MPIU_REAL, first, b->comm));
+  PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g): det J = %g at one quadrature point, %g at another", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[4], (double)bad[3]);
   PetscFunctionReturn(0);
 }
 

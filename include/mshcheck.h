@@ -1,0 +1,8 @@
+#pragma once
+#include <petscsys.h>
+
+/* Checks a Gmsh mesh file (ASCII MSH 2.2 or 4.1) completely on rank 0 before
+   PETSc's reader sees it. A fault stops every rank with the same error, whose
+   message names the file, the line and what is wrong: PETSC_ERR_FILE_OPEN,
+   PETSC_ERR_FILE_READ, or PETSC_ERR_FILE_UNEXPECTED for bad content. */
+PetscErrorCode MeshCheckFile(MPI_Comm, const char path[]);
