@@ -6,6 +6,7 @@
    one-sided integrals are averaged (contactpair.c). */
 PetscErrorCode ContactPairsCreateFromOptions(Problem);
 PetscErrorCode ContactPairsSetUp(Problem);
+PetscErrorCode ContactPairsGetSurfaceDofs(Problem, IS *);
 /* Collective: gathers the pressure profiles and Hertz comparison after a solve. */
 PetscErrorCode ContactPairsReport(Problem);
 PetscErrorCode ContactPairsWriteJSON(Problem, FILE *);

@@ -44,6 +44,7 @@ struct _n_Problem {
   PetscInt  taylorN;
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
+  PetscBool schur; /* Newton through the contact-surface Schur complement */
   PetscReal penaltyStart, stageRtol;
 };
 

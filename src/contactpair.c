@@ -451,6 +451,31 @@ static PetscErrorCode PairSetPenaltyFactor(EnergyTerm t, PetscReal f)
   PetscFunctionReturn(0);
 }
 
+/* The unconstrained dofs of every contact surface (indices in the joined
+   vector, sorted, each once): the only rows and columns the contact Hessian
+   touches. Surfaces are replicated, so every rank gets the whole set. */
+PetscErrorCode ContactPairsGetSurfaceDofs(Problem p, IS *is)
+{
+  PetscInt  n = 0, *idx;
+
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    for (PetscInt s = 0; s < 2; ++s) n += 2 * cp->S[s].nn;
+  }
+  PetscCall(PetscMalloc1(n + 1, &idx));
+  n = 0;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    ContactPair *cp = (ContactPair *)p->terms[t]->ctx;
+    for (PetscInt s = 0; s < 2; ++s)
+      for (PetscInt k = 0; k < 2 * cp->S[s].nn; ++k)
+        if (cp->S[s].big[k] >= 0) idx[n++] = cp->S[s].big[k];
+  }
+  PetscCall(PetscSortRemoveDupsInt(&n, idx));
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, idx, PETSC_OWN_POINTER, is));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactPairsCreateFromOptions(Problem p)
 {
   char     *names[CP_MAX_PAIRS];

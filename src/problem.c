@@ -6,6 +6,7 @@
 #include "problem.h"
 #include "partition.h"
 #include "contactpair.h"
+#include "schur.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
 
@@ -21,6 +22,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->h0          = H0_ELASTIC;
   p->taylorScale = 0.1;
   p->loadSteps     = 1;
+  p->schur         = PETSC_TRUE;
   p->penaltyStages = 1;
   p->penaltyStart  = 1e-2;
   p->stageRtol     = 1e-3;
@@ -55,6 +57,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K factored once; one rank)", NULL, p->schur, &p->schur, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
@@ -334,8 +337,11 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  if (p->schur && size == 1 && p->nterms > 0) PetscCall(ContactSchurPCSetUp(p, pc));
+  else {
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  }
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }

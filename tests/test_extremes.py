@@ -50,10 +50,14 @@ def check_penalty_sweep(res):
     kps = sorted(res)
     P = np.array([res[k]["contact_force"] for k in kps])
     pen = np.array([res[k]["max_penetration"] for k in kps])
-    # the force converges as k_p grows: it rises towards a limit, by steps that shrink
-    assert np.all(np.diff(P) > 0), P
-    steps = np.abs(np.diff(P))
-    assert np.all(steps[1:] < steps[:-1]), steps
+    # the force converges as k_p grows: it rises towards a limit, by steps that
+    # shrink, down to the solver's resolution (the stopping test leaves about
+    # 1e-7 of P at k_p = 1e12, where the initial gradient is huge)
+    noise = 1e-6 * P[-1]
+    steps = np.diff(P)
+    assert np.all(steps > -noise), P
+    big = steps > noise
+    assert np.all(np.diff(steps[big]) < 0), steps
     # the penetration falls like 1/k_p (log-log slope over the sweep)
     slope = np.polyfit(np.log(kps), np.log(pen), 1)[0]
     print("k_p", kps, "P", P, "penetration", pen, "slope", slope)
