@@ -57,6 +57,8 @@ typedef struct {
   /* search structure over this surface as master */
   PetscInt   nkeys, *keys, *kedge, nx, ny;
   PetscReal  lo[2], cell, reach;
+  PetscReal (*bb)[4];     /* [ne] bounding box of each edge: xmin, ymin, xmax, ymax */
+  PetscInt  *stamp, query; /* [ne] last query that projected on the edge */
   /* results of the last evaluation with this surface as slave (owned points) */
   PetscInt   nq;
   PetscReal *qdata;       /* [nq][8]: s, X, Y, x, y, gap, pressure, weight */
@@ -145,7 +147,8 @@ static PetscErrorCode SurfaceBuildSearch(Surface *M)
   PetscInt  n = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(M->ne, &bb));
+  if (!M->bb) PetscCall(PetscCalloc2(M->ne, &M->bb, M->ne, &M->stamp));
+  bb       = M->bb;
   M->lo[0] = M->lo[1] = PETSC_MAX_REAL;
   hi[0] = hi[1] = -PETSC_MAX_REAL;
   for (PetscInt e = 0; e < M->ne; ++e) {
@@ -193,12 +196,13 @@ static PetscErrorCode SurfaceBuildSearch(Surface *M)
   }
   M->nkeys = n;
   PetscCall(PetscSortIntWithArray(n, M->keys, M->kedge));
-  PetscCall(PetscFree(bb));
   PetscFunctionReturn(0);
 }
 
-/* Candidates of one cell: the closest one updates (best, edge, eta). */
-static void SurfaceSearchCell(const Surface *M, PetscInt i, PetscInt j, const PetscReal p[2], PetscReal *best, PetscInt *edge, PetscReal *eta)
+/* Candidates of one cell: the closest one updates (best, edge, eta). An edge is
+   projected once per query, and not at all when its bounding box is already
+   farther than the best distance found. */
+static void SurfaceSearchCell(Surface *M, PetscInt i, PetscInt j, const PetscReal p[2], PetscReal *best, PetscInt *edge, PetscReal *eta)
 {
   PetscInt key, lo = 0, hi = M->nkeys;
 
@@ -210,8 +214,13 @@ static void SurfaceSearchCell(const Surface *M, PetscInt i, PetscInt j, const Pe
     else hi = mid;
   }
   for (PetscInt k = lo; k < M->nkeys && M->keys[k] == key; ++k) {
-    PetscReal e, d2;
-    EdgeProject(M->x, &M->enodes[3 * M->kedge[k]], p, &e, &d2);
+    const PetscInt   ke = M->kedge[k];
+    const PetscReal *b  = M->bb[ke];
+    const PetscReal  dx = PetscMax(0.0, PetscMax(b[0] - p[0], p[0] - b[2])), dy = PetscMax(0.0, PetscMax(b[1] - p[1], p[1] - b[3]));
+    PetscReal        e, d2;
+    if (M->stamp[ke] == M->query || dx * dx + dy * dy > *best) continue;
+    M->stamp[ke] = M->query;
+    EdgeProject(M->x, &M->enodes[3 * ke], p, &e, &d2);
     if (d2 < *best) {
       *best = d2;
       *edge = M->kedge[k];
@@ -224,7 +233,7 @@ static void SurfaceSearchCell(const Surface *M, PetscInt i, PetscInt j, const Pe
    around it until some are found (plus one more ring, which may hold a closer
    edge), up to M->reach; *edge = -1 if none. Deeply penetrated points thus keep
    a gap, and the energy stays continuous. */
-static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt *edge, PetscReal *eta)
+static void SurfaceFindClosest(Surface *M, const PetscReal p[2], PetscInt *edge, PetscReal *eta)
 {
   const PetscInt i = (PetscInt)PetscFloorReal((p[0] - M->lo[0]) / M->cell), j = (PetscInt)PetscFloorReal((p[1] - M->lo[1]) / M->cell);
   const PetscInt rmax = (PetscInt)(M->reach / M->cell) + 1;
@@ -232,6 +241,7 @@ static void SurfaceFindClosest(const Surface *M, const PetscReal p[2], PetscInt 
   PetscInt       found = -1;
 
   *edge = -1;
+  M->query++;
   if (i < -rmax || j < -rmax || i >= M->nx + rmax || j >= M->ny + rmax) return;
   for (PetscInt r = 0; r <= rmax && (found < 0 || r <= found + 1); ++r) {
     for (PetscInt a = -r; a <= r; ++a) {
@@ -427,6 +437,7 @@ static PetscErrorCode SurfaceDestroy(Surface *S)
   PetscCall(PetscFree2(S->locNode, S->locOff));
   PetscCall(PetscFree(S->ownEdges));
   PetscCall(PetscFree2(S->keys, S->kedge));
+  PetscCall(PetscFree2(S->bb, S->stamp));
   PetscCall(PetscFree(S->qdata));
   PetscCall(PetscFree(S->prof));
   PetscFunctionReturn(0);

@@ -138,6 +138,34 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
   PetscFunctionReturn(0);
 }
 
+/* The contact Hessian couples surface dofs that come within reach of each other,
+   which changes as the bodies move: the whole block of the contact-surface dofs
+   is reserved once, so that no Hessian evaluation allocates and the Hessian and
+   the elastic stiffness share one nonzero pattern (copied by memcpy). */
+static PetscErrorCode ProblemPreallocateSurfaceBlock(Problem p, Mat pre)
+{
+  IS              is;
+  const PetscInt *idx;
+  PetscInt        n, rstart, rend, nrow = 0, *rows;
+  PetscScalar    *zeros;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactPairsGetSurfaceDofs(p, &is));
+  PetscCall(ISGetLocalSize(is, &n));
+  PetscCall(ISGetIndices(is, &idx));
+  PetscCall(MatGetOwnershipRange(pre, &rstart, &rend));
+  PetscCall(PetscMalloc1(n + 1, &rows));
+  for (PetscInt i = 0; i < n; ++i)
+    if (idx[i] >= rstart && idx[i] < rend) rows[nrow++] = idx[i];
+  PetscCall(PetscCalloc1(n + 1, &zeros));
+  for (PetscInt i = 0; i < nrow; ++i) PetscCall(MatSetValues(pre, 1, &rows[i], n, idx, zeros, ADD_VALUES));
+  PetscCall(PetscFree(zeros));
+  PetscCall(PetscFree(rows));
+  PetscCall(ISRestoreIndices(is, &idx));
+  PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
   PetscInt nloc = 0;
@@ -163,6 +191,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(MatSetUp(pre));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, pre));
+  if (p->nterms) PetscCall(ProblemPreallocateSurfaceBlock(p, pre));
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatCreate(p->comm, &p->H));
@@ -278,7 +307,7 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
   (void)tao;
   (void)H;
   PetscCall(ProblemScatterToBodies(p, X));
-  PetscCall(MatCopy(p->K, P, SUBSET_NONZERO_PATTERN));
+  PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, P));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
