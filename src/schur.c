@@ -11,7 +11,8 @@
    its Schur block (ICNTL(19)), which also yields S_K; each Newton step then
    replaces the factor's Schur block by S_K + C_cc = T0 + H_cc, with
    T0 = S_K - K_cc formed once, and MUMPS solves H z = r exactly through it
-   (condensation on c, a dense LU of the n_c x n_c block, expansion). The
+   (condensation on c, a dense factorisation of the n_c x n_c block,
+   expansion). The
    sparse factorisation is done once per solve instead of once per step; a step
    costs a dense factorisation of the surface block and two triangular solves.
    The PC is exact for the assembled H (so preonly is a true Newton step). */
@@ -20,7 +21,7 @@
 
 typedef struct {
   IS  isc;    /* contact-surface dofs */
-  Mat F;      /* MUMPS LU of K with Schur block on isc */
+  Mat F;      /* MUMPS Cholesky of K with Schur block on isc */
   Mat T0;     /* S_K - K_cc, dense */
   Mat Hcc;    /* c block of the current Hessian */
 } SchurCtx;
@@ -94,11 +95,11 @@ PetscErrorCode ContactSchurPCSetUp(Problem p, PC pc)
     PetscCall(PetscInfo(pc, "Schur block: %" PetscInt_FMT " contact-surface dofs\n", nc));
   }
   PetscCall(PetscLogEventBegin(SchurFactorK, 0, 0, 0, 0));
-  PetscCall(MatGetFactor(p->K, MATSOLVERMUMPS, MAT_FACTOR_LU, &ctx->F));
+  PetscCall(MatGetFactor(p->K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &ctx->F));
   PetscCall(MatFactorSetSchurIS(ctx->F, ctx->isc));
   PetscCall(MatFactorInfoInitialize(&info));
-  PetscCall(MatLUFactorSymbolic(ctx->F, p->K, NULL, NULL, &info));
-  PetscCall(MatLUFactorNumeric(ctx->F, p->K, &info));
+  PetscCall(MatCholeskyFactorSymbolic(ctx->F, p->K, NULL, &info));
+  PetscCall(MatCholeskyFactorNumeric(ctx->F, p->K, &info));
   PetscCall(MatFactorCreateSchurComplement(ctx->F, &S, &status));
   PetscCall(MatCreateSubMatrix(p->K, ctx->isc, ctx->isc, MAT_INITIAL_MATRIX, &Kcc));
   PetscCall(MatAXPY(S, -1.0, Kcc, DIFFERENT_NONZERO_PATTERN));
