@@ -12,9 +12,9 @@
    replaces the factor's Schur block by S_K + C_cc = T0 + H_cc, with
    T0 = S_K - K_cc formed once, and MUMPS solves H z = r exactly through it
    (condensation on c, a dense factorisation of the n_c x n_c block,
-   expansion). The
-   sparse factorisation is done once per solve instead of once per step; a step
-   costs a dense factorisation of the surface block and two triangular solves.
+   expansion). The sparse factorisation is done once per solve instead of once
+   per step; a step costs a dense factorisation of the surface block and two
+   triangular solves.
    The PC is exact for the assembled H (so preonly is a true Newton step). */
 #include "schur.h"
 #include "contactpair.h"
