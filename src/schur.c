@@ -44,6 +44,7 @@ static PetscErrorCode SchurPCSetUp(PC pc)
   PetscCall(MatSetUnfactored(Sf)); /* factored in place by the previous step */
   PetscCall(MatCopy(ctx->T0, Sf, SAME_NONZERO_PATTERN));
   PetscCall(MatAXPY(Sf, 1.0, ctx->Hcc, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatSetOption(Sf, MAT_SPD, PETSC_TRUE)); /* Gauss-Newton: LAPACK potrf, not sytrf */
   PetscCall(MatFactorRestoreSchurComplement(ctx->F, &Sf, MAT_FACTOR_SCHUR_UNFACTORED));
   PetscCall(PetscLogEventEnd(SchurStep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
