@@ -116,11 +116,12 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
   PetscFunctionReturn(0);
 }
 
-/* A body whose Dirichlet conditions leave a rigid motion free is held only by
-   contact; with no contact pair at all its energy has a flat direction and the
-   minimisation is singular, which is refused here rather than left to a solver
-   that would never converge. Held by contact alone, it is allowed, with a
-   warning: frictionless contact may or may not fix the motion. */
+/* A body whose Dirichlet conditions leave a rigid motion free has a flat
+   direction in its energy: with no contact pair at all the minimisation is
+   singular, and frictionless contact does not fix it either (it pushes, it
+   does not hold; a body can slide along it, or leave it). Refused here, with
+   the cause, rather than left to a factorisation that meets a zero pivot or a
+   solver that never converges. */
 static PetscErrorCode ProblemCheckSupports(Problem p)
 {
   PetscFunctionBeginUser;
@@ -132,8 +133,8 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
     PetscCall(BodyCountFreeRigidModes(b, &nfree));
     if (!nfree) continue;
     for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
-    PetscCheck(contact, p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free and it is in no contact pair, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree, b->name);
-    PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: body %s is held only by contact in %" PetscInt_FMT " rigid motion(s); frictionless contact may not fix them\n", b->name, nfree));
+    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
+            contact ? " (frictionless contact pushes but does not hold it)" : " and it is in no contact pair", b->name);
   }
   PetscFunctionReturn(0);
 }
