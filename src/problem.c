@@ -320,6 +320,18 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
   PetscFunctionReturn(0);
 }
 
+/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several. */
+static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm)
+{
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  PetscFunctionReturn(0);
+}
+
 /* LMVM with the elastic stiffness of the bodies as initial Hessian H0: each
    iteration applies H0^-1 (factorised once, -h0_pc_type to change) before the
    quasi-Newton update, so that L-BFGS only has to learn the contact terms. */
@@ -328,28 +340,27 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscBool lmvm, blmvm;
   KSP       ksp;
   PC        pc;
-  PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
   if (!(lmvm || blmvm) || p->h0 == H0_NONE) PetscFunctionReturn(0);
-  PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(TaoLMVMSetH0(p->tao, p->K));
   PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  PetscCall(PCSetCholesky(pc, p->comm));
   PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
 
 /* Newton types (nls, ntr): the Gauss-Newton Hessian is symmetric positive
-   definite, so its Cholesky factorisation is the default preconditioner
-   (CHOLMOD on one rank, MUMPS on several), with nls taking the factored step
-   directly; -tao_nls_ksp_type, -tao_nls_pc_type, ... still override. */
+   definite and changes only in the contact-surface block, so on one rank the
+   step goes through the Schur complement on that block (schur.c, K factored
+   once), elsewhere through a Cholesky factorisation per step (MUMPS); nls
+   takes the factored step directly (preonly); -newton_schur 0,
+   -tao_nls_ksp_type, -tao_nls_pc_type, ... override. */
 static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
 {
   PetscBool   nls, ntr, set;
@@ -368,10 +379,7 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   if (p->schur && size == 1 && p->nterms > 0) PetscCall(ContactSchurPCSetUp(p, pc));
-  else {
-    PetscCall(PCSetType(pc, PCCHOLESKY));
-    PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
-  }
+  else PetscCall(PCSetCholesky(pc, p->comm));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
