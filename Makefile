@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test stress clean
+.PHONY: all deps meshes run test stress bench bench-quick clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -53,6 +53,13 @@ test: bin/contact meshes
 stress: bin/contact meshes
 	$(PYTHON) -m pytest -q -m stress tests
 	$(PYTHON) tests/fuzz_msh.py --cases 500 --seed 1 --jobs 2
+
+# the speed-accuracy sweep: bench/results.csv, bench/RESULTS.md, PNG plots
+# (the full sweep takes hours; bench-quick covers the main points in minutes)
+bench: bin/contact meshes
+	$(PYTHON) scripts/bench.py --out bench
+bench-quick: bin/contact meshes
+	$(PYTHON) scripts/bench.py --quick --out bench
 
 clean:
 	rm -rf build bin

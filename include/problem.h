@@ -36,7 +36,7 @@ struct _n_Problem {
   Mat       H, K; /* Hessian, elastic stiffness of the bodies */
   H0Type    h0;
   Tao       tao;
-  PetscInt  nEnergyEvals, nHessianEvals;
+  PetscInt  nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
   PetscReal energy, gnorm;
   PetscReal time[5]; /* mesh, setup, solve, output, total */
   PetscLogDouble t0; /* start of the run */

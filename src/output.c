@@ -322,7 +322,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "ranks", PETSC_INT, &size));
-  PetscCall(TaoGetIterationNumber(p->tao, &its));
+  its = p->iterations; /* over all stages */
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "iterations", PETSC_INT, &its));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "energy", PETSC_REAL, &p->energy));
   for (PetscInt k = 0; k < 4; ++k) PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", names[k], PETSC_REAL, &p->time[k]));
@@ -350,7 +350,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  PetscCall(TaoGetIterationNumber(p->tao, &its));
+  its = p->iterations; /* over all stages */
   PetscCall(TaoGetConvergedReason(p->tao, &reason));
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(VecGetSize(p->X, &dofs));

@@ -485,6 +485,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   }
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(ProblemSolveStaged(p, &its, &reason));
+  p->iterations = its;
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &p->energy, p->G, p));
   p->nEnergyEvals--;
