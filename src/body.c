@@ -557,9 +557,11 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   PetscReal      C[16];
   PetscScalar    K[18 * 18];
   PetscInt       idx[18];
+  PetscBool      pattern; /* a preallocator wants the nonzero pattern only */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
+  PetscCall(PetscObjectTypeCompare((PetscObject)H, MATPREALLOCATOR, &pattern));
   ElasticityTangent(b->param, C);
   for (PetscInt c = 0; c < b->ncells; ++c) {
     for (PetscInt a = 0; a < nb; ++a) {
@@ -567,7 +569,7 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
       idx[2 * a + 1] = b->l2b[b->cdof[c * nb + a] + 1];
     }
     PetscCall(PetscArrayzero(K, n * n));
-    for (PetscInt iq = 0; iq < nq; ++iq) {
+    for (PetscInt iq = 0; iq < (pattern ? 0 : nq); ++iq) {
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
       const PetscReal  w  = b->wdetJ[c * nq + iq];
       for (PetscInt a = 0; a < nb; ++a)
