@@ -75,8 +75,8 @@ typedef struct {
   PetscReal kp, kpScene; /* penalty in use (continuation), the scene's */
   PetscInt  nqp;          /* Gauss points per slave edge */
   PetscReal xi[8], wxi[8];
-  PetscBool hertz;
-  PetscReal radii[2], Estar, Rstar;
+  PetscBool hertz, mirror; /* mirror: the scene is the half y >= mirrorY of a symmetric model */
+  PetscReal radii[2], Estar, Rstar, mirrorY;
   PetscReal maxPen, P, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
   PetscReal force[2];
   PetscBool reported;
@@ -527,6 +527,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group", NULL, surf, &ns, &setPair));
     PetscCall(PetscOptionsReal("-penalty", "Penalty k_p of this pair (default -contact_penalty)", NULL, cp->kp, &cp->kp, NULL));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, cp->radii, &nr, &cp->hertz));
+    PetscCall(PetscOptionsReal("-mirror_y", "Half model mirrored about the line y = value: the report doubles the force across it and mirrors the profiles", NULL, cp->mirrorY, &cp->mirrorY, &cp->mirror));
     PetscOptionsEnd();
     PetscCheck(setPair && ns == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
     PetscCheck(!cp->hertz || nr == 2, p->comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
@@ -855,9 +856,30 @@ static PetscErrorCode SurfaceReport(ContactPair *cp, Surface *S, MPI_Comm comm)
   if (!rank) {
     disp[0] = 0;
     for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, &all));
+    PetscCall(PetscMalloc1(2 * disp[size] + 1, &all));
   }
   PetscCallMPI(MPI_Gatherv(S->qdata, n8, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, comm));
+  if (!rank && cp->mirror && disp[size] > 0) {
+    /* the mirror image of every point, about the end of the arc that lies on
+       the symmetry line (s = 0 or the surface's length) */
+    const PetscInt m = disp[size] / 8;
+    PetscInt       lo = 0, hi = 0;
+    PetscReal      L = 0.0, scut;
+    for (PetscInt e = 0; e < S->ne; ++e) L = PetscMax(L, S->s0[e] + S->elen[e]);
+    for (PetscInt i = 1; i < m; ++i) {
+      if (all[8 * i] < all[8 * lo]) lo = i;
+      if (all[8 * i] > all[8 * hi]) hi = i;
+    }
+    scut = PetscAbsReal(all[8 * lo + 2] - cp->mirrorY) <= PetscAbsReal(all[8 * hi + 2] - cp->mirrorY) ? 0.0 : L;
+    for (PetscInt i = 0; i < m; ++i) {
+      PetscReal *r = &all[8 * (m + i)];
+      PetscCall(PetscArraycpy(r, &all[8 * i], 8));
+      r[0] = 2.0 * scut - r[0];
+      r[2] = 2.0 * cp->mirrorY - r[2];
+      r[4] = 2.0 * cp->mirrorY - r[4];
+    }
+    disp[size] *= 2;
+  }
   if (!rank) {
     PetscInt   n = disp[size] / 8, *perm, i0 = -1, i1 = -1;
     PetscReal *sv, num = 0, den = 0, err = 0, nrm = 0;
@@ -935,6 +957,12 @@ PetscErrorCode ContactPairsReport(Problem p)
     cp->maxPen   = pen;
     cp->force[0] = f[0];
     cp->force[1] = f[1];
+    if (cp->mirror) { /* the mirror half doubles the force across the line and cancels along it */
+      for (PetscInt k = 0; k < 4; k += 2) {
+        f[k] *= 2.0;
+        f[k + 1] = 0.0;
+      }
+    }
     cp->P        = PetscSqrtReal(f[0] * f[0] + f[1] * f[1]);
     if (cp->hertz) {
       cp->hertzA    = PetscSqrtReal(4.0 * cp->P * cp->Rstar / (PETSC_PI * cp->Estar));
@@ -947,7 +975,7 @@ PetscErrorCode ContactPairsReport(Problem p)
     cp->l2err    = 0.5 * (cp->S[0].l2err + cp->S[1].l2err);
     cp->reported = PETSC_TRUE;
     PetscCall(PetscPrintf(p->comm, "Contact pair %s (k_p = %g): %s:%s against %s:%s\n", cp->name, (double)cp->kp, p->bodies[cp->S[0].body]->name, cp->S[0].group, p->bodies[cp->S[1].body]->name, cp->S[1].group));
-    PetscCall(PetscPrintf(p->comm, "  contact force on %s: (%.6e, %.6e), P = %.6e\n", p->bodies[cp->S[0].body]->name, (double)f[0], (double)f[1], (double)cp->P));
+    PetscCall(PetscPrintf(p->comm, "  contact force on %s%s: (%.6e, %.6e), P = %.6e\n", p->bodies[cp->S[0].body]->name, cp->mirror ? " (with its mirror image)" : "", (double)f[0], (double)f[1], (double)cp->P));
     PetscCall(PetscPrintf(p->comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)cp->maxPen, (double)(cp->femPmax / cp->kp)));
     if (!rank) {
       for (PetscInt s = 0; s < 2; ++s) {
