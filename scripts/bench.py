@@ -20,7 +20,9 @@ evaluation costs per call are read. Peak memory is each process's maximum
 resident set (GNU time %M), summed over the ranks. A run that fails, times out
 or does not converge is a row with its reason, never a stop of the sweep.
 
-Only numpy and matplotlib (no scipy); h5py for the half model's profiles.
+Only numpy and matplotlib (no scipy). The half model (hertz-half) reports the
+full mirrored problem's figures itself (-contact_interface_mirror_y 0), so its
+rows use the program's JSON figures like every other row.
 """
 import argparse
 import csv
@@ -71,7 +73,7 @@ CSV_FIELDS = [
     "a_moment_err", "repeats", "wall_runs", "solve_runs", "time_mesh", "time_setup", "time_output",
     "time_total", "hessian_evals", "json_iterations", "search_calls", "energy_calls",
     "contact_hessian_time_per_call", "P_program", "hertz_a", "hertz_pmax", "fem_pmax", "fem_a",
-    "P_ref", "P_ref_h", "prog_l2_err", "prog_pmax_err", "prog_a_err", "note",
+    "P_ref", "P_ref_h", "note",
 ]
 
 
@@ -242,46 +244,6 @@ def parse_log_view(path):
     return ev
 
 
-def half_model_figures(h5path, summary):
-    """Hertz figures of the half model as of the full problem: P = 2 |f_x|, s
-    measured from the cut y = 0, a = the loaded length from the cut. Same
-    definitions as the program's report otherwise (means of the two one-sided
-    surfaces; profile error sqrt(sum w (p - pH)^2 / sum w pH^2))."""
-    import h5py
-    pair = summary["contact"][next(iter(summary["contact"]))]
-    fx = pair["force"][0]
-    P = 2.0 * abs(fx)
-    Es, Rs = summary["E_star"], summary["R_star"]
-    aH = math.sqrt(4.0 * P * Rs / (math.pi * Es))
-    pH = 2.0 * P / (math.pi * aH)
-    pm, aa, am, l2 = [], [], [], []
-    with h5py.File(h5path, "r") as f:
-        g = f["contact"][next(iter(f["contact"]))]
-        for name in g:
-            d = g[name]
-            s, X, p, w = d["s"][:], d["X"][:], d["pressure"][:], d["weight"][:]
-            i = np.argsort(np.abs(X[:, 1]))[:2]  # the two points nearest the cut
-            s0 = s[i[0]] - X[i[0], 1] * (s[i[1]] - s[i[0]]) / (X[i[1], 1] - X[i[0], 1])
-            r = np.abs(s - s0)
-            o = np.argsort(r)
-            r, p, w = r[o], p[o], w[o]
-            pm.append(p.max())
-            loaded = np.nonzero(p > 0)[0]
-            if len(loaded):
-                k = loaded[-1]
-                aa.append(0.5 * (r[k] + r[k + 1]) if k + 1 < len(r) else r[k])
-            else:
-                aa.append(0.0)
-            den = np.sum(p * w)
-            am.append(2.0 * math.sqrt(np.sum(p * w * r * r) / den) if den > 0 else 0.0)
-            z = r / aH
-            ph = np.where(z < 1, pH * np.sqrt(np.clip(1 - z * z, 0, None)), 0.0)
-            nrm = np.sum(w * ph * ph)
-            l2.append(math.sqrt(np.sum(w * (p - ph) ** 2) / nrm) if nrm > 0 else float("inf"))
-    return {"P": P, "hertz_a": aH, "hertz_pmax": pH, "fem_pmax": float(np.mean(pm)), "fem_a": float(np.mean(aa)),
-            "fem_a_moment": float(np.mean(am)), "pressure_l2_error": float(np.mean(l2))}
-
-
 def run_config(R, scene, h, strategy, kp, tol, ranks, repeat, log_view):
     a = R.args
     cmd = R.base_cmd(scene, h) + ["-contact_penalty", "%g" % kp, "-tao_gttol", "%g" % tol] + STRATEGIES[strategy]
@@ -290,23 +252,16 @@ def run_config(R, scene, h, strategy, kp, tol, ranks, repeat, log_view):
     walls, solves, summaries, peaks = [], [], [], []
     tao = None
     ev = {}
-    half_fig = None
     for r in range(repeat):
         R.n += 1
         jp = os.path.join(R.tmp, "run%d.json" % R.n)
-        extra = ["-summary", jp]
-        h5 = None
-        if scene == "hertz-half" and r == 0:
-            h5 = os.path.join(R.tmp, "half%d.h5" % R.n)
-            extra += ["-output", h5]
-        else:
-            extra += ["-output", "none"]
+        extra = ["-summary", jp, "-output", "none"]
         lv = None
         if log_view and r == 0:
             lv = os.path.join(R.tmp, "log%d.txt" % R.n)
             extra += ["-log_view", ":" + lv]
         wall, rc, out, summ, peak = R.run_once(cmd + extra, ranks, a.timeout, jp,
-                                                 extra_files=tuple(f for f in (h5, lv) if f))
+                                                 extra_files=(lv,) if lv else ())
         tao = parse_tao_line(out) or tao
         if rc == "timeout":
             row["reason"] = "TIMEOUT after %.0f s" % a.timeout
@@ -326,14 +281,6 @@ def run_config(R, scene, h, strategy, kp, tol, ranks, repeat, log_view):
         peaks.append(peak)
         if lv:
             ev = parse_log_view(lv)
-        if h5 and os.path.exists(h5):
-            try:
-                half_fig = half_model_figures(h5, summ)
-            except Exception as e:  # a malformed profile is a note, not a crash
-                row["note"] = "half-model figures failed: %s" % e
-            for f in (h5, h5[:-3] + ".xdmf"):
-                if os.path.exists(f):
-                    os.remove(f)
         if jp and os.path.exists(jp):
             os.remove(jp)
     row["repeats"] = len(walls)
@@ -360,16 +307,6 @@ def run_config(R, scene, h, strategy, kp, tol, ranks, repeat, log_view):
                                      "fem_a_moment", "pressure_l2_error")}
         fig["P"] = fig.pop("contact_force")
         row["P_program"] = fig["P"]
-        if scene == "hertz-half":
-            row["prog_l2_err"] = fig["pressure_l2_error"]
-            row["prog_pmax_err"] = rel(fig["fem_pmax"], fig["hertz_pmax"])
-            row["prog_a_err"] = rel(fig["fem_a"], fig["hertz_a"])
-            if half_fig:
-                fig = half_fig
-                row["note"] = ("half model: P = 2|f_x|, Hertz a and p_max from that P, profile s from the cut "
-                               "(recomputed from the HDF5 profile; the program's own figures are for a half zone)")
-            else:
-                fig["P"] = float("nan")
         row["P"] = fig["P"]
         for k in ("hertz_a", "hertz_pmax", "fem_pmax", "fem_a"):
             row[k] = fig[k]
@@ -425,10 +362,18 @@ def finite(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
 
 
+def default_runs(rows, scene, kp=None, h=None):
+    """The converged one-rank runs of a scene with the default strategy at
+    gttol 1e-8, at k_p = kp and mesh size h where given."""
+    return [r for r in rows if r["scene"] == scene and r["strategy"] == REF_STRATEGY and r["gttol"] == REF_TOL
+            and r["ranks"] == 1 and r["converged"] and (kp is None or r["kp"] == kp) and (h is None or r["h"] == h)]
+
+
 def attach_references(rows):
     """P_ref per k_p: the converged run of the default strategy at gttol 1e-8
-    on the finest uniform mesh that has that k_p. Graded and half (2 P) runs
-    are compared with the same uniform reference."""
+    on the finest uniform mesh that has that k_p. Graded and half-model runs
+    are compared with the same uniform reference (the half model reports the
+    full problem's P)."""
     refs = {}
     for r in rows:
         if (r["scene"] == "hertz" and r["strategy"] == REF_STRATEGY and r["gttol"] == REF_TOL
@@ -579,8 +524,7 @@ def plots(rows, out, fit_solve, fit_lin):
 
     # time against dofs
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
-    sel = sorted([r for r in rows if r["scene"] == "hertz" and r["strategy"] == REF_STRATEGY and r["kp"] == REF_KP
-                  and r["gttol"] == REF_TOL and r["ranks"] == 1 and r["converged"]], key=lambda r: r["dofs"])
+    sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
     if sel:
         d = np.array([r["dofs"] for r in sel], float)
         ax.loglog(d, [r["solve_median"] for r in sel], "o-", color="C0", label="contact solve (newton)")
@@ -673,8 +617,7 @@ def read_csv(path):
 def report(rows, args, info, meshes, elapsed, load):
     out = args.out
     refs = attach_references(rows)
-    ref_sel = sorted([r for r in rows if r["scene"] == "hertz" and r["strategy"] == REF_STRATEGY and r["kp"] == REF_KP
-                      and r["gttol"] == REF_TOL and r["ranks"] == 1 and r["converged"]], key=lambda r: r["dofs"])
+    ref_sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
     fit_solve, n_solve = fit_exponent([r["dofs"] for r in ref_sel], [r["solve_median"] for r in ref_sel])
     fit_wall, _ = fit_exponent([r["dofs"] for r in ref_sel], [r["wall_median"] for r in ref_sel])
     fit_lin, _ = fit_exponent([r["dofs"] for r in ref_sel], [r.get("linear_solve_time") for r in ref_sel])
@@ -742,8 +685,8 @@ def report(rows, args, info, meshes, elapsed, load):
       "linear. *peak MB*: maximum resident set (GNU time %M), summed over ranks. *iterations, energy evals*: "
       "the totals printed on the program's `TAO ...` line (over all stages for continuation and load steps). "
       "Errors against Hertz are the program's (p_max: largest Gauss-point pressure; a: half the loaded "
-      "length; l2: relative L2 error of the profile; means of the two one-sided surfaces), except for the half "
-      "model (see below). *P_ref_err* = |P - P_ref| / P_ref, P_ref = the newton, gttol 1e-8 run on the finest "
+      "length; l2: relative L2 error of the profile; means of the two one-sided surfaces; the half model "
+      "reports those of the full mirrored problem). *P_ref_err* = |P - P_ref| / P_ref, P_ref = the newton, gttol 1e-8 run on the finest "
       "uniform mesh run at that k_p (graded and half-model runs compared with the same uniform reference). "
       "*search / energy per call*: from -log_view of the newton, k_p = 2e6, 1e-8 run of each mesh: "
       "ContactSearch time per call, and (ContactEnergyGrad + ElasEnergyGrad time) per ContactEnergyGrad call "
@@ -885,30 +828,23 @@ def report(rows, args, info, meshes, elapsed, load):
     # half model
     A("## Half model (y = 0 symmetry)")
     A("")
-    half = [r for r in rows if r["scene"] == "hertz-half" and r["strategy"] == REF_STRATEGY and r["gttol"] == REF_TOL
-            and r["converged"]]
+    half = default_runs(rows, "hertz-half")
     if half:
-        A("The program's report treats the half zone as a whole contact: its P is |f| of the half (including "
-          "the y component that the mirror half would cancel), its Hertz a and p_max follow from that P, its "
-          "profile is centred on the half-profile's pressure centroid, and its half-width is half the loaded "
-          "length. The bench recomputes the half model's figures from the HDF5 profile as those of the full "
-          "problem: P = 2 abs(f_x), s measured from the cut, a = the loaded length from the cut (same quadrature "
-          "weights and definitions otherwise). The program's own figures are in the table for comparison.")
+        A("hertz-half is the upper half of the reference scene, cut at y = 0 with u_y = 0 on the cut. Its pair's "
+          "`-contact_interface_mirror_y 0` makes the program report the full mirrored problem (P = 2 abs(f_x), "
+          "profiles mirrored about the cut), so its figures compare directly with the full model's at the same h "
+          "and k_p (newton, gttol 1e-8).")
         A("")
-        A("| h | k_p | dofs (half) | dofs (full) | 2 abs(f_x) (half) | P (full, same h) | difference | program's P (half) "
-          "| l2 err: program / recomputed / full | p_max err: program / recomputed / full | solve half / full [s] |")
-        A("|---|---|---|---|---|---|---|---|---|---|---|")
+        A("| h | k_p | dofs half / full | P half / full | P difference | profile L2 error half / full "
+          "| solve half / full [s] |")
+        A("|---|---|---|---|---|---|---|")
         for r in half:
-            f = [x for x in rows if x["scene"] == "hertz" and x["h"] == r["h"] and x["kp"] == r["kp"]
-                 and x["strategy"] == REF_STRATEGY and x["gttol"] == REF_TOL and x["ranks"] == 1 and x["converged"]]
+            f = default_runs(rows, "hertz", r["kp"], r["h"])
             f = f[0] if f else {}
-            prog_l2 = r.get("prog_l2_err")
-            A("| %g | %g | %d | %s | %.7g | %s | %s | %s | %s / %s / %s | %s / %s / %s | %s / %s |" % (
+            A("| %g | %g | %d / %s | %.7g / %s | %s | %s / %s | %s / %s |" % (
                 r["h"], r["kp"], r["dofs"], f.get("dofs", "-"), r["P"], fmt(f.get("P"), "%.7g"),
-                ("%.1e" % (r["P"] / f["P"] - 1)) if f else "-", fmt(r.get("P_program"), "%.7g"),
-                pct(prog_l2), pct(r["l2_err"]), pct(f.get("l2_err")),
-                pct(r.get("prog_pmax_err")), pct(r["pmax_err"]), pct(f.get("pmax_err")),
-                fmt(r.get("solve_median")), fmt(f.get("solve_median"))))
+                ("%+.1e" % (r["P"] / f["P"] - 1)) if finite(f.get("P")) else "-",
+                pct(r["l2_err"]), pct(f.get("l2_err")), fmt(r.get("solve_median")), fmt(f.get("solve_median"))))
     else:
         A("No converged half-model run.")
     A("")
@@ -916,8 +852,7 @@ def report(rows, args, info, meshes, elapsed, load):
     # graded
     A("## Graded meshes")
     A("")
-    gr = [r for r in rows if r["scene"] == "hertz-graded" and r["strategy"] == REF_STRATEGY and r["gttol"] == REF_TOL
-          and r["converged"]]
+    gr = default_runs(rows, "hertz-graded")
     if gr:
         A("`-mesh_size h` is the size on the contact patch (within 0.5 of the first contact point); the far field "
           "is 0.1 in the disc and 0.2 in the block (meshes/hertz-graded/hertz-graded.opts).")
@@ -926,10 +861,8 @@ def report(rows, args, info, meshes, elapsed, load):
           "| uniform at same h: dofs, l2 err | uniform with nearest dofs: h, dofs, l2 err |")
         A("|---|---|---|---|---|---|---|---|---|---|---|")
         for r in gr:
-            f = [x for x in rows if x["scene"] == "hertz" and x["h"] == r["h"] and x["kp"] == r["kp"]
-                 and x["strategy"] == REF_STRATEGY and x["gttol"] == REF_TOL and x["ranks"] == 1 and x["converged"]]
-            u = [x for x in rows if x["scene"] == "hertz" and x["kp"] == r["kp"] and x["strategy"] == REF_STRATEGY
-                 and x["gttol"] == REF_TOL and x["ranks"] == 1 and x["converged"]]
+            f = default_runs(rows, "hertz", r["kp"], r["h"])
+            u = default_runs(rows, "hertz", r["kp"])
             u = min(u, key=lambda x: abs(math.log(x["dofs"] / r["dofs"]))) if u else None
             A("| %g | %g | %d | %.3g | %.3g | %s | %s | %s | %s | %s | %s |" % (
                 r["h"], r["kp"], r["dofs"], r["solve_median"], r["wall_median"], pct(r["l2_err"]), pct(r["pmax_err"]),
