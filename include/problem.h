@@ -45,6 +45,7 @@ struct _n_Problem {
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
   PetscBool schur; /* Newton through the contact-surface Schur complement */
+  PetscBool exactHessian; /* contact Hessian with its second-order term: may be indefinite */
   PetscReal penaltyStart, stageRtol;
 };
 

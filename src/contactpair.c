@@ -22,10 +22,17 @@
    edges (eta* at an edge end), a set of measure zero.
    dE_AB = -k_p int <-g>_+ dg dS.
 
-   Hessian (documented approximation, Gauss-Newton): d2E_AB ~ k_p int H(-g) dg dg dS.
-   The neglected term -k_p int <-g>_+ d2g dS is of the order of the penetration
-   times the surface curvature; the approximation is symmetric positive
-   semi-definite, which Newton-type TAO solvers need.
+   Hessian. d2E_AB = k_p int H(-g) (dg dg + g d2g) dS. By default the
+   Gauss-Newton part alone (-contact_hessian gauss_newton): symmetric positive
+   semi-definite, which the Cholesky-based Newton steps need; the term dropped is
+   of the order of the penetration over the edge length. -contact_hessian exact
+   adds it. With t = x_m'(eta*), tau = t/|t|, kappa = n . x_m'', D = |t|^2 - g kappa,
+   varying the projection condition (x_s - x_m) . t = 0 gives
+     d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
+   (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
+     d2g = -(kappa a a + g b b + |t| (a b + b a)) / D,
+   symmetric; it is exact away from edge ends (eta* = +-1, where the
+   Gauss-Newton part alone is used).
 
    Search. Master edges are hashed into square cells by the bounding box of their
    Bezier control polygon, inflated by the cell size; the (cell, edge) keys are
@@ -76,6 +83,7 @@ typedef struct {
   PetscInt  nqp;          /* Gauss points per slave edge */
   PetscReal xi[8], wxi[8];
   PetscBool hertz, mirror; /* mirror: the scene is the half y >= mirrorY of a symmetric model */
+  PetscBool exactHessian; /* add the g d2g term to the Gauss-Newton Hessian */
   PetscReal radii[2], Estar, Rstar, mirrorY;
   PetscReal maxPen, P, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
   PetscReal force[2];
@@ -376,6 +384,22 @@ static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surfa
               }
             for (PetscInt i = 0; i < 12; ++i)
               for (PetscInt j = 0; j < 12; ++j) K[i * 12 + j] = kw * dg[i] * dg[j];
+            if (cp->exactHessian && PetscAbsReal(eta) < 1.0) {
+              const PetscReal tau[2] = {tm[0] / tn, tm[1] / tn};
+              PetscReal       xpp[2], kappa, D, a[12], b[12];
+              for (PetscInt d = 0; d < 2; ++d) xpp[d] = M->x[2 * mn[0] + d] + M->x[2 * mn[1] + d] - 2.0 * M->x[2 * mn[2] + d];
+              kappa = n[0] * xpp[0] + n[1] * xpp[1];
+              D     = tn * tn - gap * kappa;
+              for (PetscInt i = 0; i < 3; ++i)
+                for (PetscInt d = 0; d < 2; ++d) {
+                  a[2 * i + d]     = N[i] * tau[d];
+                  a[6 + 2 * i + d] = -M3[i] * tau[d];
+                  b[2 * i + d]     = 0.0;
+                  b[6 + 2 * i + d] = dM3[i] * n[d];
+                }
+              for (PetscInt i = 0; i < 12; ++i)
+                for (PetscInt j = 0; j < 12; ++j) K[i * 12 + j] -= kw * gap * (kappa * a[i] * a[j] + gap * b[i] * b[j] + tn * (a[i] * b[j] + b[i] * a[j])) / D;
+            }
             PetscCall(MatSetValues(H, 12, idx, 12, idx, K, ADD_VALUES));
           }
         }
@@ -493,6 +517,8 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscInt  np = CP_MAX_PAIRS, nq = 4;
   PetscReal kp = -1.0;
   PetscBool setkp, disable = PETSC_FALSE;
+  const char *const hessTypes[] = {"gauss_newton", "exact"};
+  PetscInt  exact = 0;
 
   PetscFunctionBeginUser;
   if (!CP_EnergyGrad) {
@@ -507,6 +533,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
+  PetscCall(PetscOptionsEList("-contact_hessian", "Contact Hessian: gauss_newton (SPD) or exact (adds the second derivative of the gap)", NULL, hessTypes, 2, hessTypes[exact], &exact, NULL));
   PetscOptionsEnd();
   PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   for (PetscInt i = 0; i < np; ++i) {
@@ -519,8 +546,10 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     PetscCall(PetscNew(&cp));
     PetscCall(PetscStrncpy(cp->name, names[i], sizeof(cp->name)));
     PetscCall(PetscFree(names[i]));
-    cp->kp  = kp;
-    cp->nqp = nq;
+    cp->kp           = kp;
+    cp->nqp          = nq;
+    cp->exactHessian = (PetscBool)(exact == 1);
+    p->exactHessian  = cp->exactHessian;
     PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, cp->xi, cp->wxi));
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", cp->name));
     PetscOptionsBegin(p->comm, prefix, "Contact pair options", NULL);

@@ -320,15 +320,16 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
   PetscFunctionReturn(0);
 }
 
-/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several. */
-static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm)
+/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
+   MUMPS's LDL^T for a matrix that may be indefinite. */
+static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
 {
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  PetscCall(PCFactorSetMatSolverType(pc, size > 1 || indefinite ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
   PetscFunctionReturn(0);
 }
 
@@ -349,7 +350,7 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetCholesky(pc, p->comm));
+  PetscCall(PCSetCholesky(pc, p->comm, PETSC_FALSE));
   PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
@@ -379,7 +380,7 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   if (p->schur && size == 1 && p->nterms > 0) PetscCall(ContactSchurPCSetUp(p, pc));
-  else PetscCall(PCSetCholesky(pc, p->comm));
+  else PetscCall(PCSetCholesky(pc, p->comm, p->exactHessian));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
