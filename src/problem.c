@@ -167,10 +167,57 @@ static PetscErrorCode ProblemPreallocateSurfaceBlock(Problem p, Mat pre)
   PetscFunctionReturn(0);
 }
 
+/* On one rank the stiffness's pattern needs no preallocator pass: every cell
+   gives its rows 2 nb columns (an upper bound, the excess squeezed out at
+   assembly) and the surface rows get the surface block. The Hessian copies the
+   stiffness's pattern. */
+static PetscErrorCode ProblemAssembleStiffnessSerial(Problem p, PetscInt nloc)
+{
+  PetscInt *nnz;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(nloc + 1, &nnz));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body b = p->bodies[i];
+    for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
+      for (PetscInt d = 0; d < 2; ++d) {
+        const PetscInt row = b->l2b[b->cdof[k] + d];
+        if (row >= 0) nnz[row] += 2 * b->nb;
+      }
+  }
+  if (p->nterms) {
+    IS              is;
+    const PetscInt *idx;
+    PetscInt        n;
+    PetscCall(ContactPairsGetSurfaceDofs(p, &is));
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &idx));
+    for (PetscInt i = 0; i < n; ++i) nnz[idx[i]] += n;
+    PetscCall(ISRestoreIndices(is, &idx));
+    PetscCall(ISDestroy(&is));
+  }
+  for (PetscInt r = 0; r < nloc; ++r) nnz[r] = PetscMin(nnz[r], nloc);
+  PetscCall(MatCreate(p->comm, &p->K));
+  PetscCall(MatSetSizes(p->K, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetType(p->K, MATSEQAIJ));
+  PetscCall(MatSeqAIJSetPreallocation(p->K, 0, nnz));
+  PetscCall(PetscFree(nnz));
+  if (p->nterms) PetscCall(ProblemPreallocateSurfaceBlock(p, p->K)); /* explicit zeros: kept in the pattern */
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
+  PetscCall(MatAssemblyBegin(p->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(p->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(p->K, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatDuplicate(p->K, MAT_DO_NOT_COPY_VALUES, &p->H));
+  PetscCall(MatSetOptionsPrefix(p->H, "hessian_"));
+  PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
-  PetscInt nloc = 0;
-  Mat      pre;
+  PetscInt    nloc = 0;
+  Mat         pre;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
@@ -186,6 +233,12 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(ProblemBuildIndexMaps(p));
   PetscCall(ContactPairsSetUp(p));
   PetscCall(ProblemScatterToBodies(p, p->X));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  if (size == 1) {
+    PetscCall(ProblemAssembleStiffnessSerial(p, nloc));
+    PetscCall(PetscLogStagePop());
+    PetscFunctionReturn(0);
+  }
   PetscCall(MatCreate(p->comm, &pre));
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
   PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
