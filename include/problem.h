@@ -34,6 +34,7 @@ struct _n_Problem {
   PetscInt  offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
   Vec       X, G;
   Mat       H, K; /* Hessian, elastic stiffness of the bodies */
+  IS        surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
   H0Type    h0;
   Tao       tao;
   PetscInt  nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */

@@ -84,8 +84,6 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ProblemScatterToBodies(Problem, Vec);
-
 /* For each body, local dof -> index in X (-1 for constrained dofs): the global
    indices are scattered to the local vector, which leaves constrained dofs alone. */
 static PetscErrorCode ProblemBuildIndexMaps(Problem p)
@@ -141,83 +139,84 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
 
 /* The contact Hessian couples surface dofs that come within reach of each other,
    which changes as the bodies move: the whole block of the contact-surface dofs
-   is reserved once, so that no Hessian evaluation allocates and the Hessian and
-   the elastic stiffness share one nonzero pattern (copied by memcpy). */
-static PetscErrorCode ProblemPreallocateSurfaceBlock(Problem p, Mat pre)
+   (p->surfaceDofs) is reserved once, with explicit zeros, so that no Hessian
+   evaluation allocates and the Hessian and the elastic stiffness share one
+   nonzero pattern (copied by memcpy). Rows are inserted by their owner. */
+static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
 {
-  IS              is;
   const PetscInt *idx;
-  PetscInt        n, rstart, rend, nrow = 0, *rows;
+  PetscInt        n, rstart, rend;
   PetscScalar    *zeros;
 
   PetscFunctionBeginUser;
-  PetscCall(ContactPairsGetSurfaceDofs(p, &is));
-  PetscCall(ISGetLocalSize(is, &n));
-  PetscCall(ISGetIndices(is, &idx));
-  PetscCall(MatGetOwnershipRange(pre, &rstart, &rend));
-  PetscCall(PetscMalloc1(n + 1, &rows));
-  for (PetscInt i = 0; i < n; ++i)
-    if (idx[i] >= rstart && idx[i] < rend) rows[nrow++] = idx[i];
+  PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
+  PetscCall(ISGetIndices(p->surfaceDofs, &idx));
+  PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
   PetscCall(PetscCalloc1(n + 1, &zeros));
-  for (PetscInt i = 0; i < nrow; ++i) PetscCall(MatSetValues(pre, 1, &rows[i], n, idx, zeros, ADD_VALUES));
+  for (PetscInt i = 0; i < n; ++i)
+    if (idx[i] >= rstart && idx[i] < rend) PetscCall(MatSetValues(A, 1, &idx[i], n, idx, zeros, ADD_VALUES));
   PetscCall(PetscFree(zeros));
-  PetscCall(PetscFree(rows));
-  PetscCall(ISRestoreIndices(is, &idx));
-  PetscCall(ISDestroy(&is));
+  PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
   PetscFunctionReturn(0);
 }
 
-/* On one rank the stiffness's pattern needs no preallocator pass: every cell
-   gives its rows 2 nb columns (an upper bound, the excess squeezed out at
-   assembly) and the surface rows get the surface block. The Hessian copies the
-   stiffness's pattern. */
-static PetscErrorCode ProblemAssembleStiffnessSerial(Problem p, PetscInt nloc)
+/* Preallocates the elastic stiffness K (elastic pattern plus the surface block).
+   On one rank no preallocator pass is needed: every cell gives its rows 2 nb
+   columns (an upper bound, the excess squeezed out at assembly). On several,
+   MATPREALLOCATOR collects the pattern, rows of other ranks included. */
+static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
 {
-  PetscInt *nnz;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(nloc + 1, &nnz));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body b = p->bodies[i];
-    for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-      for (PetscInt d = 0; d < 2; ++d) {
-        const PetscInt row = b->l2b[b->cdof[k] + d];
-        if (row >= 0) nnz[row] += 2 * b->nb;
-      }
-  }
-  if (p->nterms) {
-    IS              is;
-    const PetscInt *idx;
-    PetscInt        n;
-    PetscCall(ContactPairsGetSurfaceDofs(p, &is));
-    PetscCall(ISGetLocalSize(is, &n));
-    PetscCall(ISGetIndices(is, &idx));
-    for (PetscInt i = 0; i < n; ++i) nnz[idx[i]] += n;
-    PetscCall(ISRestoreIndices(is, &idx));
-    PetscCall(ISDestroy(&is));
-  }
-  for (PetscInt r = 0; r < nloc; ++r) nnz[r] = PetscMin(nnz[r], nloc);
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(MatCreate(p->comm, &p->K));
   PetscCall(MatSetSizes(p->K, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetType(p->K, MATSEQAIJ));
-  PetscCall(MatSeqAIJSetPreallocation(p->K, 0, nnz));
-  PetscCall(PetscFree(nnz));
-  if (p->nterms) PetscCall(ProblemPreallocateSurfaceBlock(p, p->K)); /* explicit zeros: kept in the pattern */
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
-  PetscCall(MatAssemblyBegin(p->K, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(p->K, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatSetOption(p->K, MAT_SPD, PETSC_TRUE));
-  PetscCall(MatDuplicate(p->K, MAT_DO_NOT_COPY_VALUES, &p->H));
-  PetscCall(MatSetOptionsPrefix(p->H, "hessian_"));
-  PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  if (size == 1) {
+    PetscInt *nnz, n = 0;
+
+    PetscCall(PetscCalloc1(nloc + 1, &nnz));
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      Body b = p->bodies[i];
+      for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
+        for (PetscInt d = 0; d < 2; ++d) {
+          const PetscInt row = b->l2b[b->cdof[k] + d];
+          if (row >= 0) nnz[row] += 2 * b->nb;
+        }
+    }
+    if (p->surfaceDofs) {
+      const PetscInt *idx;
+      PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
+      PetscCall(ISGetIndices(p->surfaceDofs, &idx));
+      for (PetscInt i = 0; i < n; ++i) nnz[idx[i]] += n;
+      PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
+    }
+    for (PetscInt r = 0; r < nloc; ++r) nnz[r] = PetscMin(nnz[r], nloc);
+    PetscCall(MatSetType(p->K, MATSEQAIJ));
+    PetscCall(MatSeqAIJSetPreallocation(p->K, 0, nnz));
+    PetscCall(PetscFree(nnz));
+    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
+  } else {
+    Mat pre;
+
+    PetscCall(MatCreate(p->comm, &pre));
+    PetscCall(MatSetType(pre, MATPREALLOCATOR));
+    PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+    PetscCall(MatSetUp(pre));
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
+    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, pre));
+    PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatSetType(p->K, MATAIJ));
+    PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->K)); /* zeros over the whole pattern */
+    PetscCall(MatDestroy(&pre));
+  }
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ProblemSetUp(Problem p)
 {
-  PetscInt    nloc = 0;
-  Mat         pre;
-  PetscMPIInt size;
+  PetscInt nloc = 0;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
@@ -232,37 +231,17 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(VecDuplicate(p->X, &p->G));
   PetscCall(ProblemBuildIndexMaps(p));
   PetscCall(ContactPairsSetUp(p));
-  PetscCall(ProblemScatterToBodies(p, p->X));
-  PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  if (size == 1) {
-    PetscCall(ProblemAssembleStiffnessSerial(p, nloc));
-    PetscCall(PetscLogStagePop());
-    PetscFunctionReturn(0);
-  }
-  PetscCall(MatCreate(p->comm, &pre));
-  PetscCall(MatSetType(pre, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetUp(pre));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, pre));
-  if (p->nterms) PetscCall(ProblemPreallocateSurfaceBlock(p, pre));
-  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatCreate(p->comm, &p->H));
-  PetscCall(MatSetSizes(p->H, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetOptionsPrefix(p->H, "hessian_"));
-  PetscCall(MatSetType(p->H, MATAIJ));
-  PetscCall(MatSetFromOptions(p->H));
-  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->H));
-  PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscCall(MatDestroy(&pre));
-  /* the elastic stiffness does not depend on u: assembled once */
-  PetscCall(MatDuplicate(p->H, MAT_DO_NOT_COPY_VALUES, &p->K));
-  PetscCall(MatZeroEntries(p->K));
+  if (p->nterms) PetscCall(ContactPairsGetSurfaceDofs(p, &p->surfaceDofs));
+  /* the elastic stiffness does not depend on u: assembled once; the Hessian
+     copies it and adds the contact terms into the reserved surface block */
+  PetscCall(ProblemPreallocateStiffness(p, nloc));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
   PetscCall(MatAssemblyBegin(p->K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(p->K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatSetOption(p->K, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatDuplicate(p->K, MAT_DO_NOT_COPY_VALUES, &p->H));
+  PetscCall(MatSetOptionsPrefix(p->H, "hessian_"));
+  PetscCall(MatSetOption(p->H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -334,9 +313,9 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
   PetscCall(MPIU_Allreduce(sum, all, 1 + nparts, MPIU_REAL, MPIU_SUM, p->comm));
   for (PetscInt k = 0; k < nparts; ++k) {
     PetscInt its = 0;
+    if (all[1 + k] == 0.0) continue;
     if (p->tao) PetscCall(TaoGetIterationNumber(p->tao, &its));
-    PetscCheck(all[1 + k] == 0.0, p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair",
-               k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
+    SETERRQ(p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair", k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
   }
   PetscCall(VecZeroEntries(G));
   PetscCall(VecGetArray(G, &g));
@@ -630,6 +609,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
   PetscCall(MatDestroy(&p->H));
+  PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(MatDestroy(&p->K));
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->G));

@@ -17,7 +17,6 @@
    triangular solves.
    The PC is exact for the assembled H (so preonly is a true Newton step). */
 #include "schur.h"
-#include "contactpair.h"
 
 typedef struct {
   IS  isc;    /* contact-surface dofs */
@@ -91,7 +90,8 @@ PetscErrorCode ContactSchurPCSetUp(Problem p, PC pc)
   }
   PetscCall(PetscNew(&ctx));
   ctx->spd = (PetscBool)!p->exactHessian;
-  PetscCall(ContactPairsGetSurfaceDofs(p, &ctx->isc));
+  PetscCall(PetscObjectReference((PetscObject)p->surfaceDofs));
+  ctx->isc = p->surfaceDofs;
   {
     PetscInt nc;
     PetscCall(ISGetSize(ctx->isc, &nc));
