@@ -432,7 +432,7 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
 {
   BodyFields F[CONTACT_MAX_BODIES];
   PetscBool  h5, js;
-  char       tmp[PETSC_MAX_PATH_LEN + 8], xdmf[PETSC_MAX_PATH_LEN + 8], xtmp[PETSC_MAX_PATH_LEN + 16];
+  char       htmp[PETSC_MAX_PATH_LEN + 8], jtmp[PETSC_MAX_PATH_LEN + 8], xdmf[PETSC_MAX_PATH_LEN + 8], xtmp[PETSC_MAX_PATH_LEN + 16];
   PetscLogDouble t0, t1;
 
   PetscFunctionBeginUser;
@@ -448,36 +448,31 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
   if (h5) {
     size_t l;
     PetscCall(EnsureParentDir(p->comm, p->output));
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->output));
+    PetscCall(PetscSNPrintf(htmp, sizeof(htmp), "%s.tmp", p->output));
     PetscCall(PetscStrncpy(xdmf, p->output, sizeof(xdmf)));
     PetscCall(PetscStrlen(xdmf, &l));
     if (l > 3 && !strcmp(xdmf + l - 3, ".h5")) xdmf[l - 3] = 0;
     PetscCall(PetscStrlcat(xdmf, ".xdmf", sizeof(xdmf)));
     PetscCall(PetscSNPrintf(xtmp, sizeof(xtmp), "%s.tmp", xdmf));
-    PetscCall(PendingAdd(tmp));
+    PetscCall(PendingAdd(htmp));
     PetscCall(PendingAdd(xtmp));
-    PetscCall(WriteHDF5(p, F, tmp));
+    PetscCall(WriteHDF5(p, F, htmp));
     PetscCall(WriteXDMF(p, F, xtmp, p->output));
   }
   PetscCall(PetscTime(&t1));
   p->time[3] = t1 - t0;
-  PetscCall(PetscTime(&t1));
   p->time[4] = t1 - p->t0;
   if (js) {
     PetscCall(EnsureParentDir(p->comm, p->summary));
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
-    PetscCall(PendingAdd(tmp));
-    PetscCall(WriteJSON(p, F, converged, tmp));
+    PetscCall(PetscSNPrintf(jtmp, sizeof(jtmp), "%s.tmp", p->summary));
+    PetscCall(PendingAdd(jtmp));
+    PetscCall(WriteJSON(p, F, converged, jtmp));
   }
   if (h5) {
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->output));
-    PetscCall(RenameOnRoot(p->comm, tmp, p->output));
+    PetscCall(RenameOnRoot(p->comm, htmp, p->output));
     PetscCall(RenameOnRoot(p->comm, xtmp, xdmf));
   }
-  if (js) {
-    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", p->summary));
-    PetscCall(RenameOnRoot(p->comm, tmp, p->summary));
-  }
+  if (js) PetscCall(RenameOnRoot(p->comm, jtmp, p->summary));
   npending = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyFieldsDestroy(&F[i]));
   PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
