@@ -13,7 +13,12 @@ struct _n_EnergyTerm {
   PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
   PetscErrorCode (*destroy)(EnergyTerm);
   PetscErrorCode (*setpenaltyfactor)(EnergyTerm, PetscReal); /* continuation: k_p times the factor */
+  PetscErrorCode (*sethessianexact)(EnergyTerm, PetscBool);   /* add the second-order term to the Hessian */
 };
+
+/* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
+typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
+extern const char *const HessianTypes[];
 
 typedef enum { H0_NONE, H0_ELASTIC } H0Type;
 extern const char *const H0Types[];
@@ -46,7 +51,10 @@ struct _n_Problem {
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
   PetscBool schur; /* Newton through the contact-surface Schur complement */
-  PetscBool exactHessian; /* contact Hessian with its second-order term: may be indefinite */
+  HessianType hessianType;  /* -contact_hessian */
+  PetscReal hessianSwitch;   /* auto: exact once ||g|| < hessianSwitch ||g0|| */
+  PetscReal hessianG0;       /* ||g|| at the current TAO solve's first iterate */
+  PetscBool exactHessian;    /* the second-order term is in the current Hessian (may be indefinite) */
   PetscReal penaltyStart, stageRtol;
 };
 

@@ -489,6 +489,15 @@ static PetscErrorCode PairSetPenaltyFactor(EnergyTerm t, PetscReal f)
 /* The unconstrained dofs of every contact surface (indices in the joined
    vector, sorted, each once): the only rows and columns the contact Hessian
    touches. Surfaces are replicated, so every rank gets the whole set. */
+static PetscErrorCode PairSetHessianExact(EnergyTerm t, PetscBool exact)
+{
+  ContactPair *cp = (ContactPair *)t->ctx;
+
+  PetscFunctionBeginUser;
+  cp->exactHessian = exact;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactPairsGetSurfaceDofs(Problem p, IS *is)
 {
   PetscInt  n = 0, *idx;
@@ -517,8 +526,6 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscInt  np = CP_MAX_PAIRS, nq = 4;
   PetscReal kp = -1.0;
   PetscBool setkp, disable = PETSC_FALSE;
-  const char *const hessTypes[] = {"gauss_newton", "exact"};
-  PetscInt  exact = 0;
 
   PetscFunctionBeginUser;
   if (!CP_EnergyGrad) {
@@ -533,8 +540,11 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
-  PetscCall(PetscOptionsEList("-contact_hessian", "Contact Hessian: gauss_newton (SPD) or exact (adds the second derivative of the gap)", NULL, hessTypes, 2, hessTypes[exact], &exact, NULL));
+  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
+  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
   PetscOptionsEnd();
+  PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
+  p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT);
   PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   for (PetscInt i = 0; i < np; ++i) {
     ContactPair *cp;
@@ -548,8 +558,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     PetscCall(PetscFree(names[i]));
     cp->kp           = kp;
     cp->nqp          = nq;
-    cp->exactHessian = (PetscBool)(exact == 1);
-    p->exactHessian  = cp->exactHessian;
+    cp->exactHessian = p->exactHessian;
     PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, cp->xi, cp->wxi));
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", cp->name));
     PetscOptionsBegin(p->comm, prefix, "Contact pair options", NULL);
@@ -591,6 +600,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
     t->hessian    = PairHessian;
     t->destroy    = PairDestroy;
     t->setpenaltyfactor = PairSetPenaltyFactor;
+    t->sethessianexact  = PairSetHessianExact;
     PetscCheck(p->nterms < CONTACT_MAX_BODIES, p->comm, PETSC_ERR_USER_INPUT, "too many contact pairs");
     p->terms[p->nterms++] = t;
   }

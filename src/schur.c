@@ -23,7 +23,7 @@ typedef struct {
   Mat F;      /* MUMPS Cholesky of K with Schur block on isc */
   Mat T0;     /* S_K - K_cc, dense */
   Mat Hcc;    /* c block of the current Hessian */
-  PetscBool spd; /* Gauss-Newton: the block is SPD (LAPACK potrf; else sytrf) */
+  const PetscBool *exact; /* the Hessian has its second-order term: may be indefinite (sytrf; else potrf) */
 } SchurCtx;
 
 static PetscLogEvent SchurFactorK = 0, SchurStep;
@@ -44,7 +44,7 @@ static PetscErrorCode SchurPCSetUp(PC pc)
   PetscCall(MatSetUnfactored(Sf)); /* factored in place by the previous step */
   PetscCall(MatCopy(ctx->T0, Sf, SAME_NONZERO_PATTERN));
   PetscCall(MatAXPY(Sf, 1.0, ctx->Hcc, DIFFERENT_NONZERO_PATTERN));
-  PetscCall(MatSetOption(Sf, MAT_SPD, ctx->spd)); /* Gauss-Newton: LAPACK potrf, not sytrf */
+  PetscCall(MatSetOption(Sf, MAT_SPD, (PetscBool)!*ctx->exact)); /* Gauss-Newton: LAPACK potrf, not sytrf */
   PetscCall(MatFactorRestoreSchurComplement(ctx->F, &Sf, MAT_FACTOR_SCHUR_UNFACTORED));
   PetscCall(PetscLogEventEnd(SchurStep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -89,7 +89,7 @@ PetscErrorCode ContactSchurPCSetUp(Problem p, PC pc)
     PetscCall(PetscLogEventRegister("SchurStep", id, &SchurStep));
   }
   PetscCall(PetscNew(&ctx));
-  ctx->spd = (PetscBool)!p->exactHessian;
+  ctx->exact = &p->exactHessian;
   PetscCall(PetscObjectReference((PetscObject)p->surfaceDofs));
   ctx->isc = p->surfaceDofs;
   {
