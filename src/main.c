@@ -30,6 +30,7 @@ PetscErrorCode ContactInitializeLogging(void)
 static PetscBool IsInputError(PetscErrorCode n)
 {
   switch (n) {
+  case PETSC_ERR_USER: /* PETSc's options code: an unknown value of an enumerated option */
   case PETSC_ERR_USER_INPUT:
   case PETSC_ERR_FILE_OPEN:
   case PETSC_ERR_FILE_READ:

@@ -245,6 +245,41 @@ def test_fine_mesh(tmp_path):
     assert abs(s["contact_force"] / 54.84 - 1) < 2e-3 and s["pressure_l2_error"] < 0.12
 
 
+@pytest.mark.stress
+def test_million_dofs(tmp_path):
+    """h = 0.0068 (about 984,000 dofs): Newton converges in a few tens of
+    iterations (it stalled here before the master corners were blended) and
+    agrees with h = 0.03."""
+    s = solve(tmp_path, HERTZ + ["-mesh_size", "0.0068", "-output", "none"], "million").summary
+    assert s["dofs"] > 950000 and s["iterations"] <= 30, (s["dofs"], s["iterations"])
+    assert abs(s["contact_force"] / 54.84 - 1) < 2e-3 and s["pressure_l2_error"] < 0.12
+
+
+# -- solver ------------------------------------------------------------------
+
+def test_auto_hessian(tmp_path):
+    """-contact_hessian auto (the default) adds the second-order contact term
+    once the gradient is small: the Gauss-Newton tail converges linearly (25
+    iterations at h = 0.03), auto quadratically (15), to the same answer."""
+    args = HERTZ + ["-mesh_size", "0.03", "-output", "none"]
+    gn = solve(tmp_path, args + ["-contact_hessian", "gauss_newton"], "gn").summary
+    auto = solve(tmp_path, args, "auto").summary
+    assert auto["iterations"] + 5 <= gn["iterations"], (auto["iterations"], gn["iterations"])
+    # both stop at gttol 1e-8, where P is resolved to a few 1e-6
+    assert abs(auto["contact_force"] / gn["contact_force"] - 1) < 1e-5
+
+
+def test_blend_changes_little(tmp_path):
+    """Blending the master corners (-contact_blend 0.05, the default) moves
+    the answer by little beside the discretisation error: force within 1e-5,
+    profile error within 0.1 point of the plain quadratic surface."""
+    args = HERTZ + ["-output", "none"]
+    plain = solve(tmp_path, args + ["-contact_blend", "0"], "plain").summary
+    blend = solve(tmp_path, args, "blend").summary
+    assert abs(blend["contact_force"] / plain["contact_force"] - 1) < 1e-5
+    assert abs(blend["pressure_l2_error"] - plain["pressure_l2_error"]) < 1e-3
+
+
 def test_ranks_1_to_4(tmp_path):
     """The same answers on 1 to 4 ranks (3 and 4 oversubscribed)."""
     res = [solve(tmp_path, HERTZ, f"np{n}", ranks=n).summary for n in (1, 2, 3, 4)]
