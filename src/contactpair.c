@@ -38,11 +38,12 @@
    (a real corner of the surface, over 30 degrees, or -contact_blend 0).
    dE_AB = -k_p int <-g>_+ dg dS.
 
-   Hessian. d2E_AB = k_p int H(-g) (dg dg + g d2g) dS. By default the
-   Gauss-Newton part alone (-contact_hessian gauss_newton): symmetric positive
-   semi-definite, which the Cholesky-based Newton steps need; the term dropped is
-   of the order of the penetration over the edge length. -contact_hessian exact
-   adds it. With t = x_m'(eta*), tau = t/|t|, kappa = n . x_m'', D = |t|^2 - g kappa,
+   Hessian. d2E_AB = k_p int H(-g) (dg dg + g d2g) dS. The Gauss-Newton part
+   alone (-contact_hessian gauss_newton) is symmetric positive semi-definite;
+   the term it drops is of the order of the penetration over the edge length,
+   but it holds the tangential modes, so that Newton with it converges only
+   linearly. -contact_hessian exact adds it; auto (the default, problem.c)
+   adds it once the gradient is small. With t = x_m'(eta*), tau = t/|t|, kappa = n . x_m'', D = |t|^2 - g kappa,
    varying the projection condition (x_s - x_m) . t = 0 gives
      d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
    (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
@@ -562,9 +563,6 @@ static PetscErrorCode PairSetPenaltyFactor(EnergyTerm t, PetscReal f)
   PetscFunctionReturn(0);
 }
 
-/* The unconstrained dofs of every contact surface (indices in the joined
-   vector, sorted, each once): the only rows and columns the contact Hessian
-   touches. Surfaces are replicated, so every rank gets the whole set. */
 static PetscErrorCode PairSetHessianExact(EnergyTerm t, PetscBool exact)
 {
   ContactPair *cp = (ContactPair *)t->ctx;
@@ -574,6 +572,9 @@ static PetscErrorCode PairSetHessianExact(EnergyTerm t, PetscBool exact)
   PetscFunctionReturn(0);
 }
 
+/* The unconstrained dofs of every contact surface (indices in the joined
+   vector, sorted, each once): the only rows and columns the contact Hessian
+   touches. Surfaces are replicated, so every rank gets the whole set. */
 PetscErrorCode ContactPairsGetSurfaceDofs(Problem p, IS *is)
 {
   PetscInt  n = 0, *idx;

@@ -449,8 +449,19 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
 
 /* Unused options are an error: a misspelled option would otherwise be silently
    ignored. Before the solve, every option must have been read, except those that
-   PETSc reads lazily during the solve (viewers, monitors, factorisation packages
-   -mat_*); after it (final), all of them. */
+   PETSc reads lazily during the solve (viewers, monitors, converged reasons,
+   factorisation packages -mat_*, the inner solvers of multilevel and block
+   preconditioners, set up with the first step); after it (final), all of them. */
+static PetscBool OptionReadLazily(const char name[])
+{
+  const char *const inner[] = {"mg_levels_", "mg_coarse_", "sub_", "fieldsplit_", "redundant_"};
+
+  if (strstr(name, "view") || strstr(name, "monitor") || strstr(name, "converged_reason") || !strncmp(name, "mat_", 4)) return PETSC_TRUE;
+  for (size_t i = 0; i < sizeof(inner) / sizeof(inner[0]); ++i)
+    if (strstr(name, inner[i])) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
 {
   PetscInt  n;
@@ -460,8 +471,7 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
   for (PetscInt i = 0; i < n && !bad[0]; ++i) {
-    PetscBool lazy = (PetscBool)(strstr(names[i], "view") || strstr(names[i], "monitor") || !strncmp(names[i], "mat_", 4));
-    if (final || !lazy) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+    if (final || !OptionReadLazily(names[i])) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!bad[0], p->comm, PETSC_ERR_ARG_WRONG, "unknown or unused option %s (misspelled? see -help)", bad);
