@@ -164,3 +164,14 @@ def test_unconverged_writes_nothing(tmp_path):
     assert re.search(r"did not converge \(DIVERGED_MAXITS\)", proc.stderr)
     for f in ("out.h5", "out.json"):
         assert (tmp_path / f).read_text() == SENTINEL
+
+
+@pytest.mark.parametrize("opts", [["-tao_nls_ksp_converged_reason"],
+                                  ["-newton_schur", "0", "-tao_nls_ksp_type", "cg", "-tao_nls_pc_type", "gamg",
+                                   "-tao_nls_mg_levels_ksp_type", "richardson", "-tao_nls_mg_levels_pc_type", "sor"]])
+def test_lazily_read_options_accepted(opts, tmp_path):
+    """Options that PETSc reads only during the solve (converged reasons, the
+    levels of a multigrid preconditioner) are not mistaken for misspellings."""
+    proc = subprocess.run([str(BIN)] + SCENE + opts + ["-output", "none", "-summary", str(tmp_path / "s.json")],
+                          cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
