@@ -168,13 +168,12 @@ static inline void MasterShape(const Surface *M, PetscInt e, PetscReal eta, Pets
   }
 }
 
-/* Point, tangent and second derivative of master edge e at eta. */
-static inline void MasterEval(const Surface *M, PetscInt e, PetscReal eta, PetscReal p[2], PetscReal t[2], PetscReal tpp[2])
+/* Point, tangent and second derivative of master edge e from its shape
+   functions at some eta. */
+static inline void MasterCombine(const Surface *M, PetscInt e, const PetscReal N[7], const PetscReal dN[7], const PetscReal d2N[7], PetscReal p[2], PetscReal t[2], PetscReal tpp[2])
 {
   const PetscInt *mn = &M->mnodes[7 * e];
-  PetscReal       N[7], dN[7], d2N[7];
 
-  MasterShape(M, e, eta, N, dN, d2N);
   p[0] = p[1] = t[0] = t[1] = tpp[0] = tpp[1] = 0.0;
   for (PetscInt j = 0; j < 7; ++j)
     for (PetscInt d = 0; d < 2; ++d) {
@@ -182,6 +181,15 @@ static inline void MasterEval(const Surface *M, PetscInt e, PetscReal eta, Petsc
       t[d] += dN[j] * M->x[2 * mn[j] + d];
       tpp[d] += d2N[j] * M->x[2 * mn[j] + d];
     }
+}
+
+/* Point, tangent and second derivative of master edge e at eta. */
+static inline void MasterEval(const Surface *M, PetscInt e, PetscReal eta, PetscReal p[2], PetscReal t[2], PetscReal tpp[2])
+{
+  PetscReal N[7], dN[7], d2N[7];
+
+  MasterShape(M, e, eta, N, dN, d2N);
+  MasterCombine(M, e, N, dN, d2N, p, t, tpp);
 }
 
 /* Closest point on master edge e: Newton on f(eta) = |x(eta) - p|^2 / 2 from
@@ -402,7 +410,7 @@ static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surfa
     const PetscInt  se = S->ownEdges[k];
     const PetscInt *sn = &S->enodes[3 * se];
     for (PetscInt q = 0; q < cp->nqp; ++q) {
-      PetscReal N[3], dN[3], xs[2], ts[2], w, eta = 0.0, xm[2], tm[2], xpp[2], n[2], tn, gap, pen;
+      PetscReal N[3], dN[3], xs[2], ts[2], w, eta = 0.0, xm[2], tm[2], xpp[2], M7[7], dM7[7], d2M7[7], n[2], tn, gap, pen;
       PetscInt  me;
       PetscReal *rec = &S->qdata[8 * S->nq++]; /* s, X, Y and weight set in SurfaceSetUpSlavePoints */
 
@@ -419,7 +427,8 @@ static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surfa
         const PetscInt *mn = &M->mnodes[7 * me];
         /* beyond an end of the master surface: no contact */
         if ((eta <= -1.0 && M->endNode[mn[0]]) || (eta >= 1.0 && M->endNode[mn[1]])) continue;
-        MasterEval(M, me, eta, xm, tm, xpp);
+        MasterShape(M, me, eta, M7, dM7, d2M7); /* once: the point, normal and derivatives below */
+        MasterCombine(M, me, M7, dM7, d2M7, xm, tm, xpp);
         tn   = PetscSqrtReal(tm[0] * tm[0] + tm[1] * tm[1]);
         n[0] = M->esign[me] * tm[1] / tn;
         n[1] = -M->esign[me] * tm[0] / tn;
@@ -431,8 +440,7 @@ static PetscErrorCode PairSlaveEnergyGradient(ContactPair *cp, Surface *S, Surfa
         e += c * 0.5 * cp->kp * w * pen * pen;
         cp->maxPen = PetscMax(cp->maxPen, pen);
         {
-          PetscReal M7[7], dM7[7], d2M7[7], f = c * cp->kp * w * pen;
-          MasterShape(M, me, eta, M7, dM7, d2M7);
+          const PetscReal f = c * cp->kp * w * pen;
           if (!H) {
             for (PetscInt i = 0; i < 3; ++i)
               for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * N[i] * n[d];
