@@ -626,11 +626,7 @@ PetscErrorCode ContactPairsCreateFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners)", NULL, blend, &blend, NULL));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
-  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
-  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
-  p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT);
   PetscCheck(blend >= 0 && blend <= 0.5, p->comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
   PetscCheck(nq >= 1 && nq <= 8, p->comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   for (PetscInt i = 0; i < np; ++i) {

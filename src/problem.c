@@ -65,7 +65,11 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->stageRtol, &p->stageRtol, NULL));
+  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
+  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
   PetscOptionsEnd();
+  PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
+  p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
   PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
   PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
