@@ -8,7 +8,7 @@ PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
 PETSC_LIBS   = $(shell pkg-config --libs petsc)
 CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
 LDLIBS  = $(PETSC_LIBS) -lmetis -lm
-SRCS    = $(wildcard src/*.c)
+SRCS    = $(wildcard src/*.c src/*/*.c)
 OBJS    = $(patsubst src/%.c,build/obj/%.o,$(SRCS))
 DEPS_STAMP = build/.deps-installed
 PYTHON ?= python3
@@ -29,7 +29,7 @@ $(DEPS_STAMP): scripts/install-deps.sh
 deps: $(DEPS_STAMP)
 
 build/obj/%.o: src/%.c $(wildcard include/*.h) $(DEPS_STAMP)
-	@mkdir -p build/obj
+	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
 
 bin/contact: $(OBJS)

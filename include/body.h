@@ -48,7 +48,6 @@ struct _n_Body {
   Vec       Xg, Gg, Xl, Gl, bcl, bclFull; /* bcl: Dirichlet values of the load step, bclFull: the scene's */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
-  PetscReal energy;
   PetscInt  pStart, pEnd;   /* chart */
   PetscReal *xpoint;        /* [chart][2] reference coordinates of node points */
   PetscBool *owned;         /* [chart] point owned by this rank */
@@ -71,4 +70,13 @@ PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
 PetscErrorCode BodyComputeErrorL2(Body, Vec Xl, PetscReal *err, PetscReal *norm);
-PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, Vec *coords, Vec *disp, Vec *stress, Vec *vonmises, IS *topology);
+/* Nodal fields for output (fields.c), from the body's local vector Xl. */
+typedef struct {
+  Vec       coords, disp, stress, vm;
+  IS        topo;
+  PetscInt  nnodes, ncells;
+  PetscReal umax, unorm2;
+  PetscReal l2err, l2norm; /* against the body's exact solution, if any */
+} BodyNodalFields;
+PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
+PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);

@@ -11,7 +11,7 @@
 
 /* Log stages and events, registered once in ContactInitializeLogging(). */
 typedef struct {
-  PetscLogStage mesh, setup, solve, output;
+  PetscLogStage mesh, setup, solve, postprocess, output;
   PetscLogEvent elasEnergyGrad, elasHessian, meshGenerate, partition, writeOutput;
 } ContactLog;
 extern ContactLog contactLog;

@@ -1,13 +1,34 @@
 #pragma once
-#include "problem.h"
+#include "energyterm.h"
 
-/* A contact pair: one surface (a Gmsh physical curve) on each of two bodies,
-   each acting as slave against the other; the penalty energies of the two
-   one-sided integrals are averaged (contactpair.c). */
-PetscErrorCode ContactPairsCreateFromOptions(Problem);
-PetscErrorCode ContactPairsSetUp(Problem);
-PetscErrorCode ContactPairsGetSurfaceDofs(Problem, IS *);
-/* Collective: gathers the pressure profiles and Hertz comparison after a solve. */
-PetscErrorCode ContactPairsReport(Problem);
-PetscErrorCode ContactPairsWriteJSON(Problem, FILE *);
-PetscErrorCode ContactPairsWriteHDF5(Problem, PetscViewer);
+/* A contact pair as the scene declares it, whatever the formulation: one
+   surface (a Gmsh physical curve) on each of two bodies, the penalty, and the
+   Hertz comparison or mirror symmetry the report applies (contactpair.c).
+   Formulations are energy terms created by name from this description
+   (-contact_formulation, registered in ContactFormulationList). */
+typedef struct {
+  char      name[CONTACT_NAME_LEN], formulation[CONTACT_NAME_LEN];
+  PetscInt  body[2];
+  char      group[2][CONTACT_NAME_LEN];
+  PetscReal kp;           /* the scene's penalty k_p */
+  PetscInt  nqp;          /* Gauss points per slave edge (-contact_quadrature_points) */
+  PetscReal blend;        /* -contact_blend: fraction of a master edge */
+  PetscBool exactHessian; /* start with the second-order term in the Hessian */
+  PetscBool hertz;        /* compare with Hertz: radii of the two surfaces (0: flat), E*, R* */
+  PetscReal radii[2], Estar, Rstar;
+  PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
+  PetscReal mirrorY;
+} ContactPairSpec;
+
+typedef PetscErrorCode (*ContactFormulationCreate)(const ContactPairSpec *, EnergyTerm);
+extern PetscFunctionList ContactFormulationList;
+PetscErrorCode ContactFormulationRegister(const char name[], ContactFormulationCreate);
+PetscErrorCode ContactFormulationRegisterAll(void);
+PetscErrorCode ContactFormulationFinalize(void);
+
+/* Reads -contact_pairs and each pair's options, and creates each pair's energy
+   term in its formulation (at most maxTerms). */
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bodies[], PetscBool exactHessian, PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[]);
+
+/* The formulations (one file each). */
+PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *, EnergyTerm);

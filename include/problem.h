@@ -1,20 +1,7 @@
 #pragma once
-#include "body.h"
+#include "energyterm.h"
 
-/* An energy term beside the bodies' elastic energy (contact pairs): it reads the
-   bodies' local displacement vectors and adds into their local gradients and into
-   the joined Hessian. */
-typedef struct _n_EnergyTerm *EnergyTerm;
-struct _n_EnergyTerm {
-  char      name[CONTACT_NAME_LEN];
-  PetscBool couples[CONTACT_MAX_BODIES]; /* bodies whose motion the term resists */
-  void     *ctx;
-  PetscErrorCode (*energygrad)(EnergyTerm, Body[], PetscReal *energy);
-  PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
-  PetscErrorCode (*destroy)(EnergyTerm);
-  PetscErrorCode (*setpenaltyfactor)(EnergyTerm, PetscReal); /* continuation: k_p times the factor */
-  PetscErrorCode (*sethessianexact)(EnergyTerm, PetscBool);   /* add the second-order term to the Hessian */
-};
+#define CONTACT_MAX_TERMS 16
 
 /* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
 typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
@@ -33,7 +20,7 @@ struct _n_Problem {
   PetscInt  nbodies;
   Body      bodies[CONTACT_MAX_BODIES];
   PetscInt  nterms;
-  EnergyTerm terms[CONTACT_MAX_BODIES];
+  EnergyTerm terms[CONTACT_MAX_TERMS];
   PetscInt  partitioner;
   PetscBool partitionView, taylor;
   PetscInt  offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
@@ -43,7 +30,9 @@ struct _n_Problem {
   H0Type    h0;
   Tao       tao;
   PetscInt  nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
-  PetscReal energy, gnorm;
+  PetscReal energy, gnorm;  /* at the solution (ProblemPostProcess) */
+  PetscReal bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
+  TaoConvergedReason reason;
   PetscReal time[5]; /* mesh, setup, solve, output, total */
   PetscLogDouble t0; /* start of the run */
   PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
@@ -63,7 +52,12 @@ PetscErrorCode ProblemSetFromOptions(Problem);
 PetscErrorCode ProblemSetUp(Problem);
 PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
+/* Sets every body's local vector (Dirichlet values inserted) from X. */
+PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
 PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
+/* Collective: the results at the converged state X (energy, gradient norm,
+   reactions, each term's results) and the report. */
+PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);
 PetscErrorCode ProblemCheckUnusedOptions(Problem, PetscBool final);
 PetscErrorCode ProblemTaylorTest(Problem);
 PetscErrorCode ProblemDestroy(Problem *);

@@ -3,6 +3,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
 
 #include "problem.h"
+#include "contactpair.h"
 
 ContactLog contactLog;
 
@@ -15,6 +16,7 @@ PetscErrorCode ContactInitializeLogging(void)
   PetscCall(PetscLogStageRegister("Mesh", &contactLog.mesh));
   PetscCall(PetscLogStageRegister("Setup", &contactLog.setup));
   PetscCall(PetscLogStageRegister("Solve", &contactLog.solve));
+  PetscCall(PetscLogStageRegister("PostProcess", &contactLog.postprocess));
   PetscCall(PetscLogStageRegister("Output", &contactLog.output));
   PetscCall(PetscLogEventRegister("ElasEnergyGrad", id, &contactLog.elasEnergyGrad));
   PetscCall(PetscLogEventRegister("ElasHessian", id, &contactLog.elasHessian));
@@ -83,6 +85,7 @@ static PetscErrorCode Run(int *status)
     PetscCall(PetscTime(&t1));
     PetscCall(ProblemSolve(problem, &converged));
     PetscCall(PetscTime(&t2));
+    PetscCall(ProblemPostProcess(problem, problem->X, converged));
     if (problem->taylor) PetscCall(ProblemTaylorTest(problem));
     for (PetscInt i = 0; i < problem->nbodies; ++i) problem->time[0] += problem->bodies[i]->tmesh;
     problem->time[1] = (t1 - t0) - problem->time[0];
@@ -117,6 +120,7 @@ int main(int argc, char **argv)
     ContactOutputRemovePending();
   }
   PetscCall(ExactSolutionFinalize());
+  PetscCall(ContactFormulationFinalize());
   PetscCall(PetscFinalize());
   return status;
 }

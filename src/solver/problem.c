@@ -87,7 +87,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(PetscFree(names[i]));
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize, p->meshDir));
-  PetscCall(ContactPairsCreateFromOptions(p));
+  PetscCall(ContactPairsCreateFromOptions(p->comm, p->nbodies, p->bodies, p->exactHessian, CONTACT_MAX_TERMS, &p->nterms, p->terms));
   PetscFunctionReturn(0);
 }
 
@@ -221,6 +221,26 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
   PetscFunctionReturn(0);
 }
 
+/* The dofs of every term's Hessian block (indices in the joined vector,
+   sorted, each once; every rank gets the whole set). */
+static PetscErrorCode ProblemGetSurfaceDofs(Problem p, IS *is)
+{
+  PetscInt  n = 0, *all = NULL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscInt m, *idx;
+    PetscCall(EnergyTermGetDofs(p->terms[t], &m, &idx));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (n + m + 1), &all));
+    PetscCall(PetscArraycpy(all + n, idx, m));
+    n += m;
+    PetscCall(PetscFree(idx));
+  }
+  PetscCall(PetscSortRemoveDupsInt(&n, all));
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, all, PETSC_OWN_POINTER, is));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
   PetscInt nloc = 0;
@@ -237,8 +257,8 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(PetscObjectSetName((PetscObject)p->X, "u"));
   PetscCall(VecDuplicate(p->X, &p->G));
   PetscCall(ProblemBuildIndexMaps(p));
-  PetscCall(ContactPairsSetUp(p));
-  if (p->nterms) PetscCall(ContactPairsGetSurfaceDofs(p, &p->surfaceDofs));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetUp(p->terms[t], p->bodies));
+  if (p->nterms) PetscCall(ProblemGetSurfaceDofs(p, &p->surfaceDofs));
   /* the elastic stiffness does not depend on u: assembled once; the Hessian
      copies it and adds the contact terms into the reserved surface block */
   PetscCall(ProblemPreallocateStiffness(p, nloc));
@@ -254,7 +274,7 @@ PetscErrorCode ProblemSetUp(Problem p)
 }
 
 /* Scatters X to every body's local vector (Dirichlet values inserted). */
-static PetscErrorCode ProblemScatterToBodies(Problem p, Vec X)
+PetscErrorCode ProblemScatterToBodies(Problem p, Vec X)
 {
   const PetscScalar *x;
 
@@ -285,19 +305,18 @@ static PetscErrorCode VecHasNonFinite(Vec v, PetscReal *bad)
   PetscFunctionReturn(0);
 }
 
-/* Pi(X) and its gradient. Each part (body, energy term) is checked for NaN and
-   Inf, in its energy and in the gradient it adds, so that a non-finite value
-   stops the solve naming its source; the flags travel in the energy's sum. */
-PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
+/* Pi(X) and its gradient G, and the energy of each part (bodies, then terms),
+   summed over ranks. Each part is checked for NaN and Inf, in its energy and
+   in the gradient it adds, so that a non-finite value stops the solve naming
+   its source; the flags travel in the energy's sum. */
+static PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal parts[])
 {
-  Problem      p = (Problem)ctx;
-  PetscReal    sum[1 + CONTACT_MAX_BODIES + CONTACT_MAX_BODIES] = {0}, all[1 + CONTACT_MAX_BODIES + CONTACT_MAX_BODIES], eb, et;
-  PetscReal   *bad = sum + 1;
   const PetscInt nparts = p->nbodies + p->nterms;
-  PetscScalar *g;
+  PetscReal      sum[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)] = {0}, all[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)], eb, et;
+  PetscReal     *bad = sum + 1, *part = sum + 1 + nparts;
+  PetscScalar   *g;
 
   PetscFunctionBeginUser;
-  (void)tao;
   PetscCall(ProblemScatterToBodies(p, X));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscCall(VecZeroEntries(p->bodies[i]->Gl));
@@ -305,11 +324,13 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
     if (PetscIsInfOrNanReal(eb)) bad[i] = 1.0;
     else PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &bad[i]));
     sum[0] += eb;
+    part[i] = eb;
   }
   for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscCall(p->terms[t]->energygrad(p->terms[t], p->bodies, &et));
+    PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
     if (PetscIsInfOrNanReal(et)) bad[p->nbodies + t] = 1.0;
     sum[0] += et;
+    part[p->nbodies + t] = et;
   }
   if (p->nterms) {
     PetscReal gbad = 0.0;
@@ -317,13 +338,14 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
     if (gbad != 0.0)
       for (PetscInt t = 0; t < p->nterms; ++t) bad[p->nbodies + t] = 1.0;
   }
-  PetscCall(MPIU_Allreduce(sum, all, 1 + nparts, MPIU_REAL, MPIU_SUM, p->comm));
+  PetscCall(MPIU_Allreduce(sum, all, 1 + (parts ? 2 : 1) * nparts, MPIU_REAL, MPIU_SUM, p->comm));
   for (PetscInt k = 0; k < nparts; ++k) {
     PetscInt its = 0;
     if (all[1 + k] == 0.0) continue;
     if (p->tao) PetscCall(TaoGetIterationNumber(p->tao, &its));
     SETERRQ(p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair", k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
   }
+  if (parts) PetscCall(PetscArraycpy(parts, all + 1 + nparts, nparts));
   PetscCall(VecZeroEntries(G));
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
@@ -335,6 +357,17 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
   }
   PetscCall(VecRestoreArray(G, &g));
   *f = all[0];
+  PetscFunctionReturn(0);
+}
+
+/* TAO's objective and gradient callback. */
+PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
+{
+  Problem p = (Problem)ctx;
+
+  PetscFunctionBeginUser;
+  (void)tao;
+  PetscCall(ProblemEvaluate(p, X, f, G, NULL));
   p->nEnergyEvals++;
   PetscFunctionReturn(0);
 }
@@ -363,7 +396,7 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   if (exact != p->exactHessian) PetscCall(PetscInfo(tao, "contact Hessian: %s from iteration %" PetscInt_FMT " (||g|| = %g)\n", exact ? "exact" : "Gauss-Newton", its, (double)gnorm));
   p->exactHessian = exact;
   for (PetscInt t = 0; t < p->nterms; ++t)
-    if (p->terms[t]->sethessianexact) PetscCall(p->terms[t]->sethessianexact(p->terms[t], exact));
+    PetscCall(EnergyTermSetHessianExact(p->terms[t], exact));
   PetscFunctionReturn(0);
 }
 
@@ -375,7 +408,7 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
   PetscCall(ProblemSelectHessian(p, tao));
   PetscCall(ProblemScatterToBodies(p, X));
   PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(p->terms[t]->hessian(p->terms[t], p->bodies, P));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   if (H != P) {
@@ -487,7 +520,7 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoadFactor(p->bodies[i], load));
   for (PetscInt t = 0; t < p->nterms; ++t)
-    if (p->terms[t]->setpenaltyfactor) PetscCall(p->terms[t]->setpenaltyfactor(p->terms[t], penalty));
+    PetscCall(EnergyTermSetPenaltyFactor(p->terms[t], penalty));
   PetscFunctionReturn(0);
 }
 
@@ -565,17 +598,37 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(ProblemSolveStaged(p, &its, &reason));
   p->iterations = its;
+  p->reason     = reason;
   PetscCall(TaoGetType(p->tao, &type));
-  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &p->energy, p->G, p));
-  p->nEnergyEvals--;
-  PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
   if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+/* After TAO has returned: the energy and gradient at X (the reactions are the
+   gradient's components on the constrained dofs), each body's energy, and each
+   term's results from X, computed here, with every sum over ranks taken where
+   the value is made; then the report. An unconverged state is announced
+   before any figure. */
+PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
+{
+  PetscReal parts[CONTACT_MAX_BODIES + CONTACT_MAX_TERMS];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(contactLog.postprocess));
+  if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->reason]));
+  PetscCall(ProblemEvaluate(p, X, &p->energy, p->G, parts));
+  PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    p->bodyEnergy[i] = parts[i];
+    PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+  }
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
-  PetscCall(ContactPairsReport(p));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -631,7 +684,6 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   p->taylorRates[0] = PetscLog2Real(p->taylorRemainders[0][n - 2] / p->taylorRemainders[0][n - 1]);
   p->taylorRates[1] = 1.0 + PetscLog2Real(p->taylorRemainders[1][n - 2] / p->taylorRemainders[1][n - 1]);
   PetscCall(PetscPrintf(p->comm, "  observed orders: gradient remainder %.3f, Hessian remainder %.3f\n", (double)p->taylorRates[0], (double)p->taylorRates[1]));
-  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f0, p->G, p));
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&U));
   PetscCall(VecDestroy(&V));
@@ -648,10 +700,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
 
   PetscFunctionBeginUser;
   if (!p) PetscFunctionReturn(0);
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    if (p->terms[t]->destroy) PetscCall(p->terms[t]->destroy(p->terms[t]));
-    PetscCall(PetscFree(p->terms[t]));
-  }
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermDestroy(&p->terms[t]));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
   PetscCall(MatDestroy(&p->H));

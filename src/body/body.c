@@ -545,8 +545,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecRestoreArray(Gl, &g));
   PetscCall(PetscLogFlops(b->ncells * nq * (nb * 16.0 + 30.0)));
   PetscCall(PetscLogEventEnd(contactLog.elasEnergyGrad, 0, 0, 0, 0));
-  b->energy = e;
-  *energy   = e;
+  *energy = e;
   PetscFunctionReturn(0);
 }
 

@@ -8,15 +8,7 @@
 #include <unistd.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
-#include "contactpair.h"
-
-typedef struct {
-  Vec       coords, disp, stress, vm;
-  IS        topo;
-  PetscInt  nnodes, ncells;
-  PetscReal umax, unorm2;
-  PetscReal l2err, l2norm; /* against the body's exact solution, if any */
-} BodyFields;
+#include "problem.h"
 
 /* Temporary files being written: a failed or interrupted run removes them, so
    that it leaves neither a half-written file nor a changed final one. The
@@ -67,160 +59,6 @@ void ContactOutputRemovePending(void)
   npending = 0;
 }
 
-static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
-{
-  PetscFunctionBeginUser;
-  PetscCall(VecCreate(comm, v));
-  PetscCall(VecSetSizes(*v, n, PETSC_DETERMINE));
-  PetscCall(VecSetBlockSize(*v, bs));
-  PetscCall(VecSetType(*v, VECSTANDARD));
-  PetscCall(PetscObjectSetName((PetscObject)*v, name));
-  PetscFunctionReturn(0);
-}
-
-/* Node values are computed per local point (arrays over the chart); owned
-   points are numbered by the body's node numbering, and the stress sums of the
-   cells around a node are reduced from ghosts to owners over the point SF. */
-static PetscErrorCode BodyComputeFields(Body b, BodyFields *F)
-{
-  PetscSection       s;
-  PetscSF            sf;
-  const PetscScalar *ua;
-  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
-  PetscInt           nown = 0, rstart = 0, nroots, *topo;
-  PetscReal         *sp, *sr, refpts[9 * 2];
-  PetscTabulation    Tn;
-  PetscReal          loc[2] = {0, 0}, glob[2];
-  PetscScalar       *ax, *au, *as, *av;
-  MPI_Datatype       five;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(DMGetPointSF(b->dm, &sf));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
-    PetscInt gdof;
-    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
-    if (gdof > 0) nown += gdof;
-  }
-  PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
-  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
-  PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
-  PetscCall(VecGetSize(F->vm, &F->nnodes));
-  PetscCall(PetscCalloc2(5 * np, &sp, 5 * np, &sr));
-  PetscCall(PetscMalloc1(b->ncells * nb, &topo));
-  PetscCall(BodyGetReferenceNodes(b, refpts));
-  PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
-  PetscCall(VecGetArrayRead(b->Xl, &ua));
-  for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscInt  *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
-    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * 2];
-    PetscInt         depth[9], corners[4], nc = 0, node[9];
-    PetscReal        u[9][2], dNdx[9 * 2];
-
-    for (PetscInt k = 0; k < nb; ++k) {
-      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
-      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
-      u[k][0] = PetscRealPart(ua[dof[k]]);
-      u[k][1] = PetscRealPart(ua[dof[k] + 1]);
-      if (depth[k] == 0) corners[nc++] = k;
-    }
-    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
-    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
-    for (PetscInt i = 0; i < nb; ++i) {
-      if (depth[i] == 1) {
-        const PetscInt *cone;
-        PetscInt        j0 = -1, j1 = -1;
-        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
-        for (PetscInt j = 0; j < nc; ++j) {
-          if (pts[corners[j]] == cone[0]) j0 = j;
-          if (pts[corners[j]] == cone[1]) j1 = j;
-        }
-        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
-        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
-      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
-    }
-    /* stress of this cell at each of its nodes */
-    for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4];
-      PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
-      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
-      for (PetscInt q = 0; q < nb; ++q) {
-        gu[0] += u[q][0] * dNdx[2 * q];
-        gu[1] += u[q][0] * dNdx[2 * q + 1];
-        gu[2] += u[q][1] * dNdx[2 * q];
-        gu[3] += u[q][1] * dNdx[2 * q + 1];
-      }
-      ElasticityStress(b->param, gu, sig);
-      acc[0] += sig[0];
-      acc[1] += sig[3];
-      acc[2] += ElasticityStressZZ(b->param, gu);
-      acc[3] += sig[1];
-      acc[4] += 1.0;
-    }
-  }
-  PetscCall(PetscTabulationDestroy(&Tn));
-  PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
-  PetscCall(PetscArraycpy(sr, sp, 5 * np));
-  if (nroots >= 0) {
-    PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
-    PetscCallMPI(MPI_Type_commit(&five));
-    PetscCall(PetscSFReduceBegin(sf, five, sp, sr, MPI_SUM));
-    PetscCall(PetscSFReduceEnd(sf, five, sp, sr, MPI_SUM));
-    PetscCallMPI(MPI_Type_free(&five));
-  }
-  PetscCall(VecGetArray(F->coords, &ax));
-  PetscCall(VecGetArray(F->disp, &au));
-  PetscCall(VecGetArray(F->stress, &as));
-  PetscCall(VecGetArray(F->vm, &av));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
-    PetscInt   gdof, goff, off, i;
-    PetscReal  um2, *st = &sr[5 * (p - b->pStart)];
-    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
-    if (gdof <= 0) continue;
-    PetscCall(PetscSectionGetOffset(b->nodeGS, p, &goff));
-    PetscCall(PetscSectionGetOffset(s, p, &off));
-    i             = goff - rstart;
-    ax[2 * i]     = b->xpoint[2 * (p - b->pStart)];
-    ax[2 * i + 1] = b->xpoint[2 * (p - b->pStart) + 1];
-    au[2 * i]     = ua[off];
-    au[2 * i + 1] = ua[off + 1];
-    for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
-    av[i]  = ElasticityVonMises(st[0] / st[4], st[1] / st[4], st[2] / st[4], st[3] / st[4]);
-    um2    = PetscSqr(PetscRealPart(ua[off])) + PetscSqr(PetscRealPart(ua[off + 1]));
-    loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
-    loc[1] += um2;
-  }
-  PetscCall(VecRestoreArray(F->coords, &ax));
-  PetscCall(VecRestoreArray(F->disp, &au));
-  PetscCall(VecRestoreArray(F->stress, &as));
-  PetscCall(VecRestoreArray(F->vm, &av));
-  PetscCall(VecRestoreArrayRead(b->Xl, &ua));
-  PetscCall(PetscFree2(sp, sr));
-  PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
-  PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
-  F->umax   = glob[0];
-  F->unorm2 = glob[1];
-  PetscCall(ISCreateGeneral(b->comm, b->ncells * nb, topo, PETSC_OWN_POINTER, &F->topo));
-  PetscCall(ISSetBlockSize(F->topo, nb));
-  PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
-  F->ncells = b->ncellsGlobal;
-  PetscCall(BodyComputeErrorL2(b, b->Xl, &F->l2err, &F->l2norm));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode BodyFieldsDestroy(BodyFields *F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(VecDestroy(&F->coords));
-  PetscCall(VecDestroy(&F->disp));
-  PetscCall(VecDestroy(&F->stress));
-  PetscCall(VecDestroy(&F->vm));
-  PetscCall(ISDestroy(&F->topo));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode EnsureParentDir(MPI_Comm comm, const char path[])
 {
   char        dir[PETSC_MAX_PATH_LEN], *slash;
@@ -254,7 +92,7 @@ static PetscErrorCode RenameOnRoot(MPI_Comm comm, const char from[], const char 
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteXDMF(Problem p, BodyFields F[], const char path[], const char h5[])
+static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[])
 {
   PetscMPIInt rank;
   const char *base = strrchr(h5, '/');
@@ -289,7 +127,7 @@ static PetscErrorCode WriteXDMF(Problem p, BodyFields F[], const char path[], co
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
+static PetscErrorCode WriteHDF5(Problem p, BodyNodalFields F[], const char path[])
 {
   PetscViewer v;
   char       *opts, version[256];
@@ -313,7 +151,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyFields F[], const char path[])
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
-  PetscCall(ContactPairsWriteHDF5(p, v));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteHDF5(p->terms[t], p->bodies, v));
   PetscCall(PetscOptionsGetAll(NULL, &opts));
   PetscCall(PetscGetVersion(version, sizeof(version)));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
@@ -338,7 +176,7 @@ void ContactJSONReal(FILE *fp, PetscReal v)
   else fprintf(fp, "%.17g", (double)v);
 }
 
-static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, const char path[])
+static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool converged, const char path[])
 {
   PetscMPIInt        rank, size;
   PetscInt           its, dofs;
@@ -382,13 +220,21 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
         fprintf(fp, "]");
       }
     fprintf(fp, "\n  }");
-    PetscCall(ContactPairsWriteJSON(p, fp));
+    if (p->nterms) { /* the first pair's figures at top level, then every pair */
+      PetscCall(EnergyTermWriteJSON(p->terms[0], p->bodies, fp, PETSC_TRUE));
+      fprintf(fp, ",\n  \"contact\": {");
+      for (PetscInt t = 0; t < p->nterms; ++t) {
+        fprintf(fp, "%s\n    \"%s\": ", t ? "," : "", p->terms[t]->name);
+        PetscCall(EnergyTermWriteJSON(p->terms[t], p->bodies, fp, PETSC_FALSE));
+      }
+      fprintf(fp, "\n  }");
+    }
     fprintf(fp, ",\n  \"bodies\": {");
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       Body            b   = p->bodies[i];
       const PetscReal err = F[i].l2err, nrm = F[i].l2norm;
       fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
-      ContactJSONReal(fp, b->energy);
+      ContactJSONReal(fp, p->bodyEnergy[i]);
       fprintf(fp, ", \"max_displacement\": ");
       ContactJSONReal(fp, F[i].umax);
       fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
@@ -430,7 +276,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyFields F[], PetscBool converged, 
    -summary none), each to "<name>.tmp" first and renamed at the end. */
 PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
 {
-  BodyFields F[CONTACT_MAX_BODIES];
+  BodyNodalFields F[CONTACT_MAX_BODIES];
   PetscBool  h5, js;
   char       htmp[PETSC_MAX_PATH_LEN + 8], jtmp[PETSC_MAX_PATH_LEN + 8], xdmf[PETSC_MAX_PATH_LEN + 8], xtmp[PETSC_MAX_PATH_LEN + 16];
   PetscLogDouble t0, t1;
@@ -444,7 +290,8 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
   h5 = (PetscBool)!h5;
   js = (PetscBool)!js;
   PetscCall(PetscMemzero(F, sizeof(F)));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeFields(p->bodies[i], &F[i]));
+  PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
   if (h5) {
     size_t l;
     PetscCall(EnsureParentDir(p->comm, p->output));
@@ -474,7 +321,7 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
   }
   if (js) PetscCall(RenameOnRoot(p->comm, jtmp, p->summary));
   npending = 0;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyFieldsDestroy(&F[i]));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyNodalFieldsDestroy(&F[i]));
   PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
   if (h5) PetscCall(PetscPrintf(p->comm, "Wrote %s and %s\n", p->output, xdmf));

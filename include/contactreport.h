@@ -1,0 +1,46 @@
+#pragma once
+#include "contactpair.h"
+
+/* The results of a contact pair at the converged state, whatever the
+   formulation (contactreport.c): per one-sided surface a pressure profile
+   sorted by arc position, the contact force, and the comparison with Hertz
+   (hertz.c); printed, and written to JSON and HDF5. */
+enum { CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_Y, CONTACT_ROW_XC, CONTACT_ROW_YC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_COLS };
+
+/* A profile's figures: largest pressure, half-width (half the loaded length,
+   to half the spacing of the samples), half-width from the second moment,
+   pressure centroid, integral of the pressure, relative L2 distance from Hertz. */
+typedef struct {
+  PetscReal pmax, a, am, sc, ptotal, l2err;
+} ContactProfileFigures;
+
+typedef struct {
+  PetscInt              n;        /* rows (on rank 0; 0 elsewhere) */
+  PetscReal            *rows;     /* [n][CONTACT_ROW_COLS], sorted by s */
+  PetscReal             force[2]; /* contact force on the surface's body */
+  PetscInt              nedges;
+  ContactProfileFigures fig;
+} ContactSide;
+
+typedef struct {
+  ContactSide side[2];
+  PetscReal   kp, force[2], P, maxPen, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
+  PetscBool   done;
+} ContactReport;
+
+/* Collective: from each rank's rows of each side (any order), the local force
+   on each side and the local largest penetration, the pair's results: every
+   sum and maximum over ranks is taken here, once. */
+PetscErrorCode ContactReportFinish(ContactReport *, const ContactPairSpec *, MPI_Comm, const PetscInt nloc[2], PetscReal *const rows[2], const PetscReal force[2][2], PetscReal maxPen, const PetscReal arcLength[2]);
+PetscErrorCode ContactReportView(const ContactReport *, const ContactPairSpec *, Body[], MPI_Comm);
+PetscErrorCode ContactReportWriteJSON(const ContactReport *, const ContactPairSpec *, Body[], FILE *, PetscBool summary);
+PetscErrorCode ContactReportWriteHDF5(const ContactReport *, const ContactPairSpec *, Body[], PetscViewer);
+PetscErrorCode ContactReportReset(ContactReport *);
+
+/* Hertz's line contact (plane strain) from the force per unit thickness P:
+   half-width a = sqrt(4 P R* / (pi E*)), peak 2 P / (pi a) (hertz.c). */
+void      HertzLineContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax);
+/* Hertz's pressure at distance ds from the centre. */
+PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds);
+/* Figures of a profile rows[n] sorted by s; l2err against Hertz if a > 0 (else NaN). */
+void      ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *);

@@ -1,0 +1,40 @@
+#pragma once
+#include "body.h"
+
+/* A contact surface: a Gmsh physical curve of one body, held whole on every
+   rank (surfaces are curves, small beside the bodies). It owns the quadratic
+   edges and their nodes, the reference and current coordinates of the nodes,
+   a gradient array over them, the arc position along the surface, and, as a
+   master surface, each edge's C1 blend into its neighbours (set up by
+   ContactSurfaceSetUpBlend in edge.c). Formulations read these arrays; only
+   surface.c and edge.c write them. */
+typedef struct {
+  PetscInt   body, tag;
+  char       group[CONTACT_NAME_LEN];
+  PetscInt   nn, ne;      /* surface nodes and edges (whole surface, every rank) */
+  PetscInt  *enodes;      /* [ne][3]: nodes at eta = -1, +1, 0 */
+  PetscReal *esign;       /* [ne] +-1 so that (t_y, -t_x) * esign is outward */
+  PetscReal *s0, *edir, *elen; /* arc position of the walk entering the edge, direction, length */
+  PetscInt  *nodeId;      /* [nn] global node number, sorted */
+  PetscReal *X, *x, *g;   /* [nn][2] reference, current coordinates, gradient */
+  PetscInt  *big;         /* [nn][2] index in the joined vector, -1 if constrained */
+  PetscBool *endNode;     /* [nn] node on a single edge: an end of the surface */
+  PetscInt  *mnodes;      /* [ne][7] as master: own nodes (eta = -1, +1, 0), the other nodes of the neighbour at eta = -1, at +1 */
+  PetscReal *mcorr;       /* [ne][2][7] end-tangent corrections at eta = -1, +1 over those nodes */
+  PetscReal  blend;       /* W: width in eta of the blend zone at each end (0: none) */
+  PetscInt   nloc, *locNode, *locOff; /* owned node points: surface node, local offset */
+  PetscInt   nown, *ownEdges;          /* edges this rank integrates as slave */
+} ContactSurface;
+
+/* Collective on the body: extracts the group's edges, replicates them, numbers
+   the nodes, walks the arc and sets up the master blend of width blend (in eta). */
+PetscErrorCode ContactSurfaceSetUp(ContactSurface *, Body, const char pair[], PetscReal blend);
+PetscErrorCode ContactSurfaceDestroy(ContactSurface *);
+/* Collective: x = X + u of every node, from the body's local vector Xl. */
+PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body);
+/* Collective: sums g over ranks and adds it to the body's local gradient Gl. */
+PetscErrorCode ContactSurfaceAddGradient(ContactSurface *, Body);
+/* Arc position (reference length) of edge e at parameter xi. */
+PetscErrorCode ContactSurfaceArc(const ContactSurface *, PetscInt e, PetscReal xi, PetscReal *s);
+/* Length of the whole surface (the end of the arc). */
+PetscReal ContactSurfaceLength(const ContactSurface *);

@@ -1,0 +1,160 @@
+/* Nodal fields of a body for output: the second-order nodal mesh
+   (coordinates, Tri6/Quad9 connectivity in XDMF node order), displacement,
+   and the stress (xx, yy, zz, xy) and von Mises stress recovered at the nodes
+   by averaging each cell's stress there over the cells around the node. */
+#include <petscsf.h>
+#include "body.h"
+
+static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, v));
+  PetscCall(VecSetSizes(*v, n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(*v, bs));
+  PetscCall(VecSetType(*v, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(0);
+}
+
+/* Node values are computed per local point (arrays over the chart); owned
+   points are numbered by the body's node numbering, and the stress sums of the
+   cells around a node are reduced from ghosts to owners over the point SF. */
+PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
+{
+  PetscSection       s;
+  PetscSF            sf;
+  const PetscScalar *ua;
+  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
+  PetscInt           nown = 0, rstart = 0, nroots, *topo;
+  PetscReal         *sp, *sr, refpts[9 * 2];
+  PetscTabulation    Tn;
+  PetscReal          loc[2] = {0, 0}, glob[2];
+  PetscScalar       *ax, *au, *as, *av;
+  MPI_Datatype       five;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(DMGetPointSF(b->dm, &sf));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt gdof;
+    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
+    if (gdof > 0) nown += gdof;
+  }
+  PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
+  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
+  PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
+  PetscCall(VecGetSize(F->vm, &F->nnodes));
+  PetscCall(PetscCalloc2(5 * np, &sp, 5 * np, &sr));
+  PetscCall(PetscMalloc1(b->ncells * nb, &topo));
+  PetscCall(BodyGetReferenceNodes(b, refpts));
+  PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
+  PetscCall(VecGetArrayRead(Xl, &ua));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt  *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
+    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * 2];
+    PetscInt         depth[9], corners[4], nc = 0, node[9];
+    PetscReal        u[9][2], dNdx[9 * 2];
+
+    for (PetscInt k = 0; k < nb; ++k) {
+      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
+      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
+      u[k][0] = PetscRealPart(ua[dof[k]]);
+      u[k][1] = PetscRealPart(ua[dof[k] + 1]);
+      if (depth[k] == 0) corners[nc++] = k;
+    }
+    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
+    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
+    for (PetscInt i = 0; i < nb; ++i) {
+      if (depth[i] == 1) {
+        const PetscInt *cone;
+        PetscInt        j0 = -1, j1 = -1;
+        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
+        for (PetscInt j = 0; j < nc; ++j) {
+          if (pts[corners[j]] == cone[0]) j0 = j;
+          if (pts[corners[j]] == cone[1]) j1 = j;
+        }
+        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
+        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
+      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
+    }
+    /* stress of this cell at each of its nodes */
+    for (PetscInt a = 0; a < nb; ++a) {
+      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4];
+      PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
+      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
+      for (PetscInt q = 0; q < nb; ++q) {
+        gu[0] += u[q][0] * dNdx[2 * q];
+        gu[1] += u[q][0] * dNdx[2 * q + 1];
+        gu[2] += u[q][1] * dNdx[2 * q];
+        gu[3] += u[q][1] * dNdx[2 * q + 1];
+      }
+      ElasticityStress(b->param, gu, sig);
+      acc[0] += sig[0];
+      acc[1] += sig[3];
+      acc[2] += ElasticityStressZZ(b->param, gu);
+      acc[3] += sig[1];
+      acc[4] += 1.0;
+    }
+  }
+  PetscCall(PetscTabulationDestroy(&Tn));
+  PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
+  PetscCall(PetscArraycpy(sr, sp, 5 * np));
+  if (nroots >= 0) {
+    PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
+    PetscCallMPI(MPI_Type_commit(&five));
+    PetscCall(PetscSFReduceBegin(sf, five, sp, sr, MPI_SUM));
+    PetscCall(PetscSFReduceEnd(sf, five, sp, sr, MPI_SUM));
+    PetscCallMPI(MPI_Type_free(&five));
+  }
+  PetscCall(VecGetArray(F->coords, &ax));
+  PetscCall(VecGetArray(F->disp, &au));
+  PetscCall(VecGetArray(F->stress, &as));
+  PetscCall(VecGetArray(F->vm, &av));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt   gdof, goff, off, i;
+    PetscReal  um2, *st = &sr[5 * (p - b->pStart)];
+    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
+    if (gdof <= 0) continue;
+    PetscCall(PetscSectionGetOffset(b->nodeGS, p, &goff));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    i             = goff - rstart;
+    ax[2 * i]     = b->xpoint[2 * (p - b->pStart)];
+    ax[2 * i + 1] = b->xpoint[2 * (p - b->pStart) + 1];
+    au[2 * i]     = ua[off];
+    au[2 * i + 1] = ua[off + 1];
+    for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
+    av[i]  = ElasticityVonMises(st[0] / st[4], st[1] / st[4], st[2] / st[4], st[3] / st[4]);
+    um2    = PetscSqr(PetscRealPart(ua[off])) + PetscSqr(PetscRealPart(ua[off + 1]));
+    loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
+    loc[1] += um2;
+  }
+  PetscCall(VecRestoreArray(F->coords, &ax));
+  PetscCall(VecRestoreArray(F->disp, &au));
+  PetscCall(VecRestoreArray(F->stress, &as));
+  PetscCall(VecRestoreArray(F->vm, &av));
+  PetscCall(VecRestoreArrayRead(Xl, &ua));
+  PetscCall(PetscFree2(sp, sr));
+  PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
+  PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
+  F->umax   = glob[0];
+  F->unorm2 = glob[1];
+  PetscCall(ISCreateGeneral(b->comm, b->ncells * nb, topo, PETSC_OWN_POINTER, &F->topo));
+  PetscCall(ISSetBlockSize(F->topo, nb));
+  PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
+  F->ncells = b->ncellsGlobal;
+  PetscCall(BodyComputeErrorL2(b, Xl, &F->l2err, &F->l2norm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&F->coords));
+  PetscCall(VecDestroy(&F->disp));
+  PetscCall(VecDestroy(&F->stress));
+  PetscCall(VecDestroy(&F->vm));
+  PetscCall(ISDestroy(&F->topo));
+  PetscFunctionReturn(0);
+}

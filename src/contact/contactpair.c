@@ -1,0 +1,139 @@
+/* Contact pairs as the scene declares them: the options of every pair, read
+   into a ContactPairSpec whatever the formulation, and the registry of
+   formulations from which each pair's energy term is created by name. */
+#include "contactpair.h"
+
+PetscFunctionList ContactFormulationList = NULL;
+
+PetscErrorCode ContactFormulationRegister(const char name[], ContactFormulationCreate create)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListAdd(&ContactFormulationList, name, create));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactFormulationRegisterAll(void)
+{
+  PetscFunctionBeginUser;
+  if (ContactFormulationList) PetscFunctionReturn(0);
+  PetscCall(ContactFormulationRegister("gpts", ContactTermCreate_GPTS));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactFormulationFinalize(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&ContactFormulationList));
+  PetscFunctionReturn(0);
+}
+
+/* The term of a pair in formulation spec->formulation; an unknown name is an
+   error that lists the known ones. */
+static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactPairSpec *spec, const char option[], EnergyTerm *term)
+{
+  ContactFormulationCreate create;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListFind(ContactFormulationList, spec->formulation, &create));
+  if (!create) {
+    const char **names;
+    int          n;
+    char         known[256] = "";
+    PetscCall(PetscFunctionListGet(ContactFormulationList, &names, &n));
+    for (int i = 0; i < n; ++i) {
+      PetscCall(PetscStrlcat(known, i ? ", " : "", sizeof(known)));
+      PetscCall(PetscStrlcat(known, names[i], sizeof(known)));
+    }
+    PetscCall(PetscFree(names));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "option %s: unknown contact formulation '%s' (known: %s)", option, spec->formulation, known);
+  }
+  PetscCall(EnergyTermCreate(comm, spec->name, term));
+  PetscCall(PetscStrncpy((*term)->type, spec->formulation, sizeof((*term)->type)));
+  (*term)->couples[spec->body[0]] = PETSC_TRUE;
+  (*term)->couples[spec->body[1]] = PETSC_TRUE;
+  PetscCall((*create)(spec, *term));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscBool exactHessian, PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[])
+{
+  char     *names[64], formulation[CONTACT_NAME_LEN] = "gpts";
+  PetscInt  np = 64, nq = 4;
+  PetscReal kp = -1.0, blend = 0.05;
+  PetscBool disable = PETSC_FALSE, setkp;
+
+  PetscFunctionBeginUser;
+  *nterms = 0;
+  PetscCall(ContactFormulationRegisterAll());
+  PetscOptionsBegin(comm, NULL, "Contact options", NULL);
+  PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces)", NULL, names, &np, NULL));
+  PetscCall(PetscOptionsFList("-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
+  PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
+  PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
+  PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners)", NULL, blend, &blend, NULL));
+  PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
+  PetscOptionsEnd();
+  PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
+  PetscCheck(nq >= 1 && nq <= 8, comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
+  PetscCheck(np <= maxTerms, comm, PETSC_ERR_USER_INPUT, "option -contact_pairs: %" PetscInt_FMT " pairs, at most %" PetscInt_FMT, np, maxTerms);
+  for (PetscInt i = 0; i < np; ++i) {
+    ContactPairSpec spec;
+    char            prefix[2 * CONTACT_NAME_LEN], option[3 * CONTACT_NAME_LEN], *surf[2] = {NULL, NULL};
+    PetscInt        ns = 2, nr = 2;
+    PetscBool       setPair, setForm;
+
+    PetscCall(PetscMemzero(&spec, sizeof(spec)));
+    PetscCall(PetscStrncpy(spec.name, names[i], sizeof(spec.name)));
+    PetscCall(PetscFree(names[i]));
+    for (PetscInt j = 0; j < *nterms; ++j) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(terms[j]->name, spec.name, &same));
+      PetscCheck(!same, comm, PETSC_ERR_USER_INPUT, "option -contact_pairs: pair '%s' given twice", spec.name);
+    }
+    PetscCall(PetscStrncpy(spec.formulation, formulation, sizeof(spec.formulation)));
+    spec.kp           = kp;
+    spec.nqp          = nq;
+    spec.blend        = blend;
+    spec.exactHessian = exactHessian;
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
+    PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
+    PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group", NULL, surf, &ns, &setPair));
+    PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
+    PetscCall(PetscOptionsReal("-penalty", "Penalty k_p of this pair (default -contact_penalty)", NULL, spec.kp, &spec.kp, NULL));
+    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, spec.radii, &nr, &spec.hertz));
+    PetscCall(PetscOptionsReal("-mirror_y", "Half model mirrored about the line y = value: the report doubles the force across it and mirrors the profiles", NULL, spec.mirrorY, &spec.mirrorY, &spec.mirror));
+    PetscOptionsEnd();
+    PetscCheck(setPair && ns == 2, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
+    PetscCheck(!spec.hertz || nr == 2, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
+    PetscCheck(!PetscIsInfOrNanReal(spec.kp) && spec.kp > 0, comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)spec.kp);
+    for (PetscInt s = 0; s < 2; ++s) {
+      char *colon = strchr(surf[s], ':');
+      PetscCheck(colon, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: '%s' is not body:group", prefix, surf[s]);
+      *colon       = 0;
+      spec.body[s] = -1;
+      for (PetscInt b = 0; b < nbodies; ++b) {
+        PetscBool same;
+        PetscCall(PetscStrcmp(bodies[b]->name, surf[s], &same));
+        if (same) spec.body[s] = b;
+      }
+      PetscCheck(spec.body[s] >= 0, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: no body named '%s'", prefix, surf[s]);
+      PetscCall(PetscStrncpy(spec.group[s], colon + 1, sizeof(spec.group[s])));
+      PetscCall(PetscFree(surf[s]));
+    }
+    for (PetscInt s = 0; s < 2; ++s) PetscCheck(!spec.hertz || (spec.radii[s] >= 0 && !PetscIsInfOrNanReal(spec.radii[s])), comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)spec.radii[s]);
+    PetscCheck(!spec.hertz || spec.radii[0] > 0 || spec.radii[1] > 0, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);
+    if (spec.hertz) {
+      const Body b0 = bodies[spec.body[0]], b1 = bodies[spec.body[1]];
+      PetscReal  iR = 0.0;
+      spec.Estar    = 1.0 / ((1.0 - b0->nu * b0->nu) / b0->E + (1.0 - b1->nu * b1->nu) / b1->E);
+      for (PetscInt s = 0; s < 2; ++s)
+        if (spec.radii[s] > 0) iR += 1.0 / spec.radii[s];
+      spec.Rstar = 1.0 / iR;
+    }
+    if (disable) continue; /* read and checked like the others, then dropped */
+    PetscCall(PetscSNPrintf(option, sizeof(option), setForm ? "-%sformulation" : "-contact_formulation", prefix));
+    PetscCall(ContactFormulationCreateTerm(comm, &spec, option, &terms[*nterms]));
+    (*nterms)++;
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,273 @@
+/* The results of a contact pair, whatever the formulation: the profiles of the
+   two one-sided surfaces gathered on rank 0 (mirrored for half models) and
+   compared with Hertz, the forces and the largest penetration reduced over
+   ranks; the console report, the JSON members and the HDF5 group. */
+#include <petscviewerhdf5.h>
+#include "contactreport.h"
+
+PetscErrorCode ContactReportReset(ContactReport *R)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(R->side[s].rows));
+  PetscCall(PetscMemzero(R, sizeof(*R)));
+  PetscFunctionReturn(0);
+}
+
+/* Gathers one side's rows on rank 0, adds their mirror images for a half
+   model (about the end of the arc that lies on the symmetry line: s = 0 or
+   the surface's length L), sorts them by s and computes the figures. */
+static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *spec, const ContactReport *R, MPI_Comm comm, PetscInt nloc, const PetscReal rows[], PetscReal L)
+{
+  const PetscInt C = CONTACT_ROW_COLS;
+  PetscMPIInt    rank, size, *cnt, *disp, nl = (PetscMPIInt)(C * nloc);
+  PetscReal     *all = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
+  if (!rank) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(2 * disp[size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(rows, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, comm));
+  if (!rank) {
+    PetscInt   m = disp[size] / C, *perm;
+    PetscReal *sv;
+    if (spec->mirror && m > 0) {
+      PetscInt  lo = 0, hi = 0;
+      PetscReal scut;
+      for (PetscInt i = 1; i < m; ++i) {
+        if (all[C * i] < all[C * lo]) lo = i;
+        if (all[C * i] > all[C * hi]) hi = i;
+      }
+      scut = PetscAbsReal(all[C * lo + CONTACT_ROW_Y] - spec->mirrorY) <= PetscAbsReal(all[C * hi + CONTACT_ROW_Y] - spec->mirrorY) ? 0.0 : L;
+      for (PetscInt i = 0; i < m; ++i) {
+        PetscReal *r = &all[C * (m + i)];
+        PetscCall(PetscArraycpy(r, &all[C * i], C));
+        r[CONTACT_ROW_S]  = 2.0 * scut - r[CONTACT_ROW_S];
+        r[CONTACT_ROW_Y]  = 2.0 * spec->mirrorY - r[CONTACT_ROW_Y];
+        r[CONTACT_ROW_YC] = 2.0 * spec->mirrorY - r[CONTACT_ROW_YC];
+      }
+      m *= 2;
+    }
+    PetscCall(PetscMalloc2(m + 1, &perm, m + 1, &sv));
+    for (PetscInt i = 0; i < m; ++i) {
+      perm[i] = i;
+      sv[i]   = all[C * i];
+    }
+    PetscCall(PetscSortRealWithPermutation(m, sv, perm));
+    PetscCall(PetscMalloc1(C * m + C, &S->rows));
+    for (PetscInt i = 0; i < m; ++i) PetscCall(PetscArraycpy(&S->rows[C * i], &all[C * perm[i]], C));
+    S->n = m;
+    ContactProfileCompare(m, S->rows, spec->hertz, R->hertzA, R->hertzPmax, &S->fig);
+    PetscCall(PetscFree2(perm, sv));
+    PetscCall(PetscFree(all));
+  }
+  PetscCall(PetscFree2(cnt, disp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec, MPI_Comm comm, const PetscInt nloc[2], PetscReal *const rows[2], const PetscReal force[2][2], PetscReal maxPen, const PetscReal arcLength[2])
+{
+  PetscReal f[4] = {force[0][0], force[0][1], force[1][0], force[1][1]}, fm[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, f, 4, MPIU_REAL, MPIU_SUM, comm));
+  PetscCall(MPIU_Allreduce(&maxPen, &R->maxPen, 1, MPIU_REAL, MPIU_MAX, comm));
+  for (PetscInt s = 0; s < 2; ++s) {
+    R->side[s].force[0] = f[2 * s];
+    R->side[s].force[1] = f[2 * s + 1];
+  }
+  R->force[0] = f[0];
+  R->force[1] = f[1];
+  /* a mirrored half doubles the force across the line and cancels it along */
+  fm[0] = spec->mirror ? 2.0 * f[0] : f[0];
+  fm[1] = spec->mirror ? 0.0 : f[1];
+  R->P  = PetscSqrtReal(fm[0] * fm[0] + fm[1] * fm[1]);
+  if (spec->hertz) HertzLineContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzPmax);
+  for (PetscInt s = 0; s < 2; ++s) {
+    PetscCall(ContactSideGather(&R->side[s], spec, R, comm, nloc[s], rows[s], arcLength[s]));
+    /* every rank holds the figures (HDF5 attributes are written collectively) */
+    PetscCallMPI(MPI_Bcast(&R->side[s].fig, sizeof(ContactProfileFigures) / sizeof(PetscReal), MPIU_REAL, 0, comm));
+  }
+  R->femPmax = 0.5 * (R->side[0].fig.pmax + R->side[1].fig.pmax);
+  R->femA    = 0.5 * (R->side[0].fig.a + R->side[1].fig.a);
+  R->femAm   = 0.5 * (R->side[0].fig.am + R->side[1].fig.am);
+  R->l2err   = 0.5 * (R->side[0].fig.l2err + R->side[1].fig.l2err);
+  R->done    = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], MPI_Comm comm)
+{
+  const PetscInt C = CONTACT_ROW_COLS;
+  PetscMPIInt    rank;
+  PetscReal      fm[2];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  fm[0] = spec->mirror ? 2.0 * R->force[0] : R->force[0];
+  fm[1] = spec->mirror ? 0.0 : R->force[1];
+  PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
+  PetscCall(PetscPrintf(comm, "  contact force on %s%s: (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : "", (double)fm[0], (double)fm[1], (double)R->P));
+  PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
+  if (!rank) {
+    for (PetscInt s = 0; s < 2; ++s) {
+      const ContactSide *S = &R->side[s];
+      PetscInt           first = -1, last = -1, step;
+      for (PetscInt i = 0; i < S->n; ++i)
+        if (S->rows[C * i + CONTACT_ROW_P] > 0) {
+          if (first < 0) first = i;
+          last = i;
+        }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
+      if (first < 0) {
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
+        continue;
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12s %12s %12s %12s\n", "s - s_c", "p", spec->hertz ? "p Hertz" : "", "gap"));
+      first = PetscMax(0, first - 1);
+      last  = PetscMin(S->n - 1, last + 1);
+      step  = PetscMax(1, (last - first + 1) / 21);
+      for (PetscInt i = first; i <= last; i += step) {
+        const PetscReal *r  = &S->rows[C * i];
+        const PetscReal  ds = r[CONTACT_ROW_S] - S->fig.sc;
+        if (spec->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12.6g %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0), (double)r[CONTACT_ROW_GAP]));
+        else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], "", (double)r[CONTACT_ROW_GAP]));
+      }
+    }
+  }
+  if (spec->hertz && !(R->P > 0)) PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
+  else if (spec->hertz) {
+    PetscCall(PetscPrintf(comm, "  Hertz (E* = %g, R* = %g): a = %.6g, p_max = %.6g\n", (double)spec->Estar, (double)spec->Rstar, (double)R->hertzA, (double)R->hertzPmax));
+    PetscCall(PetscPrintf(comm, "  computed:              a = %.6g (%+.2f %%), p_max = %.6g (%+.2f %%)\n", (double)R->femA, (double)(100 * (R->femA / R->hertzA - 1)), (double)R->femPmax, (double)(100 * (R->femPmax / R->hertzPmax - 1))));
+    PetscCall(PetscPrintf(comm, "  half-width from the profile's second moment: a = %.6g (%+.2f %%)\n", (double)R->femAm, (double)(100 * (R->femAm / R->hertzA - 1))));
+    if (PetscIsInfOrNanReal(R->l2err)) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: n/a (a surface has no point inside Hertz's zone)\n"));
+    else PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * R->l2err), (double)(100 * R->side[0].fig.l2err), (double)(100 * R->side[1].fig.l2err)));
+  }
+  PetscFunctionReturn(0);
+}
+
+static void JKV(FILE *fp, const char sep[], const char key[], PetscReal v)
+{
+  fprintf(fp, "%s\"%s\": ", sep, key);
+  ContactJSONReal(fp, v);
+}
+
+static void JVec2(FILE *fp, const char key[], const PetscReal v[2])
+{
+  fprintf(fp, ", \"%s\": [", key);
+  ContactJSONReal(fp, v[0]);
+  fprintf(fp, ", ");
+  ContactJSONReal(fp, v[1]);
+  fprintf(fp, "]");
+}
+
+/* The figures of a pair, each preceded by sep. */
+static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairSpec *spec, const char sep[], const char forceKey[])
+{
+  JKV(fp, sep, forceKey, R->P);
+  JKV(fp, sep, "max_penetration", R->maxPen);
+  JKV(fp, sep, "fem_pmax", R->femPmax);
+  JKV(fp, sep, "fem_a", R->femA);
+  JKV(fp, sep, "fem_a_moment", R->femAm);
+  if (!spec->hertz) return;
+  JKV(fp, sep, "E_star", spec->Estar);
+  JKV(fp, sep, "R_star", spec->Rstar);
+  JKV(fp, sep, "hertz_a", R->hertzA);
+  JKV(fp, sep, "hertz_pmax", R->hertzPmax);
+  JKV(fp, sep, "pressure_l2_error", R->l2err);
+}
+
+/* Rank 0. summary: the figures as top-level members (",\n  key: value" each);
+   else the pair's object. */
+PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, PetscBool summary)
+{
+  PetscFunctionBeginUser;
+  if (summary) {
+    PairFiguresJSON(fp, R, spec, ",\n  ", "contact_force");
+    PetscFunctionReturn(0);
+  }
+  fprintf(fp, "{\"formulation\": \"%s\", \"penalty\": ", spec->formulation);
+  ContactJSONReal(fp, R->kp);
+  JVec2(fp, "force", R->force);
+  PairFiguresJSON(fp, R, spec, ", ", "P");
+  fprintf(fp, ", \"surfaces\": [");
+  for (PetscInt s = 0; s < 2; ++s) {
+    const ContactSide *S = &R->side[s];
+    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d", s ? ", " : "", bodies[spec->body[s]]->name, spec->group[s], (int)S->nedges);
+    JKV(fp, ", ", "pmax", S->fig.pmax);
+    JKV(fp, ", ", "a", S->fig.a);
+    JKV(fp, ", ", "a_moment", S->fig.am);
+    JKV(fp, ", ", "centre", S->fig.sc);
+    JKV(fp, ", ", "pressure_integral", S->fig.ptotal);
+    JVec2(fp, "force", S->force);
+    if (spec->hertz) JKV(fp, ", ", "pressure_l2_error", S->fig.l2err);
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "]}");
+  PetscFunctionReturn(0);
+}
+
+/* Per one-sided surface, /contact/<pair>/<body>_<group>/: s, X (reference),
+   x (current), gap, pressure, weight, from rank 0; the pair's figures as
+   attributes of /contact/<pair> (collective). */
+PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
+{
+  MPI_Comm    comm;
+  PetscMPIInt rank;
+  char        group[4 * CONTACT_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)v, &comm));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  for (PetscInt s = 0; s < 2; ++s) {
+    const ContactSide *S        = &R->side[s];
+    const char        *names[6] = {"s", "X", "x", "gap", "pressure", "weight"};
+    const PetscInt     cols[6]  = {CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_XC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W}, bs[6] = {1, 2, 2, 1, 1, 1};
+    const PetscInt     n        = rank ? 0 : S->n;
+
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", spec->name, bodies[spec->body[s]]->name, spec->group[s]));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    for (PetscInt k = 0; k < 6; ++k) {
+      Vec          vec;
+      PetscScalar *a;
+      PetscCall(VecCreate(comm, &vec));
+      PetscCall(VecSetSizes(vec, n * bs[k], PETSC_DETERMINE));
+      PetscCall(VecSetBlockSize(vec, bs[k]));
+      PetscCall(VecSetType(vec, VECSTANDARD));
+      PetscCall(PetscObjectSetName((PetscObject)vec, names[k]));
+      PetscCall(VecGetArray(vec, &a));
+      for (PetscInt i = 0; i < n; ++i)
+        for (PetscInt j = 0; j < bs[k]; ++j) a[i * bs[k] + j] = S->rows[CONTACT_ROW_COLS * i + cols[k] + j];
+      PetscCall(VecRestoreArray(vec, &a));
+      PetscCall(VecView(vec, v));
+      PetscCall(VecDestroy(&vec));
+    }
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+  }
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", spec->name));
+  PetscCall(PetscViewerHDF5PushGroup(v, group));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, spec->formulation));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &R->kp));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &R->P));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &R->maxPen));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &R->femPmax));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &R->femA));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a_moment", PETSC_REAL, &R->femAm));
+  if (spec->hertz) {
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &spec->Estar));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &spec->Rstar));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_a", PETSC_REAL, &R->hertzA));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_pmax", PETSC_REAL, &R->hertzPmax));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &R->l2err));
+  }
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscFunctionReturn(0);
+}

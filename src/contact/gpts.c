@@ -1,0 +1,426 @@
+/* Contact formulation "gpts": two-way Gauss-point-to-segment penalty between
+   curved quadratic surfaces.
+
+   A pair names a surface S_A on body A and S_B on body B. With S_A as slave,
+
+     E_AB(u) = 1/2 k_p int_{S_A} <-g(X)>_+^2 dS,   <z>_+ = max(z, 0),
+
+   where X runs over the slave surface in the reference configuration (dS is its
+   reference length: Gauss points on each curved quadratic edge, weights times
+   |dX/dxi|) and g is the signed normal gap in the current configuration: the
+   slave point x_s = X + u is projected onto the closest point x_m(eta*) of the
+   master surface (edge.h: each master edge the quadratic curve through its
+   current nodes, blended C1 into its neighbours), and g = (x_s - x_m(eta*)) .
+   n(eta*) with n the master body's outward unit normal. The pair's energy is
+   (E_AB + E_BA) / 2 and the contact pressure at a slave point is p = k_p <-g>_+.
+
+   Gradient. At an orthogonal projection x_s - x_m = g n and x_m' . n = 0, so
+   the variations of eta* and of n drop out:
+     dg = n . (sum_i N_i(xi) du_i - sum_j M_j(eta*) du_j)
+   (N slave, M master edge shape functions over the seven nodes of the blended
+   edge): this is the exact derivative of g, including its dependence on the
+   closest point and the normal. It is approximate only where the projection
+   falls on a corner the blend leaves (a real corner of the surface, over 30
+   degrees, or -contact_blend 0).
+   dE_AB = -k_p int <-g>_+ dg dS.
+
+   Hessian. d2E_AB = k_p int H(-g) (dg dg + g d2g) dS. The Gauss-Newton part
+   alone (-contact_hessian gauss_newton) is symmetric positive semi-definite;
+   the term it drops is of the order of the penetration over the edge length,
+   but it holds the tangential modes, so that Newton with it converges only
+   linearly. -contact_hessian exact adds it; auto (the default, problem.c)
+   adds it once the gradient is small. With t = x_m'(eta*), tau = t/|t|,
+   kappa = n . x_m'', D = |t|^2 - g kappa, varying the projection condition
+   (x_s - x_m) . t = 0 gives
+     d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
+   (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
+     d2g = -(kappa a a + g b b + |t| (a b + b a)) / D,
+   symmetric; it is exact away from edge ends (eta* = +-1, where the
+   Gauss-Newton part alone is used).
+
+   The energy-gradient, Hessian and profile kernels share the point geometry
+   (GPTSPointProject) and differ in what they accumulate. */
+#include "contactreport.h"
+#include "edge.h"
+#include "search.h"
+
+typedef struct {
+  ContactPairSpec spec;
+  ContactSurface  S[2];
+  ContactSearch   search[2]; /* over S[s] as master */
+  PetscReal       kp;        /* penalty in use (continuation) */
+  PetscReal       xi[8], wxi[8];
+  PetscBool       exactHessian; /* add the g d2g term to the Gauss-Newton Hessian */
+  PetscInt        npts[2];   /* slave points this rank integrates on S[s] */
+  PetscReal      *spt[2];    /* [npts][4]: s, X, Y, weight of each slave point */
+  ContactReport   report;
+} GPTS;
+
+static PetscLogEvent GPTS_EnergyGrad, GPTS_Search, GPTS_Hessian, GPTS_Report;
+
+/* A slave point against the master surface: the closest point, the master
+   shape functions there, the outward normal and the gap. */
+typedef struct {
+  PetscReal N[3], dN[3], xs[2];
+  PetscInt  me;                     /* master edge, -1 if none or beyond an end of the master surface */
+  PetscReal eta, M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
+} GPTSPoint;
+
+static inline void GPTSPointProject(const GPTS *cp, const ContactSurface *S, ContactSurface *M, ContactSearch search, PetscInt se, PetscInt q, GPTSPoint *P)
+{
+  const PetscInt *sn = &S->enodes[3 * se];
+  PetscReal       ts[2];
+
+  EdgeShape(cp->xi[q], P->N, P->dN);
+  EdgeEval(S->x, sn, cp->xi[q], P->xs, ts);
+  P->eta = 0.0;
+  ContactSearchFindClosest(search, P->xs, &P->me, &P->eta);
+  if (P->me < 0) return;
+  {
+    const PetscInt *mn = &M->mnodes[7 * P->me];
+    /* beyond an end of the master surface: no contact */
+    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
+      P->me = -1;
+      return;
+    }
+  }
+  MasterShape(M, P->me, P->eta, P->M7, P->dM7, P->d2M7); /* once: the point, normal and derivatives below */
+  MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
+  P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
+  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
+  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
+  P->gap  = (P->xs[0] - P->xm[0]) * P->n[0] + (P->xs[1] - P->xm[1]) * P->n[1];
+}
+
+/* One-sided energy and gradient: slave s against master 1 - s, weight c (1/2
+   for two-way); adds to both surfaces' gradient arrays. */
+static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal *energy)
+{
+  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+  PetscReal       e = 0.0;
+
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt  se = S->ownEdges[k];
+    const PetscInt *sn = &S->enodes[3 * se];
+    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
+      const PetscReal w = cp->spt[s][4 * (k * cp->spec.nqp + q) + 3];
+      GPTSPoint       P;
+      PetscReal       pen, f;
+
+      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      if (P.me < 0 || P.gap >= 0.0) continue;
+      pen = -P.gap;
+      e += c * 0.5 * cp->kp * w * pen * pen;
+      f = c * cp->kp * w * pen;
+      for (PetscInt i = 0; i < 3; ++i)
+        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.n[d];
+      for (PetscInt j = 0; j < 7; ++j)
+        for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.me + j] + d] += f * P.M7[j] * P.n[d];
+    }
+  }
+  *energy += e;
+}
+
+/* One-sided Hessian (see the derivation above), added into H. */
+static PetscErrorCode GPTSSlaveHessian(GPTS *cp, PetscInt s, PetscReal c, Mat H)
+{
+  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt  se = S->ownEdges[k];
+    const PetscInt *sn = &S->enodes[3 * se];
+    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
+      const PetscReal w = cp->spt[s][4 * (k * cp->spec.nqp + q) + 3], kw = c * cp->kp * w;
+      GPTSPoint       P;
+      PetscInt        idx[20];
+      PetscReal       dg[20];
+      PetscScalar     K[400];
+      const PetscInt *mn;
+
+      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      if (P.me < 0 || P.gap >= 0.0) continue;
+      mn = &M->mnodes[7 * P.me];
+      for (PetscInt d = 0; d < 2; ++d) {
+        for (PetscInt i = 0; i < 3; ++i) {
+          idx[2 * i + d] = S->big[2 * sn[i] + d];
+          dg[2 * i + d]  = P.N[i] * P.n[d];
+        }
+        for (PetscInt j = 0; j < 7; ++j) {
+          idx[6 + 2 * j + d] = M->big[2 * mn[j] + d];
+          dg[6 + 2 * j + d]  = -P.M7[j] * P.n[d];
+        }
+      }
+      for (PetscInt i = 0; i < 20; ++i)
+        for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] = kw * dg[i] * dg[j];
+      if (cp->exactHessian && PetscAbsReal(P.eta) < 1.0) {
+        const PetscReal tau[2] = {P.tm[0] / P.tn, P.tm[1] / P.tn};
+        const PetscReal kappa = P.n[0] * P.xpp[0] + P.n[1] * P.xpp[1], D = P.tn * P.tn - P.gap * kappa;
+        PetscReal       a[20], b[20];
+        for (PetscInt d = 0; d < 2; ++d) {
+          for (PetscInt i = 0; i < 3; ++i) {
+            a[2 * i + d] = P.N[i] * tau[d];
+            b[2 * i + d] = 0.0;
+          }
+          for (PetscInt j = 0; j < 7; ++j) {
+            a[6 + 2 * j + d] = -P.M7[j] * tau[d];
+            b[6 + 2 * j + d] = P.dM7[j] * P.n[d];
+          }
+        }
+        for (PetscInt i = 0; i < 20; ++i)
+          for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] -= kw * P.gap * (kappa * a[i] * a[j] + P.gap * b[i] * b[j] + P.tn * (a[i] * b[j] + b[i] * a[j])) / D;
+      }
+      PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* One-sided profile at the current state: a row per slave point this rank
+   owns (s, X, Y, x, y, gap, pressure, weight; gap Inf where no master edge
+   faces the point), the forces on both bodies with weight c, the largest
+   penetration. */
+static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[], PetscReal force[2][2], PetscReal *maxPen)
+{
+  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt se = S->ownEdges[k];
+    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
+      const PetscInt   i = k * cp->spec.nqp + q;
+      const PetscReal *sp = &cp->spt[s][4 * i];
+      PetscReal       *r = &rows[CONTACT_ROW_COLS * i], pen, f;
+      GPTSPoint        P;
+
+      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      r[CONTACT_ROW_S]   = sp[0];
+      r[CONTACT_ROW_X]   = sp[1];
+      r[CONTACT_ROW_Y]   = sp[2];
+      r[CONTACT_ROW_XC]  = P.xs[0];
+      r[CONTACT_ROW_YC]  = P.xs[1];
+      r[CONTACT_ROW_GAP] = P.me < 0 ? PETSC_INFINITY : P.gap;
+      r[CONTACT_ROW_P]   = 0.0;
+      r[CONTACT_ROW_W]   = sp[3];
+      if (P.me < 0 || P.gap >= 0.0) continue;
+      pen              = -P.gap;
+      r[CONTACT_ROW_P] = cp->kp * pen;
+      *maxPen          = PetscMax(*maxPen, pen);
+      f                = c * cp->kp * sp[3] * pen;
+      force[s][0] += f * P.n[0];
+      force[s][1] += f * P.n[1];
+      force[1 - s][0] -= f * P.n[0];
+      force[1 - s][1] -= f * P.n[1];
+    }
+  }
+}
+
+/* The current coordinates of both surfaces and their search grids. */
+static PetscErrorCode GPTSUpdate(GPTS *cp, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceUpdateCoordinates(&cp->S[s], bodies[cp->S[s].body]));
+  PetscCall(PetscLogEventBegin(GPTS_Search, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(cp->search[s]));
+  PetscCall(PetscLogEventEnd(GPTS_Search, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  GPTS     *cp = (GPTS *)t->data;
+  PetscReal e  = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(GPTS_EnergyGrad, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(cp->S[s].g, 2 * cp->S[s].nn));
+  PetscCall(GPTSUpdate(cp, bodies));
+  GPTSSlaveEnergyGradient(cp, 0, 0.5, &e);
+  GPTSSlaveEnergyGradient(cp, 1, 0.5, &e);
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&cp->S[s], bodies[cp->S[s].body]));
+  *energy = e;
+  PetscCall(PetscLogEventEnd(GPTS_EnergyGrad, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSHessian(EnergyTerm t, Body bodies[], Mat H)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(GPTS_Hessian, 0, 0, 0, 0));
+  PetscCall(GPTSUpdate(cp, bodies));
+  PetscCall(GPTSSlaveHessian(cp, 0, 0.5, H));
+  PetscCall(GPTSSlaveHessian(cp, 1, 0.5, H));
+  PetscCall(PetscLogEventEnd(GPTS_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The pair's results at the state in the bodies' local vectors. */
+static PetscErrorCode GPTSPostProcess(EnergyTerm t, Body bodies[])
+{
+  GPTS     *cp = (GPTS *)t->data;
+  PetscReal *rows[2], force[2][2] = {{0, 0}, {0, 0}}, maxPen = 0.0, L[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(GPTS_Report, 0, 0, 0, 0));
+  PetscCall(GPTSUpdate(cp, bodies));
+  for (PetscInt s = 0; s < 2; ++s) {
+    PetscCall(PetscMalloc1(CONTACT_ROW_COLS * cp->npts[s] + 1, &rows[s]));
+    L[s] = ContactSurfaceLength(&cp->S[s]);
+  }
+  GPTSSlaveProfile(cp, 0, 0.5, rows[0], force, &maxPen);
+  GPTSSlaveProfile(cp, 1, 0.5, rows[1], force, &maxPen);
+  PetscCall(ContactReportReset(&cp->report));
+  cp->report.kp = cp->kp;
+  for (PetscInt s = 0; s < 2; ++s) cp->report.side[s].nedges = cp->S[s].ne;
+  PetscCall(ContactReportFinish(&cp->report, &cp->spec, t->comm, cp->npts, rows, (const PetscReal(*)[2])force, maxPen, L));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
+  PetscCall(PetscLogEventEnd(GPTS_Report, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSView(EnergyTerm t, Body bodies[])
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  if (cp->report.done) PetscCall(ContactReportView(&cp->report, &cp->spec, bodies, t->comm));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteJSON(&cp->report, &cp->spec, bodies, fp, summary));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteHDF5(&cp->report, &cp->spec, bodies, v));
+  PetscFunctionReturn(0);
+}
+
+/* Both surfaces, their searches, and the slave points of the owned edges,
+   which depend only on the reference geometry: arc position, reference
+   coordinates and weight, set once. */
+static PetscErrorCode GPTSSetUp(EnergyTerm t, Body bodies[])
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface *S = &cp->S[s];
+    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], cp->spec.name, 2.0 * cp->spec.blend)); /* blend width in eta */
+    PetscCall(ContactSearchCreate(S, &cp->search[s]));
+  }
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface *S = &cp->S[s];
+    cp->npts[s]       = S->nown * cp->spec.nqp;
+    PetscCall(PetscCalloc1(4 * cp->npts[s] + 4, &cp->spt[s]));
+    for (PetscInt k = 0; k < S->nown; ++k) {
+      const PetscInt se = S->ownEdges[k];
+      for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
+        PetscReal *sp = &cp->spt[s][4 * (k * cp->spec.nqp + q)], X[2], T[2];
+        EdgeEval(S->X, &S->enodes[3 * se], cp->xi[q], X, T);
+        PetscCall(ContactSurfaceArc(S, se, cp->xi[q], &sp[0]));
+        sp[1] = X[0];
+        sp[2] = X[1];
+        sp[3] = cp->wxi[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The unconstrained dofs of both surfaces (indices in the joined vector,
+   sorted, each once): the only rows and columns the pair's Hessian touches. */
+static PetscErrorCode GPTSGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
+{
+  GPTS    *cp = (GPTS *)t->data;
+  PetscInt m  = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * (cp->S[0].nn + cp->S[1].nn) + 1, idx));
+  for (PetscInt s = 0; s < 2; ++s)
+    for (PetscInt k = 0; k < 2 * cp->S[s].nn; ++k)
+      if (cp->S[s].big[k] >= 0) (*idx)[m++] = cp->S[s].big[k];
+  PetscCall(PetscSortRemoveDupsInt(&m, *idx));
+  *n = m;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSSetPenaltyFactor(EnergyTerm t, PetscReal f)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  cp->kp = f * cp->spec.kp;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSSetHessianExact(EnergyTerm t, PetscBool exact)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  cp->exactHessian = exact;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode GPTSDestroy(EnergyTerm t)
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    PetscCall(ContactSearchDestroy(&cp->search[s]));
+    PetscCall(ContactSurfaceDestroy(&cp->S[s]));
+    PetscCall(PetscFree(cp->spt[s]));
+  }
+  PetscCall(ContactReportReset(&cp->report));
+  PetscCall(PetscFree(cp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *spec, EnergyTerm t)
+{
+  GPTS *cp;
+
+  PetscFunctionBeginUser;
+  if (!GPTS_EnergyGrad) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactGPTS", &id));
+    PetscCall(PetscLogEventRegister("ContactEnergyGrad", id, &GPTS_EnergyGrad));
+    PetscCall(PetscLogEventRegister("ContactSearch", id, &GPTS_Search));
+    PetscCall(PetscLogEventRegister("ContactHessian", id, &GPTS_Hessian));
+    PetscCall(PetscLogEventRegister("ContactReport", id, &GPTS_Report));
+  }
+  PetscCall(PetscNew(&cp));
+  cp->spec         = *spec;
+  cp->kp           = spec->kp;
+  cp->exactHessian = spec->exactHessian;
+  PetscCall(PetscDTGaussQuadrature(spec->nqp, -1.0, 1.0, cp->xi, cp->wxi));
+  for (PetscInt s = 0; s < 2; ++s) {
+    cp->S[s].body = spec->body[s];
+    PetscCall(PetscStrncpy(cp->S[s].group, spec->group[s], sizeof(cp->S[s].group)));
+  }
+  t->data                 = cp;
+  t->ops.setup            = GPTSSetUp;
+  t->ops.energygradient   = GPTSEnergyGradient;
+  t->ops.hessian          = GPTSHessian;
+  t->ops.getdofs          = GPTSGetDofs;
+  t->ops.setpenaltyfactor = GPTSSetPenaltyFactor;
+  t->ops.sethessianexact  = GPTSSetHessianExact;
+  t->ops.postprocess      = GPTSPostProcess;
+  t->ops.view             = GPTSView;
+  t->ops.writejson        = GPTSWriteJSON;
+  t->ops.writehdf5        = GPTSWriteHDF5;
+  t->ops.destroy          = GPTSDestroy;
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,69 @@
+/* The comparison of a computed contact pressure profile with Hertz.
+
+   Hertz, a cylinder on a half-space or two cylinders, plane strain:
+     1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,   1/R* = 1/R1 + 1/R2,
+     a = sqrt(4 P R* / (pi E*)),   p_max = 2 P / (pi a),
+     p(s) = p_max sqrt(1 - ((s - s_c)/a)^2)  for |s - s_c| < a,
+   with P the contact force per unit thickness and s_c the pressure centroid
+   (Hertz's zone is centred where the computed one is). The profile's own
+   figures: p_max its largest sample; a half the length of the zone p > 0,
+   whose ends lie half-way between the outermost loaded sample and the next;
+   a from the second moment, since Hertz's profile has
+   int p (s - s_c)^2 / int p = a^2/4 (a half-width from the whole profile, not
+   from where its last loaded sample happens to be); and the relative L2
+   distance from Hertz with the samples' weights. */
+#include <math.h>
+#include "contactreport.h"
+
+void HertzLineContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax)
+{
+  *a    = PetscSqrtReal(4.0 * P * Rstar / (PETSC_PI * Estar));
+  *pmax = *a > 0 ? 2.0 * P / (PETSC_PI * *a) : 0.0;
+}
+
+PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds)
+{
+  const PetscReal z = ds / a;
+
+  return PetscAbsReal(z) < 1 ? pmax * PetscSqrtReal(1 - z * z) : 0.0;
+}
+
+void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *F)
+{
+  const PetscInt C = CONTACT_ROW_COLS;
+  PetscInt       i0 = -1, i1 = -1;
+  PetscReal      num = 0, den = 0, err = 0, nrm = 0, m2 = 0.0;
+
+  F->pmax   = 0.0;
+  F->ptotal = 0.0;
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscReal *r = &rows[C * i];
+    F->pmax = PetscMax(F->pmax, r[CONTACT_ROW_P]);
+    F->ptotal += r[CONTACT_ROW_P] * r[CONTACT_ROW_W];
+    num += r[CONTACT_ROW_S] * r[CONTACT_ROW_P] * r[CONTACT_ROW_W];
+    den += r[CONTACT_ROW_P] * r[CONTACT_ROW_W];
+    if (r[CONTACT_ROW_P] > 0) {
+      if (i0 < 0) i0 = i;
+      i1 = i;
+    }
+  }
+  F->sc = den > 0 ? num / den : 0.0;
+  for (PetscInt i = 0; i < n; ++i) m2 += rows[C * i + CONTACT_ROW_P] * rows[C * i + CONTACT_ROW_W] * PetscSqr(rows[C * i + CONTACT_ROW_S] - F->sc);
+  F->am = den > 0 ? 2.0 * PetscSqrtReal(m2 / den) : 0.0;
+  F->a  = 0.0;
+  if (i0 >= 0) {
+    const PetscReal lo = i0 > 0 ? 0.5 * (rows[C * i0] + rows[C * (i0 - 1)]) : rows[C * i0];
+    const PetscReal hi = i1 < n - 1 ? 0.5 * (rows[C * i1] + rows[C * (i1 + 1)]) : rows[C * i1];
+    F->a               = 0.5 * (hi - lo);
+  }
+  F->l2err = (PetscReal)NAN; /* no Hertz profile to compare with */
+  if (hertz && hertzA > 0) {
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal *r  = &rows[C * i];
+      const PetscReal  ph = HertzPressure(hertzPmax, hertzA, r[CONTACT_ROW_S] - F->sc);
+      err += r[CONTACT_ROW_W] * PetscSqr(r[CONTACT_ROW_P] - ph);
+      nrm += r[CONTACT_ROW_W] * ph * ph;
+    }
+    F->l2err = nrm > 0 ? PetscSqrtReal(err / nrm) : PETSC_INFINITY;
+  }
+}

@@ -1,0 +1,320 @@
+/* A contact surface: extraction of a physical curve's edges from the body's
+   DMPlex, replication on every rank, node numbering, the walk that gives the
+   arc position, and the exchange of the surface's coordinates and gradient
+   with the body's local vectors.
+
+   Parallel. Surfaces are curves, small beside the bodies: every rank holds
+   the whole surface (nodes, edges, current coordinates gathered at each
+   evaluation); the rank that owns an edge integrates it as slave, and the
+   gradient on the surface nodes is summed over ranks and added by the rank
+   that owns each node. */
+#include "surface.h"
+#include "edge.h"
+
+static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
+{
+  const PetscReal tol = 1e-9 * (PetscAbsReal(S->X[2 * a]) + PetscAbsReal(S->X[2 * b]) + 1.0);
+
+  if (PetscAbsReal(S->X[2 * a] - S->X[2 * b]) > tol) return S->X[2 * a] < S->X[2 * b] ? PETSC_TRUE : PETSC_FALSE;
+  return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Builds the whole surface on every rank: the owned edges of the physical
+   group with their nodes' global numbers, reference coordinates and outward
+   normal sign, gathered from all ranks. */
+PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[], PetscReal blend)
+{
+  DMLabel         faces;
+  IS              is = NULL;
+  PetscSection    s;
+  PetscInt        n = 0, *eid, nall, *ids;
+  PetscReal      *erl;
+  PetscMPIInt     size, *cnt, *disp, cntl;
+  const PetscInt *pts = NULL;
+
+  PetscFunctionBeginUser;
+  S->blend = blend;
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  if (faces) PetscCall(DMLabelGetStratumIS(faces, S->tag, &is));
+  if (is) {
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+  }
+  PetscCall(PetscMalloc2(3 * n + 1, &eid, 7 * n + 1, &erl));
+  {
+    PetscInt k = 0;
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscInt  e = pts[i];
+      const PetscInt *cone, *supp;
+      PetscInt        nsupp, *cl = NULL, ncl, nodes[3];
+      PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt2 = 0;
+
+      if (!b->owned[e - b->pStart]) continue;
+      PetscCall(DMPlexGetCone(b->dm, e, &cone));
+      nodes[0] = cone[0];
+      nodes[1] = cone[1];
+      nodes[2] = e;
+      for (PetscInt j = 0; j < 3; ++j) {
+        PetscCall(BodyGetNodeNumber(b, nodes[j], &eid[3 * k + j]));
+        erl[7 * k + 2 * j]     = b->xpoint[2 * (nodes[j] - b->pStart)];
+        erl[7 * k + 2 * j + 1] = b->xpoint[2 * (nodes[j] - b->pStart) + 1];
+      }
+      /* outward: away from the centroid of the cell on the edge */
+      PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
+      PetscCall(DMPlexGetSupport(b->dm, e, &supp));
+      PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: an edge of group '%s' of body %s is not on the boundary", pair, S->group, b->name);
+      PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+      for (PetscInt j = 0; j < ncl; ++j) {
+        PetscInt dof;
+        PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
+        if (!dof) continue;
+        xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
+        xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
+        cnt2 += 1;
+      }
+      PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+      t[0]   = erl[7 * k + 2] - erl[7 * k];
+      t[1]   = erl[7 * k + 3] - erl[7 * k + 1];
+      nrm[0] = t[1];
+      nrm[1] = -t[0];
+      erl[7 * k + 6] = (nrm[0] * (erl[7 * k + 4] - xc[0] / cnt2) + nrm[1] * (erl[7 * k + 5] - xc[1] / cnt2)) > 0 ? 1.0 : -1.0;
+      k++;
+    }
+    n = k;
+  }
+  if (is) {
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  cntl = (PetscMPIInt)n;
+  PetscCallMPI(MPI_Allgather(&cntl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  S->ne = disp[size];
+  PetscCheck(S->ne > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: surface '%s' of body %s has no edges", pair, S->group, b->name);
+  {
+    PetscMPIInt rank;
+    PetscInt   *alle;
+    PetscReal  *allr;
+    PetscMPIInt *c3, *d3, *c7, *d7;
+    PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+    PetscCall(PetscMalloc4(size, &c3, size, &d3, size, &c7, size, &d7));
+    for (PetscMPIInt r = 0; r < size; ++r) {
+      c3[r] = 3 * cnt[r];
+      d3[r] = 3 * disp[r];
+      c7[r] = 7 * cnt[r];
+      d7[r] = 7 * disp[r];
+    }
+    PetscCall(PetscMalloc2(3 * S->ne, &alle, 7 * S->ne, &allr));
+    PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, b->comm));
+    PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, b->comm));
+    PetscCall(PetscFree4(c3, d3, c7, d7));
+    /* surface nodes: sorted unique global numbers */
+    nall = 3 * S->ne;
+    PetscCall(PetscMalloc1(nall, &ids));
+    PetscCall(PetscArraycpy(ids, alle, nall));
+    PetscCall(PetscSortRemoveDupsInt(&nall, ids));
+    S->nn = nall;
+    S->nodeId = ids;
+    PetscCall(PetscMalloc3(3 * S->ne, &S->enodes, S->ne, &S->esign, S->ne, &S->s0));
+    PetscCall(PetscMalloc2(S->ne, &S->edir, S->ne, &S->elen));
+    PetscCall(PetscMalloc4(2 * S->nn, &S->X, 2 * S->nn, &S->x, 2 * S->nn, &S->g, 2 * S->nn, &S->big));
+    PetscCall(PetscCalloc1(S->nn, &S->endNode));
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      for (PetscInt j = 0; j < 3; ++j) {
+        PetscInt loc;
+        PetscCall(PetscFindInt(alle[3 * e + j], S->nn, S->nodeId, &loc));
+        S->enodes[3 * e + j]  = loc;
+        S->X[2 * loc]         = allr[7 * e + 2 * j];
+        S->X[2 * loc + 1]     = allr[7 * e + 2 * j + 1];
+      }
+      S->esign[e] = allr[7 * e + 6];
+    }
+    PetscCall(PetscMalloc1(n + 1, &S->ownEdges));
+    S->nown = n;
+    for (PetscInt k = 0; k < n; ++k) S->ownEdges[k] = disp[rank] + k;
+    PetscCall(PetscFree2(alle, allr));
+  }
+  PetscCall(PetscFree2(cnt, disp));
+  PetscCall(PetscFree2(eid, erl));
+  PetscCall(PetscArraycpy(S->x, S->X, 2 * S->nn));
+  /* owned local node points on the surface; their indices in the joined vector */
+  {
+    PetscInt *bigl, k = 0;
+    PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
+    PetscCall(PetscMalloc1(2 * S->nn, &bigl));
+    for (PetscInt i = 0; i < 2 * S->nn; ++i) bigl[i] = -2;
+    for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
+      PetscInt dof, id, loc, off;
+      if (!b->owned[pt - b->pStart]) continue;
+      PetscCall(PetscSectionGetDof(s, pt, &dof));
+      if (!dof) continue;
+      PetscCall(BodyGetNodeNumber(b, pt, &id));
+      PetscCall(PetscFindInt(id, S->nn, S->nodeId, &loc));
+      if (loc < 0) continue;
+      PetscCall(PetscSectionGetOffset(s, pt, &off));
+      S->locNode[k] = loc;
+      S->locOff[k]  = off;
+      bigl[2 * loc]     = b->l2b[off];
+      bigl[2 * loc + 1] = b->l2b[off + 1];
+      k++;
+    }
+    S->nloc = k;
+    PetscCall(MPIU_Allreduce(bigl, S->big, 2 * S->nn, MPIU_INT, MPI_MAX, b->comm));
+    PetscCall(PetscFree(bigl));
+  }
+  /* ends of the surface, and the arc position along a walk over its chains */
+  {
+    PetscInt *deg, *adj, *adjStart;
+    PetscBool *done;
+    PetscReal gx[8], gw[8], s0 = 0.0;
+    PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+    PetscCall(PetscCalloc3(S->nn, &deg, S->nn + 1, &adjStart, S->ne, &done));
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      deg[S->enodes[3 * e]]++;
+      deg[S->enodes[3 * e + 1]]++;
+      S->elen[e] = 0.0;
+      for (PetscInt q = 0; q < 8; ++q) {
+        PetscReal pq[2], t[2];
+        EdgeEval(S->X, &S->enodes[3 * e], gx[q], pq, t);
+        S->elen[e] += gw[q] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      }
+    }
+    for (PetscInt v = 0; v < S->nn; ++v) {
+      adjStart[v + 1] = adjStart[v] + deg[v];
+      S->endNode[v]   = deg[v] == 1 ? PETSC_TRUE : PETSC_FALSE;
+      deg[v]          = 0;
+    }
+    PetscCall(PetscMalloc1(adjStart[S->nn] + 1, &adj));
+    for (PetscInt e = 0; e < S->ne; ++e)
+      for (PetscInt j = 0; j < 2; ++j) {
+        const PetscInt v = S->enodes[3 * e + j];
+        adj[adjStart[v] + deg[v]++] = e;
+      }
+    PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
+    for (;;) {
+      PetscInt start = -1, v, e = -1;
+      /* start a chain at the unwalked end node of smallest (x, then y)
+         reference coordinate, so that the walk does not depend on the
+         partition; else at any unwalked edge */
+      for (PetscInt k = 0; k < S->ne; ++k) {
+        if (done[k]) continue;
+        for (PetscInt j = 0; j < 2; ++j) {
+          const PetscInt w = S->enodes[3 * k + j];
+          if (S->endNode[w] && (start < 0 || NodeBefore(S, w, start))) {
+            start = w;
+            e     = k;
+          }
+        }
+      }
+      for (PetscInt k = 0; k < S->ne && start < 0; ++k)
+        if (!done[k]) {
+          start = S->enodes[3 * k] < S->enodes[3 * k + 1] ? S->enodes[3 * k] : S->enodes[3 * k + 1];
+          e     = k;
+        }
+      if (start < 0) break;
+      v = start;
+      while (e >= 0) {
+        done[e]    = PETSC_TRUE;
+        S->edir[e] = S->enodes[3 * e] == v ? 1.0 : -1.0;
+        /* the arc position where the walk enters the edge: at eta = -1 if
+           dir > 0, at eta = +1 if dir < 0 (see ContactSurfaceArc) */
+        S->s0[e]   = s0;
+        s0 += S->elen[e];
+        v = S->edir[e] > 0 ? S->enodes[3 * e + 1] : S->enodes[3 * e];
+        {
+          PetscInt next = -1;
+          for (PetscInt j = adjStart[v]; j < adjStart[v + 1]; ++j)
+            if (!done[adj[j]]) next = adj[j];
+          e = next;
+        }
+      }
+    }
+    PetscCall(PetscFree3(deg, adjStart, done));
+    PetscCall(PetscFree(adj));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Gathers the current coordinates x = X + u of the surface nodes on every rank. */
+PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b)
+{
+  const PetscScalar *u;
+  PetscReal         *du;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(2 * S->nn, &du));
+  PetscCall(VecGetArrayRead(b->Xl, &u));
+  for (PetscInt k = 0; k < S->nloc; ++k) {
+    du[2 * S->locNode[k]]     = PetscRealPart(u[S->locOff[k]]);
+    du[2 * S->locNode[k] + 1] = PetscRealPart(u[S->locOff[k] + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(b->Xl, &u));
+  PetscCall(MPIU_Allreduce(du, S->x, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  for (PetscInt k = 0; k < 2 * S->nn; ++k) S->x[k] += S->X[k];
+  PetscCall(PetscFree(du));
+  PetscFunctionReturn(0);
+}
+
+/* Sums the surface gradient over ranks and adds it where the node is owned. */
+PetscErrorCode ContactSurfaceAddGradient(ContactSurface *S, Body b)
+{
+  PetscScalar *g;
+  PetscReal   *sum;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * S->nn, &sum));
+  PetscCall(MPIU_Allreduce(S->g, sum, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscCall(VecGetArray(b->Gl, &g));
+  for (PetscInt k = 0; k < S->nloc; ++k) {
+    g[S->locOff[k]] += sum[2 * S->locNode[k]];
+    g[S->locOff[k] + 1] += sum[2 * S->locNode[k] + 1];
+  }
+  PetscCall(VecRestoreArray(b->Gl, &g));
+  PetscCall(PetscFree(sum));
+  PetscFunctionReturn(0);
+}
+
+/* Arc position (reference length) at parameter xi of edge e, along the walk:
+   8-point Gauss on the part of the edge from its entry end. */
+PetscErrorCode ContactSurfaceArc(const ContactSurface *S, PetscInt e, PetscReal xi, PetscReal *s)
+{
+  PetscReal gx[8], gw[8], part = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  for (PetscInt q = 0; q < 8; ++q) {
+    const PetscReal h = 0.5 * (xi + 1.0), eta = -1.0 + h * (gx[q] + 1.0);
+    PetscReal       p[2], t[2];
+    EdgeEval(S->X, &S->enodes[3 * e], eta, p, t);
+    part += gw[q] * h * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  }
+  *s = S->edir[e] > 0 ? S->s0[e] + part : S->s0[e] + S->elen[e] - part;
+  PetscFunctionReturn(0);
+}
+
+PetscReal ContactSurfaceLength(const ContactSurface *S)
+{
+  PetscReal L = 0.0;
+
+  for (PetscInt e = 0; e < S->ne; ++e) L = PetscMax(L, S->s0[e] + S->elen[e]);
+  return L;
+}
+
+PetscErrorCode ContactSurfaceDestroy(ContactSurface *S)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree3(S->enodes, S->esign, S->s0));
+  PetscCall(PetscFree2(S->edir, S->elen));
+  PetscCall(PetscFree(S->nodeId));
+  PetscCall(PetscFree4(S->X, S->x, S->g, S->big));
+  PetscCall(PetscFree(S->endNode));
+  PetscCall(PetscFree2(S->mnodes, S->mcorr));
+  PetscCall(PetscFree2(S->locNode, S->locOff));
+  PetscCall(PetscFree(S->ownEdges));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,97 @@
+/* The energy-term interface: creation, destruction and the calls through the
+   table of operations, each optional operation a no-op where a term has none. */
+#include "energyterm.h"
+
+PetscErrorCode EnergyTermCreate(MPI_Comm comm, const char name[], EnergyTerm *term)
+{
+  EnergyTerm t;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&t));
+  t->comm = comm;
+  PetscCall(PetscStrncpy(t->name, name, sizeof(t->name)));
+  *term = t;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermDestroy(EnergyTerm *term)
+{
+  PetscFunctionBeginUser;
+  if (!*term) PetscFunctionReturn(0);
+  if ((*term)->ops.destroy) PetscCall((*term)->ops.destroy(*term));
+  PetscCall(PetscFree(*term));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermSetUp(EnergyTerm t, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.setup) PetscCall(t->ops.setup(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermComputeEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  PetscFunctionBeginUser;
+  PetscCall(t->ops.energygradient(t, bodies, energy));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermComputeHessian(EnergyTerm t, Body bodies[], Mat H)
+{
+  PetscFunctionBeginUser;
+  PetscCall(t->ops.hessian(t, bodies, H));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
+{
+  PetscFunctionBeginUser;
+  *n   = 0;
+  *idx = NULL;
+  if (t->ops.getdofs) PetscCall(t->ops.getdofs(t, n, idx));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermSetPenaltyFactor(EnergyTerm t, PetscReal factor)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.setpenaltyfactor) PetscCall(t->ops.setpenaltyfactor(t, factor));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermSetHessianExact(EnergyTerm t, PetscBool exact)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.sethessianexact) PetscCall(t->ops.sethessianexact(t, exact));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermPostProcess(EnergyTerm t, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.postprocess) PetscCall(t->ops.postprocess(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermView(EnergyTerm t, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.view) PetscCall(t->ops.view(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.writejson) PetscCall(t->ops.writejson(t, bodies, fp, summary));
+  else if (!summary) fprintf(fp, "{}");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.writehdf5) PetscCall(t->ops.writehdf5(t, bodies, v));
+  PetscFunctionReturn(0);
+}
