@@ -4,11 +4,33 @@
 Usage:
     python3 scripts/plot_hertz.py out/hertz.h5 -o out/hertz.png
         contact pressure along each interface (both one-sided profiles,
-        plotted against s - s_c) with the Hertz curve when the scene declares one
+        plotted against s - s_c) with the Hertz curve when the scene declares one;
+        a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
-        von Mises stress on the deformed bodies (displacements magnified by S);
-        the quadratic (Tri6 / Quad9) cells are subdivided through their shape
-        functions so that curved edges are drawn smoothly
+        von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
+        cells are subdivided through their shape functions so that curved edges
+        are drawn smoothly
+
+--scale S magnifies each body's deformation, not its rigid motion: per body the
+rigid motion that best fits the computed displacement (least squares over the
+body's area: translation and rotation) is kept as it is and only the remainder,
+the deformation, is multiplied by S. A pushed body is therefore drawn where it
+really is, not pushed S times as far into the other. Magnified, the two sides of
+an interface no longer coincide: each is drawn S times as dented as computed, so
+a gap (or an overlap) of about (S - 1) times the local deformation appears.
+
+--zoom frames the loaded part of the contact zone (the contact points of every
+pair with a pressure above 1e-3 of the pair's largest, as drawn): the field
+plot shows a square of F times the loaded length around it (--zoom alone:
+F = 3), its colour range that of the window; the pressure plot shows the loaded
+arc enlarged F times (without --zoom: 1.5). --zoom x0,x1,y0,y1 gives the field
+plot's window explicitly; the pressure plot then shows the contact points
+whose current position lies in it. Without loaded points --zoom F is ignored
+(one note) and the whole scene is drawn.
+
+The program has no units; axes are labelled without them unless --units or the
+HDF5 attributes /metadata:length_unit and /metadata:stress_unit name them (the
+option wins). Units are labels only: no number is converted.
 
 Only numpy, h5py and matplotlib (Agg backend) are used.
 """
@@ -28,6 +50,7 @@ from matplotlib.colors import Normalize  # noqa: E402
 from mpl_toolkits.axes_grid1 import make_axes_locatable  # noqa: E402
 
 PROG = "plot_hertz.py"
+DEFAULT_ZOOM = 3.0   # --zoom alone: a window three times the loaded length
 # Local node ids (a, b, mid) of the edges of each cell type, in XDMF order.
 EDGES = {"Tri6": [(0, 1, 3), (1, 2, 4), (2, 0, 5)],
          "Quad9": [(0, 1, 4), (1, 2, 5), (2, 3, 6), (3, 0, 7)]}
@@ -87,16 +110,173 @@ def outline(topology, cell_type, x, n=12):
     return np.einsum("kj,ejd->ekd", L, x[bnd[:, [0, 2, 1]]])
 
 
-def plot_field(f, scale, ax, label):
-    bodies = f["bodies"]
-    data = []
-    for name in bodies:
-        g = bodies[name]
+
+class Units:
+    """Length and stress unit labels ("" when unknown)."""
+
+    def __init__(self, length="", stress=""):
+        self.length, self.stress = length, stress
+
+    def label(self, text, kind):
+        unit = self.length if kind == "length" else self.stress
+        return f"{text} [{unit}]" if unit else text
+
+    def value(self, x, kind):
+        """x formatted with its unit, if any."""
+        unit = {"length": self.length, "stress": self.stress,
+                "force": f"{self.stress}·{self.length}"
+                if self.length and self.stress else ""}[kind]
+        return f"{x:.4g} {unit}" if unit else f"{x:.4g}"
+
+
+def parse_units(text):
+    """--units value: "LENGTH,STRESS" (either may be empty) or "none"."""
+    if text.strip().lower() == "none":
+        return Units()
+    parts = text.split(",")
+    if len(parts) != 2:
+        raise argparse.ArgumentTypeError(
+            f"expected LENGTH,STRESS (e.g. mm,MPa) or none, got {text!r}")
+    return Units(parts[0].strip(), parts[1].strip())
+
+
+def parse_zoom(text):
+    """--zoom value: a factor F > 0, or a window x0,x1,y0,y1."""
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    if len(values) == 1 and np.isfinite(values[0]) and values[0] > 0:
+        return values[0]
+    if (len(values) == 4 and np.all(np.isfinite(values))
+            and values[0] < values[1] and values[2] < values[3]):
+        return tuple(values)
+    raise argparse.ArgumentTypeError(
+        f"expected a factor F > 0 or a window x0,x1,y0,y1 (x0 < x1, y0 < y1), got {text!r}")
+
+
+def zoom_argv(argv):
+    """argv with every "--zoom [VALUE]" written "--zoom=VALUE", so that a window
+    starting with a minus sign (-0.1,0.1,-0.1,0.1) is not taken for an option
+    and a bare --zoom does not swallow the next argument (the file name)."""
+    out, i = [], 0
+    while i < len(argv):
+        if argv[i] == "--zoom":
+            value = argv[i + 1] if i + 1 < len(argv) else None
+            try:
+                parse_zoom(value)
+            except (argparse.ArgumentTypeError, AttributeError):
+                value = None
+            out.append(f"--zoom={value if value is not None else DEFAULT_ZOOM}")
+            i += 2 if value is not None else 1
+        else:
+            out.append(argv[i])
+            i += 1
+    return out
+
+
+def file_units(f):
+    """Units named by /metadata attributes length_unit and stress_unit, if any."""
+    meta = f["metadata"] if "metadata" in f else None
+    if meta is None:
+        return Units()
+    return Units(str(attr(meta, "length_unit", "") or ""),
+                 str(attr(meta, "stress_unit", "") or ""))
+
+
+def node_weights(topology, cell_type, X):
+    """Each cell's area shared equally among its nodes (a lumped area per node)."""
+    corners = X[topology[:, :3 if cell_type == "Tri6" else 4]]
+    nxt = np.roll(corners, -1, axis=1)
+    area = 0.5 * np.abs(np.sum(corners[..., 0] * nxt[..., 1] - corners[..., 1] * nxt[..., 0],
+                               axis=1))
+    w = np.zeros(len(X))
+    np.add.at(w, topology, (area / topology.shape[1])[:, None])
+    return w
+
+
+class RigidFit:
+    """The rigid motion X -> c + R (X - C) closest to X -> x (area-weighted least
+    squares, any rotation angle), and the display map that magnifies the rest."""
+
+    def __init__(self, X, x, w):
+        W = w.sum()
+        self.C = (w[:, None] * X).sum(0) / W
+        self.c = (w[:, None] * x).sum(0) / W
+        P, Q = X - self.C, x - self.c
+        angle = np.arctan2(np.sum(w * (P[:, 0] * Q[:, 1] - P[:, 1] * Q[:, 0])),
+                           np.sum(w * (P * Q).sum(1)))
+        cs, sn = np.cos(angle), np.sin(angle)
+        self.R = np.array([[cs, -sn], [sn, cs]])
+
+    def rigid(self, X):
+        return self.c + (X - self.C) @ self.R.T
+
+    def display(self, X, x, scale):
+        """Where a point at X (deformed: x) is drawn: rigid part + scale x the rest."""
+        if scale == 1.0:
+            return x
+        r = self.rigid(X)
+        return r + scale * (x - r)
+
+
+def body_fits(f):
+    """RigidFit of every body, by name."""
+    fits = {}
+    for name, g in f["bodies"].items():
         cell_type = attr(g, "cell_type")
         if cell_type not in EDGES:
             raise PlotError(f"body '{name}': unsupported cell_type {cell_type!r}")
         topo = g["topology"][()].astype(int)
-        x = g["geometry"][()] + scale * g["displacement"][()]
+        X = g["geometry"][()]
+        fits[name] = RigidFit(X, X + g["displacement"][()], node_weights(topo, cell_type, X))
+    return fits
+
+
+def loaded_points(f):
+    """(body, X, x, s - s_c) of every contact point with positive pressure, by side."""
+    out = []
+    if "contact" not in f:
+        return out
+    for g in f["contact"].values():
+        sides = [v for v in g.values() if isinstance(v, h5py.Group)]
+        pmax = max([np.max(v["pressure"][()], initial=0.0) for v in sides], default=0.0)
+        for side in sides:
+            p = side["pressure"][()]
+            on = p > 1e-3 * pmax if pmax > 0 else np.zeros(len(p), dtype=bool)
+            out.append((attr(side, "body"), side["X"][()][on], side["x"][()][on],
+                        side["s"][()][on] - attr(side, "centre", 0.0)))
+    return out
+
+
+def zoom_window(f, zoom, scale, fits):
+    """The field plot's window (x0, x1, y0, y1) for --zoom, or None and a note."""
+    if isinstance(zoom, tuple):
+        return zoom, None
+    pts = [fits[body].display(X, x, scale) if body in fits else x
+           for body, X, x, _ in loaded_points(f) if len(x)]
+    if not pts:
+        return None, "no loaded contact points: --zoom ignored, whole scene drawn"
+    pts = np.concatenate(pts)
+    lo, hi = pts.min(0), pts.max(0)
+    centre, size = (lo + hi) / 2, zoom * max(hi - lo)
+    if size <= 0:   # a single loaded point: a window of 5 % of the scene
+        allx = np.concatenate([g["geometry"][()] for g in f["bodies"].values()])
+        size = zoom * 0.05 * max(np.ptp(allx, axis=0))
+    return (centre[0] - size / 2, centre[0] + size / 2,
+            centre[1] - size / 2, centre[1] + size / 2), None
+
+
+def plot_field(f, scale, ax, label, units, zoom=None):
+    bodies = f["bodies"]
+    fits = body_fits(f)
+    data = []
+    for name in bodies:
+        g = bodies[name]
+        cell_type = attr(g, "cell_type")
+        topo = g["topology"][()].astype(int)
+        X = g["geometry"][()]
+        x = fits[name].display(X, X + g["displacement"][()], scale)
         N, tris = subdivision(cell_type, 6)
         pts = np.einsum("kj,cjd->ckd", N, x[topo]).reshape(-1, 2)
         vals = np.einsum("kj,cj->ck", N, g["von_mises"][()][topo]).ravel()
@@ -104,21 +284,56 @@ def plot_field(f, scale, ax, label):
         data.append((pts, tris, vals, outline(topo, cell_type, x)))
     if not data:
         raise PlotError("no bodies in file")
-    norm = Normalize(min(d[2].min() for d in data), max(d[2].max() for d in data))
+    window, note = (None, None) if zoom is None else zoom_window(f, zoom, scale, fits)
+    shown = [d[2] for d in data]
+    if window is not None:
+        # colour range of what the window shows (if it shows any sample point)
+        inside = [v[(p[:, 0] >= window[0]) & (p[:, 0] <= window[1]) &
+                    (p[:, 1] >= window[2]) & (p[:, 1] <= window[3])]
+                  for p, _, v, _ in data]
+        if sum(len(v) for v in inside):
+            shown = [v for v in inside if len(v)]
+    norm = Normalize(min(v.min() for v in shown), max(v.max() for v in shown))
     for pts, tris, vals, lines in data:
         mappable = ax.tripcolor(pts[:, 0], pts[:, 1], tris, vals, shading="gouraud",
                                 cmap="viridis", norm=norm)
         ax.add_collection(LineCollection(lines, colors="k", linewidths=0.5, alpha=0.6))
     cax = make_axes_locatable(ax).append_axes("right", size="4%", pad=0.1)
-    ax.figure.colorbar(mappable, cax=cax, label="von Mises stress [Pa]")
+    ax.figure.colorbar(mappable, cax=cax, label=units.label("von Mises stress", "stress"))
     ax.set_aspect("equal")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.set_title(f"von Mises stress on the deformed bodies (displacement x {scale:g})"
-                 f"\n{label}")
+    if window is not None:
+        ax.set_xlim(window[0], window[1])
+        ax.set_ylim(window[2], window[3])
+    ax.set_xlabel(units.label("x", "length"))
+    ax.set_ylabel(units.label("y", "length"))
+    how = ("" if scale == 1.0 else
+           f" (deformation x {scale:g}, rigid motion not magnified)")
+    ax.set_title(f"von Mises stress on the deformed bodies{how}\n{label}")
+    return note
 
 
-def plot_pressure(f, axes):
+def pressure_range(g, zoom, hertz_a=0.0):
+    """x range (s - s_c) of a pair's pressure plot, or None (automatic): the
+    loaded arc (and the Hertz zone, if any) enlarged by the zoom factor."""
+    sides = [v for v in g.values() if isinstance(v, h5py.Group)]
+    if isinstance(zoom, tuple):
+        x0, x1, y0, y1 = zoom
+        s = [side["s"][()][(p[:, 0] >= x0) & (p[:, 0] <= x1) & (p[:, 1] >= y0) & (p[:, 1] <= y1)]
+             - attr(side, "centre", 0.0) for side in sides for p in [side["x"][()]]]
+        s = np.concatenate(s) if s else np.empty(0)
+        return (s.min(), s.max()) if len(s) and s.max() > s.min() else None
+    pmax = max([np.max(v["pressure"][()], initial=0.0) for v in sides], default=0.0)
+    if pmax <= 0:
+        return None
+    s = np.concatenate([v["s"][()][v["pressure"][()] > 1e-3 * pmax] - attr(v, "centre", 0.0)
+                        for v in sides] + [[-hertz_a, hertz_a] if hertz_a > 0 else []])
+    lo, hi = s.min(), s.max()
+    half = (hi - lo) / 2 if hi > lo else 1e-3 * max(1.0, abs(lo))
+    factor = 1.5 if zoom is None else zoom
+    return ((lo + hi) / 2 - factor * half, (lo + hi) / 2 + factor * half)
+
+
+def plot_pressure(f, axes, units, zoom=None):
     for ax, (pair, g) in zip(axes, f["contact"].items()):
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
         for side in g.values():
@@ -127,35 +342,48 @@ def plot_pressure(f, axes):
                 ax.plot(s, side["pressure"][()], "o-", ms=3, lw=0.8,
                         label=f"{attr(side, 'body')}:{attr(side, 'group')} (one-sided)")
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
-        text = [f"P = {attr(g, 'P', float('nan')):.4g} N/m"]
-        if hertz:
+        text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force')}"]
+        xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0)
+        if hertz and a > 0:
             pmax = attr(g, "hertz_pmax")
             t = np.linspace(-a, a, 401)
-            ax.plot(np.r_[-1.5 * a, t, 1.5 * a],
+            ends = (min(-a, xr[0]), max(a, xr[1])) if xr else (-1.5 * a, 1.5 * a)
+            ax.plot(np.r_[ends[0], t, ends[1]],
                     np.r_[0, pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None)), 0],
                     "k-", lw=1.5, label="Hertz")
             fa, fp = attr(g, "fem_a"), attr(g, "fem_pmax")
-            text += [f"Hertz: a = {a:.4g} m, p_max = {pmax:.4g} Pa",
-                     f"computed: a = {fa:.4g} m ({100 * (fa - a) / a:+.1f} %), "
-                     f"p_max = {fp:.4g} Pa ({100 * (fp - pmax) / pmax:+.1f} %)",
+            text += [f"Hertz: a = {units.value(a, 'length')}, "
+                     f"p_max = {units.value(pmax, 'stress')}",
+                     f"computed: a = {units.value(fa, 'length')} ({100 * (fa - a) / a:+.1f} %), "
+                     f"p_max = {units.value(fp, 'stress')} ({100 * (fp - pmax) / pmax:+.1f} %)",
                      f"relative L2 error of p: {100 * attr(g, 'pressure_l2_error'):.2f} %"]
-        if a and a > 0:
-            ax.set_xlim(-1.5 * a, 1.5 * a)
+        if xr is not None:
+            ax.set_xlim(*xr)
         ax.set_ylim(0, 1.45 * ax.get_ylim()[1])
         ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",
                 fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
         ax.legend(loc="upper right", fontsize=8)
         ax.grid(alpha=0.3)
-        ax.set_xlabel("arc position s - s_c [m]")
-        ax.set_ylabel("pressure p [Pa]")
+        ax.set_xlabel(units.label("arc position s - s_c", "length"))
+        ax.set_ylabel(units.label("pressure p", "stress"))
         ax.set_title(f"contact pressure, pair '{pair}'")
 
 
 def save(fig, path):
-    """Write the figure to a temporary file next to ``path``, then rename it."""
+    """Write the figure to a temporary file next to ``path``, then rename it.
+
+    mkstemp creates its file with mode 0600 (private, whatever the umask); the
+    rename would carry that mode to ``path``. So the temporary file is given
+    the mode an ordinary new file gets, 0666 less the umask, before the rename.
+    """
     directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise PlotError(f"{path}: no directory {directory}")
     fd, tmp = tempfile.mkstemp(suffix=".png", prefix=".plot_hertz-", dir=directory)
     try:
+        umask = os.umask(0o022)
+        os.umask(umask)
+        os.fchmod(fd, 0o666 & ~umask)
         with os.fdopen(fd, "wb") as out:
             fig.savefig(out, format="png", dpi=150, bbox_inches="tight")
         os.replace(tmp, path)
@@ -171,9 +399,22 @@ def main():
     parser.add_argument("-o", "--output", required=True, help="PNG file to write")
     parser.add_argument("--field", action="store_true",
                         help="plot von Mises stress on the deformed bodies instead")
-    parser.add_argument("--scale", type=float, default=1.0,
-                        help="displacement magnification for --field (default 1)")
-    args = parser.parse_args()
+    parser.add_argument("--scale", type=float, default=1.0, metavar="S",
+                        help="--field: magnify each body's deformation S times; its "
+                             "best-fit rigid motion (translation, rotation) is drawn "
+                             "unmagnified (default 1: as computed)")
+    parser.add_argument("--zoom", type=parse_zoom, nargs="?", const=DEFAULT_ZOOM, default=None,
+                        metavar="F|x0,x1,y0,y1",
+                        help="frame the loaded contact zone enlarged F times (alone: "
+                             "F = 3; the pressure plot's default is 1.5), or the "
+                             "window x0,x1,y0,y1 (field plot coordinates)")
+    parser.add_argument("--units", type=parse_units, default=None, metavar="LENGTH,STRESS",
+                        help="unit labels for the axes, e.g. mm,MPa (either may be "
+                             "empty), or none; default: /metadata attributes "
+                             "length_unit, stress_unit if present, else no units")
+    args = parser.parse_args(zoom_argv(sys.argv[1:]))
+    if not np.isfinite(args.scale):
+        parser.error(f"argument --scale: not a finite number: {args.scale}")
     try:
         if not os.path.isfile(args.file):
             raise PlotError(f"{args.file}: no such file")
@@ -182,20 +423,25 @@ def main():
         except OSError as err:
             raise PlotError(f"{args.file}: not a readable HDF5 file ({err})") from err
         with f:
+            units = args.units if args.units is not None else file_units(f)
             scene = attr(f["metadata"], "scene", "?") if "metadata" in f else "?"
             label = f"scene '{scene}': {os.path.basename(args.file)}"
             if args.field:
                 if "bodies" not in f:
                     raise PlotError(f"{args.file}: no /bodies group")
                 fig, ax = plt.subplots(figsize=(9, 6))
-                plot_field(f, args.scale, ax, label)
+                note = plot_field(f, args.scale, ax, label, units, args.zoom)
+                if note:
+                    print(f"{PROG}: note: {note}", file=sys.stderr)
             else:
                 if "contact" not in f or not len(f["contact"]):
-                    raise PlotError(f"{args.file}: no /contact group (no contact pairs)")
+                    print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
+                          f"skipped, nothing written (--field plots the stress)")
+                    return 0
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,
                                          layout="constrained")
-                plot_pressure(f, axes[:, 0])
+                plot_pressure(f, axes[:, 0], units, args.zoom)
                 fig.suptitle(label)
         save(fig, args.output)
     except (OSError, KeyError, ValueError, TypeError, PlotError) as err:

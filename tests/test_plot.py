@@ -1,0 +1,149 @@
+"""scripts/plot_hertz.py on the output of small runs (h = 0.2): exit status, PNG
+files with ordinary permissions, --zoom, --units, --scale, and a scene without
+contact (field plot only)."""
+import importlib.util
+import os
+import stat
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import ROOT, run_contact
+
+SCRIPT = ROOT / "scripts" / "plot_hertz.py"
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.fixture(scope="module")
+def hertz(tmp_path_factory):
+    d = tmp_path_factory.mktemp("hertz")
+    return run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.2"],
+                       d, name="hertz").output_path
+
+
+@pytest.fixture(scope="module")
+def disc(tmp_path_factory):
+    d = tmp_path_factory.mktemp("disc")
+    return run_contact(["-options_file", "meshes/disc/disc.opts", "-mesh_size", "0.2"],
+                       d, name="disc").output_path
+
+
+def plot(*args):
+    """Runs the script with umask 022, as a user's shell would have it."""
+    return subprocess.run([sys.executable, str(SCRIPT)] + [str(a) for a in args],
+                          capture_output=True, text=True, timeout=120,
+                          preexec_fn=lambda: os.umask(0o022))
+
+
+def assert_png(path):
+    assert path.read_bytes()[:8] == PNG_MAGIC
+    mode = stat.S_IMODE(path.stat().st_mode)
+    assert mode == 0o644, f"{path} has mode {mode:o}"
+    assert not [p for p in path.parent.iterdir() if p.name.startswith(".plot_hertz-")]
+
+
+def test_pressure_plot(hertz, tmp_path):
+    out = tmp_path / "p.png"
+    r = plot(hertz, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert_png(out)
+
+
+def test_pressure_zoom_units(hertz, tmp_path):
+    out = tmp_path / "pz.png"
+    r = plot(hertz, "--zoom", "3", "--units", "mm,MPa", "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert_png(out)
+
+
+@pytest.mark.parametrize("extra", [["--zoom"], ["--zoom", "2", "--scale", "5"],
+                                   ["--zoom", "-0.3,0.3,-0.3,0.3", "--units", "mm,MPa"]])
+def test_field_plot(hertz, tmp_path, extra):
+    out = tmp_path / "f.png"
+    r = plot(hertz, "--field", *extra, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert_png(out)
+
+
+def test_replaces_existing(hertz, tmp_path):
+    """Overwriting keeps the atomic rename and still gives an ordinary mode."""
+    out = tmp_path / "p.png"
+    out.write_bytes(b"old")
+    out.chmod(0o600)
+    assert plot(hertz, "-o", out).returncode == 0
+    assert_png(out)
+
+
+def test_bad_options(hertz, tmp_path):
+    for bad in (["--units", "mm"], ["--zoom", "0"], ["--zoom", "1,0,0,1"]):
+        r = plot(hertz, "--field", *bad, "-o", tmp_path / "x.png")
+        assert r.returncode == 2 and "error" in r.stderr, bad
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_no_contact_scene(disc, tmp_path):
+    """Without contact pairs the pressure plot is skipped with one line and status 0;
+    the field plot (also with --zoom, which has no contact zone to frame) works."""
+    out = tmp_path / "p.png"
+    r = plot(disc, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "no contact pairs" in r.stdout and len(r.stdout.strip().splitlines()) == 1
+    assert not out.exists()
+    for extra in ([], ["--zoom", "--scale", "10"]):
+        out = tmp_path / "f.png"
+        r = plot(disc, "--field", *extra, "-o", out)
+        assert r.returncode == 0, r.stderr
+        assert_png(out)
+
+
+def load_module():
+    spec = importlib.util.spec_from_file_location("plot_hertz", SCRIPT)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_scale_keeps_rigid_motion():
+    """--scale magnifies the deformation only: a rigid displacement (rotation and
+    translation) is drawn as it is, and the remainder S times."""
+    mod = load_module()
+    rng = np.random.default_rng(1)
+    X = rng.uniform(-1, 1, (50, 2))
+    w = rng.uniform(0.5, 1.5, 50)
+    t = 0.3
+    R = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
+    rigid = X @ R.T + [0.2, -0.5]
+    fit = mod.RigidFit(X, rigid, w)
+    assert np.allclose(fit.display(X, rigid, 10.0), rigid, atol=1e-12)
+    d = 1e-3 * np.column_stack([X[:, 0], -0.5 * X[:, 1]])   # a strain, no rotation
+    x = rigid + d @ R.T
+    fit = mod.RigidFit(X, x, w)
+    shown = fit.display(X, x, 20.0)
+    assert np.allclose(shown - fit.rigid(X), 20 * (x - fit.rigid(X)))
+    assert np.abs(fit.rigid(X) - rigid).max() < 2e-3     # the push is not magnified
+    assert np.array_equal(fit.display(X, x, 1.0), x)
+
+
+def test_units_from_metadata(hertz, tmp_path):
+    """/metadata length_unit, stress_unit label the axes; --units overrides them."""
+    mod = load_module()
+    h5 = tmp_path / "units.h5"
+    h5.write_bytes(hertz.read_bytes())
+    with h5py.File(h5, "a") as f:
+        f["metadata"].attrs["length_unit"] = np.bytes_("mm")
+        f["metadata"].attrs["stress_unit"] = np.bytes_("MPa")
+    import matplotlib.pyplot as plt
+    with h5py.File(h5, "r") as f:
+        fig, ax = plt.subplots()
+        mod.plot_field(f, 1.0, ax, "", mod.file_units(f))
+        assert ax.get_xlabel() == "x [mm]"
+        plt.close(fig)
+        fig, ax = plt.subplots()
+        mod.plot_field(f, 1.0, ax, "", mod.parse_units("none"))
+        assert ax.get_xlabel() == "x"
+        plt.close(fig)
+    with h5py.File(hertz, "r") as f:
+        assert (mod.file_units(f).length, mod.file_units(f).stress) == ("", "")
