@@ -1,0 +1,212 @@
+"""Contact patch test (meshes/patch): two blocks pressed together along a flat
+interface with non-matching meshes (structured Quad9 of size h below,
+unstructured Tri6 of about 1.6 h above), different materials, symmetry plane
+x = 0, right edges free. The exact solution is the uniform uniaxial stress
+sigma_yy = -p (sigma_xx = sigma_xy = 0, sigma_zz = -nu p) in both blocks, the
+pressure p and the penetration p/k_p everywhere on the interface, with
+
+    d = p (H1 (1 - nu1^2)/E1 + H2 (1 - nu2^2)/E2) + p/k_p.
+
+A formulation passes the contact patch test if it reproduces this to round-off
+(test_patch_exact). Today's Gauss-point penalty does not: test_patch_report
+prints how far it is and asserts only what holds for any formulation
+(equilibrium) or what the scene's geometry fixes.
+
+To test a new formulation: add its options to FORMULATIONS and a
+pytest.param(name) line to STRICT (or drop the xfail mark of its line)."""
+from functools import lru_cache
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, run_contact
+
+OPTS = "meshes/patch/patch.opts"
+SOLVE = ["-tao_gttol", "1e-12"]          # equilibrium to round-off (gradient 3e-13)
+TOL = 1e-8                               # the strict bound: relative to p, u_max, p W
+
+# Options selecting each contact formulation (gpts: the default Gauss-point penalty).
+FORMULATIONS = {
+    "gpts": [],
+    "mortar": ["-contact_formulation", "mortar"],
+}
+STRICT = [
+    pytest.param("gpts", marks=pytest.mark.xfail(
+        strict=True, reason="the Gauss-point penalty does not pass the contact patch test")),
+    pytest.param("mortar", marks=pytest.mark.xfail(
+        strict=True, reason="mortar formulation not yet implemented")),
+]
+
+# Variants of the scene, as option overrides. "flush": the scene as written (equal
+# lateral strains, the blocks stay flush at x = W). "sliding": unequal lateral
+# strains (the interface slides; the lower block overhangs the upper one at x = W
+# by the difference, 2.5e-3 at p = 8): the uniform state is exact only to that
+# order there, so this variant is reported, not held to round-off.
+VARIANTS = {
+    "flush": {},
+    "sliding": {"-lower_E": "1000", "-upper_E": "3000", "-upper_nu": "0.2"},
+}
+
+
+def read_options(path):
+    """The options file as {option: value string} (comments and blank lines skipped)."""
+    opts = {}
+    for line in (ROOT / path).read_text().splitlines():
+        words = line.split("#", 1)[0].split(None, 1)
+        if words:
+            opts[words[0]] = words[1].strip() if len(words) > 1 else ""
+    return opts
+
+
+def scene(overrides):
+    """The scene's numbers, from the options file with overrides; for a variant
+    without its own push, d is chosen to keep the scene's p."""
+    o = dict(read_options(OPTS))
+    geo = {b: dict(kv.split("=") for kv in o[f"-{b}_geo_params"].split(",")) for b in ("lower", "upper")}
+    s = dict(E1=float(o["-lower_E"]), nu1=float(o["-lower_nu"]), H1=float(geo["lower"]["H"]),
+             E2=float(o["-upper_E"]), nu2=float(o["-upper_nu"]), H2=float(geo["upper"]["H"]),
+             W=float(geo["lower"]["W"]), kp=float(o["-contact_penalty"]))
+    assert float(geo["upper"]["W"]) == s["W"]
+
+    def compliance(s):
+        return (s["H1"] * (1 - s["nu1"] ** 2) / s["E1"] + s["H2"] * (1 - s["nu2"] ** 2) / s["E2"]
+                + 1 / s["kp"])
+    d = -float(o["-upper_bc_push_values"])
+    s["p"] = d / compliance(s)
+    o.update(overrides)
+    s.update(E1=float(o["-lower_E"]), nu1=float(o["-lower_nu"]),
+             E2=float(o["-upper_E"]), nu2=float(o["-upper_nu"]))
+    s["d"] = s["p"] * compliance(s) if overrides else d
+    return s
+
+
+def exact(s, body, X):
+    """Exact displacement and nodal stress (xx, yy, zz, xy) at reference points X."""
+    p = s["p"]
+    E, nu = (s["E1"], s["nu1"]) if body == "lower" else (s["E2"], s["nu2"])
+    exx, eyy = nu * (1 + nu) * p / E, -(1 - nu ** 2) * p / E
+    u = np.empty_like(X)
+    u[:, 0] = exx * X[:, 0]
+    u[:, 1] = eyy * (X[:, 1] + s["H1"]) if body == "lower" else -s["d"] + eyy * (X[:, 1] - s["H2"])
+    sig = np.tile([0.0, -p, -nu * p, 0.0], (len(X), 1))
+    return u, sig
+
+
+@pytest.fixture(scope="module")
+def solve(tmp_path_factory):
+    """solve(formulation, variant) -> (scene numbers, run), each run once per module."""
+    return lru_cache(maxsize=None)(lambda f, v: _solve(f, v, tmp_path_factory.mktemp("patch")))
+
+
+def _solve(formulation, variant, tmp):
+    s = scene(VARIANTS[variant])
+    args = ["-options_file", OPTS] + SOLVE + FORMULATIONS[formulation]
+    for k, v in VARIANTS[variant].items():
+        args += [k, v]
+    if VARIANTS[variant]:
+        args += ["-upper_bc_push_values", repr(-s["d"])]
+    return s, run_contact(args, tmp, name=f"{formulation}-{variant}")
+
+
+def lower_force(summary):
+    """The contact force on the lower block (x, y), from the JSON summary."""
+    surf = summary["contact"]["interface"]["surfaces"]
+    return next(x["force"] for x in surf if x["body"] == "lower")
+
+
+def fmt(a):
+    return "(" + ", ".join(f"{v:.1e}" for v in a) + ")"
+
+
+def errors(s, res):
+    """Everything measured against the exact solution, printed and returned."""
+    p, kp, W = s["p"], s["kp"], s["W"]
+    e = {"surfaces": {}, "bodies": {}}
+    print(f"\np = {p:.10g}, d = {s['d']:.10g}, k_p = {kp:g}, exact penetration p/k_p = {p / kp:.6e}")
+    with res.h5() as f:
+        for name, g in f["contact/interface"].items():
+            pr, gap, w = g["pressure"][...], g["gap"][...], g["weight"][...]
+            r = dict(n=len(pr), pmin=pr.min(), pmax=pr.max(),
+                     p_maxrel=np.abs(pr - p).max() / p,
+                     p_l2rel=np.sqrt(np.sum(w * (pr - p) ** 2) / np.sum(w * p * p)),
+                     pen_min=-gap.max(), pen_max=-gap.min(),
+                     pen_maxrel=np.abs(-gap - p / kp).max() / (p / kp),
+                     length=w.sum(), pint=np.sum(w * pr))
+            e["surfaces"][name] = r
+            print(f"  {name:14s} {r['n']:3d} points: p in [{r['pmin']:.4f}, {r['pmax']:.4f}] (exact {p:g}), "
+                  f"max rel {r['p_maxrel']:.2e}, L2 rel {r['p_l2rel']:.2e}; penetration in "
+                  f"[{r['pen_min']:.4e}, {r['pen_max']:.4e}], max rel {r['pen_maxrel']:.2e}; int p ds {r['pint']:.6f}")
+        for body in ("lower", "upper"):
+            g = f["bodies"][body]
+            X, u, sig = g["geometry"][...], g["displacement"][...], g["stress"][...]
+            ue, se = exact(s, body, X)
+            far = np.abs(X[:, 1]) >= 0.3 * (s["H1"] if body == "lower" else s["H2"])
+            r = dict(u_rel=np.abs(u - ue).max() / np.abs(ue).max(),
+                     sig_rel=np.abs(sig - se).max(axis=0) / p,
+                     sig_rel_far=np.abs(sig[far] - se[far]).max(axis=0) / p,
+                     syy=(sig[:, 1].min(), sig[:, 1].max()),
+                     xright=(X[:, 0] + u[:, 0])[np.isclose(X[:, 0], W) & np.isclose(X[:, 1], 0)])
+            e["bodies"][body] = r
+            print(f"  {body:5s} max |u - u_ex| / max |u_ex| = {r['u_rel']:.2e}; max |sigma - sigma_ex| / p "
+                  f"(xx, yy, zz, xy) = {fmt(r['sig_rel'])}, at |y| >= 0.3 H: {fmt(r['sig_rel_far'])}; "
+                  f"sigma_yy in [{r['syy'][0]:.4f}, {r['syy'][1]:.4f}]")
+        xi = [np.sort(f["bodies"][b]["geometry"][...][np.abs(f["bodies"][b]["geometry"][:, 1]) < 1e-12, 0])
+              for b in ("lower", "upper")]
+    dist = np.abs(xi[1][:, None] - xi[0][None, :]).min(axis=1)
+    e["interface_nodes"], e["node_distance"] = xi, dist
+    print(f"  interface nodes: {len(xi[0])} lower, {len(xi[1])} upper (mean edge {2 * W / (len(xi[0]) - 1):.4f}, "
+          f"{2 * W / (len(xi[1]) - 1):.4f}); ends shared: {dist[0]:.1e}, {dist[-1]:.1e}; "
+          f"nearest interior pair {dist[1:-1].min():.4f} apart")
+    x1, x2 = e["bodies"]["lower"]["xright"], e["bodies"]["upper"]["xright"]
+    e["overhang"] = float(x1[0] - x2[0])
+    F = -lower_force(res.summary)[1]
+    e["force_rel"] = F / (p * W) - 1
+    print(f"  right interface ends x = {W:g}: current x {x1[0]:.6f} (lower), {x2[0]:.6f} (upper), "
+          f"lower overhangs by {e['overhang']:.2e}")
+    print(f"  contact force {F:.12g} = p W (1 {e['force_rel']:+.2e})")
+    return e
+
+
+@pytest.mark.parametrize("variant", list(VARIANTS))
+def test_patch_report(variant, solve):
+    """Today's formulation: prints its errors; asserts equilibrium (contact force =
+    reaction at the pushed edge = reaction at the base; x reactions at the two
+    symmetry planes opposite), the interface length and, loosely, P = p W."""
+    s, res = solve("gpts", variant)
+    e = errors(s, res)
+    sm = res.summary
+    (fx, fy), R = lower_force(sm), sm["reactions"]
+    F = -fy
+    print(f"  force on lower ({fx:.6e}, {fy:.12g}); reactions {R}")
+    assert sm["converged"]
+    # each block in equilibrium under the contact force and its supports
+    assert abs(fy + R["lower:base"][1]) <= 1e-10 * F
+    assert abs(fy - R["upper:push"][1]) <= 1e-10 * F
+    assert abs(fx + R["lower:symmetry"][0]) <= 1e-10 * F
+    assert abs(fx - R["upper:symmetry"][0]) <= 1e-10 * F
+    for r in e["surfaces"].values():
+        assert abs(r["length"] - s["W"]) <= 1e-12
+    # non-matching meshes: only the two end nodes are shared, element sizes about 1:1.6
+    xl, xu = e["interface_nodes"]
+    assert e["node_distance"][0] <= 1e-12 and e["node_distance"][-1] <= 1e-12
+    assert e["node_distance"][1:-1].min() >= 5e-3
+    assert 1.5 <= (len(xl) - 1) / (len(xu) - 1) <= 1.8
+    # not exact for a formulation that fails the patch test: measured -2.6e-6
+    # (flush), -2.1e-5 (sliding)
+    assert abs(e["force_rel"]) <= 1e-4
+
+
+@pytest.mark.parametrize("formulation", STRICT)
+def test_patch_exact(formulation, solve):
+    """A formulation that passes the contact patch test: pressure p and
+    penetration p/k_p at every slave point, displacement and stress of the
+    uniform solution at every node, force p W, all to 1e-8 relative."""
+    s, res = solve(formulation, "flush")
+    e = errors(s, res)
+    for name, r in e["surfaces"].items():
+        assert r["p_maxrel"] <= TOL, name
+        assert r["pen_maxrel"] <= TOL, name
+    for body, r in e["bodies"].items():
+        assert np.all(r["sig_rel"] <= TOL), body
+        assert r["u_rel"] <= TOL, body
+    assert abs(e["force_rel"]) <= TOL
