@@ -14,35 +14,21 @@
    n(eta*) with n the master body's outward unit normal. The pair's energy is
    (E_AB + E_BA) / 2 and the contact pressure at a slave point is p = k_p <-g>_+.
 
-   Gradient. At an orthogonal projection x_s - x_m = g n and x_m' . n = 0, so
-   the variations of eta* and of n drop out:
-     dg = n . (sum_i N_i(xi) du_i - sum_j M_j(eta*) du_j)
-   (N slave, M master edge shape functions over the seven nodes of the blended
-   edge): this is the exact derivative of g, including its dependence on the
-   closest point and the normal. It is approximate only where the projection
-   falls on a corner the blend leaves (a real corner of the surface, over 30
-   degrees, or -contact_blend 0).
-   dE_AB = -k_p int <-g>_+ dg dS.
-
-   Hessian. d2E_AB = k_p int H(-g) (dg dg + g d2g) dS. The Gauss-Newton part
-   alone (-contact_hessian gauss_newton) is symmetric positive semi-definite;
-   the term it drops is of the order of the penetration over the edge length,
-   but it holds the tangential modes, so that Newton with it converges only
-   linearly. -contact_hessian exact adds it; auto (the default, problem.c)
-   adds it once the gradient is small. With t = x_m'(eta*), tau = t/|t|,
-   kappa = n . x_m'', D = |t|^2 - g kappa, varying the projection condition
-   (x_s - x_m) . t = 0 gives
-     d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
-   (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
-     d2g = -(kappa a a + g b b + |t| (a b + b a)) / D,
-   symmetric; it is exact away from edge ends (eta* = +-1, where the
-   Gauss-Newton part alone is used).
+   Gradient and Hessian. dg is exact (gap.c), so
+     dE_AB = -k_p int <-g>_+ dg dS,
+     d2E_AB = k_p int H(-g) (dg dg + g d2g) dS.
+   The Gauss-Newton part alone (-contact_hessian gauss_newton) is symmetric
+   positive semi-definite; the term it drops is of the order of the
+   penetration over the edge length, but it holds the tangential modes, so
+   that Newton with it converges only linearly. -contact_hessian exact adds it
+   (d2g from gap.c); auto (the default, problem.c) adds it once the gradient
+   is small.
 
    The energy-gradient, Hessian and profile kernels share the point geometry
    (GPTSPointProject) and differ in what they accumulate. */
 #include "contactreport.h"
 #include "edge.h"
-#include "search.h"
+#include "gap.h"
 
 typedef struct {
   ContactPairSpec spec;
@@ -58,38 +44,20 @@ typedef struct {
 
 static PetscLogEvent GPTS_EnergyGrad, GPTS_Search, GPTS_Hessian, GPTS_Report;
 
-/* A slave point against the master surface: the closest point, the master
-   shape functions there, the outward normal and the gap. */
+/* Slave point q of slave edge se: its shape functions and current position,
+   and its gap against the master surface. */
 typedef struct {
-  PetscReal N[3], dN[3], xs[2];
-  PetscInt  me;                     /* master edge, -1 if none or beyond an end of the master surface */
-  PetscReal eta, M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
+  PetscReal  N[3], dN[3], xs[2];
+  ContactGap G;
 } GPTSPoint;
 
-static inline void GPTSPointProject(const GPTS *cp, const ContactSurface *S, ContactSurface *M, ContactSearch search, PetscInt se, PetscInt q, GPTSPoint *P)
+static inline void GPTSPointProject(const GPTS *cp, const ContactSurface *S, const ContactSurface *M, ContactSearch search, PetscInt se, PetscInt q, GPTSPoint *P)
 {
-  const PetscInt *sn = &S->enodes[3 * se];
-  PetscReal       ts[2];
+  PetscReal ts[2];
 
   EdgeShape(cp->xi[q], P->N, P->dN);
-  EdgeEval(S->x, sn, cp->xi[q], P->xs, ts);
-  P->eta = 0.0;
-  ContactSearchFindClosest(search, P->xs, &P->me, &P->eta);
-  if (P->me < 0) return;
-  {
-    const PetscInt *mn = &M->mnodes[7 * P->me];
-    /* beyond an end of the master surface: no contact */
-    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
-      P->me = -1;
-      return;
-    }
-  }
-  MasterShape(M, P->me, P->eta, P->M7, P->dM7, P->d2M7); /* once: the point, normal and derivatives below */
-  MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
-  P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
-  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
-  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
-  P->gap  = (P->xs[0] - P->xm[0]) * P->n[0] + (P->xs[1] - P->xm[1]) * P->n[1];
+  EdgeEval(S->x, &S->enodes[3 * se], cp->xi[q], P->xs, ts);
+  ContactGapProject(M, search, P->xs, &P->G);
 }
 
 /* One-sided energy and gradient: slave s against master 1 - s, weight c (1/2
@@ -108,14 +76,14 @@ static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal
       PetscReal       pen, f;
 
       GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
-      if (P.me < 0 || P.gap >= 0.0) continue;
-      pen = -P.gap;
+      if (P.G.me < 0 || P.G.gap >= 0.0) continue;
+      pen = -P.G.gap;
       e += c * 0.5 * cp->kp * w * pen * pen;
       f = c * cp->kp * w * pen;
       for (PetscInt i = 0; i < 3; ++i)
-        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.n[d];
+        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.G.n[d];
       for (PetscInt j = 0; j < 7; ++j)
-        for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.me + j] + d] += f * P.M7[j] * P.n[d];
+        for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.G.me + j] + d] += f * P.G.M7[j] * P.G.n[d];
     }
   }
   *energy += e;
@@ -136,40 +104,14 @@ static PetscErrorCode GPTSSlaveHessian(GPTS *cp, PetscInt s, PetscReal c, Mat H)
       PetscInt        idx[20];
       PetscReal       dg[20];
       PetscScalar     K[400];
-      const PetscInt *mn;
 
       GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
-      if (P.me < 0 || P.gap >= 0.0) continue;
-      mn = &M->mnodes[7 * P.me];
-      for (PetscInt d = 0; d < 2; ++d) {
-        for (PetscInt i = 0; i < 3; ++i) {
-          idx[2 * i + d] = S->big[2 * sn[i] + d];
-          dg[2 * i + d]  = P.N[i] * P.n[d];
-        }
-        for (PetscInt j = 0; j < 7; ++j) {
-          idx[6 + 2 * j + d] = M->big[2 * mn[j] + d];
-          dg[6 + 2 * j + d]  = -P.M7[j] * P.n[d];
-        }
-      }
+      if (P.G.me < 0 || P.G.gap >= 0.0) continue;
+      ContactGapIndices(S, sn, M, &P.G, idx);
+      ContactGapFirst(&P.G, P.N, dg);
       for (PetscInt i = 0; i < 20; ++i)
         for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] = kw * dg[i] * dg[j];
-      if (cp->exactHessian && PetscAbsReal(P.eta) < 1.0) {
-        const PetscReal tau[2] = {P.tm[0] / P.tn, P.tm[1] / P.tn};
-        const PetscReal kappa = P.n[0] * P.xpp[0] + P.n[1] * P.xpp[1], D = P.tn * P.tn - P.gap * kappa;
-        PetscReal       a[20], b[20];
-        for (PetscInt d = 0; d < 2; ++d) {
-          for (PetscInt i = 0; i < 3; ++i) {
-            a[2 * i + d] = P.N[i] * tau[d];
-            b[2 * i + d] = 0.0;
-          }
-          for (PetscInt j = 0; j < 7; ++j) {
-            a[6 + 2 * j + d] = -P.M7[j] * tau[d];
-            b[6 + 2 * j + d] = P.dM7[j] * P.n[d];
-          }
-        }
-        for (PetscInt i = 0; i < 20; ++i)
-          for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] -= kw * P.gap * (kappa * a[i] * a[j] + P.gap * b[i] * b[j] + P.tn * (a[i] * b[j] + b[i] * a[j])) / D;
-      }
+      if (cp->exactHessian) ContactGapAddSecond(&P.G, P.N, kw * P.G.gap, K);
       PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
     }
   }
@@ -198,18 +140,18 @@ static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[]
       r[CONTACT_ROW_Y]   = sp[2];
       r[CONTACT_ROW_XC]  = P.xs[0];
       r[CONTACT_ROW_YC]  = P.xs[1];
-      r[CONTACT_ROW_GAP] = P.me < 0 ? PETSC_INFINITY : P.gap;
+      r[CONTACT_ROW_GAP] = P.G.me < 0 ? PETSC_INFINITY : P.G.gap;
       r[CONTACT_ROW_P]   = 0.0;
       r[CONTACT_ROW_W]   = sp[3];
-      if (P.me < 0 || P.gap >= 0.0) continue;
-      pen              = -P.gap;
+      if (P.G.me < 0 || P.G.gap >= 0.0) continue;
+      pen              = -P.G.gap;
       r[CONTACT_ROW_P] = cp->kp * pen;
       *maxPen          = PetscMax(*maxPen, pen);
       f                = c * cp->kp * sp[3] * pen;
-      force[s][0] += f * P.n[0];
-      force[s][1] += f * P.n[1];
-      force[1 - s][0] -= f * P.n[0];
-      force[1 - s][1] -= f * P.n[1];
+      force[s][0] += f * P.G.n[0];
+      force[s][1] += f * P.G.n[1];
+      force[1 - s][0] -= f * P.G.n[0];
+      force[1 - s][1] -= f * P.G.n[1];
     }
   }
 }

@@ -1,0 +1,22 @@
+#pragma once
+#include "search.h"
+
+/* The normal gap of a slave point against the master surface, and its first
+   and second derivatives with respect to the 20 dofs it depends on: the slave
+   edge's 3 nodes and the master edge's 7 (gap.c; derivation there). Shared by
+   every formulation. */
+typedef struct {
+  PetscInt  me;  /* master edge; -1 if none faces the point (none within reach, or beyond an end of the master surface) */
+  PetscReal eta; /* closest point on it */
+  PetscReal M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
+} ContactGap;
+
+/* Closest point of the master surface to the slave point xs, its outward
+   normal n and the gap g = (xs - x_m) . n. */
+void ContactGapProject(const ContactSurface *M, ContactSearch, const PetscReal xs[2], ContactGap *);
+/* The indices in the joined vector of the 20 dofs: slave edge sn's nodes, then the master edge's. */
+void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *, PetscInt idx[20]);
+/* dg over the 20 dofs, with N the slave edge's shape functions at the point. */
+void ContactGapFirst(const ContactGap *, const PetscReal N[3], PetscReal dg[20]);
+/* K += c d2g (nothing at an end of the master edge, where d2g is not defined). */
+void ContactGapAddSecond(const ContactGap *, const PetscReal N[3], PetscReal c, PetscScalar K[400]);

@@ -1,0 +1,84 @@
+/* The normal gap of a slave point and its derivatives.
+
+   The slave point x_s = sum_i N_i(xi) x_i is projected onto the closest point
+   x_m(eta*) of the master surface (edge.h: each master edge the quadratic
+   curve through its current nodes, blended C1 into its neighbours, linear in
+   its seven nodes: x_m = sum_j M_j(eta) x_j), and g = (x_s - x_m(eta*)) .
+   n(eta*) with n the master body's outward unit normal.
+
+   First derivative. At an orthogonal projection x_s - x_m = g n and
+   x_m' . n = 0, so the variations of eta* and of n drop out:
+     dg = n . (sum_i N_i du_i - sum_j M_j(eta*) du_j),
+   exact, including the dependence on the closest point and the normal. It is
+   approximate only where the projection falls on a corner the blend leaves (a
+   real corner of the surface, over 30 degrees, or -contact_blend 0).
+
+   Second derivative. With t = x_m'(eta*), tau = t/|t|, kappa = n . x_m'',
+   D = |t|^2 - g kappa, varying the projection condition (x_s - x_m) . t = 0
+   gives
+     d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
+   (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
+     d2g = -(kappa a a + g b b + |t| (a b + b a)) / D,
+   symmetric; exact away from the master edge's ends (eta* = +-1). */
+#include "gap.h"
+#include "edge.h"
+
+void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
+{
+  P->eta = 0.0;
+  ContactSearchFindClosest(search, xs, &P->me, &P->eta);
+  if (P->me < 0) return;
+  {
+    const PetscInt *mn = &M->mnodes[7 * P->me];
+    /* beyond an end of the master surface: no contact */
+    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
+      P->me = -1;
+      return;
+    }
+  }
+  MasterShape(M, P->me, P->eta, P->M7, P->dM7, P->d2M7); /* once: the point, normal and derivatives below */
+  MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
+  P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
+  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
+  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
+  P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+}
+
+void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *P, PetscInt idx[20])
+{
+  const PetscInt *mn = &M->mnodes[7 * P->me];
+
+  for (PetscInt d = 0; d < 2; ++d) {
+    for (PetscInt i = 0; i < 3; ++i) idx[2 * i + d] = S->big[2 * sn[i] + d];
+    for (PetscInt j = 0; j < 7; ++j) idx[6 + 2 * j + d] = M->big[2 * mn[j] + d];
+  }
+}
+
+void ContactGapFirst(const ContactGap *P, const PetscReal N[3], PetscReal dg[20])
+{
+  for (PetscInt d = 0; d < 2; ++d) {
+    for (PetscInt i = 0; i < 3; ++i) dg[2 * i + d] = N[i] * P->n[d];
+    for (PetscInt j = 0; j < 7; ++j) dg[6 + 2 * j + d] = -P->M7[j] * P->n[d];
+  }
+}
+
+void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c, PetscScalar K[400])
+{
+  const PetscReal tau[2] = {P->tm[0] / P->tn, P->tm[1] / P->tn};
+  const PetscReal kappa = P->n[0] * P->xpp[0] + P->n[1] * P->xpp[1], D = P->tn * P->tn - P->gap * kappa;
+  PetscReal       a[20], b[20];
+
+  if (PetscAbsReal(P->eta) >= 1.0) return;
+  for (PetscInt d = 0; d < 2; ++d) {
+    for (PetscInt i = 0; i < 3; ++i) {
+      a[2 * i + d] = N[i] * tau[d];
+      b[2 * i + d] = 0.0;
+    }
+    for (PetscInt j = 0; j < 7; ++j) {
+      a[6 + 2 * j + d] = -P->M7[j] * tau[d];
+      b[6 + 2 * j + d] = P->dM7[j] * P->n[d];
+    }
+  }
+  for (PetscInt i = 0; i < 20; ++i)
+    for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] -= c * (kappa * a[i] * a[j] + P->gap * b[i] * b[j] + P->tn * (a[i] * b[j] + b[i] * a[j])) / D;
+}
