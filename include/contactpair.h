@@ -32,3 +32,4 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bo
 
 /* The formulations (one file each). */
 PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *, EnergyTerm);
+PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *, EnergyTerm);

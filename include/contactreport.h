@@ -19,6 +19,7 @@ typedef struct {
   PetscReal            *rows;     /* [n][CONTACT_ROW_COLS], sorted by s */
   PetscReal             force[2]; /* contact force on the surface's body */
   PetscInt              nedges;
+  PetscBool             slave; /* the surface acts as slave: it has a profile */
   ContactProfileFigures fig;
 } ContactSide;
 

@@ -17,6 +17,7 @@ PetscErrorCode ContactFormulationRegisterAll(void)
   PetscFunctionBeginUser;
   if (ContactFormulationList) PetscFunctionReturn(0);
   PetscCall(ContactFormulationRegister("gpts", ContactTermCreate_GPTS));
+  PetscCall(ContactFormulationRegister("mortar", ContactTermCreate_Mortar));
   PetscFunctionReturn(0);
 }
 

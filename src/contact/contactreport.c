@@ -93,10 +93,22 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
     /* every rank holds the figures (HDF5 attributes are written collectively) */
     PetscCallMPI(MPI_Bcast(&R->side[s].fig, sizeof(ContactProfileFigures) / sizeof(PetscReal), MPIU_REAL, 0, comm));
   }
-  R->femPmax = 0.5 * (R->side[0].fig.pmax + R->side[1].fig.pmax);
-  R->femA    = 0.5 * (R->side[0].fig.a + R->side[1].fig.a);
-  R->femAm   = 0.5 * (R->side[0].fig.am + R->side[1].fig.am);
-  R->l2err   = 0.5 * (R->side[0].fig.l2err + R->side[1].fig.l2err);
+  { /* the mean over the surfaces that act as slave */
+    PetscReal f[4] = {0, 0, 0, 0};
+    PetscInt  n    = 0;
+    for (PetscInt s = 0; s < 2; ++s) {
+      if (!R->side[s].slave) continue;
+      f[0] += R->side[s].fig.pmax;
+      f[1] += R->side[s].fig.a;
+      f[2] += R->side[s].fig.am;
+      f[3] += R->side[s].fig.l2err;
+      n++;
+    }
+    R->femPmax = f[0] / n;
+    R->femA    = f[1] / n;
+    R->femAm   = f[2] / n;
+    R->l2err   = f[3] / n;
+  }
   R->done    = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -123,6 +135,10 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
           if (first < 0) first = i;
           last = i;
         }
+      if (!S->slave) {
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s:%s: master only\n", bodies[spec->body[s]]->name, spec->group[s]));
+        continue;
+      }
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
       if (first < 0) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));

@@ -19,7 +19,15 @@
      d eta = (|t| a . du + g b . du) / D,   a = tau . (du_s - du_m), b = n . du_m'
    (du_m' = sum_j M_j'(eta*) du_j), and with dn = -(n . dt / |t|) tau,
      d2g = -(kappa a a + g b b + |t| (a b + b a)) / D,
-   symmetric; exact away from the master edge's ends (eta* = +-1). */
+   symmetric; exact away from the master edge's ends (eta* = +-1).
+
+   Corners. Where the master's edges meet at a corner (-contact_blend 0, or a
+   real corner of the surface) a point outside a convex corner, or inside a
+   concave one, has the corner node as its closest point over a fan of
+   directions; there g is the signed distance to the node and n the unit
+   vector from the node to the point, so that g is continuous, and
+   dg = n . (du_s - du_v) (the second-order term of the distance, a a / g, is
+   left out). */
 #include "gap.h"
 #include "edge.h"
 
@@ -42,6 +50,19 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
   P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
   P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
   P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+  if (PetscAbsReal(P->eta) >= 1.0) {
+    /* the closest point is a node where the edges meet at a corner (no blend):
+       in the fan of normals there g is the signed distance to the node, along
+       the direction to the point, so that g stays continuous (C1 outside a
+       convex corner) */
+    const PetscReal d[2] = {xs[0] - P->xm[0], xs[1] - P->xm[1]}, dist = PetscSqrtReal(d[0] * d[0] + d[1] * d[1]);
+    if (dist > 0) {
+      const PetscReal sg = P->gap >= 0 ? 1.0 : -1.0;
+      P->gap             = sg * dist;
+      P->n[0]            = sg * d[0] / dist;
+      P->n[1]            = sg * d[1] / dist;
+    }
+  }
 }
 
 void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *P, PetscInt idx[20])

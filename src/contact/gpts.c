@@ -214,7 +214,10 @@ static PetscErrorCode GPTSPostProcess(EnergyTerm t, Body bodies[])
   GPTSSlaveProfile(cp, 1, 0.5, rows[1], force, &maxPen);
   PetscCall(ContactReportReset(&cp->report));
   cp->report.kp = cp->kp;
-  for (PetscInt s = 0; s < 2; ++s) cp->report.side[s].nedges = cp->S[s].ne;
+  for (PetscInt s = 0; s < 2; ++s) {
+    cp->report.side[s].nedges = cp->S[s].ne;
+    cp->report.side[s].slave  = PETSC_TRUE;
+  }
   PetscCall(ContactReportFinish(&cp->report, &cp->spec, t->comm, cp->npts, rows, (const PetscReal(*)[2])force, maxPen, L));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
   PetscCall(PetscLogEventEnd(GPTS_Report, 0, 0, 0, 0));

@@ -1,0 +1,640 @@
+/* Contact formulation "mortar": penalty on nodal weighted gaps, integrated
+   segment by segment, both surfaces as slave (averaged as in gpts).
+
+   With S the slave surface, N_j its quadratic (P2) basis at node j and dS
+   the reference length,
+
+     A_j = int_S N_j dS,   g_j = (1/C_j) int_S' N_j g dS,   C_j = int_S' N_j dS,
+     E_S = 1/2 k_p sum_j A_j <-g_j>_+^2,    p_j = k_p <-g_j>_+,
+
+   where g is the normal gap of gap.c (closest point on the master surface,
+   continuous across the master's nodes) and S' the part of the slave surface
+   that faces the master (C_j = A_j where the support of N_j faces it whole).
+   A quadratic N_j is negative on part of its support, so a node whose
+   support faces the master over less than half of A_j (C_j < A_j / 2: at the
+   end of the master surface, or beyond the search's reach) is left out. The pair's energy
+   is (E_A + E_B)/2, each surface taking its turn as slave. A uniform gap gives
+   g_j = g at every node and the consistent nodal forces of a uniform
+   pressure: the formulation passes the contact patch test, where collocation
+   at Gauss points (gpts) does not.
+
+   Segments. g is smooth along a slave edge except where the closest master
+   point crosses a master node (its normal turns, the master shape functions
+   change). Each slave edge is split there: the ends of a piece are projected;
+   if they fall on two master edges that share a node v, the split point solves
+   (x_s(xi) - x_v) . t_v = 0 (a quadratic in xi, t_v the master tangent at v,
+   continuous by the blend); otherwise the piece is halved (to 2^-12 of the
+   edge at most: the end of a master surface). Each segment takes a Gauss rule
+   of -contact_quadrature_points points (4 by default: degree 7).
+
+   Gradient. Since dg is exact (gap.c) and the integrand is continuous across
+   the moving split points,
+     dE_S = k_p sum_j A_j <g_j>_- dg_j = int_S' Lambda dg dS,
+     Lambda(xi) = k_p sum_j (A_j / C_j) min(g_j, 0) N_j(xi),
+   (C_j taken as fixed: it changes only where S' ends, at the end of the
+   master surface),
+   a pointwise term like gpts' with the smooth nodal field Lambda in place of
+   k_p g. Two passes: the weighted gaps (summed over the ranks that share a
+   node), then the gradient.
+
+   Hessian. d2E_S = k_p sum_{j: g_j < 0} (A_j / C_j^2) G_j G_j^T + int_S' Lambda d2g dS,
+   G_j = int_S' N_j dg dS. The second part is pointwise (gap.c's d2g, added
+   with -contact_hessian exact or auto); the first couples every dof under the
+   support of N_j, so it is assembled node by node, over the node's slave
+   edges, by the rank that owns the node (the lowest-numbered edge on it). */
+#include "contactreport.h"
+#include "edge.h"
+#include "gap.h"
+
+#define MORTAR_MAX_SEG   64
+#define MORTAR_MAX_DEPTH 12
+
+/* A quadrature point of a segment: slave edge, shape functions, weight (with
+   the reference length), gap. */
+typedef struct {
+  PetscInt   se;
+  PetscReal  N[3], W[3], wt; /* displacement shape functions, weight functions */
+  ContactGap G;
+} MortarPoint;
+
+/* The weight functions W_j of the nodal gaps on a slave edge: the quadratic
+   basis itself, linear hats on the corners (mid-edge nodes unweighted), or
+   linear hats on the two halves of the edge (every node, all positive). */
+typedef enum { MORTAR_BASIS_QUADRATIC, MORTAR_BASIS_LINEAR, MORTAR_BASIS_SUBLINEAR } MortarBasis;
+static const char *const MortarBases[] = {"quadratic", "linear", "sublinear", "MortarBasis", "MORTAR_BASIS_", NULL};
+
+static inline void MortarWeights(MortarBasis basis, PetscReal xi, PetscReal W[3])
+{
+  PetscReal dN[3];
+
+  switch (basis) {
+  case MORTAR_BASIS_QUADRATIC:
+    EdgeShape(xi, W, dN);
+    break;
+  case MORTAR_BASIS_LINEAR:
+    W[0] = 0.5 * (1.0 - xi);
+    W[1] = 0.5 * (1.0 + xi);
+    W[2] = 0.0;
+    break;
+  case MORTAR_BASIS_SUBLINEAR:
+    W[0] = xi < 0 ? -xi : 0.0;
+    W[1] = xi > 0 ? xi : 0.0;
+    W[2] = 1.0 - PetscAbsReal(xi);
+    break;
+  }
+}
+
+typedef struct {
+  PetscReal *A, *cover;    /* [nn] int N_j dS over the surface; int N_j over the part facing a master (summed over ranks) */
+  PetscReal *gw, *gj;      /* [nn] int N_j g dS (summed over ranks), g_j */
+  PetscReal *s;            /* [nn] arc position of the node */
+  PetscBool *mine;         /* [nn] node owned by this rank: its energy, Hessian block and report row */
+  PetscInt  *nodeEdgeStart, *nodeEdge; /* edges on each node */
+  PetscInt   np, npmax;    /* points of this rank's edges at the current state */
+  MortarPoint *pts;
+} MortarSide;
+
+typedef struct {
+  ContactPairSpec spec;
+  ContactSurface  S[2];
+  ContactSearch   search[2]; /* over S[s] as master */
+  MortarSide      side[2];   /* S[s] as slave */
+  PetscReal       kp, xq[8], wq[8];
+  PetscInt        nq;
+  MortarBasis     basis;
+  PetscBool       slave[2]; /* the surfaces that act as slave */
+  PetscReal       c;        /* weight of each one-sided energy: 1 / the number of slaves */
+  PetscBool       exactHessian;
+  ContactReport   report;
+} Mortar;
+
+static PetscLogEvent MORTAR_EnergyGrad, MORTAR_Search, MORTAR_Segments, MORTAR_Hessian, MORTAR_Report;
+
+/* Slave point of edge se at xi: position and reference length element. */
+static inline void MortarSlaveEval(const ContactSurface *S, PetscInt se, PetscReal xi, PetscReal xs[2], PetscReal *dS)
+{
+  PetscReal t[2], X[2], T[2];
+
+  EdgeEval(S->x, &S->enodes[3 * se], xi, xs, t);
+  EdgeEval(S->X, &S->enodes[3 * se], xi, X, T);
+  *dS = PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+}
+
+/* The master edge facing slave point xi of edge se (-1 if none). */
+static inline PetscInt MortarFacing(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi)
+{
+  PetscReal  xs[2], dS;
+  ContactGap G;
+
+  MortarSlaveEval(&m->S[s], se, xi, xs, &dS);
+  ContactGapProject(&m->S[1 - s], m->search[1 - s], xs, &G);
+  return G.me;
+}
+
+/* The parameter in (a, b) where slave edge se crosses the line through master
+   node v (end i of master edge ea, end j of eb) where the closest point
+   passes from ea to eb: normal to the mean of the two edges' unit tangents at
+   v (the bisector of their normals; the common normal where the blend makes
+   them meet smoothly); a - 1 if none. The crossing solves
+   (x_s(xi) - x_v) . tau = 0, a quadratic in xi. */
+static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b)
+{
+  const PetscInt *sn = &S->enodes[3 * se];
+  const PetscReal sg = i != j ? 1.0 : -1.0; /* tangents oriented the same way along the surface */
+  PetscReal       xv[2], ta[2], tb[2], xpp[2], tv[2], na, nb, c0 = 0, c1 = 0, c2 = 0, r[2];
+  PetscInt        nr = 0;
+
+  MasterEval(M, ea, i ? 1.0 : -1.0, xv, ta, xpp);
+  MasterEval(M, eb, j ? 1.0 : -1.0, xv, tb, xpp);
+  na = PetscSqrtReal(ta[0] * ta[0] + ta[1] * ta[1]);
+  nb = PetscSqrtReal(tb[0] * tb[0] + tb[1] * tb[1]);
+  for (PetscInt d = 0; d < 2; ++d) tv[d] = ta[d] / na + sg * tb[d] / nb;
+  for (PetscInt d = 0; d < 2; ++d) { /* x_s(xi) = x_m + xi (x_b - x_a)/2 + xi^2 ((x_a + x_b)/2 - x_m) */
+    const PetscReal xa = S->x[2 * sn[0] + d], xb = S->x[2 * sn[1] + d], xm = S->x[2 * sn[2] + d];
+    c0 += (xm - xv[d]) * tv[d];
+    c1 += 0.5 * (xb - xa) * tv[d];
+    c2 += (0.5 * (xa + xb) - xm) * tv[d];
+  }
+  if (PetscAbsReal(c2) <= 1e-14 * PetscAbsReal(c1)) {
+    if (c1 != 0) r[nr++] = -c0 / c1;
+  } else {
+    const PetscReal disc = c1 * c1 - 4 * c2 * c0;
+    if (disc >= 0) {
+      const PetscReal q = -0.5 * (c1 + (c1 >= 0 ? 1 : -1) * PetscSqrtReal(disc));
+      r[nr++]           = q / c2;
+      if (q != 0) r[nr++] = c0 / q;
+    }
+  }
+  for (PetscInt k = 0; k < nr; ++k)
+    if (r[k] > a && r[k] < b) return r[k];
+  return a - 1.0;
+}
+
+/* Splits [a, b] of slave edge se, whose ends face master edges ea and eb,
+   until each piece faces one master edge; appends the cut points to cut[]. */
+static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, PetscReal cut[])
+{
+  const ContactSurface *M = &m->S[1 - s];
+  PetscReal             c;
+  PetscInt              ec;
+
+  if (ea == eb || depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 2) return;
+  if (ea >= 0 && eb >= 0) {
+    for (PetscInt i = 0; i < 2; ++i)
+      for (PetscInt j = 0; j < 2; ++j)
+        if (M->enodes[3 * ea + i] == M->enodes[3 * eb + j]) {
+          c = MortarNodeCrossing(&m->S[s], se, M, ea, i, eb, j, a, b);
+          if (c > a) {
+            cut[(*ncut)++] = c;
+            return;
+          }
+        }
+  }
+  c  = 0.5 * (a + b);
+  ec = MortarFacing(m, s, se, c);
+  MortarSplit(m, s, se, a, ea, c, ec, depth + 1, ncut, cut);
+  cut[(*ncut)++] = c;
+  MortarSplit(m, s, se, c, ec, b, eb, depth + 1, ncut, cut);
+}
+
+/* Appends the quadrature points of slave edge se, segment by segment. */
+static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, PetscInt *np, PetscInt *npmax, MortarPoint **pts)
+{
+  const ContactSurface *S = &m->S[s];
+  PetscReal             cut[MORTAR_MAX_SEG + MORTAR_MAX_DEPTH + 4]; /* MortarSplit stops adding at MORTAR_MAX_SEG, then closes its open levels */
+  PetscInt              ncut = 0;
+
+  PetscFunctionBeginUser;
+  cut[ncut++] = -1.0;
+  if (m->basis == MORTAR_BASIS_SUBLINEAR) { /* the weights' kink at the mid-edge node */
+    const PetscInt e0 = MortarFacing(m, s, se, 0.0);
+    MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 0.0, e0, 0, &ncut, cut);
+    cut[ncut++] = 0.0;
+    MortarSplit(m, s, se, 0.0, e0, 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
+  } else MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
+  cut[ncut++] = 1.0;
+  if (*np + (ncut - 1) * m->nq > *npmax) {
+    MortarPoint *grown;
+    *npmax = 2 * (*np + (ncut - 1) * m->nq);
+    PetscCall(PetscMalloc1(*npmax, &grown));
+    PetscCall(PetscArraycpy(grown, *pts, *np));
+    PetscCall(PetscFree(*pts));
+    *pts = grown;
+  }
+  for (PetscInt k = 0; k + 1 < ncut; ++k) {
+    const PetscReal h = 0.5 * (cut[k + 1] - cut[k]), c = 0.5 * (cut[k + 1] + cut[k]);
+    if (h <= 0) continue;
+    for (PetscInt q = 0; q < m->nq; ++q) {
+      MortarPoint *P  = &(*pts)[(*np)++];
+      PetscReal    xi = c + h * m->xq[q], xs[2], dS, dN[3];
+      P->se           = se;
+      EdgeShape(xi, P->N, dN);
+      MortarWeights(m->basis, xi, P->W);
+      MortarSlaveEval(S, se, xi, xs, &dS);
+      P->wt = h * m->wq[q] * dS;
+      ContactGapProject(&m->S[1 - s], m->search[1 - s], xs, &P->G);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The current coordinates of both surfaces, their search grids, and for each
+   side the points of this rank's slave edges and the weighted gaps g_j. */
+static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceUpdateCoordinates(&m->S[s], bodies[m->S[s].body]));
+  PetscCall(PetscLogEventBegin(MORTAR_Search, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(m->search[s]));
+  PetscCall(PetscLogEventEnd(MORTAR_Search, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(MORTAR_Segments, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface *S = &m->S[s];
+    MortarSide     *D = &m->side[s];
+    D->np             = 0;
+    if (!m->slave[s]) continue;
+    for (PetscInt k = 0; k < S->nown; ++k) PetscCall(MortarEdgePoints(m, s, S->ownEdges[k], &D->np, &D->npmax, &D->pts));
+    PetscCall(PetscArrayzero(D->gw, 2 * S->nn)); /* gw and cover, adjacent: one reduction */
+    for (PetscInt k = 0; k < D->np; ++k) {
+      const MortarPoint *P  = &D->pts[k];
+      const PetscInt    *sn = &S->enodes[3 * P->se];
+      if (P->G.me < 0) continue;
+      for (PetscInt i = 0; i < 3; ++i) {
+        D->gw[sn[i]] += P->wt * P->W[i] * P->G.gap;
+        D->cover[sn[i]] += P->wt * P->W[i];
+      }
+    }
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, D->gw, 2 * S->nn, MPIU_REAL, MPIU_SUM, comm));
+    for (PetscInt j = 0; j < S->nn; ++j) D->gj[j] = D->cover[j] > 0.5 * D->A[j] ? D->gw[j] / D->cover[j] : PETSC_INFINITY;
+  }
+  PetscCall(PetscLogEventEnd(MORTAR_Segments, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Lambda at a point of slave edge se: c k_p sum_i (A_i / C_i) min(g_i, 0) W_i. */
+static inline PetscReal MortarLambda(const Mortar *m, const MortarSide *D, const PetscInt sn[3], const PetscReal W[3], PetscReal c)
+{
+  PetscReal L = 0.0;
+
+  for (PetscInt i = 0; i < 3; ++i)
+    if (D->gj[sn[i]] < 0) L += D->A[sn[i]] / D->cover[sn[i]] * D->gj[sn[i]] * W[i];
+  return c * m->kp * L;
+}
+
+static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  Mortar   *m = (Mortar *)t->data;
+  PetscReal e = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(m->S[s].g, 2 * m->S[s].nn));
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface   *S = &m->S[s], *M = &m->S[1 - s];
+    const MortarSide *D = &m->side[s];
+    if (!m->slave[s]) continue;
+    for (PetscInt j = 0; j < S->nn; ++j)
+      if (D->mine[j] && D->gj[j] < 0) e += 0.5 * m->c * m->kp * D->A[j] * D->gj[j] * D->gj[j];
+    for (PetscInt k = 0; k < D->np; ++k) {
+      const MortarPoint *P  = &D->pts[k];
+      const PetscInt    *sn = &S->enodes[3 * P->se], *mn;
+      PetscReal          f;
+      if (P->G.me < 0) continue;
+      f = P->wt * MortarLambda(m, D, sn, P->W, m->c);
+      if (f == 0) continue;
+      mn = &M->mnodes[7 * P->G.me];
+      for (PetscInt i = 0; i < 3; ++i)
+        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] += f * P->N[i] * P->G.n[d];
+      for (PetscInt j = 0; j < 7; ++j)
+        for (PetscInt d = 0; d < 2; ++d) M->g[2 * mn[j] + d] -= f * P->G.M7[j] * P->G.n[d];
+    }
+  }
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->S[s], bodies[m->S[s].body]));
+  *energy = e;
+  PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Adds v to the entry of index i of a sparse vector (idx, val, n). */
+static inline PetscErrorCode SparseAdd(PetscInt i, PetscReal v, PetscInt *n, PetscInt nmax, PetscInt idx[], PetscReal val[])
+{
+  PetscFunctionBeginUser;
+  if (i < 0) PetscFunctionReturn(0);
+  for (PetscInt k = 0; k < *n; ++k)
+    if (idx[k] == i) {
+      val[k] += v;
+      PetscFunctionReturn(0);
+    }
+  PetscCheck(*n < nmax, PETSC_COMM_SELF, PETSC_ERR_PLIB, "mortar: node support larger than %" PetscInt_FMT " dofs", nmax);
+  idx[*n]   = i;
+  val[(*n)++] = v;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
+{
+  Mortar        *m = (Mortar *)t->data;
+  const PetscInt nmax = 512;
+  PetscInt      *gidx, np = 0, npmax = 0;
+  PetscReal     *gval;
+  PetscScalar   *K;
+  MortarPoint   *pts = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(MORTAR_Hessian, 0, 0, 0, 0));
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  PetscCall(PetscMalloc3(nmax, &gidx, nmax, &gval, nmax * nmax, &K));
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface   *S = &m->S[s], *M = &m->S[1 - s];
+    const MortarSide *D = &m->side[s];
+    if (!m->slave[s]) continue;
+    /* int Lambda d2g dS, pointwise over this rank's edges */
+    for (PetscInt k = 0; k < D->np && m->exactHessian; ++k) {
+      const MortarPoint *P  = &D->pts[k];
+      const PetscInt    *sn = &S->enodes[3 * P->se];
+      PetscInt           idx[20];
+      PetscReal          L;
+      if (P->G.me < 0) continue;
+      L = MortarLambda(m, D, sn, P->W, m->c);
+      if (L == 0) continue;
+      PetscCall(PetscArrayzero(K, 400));
+      ContactGapAddSecond(&P->G, P->N, P->wt * L, K);
+      ContactGapIndices(S, sn, M, &P->G, idx);
+      PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
+    }
+    /* (c k_p A_j / C_j^2) G_j G_j^T for the active nodes this rank owns */
+    for (PetscInt j = 0; j < S->nn; ++j) {
+      PetscInt  n = 0;
+      PetscReal c;
+      if (!D->mine[j] || D->gj[j] >= 0) continue;
+      np = 0;
+      for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) PetscCall(MortarEdgePoints(m, s, D->nodeEdge[k], &np, &npmax, &pts));
+      for (PetscInt k = 0; k < np; ++k) {
+        const MortarPoint *P  = &pts[k];
+        const PetscInt    *sn = &S->enodes[3 * P->se];
+        PetscInt           idx[20], i0 = -1;
+        PetscReal          dg[20];
+        for (PetscInt i = 0; i < 3; ++i)
+          if (sn[i] == j) i0 = i;
+        if (P->G.me < 0 || i0 < 0) continue;
+        ContactGapIndices(S, sn, M, &P->G, idx);
+        ContactGapFirst(&P->G, P->N, dg);
+        for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(idx[l], P->wt * P->W[i0] * dg[l], &n, nmax, gidx, gval));
+      }
+      c = m->c * m->kp * D->A[j] / (D->cover[j] * D->cover[j]);
+      for (PetscInt a = 0; a < n; ++a)
+        for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
+      PetscCall(MatSetValues(H, n, gidx, n, gidx, K, ADD_VALUES));
+    }
+  }
+  PetscCall(PetscFree(pts));
+  PetscCall(PetscFree3(gidx, gval, K));
+  PetscCall(PetscLogEventEnd(MORTAR_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The nodal profile of each side (a row per node this rank owns: s, X, Y, x,
+   y, weighted gap, pressure, A_j; gap Inf where the master faces less than
+   half the node's support), the forces and the largest weighted penetration. */
+static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
+{
+  Mortar    *m = (Mortar *)t->data;
+  PetscReal *rows[2], force[2][2] = {{0, 0}, {0, 0}}, maxPen = 0.0, L[2];
+  PetscInt   nrow[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(MORTAR_Report, 0, 0, 0, 0));
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface   *S = &m->S[s];
+    const MortarSide *D = &m->side[s];
+    L[s]                = ContactSurfaceLength(S);
+    nrow[s]             = 0;
+    PetscCall(PetscMalloc1(CONTACT_ROW_COLS * S->nn + 1, &rows[s]));
+    if (!m->slave[s]) continue;
+    for (PetscInt j = 0; j < S->nn; ++j) {
+      PetscReal *r = &rows[s][CONTACT_ROW_COLS * nrow[s]];
+      if (!D->mine[j] || D->A[j] <= 0) continue; /* linear weights: mid-edge nodes carry none */
+      nrow[s]++;
+      r[CONTACT_ROW_S]   = D->s[j];
+      r[CONTACT_ROW_X]   = S->X[2 * j];
+      r[CONTACT_ROW_Y]   = S->X[2 * j + 1];
+      r[CONTACT_ROW_XC]  = S->x[2 * j];
+      r[CONTACT_ROW_YC]  = S->x[2 * j + 1];
+      r[CONTACT_ROW_GAP] = D->gj[j];
+      r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->kp * D->gj[j] : 0.0;
+      r[CONTACT_ROW_W]   = D->A[j];
+      if (D->gj[j] < 0) maxPen = PetscMax(maxPen, -D->gj[j]);
+    }
+    for (PetscInt k = 0; k < D->np; ++k) {
+      const MortarPoint *P = &D->pts[k];
+      PetscReal          f;
+      if (P->G.me < 0) continue;
+      f = P->wt * MortarLambda(m, D, &S->enodes[3 * P->se], P->W, m->c);
+      for (PetscInt d = 0; d < 2; ++d) {
+        force[s][d] -= f * P->G.n[d];
+        force[1 - s][d] += f * P->G.n[d];
+      }
+    }
+  }
+  PetscCall(ContactReportReset(&m->report));
+  m->report.kp = m->kp;
+  for (PetscInt s = 0; s < 2; ++s) {
+    m->report.side[s].nedges = m->S[s].ne;
+    m->report.side[s].slave  = m->slave[s];
+  }
+  PetscCall(ContactReportFinish(&m->report, &m->spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
+  PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarView(EnergyTerm t, Body bodies[])
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  if (m->report.done) PetscCall(ContactReportView(&m->report, &m->spec, bodies, t->comm));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteJSON(&m->report, &m->spec, bodies, fp, summary));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteHDF5(&m->report, &m->spec, bodies, v));
+  PetscFunctionReturn(0);
+}
+
+/* Both surfaces and their searches; per side the nodal integrals A_j (8-point
+   Gauss on every edge, every rank), the arc position of each node, the edges
+   on each node and the nodes this rank owns. */
+static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
+{
+  Mortar   *m = (Mortar *)t->data;
+  PetscReal gx[8], gw[8];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface *S = &m->S[s];
+    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], m->spec.name, 2.0 * m->spec.blend));
+    PetscCall(ContactSearchCreate(S, &m->search[s]));
+  }
+  for (PetscInt s = 0; s < 2; ++s) {
+    ContactSurface *S = &m->S[s];
+    MortarSide     *D = &m->side[s];
+    const PetscInt  e0 = S->nown ? S->ownEdges[0] : -1, e1 = S->nown ? S->ownEdges[S->nown - 1] : -2;
+    PetscInt       *minEdge, *cnt;
+    PetscCall(PetscCalloc5(S->nn, &D->A, 2 * S->nn, &D->gw, S->nn, &D->gj, S->nn, &D->s, S->nn, &D->mine));
+    D->cover = D->gw + S->nn;
+    PetscCall(PetscMalloc2(S->nn, &minEdge, S->nn + 1, &cnt));
+    PetscCall(PetscCalloc1(S->nn + 1, &D->nodeEdgeStart));
+    for (PetscInt j = 0; j < S->nn; ++j) minEdge[j] = PETSC_MAX_INT;
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      const PetscInt *en = &S->enodes[3 * e];
+      for (PetscInt h = 0; h < 2; ++h) /* each half of the edge: the sublinear weights have a kink at 0 */
+        for (PetscInt q = 0; q < 8; ++q) {
+          const PetscReal xi = 0.5 * (gx[q] + 2.0 * h - 1.0);
+          PetscReal       W[3], X[2], T[2];
+          MortarWeights(m->basis, xi, W);
+          EdgeEval(S->X, en, xi, X, T);
+          for (PetscInt i = 0; i < 3; ++i) D->A[en[i]] += 0.5 * gw[q] * W[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+        }
+      for (PetscInt i = 0; i < 3; ++i) {
+        minEdge[en[i]] = PetscMin(minEdge[en[i]], e);
+        D->nodeEdgeStart[en[i] + 1]++;
+      }
+      D->s[en[0]] = S->edir[e] > 0 ? S->s0[e] : S->s0[e] + S->elen[e];
+      D->s[en[1]] = S->edir[e] > 0 ? S->s0[e] + S->elen[e] : S->s0[e];
+      PetscCall(ContactSurfaceArc(S, e, 0.0, &D->s[en[2]]));
+    }
+    for (PetscInt j = 0; j < S->nn; ++j) {
+      D->mine[j]                = (PetscBool)(minEdge[j] >= e0 && minEdge[j] <= e1);
+      D->nodeEdgeStart[j + 1] += D->nodeEdgeStart[j];
+      cnt[j]                    = D->nodeEdgeStart[j];
+    }
+    PetscCall(PetscMalloc1(D->nodeEdgeStart[S->nn] + 1, &D->nodeEdge));
+    for (PetscInt e = 0; e < S->ne; ++e)
+      for (PetscInt i = 0; i < 3; ++i) D->nodeEdge[cnt[S->enodes[3 * e + i]]++] = e;
+    PetscCall(PetscFree2(minEdge, cnt));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The unconstrained dofs of both surfaces: the only rows and columns the
+   pair's Hessian touches. */
+static PetscErrorCode MortarGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
+{
+  Mortar  *m = (Mortar *)t->data;
+  PetscInt k = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * (m->S[0].nn + m->S[1].nn) + 1, idx));
+  for (PetscInt s = 0; s < 2; ++s)
+    for (PetscInt i = 0; i < 2 * m->S[s].nn; ++i)
+      if (m->S[s].big[i] >= 0) (*idx)[k++] = m->S[s].big[i];
+  PetscCall(PetscSortRemoveDupsInt(&k, *idx));
+  *n = k;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarSetPenaltyFactor(EnergyTerm t, PetscReal f)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  m->kp = f * m->spec.kp;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarSetHessianExact(EnergyTerm t, PetscBool exact)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  m->exactHessian = exact;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarDestroy(EnergyTerm t)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    MortarSide *D = &m->side[s];
+    PetscCall(ContactSearchDestroy(&m->search[s]));
+    PetscCall(ContactSurfaceDestroy(&m->S[s]));
+    PetscCall(PetscFree5(D->A, D->gw, D->gj, D->s, D->mine));
+    PetscCall(PetscFree(D->nodeEdgeStart));
+    PetscCall(PetscFree(D->nodeEdge));
+    PetscCall(PetscFree(D->pts));
+  }
+  PetscCall(ContactReportReset(&m->report));
+  PetscCall(PetscFree(m));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm t)
+{
+  Mortar *m;
+
+  PetscFunctionBeginUser;
+  if (!MORTAR_EnergyGrad) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactMortar", &id));
+    PetscCall(PetscLogEventRegister("MortarEnergyGrad", id, &MORTAR_EnergyGrad));
+    PetscCall(PetscLogEventRegister("MortarSearch", id, &MORTAR_Search));
+    PetscCall(PetscLogEventRegister("MortarSegments", id, &MORTAR_Segments));
+    PetscCall(PetscLogEventRegister("MortarHessian", id, &MORTAR_Hessian));
+    PetscCall(PetscLogEventRegister("MortarReport", id, &MORTAR_Report));
+  }
+  PetscCheck(spec->nqp >= 3, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: mortar needs at least 3 Gauss points per segment (degree 5), got %" PetscInt_FMT, spec->nqp);
+  PetscCall(PetscNew(&m));
+  m->basis = MORTAR_BASIS_QUADRATIC;
+  {
+    const char *const slaves[] = {"first", "second", "both", "MortarSlave", "MORTAR_SLAVE_", NULL};
+    PetscEnum          which    = (PetscEnum)2;
+    PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Mortar contact options", NULL);
+    PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: the pair's first, its second, or both (each energy weighted 1/2)", NULL, slaves, which, &which, NULL));
+    PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, (PetscEnum)m->basis, (PetscEnum *)&m->basis, NULL));
+    PetscOptionsEnd();
+    m->slave[0] = (PetscBool)(which != 1);
+    m->slave[1] = (PetscBool)(which != 0);
+    m->c        = 1.0 / (m->slave[0] + m->slave[1]);
+  }
+  m->spec         = *spec;
+  m->kp           = spec->kp;
+  m->nq           = spec->nqp;
+  m->exactHessian = spec->exactHessian;
+  PetscCall(PetscDTGaussQuadrature(m->nq, -1.0, 1.0, m->xq, m->wq));
+  for (PetscInt s = 0; s < 2; ++s) {
+    m->S[s].body = spec->body[s];
+    PetscCall(PetscStrncpy(m->S[s].group, spec->group[s], sizeof(m->S[s].group)));
+  }
+  t->data                 = m;
+  t->ops.setup            = MortarSetUp;
+  t->ops.energygradient   = MortarEnergyGradient;
+  t->ops.hessian          = MortarHessian;
+  t->ops.getdofs          = MortarGetDofs;
+  t->ops.setpenaltyfactor = MortarSetPenaltyFactor;
+  t->ops.sethessianexact  = MortarSetHessianExact;
+  t->ops.postprocess      = MortarPostProcess;
+  t->ops.view             = MortarView;
+  t->ops.writejson        = MortarWriteJSON;
+  t->ops.writehdf5        = MortarWriteHDF5;
+  t->ops.destroy          = MortarDestroy;
+  PetscFunctionReturn(0);
+}
