@@ -12,7 +12,7 @@ typedef struct {
   char      group[2][CONTACT_NAME_LEN];
   PetscReal kp;           /* the scene's penalty k_p */
   PetscInt  nqp;          /* Gauss points per slave edge (-contact_quadrature_points) */
-  PetscReal blend;        /* -contact_blend: fraction of a master edge */
+  PetscReal blend;        /* -contact_blend: fraction of a master edge; < 0: the formulation's default */
   PetscBool exactHessian; /* start with the second-order term in the Hessian */
   PetscBool hertz;        /* compare with Hertz: radii of the two surfaces (0: flat), E*, R* */
   PetscReal radii[2], Estar, Rstar;

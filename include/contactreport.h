@@ -26,6 +26,7 @@ typedef struct {
 typedef struct {
   ContactSide side[2];
   PetscReal   kp, force[2], P, maxPen, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
+  PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
   PetscBool   done;
 } ContactReport;
 

@@ -9,6 +9,7 @@ typedef struct {
   PetscInt  me;  /* master edge; -1 if none faces the point (none within reach, or beyond an end of the master surface) */
   PetscReal eta; /* closest point on it */
   PetscReal M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
+  PetscBool fan; /* the closest point is a corner node: g is the distance to it */
 } ContactGap;
 
 /* Closest point of the master surface to the slave point xs, its outward
@@ -18,5 +19,5 @@ void ContactGapProject(const ContactSurface *M, ContactSearch, const PetscReal x
 void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *, PetscInt idx[20]);
 /* dg over the 20 dofs, with N the slave edge's shape functions at the point. */
 void ContactGapFirst(const ContactGap *, const PetscReal N[3], PetscReal dg[20]);
-/* K += c d2g (nothing at an end of the master edge, where d2g is not defined). */
+/* K += c d2g. */
 void ContactGapAddSecond(const ContactGap *, const PetscReal N[3], PetscReal c, PetscScalar K[400]);

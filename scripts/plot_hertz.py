@@ -233,19 +233,52 @@ def body_fits(f):
     return fits
 
 
+def sample(side, name):
+    """A profile dataset of a one-sided surface: Gauss-point samples (gpts) are
+    named s, pressure, ...; nodal ones (mortar) node_s, node_pressure, ..."""
+    return side[name][()] if name in side else side["node_" + name][()]
+
+
+def is_nodal(side):
+    return "node_s" in side
+
+
+def nodal_curve(s, p, n=12):
+    """The pressure's quadratic interpolant along the surface: nodes sorted by
+    s alternate corner, mid-edge, corner (a node on a mirror line appears
+    twice and is taken once); each edge's three nodes give a parabola in s."""
+    keep = np.r_[True, np.diff(s) > 1e-12 * max(1.0, np.ptp(s))]
+    s, p = s[keep], p[keep]
+    if len(s) < 3:
+        return s, p
+    xs, ys = [], []
+    for i in range(0, len(s) - 2, 2):
+        t = np.linspace(s[i], s[i + 2], n)
+        (a, b, c), (pa, pb, pc) = s[i:i + 3], p[i:i + 3]
+        xs.append(t)
+        ys.append(pa * (t - b) * (t - c) / ((a - b) * (a - c)) + pb * (t - a) * (t - c) / ((b - a) * (b - c))
+                  + pc * (t - a) * (t - b) / ((c - a) * (c - b)))
+    return np.concatenate(xs), np.concatenate(ys)
+
+
+def profile_sides(g):
+    """The one-sided surfaces of a pair that carry a profile (the slaves)."""
+    return [v for v in g.values() if isinstance(v, h5py.Group) and len(sample(v, "s"))]
+
+
 def loaded_points(f):
     """(body, X, x, s - s_c) of every contact point with positive pressure, by side."""
     out = []
     if "contact" not in f:
         return out
     for g in f["contact"].values():
-        sides = [v for v in g.values() if isinstance(v, h5py.Group)]
-        pmax = max([np.max(v["pressure"][()], initial=0.0) for v in sides], default=0.0)
+        sides = profile_sides(g)
+        pmax = max([np.max(sample(v, "pressure"), initial=0.0) for v in sides], default=0.0)
         for side in sides:
-            p = side["pressure"][()]
+            p = sample(side, "pressure")
             on = p > 1e-3 * pmax if pmax > 0 else np.zeros(len(p), dtype=bool)
-            out.append((attr(side, "body"), side["X"][()][on], side["x"][()][on],
-                        side["s"][()][on] - attr(side, "centre", 0.0)))
+            out.append((attr(side, "body"), sample(side, "X")[on], sample(side, "x")[on],
+                        sample(side, "s")[on] - attr(side, "centre", 0.0)))
     return out
 
 
@@ -315,17 +348,17 @@ def plot_field(f, scale, ax, label, units, zoom=None):
 def pressure_range(g, zoom, hertz_a=0.0):
     """x range (s - s_c) of a pair's pressure plot, or None (automatic): the
     loaded arc (and the Hertz zone, if any) enlarged by the zoom factor."""
-    sides = [v for v in g.values() if isinstance(v, h5py.Group)]
+    sides = profile_sides(g)
     if isinstance(zoom, tuple):
         x0, x1, y0, y1 = zoom
-        s = [side["s"][()][(p[:, 0] >= x0) & (p[:, 0] <= x1) & (p[:, 1] >= y0) & (p[:, 1] <= y1)]
-             - attr(side, "centre", 0.0) for side in sides for p in [side["x"][()]]]
+        s = [sample(side, "s")[(p[:, 0] >= x0) & (p[:, 0] <= x1) & (p[:, 1] >= y0) & (p[:, 1] <= y1)]
+             - attr(side, "centre", 0.0) for side in sides for p in [sample(side, "x")]]
         s = np.concatenate(s) if s else np.empty(0)
         return (s.min(), s.max()) if len(s) and s.max() > s.min() else None
-    pmax = max([np.max(v["pressure"][()], initial=0.0) for v in sides], default=0.0)
+    pmax = max([np.max(sample(v, "pressure"), initial=0.0) for v in sides], default=0.0)
     if pmax <= 0:
         return None
-    s = np.concatenate([v["s"][()][v["pressure"][()] > 1e-3 * pmax] - attr(v, "centre", 0.0)
+    s = np.concatenate([sample(v, "s")[sample(v, "pressure") > 1e-3 * pmax] - attr(v, "centre", 0.0)
                         for v in sides] + [[-hertz_a, hertz_a] if hertz_a > 0 else []])
     lo, hi = s.min(), s.max()
     half = (hi - lo) / 2 if hi > lo else 1e-3 * max(1.0, abs(lo))
@@ -336,11 +369,14 @@ def pressure_range(g, zoom, hertz_a=0.0):
 def plot_pressure(f, axes, units, zoom=None):
     for ax, (pair, g) in zip(axes, f["contact"].items()):
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
-        for side in g.values():
-            if isinstance(side, h5py.Group):
-                s = side["s"][()] - attr(side, "centre", 0.0)
-                ax.plot(s, side["pressure"][()], "o-", ms=3, lw=0.8,
-                        label=f"{attr(side, 'body')}:{attr(side, 'group')} (one-sided)")
+        for side in profile_sides(g):
+            s, p = sample(side, "s") - attr(side, "centre", 0.0), sample(side, "pressure")
+            name = f"{attr(side, 'body')}:{attr(side, 'group')}"
+            if is_nodal(side):
+                line, = ax.plot(*nodal_curve(s, p), "-", lw=1.2, label=f"{name}, nodal pressure (quadratic interpolant)")
+                ax.plot(s, p, "o", ms=3.5, color=line.get_color())
+            else:
+                ax.plot(s, p, "o-", ms=3, lw=0.8, label=f"{name} (one-sided, Gauss points)")
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
         text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force')}"]
         xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0)

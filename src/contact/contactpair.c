@@ -61,7 +61,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   char     *names[64], formulation[CONTACT_NAME_LEN] = "gpts";
   PetscInt  np = 64, nq = 4;
   PetscReal kp = -1.0, blend = 0.05;
-  PetscBool disable = PETSC_FALSE, setkp;
+  PetscBool disable = PETSC_FALSE, setkp, setBlend;
 
   PetscFunctionBeginUser;
   *nterms = 0;
@@ -71,7 +71,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   PetscCall(PetscOptionsFList("-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
   PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
-  PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners)", NULL, blend, &blend, NULL));
+  PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners; default 0.05 for gpts, 0 for mortar)", NULL, blend, &blend, &setBlend));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
   PetscOptionsEnd();
   PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
@@ -94,7 +94,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(PetscStrncpy(spec.formulation, formulation, sizeof(spec.formulation)));
     spec.kp           = kp;
     spec.nqp          = nq;
-    spec.blend        = blend;
+    spec.blend        = setBlend ? blend : -1.0;
     spec.exactHessian = exactHessian;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);

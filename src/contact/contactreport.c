@@ -229,8 +229,9 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
 }
 
 /* Per one-sided surface, /contact/<pair>/<body>_<group>/: s, X (reference),
-   x (current), gap, pressure, weight, from rank 0; the pair's figures as
-   attributes of /contact/<pair> (collective). */
+   x (current), gap, pressure, weight, from rank 0 (named node_s, node_X, ...
+   when the samples are nodes: weighted gap, nodal pressure, A_j); the pair's
+   figures as attributes of /contact/<pair> (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
   MPI_Comm    comm;
@@ -242,7 +243,8 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S        = &R->side[s];
-    const char        *names[6] = {"s", "X", "x", "gap", "pressure", "weight"};
+    const char        *gauss[6] = {"s", "X", "x", "gap", "pressure", "weight"}, *nodal[6] = {"node_s", "node_X", "node_x", "node_gap", "node_pressure", "node_weight"};
+    const char *const *names    = R->nodal ? nodal : gauss;
     const PetscInt     cols[6]  = {CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_XC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W}, bs[6] = {1, 2, 2, 1, 1, 1};
     const PetscInt     n        = rank ? 0 : S->n;
 
@@ -266,6 +268,8 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", spec->name));

@@ -25,9 +25,9 @@
    real corner of the surface) a point outside a convex corner, or inside a
    concave one, has the corner node as its closest point over a fan of
    directions; there g is the signed distance to the node and n the unit
-   vector from the node to the point, so that g is continuous, and
-   dg = n . (du_s - du_v) (the second-order term of the distance, a a / g, is
-   left out). */
+   vector from the node to the point, so that g is continuous, with
+   dg = n . (du_s - du_v) and d2g = a a / g, a = tau . (du_s - du_v), tau
+   normal to n (the curvature of the distance to a point). */
 #include "gap.h"
 #include "edge.h"
 
@@ -50,6 +50,7 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
   P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
   P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
   P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+  P->fan  = PETSC_FALSE;
   if (PetscAbsReal(P->eta) >= 1.0) {
     /* the closest point is a node where the edges meet at a corner (no blend):
        in the fan of normals there g is the signed distance to the node, along
@@ -61,6 +62,7 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
       P->gap             = sg * dist;
       P->n[0]            = sg * d[0] / dist;
       P->n[1]            = sg * d[1] / dist;
+      P->fan             = PETSC_TRUE;
     }
   }
 }
@@ -89,6 +91,16 @@ void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c,
   const PetscReal kappa = P->n[0] * P->xpp[0] + P->n[1] * P->xpp[1], D = P->tn * P->tn - P->gap * kappa;
   PetscReal       a[20], b[20];
 
+  if (P->fan) {
+    const PetscReal t[2] = {-P->n[1], P->n[0]};
+    for (PetscInt d = 0; d < 2; ++d) {
+      for (PetscInt i = 0; i < 3; ++i) a[2 * i + d] = N[i] * t[d];
+      for (PetscInt j = 0; j < 7; ++j) a[6 + 2 * j + d] = -P->M7[j] * t[d];
+    }
+    for (PetscInt i = 0; i < 20; ++i)
+      for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] += c * a[i] * a[j] / P->gap;
+    return;
+  }
   if (PetscAbsReal(P->eta) >= 1.0) return;
   for (PetscInt d = 0; d < 2; ++d) {
     for (PetscInt i = 0; i < 3; ++i) {

@@ -261,7 +261,7 @@ static PetscErrorCode GPTSSetUp(EnergyTerm t, Body bodies[])
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &cp->S[s];
-    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], cp->spec.name, 2.0 * cp->spec.blend)); /* blend width in eta */
+    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], cp->spec.name, 2.0 * (cp->spec.blend < 0 ? 0.05 : cp->spec.blend))); /* blend width in eta */
     PetscCall(ContactSearchCreate(S, &cp->search[s]));
   }
   for (PetscInt s = 0; s < 2; ++s) {

@@ -7,7 +7,8 @@
    with P the contact force per unit thickness and s_c the pressure centroid
    (Hertz's zone is centred where the computed one is). The profile's own
    figures: p_max its largest sample; a half the length of the zone p > 0,
-   whose ends lie half-way between the outermost loaded sample and the next;
+   whose ends are where the gap, interpolated linearly between the outermost
+   loaded sample and the next, vanishes;
    a from the second moment, since Hertz's profile has
    int p (s - s_c)^2 / int p = a^2/4 (a half-width from the whole profile, not
    from where its last loaded sample happens to be); and the relative L2
@@ -26,6 +27,17 @@ PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds)
   const PetscReal z = ds / a;
 
   return PetscAbsReal(z) < 1 ? pmax * PetscSqrtReal(1 - z * z) : 0.0;
+}
+
+/* Where the zone ends between a loaded sample and the unloaded one next to it:
+   the zero of the gap interpolated linearly between them, or half-way if the
+   outer gap is not finite (no master faces it). */
+static PetscReal ContactZoneEnd(const PetscReal in[], const PetscReal out[])
+{
+  const PetscReal gi = in[CONTACT_ROW_GAP], go = out[CONTACT_ROW_GAP];
+
+  if (gi < 0 && go >= 0 && go < PETSC_INFINITY) return in[CONTACT_ROW_S] + (out[CONTACT_ROW_S] - in[CONTACT_ROW_S]) * gi / (gi - go);
+  return 0.5 * (in[CONTACT_ROW_S] + out[CONTACT_ROW_S]);
 }
 
 void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *F)
@@ -52,8 +64,8 @@ void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, 
   F->am = den > 0 ? 2.0 * PetscSqrtReal(m2 / den) : 0.0;
   F->a  = 0.0;
   if (i0 >= 0) {
-    const PetscReal lo = i0 > 0 ? 0.5 * (rows[C * i0] + rows[C * (i0 - 1)]) : rows[C * i0];
-    const PetscReal hi = i1 < n - 1 ? 0.5 * (rows[C * i1] + rows[C * (i1 + 1)]) : rows[C * i1];
+    const PetscReal lo = i0 > 0 ? ContactZoneEnd(&rows[C * i0], &rows[C * (i0 - 1)]) : rows[C * i0];
+    const PetscReal hi = i1 < n - 1 ? ContactZoneEnd(&rows[C * i1], &rows[C * (i1 + 1)]) : rows[C * i1];
     F->a               = 0.5 * (hi - lo);
   }
   F->l2err = (PetscReal)NAN; /* no Hertz profile to compare with */

@@ -60,14 +60,20 @@ typedef struct {
 /* The weight functions W_j of the nodal gaps on a slave edge: the quadratic
    basis itself, linear hats on the corners (mid-edge nodes unweighted), or
    linear hats on the two halves of the edge (every node, all positive). */
-typedef enum { MORTAR_BASIS_QUADRATIC, MORTAR_BASIS_LINEAR, MORTAR_BASIS_SUBLINEAR } MortarBasis;
-static const char *const MortarBases[] = {"quadratic", "linear", "sublinear", "MortarBasis", "MORTAR_BASIS_", NULL};
+typedef enum { MORTAR_BASIS_QUADRATIC, MORTAR_BASIS_LINEAR, MORTAR_BASIS_SUBLINEAR, MORTAR_BASIS_DUAL } MortarBasis;
+static const char *const MortarBases[] = {"quadratic", "linear", "sublinear", "dual", "MortarBasis", "MORTAR_BASIS_", NULL};
 
-static inline void MortarWeights(MortarBasis basis, PetscReal xi, PetscReal W[3])
+/* dual: psi_i = sum_k A_ik N_k on each edge, A = D M^-1 with M_jk = int N_j N_k dS,
+   D = diag(int N_j dS) (biorthogonal: int psi_i N_k dS = delta_ik int N_k dS) */
+static inline void MortarWeights(MortarBasis basis, const PetscReal *dual, PetscReal xi, PetscReal W[3])
 {
-  PetscReal dN[3];
+  PetscReal dN[3], N[3];
 
   switch (basis) {
+  case MORTAR_BASIS_DUAL:
+    EdgeShape(xi, N, dN);
+    for (PetscInt i = 0; i < 3; ++i) W[i] = dual[3 * i] * N[0] + dual[3 * i + 1] * N[1] + dual[3 * i + 2] * N[2];
+    break;
   case MORTAR_BASIS_QUADRATIC:
     EdgeShape(xi, W, dN);
     break;
@@ -90,6 +96,7 @@ typedef struct {
   PetscReal *s;            /* [nn] arc position of the node */
   PetscBool *mine;         /* [nn] node owned by this rank: its energy, Hessian block and report row */
   PetscInt  *nodeEdgeStart, *nodeEdge; /* edges on each node */
+  PetscReal *dual;         /* [ne][3][3] coefficients of the dual weights on each edge */
   PetscInt   np, npmax;    /* points of this rank's edges at the current state */
   MortarPoint *pts;
 } MortarSide;
@@ -229,7 +236,7 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
       PetscReal    xi = c + h * m->xq[q], xs[2], dS, dN[3];
       P->se           = se;
       EdgeShape(xi, P->N, dN);
-      MortarWeights(m->basis, xi, P->W);
+      MortarWeights(m->basis, &m->side[s].dual[9 * se], xi, P->W);
       MortarSlaveEval(S, se, xi, xs, &dS);
       P->wt = h * m->wq[q] * dS;
       ContactGapProject(&m->S[1 - s], m->search[1 - s], xs, &P->G);
@@ -439,7 +446,8 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
     }
   }
   PetscCall(ContactReportReset(&m->report));
-  m->report.kp = m->kp;
+  m->report.kp    = m->kp;
+  m->report.nodal = PETSC_TRUE;
   for (PetscInt s = 0; s < 2; ++s) {
     m->report.side[s].nedges = m->S[s].ne;
     m->report.side[s].slave  = m->slave[s];
@@ -489,7 +497,7 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
   PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &m->S[s];
-    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], m->spec.name, 2.0 * m->spec.blend));
+    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], m->spec.name, 2.0 * (m->spec.blend < 0 ? 0.0 : m->spec.blend))); /* no blend by default: see above */
     PetscCall(ContactSearchCreate(S, &m->search[s]));
   }
   for (PetscInt s = 0; s < 2; ++s) {
@@ -502,13 +510,39 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
     PetscCall(PetscMalloc2(S->nn, &minEdge, S->nn + 1, &cnt));
     PetscCall(PetscCalloc1(S->nn + 1, &D->nodeEdgeStart));
     for (PetscInt j = 0; j < S->nn; ++j) minEdge[j] = PETSC_MAX_INT;
+    PetscCall(PetscCalloc1(9 * S->ne, &D->dual));
+    for (PetscInt e = 0; e < S->ne; ++e) { /* A = D M^-1 on each edge (dual weights) */
+      PetscReal M[9] = {0}, d[3] = {0}, Mi[9], det;
+      for (PetscInt q = 0; q < 8; ++q) {
+        PetscReal N[3], dN[3], X[2], T[2], J;
+        EdgeShape(gx[q], N, dN);
+        EdgeEval(S->X, &S->enodes[3 * e], gx[q], X, T);
+        J = gw[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+        for (PetscInt i = 0; i < 3; ++i) {
+          d[i] += J * N[i];
+          for (PetscInt k = 0; k < 3; ++k) M[3 * i + k] += J * N[i] * N[k];
+        }
+      }
+      det   = M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]);
+      Mi[0] = (M[4] * M[8] - M[5] * M[7]) / det;
+      Mi[1] = (M[2] * M[7] - M[1] * M[8]) / det;
+      Mi[2] = (M[1] * M[5] - M[2] * M[4]) / det;
+      Mi[3] = (M[5] * M[6] - M[3] * M[8]) / det;
+      Mi[4] = (M[0] * M[8] - M[2] * M[6]) / det;
+      Mi[5] = (M[2] * M[3] - M[0] * M[5]) / det;
+      Mi[6] = (M[3] * M[7] - M[4] * M[6]) / det;
+      Mi[7] = (M[1] * M[6] - M[0] * M[7]) / det;
+      Mi[8] = (M[0] * M[4] - M[1] * M[3]) / det;
+      for (PetscInt i = 0; i < 3; ++i)
+        for (PetscInt k = 0; k < 3; ++k) D->dual[9 * e + 3 * i + k] = d[i] * Mi[3 * i + k];
+    }
     for (PetscInt e = 0; e < S->ne; ++e) {
       const PetscInt *en = &S->enodes[3 * e];
       for (PetscInt h = 0; h < 2; ++h) /* each half of the edge: the sublinear weights have a kink at 0 */
         for (PetscInt q = 0; q < 8; ++q) {
           const PetscReal xi = 0.5 * (gx[q] + 2.0 * h - 1.0);
           PetscReal       W[3], X[2], T[2];
-          MortarWeights(m->basis, xi, W);
+          MortarWeights(m->basis, &D->dual[9 * e], xi, W);
           EdgeEval(S->X, en, xi, X, T);
           for (PetscInt i = 0; i < 3; ++i) D->A[en[i]] += 0.5 * gw[q] * W[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
         }
@@ -580,6 +614,7 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
     PetscCall(PetscFree5(D->A, D->gw, D->gj, D->s, D->mine));
     PetscCall(PetscFree(D->nodeEdgeStart));
     PetscCall(PetscFree(D->nodeEdge));
+    PetscCall(PetscFree(D->dual));
     PetscCall(PetscFree(D->pts));
   }
   PetscCall(ContactReportReset(&m->report));
@@ -603,13 +638,13 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
   }
   PetscCheck(spec->nqp >= 3, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: mortar needs at least 3 Gauss points per segment (degree 5), got %" PetscInt_FMT, spec->nqp);
   PetscCall(PetscNew(&m));
-  m->basis = MORTAR_BASIS_QUADRATIC;
+  m->basis = MORTAR_BASIS_DUAL;
   {
     const char *const slaves[] = {"first", "second", "both", "MortarSlave", "MORTAR_SLAVE_", NULL};
-    PetscEnum          which    = (PetscEnum)2;
+    PetscEnum          which    = (PetscEnum)0;
     PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Mortar contact options", NULL);
-    PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: the pair's first, its second, or both (each energy weighted 1/2)", NULL, slaves, which, &which, NULL));
-    PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, (PetscEnum)m->basis, (PetscEnum *)&m->basis, NULL));
+    PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: the pair's first, its second, or both (each one-sided energy weighted 1/2)", NULL, slaves, which, &which, NULL));
+    PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: dual (biorthogonal to the quadratic basis), quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, (PetscEnum)m->basis, (PetscEnum *)&m->basis, NULL));
     PetscOptionsEnd();
     m->slave[0] = (PetscBool)(which != 1);
     m->slave[1] = (PetscBool)(which != 0);

@@ -493,7 +493,7 @@ static PetscBool OptionReadLazily(const char name[])
 {
   const char *const inner[] = {"mg_levels_", "mg_coarse_", "sub_", "fieldsplit_", "redundant_"};
 
-  if (strstr(name, "view") || strstr(name, "monitor") || strstr(name, "converged_reason") || !strncmp(name, "mat_", 4)) return PETSC_TRUE;
+  if (strstr(name, "view") || strstr(name, "monitor") || strstr(name, "test_hessian") || strstr(name, "converged_reason") || !strncmp(name, "mat_", 4)) return PETSC_TRUE;
   for (size_t i = 0; i < sizeof(inner) / sizeof(inner[0]); ++i)
     if (strstr(name, inner[i])) return PETSC_TRUE;
   return PETSC_FALSE;

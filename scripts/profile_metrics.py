@@ -1,0 +1,88 @@
+"""Measures of a computed contact pressure profile, read from the program's
+HDF5 output (/contact/<pair>/<body>_<group>/ s, pressure, weight): its
+oscillation, its distance from another profile (a finer mesh's), its peak and
+half-width. Used by the tests and the benchmark.
+
+    python3 scripts/profile_metrics.py out/a.h5 [--ref out/fine.h5]
+"""
+import argparse
+
+import h5py
+import numpy as np
+
+
+def profiles(path, pair=None):
+    """{surface: (s, p, w, gap)} for every one-sided surface that has a profile
+    (a slave surface), sorted by s; and the pair's attributes."""
+    with h5py.File(path, "r") as f:
+        g = f["contact"]
+        pair = pair or sorted(g.keys())[0]
+        g = g[pair]
+        out = {}
+        for k in sorted(g.keys()):
+            pre = "node_" if "node_s" in g[k] else ""   # nodal samples (mortar) or Gauss points
+            s = g[k][pre + "s"][...].ravel()
+            if s.size == 0:
+                continue
+            out[k] = tuple(g[k][pre + n][...].ravel() for n in ("s", "pressure", "weight", "gap")) 
+        attrs = {k: (v.decode() if isinstance(v, bytes) else np.ravel(v)[0]) for k, v in g.attrs.items()}
+    return out, attrs
+
+
+def oscillation_index(s, p, a):
+    """The largest deviation of a sample from the mean of its two neighbours,
+    within 0.8 a of the pressure centroid, over the peak."""
+    c = float(np.sum(s * p) / np.sum(p))
+    dev = [abs(p[i] - 0.5 * (p[i - 1] + p[i + 1])) for i in range(1, len(s) - 1) if abs(s[i] - c) <= 0.8 * a]
+    return max(dev) / p.max() if dev else float("nan")
+
+
+def l2_distance(coarse, fine):
+    """Relative L2 distance of a profile from a finer one: the coarse samples
+    interpolated linearly in s at the fine samples, with the fine weights."""
+    (sc, pc), (sf, pf, wf) = coarse[:2], fine[:3]
+    pi = np.interp(sf, sc, pc, left=0.0, right=0.0)
+    return float(np.sqrt(np.sum(wf * (pi - pf) ** 2) / np.sum(wf * pf ** 2)))
+
+
+def zone_end(s, g, i, j):
+    """Where the gap, linear between loaded sample i and unloaded sample j, vanishes."""
+    if g[i] < 0 <= g[j] < 1e300:
+        return s[i] + (s[j] - s[i]) * g[i] / (g[i] - g[j])
+    return 0.5 * (s[i] + s[j])
+
+
+def half_width(s, p, w, g):
+    """Half the loaded length, its ends where the gap vanishes (as the
+    program's report)."""
+    i = np.where(p > 0)[0]
+    lo = zone_end(s, g, i[0], i[0] - 1) if i[0] > 0 else s[i[0]]
+    hi = zone_end(s, g, i[-1], i[-1] + 1) if i[-1] < len(s) - 1 else s[i[-1]]
+    return 0.5 * (hi - lo)
+
+
+def summary(path, ref=None):
+    """Per surface: oscillation index, peak, half-width, and the L2 distance
+    from the same surface in ref."""
+    prof, attrs = profiles(path)
+    a = float(attrs.get("hertz_a", attrs.get("fem_a")))
+    rprof = profiles(ref)[0] if ref else {}
+    out = {}
+    for k, (s, p, w, g) in prof.items():
+        d = {"osc": oscillation_index(s, p, a), "pmax": float(p.max()), "a": half_width(s, p, w, g)}
+        if k in rprof:
+            d["l2_ref"] = l2_distance((s, p), rprof[k])
+            d["pmax_ref"] = float(rprof[k][1].max())
+            d["a_ref"] = half_width(*rprof[k])
+        out[k] = d
+    return out
+
+
+if __name__ == "__main__":
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("h5", nargs="+")
+    ap.add_argument("--ref", help="a finer run's HDF5 to measure the distance from")
+    args = ap.parse_args()
+    for path in args.h5:
+        for k, d in summary(path, args.ref).items():
+            print(path, k, " ".join(f"{x}={v:.4g}" for x, v in d.items()))
