@@ -1,14 +1,15 @@
 // Block: the rectangle [x0, x0+W] x [-H/2, H/2] on a structured Quad9 grid,
 // symmetric about y = 0. Edges: "contact" (left), "push" (right), "top", "bottom".
-// Optional grading (hc < h): an unstructured all-quad mesh of size hc at the
-// point (x0, 0), growing to h over a distance dc.
-// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H, hc, dc.
+// Optional grading (hc < h): an unstructured all-quad mesh of size hc within a
+// distance rc of the point (x0, 0), growing to h over a further distance dc.
+// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H, hc, rc, dc.
 If (!Exists(h))  h = 0.1;  EndIf
 If (!Exists(x0)) x0 = 0.0; EndIf
 If (!Exists(W))  W = 1.0;  EndIf
 If (!Exists(H))  H = 2.0;  EndIf
 If (!Exists(hc)) hc = h;   EndIf
 If (!Exists(dc)) dc = W;   EndIf
+If (!Exists(rc)) rc = 0;   EndIf
 
 nx = Ceil(W / h - 1e-9);
 ny = 2 * Ceil(0.5 * H / h - 1e-9);
@@ -31,8 +32,8 @@ If (hc < h)
   Field[2].InField = 1;
   Field[2].SizeMin = hc;
   Field[2].SizeMax = h;
-  Field[2].DistMin = 0;
-  Field[2].DistMax = dc;
+  Field[2].DistMin = rc;
+  Field[2].DistMax = rc + dc;
   Background Field = 2;
   Mesh.MeshSizeExtendFromBoundary = 0;
   Mesh.MeshSizeFromPoints = 0;

@@ -2,9 +2,9 @@
 // Facing dir = +1 (+x) or -1 (-x), its boundary arcs are split at x = xclamp
 // (the arc behind it, dir (x - xclamp) < 0, is "clamp") and at x = xcontact (the
 // arc in front, dir (x - xcontact) > 0, is "contact"); the rest is "free".
-// Optional grading: mesh size hc at the front point, growing to h over a
-// distance dc.
-// Parameters (gmsh -setnumber NAME VALUE): h, R, xc, yc, xclamp, xcontact, dir, hc, dc.
+// Optional grading: mesh size hc within a distance rc of the front point,
+// growing to h over a further distance dc.
+// Parameters (gmsh -setnumber NAME VALUE): h, R, xc, yc, xclamp, xcontact, dir, hc, rc, dc.
 If (!Exists(h))        h = 0.1;   EndIf
 If (!Exists(R))        R = 1.0;   EndIf
 If (!Exists(xc))       xc = -1.0; EndIf
@@ -14,6 +14,7 @@ If (!Exists(xcontact)) xcontact = -0.5; EndIf
 If (!Exists(dir))      dir = 1;    EndIf
 If (!Exists(hc))       hc = h;     EndIf
 If (!Exists(dc))       dc = R;     EndIf
+If (!Exists(rc))       rc = 0;     EndIf
 
 tc = Acos(dir * (xcontact - xc) / R);   // half-angle of the contact arc
 tk = Acos(dir * (xclamp - xc) / R);     // angle where the clamp arc starts
@@ -42,8 +43,8 @@ If (hc < h)
   Field[2].InField = 1;
   Field[2].SizeMin = hc;
   Field[2].SizeMax = h;
-  Field[2].DistMin = 0;
-  Field[2].DistMax = dc;
+  Field[2].DistMin = rc;
+  Field[2].DistMax = rc + dc;
   Background Field = 2;
   Mesh.MeshSizeExtendFromBoundary = 0;
   Mesh.MeshSizeFromPoints = 0;
