@@ -31,19 +31,9 @@
 #include "gap.h"
 #include "edge.h"
 
-void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
+/* The gap at the closest point P->eta of master edge P->me. */
+static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], ContactGap *P)
 {
-  P->eta = 0.0;
-  ContactSearchFindClosest(search, xs, &P->me, &P->eta);
-  if (P->me < 0) return;
-  {
-    const PetscInt *mn = &M->mnodes[7 * P->me];
-    /* beyond an end of the master surface: no contact */
-    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
-      P->me = -1;
-      return;
-    }
-  }
   MasterShape(M, P->me, P->eta, P->M7, P->dM7, P->d2M7); /* once: the point, normal and derivatives below */
   MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
   P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
@@ -65,6 +55,31 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
       P->fan             = PETSC_TRUE;
     }
   }
+}
+
+void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
+{
+  P->eta = 0.0;
+  ContactSearchFindClosest(search, xs, &P->me, &P->eta);
+  if (P->me < 0) return;
+  {
+    const PetscInt *mn = &M->mnodes[7 * P->me];
+    /* beyond an end of the master surface: no contact */
+    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
+      P->me = -1;
+      return;
+    }
+  }
+  ContactGapEvaluate(M, xs, P);
+}
+
+void ContactGapOnEdge(const ContactSurface *M, PetscInt e, const PetscReal xs[2], ContactGap *P)
+{
+  PetscReal d2;
+
+  P->me = e;
+  MasterProject(M, e, xs, &P->eta, &d2);
+  ContactGapEvaluate(M, xs, P);
 }
 
 void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *P, PetscInt idx[20])

@@ -37,8 +37,13 @@
    k_p g. Two passes: the weighted gaps (summed over the ranks that share a
    node), then the gradient.
 
-   Hessian. d2E_S = k_p sum_{j: g_j < 0} (A_j / C_j^2) G_j G_j^T + int_S' Lambda d2g dS,
-   G_j = int_S' N_j dg dS. The second part is pointwise (gap.c's d2g, added
+   Hessian. d2E_S = k_p sum_{j: g_j < 0} (A_j / C_j^2) G_j G_j^T + int_S' Lambda d2g dS
+                    - sum_c Lambda J (dg_a - dg_b)(dg_a - dg_b)^T / d(g_a - g_b)/dxi,
+   G_j = int_S' N_j dg dS. The last sum runs over the crossings c where the
+   closest point passes from master edge a to edge b across a node where
+   their normals differ (no blend): the gradient's integrand jumps there by
+   Lambda J (dg_a - dg_b) (J = dS/dxi), and c moves with u as
+   dc = -(dg_a - dg_b) du / d(g_a - g_b)/dxi (g_a = g_b at c). The second part is pointwise (gap.c's d2g, added
    with -contact_hessian exact or auto); the first couples every dof under the
    support of N_j, so it is assembled node by node, over the node's slave
    edges, by the rank that owns the node (the lowest-numbered edge on it). */
@@ -90,6 +95,13 @@ static inline void MortarWeights(MortarBasis basis, const PetscReal *dual, Petsc
   }
 }
 
+/* A cut of a slave edge at xi; where the closest point passes there from
+   master edge ea to eb across their common node, ea and eb (else -1). */
+typedef struct {
+  PetscInt  se, ea, eb;
+  PetscReal xi;
+} MortarCut;
+
 typedef struct {
   PetscReal *A, *cover;    /* [nn] int N_j dS over the surface; int N_j over the part facing a master (summed over ranks) */
   PetscReal *gw, *gj;      /* [nn] int N_j g dS (summed over ranks), g_j */
@@ -99,6 +111,8 @@ typedef struct {
   PetscReal *dual;         /* [ne][3][3] coefficients of the dual weights on each edge */
   PetscInt   np, npmax;    /* points of this rank's edges at the current state */
   MortarPoint *pts;
+  PetscInt   ncross, ncrossmax; /* the node crossings on this rank's edges */
+  MortarCut *cross;
 } MortarSide;
 
 typedef struct {
@@ -179,7 +193,7 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
 
 /* Splits [a, b] of slave edge se, whose ends face master edges ea and eb,
    until each piece faces one master edge; appends the cut points to cut[]. */
-static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, PetscReal cut[])
+static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
 {
   const ContactSurface *M = &m->S[1 - s];
   PetscReal             c;
@@ -192,7 +206,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, P
         if (M->enodes[3 * ea + i] == M->enodes[3 * eb + j]) {
           c = MortarNodeCrossing(&m->S[s], se, M, ea, i, eb, j, a, b);
           if (c > a) {
-            cut[(*ncut)++] = c;
+            cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
             return;
           }
         }
@@ -200,26 +214,27 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, P
   c  = 0.5 * (a + b);
   ec = MortarFacing(m, s, se, c);
   MortarSplit(m, s, se, a, ea, c, ec, depth + 1, ncut, cut);
-  cut[(*ncut)++] = c;
+  cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
   MortarSplit(m, s, se, c, ec, b, eb, depth + 1, ncut, cut);
 }
 
-/* Appends the quadrature points of slave edge se, segment by segment. */
-static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, PetscInt *np, PetscInt *npmax, MortarPoint **pts)
+/* Appends the quadrature points of slave edge se, segment by segment, and
+   (if D) its node crossings to D->cross. */
+static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, PetscInt *np, PetscInt *npmax, MortarPoint **pts, MortarSide *D)
 {
   const ContactSurface *S = &m->S[s];
-  PetscReal             cut[MORTAR_MAX_SEG + MORTAR_MAX_DEPTH + 4]; /* MortarSplit stops adding at MORTAR_MAX_SEG, then closes its open levels */
+  MortarCut             cut[MORTAR_MAX_SEG + MORTAR_MAX_DEPTH + 4]; /* MortarSplit stops adding at MORTAR_MAX_SEG, then closes its open levels */
   PetscInt              ncut = 0;
 
   PetscFunctionBeginUser;
-  cut[ncut++] = -1.0;
+  cut[ncut++] = (MortarCut){se, -1, -1, -1.0};
   if (m->basis == MORTAR_BASIS_SUBLINEAR) { /* the weights' kink at the mid-edge node */
     const PetscInt e0 = MortarFacing(m, s, se, 0.0);
     MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 0.0, e0, 0, &ncut, cut);
-    cut[ncut++] = 0.0;
+    cut[ncut++] = (MortarCut){se, -1, -1, 0.0};
     MortarSplit(m, s, se, 0.0, e0, 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
   } else MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
-  cut[ncut++] = 1.0;
+  cut[ncut++] = (MortarCut){se, -1, -1, 1.0};
   if (*np + (ncut - 1) * m->nq > *npmax) {
     MortarPoint *grown;
     *npmax = 2 * (*np + (ncut - 1) * m->nq);
@@ -228,8 +243,21 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
     PetscCall(PetscFree(*pts));
     *pts = grown;
   }
+  if (D)
+    for (PetscInt k = 1; k + 1 < ncut; ++k) {
+      if (cut[k].ea < 0) continue;
+      if (D->ncross == D->ncrossmax) {
+        MortarCut *grown;
+        D->ncrossmax = 2 * D->ncrossmax + 16;
+        PetscCall(PetscMalloc1(D->ncrossmax, &grown));
+        PetscCall(PetscArraycpy(grown, D->cross, D->ncross));
+        PetscCall(PetscFree(D->cross));
+        D->cross = grown;
+      }
+      D->cross[D->ncross++] = cut[k];
+    }
   for (PetscInt k = 0; k + 1 < ncut; ++k) {
-    const PetscReal h = 0.5 * (cut[k + 1] - cut[k]), c = 0.5 * (cut[k + 1] + cut[k]);
+    const PetscReal h = 0.5 * (cut[k + 1].xi - cut[k].xi), c = 0.5 * (cut[k + 1].xi + cut[k].xi);
     if (h <= 0) continue;
     for (PetscInt q = 0; q < m->nq; ++q) {
       MortarPoint *P  = &(*pts)[(*np)++];
@@ -259,8 +287,9 @@ static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
     ContactSurface *S = &m->S[s];
     MortarSide     *D = &m->side[s];
     D->np             = 0;
+    D->ncross         = 0;
     if (!m->slave[s]) continue;
-    for (PetscInt k = 0; k < S->nown; ++k) PetscCall(MortarEdgePoints(m, s, S->ownEdges[k], &D->np, &D->npmax, &D->pts));
+    for (PetscInt k = 0; k < S->nown; ++k) PetscCall(MortarEdgePoints(m, s, S->ownEdges[k], &D->np, &D->npmax, &D->pts, D));
     PetscCall(PetscArrayzero(D->gw, 2 * S->nn)); /* gw and cover, adjacent: one reduction */
     for (PetscInt k = 0; k < D->np; ++k) {
       const MortarPoint *P  = &D->pts[k];
@@ -370,13 +399,46 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
       ContactGapIndices(S, sn, M, &P->G, idx);
       PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
     }
+    /* the closest point's passage from one master edge to the next at a
+       crossing c where their normals differ: -Lambda J Delta Delta^T / den */
+    for (PetscInt k = 0; k < D->ncross && m->exactHessian; ++k) {
+      const MortarCut *X  = &D->cross[k];
+      const PetscInt  *sn = &S->enodes[3 * X->se];
+      PetscReal        N[3], dN[3], W[3], xs[2], ts[2], Xr[2], Tr[2], dga[20], dgb[20], L, den;
+      PetscInt         ia[20], ib[20], n = 0;
+      ContactGap       Ga, Gb;
+      EdgeShape(X->xi, N, dN);
+      MortarWeights(m->basis, &D->dual[9 * X->se], X->xi, W);
+      L = MortarLambda(m, D, sn, W, m->c);
+      if (L == 0) continue;
+      EdgeEval(S->x, sn, X->xi, xs, ts);
+      EdgeEval(S->X, sn, X->xi, Xr, Tr);
+      ContactGapOnEdge(M, X->ea, xs, &Ga);
+      ContactGapOnEdge(M, X->eb, xs, &Gb);
+      den = (Ga.n[0] - Gb.n[0]) * ts[0] + (Ga.n[1] - Gb.n[1]) * ts[1]; /* d/dxi (g_a - g_b) */
+      if (PetscAbsReal(den) <= 1e-12 * PetscSqrtReal(ts[0] * ts[0] + ts[1] * ts[1])) continue;
+      ContactGapIndices(S, sn, M, &Ga, ia);
+      ContactGapIndices(S, sn, M, &Gb, ib);
+      ContactGapFirst(&Ga, N, dga);
+      ContactGapFirst(&Gb, N, dgb);
+      for (PetscInt l = 0; l < 20; ++l) {
+        PetscCall(SparseAdd(ia[l], dga[l], &n, nmax, gidx, gval));
+        PetscCall(SparseAdd(ib[l], -dgb[l], &n, nmax, gidx, gval));
+      }
+      {
+        const PetscReal c = -L * PetscSqrtReal(Tr[0] * Tr[0] + Tr[1] * Tr[1]) / den;
+        for (PetscInt a = 0; a < n; ++a)
+          for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
+      }
+      PetscCall(MatSetValues(H, n, gidx, n, gidx, K, ADD_VALUES));
+    }
     /* (c k_p A_j / C_j^2) G_j G_j^T for the active nodes this rank owns */
     for (PetscInt j = 0; j < S->nn; ++j) {
       PetscInt  n = 0;
       PetscReal c;
       if (!D->mine[j] || D->gj[j] >= 0) continue;
       np = 0;
-      for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) PetscCall(MortarEdgePoints(m, s, D->nodeEdge[k], &np, &npmax, &pts));
+      for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) PetscCall(MortarEdgePoints(m, s, D->nodeEdge[k], &np, &npmax, &pts, NULL));
       for (PetscInt k = 0; k < np; ++k) {
         const MortarPoint *P  = &pts[k];
         const PetscInt    *sn = &S->enodes[3 * P->se];
@@ -616,6 +678,7 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
     PetscCall(PetscFree(D->nodeEdge));
     PetscCall(PetscFree(D->dual));
     PetscCall(PetscFree(D->pts));
+    PetscCall(PetscFree(D->cross));
   }
   PetscCall(ContactReportReset(&m->report));
   PetscCall(PetscFree(m));
