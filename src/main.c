@@ -4,6 +4,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
 
 #include "problem.h"
 #include "contactpair.h"
+#include "options.h"
 
 ContactLog contactLog;
 
@@ -54,7 +55,13 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
   if (IsInputError(n)) {
     if (p == PETSC_ERROR_INITIAL) {
       PetscMPIInt rank = 0;
-      if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
+      char        option[1024];
+
+      /* a bad option value: the same on every rank, so reported once */
+      if (ContactOptionsDescribeValueError(fun, mess, option, sizeof(option))) {
+        MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+        mess = option;
+      } else if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
       if (!rank) {
         fprintf(stderr, "contact: error: %s\n", mess ? mess : "unknown");
         fflush(stderr);
@@ -106,11 +113,23 @@ static PetscErrorCode Run(int *status)
   PetscFunctionReturn(0);
 }
 
+/* MPI is started before PETSc so that the options files can be read first
+   (options.c): a bad file is one line, not a traceback from PetscInitialize(). */
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
-  int            status = 1;
+  int            status = 1, provided;
+  char           err[4096];
 
+  MPI_Init_thread(&argc, &argv, PETSC_MPI_THREAD_REQUIRED, &provided);
+  if (ContactOptionsExpandFiles(MPI_COMM_WORLD, &argc, &argv, err, sizeof(err))) {
+    int rank;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (!rank) fprintf(stderr, "contact: error: %s\n", err);
+    ContactOptionsFinalize();
+    MPI_Finalize();
+    return 1;
+  }
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ContactErrorHandler, NULL));
   PetscCall(ContactOutputInstallSignalHandlers());
@@ -122,5 +141,7 @@ int main(int argc, char **argv)
   PetscCall(ExactSolutionFinalize());
   PetscCall(ContactFormulationFinalize());
   PetscCall(PetscFinalize());
+  ContactOptionsFinalize();
+  MPI_Finalize();
   return status;
 }

@@ -1,0 +1,22 @@
+#pragma once
+#include <petscsys.h>
+
+/* Options files are read by the program, not by PETSc (options.c): before
+   PetscInitialize(), on rank 0 after MPI_Init(), every "-options_file FILE" of
+   the command line (and of the files themselves) is replaced by the file's
+   options, in place, and the expanded command line is broadcast. A missing,
+   unreadable or malformed file is then one message naming the file (and line),
+   not PETSc's traceback from inside PetscInitialize(). Returns 0, or 1 with the
+   message in err on every rank. The expanded arguments live until
+   ContactOptionsFinalize(). */
+int  ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[], size_t len);
+void ContactOptionsFinalize(void);
+
+/* PETSc's conversion of an option's value (PetscOptionsStringToReal, ...Int,
+   ...Scalar, ...Bool) fails with a message that quotes the value but not the
+   option. Given the function and message of such an error, writes
+   "option -NAME: 'VALUE' is not a number" (or an integer, or true/false) into
+   buf and returns PETSC_TRUE; PETSC_FALSE if the error is another one or no
+   option has that value. For the error handler: reads the options database,
+   raises no error. */
+PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], char buf[], size_t len);
