@@ -20,3 +20,10 @@ void ContactOptionsFinalize(void);
    option has that value. For the error handler: reads the options database,
    raises no error. */
 PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], char buf[], size_t len);
+
+/* A real option with no default value of its own, read inside a
+   PetscOptionsBegin() block like PetscOptionsReal(): deflt says what stands in
+   for a default ("required", or the option it is taken from). -help shows
+   "<value : deflt>" if the option is given or has (the value before the call
+   means something), else "<deflt>", never the placeholder the code starts from. */
+PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char deflt[], PetscBool has, PetscReal *value, PetscBool *set);

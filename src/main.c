@@ -75,7 +75,7 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
 static PetscErrorCode Run(int *status)
 {
   Problem        problem;
-  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE;
+  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE, help;
   PetscLogDouble t0, t1, t2, t3;
 
   PetscFunctionBeginUser;
@@ -85,9 +85,13 @@ static PetscErrorCode Run(int *status)
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Program options", NULL);
   PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, meshOnly, &meshOnly, NULL));
   PetscOptionsEnd();
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
   PetscCall(ProblemSetFromOptions(problem));
-  if (!meshOnly) {
+  if (help) { /* every option listed with the default a run would use; nothing meshed, solved or written */
+    PetscCall(ProblemCreateSolver(problem));
+    converged = PETSC_TRUE;
+  } else if (!meshOnly) {
     PetscCall(ProblemSetUp(problem));
     PetscCall(PetscTime(&t1));
     PetscCall(ProblemSolve(problem, &converged));

@@ -377,3 +377,18 @@ PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], 
   snprintf(buf, len, "option %s: '%s' is not %s", names, value, expected);
   return PETSC_TRUE;
 }
+
+PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char deflt[], PetscBool has, PetscReal *value, PetscBool *set)
+{
+  PetscBool flg;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetReal(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, value, &flg));
+  if (PetscOptionsObject->printhelp && PetscOptionsObject->count == 1 && !PetscOptionsObject->alreadyprinted) {
+    const char *pre = PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
+    if (flg || has) PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  -%s%s <%g : %s>: %s\n", pre, opt + 1, (double)*value, deflt, text));
+    else PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  -%s%s <%s>: %s\n", pre, opt + 1, deflt, text));
+  }
+  if (set) *set = flg;
+  PetscFunctionReturn(0);
+}
