@@ -28,6 +28,18 @@ int ContactMakeDirs(const char dir[])
   return 0;
 }
 
+/* The shortest decimal form of v that reads back as v ("0.005", not
+   "0.0050000000000000001"): for file names and Gmsh's -setnumber. */
+static PetscErrorCode FormatShortest(double v, char buf[], size_t len)
+{
+  PetscFunctionBeginUser;
+  for (int prec = 1; prec <= 17; ++prec) {
+    PetscCall(PetscSNPrintf(buf, len, "%.*g", prec, v));
+    if (strtod(buf, NULL) == v) break;
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Parameters are "name=value" with a finite number; they become -setnumber name value. */
 static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], char value[])
 {
@@ -42,7 +54,7 @@ static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], 
   v = strtod(eq + 1, &end);
   PetscCheck(end != eq + 1 && *end == 0 && isfinite(v), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' for %s: value is not a finite number", p, geo);
   PetscCall(PetscStrncpy(name, p, (size_t)(eq - p) + 1));
-  PetscCall(PetscSNPrintf(value, 64, "%.17g", v));
+  PetscCall(FormatShortest(v, value, 64));
   PetscFunctionReturn(0);
 }
 
@@ -55,7 +67,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16];
+    char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16], hs[64];
     const char *slash = strrchr(geo, '/');
     struct stat sg, sm;
     size_t      l;
@@ -64,8 +76,9 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     PetscCall(PetscStrncpy(base, slash ? slash + 1 : geo, sizeof(base)));
     PetscCall(PetscStrlen(base, &l));
     if (l > 4 && !strcmp(base + l - 4, ".geo")) base[l - 4] = 0;
-    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %.17g", (double)h));
-    PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%g", (double)h));
+    PetscCall(FormatShortest((double)h, hs, sizeof(hs)));
+    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %s", hs));
+    PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%s", hs));
     for (PetscInt i = 0; i < nparams; ++i) {
       char name[64], value[64], part[160];
 
