@@ -77,8 +77,20 @@ def singular(tmp_path):
     """The indenter without its clamp, and no contact: nothing holds it."""
     opts = (ROOT / "meshes/hertz/hertz.opts").read_text().splitlines()
     p = tmp_path / "free.opts"
+    # the .geo files are relative to the scene's folder
+    opts = [re.sub(r"^(-\w+_geo) (\S+)", lambda m: f"{m[1]} {ROOT / 'meshes/hertz' / m[2]}", l) for l in opts]
     p.write_text("\n".join(l for l in opts if not l.startswith("-indenter_bc")) + "\n")
     return ["-options_file", p, "-contact_disable"], "singular"
+
+
+def geo_missing_in_options_file(tmp_path):
+    """A relative .geo path in an options file is looked for beside that file,
+    and the error says so."""
+    d = tmp_path / "scene"
+    d.mkdir()
+    p = d / "scene.opts"
+    p.write_text(f"-options_file {ROOT / 'meshes/hertz/hertz.opts'}\n-indenter_geo nosuch.geo\n")
+    return ["-options_file", p], f"cannot read {d / 'nosuch.geo'} (nosuch.geo in {p}, relative to that file's folder)"
 
 
 def options_file_two_per_line(tmp_path):
@@ -116,6 +128,8 @@ CASES = {
     "taylor_not_bool": (["-taylor_test", "maybe"], "option -taylor_test: 'maybe' is not true or false"),
     "missing_mesh": (["-block_mesh", "/nonexistent/block.msh"], "/nonexistent/block.msh"),
     "missing_geo": (["-indenter_geo", "/nonexistent/indenter.geo"], "/nonexistent/indenter.geo"),
+    "missing_geo_relative": (["-indenter_geo", "nosuch.geo"], f"cannot read nosuch.geo (relative to the current directory {ROOT})"),
+    "missing_geo_in_options_file": (geo_missing_in_options_file, None),
     "unreadable_mesh": (directory_as_mesh, None),
     "truncated_mesh": (truncated, None),
     "corrupted_mesh": (corrupted, None),

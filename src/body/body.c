@@ -63,6 +63,9 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
   PetscCheck(help || setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
   PetscCheck(help || setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
+  /* relative to the options file that names them */
+  if (hasMsh && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-mesh", b->msh, sizeof(b->msh)));
+  else if (hasGeo && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-geo", b->geo, sizeof(b->geo)));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sE", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->E));
   PetscCheck(b->E > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: Young's modulus must be > 0, got %g", opt, (double)b->E);

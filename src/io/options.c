@@ -13,6 +13,12 @@
    or a name ending in .yaml, .yml, .json or :yaml) are checked for
    readability and left to PETSc. PETSc's "alias" lines are refused.
 
+   A relative path written in an options file is relative to that file's
+   folder, so that a scene names its .geo files as "indenter.geo" and runs from
+   any directory: the file of every option is kept, and the program's path
+   options are resolved with ContactOptionsResolvePath() (nested -options_file
+   lines here, while reading).
+
    This runs before PETSc exists, so it is plain C (malloc, stdio) and reports
    an error as a message for main() to print. */
 #include <ctype.h>
@@ -22,6 +28,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "options.h"
 
 #define MAX_DEPTH 16
@@ -31,7 +38,15 @@ typedef struct {
   char **s;
 } StrList;
 
-static StrList expanded; /* argv[0] and the expanded options, NUL-terminated array */
+/* The expanded command line: argv[0] and the options, each token with its
+   source (an index in files, or -1 for the command line). */
+typedef struct {
+  StrList tok;
+  int    *src;
+  StrList files;
+} Args;
+
+static Args expanded;
 
 static int ListPush(StrList *l, const char *s, size_t n)
 {
@@ -46,9 +61,9 @@ static int ListPush(StrList *l, const char *s, size_t n)
   }
   if (!(c = (char *)malloc(n + 1))) return 1;
   memcpy(c, s, n);
-  c[n]          = 0;
-  l->s[l->n++]  = c;
-  l->s[l->n]    = NULL;
+  c[n]         = 0;
+  l->s[l->n++] = c;
+  l->s[l->n]   = NULL;
   return 0;
 }
 
@@ -58,6 +73,27 @@ static void ListFree(StrList *l)
   free(l->s);
   l->s = NULL;
   l->n = l->cap = 0;
+}
+
+static int ArgsPush(Args *a, const char *s, int src, char err[], size_t len)
+{
+  int *src2;
+
+  if (ListPush(&a->tok, s, strlen(s)) || !(src2 = (int *)realloc(a->src, (size_t)a->tok.cap * sizeof(int)))) {
+    snprintf(err, len, "out of memory reading options");
+    return 1;
+  }
+  a->src                = src2;
+  a->src[a->tok.n - 1]  = src;
+  return 0;
+}
+
+static void ArgsFree(Args *a)
+{
+  ListFree(&a->tok);
+  ListFree(&a->files);
+  free(a->src);
+  a->src = NULL;
 }
 
 /* PetscOptionsValidKey: "-" or "--", then a letter, and not a number ("-inf"). */
@@ -84,6 +120,15 @@ static int IsYAMLName(const char *f)
   return EndsWith(f, ".yaml") || EndsWith(f, ".yml") || EndsWith(f, ".json") || EndsWith(f, ":yaml");
 }
 
+/* path relative to the folder of file (file NULL: to the current directory). */
+static void JoinFolder(const char *file, const char *path, char out[], size_t len)
+{
+  const char *slash = file ? strrchr(file, '/') : NULL;
+
+  if (!slash || path[0] == '/' || !path[0]) snprintf(out, len, "%s", path);
+  else snprintf(out, len, "%.*s/%s", (int)(slash - file), file, path);
+}
+
 /* 0 if path is a readable regular file, else a message in err. */
 static int CheckReadable(const char *path, const char *what, char err[], size_t len)
 {
@@ -107,21 +152,17 @@ static int CheckReadable(const char *path, const char *what, char err[], size_t 
 }
 
 /* A YAML options file is PETSc's to read; only its existence is checked here. */
-static int PassYAML(StrList *out, const char *key, const char *file, char err[], size_t len)
+static int PassYAML(Args *out, const char *key, const char *file, int src, char err[], size_t len)
 {
   char path[4096];
 
   snprintf(path, sizeof(path), "%s", file);
   if (EndsWith(path, ":yaml")) path[strlen(path) - 5] = 0;
   if (CheckReadable(path, "options file", err, len)) return 1;
-  if (ListPush(out, key, strlen(key)) || ListPush(out, file, strlen(file))) {
-    snprintf(err, len, "out of memory reading options");
-    return 1;
-  }
-  return 0;
+  return ArgsPush(out, key, src, err, len) || ArgsPush(out, file, src, err, len);
 }
 
-static int ExpandFile(StrList *out, const char *file, int depth, char err[], size_t len);
+static int ExpandFile(Args *out, const char *file, int depth, char err[], size_t len);
 
 /* Splits a line as PetscToken does with ' ': a token that starts with '"'
    ends at the next '"'. */
@@ -149,10 +190,12 @@ static int Tokenize(char *line, char *tok[], int max)
   return n;
 }
 
-static int ExpandLine(StrList *out, char *line, const char *file, long lineno, int depth, char err[], size_t len)
+/* A line of options file number src (out->files). */
+static int ExpandLine(Args *out, char *line, int src, long lineno, int depth, char err[], size_t len)
 {
-  char *tok[3];
-  int   n;
+  const char *file = out->files.s[src];
+  char       *tok[3];
+  int         n;
 
   for (char *c = line; *c; ++c) {
     if (*c == '#') {
@@ -180,31 +223,32 @@ static int ExpandLine(StrList *out, char *line, const char *file, long lineno, i
     return 1;
   }
   if (!strcasecmp(tok[0], "-options_file") || !strcasecmp(tok[0], "-options_file_yaml")) {
+    char path[4096], key[64];
+
     if (n < 2) {
       snprintf(err, len, "options file %s line %ld: %s needs a file name", file, lineno, tok[0]);
       return 1;
     }
-    if (!strcasecmp(tok[0], "-options_file_yaml") || IsYAMLName(tok[1]) ? PassYAML(out, tok[0], tok[1], err, len) : ExpandFile(out, tok[1], depth + 1, err, len)) {
+    /* relative to this file's folder, like every path in an options file */
+    JoinFolder(file, tok[1], path, sizeof(path));
+    snprintf(key, sizeof(key), "%s", tok[0]);
+    if (!strcasecmp(key, "-options_file_yaml") || IsYAMLName(path) ? PassYAML(out, key, path, src, err, len) : ExpandFile(out, path, depth + 1, err, len)) {
       const size_t l = strlen(err);
-      if (!strstr(err, " line ")) snprintf(err + l, len - l, " (%s in %s line %ld)", tok[0], file, lineno);
+      if (!strstr(err, " line ")) snprintf(err + l, len - l, " (%s %s in %s line %ld)", key, tok[1], out->files.s[src], lineno);
       return 1;
     }
     return 0;
   }
-  if (ListPush(out, tok[0], strlen(tok[0])) || (n > 1 && ListPush(out, tok[1], strlen(tok[1])))) {
-    snprintf(err, len, "out of memory reading options file %s", file);
-    return 1;
-  }
-  return 0;
+  return ArgsPush(out, tok[0], src, err, len) || (n > 1 && ArgsPush(out, tok[1], src, err, len));
 }
 
-static int ExpandFile(StrList *out, const char *file, int depth, char err[], size_t len)
+static int ExpandFile(Args *out, const char *file, int depth, char err[], size_t len)
 {
-  FILE   *fp;
-  char   *line = NULL;
-  size_t  cap  = 0;
-  long    lineno = 0;
-  int     rc   = 0;
+  FILE  *fp;
+  char  *line   = NULL;
+  size_t cap    = 0;
+  long   lineno = 0;
+  int    rc = 0, src;
 
   if (depth > MAX_DEPTH) {
     snprintf(err, len, "options file %s: options files nested more than %d deep (does one include itself?)", file, MAX_DEPTH);
@@ -215,7 +259,13 @@ static int ExpandFile(StrList *out, const char *file, int depth, char err[], siz
     snprintf(err, len, "cannot read options file %s: %s", file, strerror(errno));
     return 1;
   }
-  while (!rc && getline(&line, &cap, fp) >= 0) rc = ExpandLine(out, line, file, ++lineno, depth, err, len);
+  if (ListPush(&out->files, file, strlen(file))) {
+    fclose(fp);
+    snprintf(err, len, "out of memory reading options file %s", file);
+    return 1;
+  }
+  src = out->files.n - 1;
+  while (!rc && getline(&line, &cap, fp) >= 0) rc = ExpandLine(out, line, src, ++lineno, depth, err, len);
   if (!rc && ferror(fp)) {
     snprintf(err, len, "cannot read options file %s: %s", file, strerror(errno));
     rc = 1;
@@ -227,9 +277,9 @@ static int ExpandFile(StrList *out, const char *file, int depth, char err[], siz
 
 /* The command line (args[1..]) with its options files expanded, as PETSc's
    PetscOptionsInsertArgs() would insert it. */
-static int ExpandArgs(StrList *out, int argc, char **argv, char err[], size_t len)
+static int ExpandArgs(Args *out, int argc, char **argv, char err[], size_t len)
 {
-  if (ListPush(out, argv[0], strlen(argv[0]))) return 1;
+  if (ArgsPush(out, argv[0], -1, err, len)) return 1;
   for (int i = 1; i < argc; ++i) {
     const int file = ValidKey(argv[i]) && !strcasecmp(argv[i], "-options_file");
     const int yaml = ValidKey(argv[i]) && !strcasecmp(argv[i], "-options_file_yaml");
@@ -240,72 +290,150 @@ static int ExpandArgs(StrList *out, int argc, char **argv, char err[], size_t le
         return 1;
       }
       if (yaml || IsYAMLName(argv[i + 1])) {
-        if (PassYAML(out, argv[i], argv[i + 1], err, len)) return 1;
+        if (PassYAML(out, argv[i], argv[i + 1], -1, err, len)) return 1;
       } else if (ExpandFile(out, argv[i + 1], 1, err, len)) return 1;
       ++i;
-    } else if (ListPush(out, argv[i], strlen(argv[i]))) {
-      snprintf(err, len, "out of memory reading options");
-      return 1;
-    }
+    } else if (ArgsPush(out, argv[i], -1, err, len)) return 1;
+  }
+  return 0;
+}
+
+/* NUL-separated strings of a list, and back. */
+static char *Pack(const StrList *l, int *bytes)
+{
+  size_t n = 1, off = 0;
+  char  *b;
+
+  for (int i = 0; i < l->n; ++i) n += strlen(l->s[i]) + 1;
+  if (!(b = (char *)malloc(n))) return NULL;
+  for (int i = 0; i < l->n; ++i) {
+    size_t m = strlen(l->s[i]) + 1;
+    memcpy(b + off, l->s[i], m);
+    off += m;
+  }
+  *bytes = (int)off;
+  return b;
+}
+
+static int Unpack(StrList *l, const char *b, int bytes)
+{
+  for (int off = 0; off < bytes;) {
+    size_t n = strlen(b + off);
+    if (ListPush(l, b + off, n)) return 1;
+    off += (int)n + 1;
   }
   return 0;
 }
 
 int ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[], size_t len)
 {
-  int   rank, info[2] = {0, 0}; /* error, bytes of the packed arguments */
-  char *packed = NULL;
+  int   rank, info[4] = {0, 0, 0, 0}; /* error, tokens, bytes of the packed tokens, of the packed files */
+  char *ptok = NULL, *pfiles = NULL;
+  Args  a = {{0, 0, NULL}, NULL, {0, 0, NULL}};
 
   err[0] = 0;
   (void)MPI_Comm_rank(comm, &rank);
   if (!rank) {
-    StrList l = {0, 0, NULL};
-
-    if (ExpandArgs(&l, *argc, *argv, err, len)) info[0] = 1;
-    else {
-      size_t bytes = 0, off = 0;
-      for (int i = 0; i < l.n; ++i) bytes += strlen(l.s[i]) + 1;
-      if (!(packed = (char *)malloc(bytes))) info[0] = 1;
-      else {
-        for (int i = 0; i < l.n; ++i) {
-          size_t n = strlen(l.s[i]) + 1;
-          memcpy(packed + off, l.s[i], n);
-          off += n;
-        }
-        info[1] = (int)bytes;
-      }
-    }
-    ListFree(&l);
-  }
-  (void)MPI_Bcast(info, 2, MPI_INT, 0, comm);
-  if (info[0]) {
-    (void)MPI_Bcast(err, (int)len, MPI_CHAR, 0, comm);
-    free(packed);
-    return 1;
-  }
-  if (rank && !(packed = (char *)malloc((size_t)info[1]))) {
-    snprintf(err, len, "out of memory reading options");
-    return 1;
-  }
-  (void)MPI_Bcast(packed, info[1], MPI_CHAR, 0, comm);
-  for (int off = 0; off < info[1];) {
-    size_t n = strlen(packed + off);
-    if (ListPush(&expanded, packed + off, n)) {
-      free(packed);
+    if (ExpandArgs(&a, *argc, *argv, err, len)) info[0] = 1;
+    else if (!(ptok = Pack(&a.tok, &info[2])) || !(pfiles = Pack(&a.files, &info[3]))) {
       snprintf(err, len, "out of memory reading options");
-      return 1;
+      info[0] = 1;
     }
-    off += (int)n + 1;
+    info[1] = a.tok.n;
   }
-  free(packed);
-  *argc = expanded.n;
-  *argv = expanded.s;
+  (void)MPI_Bcast(info, 4, MPI_INT, 0, comm);
+  if (!info[0] && rank) {
+    ptok   = (char *)malloc((size_t)info[2] + 1);
+    pfiles = (char *)malloc((size_t)info[3] + 1);
+    a.src  = (int *)malloc(((size_t)info[1] + 1) * sizeof(int));
+    if (!ptok || !pfiles || !a.src) info[0] = 2; /* this rank alone: reported below */
+  }
+  if (info[0] == 1) (void)MPI_Bcast(err, (int)len, MPI_CHAR, 0, comm);
+  else if (!info[0]) {
+    (void)MPI_Bcast(ptok, info[2], MPI_CHAR, 0, comm);
+    (void)MPI_Bcast(pfiles, info[3], MPI_CHAR, 0, comm);
+    (void)MPI_Bcast(a.src, info[1], MPI_INT, 0, comm);
+    expanded.src = a.src;
+    a.src        = NULL;
+    if (Unpack(&expanded.tok, ptok, info[2]) || Unpack(&expanded.files, pfiles, info[3])) info[0] = 2;
+  }
+  if (info[0] == 2) snprintf(err, len, "out of memory reading options");
+  free(ptok);
+  free(pfiles);
+  ArgsFree(&a);
+  if (info[0]) return 1;
+  *argc = expanded.tok.n;
+  *argv = expanded.tok.s;
   return 0;
 }
 
 void ContactOptionsFinalize(void)
 {
-  ListFree(&expanded);
+  ArgsFree(&expanded);
+}
+
+PetscErrorCode ContactOptionsResolvePath(const char pre[], const char opt[], char path[], size_t len, char where[], size_t wlen)
+{
+  char prefix[512] = "", name[512];
+  int  stack[32], depth = 0, src = -2; /* -2: not on the expanded command line */
+
+  PetscFunctionBeginUser;
+  if (where) where[0] = 0;
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s%s", pre ? pre : "", opt + 1));
+  /* the last setting wins, as PETSc inserts them; -prefix_push applies to the names after it */
+  for (int i = 1; i < expanded.tok.n; ++i) {
+    const char *t = expanded.tok.s[i];
+
+    if (!ValidKey(t)) continue;
+    if (!strcasecmp(t, "-prefix_push") && i + 1 < expanded.tok.n) {
+      if (depth < 32) stack[depth++] = (int)strlen(prefix);
+      PetscCall(PetscStrlcat(prefix, expanded.tok.s[++i], sizeof(prefix)));
+    } else if (!strcasecmp(t, "-prefix_pop")) {
+      if (depth) prefix[stack[--depth]] = 0;
+    } else if (!strcasecmp(t, "-options_file") || !strcasecmp(t, "-options_file_yaml")) {
+      ++i;
+    } else {
+      char full[1024];
+      PetscCall(PetscSNPrintf(full, sizeof(full), "%s%s", prefix, t + 1));
+      if (!strcasecmp(full, name)) src = expanded.src[i];
+    }
+  }
+  if (src == -2 || !path[0] || path[0] == '/') PetscFunctionReturn(0);
+  if (src >= 0) {
+    char        given[PETSC_MAX_PATH_LEN];
+    const char *file = expanded.files.s[src];
+    PetscCall(PetscStrncpy(given, path, sizeof(given)));
+    JoinFolder(file, given, path, len);
+    if (where) PetscCall(PetscSNPrintf(where, wlen, "%s in %s, relative to that file's folder", given, file));
+  } else if (where) {
+    char cwd[PETSC_MAX_PATH_LEN];
+    PetscCall(PetscSNPrintf(where, wlen, "relative to the current directory %s", getcwd(cwd, sizeof(cwd)) ? cwd : "."));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactOptionsGetInputFile(MPI_Comm comm, const char pre[], const char opt[], char path[], size_t len)
+{
+  char        where[2 * PETSC_MAX_PATH_LEN + 64], err[3 * PETSC_MAX_PATH_LEN + 256] = "";
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactOptionsResolvePath(pre, opt, path, len, where, sizeof(where)));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    struct stat st;
+    FILE       *fp = NULL;
+    const char *why = NULL;
+
+    if (stat(path, &st)) why = strerror(errno);
+    else if (S_ISDIR(st.st_mode)) why = "it is a directory";
+    else if (!(fp = fopen(path, "r"))) why = strerror(errno);
+    if (fp) fclose(fp);
+    if (why) PetscCall(PetscSNPrintf(err, sizeof(err), "option -%s%s: cannot read %s%s%s%s: %s", pre ? pre : "", opt + 1, path, where[0] ? " (" : "", where, where[0] ? ")" : "", why));
+  }
+  PetscCallMPI(MPI_Bcast(err, sizeof(err), MPI_CHAR, 0, comm));
+  PetscCheck(!err[0], comm, PETSC_ERR_FILE_OPEN, "%s", err);
+  PetscFunctionReturn(0);
 }
 
 /* The value quoted by PETSc's message, and what it should have been. */

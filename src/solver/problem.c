@@ -7,6 +7,7 @@
 #include "partition.h"
 #include "contactpair.h"
 #include "schur.h"
+#include "options.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
 const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
@@ -69,6 +70,15 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
   PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
   PetscOptionsEnd();
+  { /* relative to the options file that names them */
+    char *paths[3] = {p->meshDir, p->output, p->summary};
+    const char *opts[3] = {"-mesh_dir", "-output", "-summary"};
+    for (PetscInt k = 0; k < 3; ++k) {
+      PetscBool none;
+      PetscCall(PetscStrcmp(paths[k], "none", &none));
+      if (!none) PetscCall(ContactOptionsResolvePath(NULL, opts[k], paths[k], PETSC_MAX_PATH_LEN, NULL, 0));
+    }
+  }
   PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
   p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
