@@ -663,6 +663,14 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
+    Body      b = p->bodies[i];
+    PetscReal err, nrm;
+
+    if (!b->hasExact) continue;
+    PetscCall(BodyComputeErrorL2(b, b->Xl, &err, &nrm)); /* Xl: X, scattered by ProblemEvaluate() */
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(nrm > 0 ? err / nrm : err)));
+  }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
   PetscCall(PetscLogStagePop());
