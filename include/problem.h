@@ -54,6 +54,9 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void 
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */
 PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
+/* Creates the TAO solver with the program's defaults and the options (also
+   before ProblemSetUp(), for -help). */
+PetscErrorCode ProblemCreateSolver(Problem);
 PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
 /* Collective: the results at the converged state X (energy, gradient norm,
    reactions, each term's results) and the report. */

@@ -4,6 +4,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
 
 #include "problem.h"
 #include "contactpair.h"
+#include "options.h"
 
 ContactLog contactLog;
 
@@ -54,7 +55,13 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
   if (IsInputError(n)) {
     if (p == PETSC_ERROR_INITIAL) {
       PetscMPIInt rank = 0;
-      if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
+      char        option[1024];
+
+      /* a bad option value: the same on every rank, so reported once */
+      if (ContactOptionsDescribeValueError(fun, mess, option, sizeof(option))) {
+        MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+        mess = option;
+      } else if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
       if (!rank) {
         fprintf(stderr, "contact: error: %s\n", mess ? mess : "unknown");
         fflush(stderr);
@@ -68,7 +75,7 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
 static PetscErrorCode Run(int *status)
 {
   Problem        problem;
-  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE;
+  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE, help;
   PetscLogDouble t0, t1, t2, t3;
 
   PetscFunctionBeginUser;
@@ -78,9 +85,13 @@ static PetscErrorCode Run(int *status)
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Program options", NULL);
   PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, meshOnly, &meshOnly, NULL));
   PetscOptionsEnd();
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
   PetscCall(ProblemSetFromOptions(problem));
-  if (!meshOnly) {
+  if (help) { /* every option listed with the default a run would use; nothing meshed, solved or written */
+    PetscCall(ProblemCreateSolver(problem));
+    converged = PETSC_TRUE;
+  } else if (!meshOnly) {
     PetscCall(ProblemSetUp(problem));
     PetscCall(PetscTime(&t1));
     PetscCall(ProblemSolve(problem, &converged));
@@ -106,11 +117,23 @@ static PetscErrorCode Run(int *status)
   PetscFunctionReturn(0);
 }
 
+/* MPI is started before PETSc so that the options files can be read first
+   (options.c): a bad file is one line, not a traceback from PetscInitialize(). */
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
-  int            status = 1;
+  int            status = 1, provided;
+  char           err[4096];
 
+  MPI_Init_thread(&argc, &argv, PETSC_MPI_THREAD_REQUIRED, &provided);
+  if (ContactOptionsExpandFiles(MPI_COMM_WORLD, &argc, &argv, err, sizeof(err))) {
+    int rank;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (!rank) fprintf(stderr, "contact: error: %s\n", err);
+    ContactOptionsFinalize();
+    MPI_Finalize();
+    return 1;
+  }
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscPushErrorHandler(ContactErrorHandler, NULL));
   PetscCall(ContactOutputInstallSignalHandlers());
@@ -122,5 +145,7 @@ int main(int argc, char **argv)
   PetscCall(ExactSolutionFinalize());
   PetscCall(ContactFormulationFinalize());
   PetscCall(PetscFinalize());
+  ContactOptionsFinalize();
+  MPI_Finalize();
   return status;
 }

@@ -73,7 +73,8 @@ def make_seeds(workdir, bin_path=BIN):
         assert len(found) == 1, f"expected one {body} mesh in {d22}, found {found}"
         seeds[(body, "2.2")] = found[0]
         wrapper = workdir / f"{body}41.geo"
-        wrapper.write_text(f'Include "{ROOT / opts[body + "_geo"]}";\nMesh.MshFileVersion = 4.1;\n')
+        geo = (ROOT / SCENE).parent / opts[body + "_geo"]  # relative to the options file
+        wrapper.write_text(f'Include "{geo}";\nMesh.MshFileVersion = 4.1;\n')
         cmd = ["gmsh", "-2", "-v", "0", str(wrapper), "-setnumber", "h", str(MESH_SIZE), "-o", str(workdir / f"{body}41.msh")]
         for p in filter(None, opts.get(body + "_geo_params", "").split(",")):
             name, value = p.split("=")

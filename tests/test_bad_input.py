@@ -77,8 +77,33 @@ def singular(tmp_path):
     """The indenter without its clamp, and no contact: nothing holds it."""
     opts = (ROOT / "meshes/hertz/hertz.opts").read_text().splitlines()
     p = tmp_path / "free.opts"
+    # the .geo files are relative to the scene's folder
+    opts = [re.sub(r"^(-\w+_geo) (\S+)", lambda m: f"{m[1]} {ROOT / 'meshes/hertz' / m[2]}", l) for l in opts]
     p.write_text("\n".join(l for l in opts if not l.startswith("-indenter_bc")) + "\n")
     return ["-options_file", p, "-contact_disable"], "singular"
+
+
+def geo_missing_in_options_file(tmp_path):
+    """A relative .geo path in an options file is looked for beside that file,
+    and the error says so."""
+    d = tmp_path / "scene"
+    d.mkdir()
+    p = d / "scene.opts"
+    p.write_text(f"-options_file {ROOT / 'meshes/hertz/hertz.opts'}\n-indenter_geo nosuch.geo\n")
+    return ["-options_file", p], f"cannot read {d / 'nosuch.geo'} (nosuch.geo in {p}, relative to that file's folder)"
+
+
+def options_file_two_per_line(tmp_path):
+    p = tmp_path / "twice.opts"
+    p.write_text("# two options on one line\n-mesh_size 0.3 -tao_monitor\n")
+    return ["-options_file", p], "twice.opts line 2"
+
+
+def options_file_nested_missing(tmp_path):
+    """An options file that includes a missing one: both are named."""
+    p = tmp_path / "outer.opts"
+    p.write_text("-options_file nosuch-inner.opts\n")
+    return ["-options_file", p], "nosuch-inner.opts"
 
 
 def output_under_file(tmp_path):
@@ -88,8 +113,23 @@ def output_under_file(tmp_path):
 
 
 CASES = {
+    "missing_options_file": (["-options_file", "nosuch.opts"], "options file nosuch.opts"),
+    "options_file_is_directory": (["-options_file", "meshes/hertz"], "meshes/hertz"),
+    "options_file_without_name": (["-options_file"], "-options_file"),
+    "options_file_two_per_line": (options_file_two_per_line, None),
+    "options_file_nested_missing": (options_file_nested_missing, None),
+    "mesh_size_not_number": (["-mesh_size", "abc"], "option -mesh_size: 'abc' is not a number"),
+    "E_not_number": (["-block_E", "1e3.5"], "option -block_E: '1e3.5'"),
+    "kp_not_number": (["-contact_penalty", "2e6x"], "option -contact_penalty: '2e6x'"),
+    "push_not_number": (["-block_bc_push_values", "-0.15,abc"], "option -block_bc_push_values: 'abc'"),
+    "quadrature_not_integer": (["-contact_quadrature_points", "2.5"], "option -contact_quadrature_points: '2.5' is not an integer"),
+    "max_it_not_integer": (["-tao_max_it", "many"], "option -tao_max_it: 'many'"),
+    "gttol_not_number": (["-tao_gttol", "tiny"], "option -tao_gttol: 'tiny'"),
+    "taylor_not_bool": (["-taylor_test", "maybe"], "option -taylor_test: 'maybe' is not true or false"),
     "missing_mesh": (["-block_mesh", "/nonexistent/block.msh"], "/nonexistent/block.msh"),
     "missing_geo": (["-indenter_geo", "/nonexistent/indenter.geo"], "/nonexistent/indenter.geo"),
+    "missing_geo_relative": (["-indenter_geo", "nosuch.geo"], f"cannot read nosuch.geo (relative to the current directory {ROOT})"),
+    "missing_geo_in_options_file": (geo_missing_in_options_file, None),
     "unreadable_mesh": (directory_as_mesh, None),
     "truncated_mesh": (truncated, None),
     "corrupted_mesh": (corrupted, None),
@@ -151,6 +191,19 @@ def test_bad_input(name, tmp_path):
     for p, text in outputs.items():
         assert p.read_text() == text, f"{p.name} was overwritten"
     assert sorted(os.listdir(run)) == sorted(p.name for p in outputs), os.listdir(run)
+
+
+@pytest.mark.parametrize("args", [["-options_file", "nosuch.opts"], SCENE + ["-mesh_size", "abc"]])
+def test_bad_input_two_ranks(args, tmp_path):
+    """On two ranks a bad options file or option value is still reported once."""
+    cmd = ["mpiexec", "--oversubscribe", "-n", "2", str(BIN)] + args + [
+        "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json"), "-mesh_dir", str(tmp_path / "meshes")]
+    proc = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
+    assert proc.returncode != 0
+    errors = [l for l in proc.stderr.splitlines() if l.startswith("contact: error: ")]
+    assert len(errors) == 1 and ("nosuch.opts" in errors[0] or "-mesh_size" in errors[0]), proc.stderr
+    assert "PETSC ERROR" not in proc.stderr
+    assert not list(tmp_path.iterdir())
 
 
 def test_unconverged_writes_nothing(tmp_path):

@@ -5,6 +5,7 @@
 #include "meshgen.h"
 #include "mshcheck.h"
 #include "partition.h"
+#include "options.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
 {
@@ -33,18 +34,20 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
   char     *bcnames[CONTACT_MAX_BC];
   PetscInt  nbc = CONTACT_MAX_BC, ngp = 16;
-  PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, setE, setNu;
+  PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, setE, setNu, help;
   PetscInt  qdeg = 4;
 
   PetscFunctionBeginUser;
+  /* -help lists the options and stops: nothing is required, nothing meshed */
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
   PetscOptionsBegin(b->comm, prefix, "Body options", NULL);
-  PetscCall(PetscOptionsString("-geo", "Gmsh .geo file of the body", NULL, b->geo, b->geo, sizeof(b->geo), &hasGeo));
+  PetscCall(PetscOptionsString("-geo", "Gmsh .geo file of the body (this or -<body>_mesh is required)", NULL, b->geo, b->geo, sizeof(b->geo), &hasGeo));
   PetscCall(PetscOptionsString("-mesh", "Ready-made second-order Gmsh .msh file (instead of -geo)", NULL, b->msh, b->msh, sizeof(b->msh), &hasMsh));
   PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
   PetscCall(PetscOptionsStringArray("-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
-  PetscCall(PetscOptionsReal("-E", "Young's modulus (required)", NULL, b->E, &b->E, &setE));
-  PetscCall(PetscOptionsReal("-nu", "Poisson's ratio (required)", NULL, b->nu, &b->nu, &setNu));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
   PetscCall(PetscOptionsStringArray("-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
   PetscCall(PetscOptionsString("-exact", "Exact solution for verification: none, affine, trig", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
@@ -53,9 +56,16 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   PetscOptionsEnd();
   b->ngeoparams = ngp;
   b->qdeg       = qdeg;
-  PetscCheck(hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
-  PetscCheck(setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
-  PetscCheck(setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
+  if (help && !nbc) { /* the options of a Dirichlet condition, under a placeholder group */
+    PetscCall(PetscStrallocpy("<group>", &bcnames[0]));
+    nbc = 1;
+  }
+  PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
+  PetscCheck(help || setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
+  PetscCheck(help || setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
+  /* relative to the options file that names them */
+  if (hasMsh && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-mesh", b->msh, sizeof(b->msh)));
+  else if (hasGeo && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-geo", b->geo, sizeof(b->geo)));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sE", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->E));
   PetscCheck(b->E > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: Young's modulus must be > 0, got %g", opt, (double)b->E);
@@ -119,7 +129,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
     }
     PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
   }
-  if (hasGeo && !hasMsh) {
+  if (hasGeo && !hasMsh && !help) {
     PetscLogDouble t0, t1;
     PetscCall(PetscTime(&t0));
     PetscCall(PetscLogStagePush(contactLog.mesh));

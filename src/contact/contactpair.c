@@ -2,6 +2,7 @@
    into a ContactPairSpec whatever the formulation, and the registry of
    formulations from which each pair's energy term is created by name. */
 #include "contactpair.h"
+#include "options.h"
 
 PetscFunctionList ContactFormulationList = NULL;
 
@@ -61,19 +62,24 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   char     *names[64], formulation[CONTACT_NAME_LEN] = "gpts";
   PetscInt  np = 64, nq = 4;
   PetscReal kp = -1.0, blend = 0.05;
-  PetscBool disable = PETSC_FALSE, setkp, setBlend;
+  PetscBool disable = PETSC_FALSE, setkp, setBlend, help;
 
   PetscFunctionBeginUser;
   *nterms = 0;
+  PetscCall(PetscOptionsHasHelp(NULL, &help)); /* -help: list the options; a penalty or a pair's surfaces are not required */
   PetscCall(ContactFormulationRegisterAll());
   PetscOptionsBegin(comm, NULL, "Contact options", NULL);
-  PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces)", NULL, names, &np, NULL));
+  PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces; none: no contact)", NULL, names, &np, NULL));
   PetscCall(PetscOptionsFList("-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
-  PetscCall(PetscOptionsReal("-contact_penalty", "Penalty k_p of every pair (required with pairs)", NULL, kp, &kp, &setkp));
-  PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge", NULL, nq, &nq, NULL));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-contact_penalty", "Penalty k_p of every pair (required with pairs)", "required", PETSC_FALSE, &kp, &setkp));
+  PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge (gpts), per segment (mortar, at least 3)", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners; default 0.05 for gpts, 0 for mortar)", NULL, blend, &blend, &setBlend));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
   PetscOptionsEnd();
+  if (help && !np) { /* -help without pairs: a pair's options under a placeholder name */
+    PetscCall(PetscStrallocpy("<pair>", &names[0]));
+    np = 1;
+  }
   PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
   PetscCheck(nq >= 1 && nq <= 8, comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   PetscCheck(np <= maxTerms, comm, PETSC_ERR_USER_INPUT, "option -contact_pairs: %" PetscInt_FMT " pairs, at most %" PetscInt_FMT, np, maxTerms);
@@ -81,7 +87,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     ContactPairSpec spec;
     char            prefix[2 * CONTACT_NAME_LEN], option[3 * CONTACT_NAME_LEN], *surf[2] = {NULL, NULL};
     PetscInt        ns = 2, nr = 2;
-    PetscBool       setPair, setForm;
+    PetscBool       setPair, setForm, setPairKp;
 
     PetscCall(PetscMemzero(&spec, sizeof(spec)));
     PetscCall(PetscStrncpy(spec.name, names[i], sizeof(spec.name)));
@@ -98,15 +104,19 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     spec.exactHessian = exactHessian;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
-    PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group", NULL, surf, &ns, &setPair));
+    PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
     PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
-    PetscCall(PetscOptionsReal("-penalty", "Penalty k_p of this pair (default -contact_penalty)", NULL, spec.kp, &spec.kp, NULL));
+    PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-penalty", "Penalty k_p of this pair (default -contact_penalty)", "-contact_penalty", setkp, &spec.kp, &setPairKp));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, spec.radii, &nr, &spec.hertz));
-    PetscCall(PetscOptionsReal("-mirror_y", "Half model mirrored about the line y = value: the report doubles the force across it and mirrors the profiles", NULL, spec.mirrorY, &spec.mirrorY, &spec.mirror));
+    PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
     PetscOptionsEnd();
+    if (help && !setPair) { /* -help: a pair without surfaces (the placeholder) is only listed */
+      for (PetscInt s = 0; s < ns; ++s) PetscCall(PetscFree(surf[s]));
+      continue;
+    }
     PetscCheck(setPair && ns == 2, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
     PetscCheck(!spec.hertz || nr == 2, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
-    PetscCheck(!PetscIsInfOrNanReal(spec.kp) && spec.kp > 0, comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)spec.kp);
+    PetscCheck((help && !setkp && !setPairKp) || (!PetscIsInfOrNanReal(spec.kp) && spec.kp > 0), comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)spec.kp);
     for (PetscInt s = 0; s < 2; ++s) {
       char *colon = strchr(surf[s], ':');
       PetscCheck(colon, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: '%s' is not body:group", prefix, surf[s]);

@@ -28,6 +28,18 @@ int ContactMakeDirs(const char dir[])
   return 0;
 }
 
+/* The shortest decimal form of v that reads back as v ("0.005", not
+   "0.0050000000000000001"): for file names and Gmsh's -setnumber. */
+static PetscErrorCode FormatShortest(double v, char buf[], size_t len)
+{
+  PetscFunctionBeginUser;
+  for (int prec = 1; prec <= 17; ++prec) {
+    PetscCall(PetscSNPrintf(buf, len, "%.*g", prec, v));
+    if (strtod(buf, NULL) == v) break;
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Parameters are "name=value" with a finite number; they become -setnumber name value. */
 static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], char value[])
 {
@@ -42,8 +54,55 @@ static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], 
   v = strtod(eq + 1, &end);
   PetscCheck(end != eq + 1 && *end == 0 && isfinite(v), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' for %s: value is not a finite number", p, geo);
   PetscCall(PetscStrncpy(name, p, (size_t)(eq - p) + 1));
-  PetscCall(PetscSNPrintf(value, 64, "%.17g", v));
+  PetscCall(FormatShortest(v, value, 64));
   PetscFunctionReturn(0);
+}
+
+/* Whether a .geo file uses the mesh size h (-setnumber h): an identifier h,
+   outside comments and strings, other than in Exists(h) and "h = ...". A file
+   that Includes another is given the benefit of the doubt. */
+static PetscBool GeoUsesMeshSize(const char geo[])
+{
+  FILE     *fp = fopen(geo, "r");
+  char     *text;
+  long      n;
+  PetscBool uses = PETSC_FALSE;
+
+  if (!fp) return PETSC_TRUE; /* reported elsewhere */
+  if (fseek(fp, 0, SEEK_END) || (n = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) || !(text = (char *)malloc((size_t)n + 1))) {
+    fclose(fp);
+    return PETSC_TRUE;
+  }
+  n       = (long)fread(text, 1, (size_t)n, fp);
+  text[n] = 0;
+  fclose(fp);
+  for (long i = 0; i < n && !uses;) {
+    if (text[i] == '/' && text[i + 1] == '/') {
+      while (i < n && text[i] != '\n') ++i;
+    } else if (text[i] == '/' && text[i + 1] == '*') {
+      char *end = strstr(text + i + 2, "*/");
+      i         = end ? end - text + 2 : n;
+    } else if (text[i] == '"') {
+      for (++i; i < n && text[i] != '"'; ++i) if (text[i] == '\\') ++i;
+      ++i;
+    } else if (isalpha((unsigned char)text[i]) || text[i] == '_') {
+      long      j = i, k, b;
+      PetscBool assigned, exists;
+
+      while (j < n && (isalnum((unsigned char)text[j]) || text[j] == '_')) ++j;
+      if (j - i == 7 && !strncmp(text + i, "Include", 7)) uses = PETSC_TRUE;
+      else if (j - i == 1 && text[i] == 'h') {
+        for (k = j; k < n && isspace((unsigned char)text[k]); ++k) {}
+        for (b = i - 1; b >= 0 && isspace((unsigned char)text[b]); --b) {}
+        assigned = (PetscBool)(text[k] == '=' && text[k + 1] != '=');
+        exists   = (PetscBool)(b >= 6 && text[b] == '(' && !strncmp(text + b - 6, "Exists", 6));
+        if (!assigned && !exists) uses = PETSC_TRUE;
+      }
+      i = j;
+    } else ++i;
+  }
+  free(text);
+  return uses;
 }
 
 PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char dir[], char msh[], size_t len)
@@ -55,7 +114,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16];
+    char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16], hs[64];
     const char *slash = strrchr(geo, '/');
     struct stat sg, sm;
     size_t      l;
@@ -64,8 +123,9 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     PetscCall(PetscStrncpy(base, slash ? slash + 1 : geo, sizeof(base)));
     PetscCall(PetscStrlen(base, &l));
     if (l > 4 && !strcmp(base + l - 4, ".geo")) base[l - 4] = 0;
-    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %.17g", (double)h));
-    PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%g", (double)h));
+    PetscCall(FormatShortest((double)h, hs, sizeof(hs)));
+    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %s", hs));
+    PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%s", hs));
     for (PetscInt i = 0; i < nparams; ++i) {
       char name[64], value[64], part[160];
 
@@ -82,7 +142,8 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     } else if (stat(geo, &sg)) {
       err = 1;
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read geometry file %s: %s", geo, strerror(errno)));
-    } else if (stat(msh, &sm) || sm.st_mtime < sg.st_mtime) {
+    } else if (!GeoUsesMeshSize(geo)) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see README, Geometry files)\n", geo));
+    if (!err && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
       PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp%d.msh", msh, (int)getpid()));
       PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
       PetscCall(PetscStrlcat(cmd, " '", sizeof(cmd)));

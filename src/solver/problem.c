@@ -7,6 +7,7 @@
 #include "partition.h"
 #include "contactpair.h"
 #include "schur.h"
+#include "options.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
 const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
@@ -38,13 +39,14 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
 {
   char     *names[CONTACT_MAX_BODIES];
   PetscInt  nb = CONTACT_MAX_BODIES;
-  PetscBool set;
+  PetscBool set, help;
   char      def[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
   PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->scene, p->scene, sizeof(p->scene), NULL));
-  PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_", NULL, names, &nb, &set));
+  PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
   PetscCall(PetscOptionsReal("-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size; -1: per body)", NULL, p->meshSize, &p->meshSize, NULL));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
   PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
@@ -68,12 +70,26 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
   PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
   PetscOptionsEnd();
+  { /* relative to the options file that names them */
+    char *paths[3] = {p->meshDir, p->output, p->summary};
+    const char *opts[3] = {"-mesh_dir", "-output", "-summary"};
+    for (PetscInt k = 0; k < 3; ++k) {
+      PetscBool none;
+      PetscCall(PetscStrcmp(paths[k], "none", &none));
+      if (!none) PetscCall(ContactOptionsResolvePath(NULL, opts[k], paths[k], PETSC_MAX_PATH_LEN, NULL, 0));
+    }
+  }
   PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
   p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
   PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
   PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
   PetscCheck(p->stageRtol > 0 && p->stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->stageRtol);
+  if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
+    PetscCall(PetscStrallocpy("<body>", &names[0]));
+    nb  = 1;
+    set = PETSC_TRUE;
+  }
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
   PetscCheck(p->meshSize == -1.0 || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be > 0, got %g", (double)p->meshSize);
   p->nbodies = nb;
@@ -459,28 +475,60 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
    definite and changes only in the contact-surface block, so on one rank the
    step goes through the Schur complement on that block (schur.c, K factored
    once), elsewhere through a Cholesky factorisation per step (MUMPS); nls
-   takes the factored step directly (preonly); -newton_schur 0,
-   -tao_nls_ksp_type, -tao_nls_pc_type, ... override. */
+   takes the factored step directly (preonly); at most 500 iterations (TAO's 50
+   are too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
+   -tao_max_it, -newton_schur 0, -tao_nls_ksp_type, -tao_nls_pc_type, ...
+   override them and -help shows them. Without a set-up problem (-help) the
+   Schur preconditioner is only named. */
 static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
 {
-  PetscBool   nls, ntr, set;
+  PetscBool   nls;
   KSP         ksp;
   PC          pc;
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONLS, &nls));
-  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONTR, &ntr));
-  if (!nls && !ntr) PetscFunctionReturn(0);
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_max_it", &set));
-  if (!set) PetscCall(TaoSetMaximumIterations(p->tao, 500)); /* TAO's 50 is too few for k_p / E above 1e7 */
+  PetscCall(TaoSetMaximumIterations(p->tao, 500));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (p->schur && size == 1 && p->nterms > 0) PetscCall(ContactSchurPCSetUp(p, pc));
-  else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
-  PetscCall(KSPSetFromOptions(ksp));
+  if (p->schur && size == 1 && p->nterms > 0) {
+    if (p->K) PetscCall(ContactSchurPCSetUp(p, pc));
+    else PetscCall(PCSetType(pc, PCSHELL));
+  } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
+  PetscFunctionReturn(0);
+}
+
+/* The TAO solver with the program's defaults, then the options. The type is
+   looked up first (TaoSetFromOptions() lists and checks it) because the
+   defaults depend on it. Without a set-up problem (-help) the solver is only
+   configured, so that -help lists the TAO options with the defaults a solve
+   would use. */
+PetscErrorCode ProblemCreateSolver(Problem p)
+{
+  char      type[256] = TAONLS;
+  PetscBool newton;
+
+  PetscFunctionBeginUser;
+  PetscCall(TaoCreate(p->comm, &p->tao));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_type", type, sizeof(type), NULL));
+  newton = (PetscBool)(!strcmp(type, TAONLS) || !strcmp(type, TAONTR));
+  /* Newton with the Cholesky-factored Gauss-Newton Hessian: the fastest type
+     that converges on every scene and extreme of the tests (README, "Solvers") */
+  PetscCall(TaoSetType(p->tao, newton ? type : TAONLS));
+  /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
+  PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
+  if (newton) PetscCall(ProblemSetNewtonDefaults(p));
+  if (p->X) {
+    PetscCall(VecZeroEntries(p->X));
+    PetscCall(TaoSetSolution(p->tao, p->X));
+    PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
+    PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
+  }
+  PetscCall(TaoSetFromOptions(p->tao));
+  if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
   PetscFunctionReturn(0);
 }
 
@@ -577,19 +625,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(contactLog.solve));
-  PetscCall(TaoCreate(p->comm, &p->tao));
-  /* Newton with the Cholesky-factored Gauss-Newton Hessian: the fastest type
-     that converges on every scene and extreme of the tests (README, "Solvers") */
-  PetscCall(TaoSetType(p->tao, TAONLS));
-  /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
-  PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
-  PetscCall(VecZeroEntries(p->X));
-  PetscCall(TaoSetSolution(p->tao, p->X));
-  PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
-  PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
-  PetscCall(TaoSetFromOptions(p->tao));
-  PetscCall(ProblemSetLMVMInitialHessian(p));
-  PetscCall(ProblemSetNewtonDefaults(p));
+  PetscCall(ProblemCreateSolver(p));
   {
     PetscReal tol[3];
     PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
@@ -627,6 +663,14 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
+    Body      b = p->bodies[i];
+    PetscReal err, nrm;
+
+    if (!b->hasExact) continue;
+    PetscCall(BodyComputeErrorL2(b, b->Xl, &err, &nrm)); /* Xl: X, scattered by ProblemEvaluate() */
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(nrm > 0 ? err / nrm : err)));
+  }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
   PetscCall(PetscLogStagePop());

@@ -1,0 +1,45 @@
+"""What a run tells the user: the verification scenes' error against their
+exact solution in the console report, and `make run`'s list of figures."""
+import re
+import subprocess
+
+import pytest
+
+from conftest import ENV, ROOT
+
+
+@pytest.mark.parametrize("scene", ["disc", "square"])
+def test_console_reports_l2_error(scene, contact):
+    """One line per body with an exact solution: its relative L2 error, the
+    JSON summary's l2_error / l2_norm."""
+    r = contact(["-options_file", f"meshes/{scene}/{scene}.opts", "-mesh_size", "0.2"])
+    body = r.summary["bodies"][scene]
+    lines = re.findall(r"body (\w+): relative L2 error against the exact solution \((\w+)\): (\S+)", r.stdout)
+    assert len(lines) == 1 and lines[0][:2] == (scene, body["exact"]), r.stdout
+    assert float(lines[0][2]) == pytest.approx(body["l2_error"] / body["l2_norm"], rel=1e-6)
+    assert float(lines[0][2]) < 1e-2
+
+
+def test_console_no_l2_error_without_exact_solution(contact):
+    r = contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.3"])
+    assert "exact solution" not in r.stdout
+
+
+@pytest.mark.skipif(not (ROOT / "build/.deps-installed").exists(), reason="make run would install dependencies first")
+@pytest.mark.parametrize("scene", ["disc", "hertz"])
+def test_make_run_lists_the_figures_written(scene):
+    """The Figures line names the PNGs this run wrote: no pressure plot for a
+    scene without contact, and no stale one from before."""
+    stale = ROOT / "out" / f"{scene}-pressure.png"
+    stale.parent.mkdir(exist_ok=True)
+    stale.write_bytes(b"stale")
+    proc = subprocess.run(["make", "--no-print-directory", "run", f"SCENE={scene}"], cwd=ROOT, env=ENV,
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    line = [l for l in proc.stdout.splitlines() if l.startswith("Figures:")][-1]
+    figures = line.split(";")[0].split()[1:]
+    expected = ([f"out/{scene}-pressure.png"] if scene == "hertz" else []) + [f"out/{scene}-vonmises.png"]
+    assert figures == expected, line
+    for f in figures:
+        assert (ROOT / f).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert stale.exists() == (scene == "hertz")
