@@ -44,5 +44,5 @@ PetscErrorCode ContactReportReset(ContactReport *);
 void      HertzLineContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax);
 /* Hertz's pressure at distance ds from the centre. */
 PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds);
-/* Figures of a profile rows[n] sorted by s; l2err against Hertz if a > 0 (else NaN). */
-void      ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *);
+/* Figures of a profile rows[n] sorted by s (nodal: the samples are nodes); l2err against Hertz if a > 0 (else NaN). */
+void      ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *);

@@ -12,7 +12,7 @@ import numpy as np
 
 
 def profiles(path, pair=None):
-    """{surface: (s, p, w, gap)} for every one-sided surface that has a profile
+    """{surface: (s, p, w, gap or None)} for every one-sided surface that has a profile
     (a slave surface), sorted by s; and the pair's attributes."""
     with h5py.File(path, "r") as f:
         g = f["contact"]
@@ -24,7 +24,8 @@ def profiles(path, pair=None):
             s = g[k][pre + "s"][...].ravel()
             if s.size == 0:
                 continue
-            out[k] = tuple(g[k][pre + n][...].ravel() for n in ("s", "pressure", "weight", "gap")) 
+            s, p, w, gap = (g[k][pre + n][...].ravel() for n in ("s", "pressure", "weight", "gap"))
+            out[k] = (s, p, w, gap if pre else None)   # Gauss-point gaps scatter: not interpolated
         attrs = {k: (v.decode() if isinstance(v, bytes) else np.ravel(v)[0]) for k, v in g.attrs.items()}
     return out, attrs
 
@@ -47,14 +48,14 @@ def l2_distance(coarse, fine):
 
 def zone_end(s, g, i, j):
     """Where the gap, linear between loaded sample i and unloaded sample j, vanishes."""
-    if g[i] < 0 <= g[j] < 1e300:
+    if g is not None and g[i] < 0 <= g[j] < 1e300:
         return s[i] + (s[j] - s[i]) * g[i] / (g[i] - g[j])
     return 0.5 * (s[i] + s[j])
 
 
 def half_width(s, p, w, g):
-    """Half the loaded length, its ends where the gap vanishes (as the
-    program's report)."""
+    """Half the loaded length, its ends where the nodal weighted gap vanishes
+    (half-way between samples for Gauss points), as the program's report."""
     i = np.where(p > 0)[0]
     lo = zone_end(s, g, i[0], i[0] - 1) if i[0] > 0 else s[i[0]]
     hi = zone_end(s, g, i[-1], i[-1] + 1) if i[-1] < len(s) - 1 else s[i[-1]]

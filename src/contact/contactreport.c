@@ -62,7 +62,7 @@ static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *s
     PetscCall(PetscMalloc1(C * m + C, &S->rows));
     for (PetscInt i = 0; i < m; ++i) PetscCall(PetscArraycpy(&S->rows[C * i], &all[C * perm[i]], C));
     S->n = m;
-    ContactProfileCompare(m, S->rows, spec->hertz, R->hertzA, R->hertzPmax, &S->fig);
+    ContactProfileCompare(m, S->rows, R->nodal, spec->hertz, R->hertzA, R->hertzPmax, &S->fig);
     PetscCall(PetscFree2(perm, sv));
     PetscCall(PetscFree(all));
   }

@@ -7,8 +7,9 @@
    with P the contact force per unit thickness and s_c the pressure centroid
    (Hertz's zone is centred where the computed one is). The profile's own
    figures: p_max its largest sample; a half the length of the zone p > 0,
-   whose ends are where the gap, interpolated linearly between the outermost
-   loaded sample and the next, vanishes;
+   whose ends are where the weighted gap, interpolated linearly between the
+   outermost loaded node and the next, vanishes (for Gauss-point samples,
+   whose gaps scatter, half-way between them);
    a from the second moment, since Hertz's profile has
    int p (s - s_c)^2 / int p = a^2/4 (a half-width from the whole profile, not
    from where its last loaded sample happens to be); and the relative L2
@@ -30,17 +31,18 @@ PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds)
 }
 
 /* Where the zone ends between a loaded sample and the unloaded one next to it:
-   the zero of the gap interpolated linearly between them, or half-way if the
-   outer gap is not finite (no master faces it). */
-static PetscReal ContactZoneEnd(const PetscReal in[], const PetscReal out[])
+   for nodal samples (weighted gaps) the zero of the gap interpolated linearly
+   between them; else, or if the outer gap is not finite (no master faces it),
+   half-way. */
+static PetscReal ContactZoneEnd(const PetscReal in[], const PetscReal out[], PetscBool nodal)
 {
   const PetscReal gi = in[CONTACT_ROW_GAP], go = out[CONTACT_ROW_GAP];
 
-  if (gi < 0 && go >= 0 && go < PETSC_INFINITY) return in[CONTACT_ROW_S] + (out[CONTACT_ROW_S] - in[CONTACT_ROW_S]) * gi / (gi - go);
+  if (nodal && gi < 0 && go >= 0 && go < PETSC_INFINITY) return in[CONTACT_ROW_S] + (out[CONTACT_ROW_S] - in[CONTACT_ROW_S]) * gi / (gi - go);
   return 0.5 * (in[CONTACT_ROW_S] + out[CONTACT_ROW_S]);
 }
 
-void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *F)
+void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *F)
 {
   const PetscInt C = CONTACT_ROW_COLS;
   PetscInt       i0 = -1, i1 = -1;
@@ -64,8 +66,8 @@ void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool hertz, 
   F->am = den > 0 ? 2.0 * PetscSqrtReal(m2 / den) : 0.0;
   F->a  = 0.0;
   if (i0 >= 0) {
-    const PetscReal lo = i0 > 0 ? ContactZoneEnd(&rows[C * i0], &rows[C * (i0 - 1)]) : rows[C * i0];
-    const PetscReal hi = i1 < n - 1 ? ContactZoneEnd(&rows[C * i1], &rows[C * (i1 + 1)]) : rows[C * i1];
+    const PetscReal lo = i0 > 0 ? ContactZoneEnd(&rows[C * i0], &rows[C * (i0 - 1)], nodal) : rows[C * i0];
+    const PetscReal hi = i1 < n - 1 ? ContactZoneEnd(&rows[C * i1], &rows[C * (i1 + 1)], nodal) : rows[C * i1];
     F->a               = 0.5 * (hi - lo);
   }
   F->l2err = (PetscReal)NAN; /* no Hertz profile to compare with */
