@@ -162,7 +162,8 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
     PetscCall(PetscPrintf(comm, "  computed:              a = %.6g (%+.2f %%), p_max = %.6g (%+.2f %%)\n", (double)R->femA, (double)(100 * (R->femA / R->hertzA - 1)), (double)R->femPmax, (double)(100 * (R->femPmax / R->hertzPmax - 1))));
     PetscCall(PetscPrintf(comm, "  half-width from the profile's second moment: a = %.6g (%+.2f %%)\n", (double)R->femAm, (double)(100 * (R->femAm / R->hertzA - 1))));
     if (PetscIsInfOrNanReal(R->l2err)) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: n/a (a surface has no point inside Hertz's zone)\n"));
-    else PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * R->l2err), (double)(100 * R->side[0].fig.l2err), (double)(100 * R->side[1].fig.l2err)));
+    else if (R->side[0].slave && R->side[1].slave) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * R->l2err), (double)(100 * R->side[0].fig.l2err), (double)(100 * R->side[1].fig.l2err)));
+    else PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %%%s\n", (double)(100 * R->l2err), R->nodal ? " (over the nodes, weights A_j)" : ""));
   }
   PetscFunctionReturn(0);
 }
@@ -214,7 +215,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S = &R->side[s];
-    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d", s ? ", " : "", bodies[spec->body[s]]->name, spec->group[s], (int)S->nedges);
+    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"slave\": %s", s ? ", " : "", bodies[spec->body[s]]->name, spec->group[s], (int)S->nedges, S->slave ? "true" : "false");
     JKV(fp, ", ", "pmax", S->fig.pmax);
     JKV(fp, ", ", "a", S->fig.a);
     JKV(fp, ", ", "a_moment", S->fig.am);
