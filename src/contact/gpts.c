@@ -26,20 +26,15 @@
 
    The energy-gradient, Hessian and profile kernels share the point geometry
    (GPTSPointProject) and differ in what they accumulate. */
-#include "contactreport.h"
+#include "contactterm.h"
 #include "edge.h"
 #include "gap.h"
 
 typedef struct {
-  ContactPairSpec spec;
-  ContactSurface  S[2];
-  ContactSearch   search[2]; /* over S[s] as master */
-  PetscReal       kp;        /* penalty in use (continuation) */
-  PetscReal       xi[8], wxi[8];
-  PetscBool       exactHessian; /* add the g d2g term to the Gauss-Newton Hessian */
-  PetscInt        npts[2];   /* slave points this rank integrates on S[s] */
-  PetscReal      *spt[2];    /* [npts][4]: s, X, Y, weight of each slave point */
-  ContactReport   report;
+  ContactTerm b;           /* first: the surfaces, searches, penalty, results */
+  PetscReal   xi[8], wxi[8];
+  PetscInt    npts[2];     /* slave points this rank integrates on S[s] */
+  PetscReal  *spt[2];      /* [npts][4]: s, X, Y, weight of each slave point */
 } GPTS;
 
 static PetscLogEvent GPTS_EnergyGrad, GPTS_Search, GPTS_Hessian, GPTS_Report;
@@ -64,22 +59,22 @@ static inline void GPTSPointProject(const GPTS *cp, const ContactSurface *S, con
    for two-way); adds to both surfaces' gradient arrays. */
 static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal *energy)
 {
-  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+  ContactSurface *S = &cp->b.S[s], *M = &cp->b.S[1 - s];
   PetscReal       e = 0.0;
 
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt  se = S->ownEdges[k];
     const PetscInt *sn = &S->enodes[3 * se];
-    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
-      const PetscReal w = cp->spt[s][4 * (k * cp->spec.nqp + q) + 3];
+    for (PetscInt q = 0; q < cp->b.spec.nqp; ++q) {
+      const PetscReal w = cp->spt[s][4 * (k * cp->b.spec.nqp + q) + 3];
       GPTSPoint       P;
       PetscReal       pen, f;
 
-      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      GPTSPointProject(cp, S, M, cp->b.search[1 - s], se, q, &P);
       if (P.G.me < 0 || P.G.gap >= 0.0) continue;
       pen = -P.G.gap;
-      e += c * 0.5 * cp->kp * w * pen * pen;
-      f = c * cp->kp * w * pen;
+      e += c * 0.5 * cp->b.kp * w * pen * pen;
+      f = c * cp->b.kp * w * pen;
       for (PetscInt i = 0; i < 3; ++i)
         for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.G.n[d];
       for (PetscInt j = 0; j < 7; ++j)
@@ -92,26 +87,26 @@ static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal
 /* One-sided Hessian (see the derivation above), added into H. */
 static PetscErrorCode GPTSSlaveHessian(GPTS *cp, PetscInt s, PetscReal c, Mat H)
 {
-  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+  ContactSurface *S = &cp->b.S[s], *M = &cp->b.S[1 - s];
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt  se = S->ownEdges[k];
     const PetscInt *sn = &S->enodes[3 * se];
-    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
-      const PetscReal w = cp->spt[s][4 * (k * cp->spec.nqp + q) + 3], kw = c * cp->kp * w;
+    for (PetscInt q = 0; q < cp->b.spec.nqp; ++q) {
+      const PetscReal w = cp->spt[s][4 * (k * cp->b.spec.nqp + q) + 3], kw = c * cp->b.kp * w;
       GPTSPoint       P;
       PetscInt        idx[20];
       PetscReal       dg[20];
       PetscScalar     K[400];
 
-      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      GPTSPointProject(cp, S, M, cp->b.search[1 - s], se, q, &P);
       if (P.G.me < 0 || P.G.gap >= 0.0) continue;
       ContactGapIndices(S, sn, M, &P.G, idx);
       ContactGapFirst(&P.G, P.N, dg);
       for (PetscInt i = 0; i < 20; ++i)
         for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] = kw * dg[i] * dg[j];
-      if (cp->exactHessian) ContactGapAddSecond(&P.G, P.N, kw * P.G.gap, K);
+      if (cp->b.exactHessian) ContactGapAddSecond(&P.G, P.N, kw * P.G.gap, K);
       PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
     }
   }
@@ -124,17 +119,17 @@ static PetscErrorCode GPTSSlaveHessian(GPTS *cp, PetscInt s, PetscReal c, Mat H)
    penetration. */
 static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[], PetscReal force[2][2], PetscReal *maxPen)
 {
-  ContactSurface *S = &cp->S[s], *M = &cp->S[1 - s];
+  ContactSurface *S = &cp->b.S[s], *M = &cp->b.S[1 - s];
 
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt se = S->ownEdges[k];
-    for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
-      const PetscInt   i = k * cp->spec.nqp + q;
+    for (PetscInt q = 0; q < cp->b.spec.nqp; ++q) {
+      const PetscInt   i = k * cp->b.spec.nqp + q;
       const PetscReal *sp = &cp->spt[s][4 * i];
       PetscReal       *r = &rows[CONTACT_ROW_COLS * i], pen, f;
       GPTSPoint        P;
 
-      GPTSPointProject(cp, S, M, cp->search[1 - s], se, q, &P);
+      GPTSPointProject(cp, S, M, cp->b.search[1 - s], se, q, &P);
       r[CONTACT_ROW_S]   = sp[0];
       r[CONTACT_ROW_X]   = sp[1];
       r[CONTACT_ROW_Y]   = sp[2];
@@ -145,26 +140,15 @@ static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[]
       r[CONTACT_ROW_W]   = sp[3];
       if (P.G.me < 0 || P.G.gap >= 0.0) continue;
       pen              = -P.G.gap;
-      r[CONTACT_ROW_P] = cp->kp * pen;
+      r[CONTACT_ROW_P] = cp->b.kp * pen;
       *maxPen          = PetscMax(*maxPen, pen);
-      f                = c * cp->kp * sp[3] * pen;
+      f                = c * cp->b.kp * sp[3] * pen;
       force[s][0] += f * P.G.n[0];
       force[s][1] += f * P.G.n[1];
       force[1 - s][0] -= f * P.G.n[0];
       force[1 - s][1] -= f * P.G.n[1];
     }
   }
-}
-
-/* The current coordinates of both surfaces and their search grids. */
-static PetscErrorCode GPTSUpdate(GPTS *cp, Body bodies[])
-{
-  PetscFunctionBeginUser;
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceUpdateCoordinates(&cp->S[s], bodies[cp->S[s].body]));
-  PetscCall(PetscLogEventBegin(GPTS_Search, 0, 0, 0, 0));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(cp->search[s]));
-  PetscCall(PetscLogEventEnd(GPTS_Search, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
 }
 
 static PetscErrorCode GPTSEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
@@ -174,11 +158,11 @@ static PetscErrorCode GPTSEnergyGradient(EnergyTerm t, Body bodies[], PetscReal 
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_EnergyGrad, 0, 0, 0, 0));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(cp->S[s].g, 2 * cp->S[s].nn));
-  PetscCall(GPTSUpdate(cp, bodies));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(cp->b.S[s].g, 2 * cp->b.S[s].nn));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
   GPTSSlaveEnergyGradient(cp, 0, 0.5, &e);
   GPTSSlaveEnergyGradient(cp, 1, 0.5, &e);
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&cp->S[s], bodies[cp->S[s].body]));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&cp->b.S[s], bodies[cp->b.S[s].body]));
   *energy = e;
   PetscCall(PetscLogEventEnd(GPTS_EnergyGrad, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -190,7 +174,7 @@ static PetscErrorCode GPTSHessian(EnergyTerm t, Body bodies[], Mat H)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_Hessian, 0, 0, 0, 0));
-  PetscCall(GPTSUpdate(cp, bodies));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
   PetscCall(GPTSSlaveHessian(cp, 0, 0.5, H));
   PetscCall(GPTSSlaveHessian(cp, 1, 0.5, H));
   PetscCall(PetscLogEventEnd(GPTS_Hessian, 0, 0, 0, 0));
@@ -205,49 +189,17 @@ static PetscErrorCode GPTSPostProcess(EnergyTerm t, Body bodies[])
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_Report, 0, 0, 0, 0));
-  PetscCall(GPTSUpdate(cp, bodies));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
   for (PetscInt s = 0; s < 2; ++s) {
     PetscCall(PetscMalloc1(CONTACT_ROW_COLS * cp->npts[s] + 1, &rows[s]));
-    L[s] = ContactSurfaceLength(&cp->S[s]);
+    L[s] = ContactSurfaceLength(&cp->b.S[s]);
   }
   GPTSSlaveProfile(cp, 0, 0.5, rows[0], force, &maxPen);
   GPTSSlaveProfile(cp, 1, 0.5, rows[1], force, &maxPen);
-  PetscCall(ContactReportReset(&cp->report));
-  cp->report.kp = cp->kp;
-  for (PetscInt s = 0; s < 2; ++s) {
-    cp->report.side[s].nedges = cp->S[s].ne;
-    cp->report.side[s].slave  = PETSC_TRUE;
-  }
-  PetscCall(ContactReportFinish(&cp->report, &cp->spec, t->comm, cp->npts, rows, (const PetscReal(*)[2])force, maxPen, L));
+  PetscCall(ContactTermReportBegin(&cp->b, (const PetscBool[2]){PETSC_TRUE, PETSC_TRUE}));
+  PetscCall(ContactReportFinish(&cp->b.report, &cp->b.spec, t->comm, cp->npts, rows, (const PetscReal(*)[2])force, maxPen, L));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
   PetscCall(PetscLogEventEnd(GPTS_Report, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode GPTSView(EnergyTerm t, Body bodies[])
-{
-  GPTS *cp = (GPTS *)t->data;
-
-  PetscFunctionBeginUser;
-  if (cp->report.done) PetscCall(ContactReportView(&cp->report, &cp->spec, bodies, t->comm));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode GPTSWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
-{
-  GPTS *cp = (GPTS *)t->data;
-
-  PetscFunctionBeginUser;
-  PetscCall(ContactReportWriteJSON(&cp->report, &cp->spec, bodies, fp, summary));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode GPTSWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
-{
-  GPTS *cp = (GPTS *)t->data;
-
-  PetscFunctionBeginUser;
-  PetscCall(ContactReportWriteHDF5(&cp->report, &cp->spec, bodies, v));
   PetscFunctionReturn(0);
 }
 
@@ -259,19 +211,15 @@ static PetscErrorCode GPTSSetUp(EnergyTerm t, Body bodies[])
   GPTS *cp = (GPTS *)t->data;
 
   PetscFunctionBeginUser;
+  PetscCall(ContactTermSetUpSurfaces(&cp->b, bodies, 0.05));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface *S = &cp->S[s];
-    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], cp->spec.name, 2.0 * (cp->spec.blend < 0 ? 0.05 : cp->spec.blend))); /* blend width in eta */
-    PetscCall(ContactSearchCreate(S, &cp->search[s]));
-  }
-  for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface *S = &cp->S[s];
-    cp->npts[s]       = S->nown * cp->spec.nqp;
+    ContactSurface *S = &cp->b.S[s];
+    cp->npts[s]       = S->nown * cp->b.spec.nqp;
     PetscCall(PetscCalloc1(4 * cp->npts[s] + 4, &cp->spt[s]));
     for (PetscInt k = 0; k < S->nown; ++k) {
       const PetscInt se = S->ownEdges[k];
-      for (PetscInt q = 0; q < cp->spec.nqp; ++q) {
-        PetscReal *sp = &cp->spt[s][4 * (k * cp->spec.nqp + q)], X[2], T[2];
+      for (PetscInt q = 0; q < cp->b.spec.nqp; ++q) {
+        PetscReal *sp = &cp->spt[s][4 * (k * cp->b.spec.nqp + q)], X[2], T[2];
         EdgeEval(S->X, &S->enodes[3 * se], cp->xi[q], X, T);
         PetscCall(ContactSurfaceArc(S, se, cp->xi[q], &sp[0]));
         sp[1] = X[0];
@@ -283,52 +231,13 @@ static PetscErrorCode GPTSSetUp(EnergyTerm t, Body bodies[])
   PetscFunctionReturn(0);
 }
 
-/* The unconstrained dofs of both surfaces (indices in the joined vector,
-   sorted, each once): the only rows and columns the pair's Hessian touches. */
-static PetscErrorCode GPTSGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
-{
-  GPTS    *cp = (GPTS *)t->data;
-  PetscInt m  = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(2 * (cp->S[0].nn + cp->S[1].nn) + 1, idx));
-  for (PetscInt s = 0; s < 2; ++s)
-    for (PetscInt k = 0; k < 2 * cp->S[s].nn; ++k)
-      if (cp->S[s].big[k] >= 0) (*idx)[m++] = cp->S[s].big[k];
-  PetscCall(PetscSortRemoveDupsInt(&m, *idx));
-  *n = m;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode GPTSSetPenaltyFactor(EnergyTerm t, PetscReal f)
-{
-  GPTS *cp = (GPTS *)t->data;
-
-  PetscFunctionBeginUser;
-  cp->kp = f * cp->spec.kp;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode GPTSSetHessianExact(EnergyTerm t, PetscBool exact)
-{
-  GPTS *cp = (GPTS *)t->data;
-
-  PetscFunctionBeginUser;
-  cp->exactHessian = exact;
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode GPTSDestroy(EnergyTerm t)
 {
   GPTS *cp = (GPTS *)t->data;
 
   PetscFunctionBeginUser;
-  for (PetscInt s = 0; s < 2; ++s) {
-    PetscCall(ContactSearchDestroy(&cp->search[s]));
-    PetscCall(ContactSurfaceDestroy(&cp->S[s]));
-    PetscCall(PetscFree(cp->spt[s]));
-  }
-  PetscCall(ContactReportReset(&cp->report));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(cp->spt[s]));
+  PetscCall(ContactTermDestroy(&cp->b));
   PetscCall(PetscFree(cp));
   PetscFunctionReturn(0);
 }
@@ -347,25 +256,13 @@ PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *spec, EnergyTerm t)
     PetscCall(PetscLogEventRegister("ContactReport", id, &GPTS_Report));
   }
   PetscCall(PetscNew(&cp));
-  cp->spec         = *spec;
-  cp->kp           = spec->kp;
-  cp->exactHessian = spec->exactHessian;
   PetscCall(PetscDTGaussQuadrature(spec->nqp, -1.0, 1.0, cp->xi, cp->wxi));
-  for (PetscInt s = 0; s < 2; ++s) {
-    cp->S[s].body = spec->body[s];
-    PetscCall(PetscStrncpy(cp->S[s].group, spec->group[s], sizeof(cp->S[s].group)));
-  }
-  t->data                 = cp;
+  t->data = cp;
+  PetscCall(ContactTermInitialize(&cp->b, spec, t));
   t->ops.setup            = GPTSSetUp;
   t->ops.energygradient   = GPTSEnergyGradient;
   t->ops.hessian          = GPTSHessian;
-  t->ops.getdofs          = GPTSGetDofs;
-  t->ops.setpenaltyfactor = GPTSSetPenaltyFactor;
-  t->ops.sethessianexact  = GPTSSetHessianExact;
   t->ops.postprocess      = GPTSPostProcess;
-  t->ops.view             = GPTSView;
-  t->ops.writejson        = GPTSWriteJSON;
-  t->ops.writehdf5        = GPTSWriteHDF5;
   t->ops.destroy          = GPTSDestroy;
   PetscFunctionReturn(0);
 }

@@ -47,7 +47,7 @@
    with -contact_hessian exact or auto); the first couples every dof under the
    support of N_j, so it is assembled node by node, over the node's slave
    edges, by the rank that owns the node (the lowest-numbered edge on it). */
-#include "contactreport.h"
+#include "contactterm.h"
 #include "edge.h"
 #include "gap.h"
 
@@ -116,17 +116,13 @@ typedef struct {
 } MortarSide;
 
 typedef struct {
-  ContactPairSpec spec;
-  ContactSurface  S[2];
-  ContactSearch   search[2]; /* over S[s] as master */
-  MortarSide      side[2];   /* S[s] as slave */
-  PetscReal       kp, xq[8], wq[8];
-  PetscInt        nq;
-  MortarBasis     basis;
-  PetscBool       slave[2]; /* the surfaces that act as slave */
-  PetscReal       c;        /* weight of each one-sided energy: 1 / the number of slaves */
-  PetscBool       exactHessian;
-  ContactReport   report;
+  ContactTerm b;           /* first: the surfaces, searches, penalty, results */
+  MortarSide  side[2];     /* S[s] as slave */
+  PetscReal   xq[8], wq[8];
+  PetscInt    nq;
+  MortarBasis basis;
+  PetscBool   slave[2];    /* the surfaces that act as slave */
+  PetscReal   c;           /* weight of each one-sided energy: 1 / the number of slaves */
 } Mortar;
 
 static PetscLogEvent MORTAR_EnergyGrad, MORTAR_Search, MORTAR_Segments, MORTAR_Hessian, MORTAR_Report;
@@ -147,8 +143,8 @@ static inline PetscInt MortarFacing(const Mortar *m, PetscInt s, PetscInt se, Pe
   PetscReal  xs[2], dS;
   ContactGap G;
 
-  MortarSlaveEval(&m->S[s], se, xi, xs, &dS);
-  ContactGapProject(&m->S[1 - s], m->search[1 - s], xs, &G);
+  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
+  ContactGapProject(&m->b.S[1 - s], m->b.search[1 - s], xs, &G);
   return G.me;
 }
 
@@ -195,7 +191,7 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
    until each piece faces one master edge; appends the cut points to cut[]. */
 static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
 {
-  const ContactSurface *M = &m->S[1 - s];
+  const ContactSurface *M = &m->b.S[1 - s];
   PetscReal             c;
   PetscInt              ec;
 
@@ -204,7 +200,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, P
     for (PetscInt i = 0; i < 2; ++i)
       for (PetscInt j = 0; j < 2; ++j)
         if (M->enodes[3 * ea + i] == M->enodes[3 * eb + j]) {
-          c = MortarNodeCrossing(&m->S[s], se, M, ea, i, eb, j, a, b);
+          c = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, b);
           if (c > a) {
             cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
             return;
@@ -222,7 +218,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, P
    (if D) its node crossings to D->cross. */
 static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, PetscInt *np, PetscInt *npmax, MortarPoint **pts, MortarSide *D)
 {
-  const ContactSurface *S = &m->S[s];
+  const ContactSurface *S = &m->b.S[s];
   MortarCut             cut[MORTAR_MAX_SEG + MORTAR_MAX_DEPTH + 4]; /* MortarSplit stops adding at MORTAR_MAX_SEG, then closes its open levels */
   PetscInt              ncut = 0;
 
@@ -267,7 +263,7 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
       MortarWeights(m->basis, &m->side[s].dual[9 * se], xi, P->W);
       MortarSlaveEval(S, se, xi, xs, &dS);
       P->wt = h * m->wq[q] * dS;
-      ContactGapProject(&m->S[1 - s], m->search[1 - s], xs, &P->G);
+      ContactGapProject(&m->b.S[1 - s], m->b.search[1 - s], xs, &P->G);
     }
   }
   PetscFunctionReturn(0);
@@ -278,13 +274,10 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
 static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
 {
   PetscFunctionBeginUser;
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceUpdateCoordinates(&m->S[s], bodies[m->S[s].body]));
-  PetscCall(PetscLogEventBegin(MORTAR_Search, 0, 0, 0, 0));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(m->search[s]));
-  PetscCall(PetscLogEventEnd(MORTAR_Search, 0, 0, 0, 0));
+  PetscCall(ContactTermUpdate(&m->b, bodies, MORTAR_Search));
   PetscCall(PetscLogEventBegin(MORTAR_Segments, 0, 0, 0, 0));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface *S = &m->S[s];
+    ContactSurface *S = &m->b.S[s];
     MortarSide     *D = &m->side[s];
     D->np             = 0;
     D->ncross         = 0;
@@ -314,7 +307,7 @@ static inline PetscReal MortarLambda(const Mortar *m, const MortarSide *D, const
 
   for (PetscInt i = 0; i < 3; ++i)
     if (D->gj[sn[i]] < 0) L += D->A[sn[i]] / D->cover[sn[i]] * D->gj[sn[i]] * W[i];
-  return c * m->kp * L;
+  return c * m->b.kp * L;
 }
 
 static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
@@ -325,13 +318,13 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(m->S[s].g, 2 * m->S[s].nn));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(m->b.S[s].g, 2 * m->b.S[s].nn));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface   *S = &m->S[s], *M = &m->S[1 - s];
+    ContactSurface   *S = &m->b.S[s], *M = &m->b.S[1 - s];
     const MortarSide *D = &m->side[s];
     if (!m->slave[s]) continue;
     for (PetscInt j = 0; j < S->nn; ++j)
-      if (D->mine[j] && D->gj[j] < 0) e += 0.5 * m->c * m->kp * D->A[j] * D->gj[j] * D->gj[j];
+      if (D->mine[j] && D->gj[j] < 0) e += 0.5 * m->c * m->b.kp * D->A[j] * D->gj[j] * D->gj[j];
     for (PetscInt k = 0; k < D->np; ++k) {
       const MortarPoint *P  = &D->pts[k];
       const PetscInt    *sn = &S->enodes[3 * P->se], *mn;
@@ -346,7 +339,7 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
         for (PetscInt d = 0; d < 2; ++d) M->g[2 * mn[j] + d] -= f * P->G.M7[j] * P->G.n[d];
     }
   }
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->S[s], bodies[m->S[s].body]));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   *energy = e;
   PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -382,11 +375,11 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(PetscMalloc3(nmax, &gidx, nmax, &gval, nmax * nmax, &K));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface   *S = &m->S[s], *M = &m->S[1 - s];
+    ContactSurface   *S = &m->b.S[s], *M = &m->b.S[1 - s];
     const MortarSide *D = &m->side[s];
     if (!m->slave[s]) continue;
     /* int Lambda d2g dS, pointwise over this rank's edges */
-    for (PetscInt k = 0; k < D->np && m->exactHessian; ++k) {
+    for (PetscInt k = 0; k < D->np && m->b.exactHessian; ++k) {
       const MortarPoint *P  = &D->pts[k];
       const PetscInt    *sn = &S->enodes[3 * P->se];
       PetscInt           idx[20];
@@ -401,7 +394,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
     }
     /* the closest point's passage from one master edge to the next at a
        crossing c where their normals differ: -Lambda J Delta Delta^T / den */
-    for (PetscInt k = 0; k < D->ncross && m->exactHessian; ++k) {
+    for (PetscInt k = 0; k < D->ncross && m->b.exactHessian; ++k) {
       const MortarCut *X  = &D->cross[k];
       const PetscInt  *sn = &S->enodes[3 * X->se];
       PetscReal        N[3], dN[3], W[3], xs[2], ts[2], Xr[2], Tr[2], dga[20], dgb[20], L, den;
@@ -451,7 +444,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
         ContactGapFirst(&P->G, P->N, dg);
         for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(idx[l], P->wt * P->W[i0] * dg[l], &n, nmax, gidx, gval));
       }
-      c = m->c * m->kp * D->A[j] / (D->cover[j] * D->cover[j]);
+      c = m->c * m->b.kp * D->A[j] / (D->cover[j] * D->cover[j]);
       for (PetscInt a = 0; a < n; ++a)
         for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
       PetscCall(MatSetValues(H, n, gidx, n, gidx, K, ADD_VALUES));
@@ -476,7 +469,7 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
   PetscCall(PetscLogEventBegin(MORTAR_Report, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface   *S = &m->S[s];
+    ContactSurface   *S = &m->b.S[s];
     const MortarSide *D = &m->side[s];
     L[s]                = ContactSurfaceLength(S);
     nrow[s]             = 0;
@@ -492,7 +485,7 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
       r[CONTACT_ROW_XC]  = S->x[2 * j];
       r[CONTACT_ROW_YC]  = S->x[2 * j + 1];
       r[CONTACT_ROW_GAP] = D->gj[j];
-      r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->kp * D->gj[j] : 0.0;
+      r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
       r[CONTACT_ROW_W]   = D->A[j];
       if (D->gj[j] < 0) maxPen = PetscMax(maxPen, -D->gj[j]);
     }
@@ -507,43 +500,11 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
       }
     }
   }
-  PetscCall(ContactReportReset(&m->report));
-  m->report.kp    = m->kp;
-  m->report.nodal = PETSC_TRUE;
-  for (PetscInt s = 0; s < 2; ++s) {
-    m->report.side[s].nedges = m->S[s].ne;
-    m->report.side[s].slave  = m->slave[s];
-  }
-  PetscCall(ContactReportFinish(&m->report, &m->spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
+  PetscCall(ContactTermReportBegin(&m->b, m->slave));
+  m->b.report.nodal = PETSC_TRUE;
+  PetscCall(ContactReportFinish(&m->b.report, &m->b.spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
   PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MortarView(EnergyTerm t, Body bodies[])
-{
-  Mortar *m = (Mortar *)t->data;
-
-  PetscFunctionBeginUser;
-  if (m->report.done) PetscCall(ContactReportView(&m->report, &m->spec, bodies, t->comm));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MortarWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
-{
-  Mortar *m = (Mortar *)t->data;
-
-  PetscFunctionBeginUser;
-  PetscCall(ContactReportWriteJSON(&m->report, &m->spec, bodies, fp, summary));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
-{
-  Mortar *m = (Mortar *)t->data;
-
-  PetscFunctionBeginUser;
-  PetscCall(ContactReportWriteHDF5(&m->report, &m->spec, bodies, v));
   PetscFunctionReturn(0);
 }
 
@@ -557,13 +518,9 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
 
   PetscFunctionBeginUser;
   PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  PetscCall(ContactTermSetUpSurfaces(&m->b, bodies, 0.0)); /* no blend by default: see above */
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface *S = &m->S[s];
-    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], m->spec.name, 2.0 * (m->spec.blend < 0 ? 0.0 : m->spec.blend))); /* no blend by default: see above */
-    PetscCall(ContactSearchCreate(S, &m->search[s]));
-  }
-  for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface *S = &m->S[s];
+    ContactSurface *S = &m->b.S[s];
     MortarSide     *D = &m->side[s];
     const PetscInt  e0 = S->nown ? S->ownEdges[0] : -1, e1 = S->nown ? S->ownEdges[S->nown - 1] : -2;
     PetscInt       *minEdge, *cnt;
@@ -629,41 +586,6 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
   PetscFunctionReturn(0);
 }
 
-/* The unconstrained dofs of both surfaces: the only rows and columns the
-   pair's Hessian touches. */
-static PetscErrorCode MortarGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
-{
-  Mortar  *m = (Mortar *)t->data;
-  PetscInt k = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(2 * (m->S[0].nn + m->S[1].nn) + 1, idx));
-  for (PetscInt s = 0; s < 2; ++s)
-    for (PetscInt i = 0; i < 2 * m->S[s].nn; ++i)
-      if (m->S[s].big[i] >= 0) (*idx)[k++] = m->S[s].big[i];
-  PetscCall(PetscSortRemoveDupsInt(&k, *idx));
-  *n = k;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MortarSetPenaltyFactor(EnergyTerm t, PetscReal f)
-{
-  Mortar *m = (Mortar *)t->data;
-
-  PetscFunctionBeginUser;
-  m->kp = f * m->spec.kp;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MortarSetHessianExact(EnergyTerm t, PetscBool exact)
-{
-  Mortar *m = (Mortar *)t->data;
-
-  PetscFunctionBeginUser;
-  m->exactHessian = exact;
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode MortarDestroy(EnergyTerm t)
 {
   Mortar *m = (Mortar *)t->data;
@@ -671,8 +593,6 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) {
     MortarSide *D = &m->side[s];
-    PetscCall(ContactSearchDestroy(&m->search[s]));
-    PetscCall(ContactSurfaceDestroy(&m->S[s]));
     PetscCall(PetscFree5(D->A, D->gw, D->gj, D->s, D->mine));
     PetscCall(PetscFree(D->nodeEdgeStart));
     PetscCall(PetscFree(D->nodeEdge));
@@ -680,7 +600,7 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
     PetscCall(PetscFree(D->pts));
     PetscCall(PetscFree(D->cross));
   }
-  PetscCall(ContactReportReset(&m->report));
+  PetscCall(ContactTermDestroy(&m->b));
   PetscCall(PetscFree(m));
   PetscFunctionReturn(0);
 }
@@ -713,26 +633,14 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
     m->slave[1] = (PetscBool)(which != 0);
     m->c        = 1.0 / (m->slave[0] + m->slave[1]);
   }
-  m->spec         = *spec;
-  m->kp           = spec->kp;
-  m->nq           = spec->nqp;
-  m->exactHessian = spec->exactHessian;
+  m->nq = spec->nqp;
   PetscCall(PetscDTGaussQuadrature(m->nq, -1.0, 1.0, m->xq, m->wq));
-  for (PetscInt s = 0; s < 2; ++s) {
-    m->S[s].body = spec->body[s];
-    PetscCall(PetscStrncpy(m->S[s].group, spec->group[s], sizeof(m->S[s].group)));
-  }
-  t->data                 = m;
+  t->data = m;
+  PetscCall(ContactTermInitialize(&m->b, spec, t));
   t->ops.setup            = MortarSetUp;
   t->ops.energygradient   = MortarEnergyGradient;
   t->ops.hessian          = MortarHessian;
-  t->ops.getdofs          = MortarGetDofs;
-  t->ops.setpenaltyfactor = MortarSetPenaltyFactor;
-  t->ops.sethessianexact  = MortarSetHessianExact;
   t->ops.postprocess      = MortarPostProcess;
-  t->ops.view             = MortarView;
-  t->ops.writejson        = MortarWriteJSON;
-  t->ops.writehdf5        = MortarWriteHDF5;
   t->ops.destroy          = MortarDestroy;
   PetscFunctionReturn(0);
 }

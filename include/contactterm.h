@@ -1,0 +1,28 @@
+#pragma once
+#include "contactreport.h"
+#include "search.h"
+
+/* What every contact formulation's energy term holds and does alike
+   (contactterm.c): the pair's description, its two surfaces with a search
+   over each as master, the penalty in use, the Hessian's order, the results.
+   A formulation's context starts with it, and the operations that only touch
+   it (the Hessian's dofs, penalty continuation, the Hessian switch, printing
+   and writing the results) are set once here for every formulation. */
+typedef struct {
+  ContactPairSpec spec;
+  ContactSurface  S[2];
+  ContactSearch   search[2];   /* over S[s] as master */
+  PetscReal       kp;          /* penalty in use (continuation) */
+  PetscBool       exactHessian; /* add the second-order terms to the Hessian */
+  ContactReport   report;
+} ContactTerm;
+
+/* t->data must point to a struct whose first member is the ContactTerm. */
+PetscErrorCode ContactTermInitialize(ContactTerm *, const ContactPairSpec *, EnergyTerm t);
+/* Collective: both surfaces (blend: the formulation's default where the scene sets none) and their searches. */
+PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *, Body[], PetscReal defaultBlend);
+/* Collective: the surfaces' current coordinates, the search grids rebuilt (in the log event given). */
+PetscErrorCode ContactTermUpdate(ContactTerm *, Body[], PetscLogEvent search);
+/* Starts a new report: the penalty, the surfaces' edge counts and which act as slave. */
+PetscErrorCode ContactTermReportBegin(ContactTerm *, const PetscBool slave[2]);
+PetscErrorCode ContactTermDestroy(ContactTerm *);
