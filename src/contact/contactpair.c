@@ -43,7 +43,8 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
     char         known[256] = "";
     PetscCall(PetscFunctionListGet(ContactFormulationList, &names, &n));
     for (int i = 0; i < n; ++i) {
-      PetscCall(PetscStrlcat(known, i ? ", " : "", sizeof(known)));
+      if (!names[i] || !names[i][0]) continue;
+      PetscCall(PetscStrlcat(known, known[0] ? ", " : "", sizeof(known)));
       PetscCall(PetscStrlcat(known, names[i], sizeof(known)));
     }
     PetscCall(PetscFree(names));

@@ -39,7 +39,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
 {
   char     *names[CONTACT_MAX_BODIES];
   PetscInt  nb = CONTACT_MAX_BODIES;
-  PetscBool set, help;
+  PetscBool set, help, setMeshSize;
   char      def[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
@@ -47,7 +47,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
   PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->scene, p->scene, sizeof(p->scene), NULL));
   PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
-  PetscCall(PetscOptionsReal("-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size; -1: per body)", NULL, p->meshSize, &p->meshSize, NULL));
+  PetscCall(PetscOptionsReal("-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size; unset: each body's own)", NULL, p->meshSize, &p->meshSize, &setMeshSize));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
   PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
   PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->meshDir, p->meshDir, sizeof(p->meshDir), NULL));
@@ -91,7 +91,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     set = PETSC_TRUE;
   }
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
-  PetscCheck(p->meshSize == -1.0 || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be > 0, got %g", (double)p->meshSize);
+  PetscCheck(!setMeshSize || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)p->meshSize);
+  if (!setMeshSize) p->meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
   p->nbodies = nb;
   for (PetscInt i = 0; i < nb; ++i) {
     for (PetscInt j = 0; j < i; ++j) {
