@@ -3,13 +3,12 @@
 refinement on the reference scene, oscillation, Hertz where Hertz holds, and
 the contact patch test.
 
-    python3 scripts/formulation_study.py [--out bench/formulations] [--readme]
+    python3 scripts/formulation_study.py [--out bench/formulations]
 
 Runs bin/contact (from the repository root) and writes <out>/results.json
-(every figure) and <out>/RESULTS.md (the tables). With --readme the tables
-also replace the README's block between the markers
-<!-- formulations:begin --> and <!-- formulations:end -->, so that the
-README's figures are regenerated, never typed. About 5 minutes on 2 cores.
+(every figure) and <out>/RESULTS.md (the tables); scripts/readme_figures.py
+renders the same tables into the README from results.json. About 8 minutes
+on 2 cores.
 
 - Convergence: the mirrored half of the reference scene (hertz-half: the full
   problem's contact) at h = 0.1, 0.06, 0.03, 0.015, each profile's relative L2
@@ -178,7 +177,6 @@ def tables(res):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "bench", "formulations"))
-    ap.add_argument("--readme", action="store_true", help="replace the README's formulations block")
     args = ap.parse_args()
     res = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -193,14 +191,6 @@ def main():
     with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
         f.write("# Contact formulations: the pressure\n\nWritten by `python3 scripts/formulation_study.py`.\n\n" + text)
     print(text)
-    if args.readme:
-        path = os.path.join(ROOT, "README.md")
-        with open(path) as f:
-            readme = f.read()
-        b, e = "<!-- formulations:begin -->\n", "<!-- formulations:end -->"
-        i, j = readme.index(b) + len(b), readme.index(e)
-        with open(path, "w") as f:
-            f.write(readme[:i] + text + readme[j:])
 
 
 if __name__ == "__main__":

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""The README's tables of measured figures, generated from committed results.
+
+    python3 scripts/readme_figures.py --check      # exit 1 if a table differs from its results
+    python3 scripts/readme_figures.py --update     # rewrite the tables from the results
+    python3 scripts/readme_figures.py --measure scenes [--update]
+                                                   # run the scenes table's cases first
+
+Each table sits between the markers <!-- figures:NAME:begin --> and
+<!-- figures:NAME:end --> and is rendered by a function of this script from a
+committed result file; a test (tests/test_readme_figures.py) runs --check, so
+that a table can neither be typed by hand nor go stale. The tables:
+
+- scenes: bench/scenes/results.json (written by --measure scenes: each scene
+  with each formulation, Newton with a direct factorisation, a few seconds);
+- formulations: bench/formulations/results.json (scripts/formulation_study.py).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+README = os.path.join(ROOT, "README.md")
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+
+SCENES = [("hertz", "meshes/hertz/hertz.opts", ["-mesh_size", "0.1"], "hertz, h = 0.1"),
+          ("hertz", "meshes/hertz/hertz.opts", ["-mesh_size", "0.06"], "hertz, h = 0.06"),
+          ("hertz-small", "meshes/hertz-small/hertz-small.opts", [], "hertz-small"),
+          ("twodiscs", "meshes/twodiscs/twodiscs.opts", [], "twodiscs")]
+SOLVER = ["-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "cholesky"]
+
+
+def measure_scenes():
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for form in ("gpts", "mortar"):
+            for scene, opts, extra, label in SCENES:
+                js = os.path.join(tmp, "s.json")
+                cmd = [os.path.join(ROOT, "bin", "contact"), "-options_file", opts] + extra + SOLVER + \
+                      ["-contact_formulation", form, "-output", "none", "-summary", js]
+                p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
+                if p.returncode:
+                    raise SystemExit(f"{' '.join(cmd)} failed:\n{p.stderr[-2000:]}")
+                with open(js) as f:
+                    s = json.load(f)
+                rows.append(dict(scene=label, formulation=form, command=" ".join(cmd[1:-4]), dofs=s["dofs"],
+                                 P=s["contact_force"], fem_a=s["fem_a"], hertz_a=s["hertz_a"], fem_pmax=s["fem_pmax"],
+                                 hertz_pmax=s["hertz_pmax"], l2=s["pressure_l2_error"]))
+    os.makedirs(os.path.join(ROOT, "bench", "scenes"), exist_ok=True)
+    with open(os.path.join(ROOT, "bench", "scenes", "results.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+
+
+def render_scenes():
+    with open(os.path.join(ROOT, "bench", "scenes", "results.json")) as f:
+        rows = json.load(f)
+    out = ["| scene | formulation | dofs | P | a: FE / Hertz | p_max: FE / Hertz | profile L2 vs Hertz |",
+           "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        da, dp = 100 * (r["fem_a"] / r["hertz_a"] - 1), 100 * (r["fem_pmax"] / r["hertz_pmax"] - 1)
+        out.append(f"| {r['scene']} | {r['formulation']} | {r['dofs']:,} | {r['P']:.4g} | {r['fem_a']:.4g} / "
+                   f"{r['hertz_a']:.4g} ({da:+.1f} %) | {r['fem_pmax']:.4g} / {r['hertz_pmax']:.4g} ({dp:+.1f} %) "
+                   f"| {100 * r['l2']:.1f} % |")
+    return "\n".join(out) + "\n"
+
+
+def render_formulations():
+    import formulation_study
+    with open(os.path.join(ROOT, "bench", "formulations", "results.json")) as f:
+        return formulation_study.tables(json.load(f))
+
+
+RENDER = {"scenes": render_scenes, "formulations": render_formulations}
+
+
+def blocks(text):
+    """{name: (start, end)} of the text between each pair of markers."""
+    out = {}
+    for name in RENDER:
+        b, e = f"<!-- figures:{name}:begin -->\n", f"<!-- figures:{name}:end -->"
+        if b in text:
+            i = text.index(b) + len(b)
+            out[name] = (i, text.index(e, i))
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--check", action="store_true")
+    ap.add_argument("--update", action="store_true")
+    ap.add_argument("--measure", choices=["scenes"], action="append", default=[])
+    args = ap.parse_args()
+    if "scenes" in args.measure:
+        measure_scenes()
+    with open(README) as f:
+        text = f.read()
+    found = blocks(text)
+    missing = sorted(set(RENDER) - set(found))
+    if missing:
+        raise SystemExit(f"README.md has no markers for: {', '.join(missing)}")
+    stale = []
+    for name, (i, j) in sorted(found.items(), key=lambda kv: -kv[1][0]):
+        new = RENDER[name]()
+        if text[i:j] != new:
+            stale.append(name)
+            text = text[:i] + new + text[j:]
+    if args.update:
+        with open(README, "w") as f:
+            f.write(text)
+        print("updated:", ", ".join(stale) if stale else "nothing (all up to date)")
+    elif stale:
+        print("README tables that differ from their committed results:", ", ".join(stale),
+              "(python3 scripts/readme_figures.py --update)")
+        sys.exit(1)
+    else:
+        print("README tables match their results:", ", ".join(sorted(found)))
+
+
+if __name__ == "__main__":
+    main()
