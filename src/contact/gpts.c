@@ -251,6 +251,15 @@ static PetscErrorCode GPTSWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode GPTSWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+{
+  GPTS *cp = (GPTS *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteXDMF(&cp->report, &cp->spec, bodies, fp, h5));
+  PetscFunctionReturn(0);
+}
+
 /* Both surfaces, their searches, and the slave points of the owned edges,
    which depend only on the reference geometry: arc position, reference
    coordinates and weight, set once. */
@@ -366,6 +375,7 @@ PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *spec, EnergyTerm t)
   t->ops.view             = GPTSView;
   t->ops.writejson        = GPTSWriteJSON;
   t->ops.writehdf5        = GPTSWriteHDF5;
+  t->ops.writexdmf        = GPTSWriteXDMF;
   t->ops.destroy          = GPTSDestroy;
   PetscFunctionReturn(0);
 }

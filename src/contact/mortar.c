@@ -547,6 +547,15 @@ static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MortarWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteXDMF(&m->report, &m->spec, bodies, fp, h5));
+  PetscFunctionReturn(0);
+}
+
 /* Both surfaces and their searches; per side the nodal integrals A_j (8-point
    Gauss on every edge, every rank), the arc position of each node, the edges
    on each node and the nodes this rank owns. */
@@ -733,6 +742,7 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
   t->ops.view             = MortarView;
   t->ops.writejson        = MortarWriteJSON;
   t->ops.writehdf5        = MortarWriteHDF5;
+  t->ops.writexdmf        = MortarWriteXDMF;
   t->ops.destroy          = MortarDestroy;
   PetscFunctionReturn(0);
 }

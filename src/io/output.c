@@ -92,7 +92,17 @@ static PetscErrorCode RenameOnRoot(MPI_Comm comm, const char from[], const char 
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[])
+static const char *const stressNames[4] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+
+/* The XDMF file: one spatial collection of a grid per body (its second-order
+   cells, reference coordinates, displacement as a 3-component vector, stress
+   components and von Mises stress) and a line grid per contact surface with a
+   profile (EnergyTermWriteXDMF), all on the HDF5 file h5. ParaView's legacy
+   reader (XDMFReader) and its Xdmf3 readers read every item alike only as
+   plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
+   and the readers map the columns of a Tensor6 differently; so the HDF5 file
+   holds the displacement with z = 0 and each stress component on its own. */
+static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[], const char runId[])
 {
   PetscMPIInt rank;
   const char *base = strrchr(h5, '/');
@@ -102,10 +112,11 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
   base = base ? base + 1 : h5;
   if (rank == 0) {
     FILE *fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path);
-    fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->scene);
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", runId);
+    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->scene);
     for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body        b = p->bodies[i];
+      Body        b  = p->bodies[i];
       const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
       const char *g  = b->name;
       PetscInt    N = F[i].nnodes, C = F[i].ncells;
@@ -113,17 +124,52 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
       fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
       fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
       fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
-      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0*$0)\" Dimensions=\"%d 3\">\n", (int)N);
-      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 0 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
-      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 1 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
-      fprintf(fp, "     </DataItem>\n    </Attribute>\n");
-      fprintf(fp, "    <Attribute Name=\"stress (xx yy zz xy)\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 4\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/stress</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement_xyz</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      for (PetscInt k = 0; k < 4; ++k) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/%s</DataItem>\n    </Attribute>\n", stressNames[k], (int)N, base, g, stressNames[k]);
       fprintf(fp, "    <Attribute Name=\"von_mises\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/von_mises</DataItem>\n    </Attribute>\n", (int)N, base, g);
       fprintf(fp, "   </Grid>\n");
     }
+    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
     fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
     PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
   }
+  PetscFunctionReturn(0);
+}
+
+/* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
+   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress. */
+static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
+{
+  Vec                d3, c;
+  PetscInt           n;
+  const PetscScalar *u;
+  PetscScalar       *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(F->vm, &n));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)F->vm), &d3));
+  PetscCall(VecSetSizes(d3, 3 * n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(d3, 3));
+  PetscCall(VecSetType(d3, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)d3, "displacement_xyz"));
+  PetscCall(VecGetArrayRead(F->disp, &u));
+  PetscCall(VecGetArray(d3, &a));
+  for (PetscInt i = 0; i < n; ++i) {
+    a[3 * i]     = u[2 * i];
+    a[3 * i + 1] = u[2 * i + 1];
+    a[3 * i + 2] = 0.0;
+  }
+  PetscCall(VecRestoreArray(d3, &a));
+  PetscCall(VecRestoreArrayRead(F->disp, &u));
+  PetscCall(VecView(d3, v));
+  PetscCall(VecDestroy(&d3));
+  PetscCall(VecDuplicate(F->vm, &c));
+  for (PetscInt k = 0; k < 4; ++k) {
+    PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
+    PetscCall(PetscObjectSetName((PetscObject)c, stressNames[k]));
+    PetscCall(VecView(c, v));
+  }
+  PetscCall(VecDestroy(&c));
   PetscFunctionReturn(0);
 }
 
@@ -145,6 +191,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyNodalFields F[], const char path[
     PetscCall(VecView(F[i].disp, v));
     PetscCall(VecView(F[i].stress, v));
     PetscCall(VecView(F[i].vm, v));
+    PetscCall(WriteXDMFFields(&F[i], v));
     PetscCall(ISView(F[i].topo, v));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
@@ -304,7 +351,7 @@ PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
     PetscCall(PendingAdd(htmp));
     PetscCall(PendingAdd(xtmp));
     PetscCall(WriteHDF5(p, F, htmp));
-    PetscCall(WriteXDMF(p, F, xtmp, p->output));
+    PetscCall(WriteXDMF(p, F, xtmp, p->output, ""));
   }
   PetscCall(PetscTime(&t1));
   p->time[3] = t1 - t0;
