@@ -316,11 +316,10 @@ PetscErrorCode ContactOutputOpen(MPI_Comm comm, const char h5[], const char json
   PetscCall(PetscStrcmp(h5, "none", &noh5));
   PetscCall(PetscStrcmp(json, "none", &nojs));
   if (!rank) {
-    char      host[256] = "";
+    char      host[256] = "", ts[32];
     time_t    now       = time(NULL);
     struct tm tm;
     if (gethostname(host, sizeof(host) - 1)) PetscCall(PetscSNPrintf(host, sizeof(host), "unknown"));
-    char      ts[32];
     strftime(ts, sizeof(ts), "%Y%m%dT%H%M%S", localtime_r(&now, &tm));
     PetscCall(PetscSNPrintf(set.runId, sizeof(set.runId), "%s-%s-%d", ts, host, (int)getpid()));
   }
