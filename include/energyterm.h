@@ -20,6 +20,7 @@ typedef struct {
   PetscErrorCode (*view)(EnergyTerm, Body[]);
   PetscErrorCode (*writejson)(EnergyTerm, Body[], FILE *, PetscBool summary);
   PetscErrorCode (*writehdf5)(EnergyTerm, Body[], PetscViewer);
+  PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
   PetscErrorCode (*destroy)(EnergyTerm);
 } EnergyTermOps;
 
@@ -54,3 +55,6 @@ PetscErrorCode EnergyTermView(EnergyTerm, Body[]);
 PetscErrorCode EnergyTermWriteJSON(EnergyTerm, Body[], FILE *, PetscBool summary);
 /* Collective: the results into an open HDF5 viewer. */
 PetscErrorCode EnergyTermWriteHDF5(EnergyTerm, Body[], PetscViewer);
+/* Rank 0: XDMF grids of what EnergyTermWriteHDF5 wrote into the file h5 (its
+   name as the XDMF file refers to it). */
+PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);

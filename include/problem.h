@@ -16,6 +16,8 @@ struct _n_Problem {
   MPI_Comm  comm;
   char      scene[CONTACT_NAME_LEN];
   char      output[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], meshDir[PETSC_MAX_PATH_LEN];
+  PetscBool outputWait; /* wait for another run writing the same outputs */
+  PetscBool meshOnly;   /* set before ProblemSetFromOptions: mesh, write nothing */
   PetscReal meshSize;
   PetscInt  nbodies;
   Body      bodies[CONTACT_MAX_BODIES];

@@ -1,13 +1,16 @@
 #!/bin/sh
 # Install what `contact` needs on Debian 12, skipping what is already there.
-# Debian: PETSc (with TAO, HDF5, MUMPS), METIS, Gmsh, Open MPI, HDF5, pkg-config.
+# Debian: PETSc (with TAO, HDF5, MUMPS), METIS, Gmsh, Open MPI, HDF5, pkg-config,
+# ParaView, xvfb.
 # Python: h5py, numpy, matplotlib, pytest (pip, or Debian packages as a fallback).
 set -eu
 
 # libopenblas0-serial replaces the reference BLAS under PETSc's factorisations
 # (CHOLMOD and MUMPS factor about twice as fast with it; serial, to share the
 # cores with MPI ranks rather than with BLAS threads).
-DEB_PKGS="petsc-dev libmetis-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial"
+# ParaView (pvpython is in python3-paraview) and xvfb-run (with xauth): the test
+# that opens the XDMF output with ParaView's readers, headless.
+DEB_PKGS="petsc-dev libmetis-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth"
 PY_MODS="h5py numpy matplotlib pytest"
 
 missing=""

@@ -87,6 +87,7 @@ static PetscErrorCode Run(int *status)
   PetscOptionsEnd();
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
+  problem->meshOnly = meshOnly;
   PetscCall(ProblemSetFromOptions(problem));
   if (help) { /* every option listed with the default a run would use; nothing meshed, solved or written */
     PetscCall(ProblemCreateSolver(problem));
@@ -108,6 +109,7 @@ static PetscErrorCode Run(int *status)
       TaoConvergedReason reason;
       PetscCall(TaoGetConvergedReason(problem->tao, &reason));
       PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s); no output written\n", TaoConvergedReasons[reason]));
+      ContactOutputDiscard();
     }
     PetscCall(PetscTime(&t3));
     problem->time[4] = t3 - t0;
@@ -140,7 +142,7 @@ int main(int argc, char **argv)
   ierr = Run(&status);
   if (ierr) {
     status = 1;
-    ContactOutputRemovePending();
+    ContactOutputDiscard();
   }
   PetscCall(ExactSolutionFinalize());
   PetscCall(ContactFormulationFinalize());

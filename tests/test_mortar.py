@@ -102,7 +102,7 @@ def test_hertz_small(n, tmp_path):
 
 def test_ranks(tmp_path):
     """1, 2, 3 and 4 ranks: every number of the JSON summary (but timings, the
-    rank count, the stopping residual) agrees to 1e-8 (a near-zero force
+    run id, the rank count, the stopping residual) agrees to 1e-8 (a near-zero force
     component to 1e-8 of the pair's force)."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-13"]
     runs = [run_contact(base, tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)]

@@ -229,10 +229,22 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   PetscFunctionReturn(0);
 }
 
+/* Rank 0: the line cells through a side's samples, sorted by s, for the XDMF
+   file: quadratic edges (Edge_3: corner, corner, mid) when the samples are the
+   nodes of the surface's quadratic edges from one end to the other (an odd
+   count), else 2-node segments between consecutive samples. None for a side
+   without samples (a master-only surface). */
+static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt *ncells, PetscInt *nper)
+{
+  *nper   = nodal && S->n % 2 == 1 ? 3 : 2;
+  *ncells = S->n < 2 ? 0 : (*nper == 3 ? (S->n - 1) / 2 : S->n - 1);
+}
+
 /* Per one-sided surface, /contact/<pair>/<body>_<group>/: s, X (reference),
    x (current), gap, pressure, weight, from rank 0 (named node_s, node_X, ...
-   when the samples are nodes: weighted gap, nodal pressure, A_j); the pair's
-   figures as attributes of /contact/<pair> (collective). */
+   when the samples are nodes: weighted gap, nodal pressure, A_j), and the
+   line cells through them (cells or node_cells, ContactSideLineCells); the
+   pair's figures as attributes of /contact/<pair> (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
   MPI_Comm    comm;
@@ -266,6 +278,32 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
       PetscCall(VecView(vec, v));
       PetscCall(VecDestroy(&vec));
     }
+    { /* the line cells, decided on rank 0 (it holds the samples) */
+      PetscInt lc[2] = {0, 2}, m, *idx;
+      IS       is;
+      if (!rank) ContactSideLineCells(S, R->nodal, &lc[0], &lc[1]);
+      PetscCallMPI(MPI_Bcast(lc, 2, MPIU_INT, 0, comm));
+      if (lc[0] > 0) {
+        m = rank ? 0 : lc[0];
+        PetscCall(PetscMalloc1(m * lc[1] + 1, &idx));
+        for (PetscInt c = 0; c < m; ++c) {
+          if (lc[1] == 3) {
+            idx[3 * c]     = 2 * c;
+            idx[3 * c + 1] = 2 * c + 2;
+            idx[3 * c + 2] = 2 * c + 1;
+          } else {
+            idx[2 * c]     = c;
+            idx[2 * c + 1] = c + 1;
+          }
+        }
+        PetscCall(ISCreateGeneral(comm, m * lc[1], idx, PETSC_OWN_POINTER, &is));
+        PetscCall(ISSetBlockSize(is, lc[1]));
+        PetscCall(PetscObjectSetName((PetscObject)is, R->nodal ? "node_cells" : "cells"));
+        PetscCall(ISView(is, v));
+        PetscCall(ISDestroy(&is));
+        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, lc[1] == 3 ? "Edge_3" : "Polyline"));
+      }
+    }
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
@@ -290,5 +328,34 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &R->l2err));
   }
   PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0. A surface as a line mesh on its current positions (x), with the
+   pressure, the gap (weighted, for nodes) and the arc position s at its
+   points; the grid is named <pair>:<body>:<group>. */
+PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, const char h5[])
+{
+  const char *pre = R->nodal ? "node_" : "";
+  const char *attr[3] = {"pressure", "gap", "s"};
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    const ContactSide *S = &R->side[s];
+    const char        *body = bodies[spec->body[s]]->name, *grp = spec->group[s];
+    PetscInt           nc, nper;
+    char               g[4 * CONTACT_NAME_LEN];
+
+    ContactSideLineCells(S, R->nodal, &nc, &nper);
+    if (!nc) continue;
+    PetscCall(PetscSNPrintf(g, sizeof(g), "%s:/contact/%s/%s_%s/%s", h5, spec->name, body, grp, pre));
+    fprintf(fp, "   <Grid Name=\"%s:%s:%s\" GridType=\"Uniform\">\n", spec->name, body, grp);
+    if (nper == 3) fprintf(fp, "    <Topology TopologyType=\"Edge_3\" NumberOfElements=\"%d\">\n", (int)nc);
+    else fprintf(fp, "    <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)nc);
+    fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%scells</DataItem>\n    </Topology>\n", (int)nc, (int)nper, (int)sizeof(PetscInt), g);
+    fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%sx</DataItem>\n    </Geometry>\n", (int)S->n, g);
+    for (PetscInt k = 0; k < 3; ++k) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s%s</DataItem>\n    </Attribute>\n", attr[k], (int)S->n, g, attr[k]);
+    fprintf(fp, "   </Grid>\n");
+  }
   PetscFunctionReturn(0);
 }

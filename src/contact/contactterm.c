@@ -110,6 +110,15 @@ static PetscErrorCode ContactTermWriteHDF5(EnergyTerm t, Body bodies[], PetscVie
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode ContactTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+{
+  const ContactTerm *b = (const ContactTerm *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteXDMF(&b->report, &b->spec, bodies, fp, h5));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec, EnergyTerm t)
 {
   PetscFunctionBeginUser;
@@ -126,5 +135,6 @@ PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec
   t->ops.view             = ContactTermView;
   t->ops.writejson        = ContactTermWriteJSON;
   t->ops.writehdf5        = ContactTermWriteHDF5;
+  t->ops.writexdmf        = ContactTermWriteXDMF;
   PetscFunctionReturn(0);
 }

@@ -1,98 +1,416 @@
 /* Output: per body the second-order nodal mesh (coordinates, Tri6/Quad9
    connectivity in XDMF node order), displacement, stress (xx, yy, zz, xy) and
    von Mises stress averaged at the nodes, in one HDF5 file with an XDMF file
-   beside it, and a JSON summary of the run. Every file is written under a
-   temporary name and renamed only when complete. */
+   beside it, and a JSON summary of the run.
+
+   The files of a run are one set, so that two runs never mix theirs and a
+   failed run changes none:
+   - before meshing (ContactOutputOpen) the set is locked: a lock file
+     <stem>.lock beside the files (stem: the XDMF or JSON file's name without
+     its extension; out/hertz.lock for the default set), created with O_EXCL,
+     holding "pid=<pid> host=<host> run_id=<id>", and flock()ed while the run
+     lives. A second run on the same names stops at once naming the first, or
+     waits for it (-output_wait). A lock that nobody holds any more (the
+     kernel drops a flock with its process, also on SIGKILL, and does not
+     mistake a reused pid) is taken over. Then the temporaries <name>.tmp are
+     created: a path that cannot be written fails before meshing. Of the
+     missing directories only the default out/ is created.
+   - the files are written under the temporary names, carry the run id
+     (/metadata:run_id, "run_id", an XML comment) and are renamed at the end,
+     the XDMF file last (it names the HDF5 file), with the signals held so that
+     a Ctrl-C renames all or none; then the lock is removed.
+   - a failed or interrupted run removes its temporaries and its lock. */
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 #include "problem.h"
 
-/* Temporary files being written: a failed or interrupted run removes them, so
-   that it leaves neither a half-written file nor a changed final one. The
-   signal handler only calls async-signal-safe functions (unlink, signal, raise). */
-#define MAX_PENDING 3
-static char         pending[MAX_PENDING][PETSC_MAX_PATH_LEN + 16];
-static volatile int npending;
+#define MAX_PENDING  3
+#define MAX_LOCKS    2
+#define OUT_PATH_LEN (PETSC_MAX_PATH_LEN + 16)
+#define OUT_MSG_LEN  (3 * PETSC_MAX_PATH_LEN)
+
+/* The set of the run: final names ("" when not written), temporaries, run id. */
+typedef struct {
+  char      h5[OUT_PATH_LEN], xdmf[OUT_PATH_LEN], json[OUT_PATH_LEN];
+  char      htmp[OUT_PATH_LEN], xtmp[OUT_PATH_LEN], jtmp[OUT_PATH_LEN];
+  char      runId[128];
+  PetscBool open;
+} OutputSet;
+static OutputSet set;
+
+/* Temporary files being written and lock files held (rank 0): a failed or
+   interrupted run removes them, so that it leaves neither a half-written file
+   nor a changed final one. The signal handler only calls async-signal-safe
+   functions (unlink, signal, raise). */
+static char                  pending[MAX_PENDING][OUT_PATH_LEN];
+static volatile sig_atomic_t npending;
+static char                  locks[MAX_LOCKS][OUT_PATH_LEN];
+static int                   lockfd[MAX_LOCKS];
+static volatile sig_atomic_t nlocks;
+
+static const int outputSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
 static void RemovePendingOnSignal(int sig)
 {
   for (int i = 0; i < npending; ++i) unlink(pending[i]);
+  for (int i = 0; i < nlocks; ++i) unlink(locks[i]);
   signal(sig, SIG_DFL);
   raise(sig);
 }
 
 /* SIGINT, SIGTERM, SIGHUP, SIGPIPE (output piped into head): remove the
-   temporaries, then die of the signal, quietly, as Unix tools do. */
+   temporaries and the lock, then die of the signal, quietly, as Unix tools do. */
 PetscErrorCode ContactOutputInstallSignalHandlers(void)
 {
   struct sigaction sa;
-  const int        sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
   PetscFunctionBeginUser;
   memset(&sa, 0, sizeof(sa));
   sa.sa_handler = RemovePendingOnSignal;
   sigemptyset(&sa.sa_mask);
-  for (size_t i = 0; i < sizeof(sigs) / sizeof(sigs[0]); ++i) PetscCheck(!sigaction(sigs[i], &sa, NULL), PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the handler of signal %d", sigs[i]);
+  for (size_t i = 0; i < sizeof(outputSignals) / sizeof(outputSignals[0]); ++i) PetscCheck(!sigaction(outputSignals[i], &sa, NULL), PETSC_COMM_SELF, PETSC_ERR_SYS, "cannot install the handler of signal %d", outputSignals[i]);
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode PendingAdd(const char path[])
+static void ReleaseLocks(void)
 {
-  PetscFunctionBeginUser;
-  PetscCheck(npending < MAX_PENDING, PETSC_COMM_SELF, PETSC_ERR_PLIB, "too many temporary files");
-  PetscCall(PetscStrncpy(pending[npending], path, sizeof(pending[0])));
-  npending = npending + 1;
-  PetscFunctionReturn(0);
+  while (nlocks > 0) { /* unlinked while still flocked: a waiter that opened it sees it gone */
+    const int k = nlocks - 1;
+    unlink(locks[k]);
+    close(lockfd[k]);
+    nlocks = k;
+  }
 }
 
-/* Removes the temporaries of an output that did not complete (rank 0 names them). */
-void ContactOutputRemovePending(void)
+/* Removes the temporaries of an output that did not complete and releases the
+   lock (rank 0 names them). */
+void ContactOutputDiscard(void)
 {
   PetscMPIInt rank = 0;
 
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  if (!rank)
+  if (!rank) {
     for (int i = 0; i < npending; ++i) unlink(pending[i]);
-  npending = 0;
-}
-
-static PetscErrorCode EnsureParentDir(MPI_Comm comm, const char path[])
-{
-  char        dir[PETSC_MAX_PATH_LEN], *slash;
-  PetscMPIInt rank;
-  int         err = 0;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscStrncpy(dir, path, sizeof(dir)));
-  slash = strrchr(dir, '/');
-  if (rank == 0 && slash && slash != dir) {
-    *slash = 0;
-    err    = ContactMakeDirs(dir);
-    if (!err && access(dir, W_OK)) err = errno;
+    ReleaseLocks();
   }
-  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
-  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "cannot write output %s: directory %s: %s", path, dir, strerror(err));
+  npending = 0;
+  set.open = PETSC_FALSE;
+}
+
+/* Rank 0's verdict (0 or an error code with its message) on every rank. */
+static PetscErrorCode CheckOnRoot(MPI_Comm comm, int code, char msg[])
+{
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, comm));
+  if (code) PetscCallMPI(MPI_Bcast(msg, OUT_MSG_LEN, MPI_CHAR, 0, comm));
+  PetscCheck(!code, comm, (PetscErrorCode)code, "%s", msg);
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode RenameOnRoot(MPI_Comm comm, const char from[], const char to[])
+/* path without the extension ext (if it has it) */
+static void Stem(const char path[], const char ext[], char stem[])
+{
+  size_t l = strlen(path), e = strlen(ext);
+
+  snprintf(stem, OUT_PATH_LEN, "%s", path);
+  if (l > e && !strcmp(path + l - e, ext)) stem[l - e] = 0;
+}
+
+/* Rank 0: the folder of an output exists (only the default out/ is created)
+   and the name is not a folder. */
+static int CheckOutputPath(const char opt[], const char path[], char msg[])
+{
+  char        dir[OUT_PATH_LEN];
+  const char *slash = strrchr(path, '/');
+  struct stat st;
+
+  if (!stat(path, &st) && S_ISDIR(st.st_mode)) {
+    snprintf(msg, OUT_MSG_LEN, "option %s: %s is a directory", opt, path);
+    return PETSC_ERR_FILE_OPEN;
+  }
+  if (!slash) return 0;
+  snprintf(dir, sizeof(dir), "%.*s", slash == path ? 1 : (int)(slash - path), path);
+  if (!stat(dir, &st)) {
+    if (S_ISDIR(st.st_mode)) return 0;
+    snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: %s is not a directory", opt, path, dir);
+    return PETSC_ERR_FILE_OPEN;
+  }
+  if (errno == ENOENT && (!strcmp(dir, "out") || !strcmp(dir, "./out"))) {
+    if (!mkdir(dir, 0777) || errno == EEXIST) return 0;
+    snprintf(msg, OUT_MSG_LEN, "option %s: cannot create the output directory %s: %s", opt, dir, strerror(errno));
+    return PETSC_ERR_FILE_OPEN;
+  }
+  if (errno == ENOENT) snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: directory %s does not exist", opt, path, dir);
+  else snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: directory %s: %s", opt, path, dir, strerror(errno));
+  return PETSC_ERR_FILE_OPEN;
+}
+
+/* Rank 0: creates (empties) a temporary file, recorded first so that a
+   signal cannot leave it behind. */
+static int CreateTemporary(const char opt[], const char path[], char msg[])
+{
+  int fd;
+
+  if (npending >= MAX_PENDING) {
+    snprintf(msg, OUT_MSG_LEN, "too many temporary files");
+    return PETSC_ERR_PLIB;
+  }
+  snprintf(pending[npending], OUT_PATH_LEN, "%s", path);
+  npending = npending + 1;
+  fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: %s", opt, path, strerror(errno));
+    npending = npending - 1;
+    return PETSC_ERR_FILE_OPEN;
+  }
+  close(fd);
+  return 0;
+}
+
+/* Rank 0, one attempt at the lock file path: 0 with *fd when taken (created,
+   or taken over from a run that is gone: *stale, holder[] its line); EBUSY
+   with the holder's line in holder[] while another run holds it; else an
+   errno. A run holds its lock file by flock(); a file that nobody flocks is
+   being created (no full line yet: retried for 2 s), was just released
+   (unlinked: retried), or was left by a run that ended without removing it.
+   On another host the holder cannot be checked, so its lock counts as held. */
+static int LockTry(const char path[], const char line[], const char host[], int *fd, char holder[], size_t len, PetscBool *stale)
+{
+  for (int tries = 0;; ++tries) {
+    struct stat a, b;
+    ssize_t     n;
+    int         f = open(path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644), e;
+    char        hhost[256] = "";
+
+    if (f >= 0) {
+      if (flock(f, LOCK_EX | LOCK_NB) || write(f, line, strlen(line)) != (ssize_t)strlen(line)) {
+        e = errno ? errno : EIO;
+        unlink(path);
+        close(f);
+        return e;
+      }
+      *fd = f;
+      return 0;
+    }
+    if (errno != EEXIST) return errno;
+    if ((f = open(path, O_RDWR | O_CLOEXEC)) < 0) {
+      if (errno == ENOENT) continue;
+      return errno;
+    }
+    n         = pread(f, holder, len - 1, 0);
+    holder[n > 0 ? n : 0] = 0;
+    if (flock(f, LOCK_EX | LOCK_NB)) {
+      e = errno;
+      close(f);
+      return e == EWOULDBLOCK ? EBUSY : e;
+    }
+    if (fstat(f, &a) || stat(path, &b) || a.st_ino != b.st_ino || a.st_dev != b.st_dev) {
+      close(f);
+      continue;
+    }
+    n         = pread(f, holder, len - 1, 0);
+    holder[n > 0 ? n : 0] = 0;
+    if (!strchr(holder, '\n') && tries < 200) {
+      close(f);
+      usleep(10000);
+      continue;
+    }
+    { /* the holder's host, if the line names one */
+      const char *h = strstr(holder, "host=");
+      if (h) sscanf(h + 5, "%255s", hhost);
+      if (hhost[0] && strcmp(hhost, host)) {
+        close(f);
+        return EBUSY;
+      }
+    }
+    *stale = PETSC_TRUE;
+    if (ftruncate(f, 0) || pwrite(f, line, strlen(line), 0) != (ssize_t)strlen(line)) {
+      e = errno ? errno : EIO;
+      close(f);
+      return e;
+    }
+    *fd = f;
+    return 0;
+  }
+}
+
+/* Collective: takes the set's locks in name order (so that two runs waiting
+   for each other's second lock cannot happen); with wait, retries every
+   0.2 s while another run holds one. */
+static PetscErrorCode OutputLock(MPI_Comm comm, PetscInt nwant, char want[][OUT_PATH_LEN], const char *what[], PetscBool wait)
 {
   PetscMPIInt rank;
-  int         err = 0;
+  PetscBool   told = PETSC_FALSE;
+  char        line[512], host[256] = "", msg[OUT_MSG_LEN];
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0 && rename(from, to)) err = errno;
-  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
-  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, "cannot rename %s to %s: %s", from, to, strerror(err));
+  if (gethostname(host, sizeof(host) - 1)) snprintf(host, sizeof(host), "unknown");
+  snprintf(line, sizeof(line), "pid=%d host=%s run_id=%s\n", (int)getpid(), host, set.runId);
+  for (;;) {
+    int state = 0; /* 0: all held, 1: another run holds one, else an error code */
+    msg[0]    = 0;
+    if (!rank) {
+      while (nlocks < nwant) {
+        char      holder[512] = "", *nl;
+        PetscBool stale       = PETSC_FALSE;
+        int       fd = -1, e = LockTry(want[nlocks], line, host, &fd, holder, sizeof(holder), &stale);
+        if ((nl = strchr(holder, '\n'))) *nl = 0;
+        if (!e) {
+          snprintf(locks[nlocks], OUT_PATH_LEN, "%s", want[nlocks]);
+          lockfd[nlocks] = fd;
+          nlocks         = nlocks + 1;
+          if (stale) fprintf(stderr, "contact: warning: took over %s, left by a run that is gone (%s)\n", want[nlocks - 1], holder[0] ? holder : "empty");
+          continue;
+        }
+        if (e == EBUSY) {
+          int  pid = -1;
+          char hh[256] = "?", id[128] = "?";
+          const char *c;
+          if ((c = strstr(holder, "pid="))) sscanf(c + 4, "%d", &pid);
+          if ((c = strstr(holder, "host="))) sscanf(c + 5, "%255s", hh);
+          if ((c = strstr(holder, "run_id="))) sscanf(c + 7, "%127s", id);
+          snprintf(msg, sizeof(msg), "%s is being written by another run: pid %d on host %s (run id %s, lock %s%s)", what[nlocks], pid, hh, id, want[nlocks], strcmp(hh, host) ? "; from this host it cannot be checked: remove the lock if that run has ended" : "");
+          state = 1;
+        } else {
+          snprintf(msg, sizeof(msg), "cannot create the lock file %s of %s: %s", want[nlocks], what[nlocks], strerror(e));
+          state = PETSC_ERR_FILE_OPEN;
+        }
+        break;
+      }
+    }
+    PetscCallMPI(MPI_Bcast(&state, 1, MPI_INT, 0, comm));
+    if (!state) break;
+    PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, comm));
+    PetscCheck(state == 1, comm, (PetscErrorCode)state, "%s", msg);
+    PetscCheck(wait, comm, PETSC_ERR_FILE_OPEN, "%s; -output_wait waits for it, -output and -summary name other files", msg);
+    if (!told) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "contact: waiting: %s\n", msg));
+    told = PETSC_TRUE;
+    usleep(200000);
+  }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[])
+/* Collective, before meshing: the run id, the output set's names, its locks,
+   and its temporaries created. h5 or json may be "none". */
+PetscErrorCode ContactOutputOpen(MPI_Comm comm, const char h5[], const char json[], PetscBool wait)
+{
+  PetscMPIInt rank;
+  PetscBool   noh5, nojs;
+  char        msg[OUT_MSG_LEN] = "", want[MAX_LOCKS][OUT_PATH_LEN], stem[OUT_PATH_LEN];
+  const char *what[MAX_LOCKS];
+  PetscInt    nwant = 0;
+  int         code  = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(!set.open, comm, PETSC_ERR_ORDER, "the output set is already open");
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&set, sizeof(set)));
+  PetscCall(PetscStrcmp(h5, "none", &noh5));
+  PetscCall(PetscStrcmp(json, "none", &nojs));
+  if (!rank) {
+    char      host[256] = "", ts[32];
+    time_t    now       = time(NULL);
+    struct tm tm;
+    if (gethostname(host, sizeof(host) - 1)) PetscCall(PetscSNPrintf(host, sizeof(host), "unknown"));
+    strftime(ts, sizeof(ts), "%Y%m%dT%H%M%S", localtime_r(&now, &tm));
+    PetscCall(PetscSNPrintf(set.runId, sizeof(set.runId), "%s-%s-%d", ts, host, (int)getpid()));
+  }
+  PetscCallMPI(MPI_Bcast(set.runId, sizeof(set.runId), MPI_CHAR, 0, comm));
+  if (!noh5) {
+    PetscCall(PetscSNPrintf(set.h5, OUT_PATH_LEN, "%s", h5));
+    Stem(h5, ".h5", stem);
+    PetscCall(PetscSNPrintf(set.xdmf, OUT_PATH_LEN, "%s.xdmf", stem));
+    PetscCall(PetscSNPrintf(set.htmp, OUT_PATH_LEN, "%s.tmp", set.h5));
+    PetscCall(PetscSNPrintf(set.xtmp, OUT_PATH_LEN, "%s.tmp", set.xdmf));
+    Stem(set.xdmf, ".xdmf", stem);
+    PetscCall(PetscSNPrintf(want[nwant], OUT_PATH_LEN, "%s.lock", stem));
+    what[nwant++] = set.h5;
+  }
+  if (!nojs) {
+    PetscCall(PetscSNPrintf(set.json, OUT_PATH_LEN, "%s", json));
+    PetscCall(PetscSNPrintf(set.jtmp, OUT_PATH_LEN, "%s.tmp", set.json));
+    Stem(json, ".json", stem);
+    PetscCall(PetscSNPrintf(want[nwant], OUT_PATH_LEN, "%s.lock", stem));
+    what[nwant++] = set.json;
+  }
+  if (nwant == 2 && !strcmp(want[0], want[1])) nwant = 1; /* out/hertz.{h5,xdmf,json}: one lock */
+  else if (nwant == 2 && strcmp(want[0], want[1]) > 0) { /* in name order */
+    const char *w = what[0];
+    memcpy(stem, want[0], sizeof(stem));
+    memcpy(want[0], want[1], sizeof(stem));
+    memcpy(want[1], stem, sizeof(stem));
+    what[0] = what[1];
+    what[1] = w;
+  }
+  PetscCheck(noh5 || nojs || (strcmp(set.h5, set.json) && strcmp(set.xdmf, set.json)), comm, PETSC_ERR_USER_INPUT, "options -output and -summary: %s is named twice", set.json);
+  if (!rank) {
+    if (!noh5) code = CheckOutputPath("-output", set.h5, msg);
+    if (!code && !nojs) code = CheckOutputPath("-summary", set.json, msg);
+  }
+  PetscCall(CheckOnRoot(comm, code, msg));
+  PetscCall(OutputLock(comm, nwant, want, what, wait));
+  if (!rank) {
+    if (!noh5) code = CreateTemporary("-output", set.htmp, msg);
+    if (!code && !noh5) code = CreateTemporary("-output", set.xtmp, msg);
+    if (!code && !nojs) code = CreateTemporary("-summary", set.jtmp, msg);
+  }
+  PetscCall(CheckOnRoot(comm, code, msg));
+  set.open = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+/* Collective: the renames that publish the set, the XDMF file last, with the
+   signals held (rank 0), then the lock removed. */
+static PetscErrorCode OutputCommit(MPI_Comm comm)
+{
+  PetscMPIInt rank;
+  int         code = 0;
+  char        msg[OUT_MSG_LEN] = "";
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    const char *from[3] = {set.htmp, set.jtmp, set.xtmp}, *to[3] = {set.h5, set.json, set.xdmf};
+    sigset_t    block, old;
+    sigemptyset(&block);
+    for (size_t i = 0; i < sizeof(outputSignals) / sizeof(outputSignals[0]); ++i) sigaddset(&block, outputSignals[i]);
+    sigprocmask(SIG_BLOCK, &block, &old);
+    for (int k = 0; k < 3 && !code; ++k)
+      if (to[k][0] && rename(from[k], to[k])) {
+        snprintf(msg, sizeof(msg), "cannot rename %s to %s: %s", from[k], to[k], strerror(errno));
+        code = PETSC_ERR_FILE_WRITE;
+      }
+    if (!code) {
+      npending = 0;
+      ReleaseLocks();
+    }
+    sigprocmask(SIG_SETMASK, &old, NULL);
+  }
+  PetscCall(CheckOnRoot(comm, code, msg));
+  npending = 0;
+  set.open = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+static const char *const stressNames[4] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+
+/* The XDMF file: one spatial collection of a grid per body (its second-order
+   cells, reference coordinates, displacement as a 3-component vector, stress
+   components and von Mises stress) and a line grid per contact surface with a
+   profile (EnergyTermWriteXDMF), all on the HDF5 file h5. ParaView's legacy
+   reader (XDMFReader) and its Xdmf3 readers read every item alike only as
+   plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
+   and the readers map the columns of a Tensor6 differently; so the HDF5 file
+   holds the displacement with z = 0 and each stress component on its own. */
+static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[], const char runId[])
 {
   PetscMPIInt rank;
   const char *base = strrchr(h5, '/');
@@ -102,10 +420,11 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
   base = base ? base + 1 : h5;
   if (rank == 0) {
     FILE *fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path);
-    fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->scene);
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", runId);
+    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->scene);
     for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body        b = p->bodies[i];
+      Body        b  = p->bodies[i];
       const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
       const char *g  = b->name;
       PetscInt    N = F[i].nnodes, C = F[i].ncells;
@@ -113,17 +432,52 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
       fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
       fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
       fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
-      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0*$0)\" Dimensions=\"%d 3\">\n", (int)N);
-      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 0 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
-      fprintf(fp, "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 1\"><DataItem Dimensions=\"3 2\" Format=\"XML\">0 1 1 1 %d 1</DataItem><DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement</DataItem></DataItem>\n", (int)N, (int)N, (int)N, base, g);
-      fprintf(fp, "     </DataItem>\n    </Attribute>\n");
-      fprintf(fp, "    <Attribute Name=\"stress (xx yy zz xy)\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 4\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/stress</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement_xyz</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      for (PetscInt k = 0; k < 4; ++k) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/%s</DataItem>\n    </Attribute>\n", stressNames[k], (int)N, base, g, stressNames[k]);
       fprintf(fp, "    <Attribute Name=\"von_mises\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/von_mises</DataItem>\n    </Attribute>\n", (int)N, base, g);
       fprintf(fp, "   </Grid>\n");
     }
+    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
     fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
     PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
   }
+  PetscFunctionReturn(0);
+}
+
+/* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
+   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress. */
+static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
+{
+  Vec                d3, c;
+  PetscInt           n;
+  const PetscScalar *u;
+  PetscScalar       *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(F->vm, &n));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)F->vm), &d3));
+  PetscCall(VecSetSizes(d3, 3 * n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(d3, 3));
+  PetscCall(VecSetType(d3, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)d3, "displacement_xyz"));
+  PetscCall(VecGetArrayRead(F->disp, &u));
+  PetscCall(VecGetArray(d3, &a));
+  for (PetscInt i = 0; i < n; ++i) {
+    a[3 * i]     = u[2 * i];
+    a[3 * i + 1] = u[2 * i + 1];
+    a[3 * i + 2] = 0.0;
+  }
+  PetscCall(VecRestoreArray(d3, &a));
+  PetscCall(VecRestoreArrayRead(F->disp, &u));
+  PetscCall(VecView(d3, v));
+  PetscCall(VecDestroy(&d3));
+  PetscCall(VecDuplicate(F->vm, &c));
+  for (PetscInt k = 0; k < 4; ++k) {
+    PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
+    PetscCall(PetscObjectSetName((PetscObject)c, stressNames[k]));
+    PetscCall(VecView(c, v));
+  }
+  PetscCall(VecDestroy(&c));
   PetscFunctionReturn(0);
 }
 
@@ -145,6 +499,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyNodalFields F[], const char path[
     PetscCall(VecView(F[i].disp, v));
     PetscCall(VecView(F[i].stress, v));
     PetscCall(VecView(F[i].vm, v));
+    PetscCall(WriteXDMFFields(&F[i], v));
     PetscCall(ISView(F[i].topo, v));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
@@ -157,6 +512,7 @@ static PetscErrorCode WriteHDF5(Problem p, BodyNodalFields F[], const char path[
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(PetscViewerHDF5PushGroup(v, "/metadata"));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->scene));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "run_id", PETSC_STRING, set.runId));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "ranks", PETSC_INT, &size));
@@ -199,7 +555,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
   if (rank == 0) {
     FILE *fp = fopen(path, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
-    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->scene, (int)dofs, (int)size, type);
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->scene, set.runId, (int)dofs, (int)size, type);
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], converged ? "true" : "false", (int)its);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->nEnergyEvals, (int)p->nHessianEvals);
     fprintf(fp, "  \"energy\": ");
@@ -273,58 +629,34 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
 }
 
 /* Writes the HDF5 + XDMF (unless -output none) and the JSON summary (unless
-   -summary none), each to "<name>.tmp" first and renamed at the end. */
+   -summary none) of the set ContactOutputOpen() opened, each to its
+   temporary, then publishes them (OutputCommit). */
 PetscErrorCode ProblemWriteOutput(Problem p, PetscBool converged)
 {
   BodyNodalFields F[CONTACT_MAX_BODIES];
-  PetscBool  h5, js;
-  char       htmp[PETSC_MAX_PATH_LEN + 8], jtmp[PETSC_MAX_PATH_LEN + 8], xdmf[PETSC_MAX_PATH_LEN + 8], xtmp[PETSC_MAX_PATH_LEN + 16];
-  PetscLogDouble t0, t1;
+  PetscLogDouble  t0, t1;
 
   PetscFunctionBeginUser;
+  PetscCheck(set.open, p->comm, PETSC_ERR_ORDER, "ContactOutputOpen() was not called");
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(contactLog.output));
   PetscCall(PetscLogEventBegin(contactLog.writeOutput, 0, 0, 0, 0));
-  PetscCall(PetscStrcmp(p->output, "none", &h5));
-  PetscCall(PetscStrcmp(p->summary, "none", &js));
-  h5 = (PetscBool)!h5;
-  js = (PetscBool)!js;
   PetscCall(PetscMemzero(F, sizeof(F)));
   PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
-  if (h5) {
-    size_t l;
-    PetscCall(EnsureParentDir(p->comm, p->output));
-    PetscCall(PetscSNPrintf(htmp, sizeof(htmp), "%s.tmp", p->output));
-    PetscCall(PetscStrncpy(xdmf, p->output, sizeof(xdmf)));
-    PetscCall(PetscStrlen(xdmf, &l));
-    if (l > 3 && !strcmp(xdmf + l - 3, ".h5")) xdmf[l - 3] = 0;
-    PetscCall(PetscStrlcat(xdmf, ".xdmf", sizeof(xdmf)));
-    PetscCall(PetscSNPrintf(xtmp, sizeof(xtmp), "%s.tmp", xdmf));
-    PetscCall(PendingAdd(htmp));
-    PetscCall(PendingAdd(xtmp));
-    PetscCall(WriteHDF5(p, F, htmp));
-    PetscCall(WriteXDMF(p, F, xtmp, p->output));
+  if (set.h5[0]) {
+    PetscCall(WriteHDF5(p, F, set.htmp));
+    PetscCall(WriteXDMF(p, F, set.xtmp, set.h5, set.runId));
   }
   PetscCall(PetscTime(&t1));
   p->time[3] = t1 - t0;
   p->time[4] = t1 - p->t0;
-  if (js) {
-    PetscCall(EnsureParentDir(p->comm, p->summary));
-    PetscCall(PetscSNPrintf(jtmp, sizeof(jtmp), "%s.tmp", p->summary));
-    PetscCall(PendingAdd(jtmp));
-    PetscCall(WriteJSON(p, F, converged, jtmp));
-  }
-  if (h5) {
-    PetscCall(RenameOnRoot(p->comm, htmp, p->output));
-    PetscCall(RenameOnRoot(p->comm, xtmp, xdmf));
-  }
-  if (js) PetscCall(RenameOnRoot(p->comm, jtmp, p->summary));
-  npending = 0;
+  if (set.json[0]) PetscCall(WriteJSON(p, F, converged, set.jtmp));
+  PetscCall(OutputCommit(p->comm));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyNodalFieldsDestroy(&F[i]));
   PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
-  if (h5) PetscCall(PetscPrintf(p->comm, "Wrote %s and %s\n", p->output, xdmf));
-  if (js) PetscCall(PetscPrintf(p->comm, "Wrote %s\n", p->summary));
+  if (set.h5[0]) PetscCall(PetscPrintf(p->comm, "Wrote %s and %s\n", set.h5, set.xdmf));
+  if (set.json[0]) PetscCall(PetscPrintf(p->comm, "Wrote %s\n", set.json));
   PetscFunctionReturn(0);
 }

@@ -95,3 +95,10 @@ PetscErrorCode EnergyTermWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
   if (t->ops.writehdf5) PetscCall(t->ops.writehdf5(t, bodies, v));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode EnergyTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.writexdmf) PetscCall(t->ops.writexdmf(t, bodies, fp, h5));
+  PetscFunctionReturn(0);
+}

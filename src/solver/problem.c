@@ -57,6 +57,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.json", p->scene));
   PetscCall(PetscStrncpy(p->summary, def, sizeof(p->summary)));
   PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, p->summary, p->summary, sizeof(p->summary), NULL));
+  PetscCall(PetscOptionsBool("-output_wait", "Wait for another run writing the same output files (else stop at once)", NULL, p->outputWait, &p->outputWait, NULL));
   PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->partitioner, (PetscEnum *)&p->partitioner, NULL));
   PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->partitionView, &p->partitionView, NULL));
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
@@ -103,6 +104,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
     PetscCall(PetscFree(names[i]));
   }
+  /* the outputs locked and checked before meshing, so that a bad path or a busy set fails at once */
+  if (!help && !p->meshOnly) PetscCall(ContactOutputOpen(p->comm, p->output, p->summary, p->outputWait));
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize, p->meshDir));
   PetscCall(ContactPairsCreateFromOptions(p->comm, p->nbodies, p->bodies, p->exactHessian, CONTACT_MAX_TERMS, &p->nterms, p->terms));
   PetscFunctionReturn(0);

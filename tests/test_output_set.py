@@ -1,0 +1,115 @@
+"""The outputs of a run are one set: locked for the run (a second run on the
+same names stops at once naming the first, or waits with -output_wait; a lock
+left by a run that is gone is taken over), carrying one run id (HDF5
+/metadata:run_id, JSON run_id, a comment in the XDMF file)."""
+import json
+import os
+import re
+import subprocess
+import time
+
+import h5py
+from conftest import BIN, ENV, ROOT
+
+HERTZ = ["-options_file", str(ROOT / "meshes/hertz/hertz.opts")]
+SET = ("out.h5", "out.xdmf", "out.json")
+
+
+def command(d, h, *extra):
+    return [str(BIN)] + HERTZ + ["-mesh_size", str(h), "-output", str(d / "out.h5"),
+                                 "-summary", str(d / "out.json")] + list(extra)
+
+
+def run_ids(d):
+    """The run id each file of the set carries."""
+    with h5py.File(d / "out.h5", "r") as f:
+        h5 = f["metadata"].attrs["run_id"]
+        h5 = h5.decode() if isinstance(h5, bytes) else str(h5)
+        nodes = len(f["bodies/indenter/geometry"])
+    xdmf = (d / "out.xdmf").read_text()
+    m = re.search(r"<!-- contact run_id (\S+) -->", xdmf)
+    assert m, xdmf[:200]
+    # the XDMF file describes this HDF5 file (not another run's mesh)
+    assert re.search(rf'Dimensions="{nodes} 2"[^>]*>out.h5:/bodies/indenter/geometry<', xdmf)
+    return {"h5": h5, "json": json.loads((d / "out.json").read_text())["run_id"], "xdmf": m.group(1)}
+
+
+def wait_for(path, proc, timeout=60):
+    t0 = time.time()
+    while not path.exists():
+        assert proc.poll() is None, proc.communicate()
+        assert time.time() - t0 < timeout, f"{path} never appeared"
+        time.sleep(0.01)
+
+
+def test_one_run_id_per_set(tmp_path):
+    proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    ids = run_ids(tmp_path)
+    assert len(set(ids.values())) == 1, ids
+    assert sorted(os.listdir(tmp_path)) == sorted(SET)  # no lock, no temporary left
+
+
+def test_second_run_stops_at_once(tmp_path):
+    """Two runs on the same names: the second stops with one line naming the
+    first (its pid) while the first goes on and writes a whole set."""
+    first = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+    wait_for(tmp_path / "out.lock", first)
+    t0 = time.time()
+    second = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    elapsed = time.time() - t0
+    assert first.poll() is None, "the first run ended before the second started: use a finer mesh"
+    lines = [l for l in second.stderr.splitlines() if l.strip()]
+    assert second.returncode == 1 and len(lines) == 1, second.stderr
+    assert lines[0].startswith("contact: error: ") and f"pid {first.pid} " in lines[0], lines[0]
+    assert "-output_wait" in lines[0]
+    assert elapsed < 5, f"the second run took {elapsed:.1f} s to stop"
+    assert first.wait(timeout=600) == 0, first.stderr.read()[-2000:]
+    ids = run_ids(tmp_path)
+    assert set(ids.values()) == {ids["json"]} and ids["json"].endswith(f"-{first.pid}"), ids
+    assert sorted(os.listdir(tmp_path)) == sorted(SET)
+
+
+def test_second_run_waits(tmp_path):
+    """With -output_wait the second run waits for the first and then writes
+    its own whole set (its mesh, its run id in every file)."""
+    first = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+    wait_for(tmp_path / "out.lock", first)
+    second = subprocess.Popen(command(tmp_path, 0.2, "-output_wait"), cwd=ROOT, env=ENV, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True)
+    assert first.wait(timeout=600) == 0, first.stderr.read()[-2000:]
+    out, err = second.communicate(timeout=600)
+    assert second.returncode == 0, err
+    assert "contact: waiting: " in err and f"pid {first.pid} " in err, err
+    ids = run_ids(tmp_path)
+    assert set(ids.values()) == {ids["json"]} and ids["json"].endswith(f"-{second.pid}"), ids
+    with h5py.File(tmp_path / "out.h5", "r") as f:
+        assert len(f["bodies/indenter/geometry"]) == 561  # h = 0.2: the second run's mesh
+    assert sorted(os.listdir(tmp_path)) == sorted(SET)
+
+
+def test_stale_lock_taken_over(tmp_path):
+    """A lock left by a run that is gone (killed by SIGKILL) is taken over."""
+    dead = subprocess.Popen(["true"])
+    dead.wait()
+    (tmp_path / "out.lock").write_text(f"pid={dead.pid} host={os.uname().nodename} run_id=gone\n")
+    (tmp_path / "out.h5.tmp").write_text("half-written\n")
+    proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "took over" in proc.stderr and f"pid={dead.pid}" in proc.stderr, proc.stderr
+    assert len(set(run_ids(tmp_path).values())) == 1
+    assert sorted(os.listdir(tmp_path)) == sorted(SET)
+
+
+def test_killed_run_lock_taken_over(tmp_path):
+    run = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL)
+    wait_for(tmp_path / "out.lock", run)
+    run.kill()
+    run.wait()
+    assert (tmp_path / "out.lock").exists()
+    proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0 and f"pid={run.pid}" in proc.stderr, proc.stderr
+    assert sorted(os.listdir(tmp_path)) == sorted(SET)

@@ -1,0 +1,125 @@
+"""ParaView reads the XDMF output right: Debian's ParaView 5.11 (pvpython under
+xvfb-run, installed by scripts/install-deps.sh) opens the file of a small run
+through its legacy reader (XDMFReader) and its Xdmf3 readers (Xdmf3ReaderS,
+Xdmf3ReaderT); every block's point count, cells and point arrays are compared
+with the HDF5 file read by h5py: the bodies' coordinates, displacement (3
+components, z = 0), stress components and von Mises stress; each contact
+surface with a profile as a line mesh on its current positions with its
+pressure and gap; and Warp By Vector on the displacement gives the current
+positions. Both formulations: Gauss-point samples (polylines) and nodal
+samples (quadratic edges; the master-only surface has none)."""
+import json
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import ENV, ROOT, run_contact
+
+PROBE = ROOT / "tests" / "paraview_probe.py"
+DEPS_STAMP = ROOT / "build" / ".deps-installed"
+BODIES = ("indenter", "block")  # the order of -bodies in meshes/hertz/hertz.opts
+SURFACES = ("indenter_contact", "block_contact")  # -contact_interface_surfaces
+VTK_CELL = {"Tri6": 22, "Quad9": 28, "Edge_3": 21, "Polyline": 4}  # quadratic triangle, biquadratic quad, ...
+READERS = ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT")
+
+
+def paraview():
+    """(xvfb-run, pvpython); skips only where the project's set-up never ran."""
+    tools = {t: shutil.which(t) for t in ("xvfb-run", "pvpython")}
+    missing = [t for t, path in tools.items() if not path]
+    if missing:
+        if DEPS_STAMP.exists():
+            pytest.fail(f"{', '.join(missing)} missing although scripts/install-deps.sh ran "
+                        f"({DEPS_STAMP.relative_to(ROOT)} exists): it installs paraview, python3-paraview, xvfb")
+        pytest.skip(f"{', '.join(missing)} not installed and scripts/install-deps.sh not run "
+                    "(make deps installs ParaView and xvfb)")
+    return tools["xvfb-run"], tools["pvpython"]
+
+
+def close(a, b):
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    assert a.shape == b.shape, (a.shape, b.shape)
+    np.testing.assert_allclose(a, b, rtol=1e-13, atol=1e-13 * max(1.0, float(np.abs(b).max(initial=0))))
+
+
+def expected_blocks(h5):
+    """What the XDMF file should show, in its order, from the HDF5 file."""
+    blocks = []
+    for b in BODIES:
+        g = h5["bodies"][b]
+        X, u, sig = g["geometry"][...], g["displacement"][...], g["stress"][...]
+        blocks.append({"name": b, "kind": "body", "X": X, "u": u, "cells": len(g["topology"]),
+                       "cell_type": VTK_CELL[g.attrs["cell_type"].decode()],
+                       "arrays": {"stress_xx": sig[:, 0], "stress_yy": sig[:, 1], "stress_zz": sig[:, 2],
+                                  "stress_xy": sig[:, 3], "von_mises": g["von_mises"][...]}})
+    for side in SURFACES:
+        g = h5["contact/interface"][side]
+        pre = "node_" if g.attrs["samples"].decode() == "nodes" else ""
+        if len(g[pre + "s"]) == 0:
+            continue  # master only: no profile
+        cells = g[pre + "cells"][...]
+        blocks.append({"name": "interface:" + side.replace("_", ":"), "kind": "surface", "X": g[pre + "x"][...],
+                       "cells": len(cells), "cell_type": VTK_CELL[g.attrs["cell_type"].decode()],
+                       "arrays": {"pressure": g[pre + "pressure"][...], "gap": g[pre + "gap"][...],
+                                  "s": g[pre + "s"][...]}})
+    return blocks
+
+
+@pytest.fixture(scope="module", params=["gpts", "mortar"])
+def probed(request, tmp_path_factory):
+    xvfb, pvpython = paraview()
+    tmp = tmp_path_factory.mktemp(request.param)
+    run = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.2",
+                       "-contact_formulation", request.param], tmp, name="hertz")
+    xdmf = run.output_path.with_suffix(".xdmf")
+    out = tmp / "probe.json"
+    proc = subprocess.run([xvfb, "-a", pvpython, str(PROBE), str(xdmf), str(out)], cwd=tmp, env=ENV,
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    with run.h5() as h5:
+        expected = expected_blocks(h5)
+    return request.param, expected, json.loads(out.read_text()), proc.stdout + proc.stderr
+
+
+def test_readers_warn_nothing(probed):
+    """No array skipped (Xdmf3 on Function items) nor mis-sized (legacy on a 4-column vector)."""
+    _, _, _, log = probed
+    for bad in ("Skipping", "tuples", "rror", "arning"):
+        assert bad not in log, log[-3000:]
+
+
+@pytest.mark.parametrize("reader", READERS)
+def test_blocks_match_hdf5(probed, reader):
+    formulation, expected, got, _ = probed
+    blocks = got[reader]["blocks"]
+    assert len(blocks) == len(expected), [b["name"] for b in blocks]
+    assert len(expected) == (4 if formulation == "gpts" else 3)
+    for e, b in zip(expected, blocks):
+        if b["name"] is not None:  # Xdmf3ReaderS names no block
+            assert b["name"] == e["name"]
+        n = len(e["X"])
+        assert len(b["points"]) == n, (e["name"], len(b["points"]), n)
+        close(np.asarray(b["points"])[:, :2], e["X"])
+        close(np.asarray(b["points"])[:, 2], np.zeros(n))
+        assert b["cells"] == e["cells"] and b["cell_types"] == [e["cell_type"]], e["name"]
+        want = dict(e["arrays"], **({"displacement": np.c_[e["u"], np.zeros(n)]} if e["kind"] == "body" else {}))
+        assert sorted(b["arrays"]) == sorted(want), (e["name"], sorted(b["arrays"]))
+        for name, values in want.items():
+            a = b["arrays"][name]
+            assert a["tuples"] == n and a["components"] == (3 if name == "displacement" else 1), (e["name"], name, a["components"])
+            close(a["values"], values)
+        if e["kind"] == "surface":
+            assert max(b["arrays"]["pressure"]["values"]) > 50.0  # the loaded zone is in it (p_max about 100)
+
+
+@pytest.mark.parametrize("reader", READERS)
+def test_warp_by_displacement(probed, reader):
+    """Warp By Vector moves each body to its current configuration; the contact
+    lines, already there, stay."""
+    _, expected, got, _ = probed
+    warped = got[reader]["warped_points"]
+    for e, w in zip(expected, warped):
+        w = np.asarray(w)
+        close(w[:, :2], e["X"] + e["u"] if e["kind"] == "body" else e["X"])
