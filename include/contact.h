@@ -26,6 +26,9 @@ int ContactMakeDirs(const char dir[]);
 PetscErrorCode ContactOutputOpen(MPI_Comm, const char h5[], const char json[], PetscBool wait);
 PetscErrorCode ContactOutputInstallSignalHandlers(void);
 void           ContactOutputDiscard(void);
+/* A child process (Gmsh) and the file it writes: an interrupted run stops it
+   and removes the file (pid 0: none). */
+void           ContactOutputSetChild(int pid, const char file[]);
 /* A real in JSON: null for NaN and Inf (output.c). */
 void ContactJSONReal(FILE *fp, PetscReal v);
 

@@ -3,6 +3,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
 
 #include "problem.h"
+#include "progress.h"
 #include "contactpair.h"
 #include "options.h"
 
@@ -86,25 +87,38 @@ static PetscErrorCode Run(int *status)
   PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, meshOnly, &meshOnly, NULL));
   PetscOptionsEnd();
   PetscCall(PetscOptionsHasHelp(NULL, &help));
+  PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
   PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
   problem->meshOnly = meshOnly;
+  PetscCall(ContactProgressPhase("meshing", "scene and meshes"));
   PetscCall(ProblemSetFromOptions(problem));
   if (help) { /* every option listed with the default a run would use; nothing meshed, solved or written */
     PetscCall(ProblemCreateSolver(problem));
     converged = PETSC_TRUE;
   } else if (!meshOnly) {
+    PetscInt n;
+    PetscCall(ContactProgressPhase("set-up", "set-up: reading and distributing the meshes, the stiffness"));
     PetscCall(ProblemSetUp(problem));
+    PetscCall(VecGetSize(problem->X, &n));
     PetscCall(PetscTime(&t1));
+    PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
     PetscCall(ProblemSolve(problem, &converged));
     PetscCall(PetscTime(&t2));
+    PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
     PetscCall(ProblemPostProcess(problem, problem->X, converged));
-    if (problem->taylor) PetscCall(ProblemTaylorTest(problem));
+    if (problem->taylor) {
+      PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
+      PetscCall(ProblemTaylorTest(problem));
+    }
     for (PetscInt i = 0; i < problem->nbodies; ++i) problem->time[0] += problem->bodies[i]->tmesh;
     problem->time[1] = (t1 - t0) - problem->time[0];
     problem->time[2] = t2 - t1;
     problem->t0      = t0;
     PetscCall(ProblemCheckUnusedOptions(problem, PETSC_TRUE));
-    if (converged) PetscCall(ProblemWriteOutput(problem, converged));
+    if (converged) {
+      PetscCall(ContactProgressPhase("the output", "output"));
+      PetscCall(ProblemWriteOutput(problem, converged));
+    }
     else {
       TaoConvergedReason reason;
       PetscCall(TaoGetConvergedReason(problem->tao, &reason));

@@ -30,6 +30,7 @@
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 #include "problem.h"
+#include "progress.h"
 
 #define MAX_PENDING  3
 #define MAX_LOCKS    2
@@ -57,21 +58,56 @@ static volatile sig_atomic_t nlocks;
 
 static const int outputSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
+static int                   signalRank;
+static volatile sig_atomic_t childPid;
+static char                  childFile[OUT_PATH_LEN];
+
+void ContactOutputSetChild(int pid, const char file[])
+{
+  childPid = 0;
+  if (pid && file && strlen(file) < sizeof(childFile)) strcpy(childFile, file);
+  childPid = pid;
+}
+
+static void Say(const char *s)
+{
+  ssize_t r = write(STDERR_FILENO, s, strlen(s));
+  (void)r;
+}
+
+/* Removes the temporaries and the lock. For SIGPIPE (output piped into head)
+   dies of the signal, quietly, as Unix tools do; for SIGINT, SIGTERM and
+   SIGHUP says on rank 0 in which phase the run was interrupted and exits
+   with 128 + the signal's number (130 for Ctrl-C, 143 for SIGTERM). Only
+   async-signal-safe calls (unlink, write, kill, _exit, signal, raise). */
 static void RemovePendingOnSignal(int sig)
 {
   for (int i = 0; i < npending; ++i) unlink(pending[i]);
   for (int i = 0; i < nlocks; ++i) unlink(locks[i]);
-  signal(sig, SIG_DFL);
-  raise(sig);
+  if (childPid) {
+    kill(childPid, SIGKILL);
+    unlink(childFile);
+  }
+  if (sig == SIGPIPE) {
+    signal(sig, SIG_DFL);
+    raise(sig);
+    return;
+  }
+  if (!signalRank) {
+    Say("contact: interrupted during ");
+    Say(ContactProgressCurrentPhase());
+    Say("; no output written\n");
+  }
+  _exit(128 + sig);
 }
 
-/* SIGINT, SIGTERM, SIGHUP, SIGPIPE (output piped into head): remove the
-   temporaries and the lock, then die of the signal, quietly, as Unix tools do. */
+/* SIGINT, SIGTERM, SIGHUP, SIGPIPE: see RemovePendingOnSignal. */
 PetscErrorCode ContactOutputInstallSignalHandlers(void)
 {
   struct sigaction sa;
 
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &signalRank));
   memset(&sa, 0, sizeof(sa));
   sa.sa_handler = RemovePendingOnSignal;
   sigemptyset(&sa.sa_mask);

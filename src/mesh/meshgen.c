@@ -1,5 +1,8 @@
 /* Mesh generation with Gmsh and the physical names of a Gmsh file. */
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <spawn.h>
 #include <unistd.h>
 #include <errno.h>
 #include <ctype.h>
@@ -105,6 +108,30 @@ static PetscBool GeoUsesMeshSize(const char geo[])
   return uses;
 }
 
+/* Runs argv[0] (looked up in PATH) with stdout and stderr into log and waits
+   for it: 0 on success. Not system(), which ignores SIGINT while it waits, so
+   that Ctrl-C during meshing would be lost; the child is in the same process
+   group, so a terminal's Ctrl-C stops it too. */
+static int RunLogged(char *const argv[], const char log[], const char out[])
+{
+  extern char              **environ;
+  posix_spawn_file_actions_t fa;
+  pid_t                      pid;
+  int                        st = 0, r;
+
+  if (posix_spawn_file_actions_init(&fa)) return -1;
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  r = posix_spawnp(&pid, argv[0], &fa, NULL, argv, environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (r) return -1;
+  ContactOutputSetChild((int)pid, out); /* an interrupted run stops it and removes its file */
+  while (waitpid(pid, &st, 0) < 0)
+    if (errno != EINTR) break;
+  ContactOutputSetChild(0, NULL);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
 PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char dir[], char msh[], size_t len)
 {
   PetscMPIInt rank;
@@ -115,6 +142,8 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16], hs[64];
+    char        names[16][64], values[16][64], *argv[16 + 2 * 3 * 16];
+    PetscInt    argc = 0;
     const char *slash = strrchr(geo, '/');
     struct stat sg, sm;
     size_t      l;
@@ -125,11 +154,19 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     if (l > 4 && !strcmp(base + l - 4, ".geo")) base[l - 4] = 0;
     PetscCall(FormatShortest((double)h, hs, sizeof(hs)));
     PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %s", hs));
+    PetscCheck(nparams <= 16, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: at most 16 geometry parameters, got %" PetscInt_FMT, geo, nparams);
+    for (const char *a = "gmsh\0-2\0-v\0" "2\0-format\0msh22\0-setnumber\0h\0"; *a; a += strlen(a) + 1) argv[argc++] = (char *)a;
+    argv[argc++] = hs;
     PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%s", hs));
     for (PetscInt i = 0; i < nparams; ++i) {
       char name[64], value[64], part[160];
 
       PetscCall(CheckParam(geo, params[i], name, value));
+      PetscCall(PetscStrncpy(names[i], name, sizeof(names[i])));
+      PetscCall(PetscStrncpy(values[i], value, sizeof(values[i])));
+      argv[argc++] = (char *)"-setnumber";
+      argv[argc++] = names[i];
+      argv[argc++] = values[i];
       PetscCall(PetscSNPrintf(part, sizeof(part), " -setnumber %s %s", name, value));
       PetscCall(PetscStrlcat(cmd, part, sizeof(cmd)));
       PetscCall(PetscSNPrintf(part, sizeof(part), "_%s%s", name, value));
@@ -154,7 +191,11 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscStrlcat(cmd, log, sizeof(cmd)));
       PetscCall(PetscStrlcat(cmd, "' 2>&1", sizeof(cmd)));
       PetscCall(PetscInfo(NULL, "Meshing: %s\n", cmd));
-      if (system(cmd) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
+      argv[argc++] = (char *)geo;
+      argv[argc++] = (char *)"-o";
+      argv[argc++] = tmp;
+      argv[argc]   = NULL;
+      if (RunLogged(argv, log, tmp) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
         err = 1;
         (void)unlink(tmp);
         PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g); see %s", geo, (double)h, log));

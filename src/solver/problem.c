@@ -7,6 +7,7 @@
 #include "partition.h"
 #include "contactpair.h"
 #include "schur.h"
+#include "progress.h"
 #include "options.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
@@ -532,6 +533,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
     PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   }
   PetscCall(TaoSetFromOptions(p->tao));
+  if (ContactProgressEnabled()) PetscCall(TaoSetMonitor(p->tao, ContactProgressTaoMonitor, NULL, NULL));
   if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
   PetscFunctionReturn(0);
 }
