@@ -74,10 +74,10 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
   PetscCheck(b->nu > -1.0 && b->nu < 0.5, b->comm, PETSC_ERR_USER_INPUT, "option %s: Poisson's ratio must be in (-1, 0.5), got %g", opt, (double)b->nu);
   /* lambda/mu = 2 nu/(1 - 2 nu) is 9 at nu = 0.45 and grows without bound */
   if (b->nu >= 0.45) PetscCall(PetscFPrintf(b->comm, PETSC_STDERR, "contact: warning: body %s: nu = %g is nearly incompressible (lambda/mu = %.3g); P2/Q2 displacement elements may lock, so stresses and contact pressure converge more slowly\n", b->name, (double)b->nu, (double)(2 * b->nu / (1 - 2 * b->nu))));
-  if (meshSizeOverride > 0) b->h = meshSizeOverride;
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%smesh_size", prefix));
-  PetscCall(CheckFinite(b->comm, opt, b->h));
+  PetscCall(CheckFinite(b->comm, opt, b->h)); /* checked even where -mesh_size overrides it */
   PetscCheck(b->h > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: mesh size must be > 0, got %g", opt, (double)b->h);
+  if (meshSizeOverride > 0) b->h = meshSizeOverride;
   PetscCheck(qdeg >= 2 && qdeg <= 12, b->comm, PETSC_ERR_USER_INPUT, "option -%squadrature_degree: must be in [2, 12], got %" PetscInt_FMT, prefix, qdeg);
   b->param[1] = b->E / (2.0 * (1.0 + b->nu));
   b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
@@ -86,6 +86,9 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
     PetscCall(CheckFinite(b->comm, opt, b->exact.params[k]));
   }
   if (strcmp(exact, "none")) {
+    PetscErrorCode (*set)(ExactSolution *) = NULL;
+    PetscCall(PetscFunctionListFind(ExactSolutionList, exact, &set));
+    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     b->hasExact      = PETSC_TRUE;
     b->exact.lambda  = b->param[0];

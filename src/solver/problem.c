@@ -48,7 +48,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
   PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->scene, p->scene, sizeof(p->scene), NULL));
   PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
-  PetscCall(PetscOptionsReal("-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size; unset: each body's own)", NULL, p->meshSize, &p->meshSize, &setMeshSize));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->meshSize, &setMeshSize));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
   PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
   PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->meshDir, p->meshDir, sizeof(p->meshDir), NULL));
@@ -81,6 +81,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
       if (!none) PetscCall(ContactOptionsResolvePath(NULL, opts[k], paths[k], PETSC_MAX_PATH_LEN, NULL, 0));
     }
   }
+  PetscCheck(p->taylorScale > 0 && !PetscIsInfOrNanReal(p->taylorScale), p->comm, PETSC_ERR_USER_INPUT, "option -taylor_scale: must be a finite number > 0, got %g", (double)p->taylorScale);
   PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
   p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);

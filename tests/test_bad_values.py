@@ -1,0 +1,119 @@
+"""Bad values, the whole class: every option of the program that -help lists
+is given each invalid value of its kind (a number: non-numeric, NaN, Inf and,
+where its domain excludes them, negative and zero; an integer: non-integer
+and below its least; a choice: an unknown name; a switch: neither true nor
+false), and each must stop the run with status 1 and one line naming the
+option. The domain of every option is declared here (DOMAINS); an option that
+-help lists without one fails the completeness test, so that a new option is
+classified when it is added. PETSc's own options (-tao_*, -ksp_*, ...) are
+PETSc's."""
+import re
+import subprocess
+
+import pytest
+
+from conftest import BIN, ENV, ROOT
+
+SCENE = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.3", "-contact_formulation", "mortar"]
+
+# (kind, least valid value or None, whether the least is excluded)
+REAL_POS = ("real", 0.0, True)        # > 0
+REAL_NONNEG = ("real", 0.0, False)    # >= 0
+REAL_ANY = ("real", None, False)      # any finite number
+DOMAINS = {
+    "mesh_size": REAL_POS, "taylor_scale": REAL_POS, "penalty_start": REAL_POS, "stage_rtol": REAL_POS,
+    "contact_hessian_switch": REAL_NONNEG, "load_steps": ("int", 1, False), "penalty_stages": ("int", 1, False),
+    "contact_penalty": REAL_POS, "contact_blend": REAL_NONNEG, "contact_quadrature_points": ("int", 3, False),
+    "contact_interface_penalty": REAL_POS, "contact_interface_mirror_y": REAL_ANY,
+    "contact_interface_hertz_radii": ("reals", 0.0, False),
+    "indenter_mesh_size": REAL_POS, "block_mesh_size": REAL_POS,
+    "indenter_E": REAL_POS, "block_E": REAL_POS, "indenter_nu": ("real", -1.0, True), "block_nu": ("real", -1.0, True),
+    "indenter_quadrature_degree": ("int", 1, False), "block_quadrature_degree": ("int", 1, False),
+    "indenter_bc_clamp_values": ("reals", None, False), "block_bc_push_values": ("reals", None, False),
+    "indenter_exact_params": ("reals", None, False), "block_exact_params": ("reals", None, False),
+    "partitioner": ("choice",), "lmvm_h0": ("choice",), "contact_hessian": ("choice",),
+    "contact_formulation": ("choice",), "contact_interface_formulation": ("choice",),
+    "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
+    "indenter_exact": ("choice",), "block_exact": ("choice",),
+    "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
+    "partition_view": ("bool",), "taylor_test": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
+    "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
+    # names, paths and lists of names: their own tests (test_bad_input.py, test_scene_files.py)
+    "scene": ("name",), "bodies": ("name",), "mesh_dir": ("name",), "output": ("name",), "summary": ("name",),
+    "indenter_geo": ("name",), "block_geo": ("name",), "indenter_mesh": ("name",), "block_mesh": ("name",),
+    "indenter_geo_params": ("name",), "block_geo_params": ("name",), "indenter_bc": ("name",), "block_bc": ("name",),
+    "indenter_bc_clamp_components": ("name",), "block_bc_push_components": ("name",),
+    "contact_pairs": ("name",), "contact_interface_surfaces": ("name",),
+}
+# the sections of -help that are the program's own
+SECTIONS = ("Program options", "Progress options", "Contact scene options", "Body options", "Dirichlet condition",
+            "Contact options", "Contact pair options", "Mortar contact options")
+
+
+def program_options():
+    """The options -help lists in the program's own sections."""
+    p = subprocess.run([str(BIN)] + SCENE + ["-help"], cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0, p.stderr
+    names, own = set(), False
+    for line in p.stdout.splitlines():
+        if line.endswith(":") and not line.startswith(" "):
+            own = line[:-1] in SECTIONS
+        elif own:
+            m = re.match(r"\s+-(\w+)", line)
+            if m:
+                names.add(m.group(1))
+    return names
+
+
+def test_every_option_classified():
+    """Every program option -help lists has a declared domain."""
+    names = program_options()
+    assert names, "no program options parsed from -help"
+    missing = sorted(names - set(DOMAINS))
+    assert not missing, f"options without a declared domain: {missing}"
+
+
+def bad_values(kind):
+    k = kind[0]
+    if k == "real":
+        least, strict = kind[1], kind[2]
+        out = ["abc", "nan", "inf", "-inf"]
+        if least is not None:
+            out += [repr(least) if strict else repr(least - 1.0), "-1e300"]
+            if least == 0.0 and strict:
+                out.append("-1")
+        return out
+    if k == "reals":
+        least = kind[1]
+        out = ["abc", "nan", "1,inf"]
+        if least is not None:
+            out.append(repr(least - 1.0))
+        return out
+    if k == "int":
+        return ["abc", "2.5", str(kind[1] - 1)]
+    if k == "choice":
+        return ["nosuch"]
+    if k == "bool":
+        return ["maybe"]
+    return []
+
+
+CASES = [(name, v) for name, kind in sorted(DOMAINS.items()) for v in bad_values(kind)]
+
+
+@pytest.fixture(scope="module")
+def mesh_dir(tmp_path_factory):
+    """One mesh cache for the module: a value checked after meshing costs Gmsh once."""
+    return tmp_path_factory.mktemp("meshes")
+
+
+@pytest.mark.parametrize("name,value", CASES, ids=[f"{n}={v}" for n, v in CASES])
+def test_bad_value(name, value, tmp_path, mesh_dir):
+    cmd = [str(BIN)] + SCENE + [f"-{name}", value, "-output", str(tmp_path / "o.h5"), "-summary",
+                                str(tmp_path / "o.json"), "-mesh_dir", str(mesh_dir)]
+    p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
+    lines = [l for l in p.stderr.splitlines() if l.strip()]
+    assert p.returncode == 1, f"-{name} {value}: exit {p.returncode}\n{p.stdout[-1500:]}\n{p.stderr[-1500:]}"
+    assert len(lines) == 1 and lines[0].startswith("contact: error: "), p.stderr[-2000:]
+    assert f"-{name}" in lines[0] or (name.startswith("contact_interface_") and "-contact_" in lines[0]), lines[0]
+    assert not (tmp_path / "o.h5").exists() and not (tmp_path / "o.json").exists()
