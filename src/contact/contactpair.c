@@ -132,6 +132,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
       PetscCall(PetscStrncpy(spec.group[s], colon + 1, sizeof(spec.group[s])));
       PetscCall(PetscFree(surf[s]));
     }
+    PetscCheck(spec.body[0] != spec.body[1], comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: both surfaces are on body %s: a pair joins two bodies (self-contact is not modelled)", prefix, bodies[spec.body[0]]->name);
     PetscCheck(!spec.mirror || !PetscIsInfOrNanReal(spec.mirrorY), comm, PETSC_ERR_USER_INPUT, "option -%smirror_y: must be a finite number, got %g", prefix, (double)spec.mirrorY);
     for (PetscInt s = 0; s < 2; ++s) PetscCheck(!spec.hertz || (spec.radii[s] >= 0 && !PetscIsInfOrNanReal(spec.radii[s])), comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)spec.radii[s]);
     PetscCheck(!spec.hertz || spec.radii[0] > 0 || spec.radii[1] > 0, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);

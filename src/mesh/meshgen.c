@@ -61,11 +61,12 @@ static PetscErrorCode CheckParam(const char geo[], const char p[], char name[], 
   PetscFunctionReturn(0);
 }
 
-/* Whether a .geo file uses the mesh size h (-setnumber h): an identifier h,
-   outside comments and strings, other than in Exists(h) and "h = ...". A file
-   that Includes another is given the benefit of the doubt. */
-static PetscBool GeoUsesMeshSize(const char geo[])
+/* Whether a .geo file uses the number name (-setnumber name): the identifier,
+   outside comments and strings, other than in Exists(name) and "name = ...".
+   A file that Includes another is given the benefit of the doubt. */
+static PetscBool GeoUsesName(const char geo[], const char name[])
 {
+  const long len = (long)strlen(name);
   FILE     *fp = fopen(geo, "r");
   char     *text;
   long      n;
@@ -94,7 +95,7 @@ static PetscBool GeoUsesMeshSize(const char geo[])
 
       while (j < n && (isalnum((unsigned char)text[j]) || text[j] == '_')) ++j;
       if (j - i == 7 && !strncmp(text + i, "Include", 7)) uses = PETSC_TRUE;
-      else if (j - i == 1 && text[i] == 'h') {
+      else if (j - i == len && !strncmp(text + i, name, (size_t)len)) {
         for (k = j; k < n && isspace((unsigned char)text[k]); ++k) {}
         for (b = i - 1; b >= 0 && isspace((unsigned char)text[b]); --b) {}
         assigned = (PetscBool)(text[k] == '=' && text[k + 1] != '=');
@@ -162,6 +163,8 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       char name[64], value[64], part[160];
 
       PetscCall(CheckParam(geo, params[i], name, value));
+      for (PetscInt j = 0; j < i; ++j) PetscCheck(strcmp(names[j], name), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' given twice for %s", name, geo);
+      PetscCheck(!strcmp(name, "h") || GeoUsesName(geo, name), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' is never used by %s (misspelled?)", name, geo);
       PetscCall(PetscStrncpy(names[i], name, sizeof(names[i])));
       PetscCall(PetscStrncpy(values[i], value, sizeof(values[i])));
       argv[argc++] = (char *)"-setnumber";
@@ -179,7 +182,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     } else if (stat(geo, &sg)) {
       err = 1;
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read geometry file %s: %s", geo, strerror(errno)));
-    } else if (!GeoUsesMeshSize(geo)) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see README, Geometry files)\n", geo));
+    } else if (!GeoUsesName(geo, "h")) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see README, Geometry files)\n", geo));
     if (!err && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
       PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp%d.msh", msh, (int)getpid()));
       PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
