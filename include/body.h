@@ -53,10 +53,15 @@ struct _n_Body {
   PetscBool *owned;         /* [chart] point owned by this rank */
   PetscSection nodeGS;      /* global numbering of the node points */
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
+  PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
 };
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
-PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride, const char meshDir[]);
+PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride);
+/* Meshes the body's .geo with Gmsh (cached in meshDir), unless the mesh would
+   exceed *maxDofs (> 0), which its estimate is taken off (limit describes
+   where the limit comes from); estimateOnly: the check alone, no meshing. */
+PetscErrorCode BodyGenerateMesh(Body, const char meshDir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly);
 PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
 PetscErrorCode BodyDestroy(Body *);
 PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);

@@ -19,6 +19,7 @@ struct _n_Problem {
   PetscBool outputWait; /* wait for another run writing the same outputs */
   PetscBool meshOnly;   /* set before ProblemSetFromOptions: mesh, write nothing */
   PetscReal meshSize;
+  PetscReal maxDofs; /* refuse a generated mesh above this many dofs (-max_dofs, else from memory) */
   PetscInt  nbodies;
   Body      bodies[CONTACT_MAX_BODIES];
   PetscInt  nterms;

@@ -151,6 +151,8 @@ CASES = {
     "geo_param_unused": (["-indenter_geo_params", "R=1,xc=-1,Rr=2"], "geometry parameter 'Rr' is never used"),
     "geo_param_twice": (["-indenter_geo_params", "R=1,R=2"], "geometry parameter 'R' given twice"),
     "pair_same_body": (["-contact_interface_surfaces", "block:contact,block:push"], "both surfaces are on body block"),
+    "mesh_exhausts_memory": (["-mesh_size", "1e-4"], "would give about"),
+    "mesh_above_max_dofs": (["-mesh_size", "0.05", "-max_dofs", "1000"], "dofs left of the limit (-max_dofs)"),
     "mesh_size_unset_value": (["-mesh_size", "-1"], "option -mesh_size: must be a finite number > 0, got -1"),
     "formulation_unknown": (["-contact_formulation", "nitsche"], "unknown contact formulation 'nitsche' (known: gpts, mortar)"),
     "mortar_too_few_points": (["-contact_formulation", "mortar", "-contact_quadrature_points", "2"], "-contact_quadrature_points"),

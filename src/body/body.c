@@ -29,7 +29,7 @@ static PetscErrorCode CheckFinite(MPI_Comm comm, const char opt[], PetscReal v)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char meshDir[])
+PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
 {
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
   char     *bcnames[CONTACT_MAX_BC];
@@ -132,15 +132,22 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride, const char
     }
     PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
   }
-  if (hasGeo && !hasMsh && !help) {
-    PetscLogDouble t0, t1;
-    PetscCall(PetscTime(&t0));
-    PetscCall(PetscLogStagePush(contactLog.mesh));
-    PetscCall(MeshGenerate(b->comm, b->geo, b->h, b->ngeoparams, b->geoparams, meshDir, b->msh, sizeof(b->msh)));
-    PetscCall(PetscLogStagePop());
-    PetscCall(PetscTime(&t1));
-    b->tmesh += t1 - t0;
-  }
+  b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly)
+{
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  if (!b->generate) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.mesh));
+  PetscCall(MeshGenerate(b->comm, b->geo, b->h, b->ngeoparams, b->geoparams, meshDir, maxDofs, limit, estimateOnly, b->msh, sizeof(b->msh)));
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscTime(&t1));
+  b->tmesh += t1 - t0;
   PetscFunctionReturn(0);
 }
 

@@ -36,11 +36,39 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   PetscFunctionReturn(0);
 }
 
+/* The most dofs a mesh may have: -max_dofs, or what the machine's available
+   memory holds at CONTACT_BYTES_PER_DOF (rank 0's /proc/meminfo); 0: no
+   limit known. */
+static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
+{
+  PetscFunctionBeginUser;
+  if (p->maxDofs > 0) {
+    PetscCall(PetscSNPrintf(limit, len, "-max_dofs"));
+    PetscFunctionReturn(0);
+  }
+  {
+    double      kb = 0;
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+    if (!rank) {
+      FILE *fp = fopen("/proc/meminfo", "r");
+      char  line[256];
+      while (fp && fgets(line, sizeof(line), fp))
+        if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1) break;
+      if (fp) fclose(fp);
+    }
+    PetscCallMPI(MPI_Bcast(&kb, 1, MPI_DOUBLE, 0, p->comm));
+    p->maxDofs = kb * 1024.0 / CONTACT_BYTES_PER_DOF;
+    PetscCall(PetscSNPrintf(limit, len, "the machine's available memory, %.1f GB; -max_dofs sets another", kb * 1024.0 / 1e9));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetFromOptions(Problem p)
 {
   char     *names[CONTACT_MAX_BODIES];
   PetscInt  nb = CONTACT_MAX_BODIES;
-  PetscBool set, help, setMeshSize;
+  PetscBool set, help, setMeshSize, setMaxDofs;
   char      def[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
@@ -51,6 +79,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->meshSize, &setMeshSize));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
   PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &p->maxDofs, &setMaxDofs));
   PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->meshDir, p->meshDir, sizeof(p->meshDir), NULL));
   PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.h5", p->scene));
   PetscCall(PetscStrncpy(p->output, def, sizeof(p->output)));
@@ -96,6 +125,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
   PetscCheck(!setMeshSize || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)p->meshSize);
   if (!setMeshSize) p->meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
+  PetscCheck(!setMaxDofs || (p->maxDofs >= 1 && !PetscIsInfOrNanReal(p->maxDofs)), p->comm, PETSC_ERR_USER_INPUT, "option -max_dofs: must be a finite number >= 1, got %g", (double)p->maxDofs);
+  if (!setMaxDofs) p->maxDofs = 0.0; /* from the machine's memory (ProblemDofLimit) */
   p->nbodies = nb;
   for (PetscInt i = 0; i < nb; ++i) {
     for (PetscInt j = 0; j < i; ++j) {
@@ -108,7 +139,16 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   }
   /* the outputs locked and checked before meshing, so that a bad path or a busy set fails at once */
   if (!help && !p->meshOnly) PetscCall(ContactOutputOpen(p->comm, p->output, p->summary, p->outputWait));
-  for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize, p->meshDir));
+  {
+    char      limit[128];
+    PetscReal left;
+    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize));
+    PetscCall(ProblemDofLimit(p, limit, sizeof(limit)));
+    /* every body's size checked before any is meshed */
+    left = p->maxDofs;
+    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->meshDir, &left, limit, PETSC_TRUE));
+    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->meshDir, NULL, limit, PETSC_FALSE));
+  }
   PetscCall(ContactPairsCreateFromOptions(p->comm, p->nbodies, p->bodies, p->exactHessian, CONTACT_MAX_TERMS, &p->nterms, p->terms));
   PetscFunctionReturn(0);
 }
