@@ -15,15 +15,15 @@ def test_mesh_names_shortest_round_trip(tmp_path):
     for h in hs:
         proc = subprocess.run([str(BIN)] + SCENE + [
             "-mesh_size", repr(h), "-mesh_dir", str(tmp_path),
-            "-indenter_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.005,hr=1.6",
+            "-indenter_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.005,dc=1.6",
             "-block_geo_params", "x0=0,W=1,H=2,hc=0.1"], cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
         assert proc.returncode == 0, proc.stderr
     names = sorted(p.name for p in tmp_path.glob("*.msh"))
     assert len(names) == 2 * len(hs), names
-    assert "indenter-h0.3_R1_xc-1_yc0_xclamp-1.8_xcontact-0.5_hc0.005_hr1.6.msh" in names
+    assert "indenter-h0.3_R1_xc-1_yc0_xclamp-1.8_xcontact-0.5_hc0.005_dc1.6.msh" in names
     assert "block-h0.30000000000000004_x00_W1_H2_hc0.1.msh" in names
     assert "block-h0.25_x00_W1_H2_hc0.1.msh" in names
-    params = ("h", "R", "xc", "yc", "xclamp", "xcontact", "hc", "hr", "x0", "W", "H")
+    params = ("h", "R", "xc", "yc", "xclamp", "xcontact", "hc", "dc", "x0", "W", "H")
     for n in names:
         for part in n[:-len(".msh")].split("-", 1)[1].split("_"):
             name = max((p for p in params if part.startswith(p)), key=len)

@@ -65,11 +65,14 @@ def test_paths_in_options_file_relative_to_it(tmp_path):
 
 def test_geo_without_mesh_size_warns(tmp_path):
     """A .geo whose sizes are fixed numbers (h defined but unused, and named
-    only in a comment and a string) meshes, with one warning line."""
+    only in a comment and a string) meshes, with one warning line. (It reads
+    the scene's geometry parameters x0, W, H: one it never used would be an
+    error, test_bad_input.py.)"""
     geo = tmp_path / "fixed.geo"
     geo.write_text("""// A block meshed at a fixed size; the size h is not used
 If (!Exists(h)) h = 0.1; EndIf
-Point(1) = {0, -1, 0, 0.25}; Point(2) = {1, -1, 0, 0.25}; Point(3) = {1, 1, 0, 0.25}; Point(4) = {0, 1, 0, 0.25};
+If (!Exists(x0)) x0 = 0; EndIf If (!Exists(W)) W = 1; EndIf If (!Exists(H)) H = 2; EndIf
+Point(1) = {x0, -H/2, 0, 0.25}; Point(2) = {x0 + W, -H/2, 0, 0.25}; Point(3) = {x0 + W, H/2, 0, 0.25}; Point(4) = {x0, H/2, 0, 0.25};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Recombine Surface{1};
 Physical Curve("contact") = {4}; Physical Curve("push") = {2}; Physical Surface("body") = {1};
