@@ -22,7 +22,9 @@
    symmetric; exact away from the master edge's ends (eta* = +-1).
 
    Corners. Where the master's edges meet at a corner (-contact_blend 0, or a
-   real corner of the surface) a point outside a convex corner, or inside a
+   real corner of the surface; not at a blended node, where the surface is
+   smooth and a projection clamped at the node is a tie between the two
+   edges) a point outside a convex corner, or inside a
    concave one, has the corner node as its closest point over a fan of
    directions; there g is the signed distance to the node and n the unit
    vector from the node to the point, so that g is continuous, with
@@ -30,6 +32,17 @@
    normal to n (the curvature of the distance to a point). */
 #include "gap.h"
 #include "edge.h"
+
+/* Whether end j (0: eta = -1, 1: eta = +1) of master edge e is blended into its
+   neighbour (a smooth node: no corner, no fan of normals). */
+static PetscBool MasterEndBlended(const ContactSurface *M, PetscInt e, PetscInt j)
+{
+  const PetscReal *C = &M->mcorr[14 * e + 7 * j];
+
+  for (PetscInt k = 0; k < 7; ++k)
+    if (C[k] != 0.0) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
 
 /* The gap at the closest point P->eta of master edge P->me. */
 static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], ContactGap *P)
@@ -41,7 +54,7 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
   P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
   P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
   P->fan  = PETSC_FALSE;
-  if (PetscAbsReal(P->eta) >= 1.0) {
+  if (PetscAbsReal(P->eta) >= 1.0 && !MasterEndBlended(M, P->me, P->eta > 0 ? 1 : 0)) {
     /* the closest point is a node where the edges meet at a corner (no blend):
        in the fan of normals there g is the signed distance to the node, along
        the direction to the point, so that g stays continuous (C1 outside a
