@@ -3,8 +3,8 @@
 
     python3 scripts/readme_figures.py --check      # exit 1 if a table differs from its results
     python3 scripts/readme_figures.py --update     # rewrite the tables from the results
-    python3 scripts/readme_figures.py --measure scenes [--update]
-                                                   # run the scenes table's cases first
+    python3 scripts/readme_figures.py --measure scenes --measure solver [--update]
+                                                   # run a table's cases first
 
 Each table sits between the markers <!-- figures:NAME:begin --> and
 <!-- figures:NAME:end --> and is rendered by a function of this script from a
@@ -13,7 +13,10 @@ that a table can neither be typed by hand nor go stale. The tables:
 
 - scenes: bench/scenes/results.json (written by --measure scenes: each scene
   with each formulation, Newton with a direct factorisation, a few seconds);
-- formulations: bench/formulations/results.json (scripts/formulation_study.py).
+- formulations: bench/formulations/results.json (scripts/formulation_study.py);
+- solver: bench/solver/results.json (written by --measure solver: the solver
+  strategies on the reference scene at h = 0.06, interleaved, median of 3
+  solve times; about 2 minutes).
 """
 import argparse
 import json
@@ -68,13 +71,61 @@ def render_scenes():
     return "\n".join(out) + "\n"
 
 
+STRATEGIES = [("Newton, Schur step (default)", []),
+              ("Newton, full factorisation per step", ["-newton_schur", "0"]),
+              ("Newton, Gauss-Newton contact Hessian throughout", ["-contact_hessian", "gauss_newton"]),
+              ("Newton, exact contact Hessian from rest", ["-contact_hessian", "exact"]),
+              ("the same + continuation", ["-contact_hessian", "exact", "-penalty_stages", "3"]),
+              ("Newton + penalty continuation", ["-penalty_stages", "3"]),
+              ("Newton + load stepping", ["-load_steps", "3"]),
+              ("Newton, trust region", ["-tao_type", "ntr"]),
+              ("L-BFGS, elastic H0", ["-tao_type", "lmvm"]),
+              ("plain L-BFGS (the original study's method)", ["-tao_type", "lmvm", "-lmvm_h0", "none"]),
+              ("Newton, mortar formulation", ["-contact_formulation", "mortar"])]
+
+
+def measure_solver(repeat=3):
+    """The strategies at h = 0.06, interleaved, median of repeat solve times."""
+    import statistics
+    times = {name: [] for name, _ in STRATEGIES}
+    its = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        js = os.path.join(tmp, "s.json")
+        for _ in range(repeat):
+            for name, opts in STRATEGIES:
+                cmd = [os.path.join(ROOT, "bin", "contact"), "-options_file", "meshes/hertz/hertz.opts",
+                       "-mesh_size", "0.06", "-output", "none", "-summary", js] + opts
+                p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
+                if p.returncode:
+                    raise SystemExit(f"{' '.join(cmd)} failed:\n{p.stderr[-2000:]}")
+                with open(js) as f:
+                    summ = json.load(f)
+                times[name].append(summ["time"]["solve"])
+                its[name] = summ["iterations"]
+    rows = [dict(strategy=name, options=" ".join(opts), iterations=its[name], solve=statistics.median(times[name]),
+                 runs=times[name]) for name, opts in STRATEGIES]
+    os.makedirs(os.path.join(ROOT, "bench", "solver"), exist_ok=True)
+    with open(os.path.join(ROOT, "bench", "solver", "results.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+
+
+def render_solver():
+    with open(os.path.join(ROOT, "bench", "solver", "results.json")) as f:
+        rows = json.load(f)
+    out = ["| strategy | options | iterations | solve [s] |", "|---|---|---|---|"]
+    for r in rows:
+        opts = f"`{r['options']}`" if r["options"] else ""
+        out.append(f"| {r['strategy']} | {opts} | {r['iterations']:,} | {r['solve']:.2f} |")
+    return "\n".join(out) + "\n"
+
+
 def render_formulations():
     import formulation_study
     with open(os.path.join(ROOT, "bench", "formulations", "results.json")) as f:
         return formulation_study.tables(json.load(f))
 
 
-RENDER = {"scenes": render_scenes, "formulations": render_formulations}
+RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver}
 
 
 def blocks(text):
@@ -92,10 +143,12 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver"], action="append", default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
+    if "solver" in args.measure:
+        measure_solver()
     with open(README) as f:
         text = f.read()
     found = blocks(text)
