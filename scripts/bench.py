@@ -777,7 +777,7 @@ def plots(rows, out, fit_solve, fit_lin):
     for sc, mk in (("hertz-graded", "s"), ("hertz-half", "^")):
         q = [r for r in other if r["scene"] == sc]
         if q:
-            ax.loglog([r["dofs"] for r in q], [r["solve_median"] for r in q], mk, color="C3", label=sc + " solve")
+            ax.loglog([r["dofs"] for r in q], [r["solve_median"] for r in q], mk, color="C7", label=sc + " solve")
     ax.set_xlabel("dofs")
     ax.set_ylabel("time [s]")
     ax.set_title("time against dofs (k_p = 2e6, gttol 1e-8, 1 rank; fits and other scenes: gpts)", fontsize=10)
@@ -796,18 +796,19 @@ def plots(rows, out, fit_solve, fit_lin):
                         and finite(r.get("ratio_to_linear"))], key=lambda r: r["dofs"])
             if q:
                 ax.loglog([r["dofs"] for r in q], [r["ratio_to_linear"] for r in q], "o" + fstyles[form],
-                          color=colors[s], label="%s %s" % (form, s))
+                          color=colors[s] if form == REF_FORMULATION else fcolors[form], label="%s %s" % (form, s))
     for sc, mk in (("hertz-graded", "s"), ("hertz-half", "^")):
         q = [r for r in rows if r["scene"] == sc and r["kp"] == REF_KP and r["gttol"] == REF_TOL and r["converged"]
              and r["ranks"] == 1 and finite(r.get("ratio_to_linear"))]
         for r in q:
-            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=colors[r["strategy"]], alpha=0.6,
-                      mfc="none" if r["formulation"] == "mortar" else None)
+            mortar = r["formulation"] != REF_FORMULATION
+            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=fcolors[r["formulation"]] if mortar
+                      else colors[r["strategy"]], alpha=0.6, mfc="none" if mortar else None)
     ax.axhline(10, color="k", ls="--", lw=1, label="target: 10")
     ax.set_xlabel("dofs")
     ax.set_ylabel("solve time / one linear elastic solve")
     ax.set_title("time-to-solution in linear solves (k_p = 2e6, gttol 1e-8; s graded, ^ half;\n"
-                 "dashed, open: mortar)", fontsize=10)
+                 "red, dashed, open: mortar)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
