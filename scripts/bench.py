@@ -669,12 +669,17 @@ def machine_info():
     return info
 
 
-def git_info():
+def git_info(out=None):
+    """HEAD and whether the tree differs from it, the output directory (the
+    bench's own files, rewritten by this run) left out."""
     def g(*a):
         p = subprocess.run(["git"] + list(a), cwd=ROOT, capture_output=True, text=True)
         return p.stdout.strip()
     head = g("rev-parse", "--short", "HEAD")
-    dirty = g("status", "--short", "--untracked-files=no")
+    skip = []
+    if out and os.path.abspath(out).startswith(ROOT + os.sep):
+        skip = ["--", ".", ":(exclude)" + os.path.relpath(os.path.abspath(out), ROOT)]
+    dirty = g("status", "--short", "--untracked-files=no", *skip)
     return head + (" (with uncommitted changes)" if dirty else "")
 
 
@@ -910,7 +915,7 @@ def report(rows, args, info, meshes, elapsed, load):
       "ratios of runs made interleaved are the steadier figures."
       % (datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), " ".join(sys.argv[1:]), elapsed,
          len(rows), os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
-         git_info(), args.bin_sha, load[0], load[1]))
+         git_info(out), args.bin_sha, load[0], load[1]))
     A("")
     A("## Machine")
     A("")
@@ -1363,8 +1368,8 @@ def formulations_cost(args, R):
     A("Generated %s by `python3 scripts/bench.py %s` in %.0f s. Binary: `%s` (git %s; sha256 %s). One shared "
       "machine (%s cores; load average %s at the start, %.2f at the end)."
       % (date, " ".join(sys.argv[1:]), time.time() - args.t0,
-         os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig, git_info(),
-         args.bin_sha, subprocess.run(["nproc"], capture_output=True, text=True).stdout.strip(), load0,
+         os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
+         git_info(args.out), args.bin_sha, subprocess.run(["nproc"], capture_output=True, text=True).stdout.strip(), load0,
          os.getloadavg()[0]))
     A("")
     A("The reference scene (hertz), newton, k_p = 2e6, gttol 1e-8, one rank, `-output none`, each formulation "
