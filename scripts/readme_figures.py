@@ -14,6 +14,7 @@ that a table can neither be typed by hand nor go stale. The tables:
 - scenes: bench/scenes/results.json (written by --measure scenes: each scene
   with each formulation, Newton with a direct factorisation, a few seconds);
 - formulations: bench/formulations/results.json (scripts/formulation_study.py);
+- speed: bench/full/results.csv (scripts/bench.py --out bench/full);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06, interleaved, median of 3
   solve times; about 2 minutes).
@@ -119,13 +120,41 @@ def render_solver():
     return "\n".join(out) + "\n"
 
 
+def render_speed():
+    """The reference scene's scaling rows of the full sweep: gpts and mortar,
+    newton, k_p = 2e6, gttol 1e-8, one rank."""
+    import csv
+    with open(os.path.join(ROOT, "bench", "full", "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    pick = {}
+    for r in rows:
+        if (r["scene"] == "hertz" and r["strategy"] == "newton" and float(r["kp"]) == 2e6 and r["gttol"] == "1e-08"
+                and r["ranks"] == "1" and r["solve_median"] and float(r["h"]) <= 0.06):
+            pick.setdefault(float(r["h"]), {})[r.get("formulation") or "gpts"] = r
+    out = ["| h | dofs | iterations gpts / mortar | solve gpts / mortar [s] | one linear solve [s] | ratio "
+           "| mesh + set-up + output | peak memory |", "|---|---|---|---|---|---|---|---|"]
+    for h in sorted(pick, reverse=True):
+        g, m = pick[h].get("gpts"), pick[h].get("mortar")
+        if not g or not m:
+            continue
+        sv = lambda x: f"{float(x):.3g}"  # noqa: E731
+        frac = (float(g["time_mesh"]) + float(g["time_setup"]) + float(g["time_output"])) / float(g["time_total"])
+        mb = float(g["peak_mb"])
+        mem = f"{mb / 1024:.1f} GB" if mb >= 1024 else f"{mb:.0f} MB"
+        out.append(f"| {h:g} | {int(g['dofs']):,} | {g['iterations']} / {m['iterations']} | {sv(g['solve_median'])} / "
+                   f"{sv(m['solve_median'])} | {sv(g['linear_solve_time'])} | {float(g['ratio_to_linear']):.1f} "
+                   f"| {100 * frac:.0f} % | {mem} |")
+    return "\n".join(out) + "\n"
+
+
 def render_formulations():
     import formulation_study
     with open(os.path.join(ROOT, "bench", "formulations", "results.json")) as f:
         return formulation_study.tables(json.load(f))
 
 
-RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver}
+RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
+          "speed": render_speed}
 
 
 def blocks(text):
