@@ -10,6 +10,12 @@ extern const char *const HessianTypes[];
 typedef enum { H0_NONE, H0_ELASTIC } H0Type;
 extern const char *const H0Types[];
 
+/* How the Newton step's Schur complement on the contact surfaces is formed:
+   by MUMPS from K on one rank (schur.c), by substructuring on any number
+   (substructure.c), or the first on one rank and the second on several. */
+typedef enum { SCHUR_AUTO, SCHUR_MUMPS, SCHUR_SUBSTRUCTURE } SchurType;
+extern const char *const SchurTypes[];
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
@@ -40,6 +46,7 @@ struct _n_Problem {
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
   PetscBool schur; /* Newton through the contact-surface Schur complement */
+  SchurType schurType;
   HessianType hessianType;  /* -contact_hessian */
   PetscReal hessianSwitch;   /* auto: exact once ||g|| < hessianSwitch ||g0|| */
   PetscReal hessianG0;       /* ||g|| at the current TAO solve's first iterate */

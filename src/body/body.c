@@ -549,8 +549,19 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscFunctionReturn(0);
 }
 
-/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA, added into H at l2b indices. */
+/* The assembled stiffness: this rank's element stiffnesses at l2b indices. */
 PetscErrorCode BodyAssembleHessian(Body b, Mat H)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BodyAssembleHessianMapped(b, b->l2b, H));
+  PetscFunctionReturn(0);
+}
+
+/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA over this rank's cells,
+   added into H at rows and columns map[local dof] (negative: left out). With
+   the joined vector's map l2b, the assembled stiffness; with a map onto the
+   rank's own dofs, its subdomain stiffness (substructure.c). */
+PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
 {
   const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
   PetscReal      C[16];
@@ -564,8 +575,8 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   ElasticityTangent(b->param, C);
   for (PetscInt c = 0; c < b->ncells; ++c) {
     for (PetscInt a = 0; a < nb; ++a) {
-      idx[2 * a]     = b->l2b[b->cdof[c * nb + a]];
-      idx[2 * a + 1] = b->l2b[b->cdof[c * nb + a] + 1];
+      idx[2 * a]     = map[b->cdof[c * nb + a]];
+      idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
     }
     PetscCall(PetscArrayzero(K, n * n));
     for (PetscInt iq = 0; iq < (pattern ? 0 : nq); ++iq) {

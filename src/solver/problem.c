@@ -7,8 +7,10 @@
 #include "partition.h"
 #include "contactpair.h"
 #include "schur.h"
+#include "substructure.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
+const char *const SchurTypes[] = {"auto", "mumps", "substructure", "SchurType", "SCHUR_", NULL};
 const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
@@ -60,7 +62,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
-  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K factored once; one rank)", NULL, p->schur, &p->schur, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
+  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: mumps (K factored by MUMPS with the surfaces as Schur block; one rank), substructure (each rank condenses its subdomain; any number of ranks), auto (mumps on one rank, substructure on several)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
@@ -478,8 +481,11 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (p->schur && size == 1 && p->nterms > 0) PetscCall(ContactSchurPCSetUp(p, pc));
-  else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
+  if (p->schur && p->nterms > 0) {
+    PetscCheck(p->schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+    if (p->schurType == SCHUR_MUMPS || (p->schurType == SCHUR_AUTO && size == 1)) PetscCall(ContactSchurPCSetUp(p, pc));
+    else PetscCall(ContactSubstructurePCSetUp(p, pc));
+  } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
