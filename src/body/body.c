@@ -567,11 +567,9 @@ PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
   PetscReal      C[16];
   PetscScalar    K[18 * 18];
   PetscInt       idx[18];
-  PetscBool      pattern; /* a preallocator wants the nonzero pattern only */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
-  PetscCall(PetscObjectTypeCompare((PetscObject)H, MATPREALLOCATOR, &pattern));
   ElasticityTangent(b->param, C);
   for (PetscInt c = 0; c < b->ncells; ++c) {
     for (PetscInt a = 0; a < nb; ++a) {
@@ -579,19 +577,24 @@ PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
       idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
     }
     PetscCall(PetscArrayzero(K, n * n));
-    for (PetscInt iq = 0; iq < (pattern ? 0 : nq); ++iq) {
+    for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
       const PetscReal  w  = b->wdetJ[c * nq + iq];
+      PetscReal        G[9][2][2][2]; /* w dN_a/dx_k C_ikjl, summed over k */
+
       for (PetscInt a = 0; a < nb; ++a)
         for (PetscInt i = 0; i < 2; ++i)
-          for (PetscInt bb = 0; bb < nb; ++bb)
-            for (PetscInt j = 0; j < 2; ++j) {
-              PetscReal v = 0.0;
-              for (PetscInt k = 0; k < 2; ++k)
-                for (PetscInt l = 0; l < 2; ++l) v += dN[2 * a + k] * C[((i * 2 + k) * 2 + j) * 2 + l] * dN[2 * bb + l];
-              K[(2 * a + i) * n + 2 * bb + j] += w * v;
-            }
+          for (PetscInt j = 0; j < 2; ++j)
+            for (PetscInt l = 0; l < 2; ++l) G[a][i][j][l] = w * (dN[2 * a] * C[((i * 2) * 2 + j) * 2 + l] + dN[2 * a + 1] * C[((i * 2 + 1) * 2 + j) * 2 + l]);
+      for (PetscInt a = 0; a < nb; ++a) /* the upper blocks (bb >= a); K is symmetric */
+        for (PetscInt i = 0; i < 2; ++i)
+          for (PetscInt bb = a; bb < nb; ++bb)
+            for (PetscInt j = 0; j < 2; ++j) K[(2 * a + i) * n + 2 * bb + j] += G[a][i][j][0] * dN[2 * bb] + G[a][i][j][1] * dN[2 * bb + 1];
     }
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < 2; ++i)
+        for (PetscInt bb = a + 1; bb < nb; ++bb)
+          for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));

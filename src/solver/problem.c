@@ -170,57 +170,103 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* Preallocates the elastic stiffness K (elastic pattern plus the surface block).
-   On one rank no preallocator pass is needed: every cell gives its rows 2 nb
-   columns (an upper bound, the excess squeezed out at assembly). On several,
-   MATPREALLOCATOR collects the pattern, rows of other ranks included. */
+/* Preallocates the elastic stiffness K (elastic pattern plus the surface
+   block): every cell gives each of its rows 2 nb columns (an upper bound, the
+   excess squeezed out at assembly), and each surface row the surface's
+   columns. On several ranks the columns of a row are counted apart by
+   whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
+   blocks); a rank counts the rows its cells touch, and the counts of rows
+   owned elsewhere (the partition's interface) go to their owner by a vector
+   sum. No pass of MatSetValues is needed for the pattern. */
 static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
 {
-  PetscMPIInt size;
+  PetscMPIInt    size;
+  PetscInt      *dnnz, *onnz, rstart, rend, N;
+  PetscLayout    layout;
+  Vec            dv = NULL, ov = NULL;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(VecGetOwnershipRange(p->X, &rstart, &rend));
+  PetscCall(VecGetSize(p->X, &N));
+  PetscCall(VecGetLayout(p->X, &layout));
+  PetscCall(PetscCalloc2(nloc + 1, &dnnz, nloc + 1, &onnz));
+  if (size > 1) {
+    PetscCall(VecDuplicate(p->X, &dv));
+    PetscCall(VecDuplicate(p->X, &ov));
+    PetscCall(VecZeroEntries(dv));
+    PetscCall(VecZeroEntries(ov));
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body b = p->bodies[i];
+    for (PetscInt c = 0; c < b->ncells; ++c) {
+      PetscInt    idx[18], own[18], n = 0;
+      PetscMPIInt o;
+
+      for (PetscInt a = 0; a < b->nb; ++a)
+        for (PetscInt d = 0; d < 2; ++d) {
+          const PetscInt g = b->l2b[b->cdof[c * b->nb + a] + d];
+          if (g < 0) continue;
+          if (size > 1) PetscCall(PetscLayoutFindOwner(layout, g, &o));
+          else o = 0;
+          idx[n]   = g;
+          own[n++] = o;
+        }
+      for (PetscInt r = 0; r < n; ++r) {
+        PetscInt dc = 0, oc;
+        for (PetscInt q = 0; q < n; ++q) dc += own[q] == own[r];
+        oc = n - dc;
+        if (idx[r] >= rstart && idx[r] < rend) {
+          dnnz[idx[r] - rstart] += dc;
+          onnz[idx[r] - rstart] += oc;
+        } else {
+          PetscCall(VecSetValue(dv, idx[r], (PetscScalar)dc, ADD_VALUES));
+          PetscCall(VecSetValue(ov, idx[r], (PetscScalar)oc, ADD_VALUES));
+        }
+      }
+    }
+  }
+  if (size > 1) {
+    const PetscScalar *d, *o;
+    PetscCall(VecAssemblyBegin(dv));
+    PetscCall(VecAssemblyEnd(dv));
+    PetscCall(VecAssemblyBegin(ov));
+    PetscCall(VecAssemblyEnd(ov));
+    PetscCall(VecGetArrayRead(dv, &d));
+    PetscCall(VecGetArrayRead(ov, &o));
+    for (PetscInt r = 0; r < nloc; ++r) {
+      dnnz[r] += (PetscInt)PetscRealPart(d[r]);
+      onnz[r] += (PetscInt)PetscRealPart(o[r]);
+    }
+    PetscCall(VecRestoreArrayRead(dv, &d));
+    PetscCall(VecRestoreArrayRead(ov, &o));
+    PetscCall(VecDestroy(&dv));
+    PetscCall(VecDestroy(&ov));
+  }
+  if (p->surfaceDofs) {
+    const PetscInt *idx;
+    PetscInt        n, mine = 0;
+    PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
+    PetscCall(ISGetIndices(p->surfaceDofs, &idx));
+    for (PetscInt i = 0; i < n; ++i) mine += idx[i] >= rstart && idx[i] < rend;
+    for (PetscInt i = 0; i < n; ++i)
+      if (idx[i] >= rstart && idx[i] < rend) {
+        dnnz[idx[i] - rstart] += mine;
+        onnz[idx[i] - rstart] += n - mine;
+      }
+    PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
+  }
+  for (PetscInt r = 0; r < nloc; ++r) {
+    dnnz[r] = PetscMin(dnnz[r], nloc);
+    onnz[r] = PetscMin(onnz[r], N - nloc);
+  }
   PetscCall(MatCreate(p->comm, &p->K));
   PetscCall(MatSetSizes(p->K, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  if (size == 1) {
-    PetscInt *nnz, n = 0;
-
-    PetscCall(PetscCalloc1(nloc + 1, &nnz));
-    for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body b = p->bodies[i];
-      for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-        for (PetscInt d = 0; d < 2; ++d) {
-          const PetscInt row = b->l2b[b->cdof[k] + d];
-          if (row >= 0) nnz[row] += 2 * b->nb;
-        }
-    }
-    if (p->surfaceDofs) {
-      const PetscInt *idx;
-      PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
-      PetscCall(ISGetIndices(p->surfaceDofs, &idx));
-      for (PetscInt i = 0; i < n; ++i) nnz[idx[i]] += n;
-      PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
-    }
-    for (PetscInt r = 0; r < nloc; ++r) nnz[r] = PetscMin(nnz[r], nloc);
-    PetscCall(MatSetType(p->K, MATSEQAIJ));
-    PetscCall(MatSeqAIJSetPreallocation(p->K, 0, nnz));
-    PetscCall(PetscFree(nnz));
-    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
-  } else {
-    Mat pre;
-
-    PetscCall(MatCreate(p->comm, &pre));
-    PetscCall(MatSetType(pre, MATPREALLOCATOR));
-    PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-    PetscCall(MatSetUp(pre));
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
-    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, pre));
-    PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatSetType(p->K, MATAIJ));
-    PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->K)); /* zeros over the whole pattern */
-    PetscCall(MatDestroy(&pre));
-  }
+  PetscCall(MatSetType(p->K, size > 1 ? MATMPIAIJ : MATSEQAIJ));
+  if (size > 1) PetscCall(MatMPIAIJSetPreallocation(p->K, 0, dnnz, 0, onnz));
+  else PetscCall(MatSeqAIJSetPreallocation(p->K, 0, dnnz));
+  PetscCall(PetscFree2(dnnz, onnz));
+  if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
   PetscFunctionReturn(0);
 }
 
