@@ -11,9 +11,9 @@ typedef enum { H0_NONE, H0_ELASTIC } H0Type;
 extern const char *const H0Types[];
 
 /* How the Newton step's Schur complement on the contact surfaces is formed:
-   by MUMPS from K on one rank (schur.c), by substructuring on any number
-   (substructure.c), or the first on one rank and the second on several. */
-typedef enum { SCHUR_AUTO, SCHUR_MUMPS, SCHUR_SUBSTRUCTURE } SchurType;
+   by substructuring, on any number of ranks (substructure.c), or by MUMPS
+   from K, on one rank (schur.c). */
+typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
 extern const char *const SchurTypes[];
 
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */

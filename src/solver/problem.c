@@ -10,7 +10,7 @@
 #include "substructure.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
-const char *const SchurTypes[] = {"auto", "mumps", "substructure", "SchurType", "SCHUR_", NULL};
+const char *const SchurTypes[] = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
 const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
@@ -63,7 +63,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
-  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: mumps (K factored by MUMPS with the surfaces as Schur block; one rank), substructure (each rank condenses its subdomain; any number of ranks), auto (mumps on one rank, substructure on several)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
+  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
@@ -504,11 +504,13 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscFunctionReturn(0);
 }
 
-/* Newton types (nls, ntr): the Gauss-Newton Hessian is symmetric positive
-   definite and changes only in the contact-surface block, so on one rank the
-   step goes through the Schur complement on that block (schur.c, K factored
-   once), elsewhere through a Cholesky factorisation per step (MUMPS); nls
-   takes the factored step directly (preonly); -newton_schur 0,
+/* Newton types (nls, ntr): the Hessian changes only in the contact-surface
+   block, so the step goes through the Schur complement on that block, K
+   condensed once: by substructuring on any number of ranks
+   (substructure.c), or on one rank by MUMPS's Schur complement of K
+   (schur.c, -newton_schur_type mumps). Without contact, or with
+   -newton_schur 0, a Cholesky factorisation per step (CHOLMOD on one rank,
+   MUMPS on several). nls takes the factored step directly (preonly);
    -tao_nls_ksp_type, -tao_nls_pc_type, ... override. */
 static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
 {
@@ -529,7 +531,7 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(KSPGetPC(ksp, &pc));
   if (p->schur && p->nterms > 0) {
     PetscCheck(p->schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
-    if (p->schurType == SCHUR_MUMPS || (p->schurType == SCHUR_AUTO && size == 1)) PetscCall(ContactSchurPCSetUp(p, pc));
+    if (p->schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
   } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscCall(KSPSetFromOptions(ksp));

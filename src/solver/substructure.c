@@ -198,12 +198,21 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
 
 /* K^r: the element stiffnesses of this rank's cells, at positions in D. Rows
    are preallocated with 2 nb columns per cell that touches them (an upper
-   bound; the excess is squeezed out at assembly). */
+   bound; the excess is squeezed out at assembly). On one rank the subdomain
+   is the whole problem, D numbers the joined vector as it is, and K^r is K
+   (with the surface block's explicit zeros, which SubFactorSubdomain drops). */
 static PetscErrorCode SubAssembleStiffness(Problem p, SubCtx *ctx, Mat *Kr)
 {
-  PetscInt *map[CONTACT_MAX_BODIES], *nnz;
+  PetscInt   *map[CONTACT_MAX_BODIES], *nnz;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  if (size == 1) {
+    PetscCall(PetscObjectReference((PetscObject)p->K));
+    *Kr = p->K;
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscCalloc1(ctx->nD + 1, &nnz));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body     b = p->bodies[i];
@@ -234,9 +243,9 @@ static PetscErrorCode SubAssembleStiffness(Problem p, SubCtx *ctx, Mat *Kr)
 }
 
 /* S^r (nBr x nBr, column-major; its lower triangle is set). MUMPS factors K^r
-   (its upper triangle, SPD: the interior block of a subdomain is held by the
-   boundary or by Dirichlet conditions) with B_r as the Schur block. Without
-   interior dofs S^r is K^r itself. */
+   (its upper triangle less explicit zeros; SPD: the interior block of a
+   subdomain is held by the boundary or by Dirichlet conditions) with B_r as
+   the Schur block. Without interior dofs S^r is K^r itself. */
 static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
 {
   const PetscInt    *ia, *ja;
@@ -257,12 +266,12 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
     PetscInt     nz = 0;
 
     for (PetscInt i = 0; i < n; ++i)
-      for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) nz += ja[k] >= i;
+      for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) nz += ja[k] == i || (ja[k] > i && v[k] != 0.0);
     PetscCall(PetscMalloc3(nz, &irn, nz, &jcn, nz, &a));
     nz = 0;
     for (PetscInt i = 0; i < n; ++i)
       for (PetscInt k = ia[i]; k < ia[i + 1]; ++k)
-        if (ja[k] >= i) {
+        if (ja[k] == i || (ja[k] > i && v[k] != 0.0)) {
           irn[nz]  = (MUMPS_INT)(i + 1);
           jcn[nz]  = (MUMPS_INT)(ja[k] + 1);
           a[nz++] = v[k];
