@@ -299,7 +299,20 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
       ctx->mumps.schur_lld  = (MUMPS_INT)ctx->nBr;
       ctx->mumps.schur      = Sr;
     }
-    PetscCall(SubMumps(ctx, 4)); /* analysis and factorisation */
+    /* analysis, then factorisation; MUMPS's workspace estimate can fall short
+       (INFOG(1) = -8, -9: small subdomains whose boundary is most of them),
+       so the relaxation ICNTL(14) is doubled and the factorisation redone. A
+       rank's failure is reported on every rank (ContactSubstructurePCSetUp). */
+    ctx->mumps.job = 1;
+    dmumps_c(&ctx->mumps);
+    for (PetscInt attempt = 0; ctx->mumps.INFOG(1) >= 0 && attempt < 8; ++attempt) {
+      ctx->mumps.job = 2;
+      dmumps_c(&ctx->mumps);
+      if (ctx->mumps.INFOG(1) != -8 && ctx->mumps.INFOG(1) != -9) break;
+      PetscCall(PetscInfo(NULL, "MUMPS workspace too small (INFOG(1) = %d): ICNTL(14) %d -> %d\n", (int)ctx->mumps.INFOG(1), (int)ctx->mumps.ICNTL(14), (int)(2 * ctx->mumps.ICNTL(14))));
+      ctx->mumps.INFOG(1) = 0;
+      ctx->mumps.ICNTL(14) *= 2;
+    }
     PetscCall(PetscFree3(irn, jcn, a));
     ctx->mumps.irn = ctx->mumps.jcn = NULL;
     ctx->mumps.a   = NULL;
@@ -634,11 +647,17 @@ PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
   ctx->K = p->K;
   PetscCall(PetscLogEventBegin(SubFactor, 0, 0, 0, 0));
   PetscCall(SubSetUpDofs(p, ctx));
-  PetscCall(PetscInfo(pc, "subdomain: %" PetscInt_FMT " dofs, %" PetscInt_FMT " interior, %" PetscInt_FMT " boundary; interface %" PetscInt_FMT ", contact surfaces %" PetscInt_FMT " dofs\n", ctx->nD, ctx->nI, ctx->nBr, ctx->nG, ctx->nc));
+  PetscCall(PetscInfo(NULL, "subdomain: %" PetscInt_FMT " dofs, %" PetscInt_FMT " interior, %" PetscInt_FMT " boundary; interface %" PetscInt_FMT ", contact surfaces %" PetscInt_FMT " dofs\n", ctx->nD, ctx->nI, ctx->nBr, ctx->nG, ctx->nc));
   PetscCall(SubAssembleStiffness(p, ctx, &Kr));
   PetscCall(PetscCalloc1(ctx->nBr * ctx->nBr + 1, &Sr));
   PetscCall(SubFactorSubdomain(ctx, Kr, Sr));
   PetscCall(MatDestroy(&Kr));
+  {
+    PetscMPIInt info[2] = {ctx->hasMumps ? (PetscMPIInt)ctx->mumps.INFOG(1) : 0, 0}, worst[2];
+    PetscCallMPI(MPI_Comm_rank(ctx->comm, &info[1]));
+    PetscCallMPI(MPI_Allreduce(info, worst, 1, MPI_2INT, MPI_MINLOC, ctx->comm));
+    PetscCheck(worst[0] >= 0, ctx->comm, PETSC_ERR_LIB, "MUMPS failed on the subdomain of rank %d: INFOG(1) = %d", worst[1], worst[0]);
+  }
   PetscCall(PetscLogEventEnd(SubFactor, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(SubInterface, 0, 0, 0, 0));
   PetscCall(SubCondenseInterface(ctx, Sr));
