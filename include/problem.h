@@ -46,6 +46,7 @@ struct _n_Problem {
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
   PetscBool schur; /* Newton through the contact-surface Schur complement */
+  PetscBool iterative; /* Newton by CG + GAMG (iterative.c) */
   SchurType schurType;
   HessianType hessianType;  /* -contact_hessian */
   PetscReal hessianSwitch;   /* auto: exact once ||g|| < hessianSwitch ||g0|| */

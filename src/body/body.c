@@ -382,6 +382,32 @@ static PetscErrorCode BodyBuildNodeData(Body b)
   PetscFunctionReturn(0);
 }
 
+/* The body's rigid motions (translations in x and y, the rotation about the
+   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
+   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
+   local parts of three joined vectors. */
+PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
+{
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt        dof, off;
+    const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
+
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    for (PetscInt d = 0; d < PetscMin(dof, 2); ++d) {
+      const PetscInt g = b->l2b[off + d];
+      if (g < rstart || g >= rend) continue;
+      modes[d][g - rstart] += 1.0;
+      modes[2][g - rstart] += d == 0 ? -y : x;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Global node number of a node point (owned or ghost). */
 PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
 {

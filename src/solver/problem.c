@@ -8,6 +8,7 @@
 #include "contactpair.h"
 #include "schur.h"
 #include "substructure.h"
+#include "iterative.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
 const char *const SchurTypes[] = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
@@ -62,6 +63,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u|", NULL, p->taylorScale, &p->taylorScale, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->iterative, &p->iterative, NULL));
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
@@ -529,7 +531,8 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (p->schur && p->nterms > 0) {
+  if (p->iterative) PetscCall(ContactIterativeKSPSetUp(p, ksp));
+  else if (p->schur && p->nterms > 0) {
     PetscCheck(p->schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     if (p->schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
@@ -656,6 +659,11 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoGetType(p->tao, &type));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
+  if (p->iterative) {
+    PetscInt lits;
+    PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
+    PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
+  }
   if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
