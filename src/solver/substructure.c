@@ -24,8 +24,9 @@
        S_K = S_cc - S_cG S_GG^-1 S_Gc = S_cc - W^T W,     W = L_G^-1 S_Gc,
 
    the matrix schur.c takes from one factorisation of K on one rank. All of
-   this is done once per solve: K does not depend on u. The Hessian is
-   H = K + C with C in the cc block only, so a Newton step H z = r is
+   this is done once per solve (K does not depend on u), and S_K is inverted
+   once. The Hessian is H = K + C with C in the cc block only, so a Newton
+   step H z = r is
 
      1. condensation, each rank: g^r = -K^r_BI (K^r_II)^-1 r_I (MUMPS, ICNTL(26) = 1),
         then g_B = r_B + sum_r R_Br^T g^r (one sum over ranks of |B| numbers);
@@ -34,18 +35,36 @@
      3. expansion, each rank: z_I = (K^r_II)^-1 (r_I - K^r_IB z_B) (ICNTL(26) = 2).
 
    r_I is read and z_I written where they are owned, with no communication.
-   Per step the one dense factorisation is that of S_K + C_cc (Cholesky, or
-   Bunch-Kaufman when the exact contact Hessian makes it indefinite), the one
-   schur.c does, on every rank; the sparse work is one forward and one
-   backward substitution per subdomain, in parallel. MUMPS is called directly
-   (dmumps_c): PETSc 3.18 does not expose its condensation and expansion
-   phases, and through MatSolve a step would cost two whole subdomain solves. */
+   The bodies are coupled only by contact, so S_B, S_K and G = S_K^-1 are
+   block diagonal by body: each body's block is summed onto one rank (body
+   b on rank b mod size), eliminated and inverted there, and broadcast; with
+   two bodies on two ranks the dense set-up work is split, not repeated, and
+   a quarter of what one block of both surfaces would cost. Per step, with
+   A the surface dofs the contact Hessian couples (the contact zone, a
+   fraction of c), the surface system (S_K + C_cc) z_c = g_c is solved by
+   the capacitance matrix: z_c = G (g_c - E_A C_AA z_A) with
+   (I + G_AA C_AA) z_A = (G g_c)_A, an LU factorisation of order |A| on
+   every rank (valid for the exact, indefinite contact Hessian too). The
+   sparse work of a step is one forward and one backward substitution per
+   subdomain, in parallel. MUMPS is called directly (dmumps_c): PETSc 3.18
+   does not expose its condensation and expansion phases, and through
+   MatSolve a step would cost two whole subdomain solves. */
 #include "substructure.h"
 #include <petscblaslapack.h>
 #include <dmumps_c.h>
 
 #define ICNTL(i) icntl[(i) - 1]
 #define INFOG(i) infog[(i) - 1]
+
+/* One body's part of the boundary: its interface dofs G_b and surface dofs
+   c_b (positions in B), the factor L_G of its S_GG, W = L_G^-1 S_Gc and
+   G = S_K^-1 (full), all on every rank. */
+typedef struct {
+  PetscInt     nG, nc;
+  PetscInt    *G, *c;
+  PetscScalar *LG, *W, *Ginv;
+  PetscScalar *y; /* [nG] work */
+} SubBody;
 
 typedef struct {
   MPI_Comm comm, self; /* self: MUMPS's communicator, a duplicate of MPI_COMM_SELF */
@@ -58,11 +77,15 @@ typedef struct {
   PetscScalar   *rhs, *red;  /* [nD] right-hand side, then solution; [nBr] reduced right-hand side */
   DMUMPS_STRUC_C mumps;
   PetscBool      hasMumps;
-  /* the boundary B = G + c, on every rank */
+  /* the boundary B = G + c, on every rank; the bodies are coupled only by
+     contact, so S_B, S_K and everything dense is block diagonal by body */
   PetscInt      nG, nc, nB;
   PetscInt      nOwned;              /* boundary dofs owned by this rank */
   PetscInt     *ownedPos, *ownedRow; /* their positions in B and rows in this rank's part of X */
-  PetscScalar  *LG, *W, *G, *gB; /* L_G, W, G = S_K^-1 (nc x nc, full), g_B then z_B */
+  PetscInt     *bBody, *bLocal;      /* [nB] body of each boundary dof, its position in the body's [G_b; c_b] */
+  PetscInt      nbodies;
+  SubBody       body[CONTACT_MAX_BODIES];
+  PetscScalar  *gB, *zc, *tmp;       /* [nB] g_B, then z_B; [nc] z_c; [2 nc] work */
   IS            isc;
   const PetscInt *surf; /* the contact-surface dofs (isc's indices, sorted) */
   Mat           K;
@@ -83,6 +106,57 @@ static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
   ctx->mumps.job = job;
   dmumps_c(&ctx->mumps);
   PetscCheck(ctx->mumps.INFOG(1) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "MUMPS on a subdomain (job %d): INFOG(1) = %d, INFOG(2) = %d", (int)job, (int)ctx->mumps.INFOG(1), (int)ctx->mumps.INFOG(2));
+  PetscFunctionReturn(0);
+}
+
+/* The body of each boundary dof (G[] then the surface dofs, joined-vector
+   indices): the body whose block of its owner's rows holds it (every rank
+   knows every rank's row range and body offsets); each body's lists G_b,
+   c_b of positions in B, and each boundary dof's position in its body's
+   [G_b; c_b]. */
+static PetscErrorCode SubSetUpBodies(Problem p, SubCtx *ctx, const PetscInt G[], const PetscInt surf[])
+{
+  const PetscInt *ranges;
+  PetscInt       *offs, nb = p->nbodies;
+  PetscMPIInt     size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(VecGetOwnershipRanges(p->X, &ranges));
+  PetscCall(PetscMalloc1(size * nb, &offs));
+  PetscCallMPI(MPI_Allgather(p->offset, (PetscMPIInt)nb, MPIU_INT, offs, (PetscMPIInt)nb, MPIU_INT, ctx->comm));
+  ctx->nbodies = nb;
+  PetscCall(PetscMalloc2(ctx->nB, &ctx->bBody, ctx->nB, &ctx->bLocal));
+  for (PetscInt k = 0; k < ctx->nB; ++k) {
+    const PetscInt g = k < ctx->nG ? G[k] : surf[k - ctx->nG];
+    PetscMPIInt    q = 0;
+    PetscInt       b = 0;
+
+    while (g >= ranges[q + 1]) ++q;
+    while (b + 1 < nb && g - ranges[q] >= offs[q * nb + b + 1]) ++b;
+    ctx->bBody[k] = b;
+    if (k < ctx->nG) ctx->body[b].nG++;
+    else ctx->body[b].nc++;
+  }
+  PetscCall(PetscFree(offs));
+  for (PetscInt b = 0; b < nb; ++b) {
+    SubBody *B = &ctx->body[b];
+    PetscCall(PetscMalloc3(B->nG + 1, &B->G, B->nc + 1, &B->c, B->nG + 1, &B->y));
+    B->nG = B->nc = 0;
+  }
+  for (PetscInt k = 0; k < ctx->nB; ++k) {
+    SubBody *B = &ctx->body[ctx->bBody[k]];
+    if (k < ctx->nG) {
+      ctx->bLocal[k]  = B->nG;
+      B->G[B->nG++] = k;
+    } else B->c[B->nc++] = k;
+  }
+  for (PetscInt k = ctx->nG; k < ctx->nB; ++k) { /* c_b after G_b in the body's ordering */
+    SubBody *B = &ctx->body[ctx->bBody[k]];
+    PetscInt j;
+    PetscCall(PetscFindInt(k, B->nc, B->c, &j));
+    ctx->bLocal[k] = B->nG + j;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -188,6 +262,7 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
         ctx->ownedRow[nOwned++] = g - ctx->rstart;
       }
     }
+    PetscCall(SubSetUpBodies(p, ctx, G, surf));
     PetscCall(PetscFree(G));
   }
   PetscCall(PetscFree2(counts, displs));
@@ -325,50 +400,88 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
   PetscFunctionReturn(0);
 }
 
-/* S_B summed over ranks (on every rank), then the interface eliminated:
-   L_G, W and S_K, inverted into G (potrf, potri). */
+/* Each body's block of S_B, summed over ranks onto the rank that owns the
+   body's dense work (body b on rank b mod size), where its interface is
+   eliminated (L_G, W, S_K) and S_K inverted (potrf, potri); the results are
+   then broadcast to every rank. The blocks are independent: no redundant
+   dense work while there are at least as many bodies as ranks. */
 static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
 {
-  const PetscInt    nB = ctx->nB, nG = ctx->nG, nc = ctx->nc, nBr = ctx->nBr;
-  PetscScalar      *SB;
-  PetscBLASInt      bG, bc, info;
+  const PetscInt    nBr = ctx->nBr;
+  PetscScalar      *SB[CONTACT_MAX_BODIES];
+  PetscMPIInt       rank, size;
   const PetscScalar one = 1.0, mone = -1.0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(nB * nB, &SB));
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    const PetscInt nb = ctx->body[b].nG + ctx->body[b].nc;
+    PetscCall(PetscCalloc1(nb * nb + 1, &SB[b]));
+  }
   for (PetscInt j = 0; j < nBr; ++j)
     for (PetscInt i = j; i < nBr; ++i) {
       const PetscScalar s  = Sr[j * nBr + i];
-      const PetscInt    bi = ctx->Bpos[i], bj = ctx->Bpos[j];
-      SB[bj * nB + bi] += s;
-      if (i != j) SB[bi * nB + bj] += s;
+      const PetscInt    bi = ctx->Bpos[i], bj = ctx->Bpos[j], b = ctx->bBody[bi];
+      const PetscInt    nb = ctx->body[b].nG + ctx->body[b].nc, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+
+      if (ctx->bBody[bj] != b) continue; /* the bodies' stiffnesses do not couple */
+      SB[b][lj * nb + li] += s;
+      if (i != j) SB[b][li * nb + lj] += s;
     }
-  for (PetscInt off = 0; off < nB * nB; off += PETSC_MPI_INT_MAX / 2) {
-    PetscMPIInt len;
-    PetscCall(PetscMPIIntCast(PetscMin(nB * nB - off, PETSC_MPI_INT_MAX / 2), &len));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, SB + off, len, MPIU_SCALAR, MPIU_SUM, ctx->comm));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* every body's block onto its root first, */
+    const PetscInt    nb   = ctx->body[b].nG + ctx->body[b].nc;
+    const PetscMPIInt root = (PetscMPIInt)(b % size);
+    for (PetscInt off = 0; off < nb * nb; off += PETSC_MPI_INT_MAX / 2) {
+      PetscMPIInt len;
+      PetscCall(PetscMPIIntCast(PetscMin(nb * nb - off, PETSC_MPI_INT_MAX / 2), &len));
+      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + off, SB[b] + off, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
+    }
   }
-  PetscCall(PetscBLASIntCast(nG, &bG));
-  PetscCall(PetscBLASIntCast(nc, &bc));
-  PetscCall(PetscMalloc3(nG * nG + 1, &ctx->LG, nG * nc + 1, &ctx->W, nc * nc, &ctx->G));
-  for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(ctx->LG + j * nG, SB + j * nB, nG));
-  for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(ctx->W + j * nG, SB + (nG + j) * nB, nG));
-  for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(ctx->G + j * nc, SB + (nG + j) * nB + nG, nc));
-  PetscCall(PetscFree(SB));
-  if (nG) {
-    PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, ctx->LG, &bG, &info));
-    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "interface Schur complement not positive definite (potrf info %d)", (int)info);
-    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &bc, &one, ctx->LG, &bG, ctx->W, &bG));
-    PetscCallBLAS("BLASsyrk", BLASsyrk_("L", "T", &bc, &bG, &mone, ctx->W, &bG, &one, ctx->G, &bc));
-    PetscCall(PetscLogFlops((double)nG * nG * nG / 3.0 + (double)nG * nG * nc + (double)nc * nc * nG));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* then the roots work at once, */
+    SubBody       *B  = &ctx->body[b];
+    const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
+    PetscBLASInt   bG, bc, info;
+
+    PetscCall(PetscMalloc3(nG * nG + 1, &B->LG, nG * nc + 1, &B->W, nc * nc + 1, &B->Ginv));
+    if (rank == (PetscMPIInt)(b % size)) {
+      PetscCall(PetscBLASIntCast(nG, &bG));
+      PetscCall(PetscBLASIntCast(nc, &bc));
+      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG, SB[b] + j * nb, nG));
+      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + (nG + j) * nb, nG));
+      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->Ginv + j * nc, SB[b] + (nG + j) * nb + nG, nc));
+      if (nG) {
+        PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, B->LG, &bG, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "interface Schur complement not positive definite (potrf info %d)", (int)info);
+        if (nc) {
+          PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &bc, &one, B->LG, &bG, B->W, &bG));
+          PetscCallBLAS("BLASsyrk", BLASsyrk_("L", "T", &bc, &bG, &mone, B->W, &bG, &one, B->Ginv, &bc));
+        }
+        PetscCall(PetscLogFlops((double)nG * nG * nG / 3.0 + (double)nG * nG * nc + (double)nc * nc * nG));
+      }
+      if (nc) {
+        PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bc, B->Ginv, &bc, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "Schur complement of the stiffness on the contact surfaces not positive definite (potrf info %d)", (int)info);
+        PetscCallBLAS("LAPACKpotri", LAPACKpotri_("L", &bc, B->Ginv, &bc, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "potri info %d", (int)info);
+        for (PetscInt j = 0; j < nc; ++j)
+          for (PetscInt i = j + 1; i < nc; ++i) B->Ginv[i * nc + j] = B->Ginv[j * nc + i];
+        PetscCall(PetscLogFlops((double)nc * nc * nc));
+      }
+    }
+    PetscCall(PetscFree(SB[b]));
   }
-  PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bc, ctx->G, &bc, &info));
-  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "Schur complement of the stiffness on the contact surfaces not positive definite (potrf info %d)", (int)info);
-  PetscCallBLAS("LAPACKpotri", LAPACKpotri_("L", &bc, ctx->G, &bc, &info));
-  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "potri info %d", (int)info);
-  for (PetscInt j = 0; j < nc; ++j)
-    for (PetscInt i = j + 1; i < nc; ++i) ctx->G[i * nc + j] = ctx->G[j * nc + i];
-  PetscCall(PetscLogFlops((double)nc * nc * nc));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* and every rank receives every body's */
+    SubBody          *B    = &ctx->body[b];
+    const PetscMPIInt root = (PetscMPIInt)(b % size);
+    PetscMPIInt       n[3];
+    PetscCall(PetscMPIIntCast(B->nG * B->nG, &n[0]));
+    PetscCall(PetscMPIIntCast(B->nG * B->nc, &n[1]));
+    PetscCall(PetscMPIIntCast(B->nc * B->nc, &n[2]));
+    PetscCallMPI(MPI_Bcast(B->LG, n[0], MPIU_SCALAR, root, ctx->comm));
+    PetscCallMPI(MPI_Bcast(B->W, n[1], MPIU_SCALAR, root, ctx->comm));
+    PetscCallMPI(MPI_Bcast(B->Ginv, n[2], MPIU_SCALAR, root, ctx->comm));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -498,11 +611,16 @@ static PetscErrorCode SubPCSetUp(PC pc)
   }
   PetscCall(PetscArrayzero(ctx->MA, nA * nA));
   for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
-  for (PetscInt k = 0; k < ctx->nC; ++k) {
-    const PetscScalar *Gk  = ctx->G + ctx->A[ctx->Ci[k]] * ctx->nc;
+  for (PetscInt k = 0; k < ctx->nC; ++k) { /* column Cj += C_k (G restricted to A)'s column Ci; G is block diagonal by body */
+    const PetscInt     ck  = ctx->nG + ctx->A[ctx->Ci[k]], b = ctx->bBody[ck];
+    const SubBody     *B   = &ctx->body[b];
+    const PetscScalar *Gk  = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
     PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
     const PetscScalar  c   = ctx->Cv[k];
-    for (PetscInt a = 0; a < nA; ++a) col[a] += Gk[ctx->A[a]] * c;
+    for (PetscInt a = 0; a < nA; ++a) {
+      const PetscInt ca = ctx->nG + ctx->A[a];
+      if (ctx->bBody[ca] == b) col[a] += Gk[ctx->bLocal[ca] - B->nG] * c;
+    }
   }
   PetscCall(PetscBLASIntCast(nA, &bA));
   if (nA) {
@@ -520,7 +638,7 @@ static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
   SubCtx            *ctx;
   const PetscScalar *ra;
   PetscScalar       *za, *gB;
-  PetscBLASInt       bG, bc, one_i = 1, info;
+  PetscBLASInt       one_i = 1, info;
   PetscMPIInt        nBm;
   const PetscScalar  one = 1.0, mone = -1.0;
 
@@ -528,8 +646,6 @@ static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
   PetscCall(PCShellGetContext(pc, &ctx));
   PetscCall(PetscLogEventBegin(SubSolve, 0, 0, 0, 0));
   gB = ctx->gB;
-  PetscCall(PetscBLASIntCast(ctx->nG, &bG));
-  PetscCall(PetscBLASIntCast(ctx->nc, &bc));
   PetscCall(VecGetArrayRead(r, &ra));
   PetscCall(PetscArrayzero(ctx->rhs, ctx->nD));
   for (PetscInt k = 0; k < ctx->nI; ++k) ctx->rhs[ctx->Iloc[k]] = ra[ctx->D[ctx->Iloc[k]] - ctx->rstart];
@@ -548,34 +664,57 @@ static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
   PetscCall(VecRestoreArrayRead(r, &ra));
   PetscCall(PetscMPIIntCast(ctx->nB, &nBm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, gB, nBm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
-  if (ctx->nG) {
-    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &one_i, &one, ctx->LG, &bG, gB, &bG));
-    PetscCallBLAS("BLASgemv", BLASgemv_("T", &bG, &bc, &mone, ctx->W, &bG, gB, &one_i, &one, gB + ctx->nG, &one_i));
+  /* per body: y = L_G^-1 g_G, g_c -= W^T y, z_c = G g_c */
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bG, bc;
+    PetscScalar *t = ctx->tmp, zero = 0.0;
+
+    PetscCall(PetscBLASIntCast(B->nG, &bG));
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    if (B->nG) {
+      for (PetscInt i = 0; i < B->nG; ++i) B->y[i] = gB[B->G[i]];
+      PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
+      if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("T", &bG, &bc, &mone, B->W, &bG, B->y, &one_i, &one, t, &one_i));
+    }
+    if (B->nc) {
+      PetscScalar *zcb = t + B->nc;
+      PetscCallBLAS("BLASgemv", BLASgemv_("N", &bc, &bc, &one, B->Ginv, &bc, t, &one_i, &zero, zcb, &one_i));
+      for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] = zcb[j];
+    }
   }
-  { /* z_c = G (g_c - E_A C_AA z_A), (I + G_AA C_AA) z_A = (G g_c)_A */
-    PetscScalar *gc = gB + ctx->nG, *zc = ctx->gB + ctx->nB, zero = 0.0;
+  if (ctx->nA) { /* z_c -= G E_A C_AA z_A, (I + G_AA C_AA) z_A = (G g_c)_A */
+    PetscScalar *w = ctx->tmp;
     PetscBLASInt bA;
 
-    PetscCallBLAS("BLASgemv", BLASgemv_("N", &bc, &bc, &one, ctx->G, &bc, gc, &one_i, &zero, zc, &one_i));
-    if (ctx->nA) {
-      PetscCall(PetscBLASIntCast(ctx->nA, &bA));
-      for (PetscInt a = 0; a < ctx->nA; ++a) ctx->tA[a] = zc[ctx->A[a]];
-      PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &bA, &one_i, ctx->MA, &bA, ctx->ipiv, ctx->tA, &bA, &info));
-      PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "getrs info %d", (int)info);
-      PetscCall(PetscArrayzero(gc, ctx->nc));
-      for (PetscInt k = 0; k < ctx->nC; ++k) gc[ctx->Ci[k]] += ctx->Cv[k] * ctx->tA[ctx->Cj[k]];
-      for (PetscInt a = 0; a < ctx->nA; ++a) {
-        const PetscScalar  w  = gc[a];
-        const PetscScalar *Ga = ctx->G + ctx->A[a] * ctx->nc;
-        if (w != 0.0)
-          for (PetscInt i = 0; i < ctx->nc; ++i) zc[i] -= w * Ga[i];
-      }
+    PetscCall(PetscBLASIntCast(ctx->nA, &bA));
+    for (PetscInt a = 0; a < ctx->nA; ++a) ctx->tA[a] = ctx->zc[ctx->A[a]];
+    PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &bA, &one_i, ctx->MA, &bA, ctx->ipiv, ctx->tA, &bA, &info));
+    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "getrs info %d", (int)info);
+    PetscCall(PetscArrayzero(w, ctx->nA));
+    for (PetscInt k = 0; k < ctx->nC; ++k) w[ctx->Ci[k]] += ctx->Cv[k] * ctx->tA[ctx->Cj[k]];
+    for (PetscInt a = 0; a < ctx->nA; ++a) {
+      const PetscInt     ca = ctx->nG + ctx->A[a];
+      const SubBody     *B  = &ctx->body[ctx->bBody[ca]];
+      const PetscScalar *Ga = B->Ginv + (ctx->bLocal[ca] - B->nG) * B->nc;
+      if (w[a] != 0.0)
+        for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] -= w[a] * Ga[j];
     }
-    PetscCall(PetscArraycpy(gc, zc, ctx->nc));
   }
-  if (ctx->nG) {
-    PetscCallBLAS("BLASgemv", BLASgemv_("N", &bG, &bc, &mone, ctx->W, &bG, gB + ctx->nG, &one_i, &one, gB, &one_i));
-    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "T", "N", &bG, &one_i, &one, ctx->LG, &bG, gB, &bG));
+  PetscCall(PetscArraycpy(gB + ctx->nG, ctx->zc, ctx->nc));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* z_G = L_G^-T (y - W z_c) */
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bG, bc;
+    PetscScalar *t = ctx->tmp;
+
+    if (!B->nG) continue;
+    PetscCall(PetscBLASIntCast(B->nG, &bG));
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("N", &bG, &bc, &mone, B->W, &bG, t, &one_i, &one, B->y, &one_i));
+    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "T", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
+    for (PetscInt i = 0; i < B->nG; ++i) gB[B->G[i]] = B->y[i];
   }
   if (ctx->nI) { /* expansion (or, with no boundary, the subdomain's own solve) */
     for (PetscInt k = 0; k < ctx->nBr; ++k) ctx->red[k] = gB[ctx->Bpos[k]];
@@ -613,8 +752,12 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->Iloc, ctx->Bloc, ctx->Bpos));
   PetscCall(PetscFree2(ctx->ownedPos, ctx->ownedRow));
   PetscCall(PetscFree2(ctx->rhs, ctx->red));
-  PetscCall(PetscFree3(ctx->LG, ctx->W, ctx->G));
-  PetscCall(PetscFree(ctx->gB));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    PetscCall(PetscFree3(ctx->body[b].G, ctx->body[b].c, ctx->body[b].y));
+    PetscCall(PetscFree3(ctx->body[b].LG, ctx->body[b].W, ctx->body[b].Ginv));
+  }
+  PetscCall(PetscFree2(ctx->bBody, ctx->bLocal));
+  PetscCall(PetscFree3(ctx->gB, ctx->zc, ctx->tmp));
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
   PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
@@ -662,7 +805,7 @@ PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
   PetscCall(PetscLogEventBegin(SubInterface, 0, 0, 0, 0));
   PetscCall(SubCondenseInterface(ctx, Sr));
   PetscCall(PetscFree(Sr));
-  PetscCall(PetscMalloc1(ctx->nB + ctx->nc, &ctx->gB));
+  PetscCall(PetscMalloc3(ctx->nB + 1, &ctx->gB, ctx->nc + 1, &ctx->zc, 2 * ctx->nc + 1, &ctx->tmp));
   PetscCall(PetscMalloc2(ctx->nc, &ctx->A, ctx->nc, &ctx->inA));
   PetscCall(PetscLogEventEnd(SubInterface, 0, 0, 0, 0));
   PetscCall(PCSetType(pc, PCSHELL));
