@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test stress bench bench-quick clean
+.PHONY: all deps meshes run test stress bench bench-quick bench-parallel clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -58,6 +58,10 @@ stress: bin/contact meshes
 # (the full sweep takes hours; bench-quick covers the main points in minutes)
 bench: bin/contact meshes
 	$(PYTHON) scripts/bench.py --out bench
+	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
+# 1 against 2 ranks, interleaved, median of 3 (about 5 minutes)
+bench-parallel: bin/contact meshes
+	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
 bench-quick: bin/contact meshes
 	$(PYTHON) scripts/bench.py --quick --out bench
 

@@ -50,6 +50,27 @@ STAGES = ["Mesh", "Setup", "Solve", "PostProcess", "Output"]
 TARGETS = {0.06: 1.0, 0.015: 1.6, 0.01: 1.6, 0.0065: 1.6}
 
 
+def running_processes():
+    with open("/proc/stat") as fh:
+        for line in fh:
+            if line.startswith("procs_running"):
+                return int(line.split()[1])
+    return 0
+
+
+def wait_quiet(limit):
+    """Waits until no other process is running (procs_running is this reader
+    alone at two polls in a row, 0.5 s apart), at most limit seconds; returns
+    the time waited."""
+    t0, calm = time.time(), 0
+    while time.time() - t0 < limit:
+        calm = calm + 1 if running_processes() <= 1 else 0
+        if calm >= 2:
+            break
+        time.sleep(0.5)
+    return time.time() - t0
+
+
 def load_average():
     with open("/proc/loadavg") as fh:
         return float(fh.read().split()[0])
@@ -101,16 +122,21 @@ def run(args, binary, h, name, rep, tmp):
     ranks, extra = CONFIGS[name]
     tag = "h%s_%s_r%d" % (h, name.replace(":", "-"), rep)
     js, lv = os.path.join(tmp, tag + ".json"), os.path.join(tmp, tag + ".log")
+    mem = os.path.join(tmp, tag + ".mem")
     cmd = [binary, "-options_file", SCENE, "-mesh_size", repr(h), "-output", "none", "-summary", js,
            "-log_view", ":" + lv] + extra
+    # each rank's peak resident memory (GNU time %M, kB) into mem.<rank>
+    cmd = ["sh", "-c", 'exec /usr/bin/time -f %M -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', mem] + cmd
     if ranks > 1:
         cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    waited = wait_quiet(args.quiet_wait)
     load = load_average()
     t = time.perf_counter()
     p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=args.timeout)
     wall = time.perf_counter() - t
-    row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": load, "wall": wall, "rc": p.returncode}
+    row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": load, "waited": waited, "wall": wall,
+           "rc": p.returncode}
     if p.returncode == 0 and os.path.exists(js):
         import json
         with open(js) as fh:
@@ -118,6 +144,16 @@ def run(args, binary, h, name, rep, tmp):
         row.update(dofs=s["dofs"], iterations=s["iterations"], P=s["contact_force"], energy=s["energy"])
         for k, v in s["time"].items():
             row["time_" + k] = v
+    peaks = []
+    for q in range(ranks):
+        try:
+            with open("%s.%d" % (mem, q)) as fh:
+                peaks.append(int([l for l in fh.read().split("\n") if l.strip()][-1]) / 1024.0)
+        except (OSError, ValueError, IndexError):
+            pass
+    if len(peaks) == ranks:
+        row["mem_max_rank_mb"] = max(peaks)
+        row["mem_total_mb"] = sum(peaks)
     events, stages = parse_log_view(lv)
     for e in EVENTS:
         row["ev_" + e] = events.get(e, "")
@@ -145,8 +181,9 @@ def report(args, rows, info, elapsed):
              % (info["cpu"], info["nproc"], info["mem"], info["blas"], info["petsc"],
                 statistics.median(r["load"] for r in rows), max(r["load"] for r in rows)))
     L.append("Reference scene, default solver, k_p = 2e6, `-tao_gttol 1e-8`, `-output none`; configurations "
-             "interleaved, %d repeats, medians. Speed-up: median over 1 rank divided by median over 2 ranks.\n"
-             % args.repeat)
+             "interleaved, %d repeats, medians. Speed-up: median over 1 rank divided by median over 2 ranks. "
+             "Each run started once no other process was running (waiting at most %g s; median wait %.1f s).\n"
+             % (args.repeat, args.quiet_wait, statistics.median(r["waited"] for r in rows)))
     L.append("| h | dofs | iterations | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) | wall 1 rank [s] "
              "| wall 2 ranks [s] | speed-up (wall) | target | |")
     L.append("|---|---|---|---|---|---|---|---|---|---|---|")
@@ -162,10 +199,24 @@ def report(args, rows, info, elapsed):
         runs2 = ", ".join("%.2f" % r["time_solve"] for r in two if "time_solve" in r)
         L.append("| %s | %s | %s | %.2f (%s) | %.2f (%s) | **%.2f** | %.2f | %.2f | %.2f | %s | %s |"
                  % (h, "{:,}".format(one[0].get("dofs", 0)), one[0].get("iterations", "?"), s1, runs1, s2, runs2,
-                    s1 / s2, w1, w2, w1 / w2, (">= %.1f" % target) if target else "", "MET" if ok else "NOT MET"))
+                    s1 / s2, w1, w2, w1 / w2, (">= %.1f" % target) if target else "", ("MET" if ok else "NOT MET") if target else ""))
     L.append("")
-    L.append("Median time per phase (JSON summary, rank 0) and per event (-log_view, max over ranks), seconds:\n")
-    cols = ["time_mesh", "time_setup", "time_solve", "time_output", "time_total", "wall"] + ["ev_" + e for e in EVENTS]
+    L.append("Median time per -log_view stage (average over ranks), seconds, and its speed-up:\n")
+    L.append("| h | stage | 1 rank | 2 ranks | speed-up |")
+    L.append("|---|---|---|---|---|")
+    for h in sizes:
+        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
+        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
+        if not one or not two:
+            continue
+        for st in STAGES:
+            a, b = med(one, "stage_" + st), med(two, "stage_" + st)
+            L.append("| %s | %s | %.3g | %.3g | %.2f |" % (h, st, a, b, a / b if b > 0 else float("nan")))
+    L.append("")
+    L.append("Median time per phase (JSON summary, rank 0) and per event (-log_view, max over ranks), seconds; "
+             "peak resident memory (GNU time), MB, of the largest rank and summed over ranks:\n")
+    cols = ["time_mesh", "time_setup", "time_solve", "time_output", "time_total", "wall", "mem_max_rank_mb",
+            "mem_total_mb"] + ["ev_" + e for e in EVENTS]
     present = [c for c in cols if any(isinstance(r.get(c), (int, float)) for r in rows)]
     L.append("| h | config | " + " | ".join(c.replace("time_", "").replace("ev_", "") for c in present) + " |")
     L.append("|---|---|" + "---|" * len(present))
@@ -193,6 +244,8 @@ def main():
     ap.add_argument("--bin", default="bin/contact")
     ap.add_argument("--timeout", type=float, default=1200)
     ap.add_argument("--keep-logs", action="store_true", help="copy each run's -log_view into --out")
+    ap.add_argument("--quiet-wait", type=float, default=60, help="before each run, wait up to this many seconds "
+                    "for no other process to be running (the machine is shared; 0: start at once)")
     args = ap.parse_args()
     args.configs = args.configs.split(",")
     for c in args.configs:

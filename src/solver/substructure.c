@@ -443,6 +443,8 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
     const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
     PetscBLASInt   bG, bc, info;
 
+    PetscCall(PetscInfo(NULL, "body %" PetscInt_FMT ": %" PetscInt_FMT " interface and %" PetscInt_FMT " surface dofs, dense work on rank %d\n", b, nG, nc, (int)(b % size)));
+
     PetscCall(PetscMalloc3(nG * nG + 1, &B->LG, nG * nc + 1, &B->W, nc * nc + 1, &B->Ginv));
     if (rank == (PetscMPIInt)(b % size)) {
       PetscCall(PetscBLASIntCast(nG, &bG));
