@@ -7,7 +7,7 @@ CC      = mpicc
 PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
 PETSC_LIBS   = $(shell pkg-config --libs petsc)
 CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
-LDLIBS  = $(PETSC_LIBS) -lmetis -lm
+LDLIBS  = $(PETSC_LIBS) -ldmumps -llapack -lblas -lmetis -lm
 SRCS    = $(wildcard src/*.c src/*/*.c)
 OBJS    = $(patsubst src/%.c,build/obj/%.o,$(SRCS))
 DEPS_STAMP = build/.deps-installed
@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test stress bench bench-quick bench-formulations clean
+.PHONY: all deps meshes run test stress bench bench-quick bench-formulations bench-parallel clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -63,6 +63,10 @@ stress: bin/contact meshes
 # (the full sweep takes hours; bench-quick covers the main points in minutes)
 bench: bin/contact meshes
 	$(PYTHON) scripts/bench.py --out bench
+	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
+# 1 against 2 ranks, interleaved, median of 3 (about 5 minutes)
+bench-parallel: bin/contact meshes
+	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
 bench-quick: bin/contact meshes
 	$(PYTHON) scripts/bench.py --quick --out bench
 # mortar / gpts solve time at h = 0.06 and 0.0065 (1.07e6 dofs), interleaved,

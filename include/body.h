@@ -72,6 +72,8 @@ PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
 PetscErrorCode BodySetLoadFactor(Body, PetscReal);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
+PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
+PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[3]);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
 PetscErrorCode BodyComputeErrorL2(Body, Vec Xl, PetscReal *err, PetscReal *norm);

@@ -10,6 +10,12 @@ extern const char *const HessianTypes[];
 typedef enum { H0_NONE, H0_ELASTIC } H0Type;
 extern const char *const H0Types[];
 
+/* How the Newton step's Schur complement on the contact surfaces is formed:
+   by substructuring, on any number of ranks (substructure.c), or by MUMPS
+   from K, on one rank (schur.c). */
+typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
+extern const char *const SchurTypes[];
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
@@ -43,6 +49,8 @@ struct _n_Problem {
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
   PetscBool schur; /* Newton through the contact-surface Schur complement */
+  PetscBool iterative; /* Newton by CG + GAMG (iterative.c) */
+  SchurType schurType;
   HessianType hessianType;  /* -contact_hessian */
   PetscReal hessianSwitch;   /* auto: exact once ||g|| < hessianSwitch ||g0|| */
   PetscReal hessianG0;       /* ||g|| at the current TAO solve's first iterate */

@@ -402,6 +402,32 @@ static PetscErrorCode BodyBuildNodeData(Body b)
   PetscFunctionReturn(0);
 }
 
+/* The body's rigid motions (translations in x and y, the rotation about the
+   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
+   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
+   local parts of three joined vectors. */
+PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
+{
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt        dof, off;
+    const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
+
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    for (PetscInt d = 0; d < PetscMin(dof, 2); ++d) {
+      const PetscInt g = b->l2b[off + d];
+      if (g < rstart || g >= rend) continue;
+      modes[d][g - rstart] += 1.0;
+      modes[2][g - rstart] += d == 0 ? -y : x;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Global node number of a node point (owned or ghost). */
 PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
 {
@@ -569,38 +595,52 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscFunctionReturn(0);
 }
 
-/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA, added into H at l2b indices. */
+/* The assembled stiffness: this rank's element stiffnesses at l2b indices. */
 PetscErrorCode BodyAssembleHessian(Body b, Mat H)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BodyAssembleHessianMapped(b, b->l2b, H));
+  PetscFunctionReturn(0);
+}
+
+/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA over this rank's cells,
+   added into H at rows and columns map[local dof] (negative: left out). With
+   the joined vector's map l2b, the assembled stiffness; with a map onto the
+   rank's own dofs, its subdomain stiffness (substructure.c). */
+PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
 {
   const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
   PetscReal      C[16];
   PetscScalar    K[18 * 18];
   PetscInt       idx[18];
-  PetscBool      pattern; /* a preallocator wants the nonzero pattern only */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
-  PetscCall(PetscObjectTypeCompare((PetscObject)H, MATPREALLOCATOR, &pattern));
   ElasticityTangent(b->param, C);
   for (PetscInt c = 0; c < b->ncells; ++c) {
     for (PetscInt a = 0; a < nb; ++a) {
-      idx[2 * a]     = b->l2b[b->cdof[c * nb + a]];
-      idx[2 * a + 1] = b->l2b[b->cdof[c * nb + a] + 1];
+      idx[2 * a]     = map[b->cdof[c * nb + a]];
+      idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
     }
     PetscCall(PetscArrayzero(K, n * n));
-    for (PetscInt iq = 0; iq < (pattern ? 0 : nq); ++iq) {
+    for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
       const PetscReal  w  = b->wdetJ[c * nq + iq];
+      PetscReal        G[9][2][2][2]; /* w dN_a/dx_k C_ikjl, summed over k */
+
       for (PetscInt a = 0; a < nb; ++a)
         for (PetscInt i = 0; i < 2; ++i)
-          for (PetscInt bb = 0; bb < nb; ++bb)
-            for (PetscInt j = 0; j < 2; ++j) {
-              PetscReal v = 0.0;
-              for (PetscInt k = 0; k < 2; ++k)
-                for (PetscInt l = 0; l < 2; ++l) v += dN[2 * a + k] * C[((i * 2 + k) * 2 + j) * 2 + l] * dN[2 * bb + l];
-              K[(2 * a + i) * n + 2 * bb + j] += w * v;
-            }
+          for (PetscInt j = 0; j < 2; ++j)
+            for (PetscInt l = 0; l < 2; ++l) G[a][i][j][l] = w * (dN[2 * a] * C[((i * 2) * 2 + j) * 2 + l] + dN[2 * a + 1] * C[((i * 2 + 1) * 2 + j) * 2 + l]);
+      for (PetscInt a = 0; a < nb; ++a) /* the upper blocks (bb >= a); K is symmetric */
+        for (PetscInt i = 0; i < 2; ++i)
+          for (PetscInt bb = a; bb < nb; ++bb)
+            for (PetscInt j = 0; j < 2; ++j) K[(2 * a + i) * n + 2 * bb + j] += G[a][i][j][0] * dN[2 * bb] + G[a][i][j][1] * dN[2 * bb + 1];
     }
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < 2; ++i)
+        for (PetscInt bb = a + 1; bb < nb; ++bb)
+          for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));

@@ -9,8 +9,11 @@
 #include "schur.h"
 #include "progress.h"
 #include "options.h"
+#include "substructure.h"
+#include "iterative.h"
 
 const char *const H0Types[] = {"none", "elastic", "H0Type", "H0_", NULL};
+const char *const SchurTypes[] = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
 const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
@@ -93,7 +96,9 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->taylorScale, &p->taylorScale, NULL));
-  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K factored once; one rank)", NULL, p->schur, &p->schur, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->iterative, &p->iterative, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
+  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
@@ -229,57 +234,103 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* Preallocates the elastic stiffness K (elastic pattern plus the surface block).
-   On one rank no preallocator pass is needed: every cell gives its rows 2 nb
-   columns (an upper bound, the excess squeezed out at assembly). On several,
-   MATPREALLOCATOR collects the pattern, rows of other ranks included. */
+/* Preallocates the elastic stiffness K (elastic pattern plus the surface
+   block): every cell gives each of its rows 2 nb columns (an upper bound, the
+   excess squeezed out at assembly), and each surface row the surface's
+   columns. On several ranks the columns of a row are counted apart by
+   whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
+   blocks); a rank counts the rows its cells touch, and the counts of rows
+   owned elsewhere (the partition's interface) go to their owner by a vector
+   sum. No pass of MatSetValues is needed for the pattern. */
 static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
 {
-  PetscMPIInt size;
+  PetscMPIInt    size;
+  PetscInt      *dnnz, *onnz, rstart, rend, N;
+  PetscLayout    layout;
+  Vec            dv = NULL, ov = NULL;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(VecGetOwnershipRange(p->X, &rstart, &rend));
+  PetscCall(VecGetSize(p->X, &N));
+  PetscCall(VecGetLayout(p->X, &layout));
+  PetscCall(PetscCalloc2(nloc + 1, &dnnz, nloc + 1, &onnz));
+  if (size > 1) {
+    PetscCall(VecDuplicate(p->X, &dv));
+    PetscCall(VecDuplicate(p->X, &ov));
+    PetscCall(VecZeroEntries(dv));
+    PetscCall(VecZeroEntries(ov));
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body b = p->bodies[i];
+    for (PetscInt c = 0; c < b->ncells; ++c) {
+      PetscInt    idx[18], own[18], n = 0;
+      PetscMPIInt o;
+
+      for (PetscInt a = 0; a < b->nb; ++a)
+        for (PetscInt d = 0; d < 2; ++d) {
+          const PetscInt g = b->l2b[b->cdof[c * b->nb + a] + d];
+          if (g < 0) continue;
+          if (size > 1) PetscCall(PetscLayoutFindOwner(layout, g, &o));
+          else o = 0;
+          idx[n]   = g;
+          own[n++] = o;
+        }
+      for (PetscInt r = 0; r < n; ++r) {
+        PetscInt dc = 0, oc;
+        for (PetscInt q = 0; q < n; ++q) dc += own[q] == own[r];
+        oc = n - dc;
+        if (idx[r] >= rstart && idx[r] < rend) {
+          dnnz[idx[r] - rstart] += dc;
+          onnz[idx[r] - rstart] += oc;
+        } else {
+          PetscCall(VecSetValue(dv, idx[r], (PetscScalar)dc, ADD_VALUES));
+          PetscCall(VecSetValue(ov, idx[r], (PetscScalar)oc, ADD_VALUES));
+        }
+      }
+    }
+  }
+  if (size > 1) {
+    const PetscScalar *d, *o;
+    PetscCall(VecAssemblyBegin(dv));
+    PetscCall(VecAssemblyEnd(dv));
+    PetscCall(VecAssemblyBegin(ov));
+    PetscCall(VecAssemblyEnd(ov));
+    PetscCall(VecGetArrayRead(dv, &d));
+    PetscCall(VecGetArrayRead(ov, &o));
+    for (PetscInt r = 0; r < nloc; ++r) {
+      dnnz[r] += (PetscInt)PetscRealPart(d[r]);
+      onnz[r] += (PetscInt)PetscRealPart(o[r]);
+    }
+    PetscCall(VecRestoreArrayRead(dv, &d));
+    PetscCall(VecRestoreArrayRead(ov, &o));
+    PetscCall(VecDestroy(&dv));
+    PetscCall(VecDestroy(&ov));
+  }
+  if (p->surfaceDofs) {
+    const PetscInt *idx;
+    PetscInt        n, mine = 0;
+    PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
+    PetscCall(ISGetIndices(p->surfaceDofs, &idx));
+    for (PetscInt i = 0; i < n; ++i) mine += idx[i] >= rstart && idx[i] < rend;
+    for (PetscInt i = 0; i < n; ++i)
+      if (idx[i] >= rstart && idx[i] < rend) {
+        dnnz[idx[i] - rstart] += mine;
+        onnz[idx[i] - rstart] += n - mine;
+      }
+    PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
+  }
+  for (PetscInt r = 0; r < nloc; ++r) {
+    dnnz[r] = PetscMin(dnnz[r], nloc);
+    onnz[r] = PetscMin(onnz[r], N - nloc);
+  }
   PetscCall(MatCreate(p->comm, &p->K));
   PetscCall(MatSetSizes(p->K, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  if (size == 1) {
-    PetscInt *nnz, n = 0;
-
-    PetscCall(PetscCalloc1(nloc + 1, &nnz));
-    for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body b = p->bodies[i];
-      for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-        for (PetscInt d = 0; d < 2; ++d) {
-          const PetscInt row = b->l2b[b->cdof[k] + d];
-          if (row >= 0) nnz[row] += 2 * b->nb;
-        }
-    }
-    if (p->surfaceDofs) {
-      const PetscInt *idx;
-      PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
-      PetscCall(ISGetIndices(p->surfaceDofs, &idx));
-      for (PetscInt i = 0; i < n; ++i) nnz[idx[i]] += n;
-      PetscCall(ISRestoreIndices(p->surfaceDofs, &idx));
-    }
-    for (PetscInt r = 0; r < nloc; ++r) nnz[r] = PetscMin(nnz[r], nloc);
-    PetscCall(MatSetType(p->K, MATSEQAIJ));
-    PetscCall(MatSeqAIJSetPreallocation(p->K, 0, nnz));
-    PetscCall(PetscFree(nnz));
-    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
-  } else {
-    Mat pre;
-
-    PetscCall(MatCreate(p->comm, &pre));
-    PetscCall(MatSetType(pre, MATPREALLOCATOR));
-    PetscCall(MatSetSizes(pre, nloc, nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-    PetscCall(MatSetUp(pre));
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], pre));
-    if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, pre));
-    PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatSetType(p->K, MATAIJ));
-    PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, p->K)); /* zeros over the whole pattern */
-    PetscCall(MatDestroy(&pre));
-  }
+  PetscCall(MatSetType(p->K, size > 1 ? MATMPIAIJ : MATSEQAIJ));
+  if (size > 1) PetscCall(MatMPIAIJSetPreallocation(p->K, 0, dnnz, 0, onnz));
+  else PetscCall(MatSeqAIJSetPreallocation(p->K, 0, dnnz));
+  PetscCall(PetscFree2(dnnz, onnz));
+  if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
   PetscFunctionReturn(0);
 }
 
@@ -517,12 +568,15 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscFunctionReturn(0);
 }
 
-/* Newton types (nls, ntr): the Gauss-Newton Hessian is symmetric positive
-   definite and changes only in the contact-surface block, so on one rank the
-   step goes through the Schur complement on that block (schur.c, K factored
-   once), elsewhere through a Cholesky factorisation per step (MUMPS); nls
-   takes the factored step directly (preonly); at most 500 iterations (TAO's 50
-   are too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
+/* Newton types (nls, ntr): the Hessian changes only in the contact-surface
+   block, so the step goes through the Schur complement on that block, K
+   condensed once: by substructuring on any number of ranks
+   (substructure.c), or on one rank by MUMPS's Schur complement of K
+   (schur.c, -newton_schur_type mumps). Without contact, or with
+   -newton_schur 0, a Cholesky factorisation per step (CHOLMOD on one rank,
+   MUMPS on several); -newton_iterative: CG with GAMG (iterative.c). nls takes
+   the factored step directly (preonly); at most 500 iterations (TAO's 50 are
+   too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
    -tao_max_it, -newton_schur 0, -tao_nls_ksp_type, -tao_nls_pc_type, ...
    override them and -help shows them. Without a set-up problem (-help) the
    Schur preconditioner is only named. */
@@ -540,9 +594,13 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (p->schur && size == 1 && p->nterms > 0) {
-    if (p->K) PetscCall(ContactSchurPCSetUp(p, pc));
-    else PetscCall(PCSetType(pc, PCSHELL));
+  if (p->iterative) {
+    if (p->K) PetscCall(ContactIterativeKSPSetUp(p, ksp));
+  } else if (p->schur && p->nterms > 0) {
+    PetscCheck(p->schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+    if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
+    else if (p->schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
+    else PetscCall(ContactSubstructurePCSetUp(p, pc));
   } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscFunctionReturn(0);
 }
@@ -685,6 +743,11 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoGetType(p->tao, &type));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
+  if (p->iterative) {
+    PetscInt lits;
+    PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
+    PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
+  }
   if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());

@@ -1,0 +1,289 @@
+#!/usr/bin/env python3
+"""Parallel benchmark of bin/contact (issue "Parallel that pays"): 1 against 2 ranks.
+
+    python3 scripts/bench_parallel.py [--repeat 3] [--sizes 0.06,0.015,0.01,0.0065] [--out bench/parallel]
+
+The reference scene at each mesh size, the default solver (Newton through the
+Schur complement on the contact surfaces), k_p = 2e6, -tao_gttol 1e-8, on 1
+and on 2 ranks (one core each), interleaved: repeat 1 of every configuration,
+then repeat 2, ..., so that a change of the machine's load falls on both rank
+counts alike. `--configs` adds variants (for instance the one-rank MUMPS Schur
+step, `1:mumps`). Every run writes its JSON summary and -log_view; the figures
+are medians over the repeats, and the speed-up is the ratio of the medians
+(1 rank over 2 ranks) of the solve time (the Solve stage: TAO's Newton
+iterations with the factorisations) and of the whole process's wall time
+(mpiexec start-up, mesh reading, partitioning, set-up, solve, output).
+
+Writes <out>/results.csv (one row per run) and <out>/RESULTS.md (machine,
+load, the speed-up table against the targets, the time per phase and per
+event, max over ranks). The machine is shared: the load average before each
+run is recorded beside it.
+"""
+import argparse
+import csv
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench import git_info, machine_info  # noqa: E402
+
+SCENE = "meshes/hertz/hertz.opts"
+# configuration name -> (ranks, extra options)
+CONFIGS = {
+    "1": (1, []),
+    "2": (2, []),
+    "1:mumps": (1, ["-newton_schur_type", "mumps"]),
+    "1:substructure": (1, ["-newton_schur_type", "substructure"]),
+    "2:factor": (2, ["-newton_schur", "0"]),
+}
+EVENTS = ["MeshPartition", "ElasHessian", "ElasEnergyGrad", "ContactEnergyGrad", "ContactSearch", "ContactHessian",
+          "SubstrFactor", "SubstrInterface", "SubstrStep", "SubstrSolve", "SchurFactorK", "SchurStep", "MatSolve",
+          "MatCholFctrNum", "WriteOutput"]
+STAGES = ["Mesh", "Setup", "Solve", "PostProcess", "Output"]
+# speed-up targets: h -> least ratio of 1-rank to 2-rank solve time
+TARGETS = {0.06: 1.0, 0.015: 1.6, 0.01: 1.6, 0.0065: 1.6}
+
+
+def running_processes():
+    with open("/proc/stat") as fh:
+        for line in fh:
+            if line.startswith("procs_running"):
+                return int(line.split()[1])
+    return 0
+
+
+def wait_quiet(limit):
+    """Waits until no other process is running (procs_running is this reader
+    alone at two polls in a row, 0.5 s apart), at most limit seconds; returns
+    the time waited."""
+    t0, calm = time.time(), 0
+    while time.time() - t0 < limit:
+        calm = calm + 1 if running_processes() <= 1 else 0
+        if calm >= 2:
+            break
+        time.sleep(0.5)
+    return time.time() - t0
+
+
+def load_average():
+    with open("/proc/loadavg") as fh:
+        return float(fh.read().split()[0])
+
+
+def parse_log_view(path):
+    """Per event: the max time over ranks summed over stages; per stage: its
+    max time over ranks (the Summary of Stages gives the average)."""
+    events, stages, stage = {}, {}, None
+    try:
+        with open(path) as fh:
+            text = fh.read()
+    except OSError:
+        return events, stages
+    text = text.split("Memory usage is given in bytes")[0]
+    for line in text.split("\n"):
+        if line.startswith("--- Event Stage"):
+            stage = line.split(":", 1)[1].strip()
+            continue
+        parts = line.split()
+        if len(parts) > 4 and parts[0] in EVENTS:
+            try:
+                t = float(parts[3])
+            except ValueError:
+                continue
+            events[parts[0]] = events.get(parts[0], 0.0) + t
+    # stage times: max over ranks is not printed per stage; use the
+    # 'Summary of Stages' average, which the ranks share up to the barrier
+    # at the stage's end
+    in_summary = False
+    for line in text.split("\n"):
+        if line.startswith("Summary of Stages"):
+            in_summary = True
+            continue
+        if in_summary:
+            parts = line.split()
+            if len(parts) > 3 and parts[0].rstrip(":").isdigit():
+                name = parts[1].rstrip(":")
+                try:
+                    stages[name] = float(parts[2])
+                except ValueError:
+                    pass
+            elif stages and not line.strip():
+                break
+    return events, stages
+
+
+def run(args, binary, h, name, rep, tmp):
+    ranks, extra = CONFIGS[name]
+    tag = "h%s_%s_r%d" % (h, name.replace(":", "-"), rep)
+    js, lv = os.path.join(tmp, tag + ".json"), os.path.join(tmp, tag + ".log")
+    mem = os.path.join(tmp, tag + ".mem")
+    cmd = [binary, "-options_file", SCENE, "-mesh_size", repr(h), "-output", "none", "-summary", js,
+           "-log_view", ":" + lv] + extra
+    # each rank's peak resident memory (GNU time %M, kB) into mem.<rank>
+    cmd = ["sh", "-c", 'exec /usr/bin/time -f %M -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', mem] + cmd
+    if ranks > 1:
+        cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    waited = wait_quiet(args.quiet_wait)
+    load = load_average()
+    t = time.perf_counter()
+    p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=args.timeout)
+    wall = time.perf_counter() - t
+    row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": load, "waited": waited, "wall": wall,
+           "rc": p.returncode}
+    if p.returncode == 0 and os.path.exists(js):
+        import json
+        with open(js) as fh:
+            s = json.load(fh)
+        row.update(dofs=s["dofs"], iterations=s["iterations"], P=s["contact_force"], energy=s["energy"])
+        for k, v in s["time"].items():
+            row["time_" + k] = v
+    peaks = []
+    for q in range(ranks):
+        try:
+            with open("%s.%d" % (mem, q)) as fh:
+                peaks.append(int([l for l in fh.read().split("\n") if l.strip()][-1]) / 1024.0)
+        except (OSError, ValueError, IndexError):
+            pass
+    if len(peaks) == ranks:
+        row["mem_max_rank_mb"] = max(peaks)
+        row["mem_total_mb"] = sum(peaks)
+    events, stages = parse_log_view(lv)
+    for e in EVENTS:
+        row["ev_" + e] = events.get(e, "")
+    for st in STAGES:
+        row["stage_" + st] = stages.get(st, "")
+    if args.keep_logs:
+        shutil.copy(lv, os.path.join(args.out, tag + ".log_view.txt"))
+    return row
+
+
+def med(rows, key):
+    v = [r[key] for r in rows if isinstance(r.get(key), (int, float))]
+    return statistics.median(v) if v else float("nan")
+
+
+def report(args, rows, info, elapsed):
+    sizes = sorted({r["h"] for r in rows}, reverse=True)
+    names = [c for c in args.configs]
+    L = []
+    L.append("# Parallel benchmark: 1 against 2 ranks\n")
+    L.append("`python3 scripts/bench_parallel.py --repeat %d --sizes %s --configs %s` (%.0f s), commit %s.\n"
+             % (args.repeat, ",".join(str(h) for h in sizes), ",".join(names), elapsed, git_info()))
+    L.append("Machine: %s, %s cores, %s, %s; PETSc %s. Load average before the runs: median %.2f, max %.2f "
+             "(the machine is shared; a run's load includes other users' jobs).\n"
+             % (info["cpu"], info["nproc"], info["mem"], info["blas"], info["petsc"],
+                statistics.median(r["load"] for r in rows), max(r["load"] for r in rows)))
+    L.append("Reference scene, default solver, k_p = 2e6, `-tao_gttol 1e-8`, `-output none`; configurations "
+             "interleaved, %d repeats, medians. Speed-up: median over 1 rank divided by median over 2 ranks. "
+             "Each run started once no other process was running (waiting at most %g s; median wait %.1f s).\n"
+             % (args.repeat, args.quiet_wait, statistics.median(r["waited"] for r in rows)))
+    L.append("| h | dofs | iterations | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) | wall 1 rank [s] "
+             "| wall 2 ranks [s] | speed-up (wall) | target | |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for h in sizes:
+        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
+        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
+        if not one or not two:
+            continue
+        s1, s2, w1, w2 = med(one, "time_solve"), med(two, "time_solve"), med(one, "wall"), med(two, "wall")
+        target = TARGETS.get(h)
+        ok = s2 > 0 and target is not None and s1 / s2 >= target
+        runs1 = ", ".join("%.2f" % r["time_solve"] for r in one if "time_solve" in r)
+        runs2 = ", ".join("%.2f" % r["time_solve"] for r in two if "time_solve" in r)
+        L.append("| %s | %s | %s | %.2f (%s) | %.2f (%s) | **%.2f** | %.2f | %.2f | %.2f | %s | %s |"
+                 % (h, "{:,}".format(one[0].get("dofs", 0)), one[0].get("iterations", "?"), s1, runs1, s2, runs2,
+                    s1 / s2, w1, w2, w1 / w2, (">= %.1f" % target) if target else "", ("MET" if ok else "NOT MET") if target else ""))
+    L.append("")
+    L.append("Median time per -log_view stage (average over ranks), seconds, and its speed-up:\n")
+    L.append("| h | stage | 1 rank | 2 ranks | speed-up |")
+    L.append("|---|---|---|---|---|")
+    for h in sizes:
+        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
+        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
+        if not one or not two:
+            continue
+        for st in STAGES:
+            a, b = med(one, "stage_" + st), med(two, "stage_" + st)
+            L.append("| %s | %s | %.3g | %.3g | %.2f |" % (h, st, a, b, a / b if b > 0 else float("nan")))
+    L.append("")
+    L.append("Median time per phase (JSON summary, rank 0) and per event (-log_view, max over ranks), seconds; "
+             "peak resident memory (GNU time), MB, of the largest rank and summed over ranks:\n")
+    cols = ["time_mesh", "time_setup", "time_solve", "time_output", "time_total", "wall", "mem_max_rank_mb",
+            "mem_total_mb"] + ["ev_" + e for e in EVENTS]
+    present = [c for c in cols if any(isinstance(r.get(c), (int, float)) for r in rows)]
+    L.append("| h | config | " + " | ".join(c.replace("time_", "").replace("ev_", "") for c in present) + " |")
+    L.append("|---|---|" + "---|" * len(present))
+    for h in sizes:
+        for n in names:
+            sel = [r for r in rows if r["h"] == h and r["config"] == n]
+            if sel:
+                L.append("| %s | %s | " % (h, n) + " | ".join("%.3g" % med(sel, c) for c in present) + " |")
+    L.append("")
+    failed = [r for r in rows if r["rc"] != 0]
+    if failed:
+        L.append("Failed runs: " + ", ".join("h %s %s repeat %d (rc %s)" % (r["h"], r["config"], r["repeat"], r["rc"])
+                                           for r in failed) + "\n")
+    with open(os.path.join(args.out, "RESULTS.md"), "w") as fh:
+        fh.write("\n".join(L) + "\n")
+    print("\n".join(L))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--sizes", default="0.06,0.015,0.01,0.0065")
+    ap.add_argument("--configs", default="1,2", help="comma-separated, from: " + ", ".join(CONFIGS))
+    ap.add_argument("--out", default="bench/parallel")
+    ap.add_argument("--bin", default="bin/contact")
+    ap.add_argument("--timeout", type=float, default=1200)
+    ap.add_argument("--keep-logs", action="store_true", help="copy each run's -log_view into --out")
+    ap.add_argument("--quiet-wait", type=float, default=60, help="before each run, wait up to this many seconds "
+                    "for no other process to be running (the machine is shared; 0: start at once)")
+    args = ap.parse_args()
+    args.configs = args.configs.split(",")
+    for c in args.configs:
+        if c not in CONFIGS:
+            ap.error("unknown configuration %s (known: %s)" % (c, ", ".join(CONFIGS)))
+    os.makedirs(os.path.join(ROOT, args.out), exist_ok=True)
+    args.out = os.path.join(ROOT, args.out)
+    sizes = [float(h) for h in args.sizes.split(",")]
+    info = machine_info()
+    t0 = time.time()
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="bench-par-") as tmp:
+        binary = os.path.join(tmp, "contact")
+        shutil.copy(os.path.join(ROOT, args.bin), binary)
+        env = dict(os.environ)
+        for h in sizes:
+            subprocess.run([binary, "-options_file", SCENE, "-mesh_size", repr(h), "-mesh_only"], cwd=ROOT, env=env,
+                           check=True, capture_output=True)
+        for h in sizes:
+            for rep in range(1, args.repeat + 1):
+                for name in args.configs:
+                    r = run(args, binary, h, name, rep, tmp)
+                    rows.append(r)
+                    print("h %-6s %-16s repeat %d: solve %s s, wall %.2f s, load %.2f" %
+                          (h, name, rep, "%.2f" % r["time_solve"] if "time_solve" in r else "FAILED rc %s" % r["rc"],
+                           r["wall"], r["load"]), flush=True)
+    keys = []
+    for r in rows:
+        for k in r:
+            if k not in keys:
+                keys.append(k)
+    with open(os.path.join(args.out, "results.csv"), "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow(r)
+    report(args, rows, info, time.time() - t0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,67 @@
+/* Newton steps by an iterative solver, for problems whose factorisation no
+   longer fits in memory: conjugate gradients on the Hessian H = K + C,
+   preconditioned by smoothed-aggregation algebraic multigrid (PCGAMG).
+   Elasticity needs the multigrid's coarse spaces to represent the rigid
+   motions, which the stiffness of a body free of its Dirichlet conditions
+   annihilates: they are given as H's near-nullspace, three per body
+   (translations in x and y, rotation), each supported on its own body's
+   dofs, orthonormalised. The contact Hessian couples the bodies only through
+   their surfaces, a low-rank change GAMG sees in its matrix. Each Newton step
+   is solved to -tao_nls_ksp_rtol (1e-6 by default, relative to the gradient):
+   Newton's convergence is then quadratic down to that level and linear with
+   factor 1e-6 below it, so -tao_gttol 1e-8 is met in a step or two more than
+   with the exact step. GAMG is set up again at every step, its
+   interpolation too (PCGAMG's default reuses the first step's, built without
+   contact, and the preconditioner turns indefinite once the penalty acts). The Gauss-Newton contact Hessian is
+   symmetric positive semi-definite, so CG applies; the exact one, which auto
+   adds only once the gradient is small, leaves H positive definite there. */
+#include "iterative.h"
+
+PetscErrorCode ContactIterativeKSPSetUp(Problem p, KSP ksp)
+{
+  Vec          modes[3 * CONTACT_MAX_BODIES];
+  PetscInt     n = 0, rstart, rend;
+  MatNullSpace nsp;
+  PC           pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetOwnershipRange(p->X, &rstart, &rend));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Vec          v[3];
+    PetscScalar *a[3];
+    PetscInt     first = n;
+
+    for (PetscInt k = 0; k < 3; ++k) {
+      PetscCall(VecDuplicate(p->X, &v[k]));
+      PetscCall(VecZeroEntries(v[k]));
+      PetscCall(VecGetArray(v[k], &a[k]));
+    }
+    PetscCall(BodyAddRigidModes(p->bodies[i], rstart, rend, a));
+    for (PetscInt k = 0; k < 3; ++k) PetscCall(VecRestoreArray(v[k], &a[k]));
+    for (PetscInt k = 0; k < 3; ++k) { /* Gram-Schmidt within the body (bodies' modes are disjoint) */
+      PetscReal norm;
+      for (PetscInt j = first; j < n; ++j) {
+        PetscScalar d;
+        PetscCall(VecDot(v[k], modes[j], &d));
+        PetscCall(VecAXPY(v[k], -d, modes[j]));
+      }
+      PetscCall(VecNorm(v[k], NORM_2, &norm));
+      if (norm == 0.0) { /* a body without free dofs on the whole problem */
+        PetscCall(VecDestroy(&v[k]));
+        continue;
+      }
+      PetscCall(VecScale(v[k], 1.0 / norm));
+      modes[n++] = v[k];
+    }
+  }
+  PetscCall(MatNullSpaceCreate(p->comm, PETSC_FALSE, n, modes, &nsp));
+  PetscCall(MatSetNearNullSpace(p->H, nsp));
+  PetscCall(MatNullSpaceDestroy(&nsp));
+  for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
+  PetscCall(KSPSetType(ksp, KSPCG));
+  PetscCall(KSPSetTolerances(ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCGAMG));
+  PetscCall(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE));
+  PetscFunctionReturn(0);
+}

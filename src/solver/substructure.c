@@ -1,0 +1,820 @@
+/* Newton steps through the Schur complement on the contact surfaces, on any
+   number of ranks, by substructuring.
+
+   The cells of each rank form its subdomain r, with dofs D_r (the
+   unconstrained dofs of its cells, numbered as in the joined vector). A dof of
+   several subdomains is an interface dof; the interface dofs that are not on a
+   contact surface, G, and the contact-surface dofs c form the boundary
+   B = G + c, and D_r = I_r + B_r with interior dofs I_r that belong to r
+   alone (and are owned by r's rank: no other rank has them). The elastic
+   stiffness is the sum of the subdomain stiffnesses K^r, each assembled from
+   r's cells only,
+
+       K = sum_r R_r^T K^r R_r,     K^r = [ K^r_II  K^r_IB ]
+                                          [ K^r_BI  K^r_BB ],
+
+   and eliminating every I_r leaves the boundary Schur complement
+
+       S_B = sum_r R_Br^T S^r R_Br,     S^r = K^r_BB - K^r_BI (K^r_II)^-1 K^r_IB,
+
+   each S^r computed on its own rank by MUMPS, sequentially: K^r factored with
+   B_r as its Schur block (ICNTL(19)). Eliminating G from S_B (S_GG = L_G L_G^T)
+   leaves the Schur complement of K on the contact surfaces
+
+       S_K = S_cc - S_cG S_GG^-1 S_Gc = S_cc - W^T W,     W = L_G^-1 S_Gc,
+
+   the matrix schur.c takes from one factorisation of K on one rank. All of
+   this is done once per solve (K does not depend on u), and S_K is inverted
+   once. The Hessian is H = K + C with C in the cc block only, so a Newton
+   step H z = r is
+
+     1. condensation, each rank: g^r = -K^r_BI (K^r_II)^-1 r_I (MUMPS, ICNTL(26) = 1),
+        then g_B = r_B + sum_r R_Br^T g^r (one sum over ranks of |B| numbers);
+     2. every rank, dense: y = L_G^-1 g_G,  (S_K + C_cc) z_c = g_c - W^T y,
+        L_G^T z_G = y - W z_c;
+     3. expansion, each rank: z_I = (K^r_II)^-1 (r_I - K^r_IB z_B) (ICNTL(26) = 2).
+
+   r_I is read and z_I written where they are owned, with no communication.
+   The bodies are coupled only by contact, so S_B, S_K and G = S_K^-1 are
+   block diagonal by body: each body's block is summed onto one rank (body
+   b on rank b mod size), eliminated and inverted there, and broadcast; with
+   two bodies on two ranks the dense set-up work is split, not repeated, and
+   a quarter of what one block of both surfaces would cost. Per step, with
+   A the surface dofs the contact Hessian couples (the contact zone, a
+   fraction of c), the surface system (S_K + C_cc) z_c = g_c is solved by
+   the capacitance matrix: z_c = G (g_c - E_A C_AA z_A) with
+   (I + G_AA C_AA) z_A = (G g_c)_A, an LU factorisation of order |A| on
+   every rank (valid for the exact, indefinite contact Hessian too). The
+   sparse work of a step is one forward and one backward substitution per
+   subdomain, in parallel. MUMPS is called directly (dmumps_c): PETSc 3.18
+   does not expose its condensation and expansion phases, and through
+   MatSolve a step would cost two whole subdomain solves. */
+#include "substructure.h"
+#include <petscblaslapack.h>
+#include <dmumps_c.h>
+
+#define ICNTL(i) icntl[(i) - 1]
+#define INFOG(i) infog[(i) - 1]
+
+/* One body's part of the boundary: its interface dofs G_b and surface dofs
+   c_b (positions in B), the factor L_G of its S_GG, W = L_G^-1 S_Gc and
+   G = S_K^-1 (full), all on every rank. */
+typedef struct {
+  PetscInt     nG, nc;
+  PetscInt    *G, *c;
+  PetscScalar *LG, *W, *Ginv;
+  PetscScalar *y; /* [nG] work */
+} SubBody;
+
+typedef struct {
+  MPI_Comm comm, self; /* self: MUMPS's communicator, a duplicate of MPI_COMM_SELF */
+  PetscInt rstart;     /* first row of this rank in the joined vector */
+  /* the subdomain */
+  PetscInt       nD, nI, nBr;
+  PetscInt      *D;          /* [nD] joined-vector index of each subdomain dof, sorted */
+  PetscInt      *Iloc;       /* [nI] interior dofs: positions in D */
+  PetscInt      *Bloc, *Bpos; /* [nBr] boundary dofs: positions in D and in B */
+  PetscScalar   *rhs, *red;  /* [nD] right-hand side, then solution; [nBr] reduced right-hand side */
+  DMUMPS_STRUC_C mumps;
+  PetscBool      hasMumps;
+  /* the boundary B = G + c, on every rank; the bodies are coupled only by
+     contact, so S_B, S_K and everything dense is block diagonal by body */
+  PetscInt      nG, nc, nB;
+  PetscInt      nOwned;              /* boundary dofs owned by this rank */
+  PetscInt     *ownedPos, *ownedRow; /* their positions in B and rows in this rank's part of X */
+  PetscInt     *bBody, *bLocal;      /* [nB] body of each boundary dof, its position in the body's [G_b; c_b] */
+  PetscInt      nbodies;
+  SubBody       body[CONTACT_MAX_BODIES];
+  PetscScalar  *gB, *zc, *tmp;       /* [nB] g_B, then z_B; [nc] z_c; [2 nc] work */
+  IS            isc;
+  const PetscInt *surf; /* the contact-surface dofs (isc's indices, sorted) */
+  Mat           K;
+  /* the contact Hessian of the current step: its entries, its support A */
+  PetscInt      nC, nA, capC, capA;
+  PetscInt     *Ci, *Cj;  /* [nC] positions in A */
+  PetscScalar  *Cv;       /* [nC] */
+  PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
+  PetscScalar  *MA, *tA;  /* [nA x nA] LU of I + G_AA C_AA; [nA] work */
+  PetscBLASInt *ipiv;
+} SubCtx;
+
+static PetscLogEvent SubFactor = 0, SubInterface, SubStep, SubSolve;
+
+static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
+{
+  PetscFunctionBeginUser;
+  ctx->mumps.job = job;
+  dmumps_c(&ctx->mumps);
+  PetscCheck(ctx->mumps.INFOG(1) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "MUMPS on a subdomain (job %d): INFOG(1) = %d, INFOG(2) = %d", (int)job, (int)ctx->mumps.INFOG(1), (int)ctx->mumps.INFOG(2));
+  PetscFunctionReturn(0);
+}
+
+/* The body of each boundary dof (G[] then the surface dofs, joined-vector
+   indices): the body whose block of its owner's rows holds it (every rank
+   knows every rank's row range and body offsets); each body's lists G_b,
+   c_b of positions in B, and each boundary dof's position in its body's
+   [G_b; c_b]. */
+static PetscErrorCode SubSetUpBodies(Problem p, SubCtx *ctx, const PetscInt G[], const PetscInt surf[])
+{
+  const PetscInt *ranges;
+  PetscInt       *offs, nb = p->nbodies;
+  PetscMPIInt     size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(VecGetOwnershipRanges(p->X, &ranges));
+  PetscCall(PetscMalloc1(size * nb, &offs));
+  PetscCallMPI(MPI_Allgather(p->offset, (PetscMPIInt)nb, MPIU_INT, offs, (PetscMPIInt)nb, MPIU_INT, ctx->comm));
+  ctx->nbodies = nb;
+  PetscCall(PetscMalloc2(ctx->nB, &ctx->bBody, ctx->nB, &ctx->bLocal));
+  for (PetscInt k = 0; k < ctx->nB; ++k) {
+    const PetscInt g = k < ctx->nG ? G[k] : surf[k - ctx->nG];
+    PetscMPIInt    q = 0;
+    PetscInt       b = 0;
+
+    while (g >= ranges[q + 1]) ++q;
+    while (b + 1 < nb && g - ranges[q] >= offs[q * nb + b + 1]) ++b;
+    ctx->bBody[k] = b;
+    if (k < ctx->nG) ctx->body[b].nG++;
+    else ctx->body[b].nc++;
+  }
+  PetscCall(PetscFree(offs));
+  for (PetscInt b = 0; b < nb; ++b) {
+    SubBody *B = &ctx->body[b];
+    PetscCall(PetscMalloc3(B->nG + 1, &B->G, B->nc + 1, &B->c, B->nG + 1, &B->y));
+    B->nG = B->nc = 0;
+  }
+  for (PetscInt k = 0; k < ctx->nB; ++k) {
+    SubBody *B = &ctx->body[ctx->bBody[k]];
+    if (k < ctx->nG) {
+      ctx->bLocal[k]  = B->nG;
+      B->G[B->nG++] = k;
+    } else B->c[B->nc++] = k;
+  }
+  for (PetscInt k = ctx->nG; k < ctx->nB; ++k) { /* c_b after G_b in the body's ordering */
+    SubBody *B = &ctx->body[ctx->bBody[k]];
+    PetscInt j;
+    PetscCall(PetscFindInt(k, B->nc, B->c, &j));
+    ctx->bLocal[k] = B->nG + j;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* D_r, its interior and boundary parts, the interface G (gathered on every
+   rank, sorted) and the positions of the boundary dofs in B. A dof is on the
+   interface if another subdomain has it: it is a ghost here, or the sum over
+   ranks of the subdomains holding it exceeds one. */
+static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
+{
+  PetscInt           n = 0, rend, nsurf, ngown = 0, nI = 0, nBr = 0, nOwned = 0;
+  const PetscInt    *surf;
+  PetscInt          *gown, *onB;
+  PetscScalar       *ones;
+  const PetscScalar *cnt;
+  Vec                count;
+  PetscMPIInt        size, ngownm, *counts, *displs;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscInt nl;
+    PetscCall(VecGetLocalSize(p->bodies[i]->Xl, &nl));
+    for (PetscInt k = 0; k < nl; ++k) n += p->bodies[i]->l2b[k] >= 0;
+  }
+  PetscCall(PetscMalloc1(n + 1, &ctx->D));
+  n = 0;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscInt nl;
+    PetscCall(VecGetLocalSize(p->bodies[i]->Xl, &nl));
+    for (PetscInt k = 0; k < nl; ++k)
+      if (p->bodies[i]->l2b[k] >= 0) ctx->D[n++] = p->bodies[i]->l2b[k];
+  }
+  PetscCall(PetscSortRemoveDupsInt(&n, ctx->D));
+  ctx->nD = n;
+
+  PetscCall(VecDuplicate(p->X, &count));
+  PetscCall(VecZeroEntries(count));
+  PetscCall(PetscMalloc1(n + 1, &ones));
+  for (PetscInt k = 0; k < n; ++k) ones[k] = 1.0;
+  PetscCall(VecSetValues(count, n, ctx->D, ones, ADD_VALUES));
+  PetscCall(PetscFree(ones));
+  PetscCall(VecAssemblyBegin(count));
+  PetscCall(VecAssemblyEnd(count));
+  PetscCall(VecGetOwnershipRange(p->X, &ctx->rstart, &rend));
+  PetscCall(ISGetLocalSize(ctx->isc, &nsurf));
+  surf = ctx->surf;
+  PetscCall(PetscMalloc2(n + 1, &onB, n + 1, &gown));
+  PetscCall(VecGetArrayRead(count, &cnt));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscInt  g     = ctx->D[k];
+    const PetscBool owned = (PetscBool)(g >= ctx->rstart && g < rend);
+    const PetscBool shared = (PetscBool)(!owned || PetscRealPart(cnt[g - ctx->rstart]) > 1.5);
+    PetscInt        loc;
+
+    PetscCall(PetscFindInt(g, nsurf, surf, &loc));
+    onB[k] = shared || loc >= 0;
+    if (owned && shared && loc < 0) gown[ngown++] = g;
+    nBr += onB[k];
+    nOwned += onB[k] && owned;
+  }
+  PetscCall(VecRestoreArrayRead(count, &cnt));
+  PetscCall(VecDestroy(&count));
+
+  /* G on every rank: each interface dof is owned by one rank, and the ranks'
+     rows ascend, so the concatenation is sorted */
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
+  PetscCall(PetscMPIIntCast(ngown, &ngownm));
+  PetscCallMPI(MPI_Allgather(&ngownm, 1, MPI_INT, counts, 1, MPI_INT, ctx->comm));
+  displs[0] = 0;
+  for (PetscMPIInt q = 0; q < size; ++q) displs[q + 1] = displs[q] + counts[q];
+  ctx->nG = displs[size];
+  ctx->nc = nsurf;
+  ctx->nB = ctx->nG + ctx->nc;
+  {
+    PetscInt *G;
+    PetscCall(PetscMalloc1(ctx->nG + 1, &G));
+    PetscCallMPI(MPI_Allgatherv(gown, ngownm, MPIU_INT, G, counts, displs, MPIU_INT, ctx->comm));
+
+    nI = n - nBr;
+    ctx->nI = nI;
+    ctx->nBr = nBr;
+    ctx->nOwned = nOwned;
+    PetscCall(PetscMalloc3(nI + 1, &ctx->Iloc, nBr + 1, &ctx->Bloc, nBr + 1, &ctx->Bpos));
+    PetscCall(PetscMalloc2(nOwned + 1, &ctx->ownedPos, nOwned + 1, &ctx->ownedRow));
+    nI = nBr = nOwned = 0;
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscInt g = ctx->D[k];
+      PetscInt       pos;
+
+      if (!onB[k]) {
+        ctx->Iloc[nI++] = k;
+        continue;
+      }
+      PetscCall(PetscFindInt(g, ctx->nG, G, &pos));
+      if (pos < 0) {
+        PetscCall(PetscFindInt(g, nsurf, surf, &pos));
+        pos += ctx->nG;
+      }
+      ctx->Bloc[nBr]   = k;
+      ctx->Bpos[nBr++] = pos;
+      if (g >= ctx->rstart && g < rend) {
+        ctx->ownedPos[nOwned]   = pos;
+        ctx->ownedRow[nOwned++] = g - ctx->rstart;
+      }
+    }
+    PetscCall(SubSetUpBodies(p, ctx, G, surf));
+    PetscCall(PetscFree(G));
+  }
+  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree2(onB, gown));
+  PetscCall(PetscMalloc2(ctx->nD + 1, &ctx->rhs, ctx->nBr + 1, &ctx->red));
+  PetscFunctionReturn(0);
+}
+
+/* K^r: the element stiffnesses of this rank's cells, at positions in D. Rows
+   are preallocated with 2 nb columns per cell that touches them (an upper
+   bound; the excess is squeezed out at assembly). On one rank the subdomain
+   is the whole problem, D numbers the joined vector as it is, and K^r is K
+   (with the surface block's explicit zeros, which SubFactorSubdomain drops). */
+static PetscErrorCode SubAssembleStiffness(Problem p, SubCtx *ctx, Mat *Kr)
+{
+  PetscInt   *map[CONTACT_MAX_BODIES], *nnz;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  if (size == 1) {
+    PetscCall(PetscObjectReference((PetscObject)p->K));
+    *Kr = p->K;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscCalloc1(ctx->nD + 1, &nnz));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body     b = p->bodies[i];
+    PetscInt nl;
+
+    PetscCall(VecGetLocalSize(b->Xl, &nl));
+    PetscCall(PetscMalloc1(nl + 1, &map[i]));
+    for (PetscInt k = 0; k < nl; ++k) {
+      map[i][k] = -1;
+      if (b->l2b[k] >= 0) PetscCall(PetscFindInt(b->l2b[k], ctx->nD, ctx->D, &map[i][k]));
+    }
+    for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
+      for (PetscInt d = 0; d < 2; ++d) {
+        const PetscInt row = map[i][b->cdof[k] + d];
+        if (row >= 0) nnz[row] += 2 * b->nb;
+      }
+  }
+  for (PetscInt r = 0; r < ctx->nD; ++r) nnz[r] = PetscMin(nnz[r], ctx->nD);
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, ctx->nD, ctx->nD, 0, nnz, Kr));
+  PetscCall(PetscFree(nnz));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscCall(BodyAssembleHessianMapped(p->bodies[i], map[i], *Kr));
+    PetscCall(PetscFree(map[i]));
+  }
+  PetscCall(MatAssemblyBegin(*Kr, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*Kr, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* S^r (nBr x nBr, column-major; its lower triangle is set). MUMPS factors K^r
+   (its upper triangle less explicit zeros; SPD: the interior block of a
+   subdomain is held by the boundary or by Dirichlet conditions) with B_r as
+   the Schur block. Without interior dofs S^r is K^r itself. */
+static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
+{
+  const PetscInt    *ia, *ja;
+  const PetscScalar *v;
+  PetscInt           n;
+  PetscBool          done;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetRowIJ(Kr, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_LIB, "MatGetRowIJ failed on the subdomain stiffness");
+  PetscCall(MatSeqAIJGetArrayRead(Kr, &v));
+  if (!ctx->nI) {
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) Sr[i * n + ja[k]] = v[k];
+  } else {
+    MUMPS_INT   *irn, *jcn;
+    PetscScalar *a;
+    PetscInt     nz = 0;
+
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) nz += ja[k] == i || (ja[k] > i && v[k] != 0.0);
+    PetscCall(PetscMalloc3(nz, &irn, nz, &jcn, nz, &a));
+    nz = 0;
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt k = ia[i]; k < ia[i + 1]; ++k)
+        if (ja[k] == i || (ja[k] > i && v[k] != 0.0)) {
+          irn[nz]  = (MUMPS_INT)(i + 1);
+          jcn[nz]  = (MUMPS_INT)(ja[k] + 1);
+          a[nz++] = v[k];
+        }
+    PetscCallMPI(MPI_Comm_dup(PETSC_COMM_SELF, &ctx->self));
+    ctx->mumps.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(ctx->self);
+    ctx->mumps.par          = 1;
+    ctx->mumps.sym          = 1;
+    PetscCall(SubMumps(ctx, -1));
+    ctx->hasMumps         = PETSC_TRUE;
+    ctx->mumps.ICNTL(1)   = -1; /* errors are read from INFOG and reported by PETSc */
+    ctx->mumps.ICNTL(2)   = -1;
+    ctx->mumps.ICNTL(3)   = -1;
+    ctx->mumps.ICNTL(4)   = 0;
+    ctx->mumps.n          = (MUMPS_INT)n;
+    ctx->mumps.nnz        = (MUMPS_INT8)nz;
+    ctx->mumps.irn        = irn;
+    ctx->mumps.jcn        = jcn;
+    ctx->mumps.a          = a;
+    if (ctx->nBr) {
+      PetscCall(PetscMalloc1(ctx->nBr, &ctx->mumps.listvar_schur));
+      for (PetscInt k = 0; k < ctx->nBr; ++k) ctx->mumps.listvar_schur[k] = (MUMPS_INT)(ctx->Bloc[k] + 1);
+      ctx->mumps.ICNTL(19)  = 2; /* the lower triangle, by columns */
+      ctx->mumps.size_schur = (MUMPS_INT)ctx->nBr;
+      ctx->mumps.schur_lld  = (MUMPS_INT)ctx->nBr;
+      ctx->mumps.schur      = Sr;
+    }
+    /* analysis, then factorisation; MUMPS's workspace estimate can fall short
+       (INFOG(1) = -8, -9: small subdomains whose boundary is most of them),
+       so the relaxation ICNTL(14) is doubled and the factorisation redone. A
+       rank's failure is reported on every rank (ContactSubstructurePCSetUp). */
+    ctx->mumps.job = 1;
+    dmumps_c(&ctx->mumps);
+    for (PetscInt attempt = 0; ctx->mumps.INFOG(1) >= 0 && attempt < 8; ++attempt) {
+      ctx->mumps.job = 2;
+      dmumps_c(&ctx->mumps);
+      if (ctx->mumps.INFOG(1) != -8 && ctx->mumps.INFOG(1) != -9) break;
+      PetscCall(PetscInfo(NULL, "MUMPS workspace too small (INFOG(1) = %d): ICNTL(14) %d -> %d\n", (int)ctx->mumps.INFOG(1), (int)ctx->mumps.ICNTL(14), (int)(2 * ctx->mumps.ICNTL(14))));
+      ctx->mumps.INFOG(1) = 0;
+      ctx->mumps.ICNTL(14) *= 2;
+    }
+    PetscCall(PetscFree3(irn, jcn, a));
+    ctx->mumps.irn = ctx->mumps.jcn = NULL;
+    ctx->mumps.a   = NULL;
+    ctx->mumps.schur = NULL;
+    PetscCall(PetscLogFlops(ctx->mumps.rinfog[2]));
+    PetscCall(PetscInfo(NULL, "subdomain factor: %lld entries, %g flops (ordering %d)\n", (long long)ctx->mumps.INFOG(29), (double)ctx->mumps.rinfog[2], (int)ctx->mumps.INFOG(7)));
+  }
+  PetscCall(MatSeqAIJRestoreArrayRead(Kr, &v));
+  PetscCall(MatRestoreRowIJ(Kr, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscFunctionReturn(0);
+}
+
+/* Each body's block of S_B, summed over ranks onto the rank that owns the
+   body's dense work (body b on rank b mod size), where its interface is
+   eliminated (L_G, W, S_K) and S_K inverted (potrf, potri); the results are
+   then broadcast to every rank. The blocks are independent: no redundant
+   dense work while there are at least as many bodies as ranks. */
+static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
+{
+  const PetscInt    nBr = ctx->nBr;
+  PetscScalar      *SB[CONTACT_MAX_BODIES];
+  PetscMPIInt       rank, size;
+  const PetscScalar one = 1.0, mone = -1.0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    const PetscInt nb = ctx->body[b].nG + ctx->body[b].nc;
+    PetscCall(PetscCalloc1(nb * nb + 1, &SB[b]));
+  }
+  for (PetscInt j = 0; j < nBr; ++j)
+    for (PetscInt i = j; i < nBr; ++i) {
+      const PetscScalar s  = Sr[j * nBr + i];
+      const PetscInt    bi = ctx->Bpos[i], bj = ctx->Bpos[j], b = ctx->bBody[bi];
+      const PetscInt    nb = ctx->body[b].nG + ctx->body[b].nc, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+
+      if (ctx->bBody[bj] != b) continue; /* the bodies' stiffnesses do not couple */
+      SB[b][lj * nb + li] += s;
+      if (i != j) SB[b][li * nb + lj] += s;
+    }
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* every body's block onto its root first, */
+    const PetscInt    nb   = ctx->body[b].nG + ctx->body[b].nc;
+    const PetscMPIInt root = (PetscMPIInt)(b % size);
+    for (PetscInt off = 0; off < nb * nb; off += PETSC_MPI_INT_MAX / 2) {
+      PetscMPIInt len;
+      PetscCall(PetscMPIIntCast(PetscMin(nb * nb - off, PETSC_MPI_INT_MAX / 2), &len));
+      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + off, SB[b] + off, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
+    }
+  }
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* then the roots work at once, */
+    SubBody       *B  = &ctx->body[b];
+    const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
+    PetscBLASInt   bG, bc, info;
+
+    PetscCall(PetscInfo(NULL, "body %" PetscInt_FMT ": %" PetscInt_FMT " interface and %" PetscInt_FMT " surface dofs, dense work on rank %d\n", b, nG, nc, (int)(b % size)));
+
+    PetscCall(PetscMalloc3(nG * nG + 1, &B->LG, nG * nc + 1, &B->W, nc * nc + 1, &B->Ginv));
+    if (rank == (PetscMPIInt)(b % size)) {
+      PetscCall(PetscBLASIntCast(nG, &bG));
+      PetscCall(PetscBLASIntCast(nc, &bc));
+      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG, SB[b] + j * nb, nG));
+      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + (nG + j) * nb, nG));
+      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->Ginv + j * nc, SB[b] + (nG + j) * nb + nG, nc));
+      if (nG) {
+        PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, B->LG, &bG, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "interface Schur complement not positive definite (potrf info %d)", (int)info);
+        if (nc) {
+          PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &bc, &one, B->LG, &bG, B->W, &bG));
+          PetscCallBLAS("BLASsyrk", BLASsyrk_("L", "T", &bc, &bG, &mone, B->W, &bG, &one, B->Ginv, &bc));
+        }
+        PetscCall(PetscLogFlops((double)nG * nG * nG / 3.0 + (double)nG * nG * nc + (double)nc * nc * nG));
+      }
+      if (nc) {
+        PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bc, B->Ginv, &bc, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "Schur complement of the stiffness on the contact surfaces not positive definite (potrf info %d)", (int)info);
+        PetscCallBLAS("LAPACKpotri", LAPACKpotri_("L", &bc, B->Ginv, &bc, &info));
+        PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "potri info %d", (int)info);
+        for (PetscInt j = 0; j < nc; ++j)
+          for (PetscInt i = j + 1; i < nc; ++i) B->Ginv[i * nc + j] = B->Ginv[j * nc + i];
+        PetscCall(PetscLogFlops((double)nc * nc * nc));
+      }
+    }
+    PetscCall(PetscFree(SB[b]));
+  }
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* and every rank receives every body's */
+    SubBody          *B    = &ctx->body[b];
+    const PetscMPIInt root = (PetscMPIInt)(b % size);
+    PetscMPIInt       n[3];
+    PetscCall(PetscMPIIntCast(B->nG * B->nG, &n[0]));
+    PetscCall(PetscMPIIntCast(B->nG * B->nc, &n[1]));
+    PetscCall(PetscMPIIntCast(B->nc * B->nc, &n[2]));
+    PetscCallMPI(MPI_Bcast(B->LG, n[0], MPIU_SCALAR, root, ctx->comm));
+    PetscCallMPI(MPI_Bcast(B->W, n[1], MPIU_SCALAR, root, ctx->comm));
+    PetscCallMPI(MPI_Bcast(B->Ginv, n[2], MPIU_SCALAR, root, ctx->comm));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The entries of the contact Hessian, C = H - K on the surface block (the
+   two share one nonzero pattern), from the rows this rank owns, gathered on
+   every rank in rank order; A, the surface dofs they couple. */
+static PetscErrorCode SubGatherContactHessian(SubCtx *ctx, Mat H)
+{
+  PetscInt     rstart, rend, n = 0, cap = 16, nall;
+  PetscInt    *ij;
+  PetscScalar *v, *kv = NULL;
+  PetscInt     kcap = 0;
+  PetscMPIInt  size, nm, *counts, *displs;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  PetscCall(PetscMalloc2(2 * cap, &ij, cap, &v));
+  for (PetscInt r = 0; r < ctx->nc; ++r) {
+    const PetscInt     g = ctx->surf[r];
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscInt           nk, nh, nkept;
+
+    if (g < rstart || g >= rend) continue;
+    PetscCall(MatGetRow(ctx->K, g, &nk, NULL, &vals));
+    if (nk > kcap) {
+      PetscCall(PetscFree(kv));
+      kcap = nk;
+      PetscCall(PetscMalloc1(kcap, &kv));
+    }
+    PetscCall(PetscArraycpy(kv, vals, nk));
+    nkept = nk;
+    PetscCall(MatRestoreRow(ctx->K, g, &nk, NULL, &vals)); /* zeroes nk */
+    nk = nkept;
+    PetscCall(MatGetRow(H, g, &nh, &cols, &vals));
+    PetscCheck(nh == nk, PETSC_COMM_SELF, PETSC_ERR_PLIB, "row %" PetscInt_FMT " of the Hessian has %" PetscInt_FMT " entries, of the stiffness %" PetscInt_FMT ": the contact Hessian left the surface block", g, nh, nk);
+    for (PetscInt k = 0; k < nh; ++k) {
+      const PetscScalar c = vals[k] - kv[k];
+      PetscInt          pos;
+
+      if (c == 0.0) continue;
+      PetscCall(PetscFindInt(cols[k], ctx->nc, ctx->surf, &pos));
+      PetscCheck(pos >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the contact Hessian couples dof %" PetscInt_FMT " with %" PetscInt_FMT ", outside the contact surfaces", g, cols[k]);
+      if (n == cap) {
+        PetscInt    *ij2;
+        PetscScalar *v2;
+        PetscCall(PetscMalloc2(4 * cap, &ij2, 2 * cap, &v2));
+        PetscCall(PetscArraycpy(ij2, ij, 2 * n));
+        PetscCall(PetscArraycpy(v2, v, n));
+        PetscCall(PetscFree2(ij, v));
+        ij = ij2;
+        v  = v2;
+        cap *= 2;
+      }
+      ij[2 * n]     = r;
+      ij[2 * n + 1] = pos;
+      v[n++]        = c;
+    }
+    PetscCall(MatRestoreRow(H, g, &nh, &cols, &vals));
+  }
+  PetscCall(PetscFree(kv));
+
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(PetscMalloc2(size, &counts, size + 1, &displs));
+  PetscCall(PetscMPIIntCast(n, &nm));
+  PetscCallMPI(MPI_Allgather(&nm, 1, MPI_INT, counts, 1, MPI_INT, ctx->comm));
+  displs[0] = 0;
+  for (PetscMPIInt q = 0; q < size; ++q) displs[q + 1] = displs[q] + counts[q];
+  nall = displs[size];
+  if (nall > ctx->capC) {
+    PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
+    ctx->capC = nall;
+    PetscCall(PetscMalloc3(nall, &ctx->Ci, nall, &ctx->Cj, nall, &ctx->Cv));
+  }
+  ctx->nC = nall;
+  PetscCallMPI(MPI_Allgatherv(v, nm, MPIU_SCALAR, ctx->Cv, counts, displs, MPIU_SCALAR, ctx->comm));
+  for (PetscMPIInt q = 0; q <= size; ++q) {
+    if (q < size) counts[q] *= 2;
+    displs[q] *= 2;
+  }
+  {
+    PetscInt *all;
+    PetscCall(PetscMalloc1(2 * nall + 1, &all));
+    PetscCallMPI(MPI_Allgatherv(ij, 2 * nm, MPIU_INT, all, counts, displs, MPIU_INT, ctx->comm));
+    for (PetscInt k = 0; k < ctx->nc; ++k) ctx->inA[k] = -1;
+    ctx->nA = 0;
+    for (PetscInt k = 0; k < 2 * nall; ++k) ctx->inA[all[k]] = 0;
+    for (PetscInt k = 0; k < ctx->nc; ++k)
+      if (!ctx->inA[k]) {
+        ctx->inA[k]        = ctx->nA;
+        ctx->A[ctx->nA++] = k;
+      }
+    for (PetscInt k = 0; k < nall; ++k) {
+      ctx->Ci[k] = ctx->inA[all[2 * k]];
+      ctx->Cj[k] = ctx->inA[all[2 * k + 1]];
+    }
+    PetscCall(PetscFree(all));
+  }
+  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree2(ij, v));
+  PetscFunctionReturn(0);
+}
+
+/* Per Newton step, on every rank: the contact Hessian's entries and support
+   A, and the LU factors of the capacitance matrix I + G_AA C_AA (|A| is the
+   part of the surfaces in contact, a fraction of |c|). With z_c = G (g_c -
+   E_A C_AA z_A) (E_A: A into c), the surface system (S_K + C_cc) z_c = g_c
+   becomes (I + G_AA C_AA) z_A = (G g_c)_A. LU with partial pivoting holds
+   for the Gauss-Newton and the (indefinite) exact contact Hessian alike. */
+static PetscErrorCode SubPCSetUp(PC pc)
+{
+  SubCtx      *ctx;
+  Mat          H;
+  PetscBLASInt bA, info;
+  PetscInt     nA;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  PetscCall(PCGetOperators(pc, NULL, &H));
+  PetscCall(PetscLogEventBegin(SubStep, 0, 0, 0, 0));
+  PetscCall(SubGatherContactHessian(ctx, H));
+  nA = ctx->nA;
+  if (nA > ctx->capA) {
+    PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+    ctx->capA = nA;
+    PetscCall(PetscMalloc3(nA * nA, &ctx->MA, nA, &ctx->tA, nA, &ctx->ipiv));
+  }
+  PetscCall(PetscArrayzero(ctx->MA, nA * nA));
+  for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
+  for (PetscInt k = 0; k < ctx->nC; ++k) { /* column Cj += C_k (G restricted to A)'s column Ci; G is block diagonal by body */
+    const PetscInt     ck  = ctx->nG + ctx->A[ctx->Ci[k]], b = ctx->bBody[ck];
+    const SubBody     *B   = &ctx->body[b];
+    const PetscScalar *Gk  = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
+    PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
+    const PetscScalar  c   = ctx->Cv[k];
+    for (PetscInt a = 0; a < nA; ++a) {
+      const PetscInt ca = ctx->nG + ctx->A[a];
+      if (ctx->bBody[ca] == b) col[a] += Gk[ctx->bLocal[ca] - B->nG] * c;
+    }
+  }
+  PetscCall(PetscBLASIntCast(nA, &bA));
+  if (nA) {
+    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bA, &bA, ctx->MA, &bA, ctx->ipiv, &info));
+    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "the surface block of the Hessian is singular (getrf info %d)", (int)info);
+  }
+  PetscCall(PetscInfo(pc, "contact Hessian: %" PetscInt_FMT " entries coupling %" PetscInt_FMT " of %" PetscInt_FMT " surface dofs\n", ctx->nC, nA, ctx->nc));
+  PetscCall(PetscLogFlops(2.0 * ctx->nC * nA + 2.0 / 3.0 * nA * nA * nA));
+  PetscCall(PetscLogEventEnd(SubStep, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
+{
+  SubCtx            *ctx;
+  const PetscScalar *ra;
+  PetscScalar       *za, *gB;
+  PetscBLASInt       one_i = 1, info;
+  PetscMPIInt        nBm;
+  const PetscScalar  one = 1.0, mone = -1.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  PetscCall(PetscLogEventBegin(SubSolve, 0, 0, 0, 0));
+  gB = ctx->gB;
+  PetscCall(VecGetArrayRead(r, &ra));
+  PetscCall(PetscArrayzero(ctx->rhs, ctx->nD));
+  for (PetscInt k = 0; k < ctx->nI; ++k) ctx->rhs[ctx->Iloc[k]] = ra[ctx->D[ctx->Iloc[k]] - ctx->rstart];
+  PetscCall(PetscArrayzero(gB, ctx->nB));
+  if (ctx->nI && ctx->nBr) { /* condensation */
+    ctx->mumps.nrhs      = 1;
+    ctx->mumps.lrhs      = (MUMPS_INT)ctx->nD;
+    ctx->mumps.rhs       = ctx->rhs;
+    ctx->mumps.redrhs    = ctx->red;
+    ctx->mumps.lredrhs   = (MUMPS_INT)ctx->nBr;
+    ctx->mumps.ICNTL(26) = 1;
+    PetscCall(SubMumps(ctx, 3));
+    for (PetscInt k = 0; k < ctx->nBr; ++k) gB[ctx->Bpos[k]] += ctx->red[k];
+  }
+  for (PetscInt k = 0; k < ctx->nOwned; ++k) gB[ctx->ownedPos[k]] += ra[ctx->ownedRow[k]];
+  PetscCall(VecRestoreArrayRead(r, &ra));
+  PetscCall(PetscMPIIntCast(ctx->nB, &nBm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, gB, nBm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
+  /* per body: y = L_G^-1 g_G, g_c -= W^T y, z_c = G g_c */
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bG, bc;
+    PetscScalar *t = ctx->tmp, zero = 0.0;
+
+    PetscCall(PetscBLASIntCast(B->nG, &bG));
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    if (B->nG) {
+      for (PetscInt i = 0; i < B->nG; ++i) B->y[i] = gB[B->G[i]];
+      PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
+      if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("T", &bG, &bc, &mone, B->W, &bG, B->y, &one_i, &one, t, &one_i));
+    }
+    if (B->nc) {
+      PetscScalar *zcb = t + B->nc;
+      PetscCallBLAS("BLASgemv", BLASgemv_("N", &bc, &bc, &one, B->Ginv, &bc, t, &one_i, &zero, zcb, &one_i));
+      for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] = zcb[j];
+    }
+  }
+  if (ctx->nA) { /* z_c -= G E_A C_AA z_A, (I + G_AA C_AA) z_A = (G g_c)_A */
+    PetscScalar *w = ctx->tmp;
+    PetscBLASInt bA;
+
+    PetscCall(PetscBLASIntCast(ctx->nA, &bA));
+    for (PetscInt a = 0; a < ctx->nA; ++a) ctx->tA[a] = ctx->zc[ctx->A[a]];
+    PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &bA, &one_i, ctx->MA, &bA, ctx->ipiv, ctx->tA, &bA, &info));
+    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "getrs info %d", (int)info);
+    PetscCall(PetscArrayzero(w, ctx->nA));
+    for (PetscInt k = 0; k < ctx->nC; ++k) w[ctx->Ci[k]] += ctx->Cv[k] * ctx->tA[ctx->Cj[k]];
+    for (PetscInt a = 0; a < ctx->nA; ++a) {
+      const PetscInt     ca = ctx->nG + ctx->A[a];
+      const SubBody     *B  = &ctx->body[ctx->bBody[ca]];
+      const PetscScalar *Ga = B->Ginv + (ctx->bLocal[ca] - B->nG) * B->nc;
+      if (w[a] != 0.0)
+        for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] -= w[a] * Ga[j];
+    }
+  }
+  PetscCall(PetscArraycpy(gB + ctx->nG, ctx->zc, ctx->nc));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* z_G = L_G^-T (y - W z_c) */
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bG, bc;
+    PetscScalar *t = ctx->tmp;
+
+    if (!B->nG) continue;
+    PetscCall(PetscBLASIntCast(B->nG, &bG));
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("N", &bG, &bc, &mone, B->W, &bG, t, &one_i, &one, B->y, &one_i));
+    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "T", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
+    for (PetscInt i = 0; i < B->nG; ++i) gB[B->G[i]] = B->y[i];
+  }
+  if (ctx->nI) { /* expansion (or, with no boundary, the subdomain's own solve) */
+    for (PetscInt k = 0; k < ctx->nBr; ++k) ctx->red[k] = gB[ctx->Bpos[k]];
+    ctx->mumps.nrhs      = 1;
+    ctx->mumps.lrhs      = (MUMPS_INT)ctx->nD;
+    ctx->mumps.rhs       = ctx->rhs;
+    ctx->mumps.redrhs    = ctx->red;
+    ctx->mumps.lredrhs   = (MUMPS_INT)ctx->nBr;
+    ctx->mumps.ICNTL(26) = ctx->nBr ? 2 : 0;
+    PetscCall(SubMumps(ctx, 3));
+  }
+  PetscCall(VecGetArray(z, &za));
+  for (PetscInt k = 0; k < ctx->nI; ++k) za[ctx->D[ctx->Iloc[k]] - ctx->rstart] = ctx->rhs[ctx->Iloc[k]];
+  for (PetscInt k = 0; k < ctx->nOwned; ++k) za[ctx->ownedRow[k]] = gB[ctx->ownedPos[k]];
+  PetscCall(VecRestoreArray(z, &za));
+  PetscCall(PetscLogFlops(2.0 * ctx->nc * ctx->nc + 2.0 * ctx->nc * ctx->nA + 2.0 * ctx->nG * ctx->nG + 4.0 * ctx->nG * ctx->nc));
+  PetscCall(PetscLogEventEnd(SubSolve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SubPCDestroy(PC pc)
+{
+  SubCtx *ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  if (ctx->hasMumps) {
+    PetscCall(SubMumps(ctx, -2));
+    PetscCall(PetscFree(ctx->mumps.listvar_schur));
+    PetscCallMPI(MPI_Comm_free(&ctx->self));
+  }
+  PetscCall(ISRestoreIndices(ctx->isc, &ctx->surf));
+  PetscCall(ISDestroy(&ctx->isc));
+  PetscCall(PetscFree(ctx->D));
+  PetscCall(PetscFree3(ctx->Iloc, ctx->Bloc, ctx->Bpos));
+  PetscCall(PetscFree2(ctx->ownedPos, ctx->ownedRow));
+  PetscCall(PetscFree2(ctx->rhs, ctx->red));
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    PetscCall(PetscFree3(ctx->body[b].G, ctx->body[b].c, ctx->body[b].y));
+    PetscCall(PetscFree3(ctx->body[b].LG, ctx->body[b].W, ctx->body[b].Ginv));
+  }
+  PetscCall(PetscFree2(ctx->bBody, ctx->bLocal));
+  PetscCall(PetscFree3(ctx->gB, ctx->zc, ctx->tmp));
+  PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
+  PetscCall(PetscFree2(ctx->A, ctx->inA));
+  PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+  PetscCall(MatDestroy(&ctx->K));
+  PetscCall(PetscFree(ctx));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
+{
+  SubCtx      *ctx;
+  Mat          Kr;
+  PetscScalar *Sr;
+
+  PetscFunctionBeginUser;
+  if (!SubFactor) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactSubstructure", &id));
+    PetscCall(PetscLogEventRegister("SubstrFactor", id, &SubFactor));
+    PetscCall(PetscLogEventRegister("SubstrInterface", id, &SubInterface));
+    PetscCall(PetscLogEventRegister("SubstrStep", id, &SubStep));
+    PetscCall(PetscLogEventRegister("SubstrSolve", id, &SubSolve));
+  }
+  PetscCall(PetscNew(&ctx));
+  ctx->comm = p->comm;
+  PetscCall(PetscObjectReference((PetscObject)p->surfaceDofs));
+  ctx->isc = p->surfaceDofs;
+  PetscCall(ISGetIndices(ctx->isc, &ctx->surf));
+  PetscCall(PetscObjectReference((PetscObject)p->K));
+  ctx->K = p->K;
+  PetscCall(PetscLogEventBegin(SubFactor, 0, 0, 0, 0));
+  PetscCall(SubSetUpDofs(p, ctx));
+  PetscCall(PetscInfo(NULL, "subdomain: %" PetscInt_FMT " dofs, %" PetscInt_FMT " interior, %" PetscInt_FMT " boundary; interface %" PetscInt_FMT ", contact surfaces %" PetscInt_FMT " dofs\n", ctx->nD, ctx->nI, ctx->nBr, ctx->nG, ctx->nc));
+  PetscCall(SubAssembleStiffness(p, ctx, &Kr));
+  PetscCall(PetscCalloc1(ctx->nBr * ctx->nBr + 1, &Sr));
+  PetscCall(SubFactorSubdomain(ctx, Kr, Sr));
+  PetscCall(MatDestroy(&Kr));
+  {
+    PetscMPIInt info[2] = {ctx->hasMumps ? (PetscMPIInt)ctx->mumps.INFOG(1) : 0, 0}, worst[2];
+    PetscCallMPI(MPI_Comm_rank(ctx->comm, &info[1]));
+    PetscCallMPI(MPI_Allreduce(info, worst, 1, MPI_2INT, MPI_MINLOC, ctx->comm));
+    PetscCheck(worst[0] >= 0, ctx->comm, PETSC_ERR_LIB, "MUMPS failed on the subdomain of rank %d: INFOG(1) = %d", worst[1], worst[0]);
+  }
+  PetscCall(PetscLogEventEnd(SubFactor, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubInterface, 0, 0, 0, 0));
+  PetscCall(SubCondenseInterface(ctx, Sr));
+  PetscCall(PetscFree(Sr));
+  PetscCall(PetscMalloc3(ctx->nB + 1, &ctx->gB, ctx->nc + 1, &ctx->zc, 2 * ctx->nc + 1, &ctx->tmp));
+  PetscCall(PetscMalloc2(ctx->nc, &ctx->A, ctx->nc, &ctx->inA));
+  PetscCall(PetscLogEventEnd(SubInterface, 0, 0, 0, 0));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, ctx));
+  PetscCall(PCShellSetSetUp(pc, SubPCSetUp));
+  PetscCall(PCShellSetApply(pc, SubPCApply));
+  PetscCall(PCShellSetDestroy(pc, SubPCDestroy));
+  PetscCall(PCShellSetName(pc, "contact Schur by substructuring: subdomains condensed once (MUMPS), dense surface block per step"));
+  PetscFunctionReturn(0);
+}

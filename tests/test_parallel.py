@@ -1,0 +1,104 @@
+"""The Newton step through the Schur complement on the contact surfaces by
+substructuring (src/solver/substructure.c, the default on every rank count):
+the same answer on 1 to 4 ranks, with both contact formulations, as MUMPS's
+Schur complement of K on one rank and as a full factorisation per step; the
+exact (indefinite) contact Hessian through the same step; subdomains that are
+empty or all boundary; and the one-rank MUMPS step refused on several ranks.
+Expected values come from the other rank counts and the other Newton steps."""
+import pytest
+
+from conftest import run_contact
+from test_contact import RANK_DEPENDENT, flatten
+
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
+
+
+def compare(ref, got, label, rtol=1e-8):
+    """Every number of two JSON summaries (but the rank-dependent ones) to rtol;
+    a force component near zero to rtol of the pair's force."""
+    a, b = flatten(ref), flatten(got)
+    assert set(a) == set(b)
+    scale = ref["contact_force"]
+    compared = 0
+    for k, x in a.items():
+        if k.startswith(RANK_DEPENDENT):
+            continue
+        y = b[k]
+        if isinstance(x, (int, float)) and not isinstance(x, bool):
+            floor = rtol * scale if ".force." in f".{k}." or k.endswith(("force.0", "force.1")) else 0.0
+            assert abs(x - y) <= rtol * max(abs(x), abs(y)) + floor, f"{label}: {k}: {x} against {y}"
+            compared += 1
+        else:
+            assert x == y, f"{label}: {k}: {x} against {y}"
+    return compared
+
+
+@pytest.mark.parametrize("formulation", ["gpts", "mortar"])
+def test_substructure_ranks(formulation, tmp_path):
+    """h = 0.1: 1, 2, 3 and 4 ranks on the substructured step, the one-rank
+    MUMPS Schur step and a full factorisation per step on 2 ranks agree in
+    every number of the JSON summary to 1e-8 (measured 1e-13)."""
+    base = HERTZ + ["-mesh_size", "0.1", "-contact_formulation", formulation, "-tao_gttol", "1e-13"]
+    runs = {n: run_contact(base + ["-tao_nls_ksp_view"], tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)}
+    for n, r in runs.items():
+        assert "contact Schur by substructuring" in r.stdout, f"{n} ranks did not take the substructured step"
+    ref = runs[1].summary
+    for n in (2, 3, 4):
+        assert compare(ref, runs[n].summary, f"{n} ranks") > 40
+    mumps = run_contact(base + ["-newton_schur_type", "mumps"], tmp_path, name="mumps").summary
+    full = run_contact(base + ["-newton_schur", "0"], tmp_path, ranks=2, name="full").summary
+    compare(ref, mumps, "MUMPS Schur step")
+    compare(ref, full, "full factorisation")
+
+
+def test_substructure_exact_hessian(tmp_path):
+    """The exact contact Hessian from rest (indefinite while the active set
+    settles; penalty continuation keeps the iterations few): the surface
+    system is then factored by LU, and 2 ranks agree with one and with the
+    one-rank MUMPS step."""
+    base = HERTZ + ["-mesh_size", "0.1", "-contact_hessian", "exact", "-penalty_stages", "3", "-tao_gttol", "1e-12"]
+    one = run_contact(base, tmp_path, name="np1").summary
+    two = run_contact(base, tmp_path, ranks=2, name="np2").summary
+    mumps = run_contact(base + ["-newton_schur_type", "mumps"], tmp_path, name="mumps").summary
+    assert one["iterations"] == two["iterations"] == mumps["iterations"]
+    for s, label in ((two, "2 ranks"), (mumps, "MUMPS Schur step")):
+        assert abs(s["contact_force"] / one["contact_force"] - 1) <= 1e-8, label
+        assert abs(s["energy"] / one["energy"] - 1) <= 1e-10, label
+
+
+def test_substructure_tiny_subdomains(tmp_path):
+    """h = 0.5 (320 dofs) on 24 ranks: subdomains of a few dofs, empty ones and
+    ones without an interior dof, some whose MUMPS workspace estimate falls
+    short and is enlarged; the answer is one rank's to 1e-8."""
+    base = HERTZ + ["-mesh_size", "0.5", "-tao_gttol", "1e-12"]
+    one = run_contact(base, tmp_path, name="np1").summary
+    many = run_contact(base + ["-info", ":sys"], tmp_path, ranks=24, name="np24")
+    sizes = [line.split("subdomain:")[1] for line in many.stdout.splitlines() if "subdomain:" in line]
+    assert len(sizes) == 24
+    assert any(s.strip().startswith("0 dofs") for s in sizes)
+    assert any(", 0 interior" in s and not s.strip().startswith("0 dofs") for s in sizes)
+    compare(one, many.summary, "24 ranks")
+
+
+def test_mumps_schur_one_rank_only(tmp_path):
+    """MUMPS Schur complements are sequential in PETSc 3.18: the MUMPS step on
+    2 ranks is refused with one line naming the option, status 1."""
+    r = run_contact(HERTZ + ["-mesh_size", "0.2", "-newton_schur_type", "mumps"], tmp_path, ranks=2, check=False)
+    assert r.returncode == 1
+    assert "contact: error: option -newton_schur_type mumps: one rank only" in r.stderr
+
+
+@pytest.mark.parametrize("formulation,ranks", [("gpts", 1), ("gpts", 2), ("mortar", 2)])
+def test_iterative_step(formulation, ranks, tmp_path):
+    """-newton_iterative (CG preconditioned by GAMG with the bodies' rigid
+    motions as near-nullspace, each step to relative residual 1e-6) reaches
+    the direct step's solution: the same Newton iterations, P to 1e-7
+    (measured 4e-10), the energy to 1e-10."""
+    base = HERTZ + ["-mesh_size", "0.1", "-contact_formulation", formulation]
+    it = run_contact(base + ["-newton_iterative"], tmp_path, ranks=ranks, name="iterative")
+    direct = run_contact(base, tmp_path, name="direct").summary
+    assert " CG iterations" in it.stdout
+    s = it.summary
+    assert s["iterations"] == direct["iterations"]
+    assert abs(s["contact_force"] / direct["contact_force"] - 1) <= 1e-7
+    assert abs(s["energy"] / direct["energy"] - 1) <= 1e-10
