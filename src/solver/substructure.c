@@ -94,7 +94,7 @@ typedef struct {
   PetscInt     *Ci, *Cj;  /* [nC] positions in A */
   PetscScalar  *Cv;       /* [nC] */
   PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
-  PetscScalar  *MA, *tA;  /* [nA x nA] LU of I + G_AA C_AA; [nA] work */
+  PetscScalar  *MA, *GAA, *tA; /* [nA x nA] LU of I + G_AA C_AA; G_AA; [nA] work */
   PetscBLASInt *ipiv;
 } SubCtx;
 
@@ -556,22 +556,29 @@ static PetscErrorCode SubPCSetUp(PC pc)
   PetscCall(SubGatherContactHessian(ctx, H));
   nA = ctx->nA;
   if (nA > ctx->capA) {
-    PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+    PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
     ctx->capA = nA;
-    PetscCall(PetscMalloc3(nA * nA, &ctx->MA, nA, &ctx->tA, nA, &ctx->ipiv));
+    PetscCall(PetscMalloc4(nA * nA, &ctx->MA, nA * nA, &ctx->GAA, nA, &ctx->tA, nA, &ctx->ipiv));
+  }
+  /* G_AA (block diagonal by body, zero between bodies), then column j of
+     I + G_AA C_AA gets C_kj times column k of G_AA */
+  for (PetscInt k = 0; k < nA; ++k) {
+    const PetscInt     ck = ctx->nG + ctx->A[k], b = ctx->bBody[ck];
+    const SubBody     *B  = &ctx->body[b];
+    const PetscScalar *Gk = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
+    PetscScalar       *ga = ctx->GAA + k * nA;
+    for (PetscInt a = 0; a < nA; ++a) {
+      const PetscInt ca = ctx->nG + ctx->A[a];
+      ga[a] = ctx->bBody[ca] == b ? Gk[ctx->bLocal[ca] - B->nG] : 0.0;
+    }
   }
   PetscCall(PetscArrayzero(ctx->MA, nA * nA));
   for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
-  for (PetscInt k = 0; k < ctx->nC; ++k) { /* column Cj += C_k (G restricted to A)'s column Ci; G is block diagonal by body */
-    const PetscInt     ck  = ctx->nG + ctx->A[ctx->Ci[k]], b = ctx->bBody[ck];
-    const SubBody     *B   = &ctx->body[b];
-    const PetscScalar *Gk  = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
+  for (PetscInt k = 0; k < ctx->nC; ++k) {
+    const PetscScalar *ga  = ctx->GAA + ctx->Ci[k] * nA;
     PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
     const PetscScalar  c   = ctx->Cv[k];
-    for (PetscInt a = 0; a < nA; ++a) {
-      const PetscInt ca = ctx->nG + ctx->A[a];
-      if (ctx->bBody[ca] == b) col[a] += Gk[ctx->bLocal[ca] - B->nG] * c;
-    }
+    for (PetscInt a = 0; a < nA; ++a) col[a] += ga[a] * c;
   }
   PetscCall(PetscBLASIntCast(nA, &bA));
   if (nA) {
@@ -711,7 +718,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->gB, ctx->zc, ctx->tmp));
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
-  PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+  PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
   PetscCall(MatDestroy(&ctx->K));
   PetscCall(PetscFree(ctx));
   PetscFunctionReturn(0);
