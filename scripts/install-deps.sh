@@ -7,7 +7,9 @@ set -eu
 # libopenblas0-serial replaces the reference BLAS under PETSc's factorisations
 # (CHOLMOD and MUMPS factor about twice as fast with it; serial, to share the
 # cores with MPI ranks rather than with BLAS threads).
-DEB_PKGS="petsc-dev libmetis-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial"
+# libmumps-dev, liblapack-dev, libblas-dev: the substructured Newton step calls MUMPS
+# (condensation and expansion, which PETSc does not expose) and LAPACK directly.
+DEB_PKGS="petsc-dev libmetis-dev libmumps-dev liblapack-dev libblas-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial"
 PY_MODS="h5py numpy matplotlib pytest"
 
 missing=""
