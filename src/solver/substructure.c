@@ -58,7 +58,7 @@
 
 /* One body's part of the boundary: its interface dofs G_b and surface dofs
    c_b (positions in B), the factor L_G of its S_GG, W = L_G^-1 S_Gc and
-   G = S_K^-1 (full), all on every rank. */
+   Ginv = S_K^-1 (full), all on every rank. */
 typedef struct {
   PetscInt     nG, nc;
   PetscInt    *G, *c;
@@ -88,7 +88,7 @@ typedef struct {
   PetscScalar  *gB, *zc, *tmp;       /* [nB] g_B, then z_B; [nc] z_c; [2 nc] work */
   IS            isc;
   const PetscInt *surf; /* the contact-surface dofs (isc's indices, sorted) */
-  Mat           K;
+  Mat           K;      /* the stiffness: C = H - K on the surface rows */
   /* the contact Hessian of the current step: its entries, its support A */
   PetscInt      nC, nA, capC, capA;
   PetscInt     *Ci, *Cj;  /* [nC] positions in A */
