@@ -1,5 +1,6 @@
 #pragma once
 #include "energyterm.h"
+#include "subdomain.h"
 
 #define CONTACT_MAX_TERMS 16
 
@@ -36,6 +37,7 @@ struct _n_Problem {
   Vec       X, G;
   Mat       H, K; /* Hessian, elastic stiffness of the bodies */
   IS        surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
+  Subdomain sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
   H0Type    h0;
   Tao       tao;
   PetscInt  nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */

@@ -60,12 +60,12 @@ def running_processes():
 
 def wait_quiet(limit):
     """Waits until no other process is running (procs_running is this reader
-    alone at two polls in a row, 0.5 s apart), at most limit seconds; returns
+    alone at five polls in a row, 0.5 s apart), at most limit seconds; returns
     the time waited."""
     t0, calm = time.time(), 0
     while time.time() - t0 < limit:
         calm = calm + 1 if running_processes() <= 1 else 0
-        if calm >= 2:
+        if calm >= 5:
             break
         time.sleep(0.5)
     return time.time() - t0

@@ -10,7 +10,9 @@ set -eu
 # cores with MPI ranks rather than with BLAS threads).
 # ParaView (pvpython is in python3-paraview) and xvfb-run (with xauth): the test
 # that opens the XDMF output with ParaView's readers, headless.
-DEB_PKGS="petsc-dev libmetis-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth"
+# libmumps-dev, liblapack-dev, libblas-dev: the substructured Newton step calls MUMPS
+# (condensation and expansion, which PETSc does not expose) and LAPACK directly.
+DEB_PKGS="petsc-dev libmetis-dev libmumps-dev liblapack-dev libblas-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth"
 PY_MODS="h5py numpy matplotlib pytest"
 
 missing=""

@@ -77,7 +77,11 @@ def test_killed_while_writing(sig, tmp_path):
 
 
 def test_killed_while_solving(tmp_path):
-    proc = start(tmp_path, 0.04)
+    # h = 0.02 (about 3.5 s, its mesh made first): at h = 0.04 the whole run now
+    # ends within the second this test waits
+    subprocess.run([str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.02", "-mesh_only"],
+                   cwd=ROOT, env=ENV, check=True, capture_output=True)
+    proc = start(tmp_path, 0.02)
     time.sleep(1.0)
     proc.send_signal(signal.SIGTERM)
     assert check_outcome(proc, tmp_path)

@@ -356,7 +356,8 @@ static PetscErrorCode ProblemGetSurfaceDofs(Problem p, IS *is)
 
 PetscErrorCode ProblemSetUp(Problem p)
 {
-  PetscInt nloc = 0;
+  PetscInt    nloc = 0;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
@@ -375,7 +376,12 @@ PetscErrorCode ProblemSetUp(Problem p)
   /* the elastic stiffness does not depend on u: assembled once; the Hessian
      copies it and adds the contact terms into the reserved surface block */
   PetscCall(ProblemPreallocateStiffness(p, nloc));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  if (size > 1) { /* the sum of the ranks' subdomain stiffnesses, each assembled once (subdomain.c) */
+    PetscCall(SubdomainCreate(p->nbodies, p->bodies, &p->sub));
+    PetscCall(SubdomainAddTo(p->sub, p->K));
+  } else
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleHessian(p->bodies[i], p->K));
   PetscCall(MatAssemblyBegin(p->K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(p->K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatSetOption(p->K, MAT_SPD, PETSC_TRUE));
@@ -731,6 +737,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(contactLog.solve));
   PetscCall(ProblemCreateSolver(p));
+  PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
   {
     PetscReal tol[3];
     PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
@@ -862,6 +869,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(TaoDestroy(&p->tao));
   PetscCall(MatDestroy(&p->H));
   PetscCall(ISDestroy(&p->surfaceDofs));
+  PetscCall(SubdomainDestroy(&p->sub));
   PetscCall(MatDestroy(&p->K));
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->G));

@@ -58,7 +58,7 @@
 
 /* One body's part of the boundary: its interface dofs G_b and surface dofs
    c_b (positions in B), the factor L_G of its S_GG, W = L_G^-1 S_Gc and
-   G = S_K^-1 (full), all on every rank. */
+   Ginv = S_K^-1 (full), all on every rank. */
 typedef struct {
   PetscInt     nG, nc;
   PetscInt    *G, *c;
@@ -88,13 +88,13 @@ typedef struct {
   PetscScalar  *gB, *zc, *tmp;       /* [nB] g_B, then z_B; [nc] z_c; [2 nc] work */
   IS            isc;
   const PetscInt *surf; /* the contact-surface dofs (isc's indices, sorted) */
-  Mat           K;
+  Mat           K;      /* the stiffness: C = H - K on the surface rows */
   /* the contact Hessian of the current step: its entries, its support A */
   PetscInt      nC, nA, capC, capA;
   PetscInt     *Ci, *Cj;  /* [nC] positions in A */
   PetscScalar  *Cv;       /* [nC] */
   PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
-  PetscScalar  *MA, *tA;  /* [nA x nA] LU of I + G_AA C_AA; [nA] work */
+  PetscScalar  *MA, *GAA, *tA; /* [nA x nA] LU of I + G_AA C_AA; G_AA; [nA] work */
   PetscBLASInt *ipiv;
 } SubCtx;
 
@@ -175,20 +175,15 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
   PetscMPIInt        size, ngownm, *counts, *displs;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscInt nl;
-    PetscCall(VecGetLocalSize(p->bodies[i]->Xl, &nl));
-    for (PetscInt k = 0; k < nl; ++k) n += p->bodies[i]->l2b[k] >= 0;
+  if (p->sub) { /* several ranks: the subdomain's dofs */
+    n = p->sub->n;
+    PetscCall(PetscMalloc1(n + 1, &ctx->D));
+    PetscCall(PetscArraycpy(ctx->D, p->sub->dofs, n));
+  } else { /* one rank: the whole joined vector */
+    PetscCall(VecGetSize(p->X, &n));
+    PetscCall(PetscMalloc1(n + 1, &ctx->D));
+    for (PetscInt k = 0; k < n; ++k) ctx->D[k] = k;
   }
-  PetscCall(PetscMalloc1(n + 1, &ctx->D));
-  n = 0;
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscInt nl;
-    PetscCall(VecGetLocalSize(p->bodies[i]->Xl, &nl));
-    for (PetscInt k = 0; k < nl; ++k)
-      if (p->bodies[i]->l2b[k] >= 0) ctx->D[n++] = p->bodies[i]->l2b[k];
-  }
-  PetscCall(PetscSortRemoveDupsInt(&n, ctx->D));
   ctx->nD = n;
 
   PetscCall(VecDuplicate(p->X, &count));
@@ -268,52 +263,6 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
   PetscCall(PetscFree2(counts, displs));
   PetscCall(PetscFree2(onB, gown));
   PetscCall(PetscMalloc2(ctx->nD + 1, &ctx->rhs, ctx->nBr + 1, &ctx->red));
-  PetscFunctionReturn(0);
-}
-
-/* K^r: the element stiffnesses of this rank's cells, at positions in D. Rows
-   are preallocated with 2 nb columns per cell that touches them (an upper
-   bound; the excess is squeezed out at assembly). On one rank the subdomain
-   is the whole problem, D numbers the joined vector as it is, and K^r is K
-   (with the surface block's explicit zeros, which SubFactorSubdomain drops). */
-static PetscErrorCode SubAssembleStiffness(Problem p, SubCtx *ctx, Mat *Kr)
-{
-  PetscInt   *map[CONTACT_MAX_BODIES], *nnz;
-  PetscMPIInt size;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
-  if (size == 1) {
-    PetscCall(PetscObjectReference((PetscObject)p->K));
-    *Kr = p->K;
-    PetscFunctionReturn(0);
-  }
-  PetscCall(PetscCalloc1(ctx->nD + 1, &nnz));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body     b = p->bodies[i];
-    PetscInt nl;
-
-    PetscCall(VecGetLocalSize(b->Xl, &nl));
-    PetscCall(PetscMalloc1(nl + 1, &map[i]));
-    for (PetscInt k = 0; k < nl; ++k) {
-      map[i][k] = -1;
-      if (b->l2b[k] >= 0) PetscCall(PetscFindInt(b->l2b[k], ctx->nD, ctx->D, &map[i][k]));
-    }
-    for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-      for (PetscInt d = 0; d < 2; ++d) {
-        const PetscInt row = map[i][b->cdof[k] + d];
-        if (row >= 0) nnz[row] += 2 * b->nb;
-      }
-  }
-  for (PetscInt r = 0; r < ctx->nD; ++r) nnz[r] = PetscMin(nnz[r], ctx->nD);
-  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, ctx->nD, ctx->nD, 0, nnz, Kr));
-  PetscCall(PetscFree(nnz));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscCall(BodyAssembleHessianMapped(p->bodies[i], map[i], *Kr));
-    PetscCall(PetscFree(map[i]));
-  }
-  PetscCall(MatAssemblyBegin(*Kr, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(*Kr, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 
@@ -607,22 +556,29 @@ static PetscErrorCode SubPCSetUp(PC pc)
   PetscCall(SubGatherContactHessian(ctx, H));
   nA = ctx->nA;
   if (nA > ctx->capA) {
-    PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+    PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
     ctx->capA = nA;
-    PetscCall(PetscMalloc3(nA * nA, &ctx->MA, nA, &ctx->tA, nA, &ctx->ipiv));
+    PetscCall(PetscMalloc4(nA * nA, &ctx->MA, nA * nA, &ctx->GAA, nA, &ctx->tA, nA, &ctx->ipiv));
+  }
+  /* G_AA (block diagonal by body, zero between bodies), then column j of
+     I + G_AA C_AA gets C_kj times column k of G_AA */
+  for (PetscInt k = 0; k < nA; ++k) {
+    const PetscInt     ck = ctx->nG + ctx->A[k], b = ctx->bBody[ck];
+    const SubBody     *B  = &ctx->body[b];
+    const PetscScalar *Gk = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
+    PetscScalar       *ga = ctx->GAA + k * nA;
+    for (PetscInt a = 0; a < nA; ++a) {
+      const PetscInt ca = ctx->nG + ctx->A[a];
+      ga[a] = ctx->bBody[ca] == b ? Gk[ctx->bLocal[ca] - B->nG] : 0.0;
+    }
   }
   PetscCall(PetscArrayzero(ctx->MA, nA * nA));
   for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
-  for (PetscInt k = 0; k < ctx->nC; ++k) { /* column Cj += C_k (G restricted to A)'s column Ci; G is block diagonal by body */
-    const PetscInt     ck  = ctx->nG + ctx->A[ctx->Ci[k]], b = ctx->bBody[ck];
-    const SubBody     *B   = &ctx->body[b];
-    const PetscScalar *Gk  = B->Ginv + (ctx->bLocal[ck] - B->nG) * B->nc;
+  for (PetscInt k = 0; k < ctx->nC; ++k) {
+    const PetscScalar *ga  = ctx->GAA + ctx->Ci[k] * nA;
     PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
     const PetscScalar  c   = ctx->Cv[k];
-    for (PetscInt a = 0; a < nA; ++a) {
-      const PetscInt ca = ctx->nG + ctx->A[a];
-      if (ctx->bBody[ca] == b) col[a] += Gk[ctx->bLocal[ca] - B->nG] * c;
-    }
+    for (PetscInt a = 0; a < nA; ++a) col[a] += ga[a] * c;
   }
   PetscCall(PetscBLASIntCast(nA, &bA));
   if (nA) {
@@ -762,7 +718,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->gB, ctx->zc, ctx->tmp));
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
-  PetscCall(PetscFree3(ctx->MA, ctx->tA, ctx->ipiv));
+  PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
   PetscCall(MatDestroy(&ctx->K));
   PetscCall(PetscFree(ctx));
   PetscFunctionReturn(0);
@@ -771,7 +727,6 @@ static PetscErrorCode SubPCDestroy(PC pc)
 PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
 {
   SubCtx      *ctx;
-  Mat          Kr;
   PetscScalar *Sr;
 
   PetscFunctionBeginUser;
@@ -793,10 +748,12 @@ PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
   PetscCall(PetscLogEventBegin(SubFactor, 0, 0, 0, 0));
   PetscCall(SubSetUpDofs(p, ctx));
   PetscCall(PetscInfo(NULL, "subdomain: %" PetscInt_FMT " dofs, %" PetscInt_FMT " interior, %" PetscInt_FMT " boundary; interface %" PetscInt_FMT ", contact surfaces %" PetscInt_FMT " dofs\n", ctx->nD, ctx->nI, ctx->nBr, ctx->nG, ctx->nc));
-  PetscCall(SubAssembleStiffness(p, ctx, &Kr));
   PetscCall(PetscCalloc1(ctx->nBr * ctx->nBr + 1, &Sr));
-  PetscCall(SubFactorSubdomain(ctx, Kr, Sr));
-  PetscCall(MatDestroy(&Kr));
+  /* K^r: the subdomain's stiffness (subdomain.c), consumed here; on one rank K
+     itself, with the surface block's explicit zeros, which
+     SubFactorSubdomain drops */
+  PetscCall(SubFactorSubdomain(ctx, p->sub ? p->sub->K : p->K, Sr));
+  PetscCall(SubdomainDestroy(&p->sub));
   {
     PetscMPIInt info[2] = {ctx->hasMumps ? (PetscMPIInt)ctx->mumps.INFOG(1) : 0, 0}, worst[2];
     PetscCallMPI(MPI_Comm_rank(ctx->comm, &info[1]));
