@@ -22,13 +22,11 @@ that a table can neither be typed by hand nor go stale. The tables:
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 README = os.path.join(ROOT, "README.md")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 
 SCENES = [("hertz", "meshes/hertz/hertz.opts", ["-mesh_size", "0.1"], "hertz, h = 0.1"),
@@ -38,30 +36,33 @@ SCENES = [("hertz", "meshes/hertz/hertz.opts", ["-mesh_size", "0.1"], "hertz, h 
 SOLVER = ["-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "cholesky"]
 
 
+def save(name, rows):
+    os.makedirs(os.path.join(ROOT, "bench", name), exist_ok=True)
+    with open(os.path.join(ROOT, "bench", name, "results.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+
+
+def load(name):
+    with open(os.path.join(ROOT, "bench", name, "results.json")) as f:
+        return json.load(f)
+
+
 def measure_scenes():
+    from formulation_study import run
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for form in ("gpts", "mortar"):
             for scene, opts, extra, label in SCENES:
-                js = os.path.join(tmp, "s.json")
-                cmd = [os.path.join(ROOT, "bin", "contact"), "-options_file", opts] + extra + SOLVER + \
-                      ["-contact_formulation", form, "-output", "none", "-summary", js]
-                p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
-                if p.returncode:
-                    raise SystemExit(f"{' '.join(cmd)} failed:\n{p.stderr[-2000:]}")
-                with open(js) as f:
-                    s = json.load(f)
-                rows.append(dict(scene=label, formulation=form, command=" ".join(cmd[1:-4]), dofs=s["dofs"],
+                args = ["-options_file", opts] + extra + SOLVER + ["-contact_formulation", form]
+                s, _ = run(args, tmp, "s")
+                rows.append(dict(scene=label, formulation=form, command="bin/contact " + " ".join(args), dofs=s["dofs"],
                                  P=s["contact_force"], fem_a=s["fem_a"], hertz_a=s["hertz_a"], fem_pmax=s["fem_pmax"],
                                  hertz_pmax=s["hertz_pmax"], l2=s["pressure_l2_error"]))
-    os.makedirs(os.path.join(ROOT, "bench", "scenes"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "scenes", "results.json"), "w") as f:
-        json.dump(rows, f, indent=1)
+    save("scenes", rows)
 
 
 def render_scenes():
-    with open(os.path.join(ROOT, "bench", "scenes", "results.json")) as f:
-        rows = json.load(f)
+    rows = load("scenes")
     out = ["| scene | formulation | dofs | P | a: FE / Hertz | p_max: FE / Hertz | profile L2 vs Hertz |",
            "|---|---|---|---|---|---|---|"]
     for r in rows:
@@ -88,31 +89,21 @@ STRATEGIES = [("Newton, Schur step (default)", []),
 def measure_solver(repeat=3):
     """The strategies at h = 0.06, interleaved, median of repeat solve times."""
     import statistics
+    from formulation_study import run
     times = {name: [] for name, _ in STRATEGIES}
     its = {}
     with tempfile.TemporaryDirectory() as tmp:
-        js = os.path.join(tmp, "s.json")
         for _ in range(repeat):
             for name, opts in STRATEGIES:
-                cmd = [os.path.join(ROOT, "bin", "contact"), "-options_file", "meshes/hertz/hertz.opts",
-                       "-mesh_size", "0.06", "-output", "none", "-summary", js] + opts
-                p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
-                if p.returncode:
-                    raise SystemExit(f"{' '.join(cmd)} failed:\n{p.stderr[-2000:]}")
-                with open(js) as f:
-                    summ = json.load(f)
+                summ, _ = run(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.06"] + opts, tmp, "s")
                 times[name].append(summ["time"]["solve"])
                 its[name] = summ["iterations"]
-    rows = [dict(strategy=name, options=" ".join(opts), iterations=its[name], solve=statistics.median(times[name]),
-                 runs=times[name]) for name, opts in STRATEGIES]
-    os.makedirs(os.path.join(ROOT, "bench", "solver"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "solver", "results.json"), "w") as f:
-        json.dump(rows, f, indent=1)
+    save("solver", [dict(strategy=name, options=" ".join(opts), iterations=its[name],
+                         solve=statistics.median(times[name]), runs=times[name]) for name, opts in STRATEGIES])
 
 
 def render_solver():
-    with open(os.path.join(ROOT, "bench", "solver", "results.json")) as f:
-        rows = json.load(f)
+    rows = load("solver")
     out = ["| strategy | options | iterations | solve [s] |", "|---|---|---|---|"]
     for r in rows:
         opts = f"`{r['options']}`" if r["options"] else ""
@@ -149,8 +140,7 @@ def render_speed():
 
 def render_formulations():
     import formulation_study
-    with open(os.path.join(ROOT, "bench", "formulations", "results.json")) as f:
-        return formulation_study.tables(json.load(f))
+    return formulation_study.tables(load("formulations"))
 
 
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
