@@ -23,6 +23,7 @@ struct _n_Body {
   PetscReal h;
   PetscInt  ngeoparams;
   char     *geoparams[16];
+  char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement), or empty */
   PetscReal E, nu, param[2]; /* param = {lambda, mu} */
   PetscInt  nbc, qdeg;
   void     *bcctx[CONTACT_MAX_BC][2];

@@ -21,6 +21,7 @@ typedef struct {
   PetscErrorCode (*writejson)(EnergyTerm, Body[], FILE *, PetscBool summary);
   PetscErrorCode (*writehdf5)(EnergyTerm, Body[], PetscViewer);
   PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
+  PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);
   PetscErrorCode (*destroy)(EnergyTerm);
 } EnergyTermOps;
 
@@ -58,3 +59,8 @@ PetscErrorCode EnergyTermWriteHDF5(EnergyTerm, Body[], PetscViewer);
 /* Rank 0: XDMF grids of what EnergyTermWriteHDF5 wrote into the file h5 (its
    name as the XDMF file refers to it). */
 PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
+/* Rank 0, after EnergyTermPostProcess: the pressure profile of the term's
+   one-sided surface side (0 or 1), n samples sorted by arc position s with
+   their pressure p and weight w (PetscFree each; n = 0 where the surface has
+   no profile or the term is no contact), and the contact force it transmits. */
+PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);

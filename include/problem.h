@@ -17,6 +17,14 @@ extern const char *const H0Types[];
 typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
 extern const char *const SchurTypes[];
 
+/* One step of -accuracy's refinement (accuracy.c): its dofs, solve time and
+   error estimates (relative: the pressure profiles', the contact force's, and
+   the larger of the two; Inf at the first step). */
+typedef struct {
+  PetscInt  dofs;
+  PetscReal tsolve, estimate, profile, force;
+} AccuracyStep;
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
@@ -25,6 +33,12 @@ struct _n_Problem {
   char      output[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], meshDir[PETSC_MAX_PATH_LEN];
   PetscBool outputWait; /* wait for another run writing the same outputs */
   PetscBool meshOnly;   /* set before ProblemSetFromOptions: mesh, write nothing */
+  PetscBool outputOpen; /* set before ProblemSetFromOptions: the output set is already open (an earlier -accuracy step) */
+  PetscBool deferView;  /* ProblemPostProcess does not print the terms' reports (ProblemView does) */
+  char      bgm[CONTACT_MAX_BODIES][PETSC_MAX_PATH_LEN]; /* set before ProblemSetFromOptions: each body's size field, or empty */
+  PetscReal accuracyTarget, errorEstimate; /* -accuracy's target and the estimate of the answer (0: not adaptive) */
+  PetscInt  nAccuracySteps;
+  const AccuracyStep *accuracySteps;
   PetscReal meshSize;
   PetscReal maxDofs; /* refuse a generated mesh above this many dofs (-max_dofs, else from memory) */
   PetscInt  nbodies;
@@ -74,6 +88,8 @@ PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
 /* Collective: the results at the converged state X (energy, gradient norm,
    reactions, each term's results) and the report. */
 PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);
+/* Collective: prints each term's report of ProblemPostProcess (there, unless deferView). */
+PetscErrorCode ProblemView(Problem);
 PetscErrorCode ProblemCheckUnusedOptions(Problem, PetscBool final);
 PetscErrorCode ProblemTaylorTest(Problem);
 PetscErrorCode ProblemDestroy(Problem *);

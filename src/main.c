@@ -2,7 +2,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
                            "minimised with TAO. A scene is an options file: see meshes/hertz/hertz.opts.\n"
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
 
-#include "problem.h"
+#include "accuracy.h"
 #include "progress.h"
 #include "contactpair.h"
 #include "options.h"
@@ -76,6 +76,7 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
 static PetscErrorCode Run(int *status)
 {
   Problem        problem;
+  Accuracy       acc;
   PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE, help;
   PetscLogDouble t0, t1, t2, t3;
 
@@ -88,6 +89,14 @@ static PetscErrorCode Run(int *status)
   PetscOptionsEnd();
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
+  PetscCall(AccuracyCreate(PETSC_COMM_WORLD, &acc));
+  PetscCall(AccuracySetFromOptions(acc));
+  if (!help && !meshOnly && AccuracyIsSet(acc)) { /* a sequence of problems */
+    PetscCall(AccuracySolve(acc, t0, status));
+    PetscCall(AccuracyDestroy(&acc));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(AccuracyDestroy(&acc));
   PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
   problem->meshOnly = meshOnly;
   PetscCall(ContactProgressPhase("meshing", "scene and meshes"));

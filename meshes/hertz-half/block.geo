@@ -2,7 +2,9 @@
 // on a structured Quad9 grid, the same cells as the upper half of
 // meshes/hertz/block.geo at the same h. Edges: "contact" (left, x = x0),
 // "push" (right), "top" (y = H/2), "symmetry" (the cut y = 0).
-// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H (H: the full height).
+// A size field from the program (-accuracy, adapt = 1): an unstructured
+// all-quad mesh, its sizes from the field.
+// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H (H: the full height), adapt.
 If (!Exists(h))  h = 0.1;  EndIf
 If (!Exists(x0)) x0 = 0.0; EndIf
 If (!Exists(W))  W = 1.0;  EndIf
@@ -21,9 +23,15 @@ Line(3) = {3, 4};   // top
 Line(4) = {4, 1};   // left
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-Transfinite Curve{1, 3} = nx + 1;
-Transfinite Curve{2, 4} = ny + 1;
-Transfinite Surface{1};
+If (!Exists(adapt)) adapt = 0; EndIf
+If (adapt)
+  Mesh.Algorithm = 6;
+  Mesh.RecombinationAlgorithm = 3;
+Else
+  Transfinite Curve{1, 3} = nx + 1;
+  Transfinite Curve{2, 4} = ny + 1;
+  Transfinite Surface{1};
+EndIf
 Recombine Surface{1};
 
 Physical Curve("contact") = {4};

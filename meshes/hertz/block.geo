@@ -2,7 +2,9 @@
 // symmetric about y = 0. Edges: "contact" (left), "push" (right), "top", "bottom".
 // Optional grading (hc < h): an unstructured all-quad mesh of size hc within a
 // distance rc of the point (x0, 0), growing to h over a further distance dc.
-// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H, hc, rc, dc.
+// A size field from the program (-accuracy, adapt = 1): the same unstructured
+// all-quad mesh, its sizes from the field.
+// Parameters (gmsh -setnumber NAME VALUE): h, x0, W, H, hc, rc, dc, adapt.
 If (!Exists(h))  h = 0.1;  EndIf
 If (!Exists(x0)) x0 = 0.0; EndIf
 If (!Exists(W))  W = 1.0;  EndIf
@@ -10,6 +12,7 @@ If (!Exists(H))  H = 2.0;  EndIf
 If (!Exists(hc)) hc = h;   EndIf
 If (!Exists(dc)) dc = W;   EndIf
 If (!Exists(rc)) rc = 0;   EndIf
+If (!Exists(adapt)) adapt = 0; EndIf
 
 nx = Ceil(W / h - 1e-9);
 ny = 2 * Ceil(0.5 * H / h - 1e-9);
@@ -24,19 +27,21 @@ Line(3) = {3, 4};   // top
 Line(4) = {4, 1};   // left
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-If (hc < h)
-  Point(5) = {x0, 0, 0, hc};
-  Field[1] = Distance;
-  Field[1].PointsList = {5};
-  Field[2] = Threshold;
-  Field[2].InField = 1;
-  Field[2].SizeMin = hc;
-  Field[2].SizeMax = h;
-  Field[2].DistMin = rc;
-  Field[2].DistMax = rc + dc;
-  Background Field = 2;
-  Mesh.MeshSizeExtendFromBoundary = 0;
-  Mesh.MeshSizeFromPoints = 0;
+If (hc < h || adapt)
+  If (hc < h)
+    Point(5) = {x0, 0, 0, hc};
+    Field[1] = Distance;
+    Field[1].PointsList = {5};
+    Field[2] = Threshold;
+    Field[2].InField = 1;
+    Field[2].SizeMin = hc;
+    Field[2].SizeMax = h;
+    Field[2].DistMin = rc;
+    Field[2].DistMax = rc + dc;
+    Background Field = 2;
+    Mesh.MeshSizeExtendFromBoundary = 0;
+    Mesh.MeshSizeFromPoints = 0;
+  EndIf
   Mesh.Algorithm = 6;
   Mesh.RecombinationAlgorithm = 3;
   Recombine Surface{1};

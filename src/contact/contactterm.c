@@ -119,6 +119,26 @@ static PetscErrorCode ContactTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode ContactTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force)
+{
+  const ContactTerm *b = (const ContactTerm *)t->data;
+  const ContactSide *S = &b->report.side[side];
+
+  PetscFunctionBeginUser;
+  *force = b->report.P;
+  if (!b->report.done || !S->slave || S->n == 0) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc1(S->n, s));
+  PetscCall(PetscMalloc1(S->n, p));
+  PetscCall(PetscMalloc1(S->n, w));
+  for (PetscInt i = 0; i < S->n; ++i) {
+    (*s)[i] = S->rows[CONTACT_ROW_COLS * i + CONTACT_ROW_S];
+    (*p)[i] = S->rows[CONTACT_ROW_COLS * i + CONTACT_ROW_P];
+    (*w)[i] = S->rows[CONTACT_ROW_COLS * i + CONTACT_ROW_W];
+  }
+  *n = S->n;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec, EnergyTerm t)
 {
   PetscFunctionBeginUser;
@@ -136,5 +156,6 @@ PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec
   t->ops.writejson        = ContactTermWriteJSON;
   t->ops.writehdf5        = ContactTermWriteHDF5;
   t->ops.writexdmf        = ContactTermWriteXDMF;
+  t->ops.getprofile       = ContactTermGetProfile;
   PetscFunctionReturn(0);
 }

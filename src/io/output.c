@@ -640,6 +640,26 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
       fprintf(fp, "}");
     }
     fprintf(fp, "\n  },\n");
+    if (p->accuracyTarget > 0) {
+      fprintf(fp, "  \"accuracy_target\": ");
+      ContactJSONReal(fp, p->accuracyTarget);
+      fprintf(fp, ",\n  \"error_estimate\": ");
+      ContactJSONReal(fp, p->errorEstimate);
+      fprintf(fp, ",\n  \"adapt_steps\": [");
+      for (PetscInt k = 0; k < p->nAccuracySteps; ++k) {
+        const AccuracyStep *a = &p->accuracySteps[k];
+        fprintf(fp, "%s\n    {\"dofs\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs);
+        ContactJSONReal(fp, a->tsolve);
+        fprintf(fp, ", \"error_estimate\": ");
+        ContactJSONReal(fp, a->estimate);
+        fprintf(fp, ", \"profile_estimate\": ");
+        ContactJSONReal(fp, a->profile);
+        fprintf(fp, ", \"force_estimate\": ");
+        ContactJSONReal(fp, a->force);
+        fprintf(fp, "}");
+      }
+      fprintf(fp, "\n  ],\n");
+    }
     if (p->taylor) {
       fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
       ContactJSONReal(fp, p->taylorRates[0]);

@@ -174,7 +174,21 @@ static double MeshEstimateNodes(char *argv[], PetscInt argc, const char geo[], d
   return 4.5 * fmax(hi[0] - lo[0], h) * fmax(hi[1] - lo[1], h) / (h * h);
 }
 
-PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len)
+/* A tag of the contents of a file (64-bit FNV-1a), for cached mesh names. */
+static int FileTag(const char path[], char tag[], size_t len)
+{
+  FILE              *fp = fopen(path, "rb");
+  unsigned long long hash = 1469598103934665603ULL;
+  int                c;
+
+  if (!fp) return errno;
+  while ((c = fgetc(fp)) != EOF) hash = (hash ^ (unsigned char)c) * 1099511628211ULL;
+  fclose(fp);
+  snprintf(tag, len, "%016llx", hash);
+  return 0;
+}
+
+PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len)
 {
   PetscMPIInt rank;
   int         err = 0;
@@ -184,7 +198,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16], hs[64];
-    char        names[16][64], values[16][64], *argv[16 + 2 * 3 * 16];
+    char        names[16][64], values[16][64], *argv[16 + 2 * 3 * 16], bgmTag[32] = "";
     PetscInt    argc = 0;
     const char *slash = strrchr(geo, '/');
     struct stat sg, sm;
@@ -216,8 +230,26 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscSNPrintf(part, sizeof(part), "_%s%s", name, value));
       PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
     }
+    if (bgm && bgm[0]) { /* a size field: -bgm, and adapt = 1 for a .geo that meshes otherwise (structured) without one */
+      char part[PETSC_MAX_PATH_LEN + 64];
+      if ((err = FileTag(bgm, bgmTag, sizeof(bgmTag)))) {
+        PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read the size field %s: %s", bgm, strerror(err)));
+        err = 1;
+      }
+      argv[argc++] = (char *)"-bgm";
+      argv[argc++] = (char *)bgm;
+      PetscCall(PetscSNPrintf(part, sizeof(part), " -bgm %s", bgm));
+      PetscCall(PetscStrlcat(cmd, part, sizeof(cmd)));
+      if (GeoUsesName(geo, "adapt")) {
+        for (const char *a = "-setnumber\0adapt\0" "1\0"; *a; a += strlen(a) + 1) argv[argc++] = (char *)a;
+        PetscCall(PetscStrlcat(cmd, " -setnumber adapt 1", sizeof(cmd)));
+      }
+      PetscCall(PetscSNPrintf(part, sizeof(part), "_field%s", bgmTag));
+      PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
+    }
     PetscCall(PetscSNPrintf(msh, len, "%s/%s-%s.msh", dir, base, tag));
-    if ((err = ContactMakeDirs(dir))) {
+    if (err) {
+    } else if ((err = ContactMakeDirs(dir))) {
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot create mesh directory %s: %s", dir, strerror(err)));
       err = 1;
     } else if (stat(geo, &sg)) {
@@ -235,7 +267,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscStrlcat(cmd, log, sizeof(cmd)));
       PetscCall(PetscStrlcat(cmd, "' 2>&1", sizeof(cmd)));
       PetscCall(PetscInfo(NULL, "Meshing: %s\n", cmd));
-      if (estimateOnly && *maxDofs > 0) { /* refused before meshing if it would not fit */
+      if (estimateOnly && *maxDofs > 0 && !bgmTag[0]) { /* refused before meshing if it would not fit (a size field's mesh: by its caller) */
         char   est[PETSC_MAX_PATH_LEN + 32];
         double nodes;
         PetscCall(PetscSNPrintf(est, sizeof(est), "%s.size%d.geo_unrolled", msh, (int)getpid()));

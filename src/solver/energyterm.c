@@ -102,3 +102,13 @@ PetscErrorCode EnergyTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const 
   if (t->ops.writexdmf) PetscCall(t->ops.writexdmf(t, bodies, fp, h5));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode EnergyTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force)
+{
+  PetscFunctionBeginUser;
+  *n     = 0;
+  *s     = *p = *w = NULL;
+  *force = 0.0;
+  if (t->ops.getprofile) PetscCall(t->ops.getprofile(t, side, n, s, p, w, force));
+  PetscFunctionReturn(0);
+}

@@ -143,11 +143,14 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(PetscFree(names[i]));
   }
   /* the outputs locked and checked before meshing, so that a bad path or a busy set fails at once */
-  if (!help && !p->meshOnly) PetscCall(ContactOutputOpen(p->comm, p->output, p->summary, p->outputWait));
+  if (!help && !p->meshOnly && !p->outputOpen) PetscCall(ContactOutputOpen(p->comm, p->output, p->summary, p->outputWait));
   {
     char      limit[128];
     PetscReal left;
-    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize));
+    for (PetscInt i = 0; i < nb; ++i) {
+      PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize));
+      PetscCall(PetscStrncpy(p->bodies[i]->bgm, p->bgm[i], sizeof(p->bodies[i]->bgm)));
+    }
     PetscCall(ProblemDofLimit(p, limit, sizeof(limit)));
     /* every body's size checked before any is meshed */
     left = p->maxDofs;
@@ -789,8 +792,15 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(nrm > 0 ? err / nrm : err)));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
+  if (!p->deferView) PetscCall(ProblemView(p));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemView(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
   PetscFunctionReturn(0);
 }
 

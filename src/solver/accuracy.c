@@ -1,0 +1,444 @@
+/* -accuracy TOL: a sequence of solves, each on meshes refined around the
+   contact zones of the last, until the estimated error of the answer is
+   below TOL.
+
+   Step 0 solves the scene's own meshes. After step k, the contact zone of
+   each body is the set of its nodes on which a contact term exerts a force
+   (the terms' gradient at the solution: any formulation, both surfaces of a
+   pair). Its meshes for step k + 1 come from Gmsh with a size field
+   (MeshGenerate's -bgm) defined on the cells of step k's mesh: at a vertex
+   at distance d from the zone,
+
+     h_new = min(h_cell, h_z / 2 + g max(0, d - 2 h_z)),
+
+   h_cell the cell's size (mean edge length), h_z the mean size of the cells
+   that touch the zone, g = -accuracy_grading. So the zone and two of its
+   cells around it are halved and the size grows linearly away from them,
+   never above the last mesh's.
+
+   Error estimate. The pressure has square-root edges, so its L2 error is of
+   first order in the zone's mesh size h (SPEC: even the best P2 fit is);
+   halving h, e_k = C h_k and e_{k-1} = 2 e_k, so the distance between the two
+   profiles, D_k = ||p_k - p_{k-1}|| / ||p_k|| ~ e_{k-1} - e_k = e_k: it
+   estimates the error of step k's profile (a rate r gives D_k / (2^r - 1):
+   the first-order assumption overestimates where convergence is faster).
+   The distance interpolates p_{k-1} linearly in arc length at step k's
+   samples, weighted by their weights (profile_metrics.l2_distance). The
+   force's relative change estimates its error alike. The estimate of step k
+   is the larger of the two over every pair and one-sided surface. */
+#include <unistd.h>
+#include "accuracy.h"
+#include "options.h"
+#include "progress.h"
+
+struct _n_Accuracy {
+  MPI_Comm  comm;
+  PetscReal tol, grading, maxDofs;
+  PetscInt  maxSteps;
+  PetscBool set;
+};
+
+/* One step's profiles and forces (rank 0). */
+typedef struct {
+  PetscInt   nterms, n[CONTACT_MAX_TERMS][2];
+  PetscReal *s[CONTACT_MAX_TERMS][2], *p[CONTACT_MAX_TERMS][2], *w[CONTACT_MAX_TERMS][2], force[CONTACT_MAX_TERMS];
+} AccuracyProfiles;
+
+PetscErrorCode AccuracyCreate(MPI_Comm comm, Accuracy *acc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(acc));
+  (*acc)->comm     = comm;
+  (*acc)->grading  = 0.3;
+  (*acc)->maxSteps = 8;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AccuracyDestroy(Accuracy *acc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(*acc));
+  PetscFunctionReturn(0);
+}
+
+PetscBool AccuracyIsSet(Accuracy acc)
+{
+  return acc->set;
+}
+
+PetscErrorCode AccuracySetFromOptions(Accuracy acc)
+{
+  PetscBool setMax;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(acc->comm, NULL, "Accuracy options", NULL);
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-accuracy", "Target relative error of the contact pressure profile (L2) and force: refine around the contact zones until the estimate is below it", "unset: one solve on the scene's meshes", PETSC_FALSE, &acc->tol, &acc->set));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-accuracy_max_dofs", "-accuracy: the most dofs a step may have; a target that needs more stops there", "-max_dofs, else the machine's memory", PETSC_FALSE, &acc->maxDofs, &setMax));
+  PetscCall(PetscOptionsInt("-accuracy_max_steps", "-accuracy: the most solves (refinement steps + 1)", NULL, acc->maxSteps, &acc->maxSteps, NULL));
+  PetscCall(PetscOptionsReal("-accuracy_grading", "-accuracy: growth of the mesh size per unit distance from the contact zones", NULL, acc->grading, &acc->grading, NULL));
+  PetscOptionsEnd();
+  PetscCheck(!acc->set || (acc->tol > 0 && acc->tol < 1), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: must be a relative error in (0, 1), got %g", (double)acc->tol);
+  PetscCheck(!setMax || (acc->maxDofs >= 1 && !PetscIsInfOrNanReal(acc->maxDofs)), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_max_dofs: must be a finite number >= 1, got %g", (double)acc->maxDofs);
+  if (!setMax) acc->maxDofs = 0.0;
+  PetscCheck(acc->maxSteps >= 2, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_max_steps: must be >= 2 (an estimate needs two solves), got %" PetscInt_FMT, acc->maxSteps);
+  PetscCheck(acc->grading > 0 && acc->grading <= 10, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_grading: must be in (0, 10], got %g", (double)acc->grading);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AccuracyProfilesGet(Problem p, AccuracyProfiles *P)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(P, sizeof(*P)));
+  P->nterms = p->nterms;
+  for (PetscInt t = 0; t < p->nterms; ++t)
+    for (PetscInt s = 0; s < 2; ++s) PetscCall(EnergyTermGetProfile(p->terms[t], s, &P->n[t][s], &P->s[t][s], &P->p[t][s], &P->w[t][s], &P->force[t]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AccuracyProfilesDestroy(AccuracyProfiles *P)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < P->nterms; ++t)
+    for (PetscInt s = 0; s < 2; ++s) {
+      PetscCall(PetscFree(P->s[t][s]));
+      PetscCall(PetscFree(P->p[t][s]));
+      PetscCall(PetscFree(P->w[t][s]));
+    }
+  P->nterms = 0;
+  PetscFunctionReturn(0);
+}
+
+/* Relative L2 distance of a coarse profile from a fine one: the coarse one
+   interpolated linearly in s at the fine samples (0 outside its range),
+   weighted by the fine weights. */
+static PetscReal ProfileDistance(PetscInt nc, const PetscReal sc[], const PetscReal pc[], PetscInt nf, const PetscReal sf[], const PetscReal pf[], const PetscReal wf[])
+{
+  PetscReal num = 0.0, den = 0.0;
+  PetscInt  j   = 0;
+
+  for (PetscInt i = 0; i < nf; ++i) {
+    PetscReal v = 0.0;
+    while (j + 1 < nc && sc[j + 1] < sf[i]) ++j;
+    if (nc > 1 && sf[i] >= sc[0] && sf[i] <= sc[nc - 1]) {
+      const PetscInt  k = PetscMin(j, nc - 2);
+      const PetscReal L = sc[k + 1] - sc[k];
+      v = L > 0 ? pc[k] + (pc[k + 1] - pc[k]) * (sf[i] - sc[k]) / L : pc[k];
+    }
+    num += wf[i] * (v - pf[i]) * (v - pf[i]);
+    den += wf[i] * pf[i] * pf[i];
+  }
+  return den > 0 ? PetscSqrtReal(num / den) : (num > 0 ? PETSC_INFINITY : 0.0);
+}
+
+/* Rank 0: the estimates of step cur from step prev (above). */
+static void AccuracyEstimate(const AccuracyProfiles *prev, const AccuracyProfiles *cur, PetscReal *profile, PetscReal *force)
+{
+  *profile = 0.0;
+  *force   = 0.0;
+  for (PetscInt t = 0; t < cur->nterms; ++t) {
+    for (PetscInt s = 0; s < 2; ++s)
+      if (cur->n[t][s]) *profile = PetscMax(*profile, ProfileDistance(prev->n[t][s], prev->s[t][s], prev->p[t][s], cur->n[t][s], cur->s[t][s], cur->p[t][s], cur->w[t][s]));
+    if (cur->force[t] != 0) *force = PetscMax(*force, PetscAbsReal(cur->force[t] - prev->force[t]) / PetscAbsReal(cur->force[t]));
+  }
+}
+
+/* Every rank: the reference coordinates of the nodes of body b on which a
+   contact term exerts a force at the state in the bodies' local vectors
+   (the terms' gradient, evaluated by the caller into b->Gl). */
+static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
+{
+  PetscSection       sec;
+  const PetscScalar *g;
+  PetscReal          gmax = 0.0, *loc;
+  PetscMPIInt        size, nl = 0, *cnt, *disp;
+  PetscInt           m = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &sec));
+  PetscCall(VecGetArrayRead(b->Gl, &g));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt dof, off;
+    PetscCall(PetscSectionGetDof(sec, p, &dof));
+    PetscCall(PetscSectionGetOffset(sec, p, &off));
+    if (dof == 2) gmax = PetscMax(gmax, PetscSqrtReal(PetscSqr(PetscRealPart(g[off])) + PetscSqr(PetscRealPart(g[off + 1]))));
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gmax, 1, MPIU_REAL, MPIU_MAX, b->comm));
+  PetscCall(PetscMalloc1(2 * (b->pEnd - b->pStart) + 1, &loc));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt dof, off;
+    PetscCall(PetscSectionGetDof(sec, p, &dof));
+    PetscCall(PetscSectionGetOffset(sec, p, &off));
+    if (dof != 2 || !b->owned[p - b->pStart]) continue;
+    if (PetscSqrtReal(PetscSqr(PetscRealPart(g[off])) + PetscSqr(PetscRealPart(g[off + 1]))) <= 1e-8 * gmax || gmax == 0) continue;
+    loc[2 * m]     = b->xpoint[2 * (p - b->pStart)];
+    loc[2 * m + 1] = b->xpoint[2 * (p - b->pStart) + 1];
+    ++m;
+  }
+  PetscCall(VecRestoreArrayRead(b->Gl, &g));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  nl = (PetscMPIInt)(2 * m);
+  PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  PetscCall(PetscMalloc1(disp[size] + 1, z));
+  PetscCallMPI(MPI_Allgatherv(loc, nl, MPIU_REAL, *z, cnt, disp, MPIU_REAL, b->comm));
+  *nz = disp[size] / 2;
+  PetscCall(PetscFree2(cnt, disp));
+  PetscCall(PetscFree(loc));
+  PetscFunctionReturn(0);
+}
+
+/* A cell's record in the size field: vertex count, then x, y, size per vertex. */
+#define FIELD_REC 13
+
+static int CompareRecords(const void *a, const void *b)
+{
+  const PetscReal *x = (const PetscReal *)a, *y = (const PetscReal *)b;
+  PetscReal        cx = 0, cy = 0, dx = 0, dy = 0;
+
+  for (PetscInt v = 0; v < (PetscInt)x[0]; ++v) {
+    cx += x[1 + 3 * v] / x[0];
+    cy += x[2 + 3 * v] / x[0];
+  }
+  for (PetscInt v = 0; v < (PetscInt)y[0]; ++v) {
+    dx += y[1 + 3 * v] / y[0];
+    dy += y[2 + 3 * v] / y[0];
+  }
+  return cx < dx ? -1 : cx > dx ? 1 : cy < dy ? -1 : cy > dy ? 1 : 0;
+}
+
+/* Collective: writes body b's size field for the next step (above) to path
+   (rank 0), a Gmsh view of its cells in a canonical order (so that the mesh
+   does not depend on the number of ranks). */
+static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[], PetscReal grading, const char path[])
+{
+  PetscReal   ref[2 * 64], *rec, hz[2] = {0, 0}, *all = NULL;
+  PetscInt    corner[4], nv = 0;
+  PetscMPIInt rank, size, nl, *cnt = NULL, *disp = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCheck(b->nb <= 64, b->comm, PETSC_ERR_SUP, "body %s: %" PetscInt_FMT " nodes per cell", b->name, b->nb);
+  PetscCall(BodyGetReferenceNodes(b, ref));
+  for (PetscInt a = 0; a < b->nb && nv < 4; ++a) { /* the cell's vertices, in cyclic order */
+    const PetscReal x = ref[2 * a], y = ref[2 * a + 1];
+    const PetscBool c = b->simplex ? (PetscBool)(PetscAbsReal(x + y) < 1e-12 || (x < -1 + 1e-12 && y < -1 + 1e-12)) : (PetscBool)(PetscAbsReal(PetscAbsReal(x) - 1) < 1e-12 && PetscAbsReal(PetscAbsReal(y) - 1) < 1e-12);
+    if (c && (!b->simplex || PetscAbsReal(PetscAbsReal(x) - 1) < 1e-12)) corner[nv++] = a;
+  }
+  PetscCheck(nv == (b->simplex ? 3 : 4), b->comm, PETSC_ERR_PLIB, "body %s: %" PetscInt_FMT " vertices found in a cell", b->name, nv);
+  if (!b->simplex) { /* (-1,-1), (1,-1), (1,1), (-1,1) */
+    PetscInt  o[4];
+    PetscReal want[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (PetscInt k = 0; k < 4; ++k)
+      for (PetscInt v = 0; v < 4; ++v)
+        if (ref[2 * corner[v]] == want[k][0] && ref[2 * corner[v] + 1] == want[k][1]) o[k] = corner[v];
+    for (PetscInt k = 0; k < 4; ++k) corner[k] = o[k];
+  }
+  PetscCall(PetscMalloc1(FIELD_REC * b->ncells + 1, &rec));
+  for (PetscInt c = 0; c < b->ncells; ++c) { /* sizes first: h_z over the cells on the zone */
+    const PetscReal *x = &b->xnode[2 * b->nb * c];
+    PetscReal        h = 0.0, dmin = PETSC_MAX_REAL;
+    for (PetscInt v = 0; v < nv; ++v) {
+      const PetscReal *p = &x[2 * corner[v]], *q = &x[2 * corner[(v + 1) % nv]];
+      h += PetscSqrtReal(PetscSqr(p[0] - q[0]) + PetscSqr(p[1] - q[1])) / nv;
+      for (PetscInt j = 0; j < nz; ++j) dmin = PetscMin(dmin, PetscSqr(p[0] - z[2 * j]) + PetscSqr(p[1] - z[2 * j + 1]));
+    }
+    rec[FIELD_REC * c]     = h;
+    rec[FIELD_REC * c + 1] = PetscSqrtReal(dmin);
+    if (PetscSqrtReal(dmin) <= 0.5 * h) {
+      hz[0] += h;
+      hz[1] += 1;
+    }
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hz, 2, MPIU_REAL, MPIU_SUM, b->comm));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscReal *x = &b->xnode[2 * b->nb * c], h = rec[FIELD_REC * c];
+    PetscReal       *r = &rec[FIELD_REC * c];
+    r[0] = (PetscReal)nv;
+    for (PetscInt v = 0; v < nv; ++v) {
+      const PetscReal *p = &x[2 * corner[v]];
+      PetscReal        d = PETSC_MAX_REAL, s = h;
+      for (PetscInt j = 0; j < nz; ++j) d = PetscMin(d, PetscSqr(p[0] - z[2 * j]) + PetscSqr(p[1] - z[2 * j + 1]));
+      if (hz[1] > 0) {
+        const PetscReal hzone = hz[0] / hz[1];
+        s = PetscMin(h, 0.5 * hzone + grading * PetscMax(0.0, PetscSqrtReal(d) - 2.0 * hzone));
+      }
+      r[1 + 3 * v] = p[0];
+      r[2 + 3 * v] = p[1];
+      r[3 + 3 * v] = s;
+    }
+  }
+  nl = (PetscMPIInt)(FIELD_REC * b->ncells);
+  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, b->comm));
+  if (!rank) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(disp[size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(rec, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, b->comm));
+  if (!rank) {
+    const PetscInt n  = disp[size] / FIELD_REC;
+    FILE          *fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write the size field %s", path);
+    qsort(all, (size_t)n, FIELD_REC * sizeof(PetscReal), CompareRecords);
+    fprintf(fp, "View \"size\" {\n");
+    for (PetscInt c = 0; c < n; ++c) {
+      const PetscReal *r = &all[FIELD_REC * c];
+      const PetscInt   k = (PetscInt)r[0];
+      fprintf(fp, "%s(", k == 3 ? "ST" : "SQ");
+      for (PetscInt v = 0; v < k; ++v) fprintf(fp, "%s%.10g,%.10g,0", v ? "," : "", (double)r[1 + 3 * v], (double)r[2 + 3 * v]);
+      fprintf(fp, "){");
+      for (PetscInt v = 0; v < k; ++v) fprintf(fp, "%s%.6g", v ? "," : "", (double)r[3 + 3 * v]);
+      fprintf(fp, "};\n");
+    }
+    fprintf(fp, "};\n");
+    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing the size field %s", path);
+    PetscCall(PetscFree(all));
+    PetscCall(PetscFree2(cnt, disp));
+  }
+  PetscCall(PetscFree(rec));
+  PetscFunctionReturn(0);
+}
+
+/* Collective: the size fields of every body for the step after the one
+   solved in p, written to paths[] (see above). */
+static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, char paths[][PETSC_MAX_PATH_LEN])
+{
+  PetscFunctionBeginUser;
+  PetscCall(ProblemScatterToBodies(p, p->X));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscReal e;
+    PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &e));
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body       b = p->bodies[i];
+    PetscInt   nz = 0;
+    PetscReal *z = NULL;
+    PetscCall(AccuracyZone(b, &nz, &z));
+    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->meshDir, b->name, (int)getpid(), (int)step));
+    PetscCall(AccuracyWriteField(b, nz, z, acc->grading, paths[i]));
+    PetscCall(PetscFree(z));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
+{
+  Problem          prev = NULL, cur = NULL;
+  AccuracyProfiles pp, pc;
+  AccuracyStep    *steps;
+  char             (*fields)[PETSC_MAX_PATH_LEN];
+  char             stop[512] = "";
+  PetscBool        reached = PETSC_FALSE, converged = PETSC_FALSE;
+  PetscMPIInt      rank;
+  PetscInt         k;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(acc->comm, &rank));
+  PetscCall(PetscMemzero(&pp, sizeof(pp)));
+  PetscCall(PetscMemzero(&pc, sizeof(pc)));
+  PetscCall(PetscCalloc1(acc->maxSteps, &steps));
+  PetscCall(PetscCalloc1(CONTACT_MAX_BODIES, &fields));
+  for (k = 0; k < acc->maxSteps; ++k) {
+    PetscLogDouble t1, t2;
+    PetscInt       n;
+    AccuracyStep  *st = &steps[k];
+
+    PetscCall(ProblemCreate(acc->comm, &cur));
+    cur->outputOpen = (PetscBool)(k > 0);
+    cur->deferView  = PETSC_TRUE;
+    for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i) PetscCall(PetscStrncpy(cur->bgm[i], fields[i], PETSC_MAX_PATH_LEN));
+    PetscCall(ContactProgressPhase("meshing", "accuracy step %" PetscInt_FMT ": meshing", k));
+    PetscCall(ProblemSetFromOptions(cur));
+    if (!rank)
+      for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i)
+        if (fields[i][0]) (void)unlink(fields[i]);
+    if (k == 0) PetscCheck(cur->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+    if (acc->maxDofs <= 0) acc->maxDofs = cur->maxDofs;
+    PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
+    PetscCall(ProblemSetUp(cur));
+    PetscCall(VecGetSize(cur->X, &n));
+    if (prev) {
+      PetscInt nprev;
+      PetscCall(VecGetSize(prev->X, &nprev));
+      PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see README, Geometry files)", n, nprev);
+    }
+    PetscCall(ContactProgressPhase("the solve", "accuracy step %" PetscInt_FMT ": solve, %" PetscInt_FMT " dofs", k, n));
+    PetscCall(PetscTime(&t1));
+    PetscCall(ProblemSolve(cur, &converged));
+    PetscCall(PetscTime(&t2));
+    if (!converged) {
+      PetscCall(PetscSNPrintf(stop, sizeof(stop), "the solve of step %" PetscInt_FMT " (%" PetscInt_FMT " dofs) did not converge (%s)", k, n, TaoConvergedReasons[cur->reason]));
+      break;
+    }
+    PetscCall(ContactProgressPhase("post-processing", "accuracy step %" PetscInt_FMT ": post-processing", k));
+    PetscCall(ProblemPostProcess(cur, cur->X, converged));
+    PetscCall(AccuracyProfilesGet(cur, &pc));
+    st->dofs     = n;
+    st->tsolve   = t2 - t1;
+    st->estimate = st->profile = st->force = PETSC_INFINITY;
+    if (!rank && prev) {
+      AccuracyEstimate(&pp, &pc, &st->profile, &st->force);
+      st->estimate = PetscMax(st->profile, st->force);
+    }
+    PetscCallMPI(MPI_Bcast(&st->estimate, 3, MPIU_REAL, 0, acc->comm));
+    if (prev) PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s, estimated error %.3g %% (pressure profile %.3g %%, force %.3g %%), target %.3g %%\n", k, n, (double)st->tsolve, (double)(100 * st->estimate), (double)(100 * st->profile), (double)(100 * st->force), (double)(100 * acc->tol)));
+    else PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s (no estimate yet: it compares two steps)\n", k, n, (double)st->tsolve));
+    PetscCall(ProblemDestroy(&prev));
+    PetscCall(AccuracyProfilesDestroy(&pp));
+    pp   = pc;
+    prev = cur;
+    cur  = NULL;
+    if (st->estimate <= acc->tol) {
+      reached = PETSC_TRUE;
+      break;
+    }
+    if (k + 1 == acc->maxSteps) {
+      PetscCall(PetscSNPrintf(stop, sizeof(stop), "-accuracy_max_steps %" PetscInt_FMT " reached", acc->maxSteps));
+      break;
+    }
+    { /* the next step's size: this step's growth over the last (3 at first) */
+      const PetscReal growth = k > 0 ? (PetscReal)n / steps[k - 1].dofs : 3.0, next = growth * n;
+      if (acc->maxDofs > 0 && next > acc->maxDofs) {
+        PetscCall(PetscSNPrintf(stop, sizeof(stop), "the next step would have about %.3g dofs, more than %.3g (%s)", (double)next, (double)acc->maxDofs, acc->maxDofs == prev->maxDofs ? "-max_dofs or the machine's memory; -accuracy_max_dofs sets another" : "-accuracy_max_dofs"));
+        break;
+      }
+    }
+    PetscCall(AccuracyRefine(acc, prev, k + 1, fields));
+  }
+  if (cur) { /* a step that did not converge: the answer is the last one that did */
+    PetscCall(ProblemDestroy(&cur));
+  }
+  k = k < acc->maxSteps ? k : acc->maxSteps - 1;
+  if (prev) {
+    PetscInt last = 0;
+    for (PetscInt j = 0; j < acc->maxSteps; ++j)
+      if (steps[j].dofs > 0) last = j;
+    prev->accuracyTarget = acc->tol;
+    prev->errorEstimate  = steps[last].estimate;
+    prev->nAccuracySteps = last + 1;
+    prev->accuracySteps  = steps;
+    prev->t0             = t0;
+    PetscCall(ProblemView(prev));
+    if (reached) PetscCall(PetscPrintf(acc->comm, "accuracy: target %.3g %% reached: estimated error %.3g %% after %" PetscInt_FMT " steps, %" PetscInt_FMT " dofs\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), last + 1, steps[last].dofs));
+    else PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: accuracy: target %.3g %% not reached: estimated error %.3g %% at %" PetscInt_FMT " dofs; stopped because %s; writing that answer\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), steps[last].dofs, stop));
+    PetscCall(ProblemCheckUnusedOptions(prev, PETSC_TRUE));
+    for (PetscInt i = 0; i < prev->nbodies; ++i) prev->time[0] += prev->bodies[i]->tmesh;
+    prev->time[2] = steps[last].tsolve;
+    PetscCall(ContactProgressPhase("the output", "output"));
+    PetscCall(ProblemWriteOutput(prev, PETSC_TRUE));
+  } else {
+    PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: accuracy: %s; no output written\n", stop));
+    ContactOutputDiscard();
+  }
+  *status = reached ? 0 : 2;
+  PetscCall(ProblemDestroy(&prev));
+  PetscCall(AccuracyProfilesDestroy(&pp));
+  PetscCall(PetscFree(fields));
+  PetscCall(PetscFree(steps));
+  PetscFunctionReturn(0);
+}
