@@ -1,0 +1,106 @@
+"""-accuracy TOL: the estimate of the answer it returns against its true error
+(the answer two refinement steps further), the JSON it writes, its limits
+and errors, and its agreement across ranks."""
+import json
+import sys
+
+import pytest
+
+from conftest import ROOT, run_contact
+
+sys.path.insert(0, str(ROOT / "scripts"))
+import accuracy_study  # noqa: E402
+
+MORTAR = ["-contact_formulation", "mortar"]
+
+
+def scene_args(scene, tmp_path):
+    if scene == "other":  # not in the repository: other radius, moduli and push
+        opts = tmp_path / "other.opts"
+        opts.write_text(accuracy_study.OTHER.format(root=ROOT))
+        return ["-options_file", opts, "-mesh_dir", tmp_path / "meshes"]
+    return ["-options_file", f"meshes/{scene}/{scene}.opts"]
+
+
+def summary(res):
+    return json.loads(res.summary_path.read_text())
+
+
+@pytest.mark.parametrize("scene", ["hertz", "twodiscs", "other"])
+def test_estimate_is_honest(scene, tmp_path):
+    """At TOL = 5 % and 2 %: the estimate is below TOL, the true error at most
+    1.5 TOL, the estimate within a factor 2 of the true error."""
+    base = scene_args(scene, tmp_path) + MORTAR
+    answers = {}
+    for tol in (0.05, 0.02):
+        res = run_contact(base + ["-accuracy", tol], tmp_path, name=f"tol{tol}")
+        answers[tol] = (summary(res), res.output_path)
+    last = max(len(s["adapt_steps"]) for s, _ in answers.values())
+    ref = run_contact(base + ["-accuracy", "1e-9", "-accuracy_max_steps", last + 2], tmp_path, name="ref", check=False)
+    assert ref.returncode == 2, ref.stderr
+    rsum = summary(ref)
+    assert len(rsum["adapt_steps"]) == last + 2
+    for tol, (s, h5) in answers.items():
+        est = s["error_estimate"]
+        if len(s["adapt_steps"]) + 2 != last + 2:  # the reference is two steps past the last answer only
+            ref2 = run_contact(base + ["-accuracy", "1e-9", "-accuracy_max_steps", len(s["adapt_steps"]) + 2], tmp_path, name=f"ref{tol}", check=False)
+            rs, rh5 = summary(ref2), ref2.output_path
+        else:
+            rs, rh5 = rsum, ref.output_path
+        true, d, f = accuracy_study.true_error(h5, rh5, s, rs)
+        print(f"{scene} TOL {tol}: {len(s['adapt_steps'])} steps, {s['dofs']} dofs, estimate {est:.4g}, true error {true:.4g} (profile {d:.4g}, force {f:.4g})")
+        assert s["accuracy_target"] == tol
+        assert est <= tol
+        assert true <= 1.5 * tol
+        assert 0.5 <= est / true <= 2.0
+
+
+def test_json_steps_and_output(tmp_path):
+    """The JSON lists every step; the HDF5 and XDMF hold the last step's mesh."""
+    res = run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05], tmp_path)
+    s = res.summary
+    steps = s["adapt_steps"]
+    assert len(steps) >= 3
+    assert steps[0]["error_estimate"] is None  # Inf: nothing to compare with
+    assert all(a["dofs"] < b["dofs"] for a, b in zip(steps, steps[1:]))
+    assert all(st["solve_time"] > 0 for st in steps)
+    assert s["error_estimate"] == steps[-1]["error_estimate"] <= 0.05
+    assert s["dofs"] == steps[-1]["dofs"]
+    with res.h5() as f:
+        nodes = sum(f[f"bodies/{b}/displacement"].shape[0] for b in s["bodies"])
+    assert nodes == sum(b["nodes"] for b in s["bodies"].values())
+    assert res.output_path.with_suffix(".xdmf").exists()
+    assert "accuracy: target 5 % reached" in res.stdout
+
+
+def test_limit_stops_with_best_answer(tmp_path):
+    """A target the dof limit cannot reach: one line saying what was reached
+    and why, the best answer written, exit 2."""
+    res = run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 1e-4, "-accuracy_max_dofs", 12000], tmp_path, check=False)
+    assert res.returncode == 2
+    lines = [l for l in res.stderr.splitlines() if l.startswith("contact:")]
+    assert len(lines) == 1 and "not reached" in lines[0] and "-accuracy_max_dofs" in lines[0], res.stderr
+    s = summary(res)
+    assert s["error_estimate"] > 1e-4
+    assert s["dofs"] <= 12000 and res.output_path.exists()
+
+
+@pytest.mark.parametrize("value", ["0", "1", "-0.1", "1.5", "nan"])
+def test_bad_target(value, tmp_path):
+    res = run_contact(scene_args("hertz-half", tmp_path) + ["-accuracy", value], tmp_path, check=False)
+    assert res.returncode != 0
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    assert len(lines) == 1 and "-accuracy" in lines[0], res.stderr
+    assert not res.summary_path.exists()
+
+
+def test_ranks_agree(tmp_path):
+    """2 ranks refine to the same meshes and the same answer as 1."""
+    args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
+    one = run_contact(args, tmp_path, name="one").summary
+    two = run_contact(args, tmp_path, ranks=2, name="two").summary
+    assert [s["dofs"] for s in one["adapt_steps"]] == [s["dofs"] for s in two["adapt_steps"]]
+    for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
+        assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-6)
+    assert two["contact_force"] == pytest.approx(one["contact_force"], rel=1e-8)
+    assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=1e-8)
