@@ -88,3 +88,6 @@ typedef struct {
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
 PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);
+/* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
+   of the recovered (nodal-average) stress minus the cell's stress. */
+PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);

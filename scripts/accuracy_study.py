@@ -12,11 +12,20 @@ difference, as the program's own estimate. Then the wall time of the
 (`-<body>_mesh`), both with the meshes already generated, median of
 --repeat runs made interleaved.
 
+Cost against the sweep (`make bench`, bench/full/RESULTS.md): the cheapest
+uniform or graded configuration there that reaches 1 % (its pressure profile
+within 1 % of the finest uniform run, h = 0.0065) is run again here,
+interleaved with `-accuracy 0.01` on the same scene. And the curve that
+bench.py draws in its error-against-time plot: `-accuracy TOL` on the
+reference scene for TOL = 5, 2, 1, 0.5 %, each answer's profile measured as
+the sweep measures its runs, against the uniform run at h = 0.0065.
+
     python3 scripts/accuracy_study.py [--out bench/accuracy] [--repeat 3]
 """
 import argparse
 import json
 import os
+import shutil
 import statistics
 import subprocess
 import sys
@@ -27,8 +36,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import profile_metrics as pm  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BIN = os.path.join(ROOT, "bin", "contact")  # main() runs a copy: a rebuild meanwhile does not mix versions
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 TOLS = [0.05, 0.02, 0.01]
+CURVE_TOLS = [0.05, 0.02, 0.01, 0.005]
+REF_H = 0.0065  # the sweep's finest uniform mesh: its profile reference
 
 # Not in the repository: a disc of radius 0.6 (E = 2000, nu = 0.25) on a block
 # of E = 700, nu = 0.35, pushed by 0.06; the same .geo files, other parameters.
@@ -60,7 +72,7 @@ OTHER = """-scene other
 def run(args, tmp, name, ok=(0,)):
     """Runs bin/contact; returns (summary, HDF5 path, wall seconds)."""
     h5, js = os.path.join(tmp, name + ".h5"), os.path.join(tmp, name + ".json")
-    cmd = [os.path.join(ROOT, "bin", "contact")] + args + ["-output", h5, "-summary", js, "-quiet"]
+    cmd = [BIN] + args + ["-output", h5, "-summary", js, "-quiet"]
     t0 = time.perf_counter()
     p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
     wall = time.perf_counter() - t0
@@ -112,29 +124,61 @@ def study(scene, base, tmp, repeat, maxsteps=9):
     return {"scene": scene, "estimates": est, "rows": rows}
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "accuracy"))
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--formulation", default="mortar")
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
-    t0 = time.time()
-    with tempfile.TemporaryDirectory() as tmp:
-        other = os.path.join(tmp, "other.opts")
-        with open(other, "w") as f:
-            f.write(OTHER.format(root=ROOT))
-        form = ["-contact_formulation", args.formulation]
-        scenes = {"hertz": ["-options_file", "meshes/hertz/hertz.opts"],
-                  "twodiscs": ["-options_file", "meshes/twodiscs/twodiscs.opts"],
-                  "other": ["-options_file", other, "-mesh_dir", os.path.join(tmp, "meshes")]}
-        res = [study(s, b + form, tmp, args.repeat) for s, b in scenes.items()]
-    with open(os.path.join(args.out, "results.json"), "w") as f:
-        json.dump(res, f, indent=1)
-    lines = ["# `-accuracy TOL`: its estimate against the truth, and its cost", "",
-             f"Written by `python3 scripts/accuracy_study.py --repeat {args.repeat}` in {time.time() - t0:.0f} s "
-             f"({time.strftime('%Y-%m-%d %H:%M')}), formulation {args.formulation}, one rank.", "",
-             "*true error*: against the answer two refinement steps further (the larger of the pressure profile's "
+def cheapest_uniform():
+    """The sweep's cheapest configuration reaching 1 % on the pressure profile
+    (formulation, scene, h, its wall time there), from bench/full/RESULTS.md."""
+    import re
+    path = os.path.join(ROOT, "bench", "full", "RESULTS.md")
+    best = None
+    for line in open(path):
+        m = re.match(r"\| (\w+) \| 1 % \| (\S+) h=([0-9.e-]+) (\w+) newton k_p=2e\+06 tol=1e-08 \| (\d+) \| ([0-9.]+) \|", line)
+        if m and (best is None or float(m.group(6)) < best["wall_sweep"]):
+            best = {"formulation": m.group(1), "scene": m.group(2), "h": float(m.group(3)), "dofs": int(m.group(5)),
+                    "wall_sweep": float(m.group(6))}
+        if line.startswith("**pressure profile: L2 error against Hertz"):
+            break
+    return best
+
+
+def curve(base, tmp, repeat):
+    """-accuracy TOL on the reference scene against the sweep's reference run."""
+    ref, ref_h5, _ = run(base + ["-mesh_size", str(REF_H)], tmp, "curve-ref")
+    rprof = pm.profiles(ref_h5)[0]
+    pts = []
+    for tol in CURVE_TOLS:
+        walls = []
+        for r in range(repeat + 1):  # the first run meshes: not timed
+            summ, h5, wall = run(base + ["-accuracy", str(tol)], tmp, f"curve{tol}")
+            if r:
+                walls.append(wall)
+        prof = pm.profiles(h5)[0]
+        d = [pm.l2_distance(prof[k], rprof[k]) for k in prof if k in rprof]
+        pts.append({"tol": tol, "dofs": summ["dofs"], "steps": len(summ["adapt_steps"]), "estimate": summ["error_estimate"],
+                    "wall": statistics.median(walls), "profile_err": sum(d) / len(d),
+                    "P_err": abs(summ["contact_force"] - ref["contact_force"]) / ref["contact_force"]})
+    return {"ref_h": REF_H, "ref_dofs": ref["dofs"], "points": pts}
+
+
+def against_sweep(tmp, repeat):
+    """-accuracy 0.01 against the sweep's cheapest configuration reaching 1 %, interleaved."""
+    best = cheapest_uniform()
+    if not best:
+        return None
+    args = ["-options_file", f"meshes/{best['scene']}/{best['scene']}.opts", "-contact_formulation", best["formulation"]]
+    run(args + ["-accuracy", "0.01"], tmp, "sweep-acc-warm")
+    run(args + ["-mesh_size", str(best["h"])], tmp, "sweep-uni-warm")
+    ta, tu = [], []
+    for _ in range(repeat):
+        ta.append(run(args + ["-accuracy", "0.01"], tmp, "sweep-acc")[2])
+        tu.append(run(args + ["-mesh_size", str(best["h"])], tmp, "sweep-uni")[2])
+    best.update({"wall_accuracy": statistics.median(ta), "wall_uniform": statistics.median(tu)})
+    return best
+
+
+def tables(out):
+    """The tables of RESULTS.md (and the README's), from results.json."""
+    res, sweep, cur, repeat = out["scenes"], out["sweep"], out["curve"], out["repeat"]
+    lines = ["*true error*: against the answer two refinement steps further (the larger of the pressure profile's "
              "relative L2 distance and the contact force's relative difference, the program's own measure). "
              "*wall*: whole-process wall time, meshes already generated (cached), median of the repeats, runs interleaved; "
              "*alone*: one run on the final step's meshes (`-<body>_mesh`).", "",
@@ -148,9 +192,65 @@ def main():
             lines.append(f"| {r['scene']} | {100 * row['tol']:g} % | {row['step'] + 1} | {', '.join(map(str, row['steps_dofs']))} | "
                          f"{100 * row['estimate']:.3g} % | {100 * row['true']:.3g} % | {row['ratio']:.2f} | {row['true'] / row['tol']:.2f} | "
                          f"{row['wall_accuracy']:.2f} | {row['wall_alone']:.2f} | {row['wall_accuracy'] / row['wall_alone']:.2f} |")
-    with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    if sweep:
+        lines += ["", "Against the sweep's cheapest configuration reaching 1 % (bench/full/RESULTS.md: "
+                  f"{sweep['scene']} h = {sweep['h']:g}, {sweep['formulation']}, {sweep['dofs']} dofs, wall {sweep['wall_sweep']:g} s there), "
+                  "run again here interleaved with `-accuracy 0.01` on the same scene, meshes already generated:", "",
+                  "| run | wall [s] |", "|---|---|",
+                  f"| uniform h = {sweep['h']:g} | {sweep['wall_uniform']:.2f} |",
+                  f"| -accuracy 0.01 | {sweep['wall_accuracy']:.2f} |",
+                  f"| ratio | {sweep['wall_accuracy'] / sweep['wall_uniform']:.2f} |"]
+    lines += ["", f"The curve in bench.py's error-against-time plot (reference scene, profile distance from the uniform run at "
+              f"h = {cur['ref_h']:g}, {cur['ref_dofs']} dofs, as the sweep measures its runs; wall: median of {repeat} after one that meshes):", "",
+              "| TOL | steps | dofs | estimate | profile distance from h = %g | force vs h = %g | wall [s] |" % (cur["ref_h"], cur["ref_h"]),
+              "|---|---|---|---|---|---|---|"]
+    for p in cur["points"]:
+        lines.append(f"| {100 * p['tol']:g} % | {p['steps']} | {p['dofs']} | {100 * p['estimate']:.3g} % | {100 * p['profile_err']:.3g} % | "
+                     f"{100 * p['P_err']:.3g} % | {p['wall']:.2f} |")
+    return "\n".join(lines) + "\n"
+
+
+def write_results(out, path):
+    lines = ["# `-accuracy TOL`: its estimate against the truth, and its cost", "",
+             f"Written by `python3 scripts/accuracy_study.py --repeat {out['repeat']}` in {out['elapsed']:.0f} s "
+             f"({out['date']}), formulation {out['formulation']}, one rank.", "", tables(out)]
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
     print("\n".join(lines))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "accuracy"))
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--formulation", default="mortar")
+    ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md from <out>/results.json")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    if args.report_only:
+        with open(os.path.join(args.out, "results.json")) as f:
+            write_results(json.load(f), os.path.join(args.out, "RESULTS.md"))
+        return
+    t0 = time.time()
+    global BIN
+    with tempfile.TemporaryDirectory() as tmp:
+        BIN = os.path.join(tmp, "contact")
+        shutil.copy2(os.path.join(ROOT, "bin", "contact"), BIN)
+        other = os.path.join(tmp, "other.opts")
+        with open(other, "w") as f:
+            f.write(OTHER.format(root=ROOT))
+        form = ["-contact_formulation", args.formulation]
+        scenes = {"hertz": ["-options_file", "meshes/hertz/hertz.opts"],
+                  "twodiscs": ["-options_file", "meshes/twodiscs/twodiscs.opts"],
+                  "other": ["-options_file", other, "-mesh_dir", os.path.join(tmp, "meshes")]}
+        res = [study(s, b + form, tmp, args.repeat) for s, b in scenes.items()]
+        sweep = against_sweep(tmp, args.repeat) if args.formulation == "mortar" else None
+        cur = curve(scenes["hertz"] + form, tmp, args.repeat)
+    out = {"formulation": args.formulation, "repeat": args.repeat, "elapsed": time.time() - t0,
+           "date": time.strftime("%Y-%m-%d %H:%M"), "scenes": res, "sweep": sweep, "curve": cur}
+    with open(os.path.join(args.out, "results.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    write_results(out, os.path.join(args.out, "RESULTS.md"))
 
 
 if __name__ == "__main__":

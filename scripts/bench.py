@@ -685,6 +685,19 @@ def git_info(out=None):
 
 # ------------------------------------------------------------------- plots
 
+def accuracy_curve(rows):
+    """bench/accuracy/results.json's -accuracy curve, if its profile reference
+    is this sweep's (the finest uniform mortar run of the reference scene)."""
+    path = os.path.join(ROOT, "bench", "accuracy", "results.json")
+    ref = {r.get("profile_ref_h") for r in rows if r["scene"] == "hertz" and r["formulation"] == "mortar"
+           and finite(r.get("profile_ref_h"))}
+    if not os.path.exists(path) or not ref:
+        return None
+    with open(path) as fh:
+        acc = json.load(fh).get("curve")
+    return acc if acc and any(abs(acc["ref_h"] - h) < 1e-12 for h in ref) else None
+
+
 def plots(rows, out, fit_solve, fit_lin):
     import matplotlib
     matplotlib.use("Agg")
@@ -733,6 +746,14 @@ def plots(rows, out, fit_solve, fit_lin):
                    and (key != "profile_err" or r["kp"] == REF_KP)]
             front(ax, pts, key, fcolors[form], fstyles[form], form)
         ax.set_title(title, fontsize=10)
+    acc = accuracy_curve(rows)
+    if acc:  # -accuracy TOL on the reference scene (scripts/accuracy_study.py), measured as these runs
+        pts = sorted(acc["points"], key=lambda p: p["wall"])
+        axes[0].plot([p["wall"] for p in pts], [p["profile_err"] for p in pts], "D-", color="C2", lw=1.8,
+                     label="mortar -accuracy TOL")
+        for p in pts:
+            axes[0].annotate("%g %%" % (100 * p["tol"]), (p["wall"], p["profile_err"]), fontsize=7,
+                             xytext=(4, 4), textcoords="offset points", color="C2")
     for form in FORMULATIONS:
         for s in ALL_STRATEGIES:
             pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and usable(r, "P_ref_err")
@@ -1167,6 +1188,15 @@ def report(rows, args, info, meshes, elapsed, load):
                         form, 100 * t, config_name(r), r["dofs"], r["wall_median"], r["solve_median"], pct(r[key]),
                         (" %s |" % fmt(r.get("profile_ref_h"), "%g")) if show_ref else "", r.get("iterations", "-")))
         A("")
+        acc = accuracy_curve(rows) if key == "profile_err" else None
+        if acc:
+            A("`-accuracy TOL` on the reference scene (mortar; `scripts/accuracy_study.py`, bench/accuracy/RESULTS.md, "
+              "measured there against this sweep's reference run, h = %g; whole-process wall time with the meshes "
+              "generated, as here, median of its repeats, on another day): %s. It is the line *mortar -accuracy TOL* "
+              "of error_vs_time.png." % (acc["ref_h"], "; ".join(
+                  "TOL %g %%: distance %s, %d dofs, %.3g s" % (100 * p["tol"], pct(p["profile_err"]), p["dofs"], p["wall"])
+                  for p in acc["points"])))
+            A("")
     fin = []
     for form in forms:
         q = sorted(default_runs(rows, "hertz", REF_KP, formulation=form), key=lambda r: r["h"])

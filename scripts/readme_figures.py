@@ -15,6 +15,7 @@ that a table can neither be typed by hand nor go stale. The tables:
   with each formulation, Newton with a direct factorisation, a few seconds);
 - formulations: bench/formulations/results.json (scripts/formulation_study.py);
 - speed: bench/full/results.csv (scripts/bench.py --out bench/full);
+- accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06, interleaved, median of 3
   solve times; about 2 minutes).
@@ -138,13 +139,18 @@ def render_speed():
     return "\n".join(out) + "\n"
 
 
+def render_accuracy():
+    import accuracy_study
+    return accuracy_study.tables(load("accuracy"))
+
+
 def render_formulations():
     import formulation_study
     return formulation_study.tables(load("formulations"))
 
 
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
-          "speed": render_speed}
+          "speed": render_speed, "accuracy": render_accuracy}
 
 
 def blocks(text):

@@ -44,10 +44,12 @@ DOMAINS = {
     "indenter_geo_params": ("name",), "block_geo_params": ("name",), "indenter_bc": ("name",), "block_bc": ("name",),
     "indenter_bc_clamp_components": ("name",), "block_bc_push_components": ("name",),
     "contact_pairs": ("name",), "contact_interface_surfaces": ("name",),
+    "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
+    "accuracy_grading": REAL_POS,
 }
 # the sections of -help that are the program's own
 SECTIONS = ("Program options", "Progress options", "Contact scene options", "Body options", "Dirichlet condition",
-            "Contact options", "Contact pair options", "Mortar contact options")
+            "Contact options", "Contact pair options", "Mortar contact options", "Accuracy options")
 
 
 def program_options():
@@ -91,6 +93,8 @@ def bad_values(kind):
         return out
     if k == "int":
         return ["abc", "2.5", str(kind[1] - 1)]
+    if k == "fraction":  # in (0, 1)
+        return ["abc", "nan", "inf", "0", "1", "-0.5", "1.5"]
     if k == "choice":
         return ["nosuch"]
     if k == "bool":

@@ -16,70 +16,31 @@ static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, con
   PetscFunctionReturn(0);
 }
 
-/* Node values are computed per local point (arrays over the chart); owned
-   points are numbered by the body's node numbering, and the stress sums of the
-   cells around a node are reduced from ghosts to owners over the point SF. */
-PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
+/* Per local point: the sums of the stresses (xx, yy, zz, xy) of the cells
+   around it at the point, and their count (sr[5 * point]), summed over every
+   rank's cells and the same on every rank that has the point. */
+static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal sr[])
 {
-  PetscSection       s;
-  PetscSF            sf;
-  const PetscScalar *ua;
-  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
-  PetscInt           nown = 0, rstart = 0, nroots, *topo;
-  PetscReal         *sp, *sr, refpts[9 * 2];
-  PetscTabulation    Tn;
-  PetscReal          loc[2] = {0, 0}, glob[2];
-  PetscScalar       *ax, *au, *as, *av;
-  MPI_Datatype       five;
+  const PetscInt  nb = b->nb, np = b->pEnd - b->pStart;
+  PetscSF         sf;
+  PetscInt        nroots;
+  PetscReal      *sp, refpts[9 * 2];
+  PetscTabulation Tn;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(DMGetPointSF(b->dm, &sf));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
-    PetscInt gdof;
-    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
-    if (gdof > 0) nown += gdof;
-  }
-  PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
-  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
-  PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
-  PetscCall(VecGetSize(F->vm, &F->nnodes));
-  PetscCall(PetscCalloc2(5 * np, &sp, 5 * np, &sr));
-  PetscCall(PetscMalloc1(b->ncells * nb, &topo));
+  PetscCall(PetscCalloc1(5 * np, &sp));
   PetscCall(BodyGetReferenceNodes(b, refpts));
   PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
-  PetscCall(VecGetArrayRead(Xl, &ua));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscInt  *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
+    const PetscInt *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
     const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * 2];
-    PetscInt         depth[9], corners[4], nc = 0, node[9];
-    PetscReal        u[9][2], dNdx[9 * 2];
+    PetscReal u[9][2], dNdx[9 * 2];
 
     for (PetscInt k = 0; k < nb; ++k) {
-      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
-      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
       u[k][0] = PetscRealPart(ua[dof[k]]);
       u[k][1] = PetscRealPart(ua[dof[k] + 1]);
-      if (depth[k] == 0) corners[nc++] = k;
     }
-    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
-    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
-    for (PetscInt i = 0; i < nb; ++i) {
-      if (depth[i] == 1) {
-        const PetscInt *cone;
-        PetscInt        j0 = -1, j1 = -1;
-        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
-        for (PetscInt j = 0; j < nc; ++j) {
-          if (pts[corners[j]] == cone[0]) j0 = j;
-          if (pts[corners[j]] == cone[1]) j1 = j;
-        }
-        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
-        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
-      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
-    }
-    /* stress of this cell at each of its nodes */
     for (PetscInt a = 0; a < nb; ++a) {
       PetscReal  gu[4] = {0, 0, 0, 0}, sig[4];
       PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
@@ -102,12 +63,116 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
   PetscCall(PetscArraycpy(sr, sp, 5 * np));
   if (nroots >= 0) {
+    MPI_Datatype five;
     PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
     PetscCallMPI(MPI_Type_commit(&five));
     PetscCall(PetscSFReduceBegin(sf, five, sp, sr, MPI_SUM));
     PetscCall(PetscSFReduceEnd(sf, five, sp, sr, MPI_SUM));
+    PetscCall(PetscSFBcastBegin(sf, five, sr, sr, MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(sf, five, sr, sr, MPI_REPLACE));
     PetscCallMPI(MPI_Type_free(&five));
   }
+  PetscCall(PetscFree(sp));
+  PetscFunctionReturn(0);
+}
+
+/* Zienkiewicz-Zhu indicator of each local cell: the L2 norm over the cell of
+   the difference between the recovered stress (the nodal averages
+   interpolated with the cell's basis) and the cell's own stress,
+   eta_K^2 = int_K |sigma* - sigma_h|^2 dA (components xx, yy, zz, xy; xy twice). */
+PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
+{
+  const PetscInt     nb = b->nb, nq = b->nq, np = b->pEnd - b->pStart;
+  const PetscScalar *ua;
+  PetscReal         *sr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(5 * np, &sr));
+  PetscCall(VecGetArrayRead(Xl, &ua));
+  PetscCall(BodyStressSums(b, ua, sr));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
+    PetscReal       e2 = 0.0;
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
+      PetscReal        gu[4] = {0, 0, 0, 0}, sig[4], h[4], rec[4] = {0, 0, 0, 0};
+      for (PetscInt a = 0; a < nb; ++a) {
+        const PetscReal *st = &sr[5 * (pts[a] - b->pStart)];
+        gu[0] += PetscRealPart(ua[dof[a]]) * dN[2 * a];
+        gu[1] += PetscRealPart(ua[dof[a]]) * dN[2 * a + 1];
+        gu[2] += PetscRealPart(ua[dof[a] + 1]) * dN[2 * a];
+        gu[3] += PetscRealPart(ua[dof[a] + 1]) * dN[2 * a + 1];
+        for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
+      }
+      ElasticityStress(b->param, gu, sig);
+      h[0] = sig[0];
+      h[1] = sig[3];
+      h[2] = ElasticityStressZZ(b->param, gu);
+      h[3] = sig[1];
+      e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
+    }
+    eta[c] = PetscSqrtReal(e2);
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &ua));
+  PetscCall(PetscFree(sr));
+  PetscFunctionReturn(0);
+}
+
+/* Node values are computed per local point (arrays over the chart); owned
+   points are numbered by the body's node numbering, and the stress sums of the
+   cells around a node are reduced from ghosts to owners over the point SF. */
+PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
+{
+  PetscSection       s;
+  const PetscScalar *ua;
+  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
+  PetscInt           nown = 0, rstart = 0, *topo;
+  PetscReal         *sr;
+  PetscReal          loc[2] = {0, 0}, glob[2];
+  PetscScalar       *ax, *au, *as, *av;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt gdof;
+    PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
+    if (gdof > 0) nown += gdof;
+  }
+  PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
+  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
+  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
+  PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
+  PetscCall(VecGetSize(F->vm, &F->nnodes));
+  PetscCall(PetscMalloc1(5 * np, &sr));
+  PetscCall(PetscMalloc1(b->ncells * nb, &topo));
+  PetscCall(VecGetArrayRead(Xl, &ua));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt  *pts = &b->cpts[c * nb];
+    PetscInt         depth[9], corners[4], nc = 0, node[9];
+
+    for (PetscInt k = 0; k < nb; ++k) {
+      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
+      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
+      if (depth[k] == 0) corners[nc++] = k;
+    }
+    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
+    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
+    for (PetscInt i = 0; i < nb; ++i) {
+      if (depth[i] == 1) {
+        const PetscInt *cone;
+        PetscInt        j0 = -1, j1 = -1;
+        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
+        for (PetscInt j = 0; j < nc; ++j) {
+          if (pts[corners[j]] == cone[0]) j0 = j;
+          if (pts[corners[j]] == cone[1]) j1 = j;
+        }
+        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
+        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
+      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
+    }
+  }
+  PetscCall(BodyStressSums(b, ua, sr));
   PetscCall(VecGetArray(F->coords, &ax));
   PetscCall(VecGetArray(F->disp, &au));
   PetscCall(VecGetArray(F->stress, &as));
@@ -135,7 +200,7 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(VecRestoreArray(F->stress, &as));
   PetscCall(VecRestoreArray(F->vm, &av));
   PetscCall(VecRestoreArrayRead(Xl, &ua));
-  PetscCall(PetscFree2(sp, sr));
+  PetscCall(PetscFree(sr));
   PetscCall(MPIU_Allreduce(&loc[0], &glob[0], 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscCall(MPIU_Allreduce(&loc[1], &glob[1], 1, MPIU_REAL, MPIU_SUM, b->comm));
   F->umax   = glob[0];

@@ -1,20 +1,24 @@
 /* -accuracy TOL: a sequence of solves, each on meshes refined around the
-   contact zones of the last, until the estimated error of the answer is
-   below TOL.
+   contact zones of the last and where its stress is least accurate, until
+   the estimated error of the answer is below TOL.
 
    Step 0 solves the scene's own meshes. After step k, the contact zone of
    each body is the set of its nodes on which a contact term exerts a force
    (the terms' gradient at the solution: any formulation, both surfaces of a
-   pair). Its meshes for step k + 1 come from Gmsh with a size field
-   (MeshGenerate's -bgm) defined on the cells of step k's mesh: at a vertex
-   at distance d from the zone,
+   pair), and each cell K has the Zienkiewicz-Zhu indicator eta_K (the L2
+   norm of the recovered nodal stress minus the cell's, fields.c); the cells
+   with the largest eta_K that make up the fraction -accuracy_bulk (0.5) of
+   sum eta_K^2 are marked (Doerfler's marking, over every body). Step k + 1's
+   meshes come from Gmsh with a size field (MeshGenerate's -bgm) defined on
+   the cells of step k's mesh: at a vertex at distance d from the zone,
 
-     h_new = min(h_cell, h_z / 2 + g max(0, d - 2 h_z)),
+     h_new = min(h_K, h_z / 2 + g max(0, d - 2 h_z)),   h_K halved if K is marked,
 
-   h_cell the cell's size (mean edge length), h_z the mean size of the cells
+   h_K the cell's size (mean edge length), h_z the mean size of the cells
    that touch the zone, g = -accuracy_grading. So the zone and two of its
-   cells around it are halved and the size grows linearly away from them,
-   never above the last mesh's.
+   cells around it are halved, the size grows linearly away from them, the
+   marked cells (the stress singularities at clamped and pushed corners, say,
+   which set the contact force) are halved, and nothing is coarsened.
 
    Error estimate. The pressure has square-root edges, so its L2 error e_k
    is of first order in the zone's mesh size h (SPEC: even the best P2 fit
@@ -39,7 +43,7 @@
 
 struct _n_Accuracy {
   MPI_Comm  comm;
-  PetscReal tol, grading, maxDofs;
+  PetscReal tol, grading, maxDofs, bulk;
   PetscInt  maxSteps;
   PetscBool set;
 };
@@ -56,6 +60,7 @@ PetscErrorCode AccuracyCreate(MPI_Comm comm, Accuracy *acc)
   PetscCall(PetscNew(acc));
   (*acc)->comm     = comm;
   (*acc)->grading  = 0.3;
+  (*acc)->bulk     = 0.5;
   (*acc)->maxSteps = 8;
   PetscFunctionReturn(0);
 }
@@ -81,12 +86,14 @@ PetscErrorCode AccuracySetFromOptions(Accuracy acc)
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-accuracy", "Target relative error of the contact pressure profile (L2) and force: refine around the contact zones until the estimate is below it", "unset: one solve on the scene's meshes", PETSC_FALSE, &acc->tol, &acc->set));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-accuracy_max_dofs", "-accuracy: the most dofs a step may have; a target that needs more stops there", "-max_dofs, else the machine's memory", PETSC_FALSE, &acc->maxDofs, &setMax));
   PetscCall(PetscOptionsInt("-accuracy_max_steps", "-accuracy: the most solves (refinement steps + 1)", NULL, acc->maxSteps, &acc->maxSteps, NULL));
+  PetscCall(PetscOptionsReal("-accuracy_bulk", "-accuracy: the cells whose stress indicators make up this fraction of the total (largest first) are halved too", NULL, acc->bulk, &acc->bulk, NULL));
   PetscCall(PetscOptionsReal("-accuracy_grading", "-accuracy: growth of the mesh size per unit distance from the contact zones", NULL, acc->grading, &acc->grading, NULL));
   PetscOptionsEnd();
   PetscCheck(!acc->set || (acc->tol > 0 && acc->tol < 1), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: must be a relative error in (0, 1), got %g", (double)acc->tol);
   PetscCheck(!setMax || (acc->maxDofs >= 1 && !PetscIsInfOrNanReal(acc->maxDofs)), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_max_dofs: must be a finite number >= 1, got %g", (double)acc->maxDofs);
   if (!setMax) acc->maxDofs = 0.0;
   PetscCheck(acc->maxSteps >= 3, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_max_steps: must be >= 3 (the scene's meshes and two refinements, whose difference is the estimate), got %" PetscInt_FMT, acc->maxSteps);
+  PetscCheck(acc->bulk >= 0 && acc->bulk <= 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_bulk: must be in [0, 1], got %g", (double)acc->bulk);
   PetscCheck(acc->grading > 0 && acc->grading <= 10, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy_grading: must be in (0, 10], got %g", (double)acc->grading);
   PetscFunctionReturn(0);
 }
@@ -217,7 +224,7 @@ static int CompareRecords(const void *a, const void *b)
 /* Collective: writes body b's size field for the next step (above) to path
    (rank 0), a Gmsh view of its cells in a canonical order (so that the mesh
    does not depend on the number of ranks). */
-static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[], PetscReal grading, const char path[])
+static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[], const PetscReal eta[], PetscReal eta2min, PetscReal grading, const char path[])
 {
   PetscReal   ref[2 * 64], *rec, hz[2] = {0, 0}, *all = NULL;
   PetscInt    corner[4], nv = 0;
@@ -260,7 +267,8 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hz, 2, MPIU_REAL, MPIU_SUM, b->comm));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscReal *x = &b->xnode[2 * b->nb * c], h = rec[FIELD_REC * c];
+    const PetscReal *x = &b->xnode[2 * b->nb * c], h0 = rec[FIELD_REC * c];
+    const PetscReal  h = PetscSqr(eta[c]) >= eta2min ? 0.5 * h0 : h0; /* a marked cell: halved */
     PetscReal       *r = &rec[FIELD_REC * c];
     r[0] = (PetscReal)nv;
     for (PetscInt v = 0; v < nv; ++v) {
@@ -313,21 +321,61 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
    solved in p, written to paths[] (see above). */
 static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, char paths[][PETSC_MAX_PATH_LEN])
 {
+  PetscReal  *eta[CONTACT_MAX_BODIES], *e2, eta2min = PETSC_MAX_REAL, *all = NULL;
+  PetscInt    n = 0;
+  PetscMPIInt rank, size, nl, *cnt = NULL, *disp = NULL;
+
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  /* the stress indicators; the threshold of the largest that make up the fraction -accuracy_bulk of the total */
   PetscCall(ProblemScatterToBodies(p, p->X));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscCall(PetscMalloc1(p->bodies[i]->ncells + 1, &eta[i]));
+    PetscCall(BodyComputeStressIndicator(p->bodies[i], p->bodies[i]->Xl, eta[i]));
+    n += p->bodies[i]->ncells;
+  }
+  PetscCall(PetscMalloc1(n + 1, &e2));
+  n = 0;
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    for (PetscInt c = 0; c < p->bodies[i]->ncells; ++c) e2[n++] = PetscSqr(eta[i][c]);
+  nl = (PetscMPIInt)n;
+  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, p->comm));
+  if (!rank) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(disp[size] + 1, &all));
+  }
+  PetscCallMPI(MPI_Gatherv(e2, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, p->comm));
+  if (!rank) {
+    PetscReal total = 0.0, sum = 0.0;
+    PetscCall(PetscSortReal(disp[size], all));
+    for (PetscInt k = 0; k < disp[size]; ++k) total += all[k];
+    for (PetscInt k = disp[size] - 1; k >= 0 && acc->bulk > 0 && sum < acc->bulk * total; --k) {
+      sum += all[k];
+      eta2min = all[k];
+    }
+    PetscCall(PetscFree(all));
+    PetscCall(PetscFree2(cnt, disp));
+  }
+  PetscCallMPI(MPI_Bcast(&eta2min, 1, MPIU_REAL, 0, p->comm));
+  PetscCall(PetscFree(e2));
+  /* the contact zones: where the terms' gradient is not zero */
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscReal e;
     PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &e));
   }
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body       b = p->bodies[i];
+    Body       b  = p->bodies[i];
     PetscInt   nz = 0;
-    PetscReal *z = NULL;
+    PetscReal *z  = NULL;
     PetscCall(AccuracyZone(b, &nz, &z));
     PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->meshDir, b->name, (int)getpid(), (int)step));
-    PetscCall(AccuracyWriteField(b, nz, z, acc->grading, paths[i]));
+    PetscCall(AccuracyWriteField(b, nz, z, eta[i], eta2min, acc->grading, paths[i]));
     PetscCall(PetscFree(z));
+    PetscCall(PetscFree(eta[i]));
   }
   PetscFunctionReturn(0);
 }
@@ -363,7 +411,17 @@ PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
     if (!rank)
       for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i)
         if (fields[i][0]) (void)unlink(fields[i]);
-    if (k == 0) PetscCheck(cur->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+    if (k == 0) {
+      PetscCheck(cur->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+      for (PetscInt t = 0; t < cur->nterms; ++t) {
+        PetscBool gpts;
+        PetscCall(PetscStrcmp(cur->terms[t]->type, "gpts", &gpts));
+        if (gpts) {
+          PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: note: pair %s uses the gpts formulation, whose pressure converges slowly under refinement: -contact_formulation mortar reaches the same target with far fewer dofs (README, Accuracy)\n", cur->terms[t]->name));
+          break;
+        }
+      }
+    }
     if (acc->maxDofs <= 0) acc->maxDofs = cur->maxDofs;
     PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
     PetscCall(ProblemSetUp(cur));
@@ -432,6 +490,10 @@ PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
     PetscCall(ProblemView(prev));
     if (reached) PetscCall(PetscPrintf(acc->comm, "accuracy: target %.3g %% reached: estimated error %.3g %% after %" PetscInt_FMT " steps, %" PetscInt_FMT " dofs\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), last + 1, steps[last].dofs));
     else PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: accuracy: target %.3g %% not reached: estimated error %.3g %% at %" PetscInt_FMT " dofs; stopped because %s; writing that answer\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), steps[last].dofs, stop));
+    if (prev->taylor) {
+      PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
+      PetscCall(ProblemTaylorTest(prev));
+    }
     PetscCall(ProblemCheckUnusedOptions(prev, PETSC_TRUE));
     for (PetscInt i = 0; i < prev->nbodies; ++i) prev->time[0] += prev->bodies[i]->tmesh;
     prev->time[2] = steps[last].tsolve;
