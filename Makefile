@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test stress bench bench-quick bench-formulations bench-parallel clean
+.PHONY: all deps meshes run test stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -64,6 +64,11 @@ stress: bin/contact meshes
 bench: bin/contact meshes
 	$(PYTHON) scripts/bench.py --out bench
 	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
+	$(PYTHON) scripts/accuracy_study.py --out bench/accuracy
+# -accuracy: its estimate against the true error, its cost (about 4 minutes):
+# bench/accuracy/RESULTS.md, and the curve of bench.py's error-against-time plot
+bench-accuracy: bin/contact meshes
+	$(PYTHON) scripts/accuracy_study.py --out bench/accuracy
 # 1 against 2 ranks, interleaved, median of 3 (about 5 minutes)
 bench-parallel: bin/contact meshes
 	$(PYTHON) scripts/bench_parallel.py --out bench/parallel

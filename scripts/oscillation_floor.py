@@ -23,6 +23,7 @@ Written to bench/formulations/oscillation_floor.md.
     python3 scripts/oscillation_floor.py [--out bench/formulations]
 """
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -82,25 +83,29 @@ def index(s, p):
     return max(dev) / p.max()
 
 
+def tables(res):
+    """The two tables (README and oscillation_floor.md) from the results."""
+    lines = ["| a/h | weights | min | median | max |", "|---|---|---|---|---|"]
+    for r in res["floor"]:
+        lines.append(f"| {r['a_over_h']} | {r['kind']} | {r['min']:.4f} | {r['median']:.4f} | {r['max']:.4f} |")
+    lines += ["", "Measured: the half reference scene (`meshes/hertz-half`), `-contact_formulation mortar` (dual weights), "
+              "the disc's nodal profile, a = Hertz's half-width (as bench/formulations/RESULTS.md):", "",
+              "| h | a/h | oscillation index |", "|---|---|---|"]
+    for r in res["measured"]:
+        lines.append(f"| {r['h']:g} | {r['a_over_h']:.1f} | {r['index']:.4f} |")
+    return "\n".join(lines) + "\n"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "bench", "formulations"))
     ap.add_argument("--offsets", type=int, default=10, help="positions of the zone's edge within an element")
     args = ap.parse_args()
-    lines = ["# The oscillation index of nodal pressures with an exact displacement", "",
-             "Written by `python3 scripts/oscillation_floor.py`. Hertz's profile (a = 1) on a uniform mesh of P2 edges, "
-             f"the zone's edge at {args.offsets} offsets within an element; for each weighting of the nodal gaps, the nodal "
-             "pressure it gives when the displacement is exact (the consistent nodal forces f_j = int N_j p reproduced): "
-             "the smallest, median and largest index over the offsets. The target of the issue is 0.02 at a/h = 6 "
-             "(h = 0.06 on the reference scene, a = 0.345) and 0.01 from a/h = 12.", "",
-             "| a/h | weights | min | median | max |", "|---|---|---|---|---|"]
+    res = {"offsets": args.offsets, "floor": [], "measured": []}
     for aoh in (6, 12, 24):
         for kind in KINDS:
             v = [index(*nodal(aoh, o, kind)) for o in np.arange(args.offsets) / args.offsets]
-            lines.append(f"| {aoh} | {kind} | {min(v):.4f} | {np.median(v):.4f} | {max(v):.4f} |")
-    lines += ["", "Measured: the half reference scene (`meshes/hertz-half`), `-contact_formulation mortar` (dual weights), "
-              "the disc's nodal profile, a = Hertz's half-width (as bench/formulations/RESULTS.md):", "",
-              "| h | a/h | oscillation index |", "|---|---|---|"]
+            res["floor"].append({"a_over_h": aoh, "kind": kind, "min": min(v), "median": float(np.median(v)), "max": max(v)})
     with tempfile.TemporaryDirectory() as tmp:
         for h in MEASURED_H:
             h5 = os.path.join(tmp, "h%g.h5" % h)
@@ -110,10 +115,18 @@ def main():
             prof, attrs = pm.profiles(h5)
             a = float(attrs["hertz_a"])
             for (sv, p, w, g) in prof.values():
-                lines.append(f"| {h:g} | {a / h:.1f} | {pm.oscillation_index(sv, p, a):.4f} |")
+                res["measured"].append({"h": h, "a_over_h": a / h, "index": pm.oscillation_index(sv, p, a)})
     os.makedirs(args.out, exist_ok=True)
+    with open(os.path.join(args.out, "oscillation_floor.json"), "w") as f:
+        json.dump(res, f, indent=1)
+    lines = ["# The oscillation index of nodal pressures with an exact displacement", "",
+             "Written by `python3 scripts/oscillation_floor.py`. Hertz's profile (a = 1) on a uniform mesh of P2 edges, "
+             f"the zone's edge at {args.offsets} offsets within an element; for each weighting of the nodal gaps, the nodal "
+             "pressure it gives when the displacement is exact (the consistent nodal forces f_j = int N_j p reproduced): "
+             "the smallest, median and largest index over the offsets. The target of the issue is 0.02 at a/h = 6 "
+             "(h = 0.06 on the reference scene, a = 0.345) and 0.01 from a/h = 12.", "", tables(res)]
     with open(os.path.join(args.out, "oscillation_floor.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines))
     print("\n".join(lines))
 
 

@@ -16,6 +16,7 @@ that a table can neither be typed by hand nor go stale. The tables:
 - formulations: bench/formulations/results.json (scripts/formulation_study.py);
 - speed: bench/full/results.csv (scripts/bench.py --out bench/full);
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
+- oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06, interleaved, median of 3
   solve times; about 2 minutes).
@@ -144,13 +145,19 @@ def render_accuracy():
     return accuracy_study.tables(load("accuracy"))
 
 
+def render_oscillation():
+    import oscillation_floor
+    with open(os.path.join(ROOT, "bench", "formulations", "oscillation_floor.json")) as f:
+        return oscillation_floor.tables(json.load(f))
+
+
 def render_formulations():
     import formulation_study
     return formulation_study.tables(load("formulations"))
 
 
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
-          "speed": render_speed, "accuracy": render_accuracy}
+          "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation}
 
 
 def blocks(text):

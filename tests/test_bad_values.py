@@ -45,7 +45,7 @@ DOMAINS = {
     "indenter_bc_clamp_components": ("name",), "block_bc_push_components": ("name",),
     "contact_pairs": ("name",), "contact_interface_surfaces": ("name",),
     "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
-    "accuracy_grading": REAL_POS,
+    "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",),
 }
 # the sections of -help that are the program's own
 SECTIONS = ("Program options", "Progress options", "Contact scene options", "Body options", "Dirichlet condition",
@@ -95,6 +95,8 @@ def bad_values(kind):
         return ["abc", "2.5", str(kind[1] - 1)]
     if k == "fraction":  # in (0, 1)
         return ["abc", "nan", "inf", "0", "1", "-0.5", "1.5"]
+    if k == "unit":  # in [0, 1]
+        return ["abc", "nan", "inf", "-0.5", "1.5"]
     if k == "choice":
         return ["nosuch"]
     if k == "bool":

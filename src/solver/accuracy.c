@@ -202,6 +202,29 @@ static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
   PetscFunctionReturn(0);
 }
 
+/* Collective: every rank's n reals gathered on rank 0 (*all, *ntot there; PetscFree). */
+static PetscErrorCode GatherReals(MPI_Comm comm, PetscInt n, const PetscReal loc[], PetscInt *ntot, PetscReal **all)
+{
+  PetscMPIInt rank, size, nl = (PetscMPIInt)n, *cnt = NULL, *disp = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  *ntot = 0;
+  *all  = NULL;
+  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
+  if (!rank) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(disp[size] + 1, all));
+    *ntot = disp[size];
+  }
+  PetscCallMPI(MPI_Gatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, 0, comm));
+  if (!rank) PetscCall(PetscFree2(cnt, disp));
+  PetscFunctionReturn(0);
+}
+
 /* A cell's record in the size field: vertex count, then x, y, size per vertex. */
 #define FIELD_REC 13
 
@@ -227,12 +250,11 @@ static int CompareRecords(const void *a, const void *b)
 static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[], const PetscReal eta[], PetscReal eta2min, PetscReal grading, const char path[])
 {
   PetscReal   ref[2 * 64], *rec, hz[2] = {0, 0}, *all = NULL;
-  PetscInt    corner[4], nv = 0;
-  PetscMPIInt rank, size, nl, *cnt = NULL, *disp = NULL;
+  PetscInt    corner[4], nv = 0, ntot;
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  PetscCallMPI(MPI_Comm_size(b->comm, &size));
   PetscCheck(b->nb <= 64, b->comm, PETSC_ERR_SUP, "body %s: %" PetscInt_FMT " nodes per cell", b->name, b->nb);
   PetscCall(BodyGetReferenceNodes(b, ref));
   for (PetscInt a = 0; a < b->nb && nv < 4; ++a) { /* the cell's vertices, in cyclic order */
@@ -284,17 +306,9 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
       r[3 + 3 * v] = s;
     }
   }
-  nl = (PetscMPIInt)(FIELD_REC * b->ncells);
-  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, b->comm));
+  PetscCall(GatherReals(b->comm, FIELD_REC * b->ncells, rec, &ntot, &all));
   if (!rank) {
-    disp[0] = 0;
-    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, &all));
-  }
-  PetscCallMPI(MPI_Gatherv(rec, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, b->comm));
-  if (!rank) {
-    const PetscInt n  = disp[size] / FIELD_REC;
+    const PetscInt n  = ntot / FIELD_REC;
     FILE          *fp = fopen(path, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write the size field %s", path);
     qsort(all, (size_t)n, FIELD_REC * sizeof(PetscReal), CompareRecords);
@@ -311,7 +325,6 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
     fprintf(fp, "};\n");
     PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing the size field %s", path);
     PetscCall(PetscFree(all));
-    PetscCall(PetscFree2(cnt, disp));
   }
   PetscCall(PetscFree(rec));
   PetscFunctionReturn(0);
@@ -322,12 +335,11 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
 static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, char paths[][PETSC_MAX_PATH_LEN])
 {
   PetscReal  *eta[CONTACT_MAX_BODIES], *e2, eta2min = PETSC_MAX_REAL, *all = NULL;
-  PetscInt    n = 0;
-  PetscMPIInt rank, size, nl, *cnt = NULL, *disp = NULL;
+  PetscInt    n = 0, ntot;
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
-  PetscCallMPI(MPI_Comm_size(p->comm, &size));
   /* the stress indicators; the threshold of the largest that make up the fraction -accuracy_bulk of the total */
   PetscCall(ProblemScatterToBodies(p, p->X));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
@@ -339,25 +351,16 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   n = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt c = 0; c < p->bodies[i]->ncells; ++c) e2[n++] = PetscSqr(eta[i][c]);
-  nl = (PetscMPIInt)n;
-  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, p->comm));
-  if (!rank) {
-    disp[0] = 0;
-    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, &all));
-  }
-  PetscCallMPI(MPI_Gatherv(e2, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, 0, p->comm));
+  PetscCall(GatherReals(p->comm, n, e2, &ntot, &all));
   if (!rank) {
     PetscReal total = 0.0, sum = 0.0;
-    PetscCall(PetscSortReal(disp[size], all));
-    for (PetscInt k = 0; k < disp[size]; ++k) total += all[k];
-    for (PetscInt k = disp[size] - 1; k >= 0 && acc->bulk > 0 && sum < acc->bulk * total; --k) {
+    PetscCall(PetscSortReal(ntot, all));
+    for (PetscInt k = 0; k < ntot; ++k) total += all[k];
+    for (PetscInt k = ntot - 1; k >= 0 && acc->bulk > 0 && sum < acc->bulk * total; --k) {
       sum += all[k];
       eta2min = all[k];
     }
     PetscCall(PetscFree(all));
-    PetscCall(PetscFree2(cnt, disp));
   }
   PetscCallMPI(MPI_Bcast(&eta2min, 1, MPIU_REAL, 0, p->comm));
   PetscCall(PetscFree(e2));
