@@ -21,7 +21,7 @@ extern const char *const SchurTypes[];
    error estimates (relative: the pressure profiles', the contact force's, and
    the larger of the two; Inf at the first step). */
 typedef struct {
-  PetscInt  dofs;
+  PetscInt  dofs, iterations;
   PetscReal tsolve, estimate, profile, force;
 } AccuracyStep;
 
@@ -35,6 +35,7 @@ struct _n_Problem {
   PetscBool meshOnly;   /* set before ProblemSetFromOptions: mesh, write nothing */
   PetscBool outputOpen; /* set before ProblemSetFromOptions: the output set is already open (an earlier -accuracy step) */
   PetscBool deferView;  /* ProblemPostProcess does not print the terms' reports (ProblemView does) */
+  Vec       X0;         /* set before ProblemSolve: the first iterate (NULL: rest; ignored with load or penalty stages) */
   char      bgm[CONTACT_MAX_BODIES][PETSC_MAX_PATH_LEN]; /* set before ProblemSetFromOptions: each body's size field, or empty */
   PetscReal accuracyTarget, errorEstimate; /* -accuracy's target and the estimate of the answer (0: not adaptive) */
   PetscInt  nAccuracySteps;

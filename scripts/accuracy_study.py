@@ -159,6 +159,26 @@ def curve(base, tmp, repeat):
     return {"ref_h": REF_H, "ref_dofs": ref["dofs"], "points": pts}
 
 
+def warm_start(base, tmp, repeat, tol=0.005):
+    """-accuracy TOL from the last step's answer and from rest, interleaved."""
+    out = {}
+    for warm in ("1", "0"):
+        run(base + ["-accuracy", str(tol), "-accuracy_warm_start", warm], tmp, "warm-mesh")
+    walls = {"1": [], "0": []}
+    for _ in range(repeat):
+        for warm in ("1", "0"):
+            summ, _, wall = run(base + ["-accuracy", str(tol), "-accuracy_warm_start", warm], tmp, f"warm{warm}")
+            walls[warm].append(wall)
+            out[warm] = {"iterations": [s["iterations"] for s in summ["adapt_steps"]],
+                         "solve": sum(s["solve_time"] for s in summ["adapt_steps"]), "P": summ["contact_force"],
+                         "pmax": summ["fem_pmax"]}
+    for warm in ("1", "0"):
+        out[warm]["wall"] = statistics.median(walls[warm])
+    out["tol"] = tol
+    out["answer_change"] = max(abs(out["1"]["P"] / out["0"]["P"] - 1), abs(out["1"]["pmax"] / out["0"]["pmax"] - 1))
+    return out
+
+
 def against_sweep(tmp, repeat):
     """-accuracy 0.01 against the sweep's cheapest configuration reaching 1 %, interleaved."""
     best = cheapest_uniform()
@@ -207,6 +227,13 @@ def tables(out):
     for p in cur["points"]:
         lines.append(f"| {100 * p['tol']:g} % | {p['steps']} | {p['dofs']} | {100 * p['estimate']:.3g} % | {100 * p['profile_err']:.3g} % | "
                      f"{100 * p['P_err']:.3g} % | {p['wall']:.2f} |")
+    w = out.get("warm")
+    if w:
+        lines += ["", f"Warm start (reference scene, `-accuracy {w['tol']:g}`, with and without `-accuracy_warm_start`, "
+                  f"interleaved, wall: median of {repeat}; the answers differ by {w['answer_change']:.1e} relative in P and p_max):", "",
+                  "| first iterate | Newton iterations per step | solve time, all steps [s] | wall [s] |", "|---|---|---|---|"]
+        for k, name in (("0", "rest"), ("1", "last step's answer")):
+            lines.append(f"| {name} | {', '.join(map(str, w[k]['iterations']))} | {w[k]['solve']:.2f} | {w[k]['wall']:.2f} |")
     return "\n".join(lines) + "\n"
 
 
@@ -246,8 +273,9 @@ def main():
         res = [study(s, b + form, tmp, args.repeat) for s, b in scenes.items()]
         sweep = against_sweep(tmp, args.repeat) if args.formulation == "mortar" else None
         cur = curve(scenes["hertz"] + form, tmp, args.repeat)
+        warm = warm_start(scenes["hertz"] + form, tmp, args.repeat)
     out = {"formulation": args.formulation, "repeat": args.repeat, "elapsed": time.time() - t0,
-           "date": time.strftime("%Y-%m-%d %H:%M"), "scenes": res, "sweep": sweep, "curve": cur}
+           "date": time.strftime("%Y-%m-%d %H:%M"), "scenes": res, "sweep": sweep, "curve": cur, "warm": warm}
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump(out, f, indent=1)
     write_results(out, os.path.join(args.out, "RESULTS.md"))

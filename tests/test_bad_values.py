@@ -45,7 +45,7 @@ DOMAINS = {
     "indenter_bc_clamp_components": ("name",), "block_bc_push_components": ("name",),
     "contact_pairs": ("name",), "contact_interface_surfaces": ("name",),
     "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
-    "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",),
+    "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",), "accuracy_warm_start": ("bool",),
 }
 # the sections of -help that are the program's own
 SECTIONS = ("Program options", "Progress options", "Contact scene options", "Body options", "Dirichlet condition",

@@ -648,7 +648,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
       fprintf(fp, ",\n  \"adapt_steps\": [");
       for (PetscInt k = 0; k < p->nAccuracySteps; ++k) {
         const AccuracyStep *a = &p->accuracySteps[k];
-        fprintf(fp, "%s\n    {\"dofs\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs);
+        fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs, (int)a->iterations);
         ContactJSONReal(fp, a->tsolve);
         fprintf(fp, ", \"error_estimate\": ");
         ContactJSONReal(fp, a->estimate);

@@ -700,6 +700,15 @@ static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedR
   *its = 0;
   p->stagesDone = 0;
   p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
+  if (nstages == 1 && p->X0) { /* from X0, stopping where a solve from rest would */
+    PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
+    PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f, p->G, p));
+    p->nEnergyEvals--;
+    PetscCall(VecNorm(p->G, NORM_2, &g0));
+    p->hessianG0 = g0;
+    PetscCall(VecCopy(p->X0, p->X));
+    PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+  }
   if (nstages == 1) {
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
@@ -881,6 +890,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(SubdomainDestroy(&p->sub));
   PetscCall(MatDestroy(&p->K));
+  PetscCall(VecDestroy(&p->X0));
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->G));
   PetscCall(PetscFree(p));
