@@ -104,3 +104,11 @@ def test_ranks_agree(tmp_path):
         assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-6)
     assert two["contact_force"] == pytest.approx(one["contact_force"], rel=1e-8)
     assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=1e-8)
+
+
+def test_gpts_too(tmp_path):
+    """-accuracy works with the Gauss-point formulation (slower: a note says so)."""
+    res = run_contact(scene_args("hertz-half", tmp_path) + ["-contact_formulation", "gpts", "-accuracy", 0.05], tmp_path)
+    assert res.summary["error_estimate"] <= 0.05
+    assert len(res.summary["adapt_steps"]) >= 3
+    assert "contact: note: pair interface uses the gpts formulation" in res.stderr
