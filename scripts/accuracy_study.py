@@ -27,17 +27,16 @@ import json
 import os
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import formulation_study  # noqa: E402
 import profile_metrics as pm  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.join(ROOT, "bin", "contact")  # main() runs a copy: a rebuild meanwhile does not mix versions
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 TOLS = [0.05, 0.02, 0.01]
 CURVE_TOLS = [0.05, 0.02, 0.01, 0.005]
 REF_H = 0.0065  # the sweep's finest uniform mesh: its profile reference
@@ -70,16 +69,11 @@ OTHER = """-scene other
 
 
 def run(args, tmp, name, ok=(0,)):
-    """Runs bin/contact; returns (summary, HDF5 path, wall seconds)."""
-    h5, js = os.path.join(tmp, name + ".h5"), os.path.join(tmp, name + ".json")
-    cmd = [BIN] + args + ["-output", h5, "-summary", js, "-quiet"]
+    """formulation_study.run on the study's copy of the program, -quiet;
+    returns (summary, HDF5 path, wall seconds)."""
     t0 = time.perf_counter()
-    p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
-    wall = time.perf_counter() - t0
-    if p.returncode not in ok:
-        raise SystemExit(f"{' '.join(cmd)} failed ({p.returncode}):\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
-    with open(js) as f:
-        return json.load(f), h5, wall
+    summ, h5 = formulation_study.run(args + ["-quiet"], tmp, name, ok=ok, binary=BIN)
+    return summ, h5, time.perf_counter() - t0
 
 
 def true_error(h5, ref_h5, summ, ref_summ):

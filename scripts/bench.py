@@ -846,9 +846,9 @@ def plots(rows, out, fit_solve, fit_lin):
 
 # ------------------------------------------------------------------ report
 
-def write_csv(rows, path):
+def write_csv(rows, path, fields=CSV_FIELDS):
     with open(path + ".tmp", "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=CSV_FIELDS, extrasaction="ignore")
+        w = csv.DictWriter(fh, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         for r in rows:
             w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items() if v is not None})
@@ -1390,13 +1390,7 @@ def formulations_cost(args, R):
                 row.get("solve_runs", ""), fmt(row.get("ratio"), "%.2f"), pct(row.get("contact_share")),
                 row["reason"]))
         rows += done
-    path = os.path.join(args.out, "formulations.csv")
-    with open(path + ".tmp", "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=COST_FIELDS, extrasaction="ignore")
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items() if v is not None})
-    os.replace(path + ".tmp", path)
+    write_csv(rows, os.path.join(args.out, "formulations.csv"), COST_FIELDS)
 
     L = []
     A = L.append

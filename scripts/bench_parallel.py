@@ -184,14 +184,16 @@ def report(args, rows, info, elapsed):
              "interleaved, %d repeats, medians. Speed-up: median over 1 rank divided by median over 2 ranks. "
              "Each run started once no other process was running (waiting at most %g s; median wait %.1f s).\n"
              % (args.repeat, args.quiet_wait, statistics.median(r["waited"] for r in rows)))
-    L.append("| h | dofs | iterations | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) | wall 1 rank [s] "
-             "| wall 2 ranks [s] | speed-up (wall) | target | |")
-    L.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    pairs = []  # (h, its 1-rank runs, its 2-rank runs), where it has both
     for h in sizes:
         one = [r for r in rows if r["h"] == h and r["config"] == "1"]
         two = [r for r in rows if r["h"] == h and r["config"] == "2"]
-        if not one or not two:
-            continue
+        if one and two:
+            pairs.append((h, one, two))
+    L.append("| h | dofs | iterations | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) | wall 1 rank [s] "
+             "| wall 2 ranks [s] | speed-up (wall) | target | |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for h, one, two in pairs:
         s1, s2, w1, w2 = med(one, "time_solve"), med(two, "time_solve"), med(one, "wall"), med(two, "wall")
         target = TARGETS.get(h)
         ok = s2 > 0 and target is not None and s1 / s2 >= target
@@ -204,11 +206,7 @@ def report(args, rows, info, elapsed):
     L.append("Median time per -log_view stage (average over ranks), seconds, and its speed-up:\n")
     L.append("| h | stage | 1 rank | 2 ranks | speed-up |")
     L.append("|---|---|---|---|---|")
-    for h in sizes:
-        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
-        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
-        if not one or not two:
-            continue
+    for h, one, two in pairs:
         for st in STAGES:
             a, b = med(one, "stage_" + st), med(two, "stage_" + st)
             L.append("| %s | %s | %.3g | %.3g | %.2f |" % (h, st, a, b, a / b if b > 0 else float("nan")))

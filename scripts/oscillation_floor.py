@@ -25,7 +25,6 @@ Written to bench/formulations/oscillation_floor.md.
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -33,9 +32,9 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import formulation_study  # noqa: E402
 import profile_metrics as pm  # noqa: E402
 
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 MEASURED_H = [0.05, 0.055, 0.06, 0.065, 0.07, 0.08, 0.03]
 KINDS = ["point", "dual", "quadratic", "sublinear", "tributary"]
 
@@ -108,10 +107,8 @@ def main():
             res["floor"].append({"a_over_h": aoh, "kind": kind, "min": min(v), "median": float(np.median(v)), "max": max(v)})
     with tempfile.TemporaryDirectory() as tmp:
         for h in MEASURED_H:
-            h5 = os.path.join(tmp, "h%g.h5" % h)
-            subprocess.run([os.path.join(ROOT, "bin", "contact"), "-options_file", "meshes/hertz-half/hertz-half.opts",
-                            "-contact_formulation", "mortar", "-mesh_size", str(h), "-output", h5, "-summary", "none",
-                            "-quiet"], cwd=ROOT, env=ENV, check=True, capture_output=True)
+            _, h5 = formulation_study.run(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation",
+                                           "mortar", "-mesh_size", str(h), "-quiet"], tmp, "h%g" % h)
             prof, attrs = pm.profiles(h5)
             a = float(attrs["hertz_a"])
             for (sv, p, w, g) in prof.values():

@@ -248,7 +248,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
     }
     PetscCall(PetscSNPrintf(msh, len, "%s/%s-%s.msh", dir, base, tag));
-    if (err) {
+    if (err) { /* the size field could not be read: errmsg says so */
     } else if ((err = ContactMakeDirs(dir))) {
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot create mesh directory %s: %s", dir, strerror(err)));
       err = 1;

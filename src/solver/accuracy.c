@@ -157,6 +157,34 @@ static void AccuracyEstimate(const AccuracyProfiles *prev, const AccuracyProfile
   }
 }
 
+/* Collective: every rank's n reals gathered on rank 0, or on every rank
+   (everyone): *all and *ntot there (PetscFree), NULL and 0 elsewhere. */
+static PetscErrorCode GatherReals(MPI_Comm comm, PetscBool everyone, PetscInt n, const PetscReal loc[], PetscInt *ntot, PetscReal **all)
+{
+  PetscMPIInt rank, size, nl = (PetscMPIInt)n, *cnt = NULL, *disp = NULL;
+  PetscBool   here;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  here  = (PetscBool)(everyone || !rank);
+  *ntot = 0;
+  *all  = NULL;
+  if (here) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  if (everyone) PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, comm));
+  else PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
+  if (here) {
+    disp[0] = 0;
+    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+    PetscCall(PetscMalloc1(disp[size] + 1, all));
+    *ntot = disp[size];
+  }
+  if (everyone) PetscCallMPI(MPI_Allgatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, comm));
+  else PetscCallMPI(MPI_Gatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, 0, comm));
+  if (here) PetscCall(PetscFree2(cnt, disp));
+  PetscFunctionReturn(0);
+}
+
 /* Every rank: the reference coordinates of the nodes of body b on which a
    contact term exerts a force at the state in the bodies' local vectors
    (the terms' gradient, evaluated by the caller into b->Gl). */
@@ -165,7 +193,6 @@ static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
   PetscSection       sec;
   const PetscScalar *g;
   PetscReal          gmax = 0.0, *loc;
-  PetscMPIInt        size, nl = 0, *cnt, *disp;
   PetscInt           m = 0;
 
   PetscFunctionBeginUser;
@@ -190,40 +217,9 @@ static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
     ++m;
   }
   PetscCall(VecRestoreArrayRead(b->Gl, &g));
-  PetscCallMPI(MPI_Comm_size(b->comm, &size));
-  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  nl = (PetscMPIInt)(2 * m);
-  PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
-  disp[0] = 0;
-  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-  PetscCall(PetscMalloc1(disp[size] + 1, z));
-  PetscCallMPI(MPI_Allgatherv(loc, nl, MPIU_REAL, *z, cnt, disp, MPIU_REAL, b->comm));
-  *nz = disp[size] / 2;
-  PetscCall(PetscFree2(cnt, disp));
+  PetscCall(GatherReals(b->comm, PETSC_TRUE, 2 * m, loc, nz, z));
+  *nz /= 2;
   PetscCall(PetscFree(loc));
-  PetscFunctionReturn(0);
-}
-
-/* Collective: every rank's n reals gathered on rank 0 (*all, *ntot there; PetscFree). */
-static PetscErrorCode GatherReals(MPI_Comm comm, PetscInt n, const PetscReal loc[], PetscInt *ntot, PetscReal **all)
-{
-  PetscMPIInt rank, size, nl = (PetscMPIInt)n, *cnt = NULL, *disp = NULL;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  *ntot = 0;
-  *all  = NULL;
-  if (!rank) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
-  if (!rank) {
-    disp[0] = 0;
-    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, all));
-    *ntot = disp[size];
-  }
-  PetscCallMPI(MPI_Gatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, 0, comm));
-  if (!rank) PetscCall(PetscFree2(cnt, disp));
   PetscFunctionReturn(0);
 }
 
@@ -285,41 +281,38 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
   PetscCall(BodyCorners(b, ref, corner, &nv));
   PetscCall(PetscMalloc1(FIELD_REC * b->ncells + 1, &rec));
-  for (PetscInt c = 0; c < b->ncells; ++c) { /* sizes first: h_z over the cells on the zone */
+  for (PetscInt c = 0; c < b->ncells; ++c) { /* first each cell's size, its vertices and their distances from the zone; h_z */
     const PetscReal *x = &b->xnode[2 * b->nb * c];
-    PetscReal        h = 0.0, dmin = PETSC_MAX_REAL;
+    PetscReal       *r = &rec[FIELD_REC * c], h = 0.0, dmin = PETSC_MAX_REAL;
     for (PetscInt v = 0; v < nv; ++v) {
       const PetscReal *p = &x[2 * corner[v]], *q = &x[2 * corner[(v + 1) % nv]];
+      PetscReal        d = PETSC_MAX_REAL;
       h += PetscSqrtReal(PetscSqr(p[0] - q[0]) + PetscSqr(p[1] - q[1])) / nv;
-      for (PetscInt j = 0; j < nz; ++j) dmin = PetscMin(dmin, PetscSqr(p[0] - z[2 * j]) + PetscSqr(p[1] - z[2 * j + 1]));
+      for (PetscInt j = 0; j < nz; ++j) d = PetscMin(d, PetscSqr(p[0] - z[2 * j]) + PetscSqr(p[1] - z[2 * j + 1]));
+      r[1 + 3 * v] = p[0];
+      r[2 + 3 * v] = p[1];
+      r[3 + 3 * v] = PetscSqrtReal(d);
+      dmin         = PetscMin(dmin, r[3 + 3 * v]);
     }
-    rec[FIELD_REC * c]     = h;
-    rec[FIELD_REC * c + 1] = PetscSqrtReal(dmin);
-    if (PetscSqrtReal(dmin) <= 0.5 * h) {
+    r[0] = h;
+    if (dmin <= 0.5 * h) {
       hz[0] += h;
       hz[1] += 1;
     }
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hz, 2, MPIU_REAL, MPIU_SUM, b->comm));
-  for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscReal *x = &b->xnode[2 * b->nb * c], h0 = rec[FIELD_REC * c];
-    const PetscReal  h = PetscSqr(eta[c]) >= eta2min ? 0.5 * h0 : h0; /* a marked cell: halved */
-    PetscReal       *r = &rec[FIELD_REC * c];
-    r[0] = (PetscReal)nv;
+  for (PetscInt c = 0; c < b->ncells; ++c) { /* then the sizes at the vertices */
+    PetscReal      *r = &rec[FIELD_REC * c];
+    const PetscReal h = PetscSqr(eta[c]) >= eta2min ? 0.5 * r[0] : r[0]; /* a marked cell: halved */
+    r[0]              = (PetscReal)nv;
     for (PetscInt v = 0; v < nv; ++v) {
-      const PetscReal *p = &x[2 * corner[v]];
-      PetscReal        d = PETSC_MAX_REAL, s = h;
-      for (PetscInt j = 0; j < nz; ++j) d = PetscMin(d, PetscSqr(p[0] - z[2 * j]) + PetscSqr(p[1] - z[2 * j + 1]));
       if (hz[1] > 0) {
         const PetscReal hzone = hz[0] / hz[1];
-        s = PetscMin(h, 0.5 * hzone + grading * PetscMax(0.0, PetscSqrtReal(d) - 2.0 * hzone));
-      }
-      r[1 + 3 * v] = p[0];
-      r[2 + 3 * v] = p[1];
-      r[3 + 3 * v] = s;
+        r[3 + 3 * v]          = PetscMin(h, 0.5 * hzone + grading * PetscMax(0.0, r[3 + 3 * v] - 2.0 * hzone));
+      } else r[3 + 3 * v] = h;
     }
   }
-  PetscCall(GatherReals(b->comm, FIELD_REC * b->ncells, rec, &ntot, &all));
+  PetscCall(GatherReals(b->comm, PETSC_FALSE, FIELD_REC * b->ncells, rec, &ntot, &all));
   if (!rank) {
     const PetscInt n  = ntot / FIELD_REC;
     FILE          *fp = fopen(path, "w");
@@ -364,7 +357,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   n = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt c = 0; c < p->bodies[i]->ncells; ++c) e2[n++] = PetscSqr(eta[i][c]);
-  PetscCall(GatherReals(p->comm, n, e2, &ntot, &all));
+  PetscCall(GatherReals(p->comm, PETSC_FALSE, n, e2, &ntot, &all));
   if (!rank) {
     PetscReal total = 0.0, sum = 0.0;
     PetscCall(PetscSortReal(ntot, all));
@@ -462,14 +455,15 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
     const PetscInt  nb = ob->nb, R = 8 + 2 * nb; /* a record: 4 vertices, nb displacements */
     PetscReal       ref[2 * 64], *rec, *all = NULL, lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, hsum = 0, bw;
     PetscInt        corner[4], nv, ncell, nbx, nby, *bstart, *bcell, *bfill, npt = 0, *idx;
-    PetscReal      *pref, *pu;
+    PetscReal      *pref, *pu, Rc[4][2];
     PetscInt       *pcell;
-    PetscMPIInt     size, nl, *cnt, *disp;
     const PetscScalar *ua;
     PetscSection    sec;
     PetscTabulation T;
 
     PetscCall(BodyCorners(ob, ref, corner, &nv));
+    for (PetscInt k = 0; k < nv; ++k)
+      for (PetscInt d = 0; d < 2; ++d) Rc[k][d] = ref[2 * corner[k] + d];
     PetscCall(VecGetArrayRead(ob->Xl, &ua));
     PetscCall(PetscMalloc1(R * ob->ncells + 1, &rec));
     for (PetscInt c = 0; c < ob->ncells; ++c) {
@@ -485,16 +479,8 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
       }
     }
     PetscCall(VecRestoreArrayRead(ob->Xl, &ua));
-    PetscCallMPI(MPI_Comm_size(cur->comm, &size));
-    PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-    nl = (PetscMPIInt)(R * ob->ncells);
-    PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, cur->comm));
-    disp[0] = 0;
-    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, &all));
-    PetscCallMPI(MPI_Allgatherv(rec, nl, MPIU_REAL, all, cnt, disp, MPIU_REAL, cur->comm));
-    ncell = disp[size] / R;
-    PetscCall(PetscFree2(cnt, disp));
+    PetscCall(GatherReals(cur->comm, PETSC_TRUE, R * ob->ncells, rec, &ncell, &all));
+    ncell /= R;
     PetscCall(PetscFree(rec));
     /* bucket grid over the cells' boxes, buckets about two cells wide */
     for (PetscInt c = 0; c < ncell; ++c)
@@ -533,13 +519,11 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
     for (PetscInt p = nbd->pStart; p < nbd->pEnd; ++p) {
       const PetscReal *X = &nbd->xpoint[2 * (p - nbd->pStart)];
       PetscInt         dof, off, best = -1, bx, by;
-      PetscReal        bestOut = PETSC_MAX_REAL, xi[2] = {0, 0}, v[4][2], Rc[4][2];
+      PetscReal        bestOut = PETSC_MAX_REAL, xi[2] = {0, 0}, v[4][2];
       PetscCall(PetscSectionGetDof(sec, p, &dof));
       if (dof != 2 || !nbd->owned[p - nbd->pStart]) continue;
       PetscCall(PetscSectionGetOffset(sec, p, &off));
       if (nbd->l2b[off] < 0 && nbd->l2b[off + 1] < 0) continue;
-      for (PetscInt k = 0; k < nv; ++k)
-        for (PetscInt d = 0; d < 2; ++d) Rc[k][d] = ref[2 * corner[k] + d];
       bx = PetscMax(0, PetscMin(nbx - 1, (PetscInt)((X[0] - lo[0]) / bw)));
       by = PetscMax(0, PetscMin(nby - 1, (PetscInt)((X[1] - lo[1]) / bw)));
       for (PetscInt sweep = 0; sweep < 2 && best < 0; ++sweep) { /* the node's bucket, else every cell */
@@ -687,10 +671,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
     }
     PetscCall(AccuracyRefine(acc, prev, k + 1, fields));
   }
-  if (cur) { /* a step that did not converge: the answer is the last one that did */
-    PetscCall(ProblemDestroy(&cur));
-  }
-  k = k < acc->maxSteps ? k : acc->maxSteps - 1;
+  PetscCall(ProblemDestroy(&cur)); /* a step that did not converge: the answer is the last one that did */
   if (prev) {
     PetscInt last = 0;
     for (PetscInt j = 0; j < acc->maxSteps; ++j)

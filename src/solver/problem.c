@@ -690,7 +690,8 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
    solve from the last stage's solution. Intermediate stages stop when their
    gradient norm has fallen by -stage_rtol; the last one stops where a single
    solve from rest would, at -tao_gttol times the gradient norm of the full
-   problem at rest, which makes the result independent of the staging. */
+   problem at rest, which makes the result independent of the staging. A
+   single solve from p->X0 stops there too. */
 static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
   const PetscInt nstages = p->loadSteps * p->penaltyStages;
@@ -700,26 +701,23 @@ static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedR
   *its = 0;
   p->stagesDone = 0;
   p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
-  if (nstages == 1 && p->X0) { /* from X0, stopping where a solve from rest would */
+  if (nstages > 1 || p->X0) { /* the gradient at rest (X is zero here), where the last stage stops */
     PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
     PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f, p->G, p));
     p->nEnergyEvals--;
     PetscCall(VecNorm(p->G, NORM_2, &g0));
-    p->hessianG0 = g0;
-    PetscCall(VecCopy(p->X0, p->X));
-    PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+    p->hessianG0 = g0; /* every stage switches where a single solve would */
   }
   if (nstages == 1) {
+    if (p->X0) {
+      PetscCall(VecCopy(p->X0, p->X));
+      PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+    }
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
     p->stagesDone = 1;
     PetscFunctionReturn(0);
   }
-  PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
-  PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f, p->G, p));
-  p->nEnergyEvals--;
-  PetscCall(VecNorm(p->G, NORM_2, &g0));
-  p->hessianG0 = g0; /* every stage switches where a single solve would */
   for (PetscInt l = 1; l <= p->loadSteps; ++l) {
     for (PetscInt s = 1; s <= p->penaltyStages; ++s) {
       const PetscBool last    = (PetscBool)(l == p->loadSteps && s == p->penaltyStages);
