@@ -6,10 +6,11 @@
    edge's 3 nodes and the master edge's 7 (gap.c; derivation there). Shared by
    every formulation. */
 typedef struct {
-  PetscInt  me;  /* master edge; -1 if none faces the point (none within reach, or beyond an end of the master surface) */
-  PetscReal eta; /* closest point on it */
+  PetscInt  me;  /* master edge (-1 only for an empty master surface) */
+  PetscReal eta; /* closest point on it; beyond +-1 on the straight extension past an end of the surface */
   PetscReal M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
   PetscBool fan; /* the closest point is a corner node: g is the distance to it */
+  PetscBool ext; /* the closest point is on the extension past an end of the master surface */
 } ContactGap;
 
 /* Closest point of the master surface to the slave point xs, its outward

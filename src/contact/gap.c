@@ -29,7 +29,11 @@
    directions; there g is the signed distance to the node and n the unit
    vector from the node to the point, so that g is continuous, with
    dg = n . (du_s - du_v) and d2g = a a / g, a = tau . (du_s - du_v), tau
-   normal to n (the curvature of the distance to a point). */
+   normal to n (the curvature of the distance to a point).
+
+   Ends. Past an end of the master surface the closest point is the end node;
+   there the master is continued by its tangent line (ContactGapExtend), so a
+   deeply penetrated iterate's gap is continuous wherever the point goes. */
 #include "gap.h"
 #include "edge.h"
 
@@ -70,27 +74,62 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
   }
 }
 
+/* Beyond end je (+-1) of master edge P->me, which ends the master surface:
+   the gap to the edge's tangent line there, x_m(eta) = x_m(je) + (eta - je)
+   x_m'(je), a straight extension whose shape functions M_j(je) + (eta - je)
+   M_j'(je) are linear in eta. The projection onto it is orthogonal, so dg and
+   d2g keep their form (with x_m'' = 0), and g is C1 across the normal line
+   at the end: a point that an iterate pushes past the end of the master
+   surface keeps its gap, and the energy stays continuous. */
+static void ContactGapExtend(const ContactSurface *M, const PetscReal xs[2], PetscReal je, ContactGap *P)
+{
+  PetscReal delta;
+
+  MasterShape(M, P->me, je, P->M7, P->dM7, P->d2M7);
+  MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
+  P->tn = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
+  delta = ((xs[0] - P->xm[0]) * P->tm[0] + (xs[1] - P->xm[1]) * P->tm[1]) / (P->tn * P->tn);
+  if (delta * je < 0) delta = 0.0; /* the clamped projection is at the end itself */
+  for (PetscInt j = 0; j < 7; ++j) {
+    P->M7[j] += delta * P->dM7[j];
+    P->d2M7[j] = 0.0;
+  }
+  for (PetscInt d = 0; d < 2; ++d) {
+    P->xm[d] += delta * P->tm[d];
+    P->xpp[d] = 0.0;
+  }
+  P->eta  = je + delta;
+  P->ext  = PETSC_TRUE;
+  P->fan  = PETSC_FALSE;
+  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
+  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
+  P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+}
+
 void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
 {
+  const PetscInt *mn;
+
   P->eta = 0.0;
+  P->ext = PETSC_FALSE;
   ContactSearchFindClosest(search, xs, &P->me, &P->eta);
   if (P->me < 0) return;
-  {
-    const PetscInt *mn = &M->mnodes[7 * P->me];
-    /* beyond an end of the master surface: no contact */
-    if ((P->eta <= -1.0 && M->endNode[mn[0]]) || (P->eta >= 1.0 && M->endNode[mn[1]])) {
-      P->me = -1;
-      return;
-    }
-  }
-  ContactGapEvaluate(M, xs, P);
+  mn = &M->mnodes[7 * P->me];
+  /* beyond an end of the master surface: its straight extension. A positive
+     gap there is no contact; a negative one is a point pushed past the end,
+     whose energy must not vanish as it crosses the end's normal line (at the
+     cut of a half model the extension is the mirror half's continuation) */
+  if (P->eta <= -1.0 && M->endNode[mn[0]]) ContactGapExtend(M, xs, -1.0, P);
+  else if (P->eta >= 1.0 && M->endNode[mn[1]]) ContactGapExtend(M, xs, 1.0, P);
+  else ContactGapEvaluate(M, xs, P);
 }
 
 void ContactGapOnEdge(const ContactSurface *M, PetscInt e, const PetscReal xs[2], ContactGap *P)
 {
   PetscReal d2;
 
-  P->me = e;
+  P->me  = e;
+  P->ext = PETSC_FALSE;
   MasterProject(M, e, xs, &P->eta, &d2);
   ContactGapEvaluate(M, xs, P);
 }
@@ -129,7 +168,7 @@ void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c,
       for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] += c * a[i] * a[j] / P->gap;
     return;
   }
-  if (PetscAbsReal(P->eta) >= 1.0) return;
+  if (PetscAbsReal(P->eta) >= 1.0 && !P->ext) return;
   for (PetscInt d = 0; d < 2; ++d) {
     for (PetscInt i = 0; i < 3; ++i) {
       a[2 * i + d] = N[i] * tau[d];

@@ -8,11 +8,11 @@
      E_S = 1/2 k_p sum_j A_j <-g_j>_+^2,    p_j = k_p <-g_j>_+,
 
    where g is the normal gap of gap.c (closest point on the master surface,
-   continuous across the master's nodes) and S' the part of the slave surface
-   that faces the master (C_j = A_j where the support of N_j faces it whole).
-   A quadratic N_j is negative on part of its support, so a node whose
-   support faces the master over less than half of A_j (C_j < A_j / 2: at the
-   end of the master surface, or beyond the search's reach) is left out. The pair's energy
+   continuous across the master's nodes, and past the master surface's ends
+   the gap to its straight extension) and S' the part of the slave surface
+   that faces a master edge: all of it, but for an empty master, so C_j = A_j.
+   (A quadratic N_j is negative on part of its support; a node whose support
+   faced the master over less than half of A_j would be left out.) The pair's energy
    is (E_A + E_B)/2, each surface taking its turn as slave. A uniform gap gives
    g_j = g at every node and the consistent nodal forces of a uniform
    pressure: the formulation passes the contact patch test, where collocation
