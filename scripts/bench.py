@@ -402,10 +402,9 @@ class ConfigRun:
             wall -= t["output"]
             self.totals.append(t["total"] - t["output"])
             try:
-                prof, attrs = profile_metrics.profiles(h5)
+                prof = profile_metrics.profiles(h5)[0]
                 row["_profile"] = prof
-                a = float(attrs.get("hertz_a", attrs.get("fem_a")))
-                osc = [profile_metrics.oscillation_index(s, p, a) for (s, p, w, g) in prof.values()]
+                osc = [profile_metrics.oscillation(*v) for v in prof.values()]
                 row["osc"] = float(np.mean(osc)) if osc else float("nan")
                 row["profile_pmax"] = float(np.mean([p.max() for (s, p, w, g) in prof.values()]))
             except (OSError, KeyError, ValueError, IndexError) as e:
@@ -1007,7 +1006,8 @@ def report(rows, args, info, meshes, elapsed, load):
       "(same scene, formulation and k_p; newton, gttol 1e-8, one rank), `scripts/profile_metrics.py`'s "
       "`l2_distance` (the coarse profile interpolated linearly at the fine samples, weighted by the fine "
       "weights: Gauss weights for gpts, nodal weights for mortar), mean over the one-sided surfaces; *osc*: "
-      "its oscillation index (largest deviation of a sample from the mean of its neighbours within 0.8 a of "
+      "its oscillation index (`oscillation`: largest deviation of a sample from the mean of its neighbours, less "
+      "that of the Hertz profile with the computed peak and half-width at the same samples, within 0.8 a of "
       "the centre, over the peak). The profiles come from HDF5 output that the first repeat of every "
       "one-rank configuration writes to a temporary directory; the Output stage of that repeat is left out "
       "of its wall and total time (the other repeats run with `-output none`; *output* in mesh+setup+output "

@@ -30,12 +30,34 @@ def profiles(path, pair=None):
     return out, attrs
 
 
+def neighbour_deviation(p):
+    """p_i - (p_{i-1} + p_{i+1}) / 2 at the inner samples 1 .. n-2."""
+    return p[1:-1] - 0.5 * (p[:-2] + p[2:])
+
+
 def oscillation_index(s, p, a):
-    """The largest deviation of a sample from the mean of its two neighbours,
-    within 0.8 a of the pressure centroid, over the peak."""
+    """The largest neighbour deviation of the profile (a sample minus the mean
+    of its two neighbours) less that of the Hertz profile with the same peak,
+    half-width a and centre, sampled at the same s; within 0.8 a of the
+    pressure centroid, over the peak:
+
+        q(s) = p_max sqrt(max(0, 1 - ((s - c) / a)^2)),  c = sum s p / sum p
+        max |dev(p)_i - dev(q)_i| / p_max  over |s_i - c| <= 0.8 a
+
+    Hertz's own curvature (large near a square-root edge) is not oscillation,
+    so a Hertz profile gives 0 on any grid. a is the profile's computed
+    half-width (half_width(s, p, w, g); oscillation() passes it), or the exact
+    one where it is known; p_max is the largest sample."""
+    pmax = float(p.max())
     c = float(np.sum(s * p) / np.sum(p))
-    dev = [abs(p[i] - 0.5 * (p[i - 1] + p[i + 1])) for i in range(1, len(s) - 1) if abs(s[i] - c) <= 0.8 * a]
-    return max(dev) / p.max() if dev else float("nan")
+    q = pmax * np.sqrt(np.clip(1.0 - ((s - c) / a) ** 2, 0.0, None))
+    dev = np.abs(neighbour_deviation(p) - neighbour_deviation(q))[np.abs(s[1:-1] - c) <= 0.8 * a]
+    return float(dev.max()) / pmax if dev.size else float("nan")
+
+
+def oscillation(s, p, w, g):
+    """The oscillation index of a profile of profiles(), with its computed half-width."""
+    return oscillation_index(s, p, half_width(s, p, w, g))
 
 
 def l2_distance(coarse, fine):
@@ -65,12 +87,11 @@ def half_width(s, p, w, g):
 def summary(path, ref=None):
     """Per surface: oscillation index, peak, half-width, and the L2 distance
     from the same surface in ref."""
-    prof, attrs = profiles(path)
-    a = float(attrs.get("hertz_a", attrs.get("fem_a")))
+    prof = profiles(path)[0]
     rprof = profiles(ref)[0] if ref else {}
     out = {}
     for k, (s, p, w, g) in prof.items():
-        d = {"osc": oscillation_index(s, p, a), "pmax": float(p.max()), "a": half_width(s, p, w, g)}
+        d = {"osc": oscillation(s, p, w, g), "pmax": float(p.max()), "a": half_width(s, p, w, g)}
         if k in rprof:
             d["l2_ref"] = l2_distance((s, p), rprof[k])
             d["pmax_ref"] = float(rprof[k][1].max())

@@ -57,27 +57,33 @@ def test_convergence(half):
 
 
 def test_no_oscillation(half, tmp_path):
-    """The oscillation index (the largest deviation of a sample from the mean
-    of its neighbours within 0.8 a of the centre, over the peak) is at most
-    0.01 for h <= 0.03 on the reference scene (measured 0.0045, 0.0013), on
-    hertz-small and twodiscs (0.0080, 0.0099). At h = 0.06 it is 0.033: the
-    element where the zone ends (printed, bounded loosely)."""
-    aref = pm.half_width(*indenter(half[HREF]))
+    """The oscillation index (profile_metrics.oscillation: the largest deviation
+    of a sample from the mean of its two neighbours, less that of the Hertz
+    profile with the profile's computed peak and half-width centred at its
+    pressure centroid, within 0.8 a of the centre, over the peak) meets the
+    mortar issue's targets: at most 0.025 at h = 0.06 and 0.01 for h <= 0.03.
+    Measured: the half reference scene 0.0188 at h = 0.06, 0.0008 at 0.03,
+    0.0002 at 0.015 (0.0074 at 0.1, printed only); hertz-graded 0.0023 at
+    h = 0.06 and 0.0026 at its own 0.03; hertz-small and twodiscs, meshed at
+    0.004 near the contact, 0.0011 and 0.0044. At h = 0.06 the index depends
+    on where the zone's edge falls among the nodes (0.002 to 0.019 at
+    h = 0.05 to 0.08, bench/formulations/oscillation_floor.md)."""
     for h in HS:
-        s, p, w, g = indenter(half[h])
-        osc = pm.oscillation_index(s, p, aref)
-        print(f"hertz, h = {h}: oscillation index {osc:.4f}")
+        osc = pm.oscillation(*indenter(half[h]))
+        print(f"hertz-half, h = {h}: oscillation index {osc:.4f}")
         if h <= 0.03:
             assert osc <= 0.01
         elif h == 0.06:
-            assert osc <= 0.05
-    for scene in ("hertz-small", "twodiscs"):
-        r = run_contact(["-options_file", f"meshes/{scene}/{scene}.opts"] + MORTAR + ["-summary", "none"], tmp_path, name=scene)
-        prof, attrs = pm.profiles(r.output_path)
-        (s, p, w, g), = prof.values()
-        osc = pm.oscillation_index(s, p, attrs["hertz_a"])
-        print(f"{scene}: oscillation index {osc:.4f}")
-        assert osc <= 0.01
+            assert osc <= 0.025
+    cases = [("hertz-graded", [], 0.01), ("hertz-graded", ["-mesh_size", "0.06"], 0.025),
+             ("hertz-small", [], 0.01), ("twodiscs", [], 0.01)]
+    for i, (scene, extra, bound) in enumerate(cases):
+        r = run_contact(["-options_file", f"meshes/{scene}/{scene}.opts"] + MORTAR + extra + ["-summary", "none"],
+                        tmp_path, name=f"{scene}-{i}")
+        (prof,) = pm.profiles(r.output_path)[0].values()
+        osc = pm.oscillation(*prof)
+        print(f"{scene} {' '.join(extra)}: oscillation index {osc:.4f}")
+        assert osc <= bound
 
 
 @pytest.mark.parametrize("n", [6, 12, 24, 48])
