@@ -254,8 +254,9 @@ static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt
 /* Per surface, /contact/<pair>/<body>_<group>/: s, X (reference), x
    (current), gap, pressure, weight, from rank 0 (named node_s, node_X, ...
    when the samples are nodes: for a slave its weighted gap, nodal pressure
-   and A_j, for a master the node's own gap, the transferred pressure and
-   int N_j dS; then also node_force, the pair's contact force on each node),
+   and A_j, for a master its gap weighted over the slave's points, the
+   transferred pressure and int N_j dS; then also node_force, the pair's
+   contact force on each node),
    and the line cells through them (cells or node_cells,
    ContactSideLineCells); empty datasets and no cells for a surface without
    a profile. The pair's figures as attributes of /contact/<pair> (collective). */
