@@ -2,10 +2,13 @@
 #include "contactpair.h"
 
 /* The results of a contact pair at the converged state, whatever the
-   formulation (contactreport.c): per one-sided surface a pressure profile
-   sorted by arc position, the contact force, and the comparison with Hertz
-   (hertz.c); printed, and written to JSON and HDF5. */
-enum { CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_Y, CONTACT_ROW_XC, CONTACT_ROW_YC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_COLS };
+   formulation (contactreport.c): per surface a pressure profile sorted by arc
+   position (a slave's own, or, for nodal samples, a master's transferred from
+   the slave), the contact force, and the comparison with Hertz (hertz.c);
+   printed, and written to JSON and HDF5. A row: arc position, reference and
+   current position, gap, pressure, weight, and for nodal samples the pair's
+   contact force on the node (else 0). */
+enum { CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_Y, CONTACT_ROW_XC, CONTACT_ROW_YC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_FX, CONTACT_ROW_FY, CONTACT_ROW_COLS };
 
 /* A profile's figures: largest pressure, half-width (half the loaded length,
    to half the spacing of the samples), half-width from the second moment,
@@ -19,7 +22,7 @@ typedef struct {
   PetscReal            *rows;     /* [n][CONTACT_ROW_COLS], sorted by s */
   PetscReal             force[2]; /* contact force on the surface's body */
   PetscInt              nedges;
-  PetscBool             slave; /* the surface acts as slave: it has a profile */
+  PetscBool             slave; /* the surface acts as slave: its profile is its own (else transferred, or none) */
   ContactProfileFigures fig;
 } ContactSide;
 

@@ -61,6 +61,7 @@ PetscErrorCode EnergyTermWriteHDF5(EnergyTerm, Body[], PetscViewer);
 PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
 /* Rank 0, after EnergyTermPostProcess: the pressure profile of the term's
    one-sided surface side (0 or 1), n samples sorted by arc position s with
-   their pressure p and weight w (PetscFree each; n = 0 where the surface has
-   no profile or the term is no contact), and the contact force it transmits. */
+   their pressure p and weight w (PetscFree each; n = 0 where the surface is
+   not a slave, whose profile is transferred, or the term is no contact), and
+   the contact force it transmits. */
 PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);

@@ -36,5 +36,7 @@ PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body);
 PetscErrorCode ContactSurfaceAddGradient(ContactSurface *, Body);
 /* Arc position (reference length) of edge e at parameter xi. */
 PetscErrorCode ContactSurfaceArc(const ContactSurface *, PetscInt e, PetscReal xi, PetscReal *s);
+/* Outward unit normal n[nn][2] at each node, current configuration (edge normals averaged at a shared node). */
+void ContactSurfaceNodalNormals(const ContactSurface *, PetscReal n[]);
 /* Length of the whole surface (the end of the arc). */
 PetscReal ContactSurfaceLength(const ContactSurface *);

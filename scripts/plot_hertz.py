@@ -3,7 +3,8 @@
 
 Usage:
     python3 scripts/plot_hertz.py out/hertz.h5 -o out/hertz.png
-        contact pressure along each interface (both one-sided profiles,
+        contact pressure along each interface (both surfaces' profiles, a
+        slave's own and, for mortar, a master's transferred from the slave,
         plotted against s - s_c) with the Hertz curve when the scene declares one;
         a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
@@ -243,6 +244,11 @@ def is_nodal(side):
     return "node_s" in side
 
 
+def is_slave(side):
+    """A slave's pressure is its own; another surface's is transferred from the slave."""
+    return bool(attr(side, "slave", 1))
+
+
 def nodal_curve(s, p, n=12):
     """The pressure's quadratic interpolant along the surface: nodes sorted by
     s alternate corner, mid-edge, corner (a node on a mirror line appears
@@ -262,7 +268,8 @@ def nodal_curve(s, p, n=12):
 
 
 def profile_sides(g):
-    """The one-sided surfaces of a pair that carry a profile (the slaves)."""
+    """The surfaces of a pair that carry a profile: the slaves, and (mortar)
+    the master, whose pressure is the slave's nodal forces over int N_j dS."""
     return [v for v in g.values() if isinstance(v, h5py.Group) and len(sample(v, "s"))]
 
 
@@ -372,9 +379,12 @@ def plot_pressure(f, axes, units, zoom=None):
         for side in profile_sides(g):
             s, p = sample(side, "s") - attr(side, "centre", 0.0), sample(side, "pressure")
             name = f"{attr(side, 'body')}:{attr(side, 'group')}"
-            if is_nodal(side):
+            if is_nodal(side) and is_slave(side):
                 line, = ax.plot(*nodal_curve(s, p), "-", lw=1.2, label=f"{name}, nodal pressure (quadratic interpolant)")
                 ax.plot(s, p, "o", ms=3.5, color=line.get_color())
+            elif is_nodal(side):
+                line, = ax.plot(*nodal_curve(s, p), "--", lw=1.2, label=f"{name}, master: slave's nodal forces / A_j")
+                ax.plot(s, p, "s", ms=3.5, mfc="none", color=line.get_color())
             else:
                 ax.plot(s, p, "o-", ms=3, lw=0.8, label=f"{name} (one-sided, Gauss points)")
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
@@ -395,7 +405,8 @@ def plot_pressure(f, axes, units, zoom=None):
                      f"relative L2 error of p: {100 * attr(g, 'pressure_l2_error'):.2f} %"]
         if xr is not None:
             ax.set_xlim(*xr)
-        ax.set_ylim(0, 1.45 * ax.get_ylim()[1])
+        low = min([np.min(sample(v, "pressure"), initial=0.0) for v in profile_sides(g)], default=0.0)
+        ax.set_ylim(1.45 * low, 1.45 * ax.get_ylim()[1])   # a master corner node may take a small negative share
         ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",
                 fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
         ax.legend(loc="upper right", fontsize=8)

@@ -3,7 +3,7 @@ HDF5 output (/contact/<pair>/<body>_<group>/ s, pressure, weight): its
 oscillation, its distance from another profile (a finer mesh's), its peak and
 half-width. Used by the tests and the benchmark.
 
-    python3 scripts/profile_metrics.py out/a.h5 [--ref out/fine.h5]
+    python3 scripts/profile_metrics.py out/a.h5 [--ref out/fine.h5] [--masters]
 """
 import argparse
 
@@ -11,15 +11,19 @@ import h5py
 import numpy as np
 
 
-def profiles(path, pair=None):
-    """{surface: (s, p, w, gap or None)} for every one-sided surface that has a profile
-    (a slave surface), sorted by s; and the pair's attributes."""
+def profiles(path, pair=None, masters=False):
+    """{surface: (s, p, w, gap or None)} for every surface that acts as slave
+    (its own pressure), sorted by s; with masters, also each surface that is
+    not a slave but has a profile (mortar: the pressure transferred from the
+    slave, in the same node datasets); and the pair's attributes."""
     with h5py.File(path, "r") as f:
         g = f["contact"]
         pair = pair or sorted(g.keys())[0]
         g = g[pair]
         out = {}
         for k in sorted(g.keys()):
+            if not masters and not g[k].attrs.get("slave", 1):
+                continue
             pre = "node_" if "node_s" in g[k] else ""   # nodal samples (mortar) or Gauss points
             s = g[k][pre + "s"][...].ravel()
             if s.size == 0:
@@ -84,11 +88,11 @@ def half_width(s, p, w, g):
     return 0.5 * (hi - lo)
 
 
-def summary(path, ref=None):
+def summary(path, ref=None, masters=False):
     """Per surface: oscillation index, peak, half-width, and the L2 distance
     from the same surface in ref."""
-    prof = profiles(path)[0]
-    rprof = profiles(ref)[0] if ref else {}
+    prof = profiles(path, masters=masters)[0]
+    rprof = profiles(ref, masters=masters)[0] if ref else {}
     out = {}
     for k, (s, p, w, g) in prof.items():
         d = {"osc": oscillation(s, p, w, g), "pmax": float(p.max()), "a": half_width(s, p, w, g)}
@@ -104,7 +108,8 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("h5", nargs="+")
     ap.add_argument("--ref", help="a finer run's HDF5 to measure the distance from")
+    ap.add_argument("--masters", action="store_true", help="also the surfaces that are not slaves (transferred pressure)")
     args = ap.parse_args()
     for path in args.h5:
-        for k, d in summary(path, args.ref).items():
+        for k, d in summary(path, args.ref, args.masters).items():
             print(path, k, " ".join(f"{x}={v:.4g}" for x, v in d.items()))

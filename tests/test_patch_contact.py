@@ -10,7 +10,8 @@ pressure p and the penetration p/k_p everywhere on the interface, with
 A formulation passes the contact patch test if it reproduces this to round-off
 (test_patch_exact): the mortar formulation does (nodal weighted gaps with the
 pair's first surface, the Quad9 block, as slave; the meshes' end nodes coincide,
-so no node is left out). The Gauss-point penalty does not: test_patch_report
+so no node is left out), on the slave and on the master, whose pressure is the
+slave's transferred (tests/test_master_pressure.py). The Gauss-point penalty does not: test_patch_report
 prints how far it is and asserts only what holds for any formulation
 (equilibrium) or what the scene's geometry fixes.
 
@@ -128,7 +129,7 @@ def errors(s, res):
         for name, g in f["contact/interface"].items():
             pre = "node_" if "node_s" in g else ""     # nodal samples (mortar) or Gauss points (gpts)
             pr, gap, w = g[pre + "pressure"][...], g[pre + "gap"][...], g[pre + "weight"][...]
-            if not len(pr):                          # a master-only surface carries no profile
+            if not len(pr):                          # a surface without a profile
                 continue
             r = dict(n=len(pr), pmin=pr.min(), pmax=pr.max(),
                      p_maxrel=np.abs(pr - p).max() / p,

@@ -1,6 +1,7 @@
 """scripts/plot_hertz.py on the output of small runs (h = 0.2): exit status, PNG
-files with ordinary permissions, --zoom, --units, --scale, and a scene without
-contact (field plot only)."""
+files with ordinary permissions, --zoom, --units, --scale, a scene without
+contact (field plot only), and the pressure plot's curves against the HDF5
+datasets (both surfaces, the mortar master's transferred pressure too)."""
 import importlib.util
 import os
 import stat
@@ -22,6 +23,13 @@ def hertz(tmp_path_factory):
     d = tmp_path_factory.mktemp("hertz")
     return run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.2"],
                        d, name="hertz").output_path
+
+
+@pytest.fixture(scope="module")
+def mortar(tmp_path_factory):
+    d = tmp_path_factory.mktemp("mortar")
+    return run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.2",
+                        "-contact_formulation", "mortar"], d, name="mortar").output_path
 
 
 @pytest.fixture(scope="module")
@@ -147,3 +155,36 @@ def test_units_from_metadata(hertz, tmp_path):
         plt.close(fig)
     with h5py.File(hertz, "r") as f:
         assert (mod.file_units(f).length, mod.file_units(f).stress) == ("", "")
+
+
+@pytest.mark.parametrize("run", ["hertz", "mortar"])
+def test_pressure_curves_are_the_hdf5(run, request, tmp_path):
+    """Each surface of the pair is drawn: its samples (markers) are the HDF5's
+    s - centre and pressure, labelled with the surface; the mortar master
+    (the block, not a slave) as the pressure transferred from the slave."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    h5 = request.getfixturevalue(run)
+    with h5py.File(h5, "r") as f:
+        fig, axes = plt.subplots(1, 1, squeeze=False)
+        mod.plot_pressure(f, axes[:, 0], mod.Units())
+        lines = axes[0, 0].get_lines()
+        g = f["contact/interface"]
+        for k in ("indenter_contact", "block_contact"):
+            side = g[k]
+            pre = "node_" if "node_s" in side else ""
+            s = side[pre + "s"][()] - side.attrs["centre"]
+            p = side[pre + "pressure"][()]
+            assert len(s) > 0, k
+            drawn = [l for l in lines if len(l.get_xdata()) == len(s) and np.array_equal(l.get_xdata(), s)
+                     and np.array_equal(l.get_ydata(), p)]
+            assert len(drawn) == 1, k
+            body = k.split("_")[0]
+            labels = [l.get_label() for l in lines if l.get_label().startswith(f"{body}:contact")]
+            assert len(labels) == 1, labels
+            assert ("master" in labels[0]) == (not side.attrs["slave"]), labels[0]
+        assert (run == "mortar") == (not g["block_contact"].attrs["slave"])
+        plt.close(fig)
+    out = tmp_path / "p.png"
+    assert plot(h5, "-o", out).returncode == 0
+    assert_png(out)

@@ -1,5 +1,6 @@
 /* The results of a contact pair, whatever the formulation: the profiles of the
-   two one-sided surfaces gathered on rank 0 (mirrored for half models) and
+   two surfaces (a slave's own, a master's transferred from the slave where the
+   formulation gives one) gathered on rank 0 (mirrored for half models) and
    compared with Hertz, the forces and the largest penetration reduced over
    ranks; the console report, the JSON members and the HDF5 group. */
 #include <petscviewerhdf5.h>
@@ -50,6 +51,7 @@ static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *s
         r[CONTACT_ROW_S]  = 2.0 * scut - r[CONTACT_ROW_S];
         r[CONTACT_ROW_Y]  = 2.0 * spec->mirrorY - r[CONTACT_ROW_Y];
         r[CONTACT_ROW_YC] = 2.0 * spec->mirrorY - r[CONTACT_ROW_YC];
+        r[CONTACT_ROW_FY] = -r[CONTACT_ROW_FY];
       }
       m *= 2;
     }
@@ -135,11 +137,12 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
           if (first < 0) first = i;
           last = i;
         }
-      if (!S->slave) {
+      if (!S->slave && !S->n) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s:%s: master only\n", bodies[spec->body[s]]->name, spec->group[s]));
         continue;
       }
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
+      if (S->slave) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
+      else PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's nodal forces over int N_j dS (centre s = %.6g, peak %.6g, force (%.6e, %.6e)):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, (double)S->force[0], (double)S->force[1]));
       if (first < 0) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
         continue;
@@ -156,6 +159,10 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
       }
     }
   }
+  if (R->nodal) {
+    const PetscReal *a = R->side[0].force, *b = R->side[1].force, na = PetscSqrtReal(a[0] * a[0] + a[1] * a[1]);
+    PetscCall(PetscPrintf(comm, "  nodal contact forces%s: %s:%s (%.6e, %.6e), %s:%s (%.6e, %.6e); |sum| / |force| = %.1e\n", spec->mirror ? " (the half model)" : "", bodies[spec->body[0]]->name, spec->group[0], (double)a[0], (double)a[1], bodies[spec->body[1]]->name, spec->group[1], (double)b[0], (double)b[1], (double)(na > 0 ? PetscSqrtReal(PetscSqr(a[0] + b[0]) + PetscSqr(a[1] + b[1])) / na : 0.0)));
+  }
   if (spec->hertz && !(R->P > 0)) PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
   else if (spec->hertz) {
     PetscCall(PetscPrintf(comm, "  Hertz (E* = %g, R* = %g): a = %.6g, p_max = %.6g\n", (double)spec->Estar, (double)spec->Rstar, (double)R->hertzA, (double)R->hertzPmax));
@@ -163,7 +170,11 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
     PetscCall(PetscPrintf(comm, "  half-width from the profile's second moment: a = %.6g (%+.2f %%)\n", (double)R->femAm, (double)(100 * (R->femAm / R->hertzA - 1))));
     if (PetscIsInfOrNanReal(R->l2err)) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: n/a (a surface has no point inside Hertz's zone)\n"));
     else if (R->side[0].slave && R->side[1].slave) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %% (surfaces: %.2f %%, %.2f %%)\n", (double)(100 * R->l2err), (double)(100 * R->side[0].fig.l2err), (double)(100 * R->side[1].fig.l2err)));
-    else PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %%%s\n", (double)(100 * R->l2err), R->nodal ? " (over the nodes, weights A_j)" : ""));
+    else {
+      const ContactSide *M = R->side[0].slave ? &R->side[1] : &R->side[0];
+      if (M->fig.pmax > 0 && !PetscIsInfOrNanReal(M->fig.l2err)) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %% (the slave's, over the nodes, weights A_j; the master's: %.2f %%)\n", (double)(100 * R->l2err), (double)(100 * M->fig.l2err)));
+      else PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: %.2f %%%s\n", (double)(100 * R->l2err), R->nodal ? " (over the nodes, weights A_j)" : ""));
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -233,18 +244,22 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
    file: quadratic edges (Edge_3: corner, corner, mid) when the samples are the
    nodes of the surface's quadratic edges from one end to the other (an odd
    count), else 2-node segments between consecutive samples. None for a side
-   without samples (a master-only surface). */
+   without samples. */
 static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt *ncells, PetscInt *nper)
 {
   *nper   = nodal && S->n % 2 == 1 ? 3 : 2;
   *ncells = S->n < 2 ? 0 : (*nper == 3 ? (S->n - 1) / 2 : S->n - 1);
 }
 
-/* Per one-sided surface, /contact/<pair>/<body>_<group>/: s, X (reference),
-   x (current), gap, pressure, weight, from rank 0 (named node_s, node_X, ...
-   when the samples are nodes: weighted gap, nodal pressure, A_j), and the
-   line cells through them (cells or node_cells, ContactSideLineCells); the
-   pair's figures as attributes of /contact/<pair> (collective). */
+/* Per surface, /contact/<pair>/<body>_<group>/: s, X (reference), x
+   (current), gap, pressure, weight, from rank 0 (named node_s, node_X, ...
+   when the samples are nodes: for a slave its weighted gap, nodal pressure
+   and A_j, for a master its gap weighted over the slave's points, the
+   transferred pressure and int N_j dS; then also node_force, the pair's
+   contact force on each node),
+   and the line cells through them (cells or node_cells,
+   ContactSideLineCells); empty datasets and no cells for a surface without
+   a profile. The pair's figures as attributes of /contact/<pair> (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
   MPI_Comm    comm;
@@ -256,14 +271,14 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S        = &R->side[s];
-    const char        *gauss[6] = {"s", "X", "x", "gap", "pressure", "weight"}, *nodal[6] = {"node_s", "node_X", "node_x", "node_gap", "node_pressure", "node_weight"};
+    const char        *gauss[7] = {"s", "X", "x", "gap", "pressure", "weight", "force"}, *nodal[7] = {"node_s", "node_X", "node_x", "node_gap", "node_pressure", "node_weight", "node_force"};
     const char *const *names    = R->nodal ? nodal : gauss;
-    const PetscInt     cols[6]  = {CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_XC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W}, bs[6] = {1, 2, 2, 1, 1, 1};
-    const PetscInt     n        = rank ? 0 : S->n;
+    const PetscInt     cols[7]  = {CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_XC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_FX}, bs[7] = {1, 2, 2, 1, 1, 1, 2};
+    const PetscInt     n        = rank ? 0 : S->n, nsets = R->nodal ? 7 : 6; /* nodal forces: nodes only */
 
     PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", spec->name, bodies[spec->body[s]]->name, spec->group[s]));
     PetscCall(PetscViewerHDF5PushGroup(v, group));
-    for (PetscInt k = 0; k < 6; ++k) {
+    for (PetscInt k = 0; k < nsets; ++k) {
       Vec          vec;
       PetscScalar *a;
       PetscCall(VecCreate(comm, &vec));

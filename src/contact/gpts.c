@@ -138,6 +138,8 @@ static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[]
       r[CONTACT_ROW_GAP] = P.G.me < 0 ? PETSC_INFINITY : P.G.gap;
       r[CONTACT_ROW_P]   = 0.0;
       r[CONTACT_ROW_W]   = sp[3];
+      r[CONTACT_ROW_FX]  = 0.0; /* nodal forces: not at Gauss points */
+      r[CONTACT_ROW_FY]  = 0.0;
       if (P.G.me < 0 || P.G.gap >= 0.0) continue;
       pen              = -P.G.gap;
       r[CONTACT_ROW_P] = cp->b.kp * pen;

@@ -1,5 +1,6 @@
 /* Contact formulation "mortar": penalty on nodal weighted gaps, integrated
-   segment by segment, both surfaces as slave (averaged as in gpts).
+   segment by segment, the pair's first surface as slave (or the second, or
+   both averaged as in gpts: -contact_mortar_slave).
 
    With S the slave surface, N_j its quadratic (P2) basis at node j and dS
    the reference length,
@@ -46,7 +47,32 @@
    dc = -(dg_a - dg_b) du / d(g_a - g_b)/dxi (g_a = g_b at c). The second part is pointwise (gap.c's d2g, added
    with -contact_hessian exact or auto); the first couples every dof under the
    support of N_j, so it is assembled node by node, over the node's slave
-   edges, by the rank that owns the node (the lowest-numbered edge on it). */
+   edges, by the rank that owns the node (the lowest-numbered edge on it).
+
+   Nodal forces and the master's pressure. The pair's contact force on node j
+   of either surface is F_j = -dE/du_j, the gradient above: on a slave node
+   -int_S' Lambda N_j n dS, on a master node +int_S' Lambda M_j(eta*) n dS
+   (M_j the master's shape functions at the closest point, n the master's
+   outward normal there; Lambda <= 0). At every point the two parts are
+   -Lambda n dS (sum_i N_i - sum_j M_j) = 0 (both sets of shape functions
+   sum to 1; the blend's corrections to 0), so the forces on the two surfaces
+   balance to round-off, one-sided or averaged: E depends only on the
+   relative positions x_s - x_m and on the master's tangent, and is unchanged
+   by a rigid translation of both. A surface that is not a slave shows the
+   slave's pressure transferred to it: a traction -p n_M on the master has the
+   consistent nodal forces F_j = -int_M N_j p n_M dS; lumped (the row sum
+   int_M N_j N_k summed over k is int_M N_j) they are F_j = -p_j A_j n_j, so
+     p_j = -F_j . n_j / A_j,   A_j = int_M N_j dS (reference length),
+   n_j the master's outward unit normal at the node (ContactSurfaceNodalNormals).
+   This is the slave's convention: with the dual (or quadratic) weights
+   A_j = int W_j dS = int N_j dS too (int psi_j = sum_k int psi_j N_k =
+   int N_j), and a uniform slave pressure p gives F_j = -p A_j n on a flat
+   master surface whose reference length maps onto the slave's, so p_j = p
+   (the patch test). Near the zone's ends a master corner node may take a
+   small negative p_j (N_j < 0 on part of its edges); it is kept, so that
+   sum_j p_j A_j is the normal force. Where both surfaces are slaves, each
+   shows its own pressure k_p <-g_j>_+, and F_j is the whole pair's force on
+   the node (its slave half and its master half, each weighted 1/2). */
 #include "contactterm.h"
 #include "edge.h"
 #include "gap.h"
@@ -103,7 +129,8 @@ typedef struct {
 } MortarCut;
 
 typedef struct {
-  PetscReal *A, *cover;    /* [nn] int N_j dS over the surface; int N_j over the part facing a master (summed over ranks) */
+  PetscReal *A, *cover;    /* [nn] int W_j dS over the surface; int W_j over the part facing a master (summed over ranks) */
+  PetscReal *AN;           /* [nn] int N_j dS: the node's weight as a master */
   PetscReal *gw, *gj;      /* [nn] int N_j g dS (summed over ranks), g_j */
   PetscReal *s;            /* [nn] arc position of the node */
   PetscBool *mine;         /* [nn] node owned by this rank: its energy, Hessian block and report row */
@@ -310,14 +337,14 @@ static inline PetscReal MortarLambda(const Mortar *m, const MortarSide *D, const
   return c * m->b.kp * L;
 }
 
-static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+/* This rank's part of the pair's energy and of its gradient on both
+   surfaces' nodes (in S->g, not yet summed over ranks), at the state of the
+   last MortarUpdate. */
+static PetscErrorCode MortarAccumulateGradient(Mortar *m, PetscReal *energy)
 {
-  Mortar   *m = (Mortar *)t->data;
   PetscReal e = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
-  PetscCall(MortarUpdate(m, bodies, t->comm));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(m->b.S[s].g, 2 * m->b.S[s].nn));
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface   *S = &m->b.S[s], *M = &m->b.S[1 - s];
@@ -339,8 +366,19 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
         for (PetscInt d = 0; d < 2; ++d) M->g[2 * mn[j] + d] -= f * P->G.M7[j] * P->G.n[d];
     }
   }
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   *energy = e;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  PetscCall(MortarAccumulateGradient(m, energy));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -456,60 +494,118 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
   PetscFunctionReturn(0);
 }
 
-/* The nodal profile of each side (a row per node this rank owns: s, X, Y, x,
-   y, weighted gap, pressure, A_j; gap Inf where the master faces less than
-   half the node's support), the forces and the largest weighted penetration. */
+/* The columns of node j's row that every surface fills alike: arc position,
+   reference and current position, the pair's force F on it. */
+static void MortarNodeRow(const ContactSurface *S, const MortarSide *D, PetscInt j, const PetscReal F[], PetscReal r[])
+{
+  r[CONTACT_ROW_S]  = D->s[j];
+  r[CONTACT_ROW_X]  = S->X[2 * j];
+  r[CONTACT_ROW_Y]  = S->X[2 * j + 1];
+  r[CONTACT_ROW_XC] = S->x[2 * j];
+  r[CONTACT_ROW_YC] = S->x[2 * j + 1];
+  r[CONTACT_ROW_FX] = F[2 * j];
+  r[CONTACT_ROW_FY] = F[2 * j + 1];
+}
+
+/* Slave surface s: a row per node this rank owns (weighted gap, Inf where the
+   master faces less than half the node's support; pressure k_p <-g_j>_+;
+   A_j), and the largest weighted penetration. */
+static void MortarSlaveRows(const Mortar *m, PetscInt s, const PetscReal F[], PetscReal rows[], PetscInt *nrow, PetscReal *maxPen)
+{
+  const ContactSurface *S = &m->b.S[s];
+  const MortarSide     *D = &m->side[s];
+
+  *nrow = 0;
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    PetscReal *r = &rows[CONTACT_ROW_COLS * *nrow];
+    if (!D->mine[j] || D->A[j] <= 0) continue; /* linear weights: mid-edge nodes carry none */
+    (*nrow)++;
+    MortarNodeRow(S, D, j, F, r);
+    r[CONTACT_ROW_GAP] = D->gj[j];
+    r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
+    r[CONTACT_ROW_W]   = D->A[j];
+    if (D->gj[j] < 0) *maxPen = PetscMax(*maxPen, -D->gj[j]);
+  }
+}
+
+/* Master surface s (not a slave): a row per node this rank owns with the
+   pressure transferred from the slave, -F_j . n_j / A_j, A_j = int N_j dS
+   (derivation above), and the gap weighted as the slave's but with the
+   master's shape functions at the closest points, over the slave's points:
+   int_S' M_j g dS / int_S' M_j dS (Inf where that covers less than half
+   of A_j). */
+static PetscErrorCode MortarMasterRows(const Mortar *m, PetscInt s, const PetscReal F[], PetscReal rows[], PetscInt *nrow, MPI_Comm comm)
+{
+  const ContactSurface *S = &m->b.S[s];
+  const MortarSide     *D = &m->side[s], *Ds = &m->side[1 - s];
+  PetscReal            *n, *gw;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * S->nn, &n));
+  PetscCall(PetscCalloc1(2 * S->nn, &gw)); /* int_S' M_j g dS, then int_S' M_j dS */
+  ContactSurfaceNodalNormals(S, n);
+  for (PetscInt k = 0; k < Ds->np; ++k) {
+    const MortarPoint *P = &Ds->pts[k];
+    if (P->G.me < 0) continue;
+    for (PetscInt i = 0; i < 7; ++i) {
+      gw[S->mnodes[7 * P->G.me + i]] += P->wt * P->G.M7[i] * P->G.gap;
+      gw[S->nn + S->mnodes[7 * P->G.me + i]] += P->wt * P->G.M7[i];
+    }
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, gw, 2 * S->nn, MPIU_REAL, MPIU_SUM, comm));
+  *nrow = 0;
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    PetscReal *r = &rows[CONTACT_ROW_COLS * *nrow];
+    if (!D->mine[j] || D->AN[j] <= 0) continue;
+    (*nrow)++;
+    MortarNodeRow(S, D, j, F, r);
+    r[CONTACT_ROW_GAP] = gw[S->nn + j] > 0.5 * D->AN[j] ? gw[j] / gw[S->nn + j] : PETSC_INFINITY;
+    r[CONTACT_ROW_P]   = -(F[2 * j] * n[2 * j] + F[2 * j + 1] * n[2 * j + 1]) / D->AN[j];
+    r[CONTACT_ROW_W]   = D->AN[j];
+  }
+  PetscCall(PetscFree(n));
+  PetscCall(PetscFree(gw));
+  PetscFunctionReturn(0);
+}
+
+/* The nodal profile of each surface (its own for a slave, transferred for a
+   master), the pair's force on each surface as the sum of its nodal forces,
+   and the largest weighted penetration. */
 static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
 {
   Mortar    *m = (Mortar *)t->data;
-  PetscReal *rows[2], force[2][2] = {{0, 0}, {0, 0}}, maxPen = 0.0, L[2];
+  PetscReal *rows[2], *F[2], force[2][2] = {{0, 0}, {0, 0}}, maxPen = 0.0, L[2], e;
   PetscInt   nrow[2];
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(MORTAR_Report, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
+  PetscCall(MortarAccumulateGradient(m, &e));
   for (PetscInt s = 0; s < 2; ++s) {
-    ContactSurface   *S = &m->b.S[s];
-    const MortarSide *D = &m->side[s];
-    L[s]                = ContactSurfaceLength(S);
-    nrow[s]             = 0;
-    PetscCall(PetscMalloc1(CONTACT_ROW_COLS * S->nn + 1, &rows[s]));
-    if (!m->slave[s]) continue;
-    for (PetscInt j = 0; j < S->nn; ++j) {
-      PetscReal *r = &rows[s][CONTACT_ROW_COLS * nrow[s]];
-      if (!D->mine[j] || D->A[j] <= 0) continue; /* linear weights: mid-edge nodes carry none */
-      nrow[s]++;
-      r[CONTACT_ROW_S]   = D->s[j];
-      r[CONTACT_ROW_X]   = S->X[2 * j];
-      r[CONTACT_ROW_Y]   = S->X[2 * j + 1];
-      r[CONTACT_ROW_XC]  = S->x[2 * j];
-      r[CONTACT_ROW_YC]  = S->x[2 * j + 1];
-      r[CONTACT_ROW_GAP] = D->gj[j];
-      r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
-      r[CONTACT_ROW_W]   = D->A[j];
-      if (D->gj[j] < 0) maxPen = PetscMax(maxPen, -D->gj[j]);
-    }
-    for (PetscInt k = 0; k < D->np; ++k) {
-      const MortarPoint *P = &D->pts[k];
-      PetscReal          f;
-      if (P->G.me < 0) continue;
-      f = P->wt * MortarLambda(m, D, &S->enodes[3 * P->se], P->W, m->c);
+    const ContactSurface *S = &m->b.S[s];
+    L[s]                    = ContactSurfaceLength(S);
+    PetscCall(PetscMalloc2(CONTACT_ROW_COLS * S->nn + 1, &rows[s], 2 * S->nn, &F[s]));
+    PetscCall(MPIU_Allreduce(S->g, F[s], 2 * S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+    for (PetscInt j = 0; j < S->nn; ++j)
       for (PetscInt d = 0; d < 2; ++d) {
-        force[s][d] -= f * P->G.n[d];
-        force[1 - s][d] += f * P->G.n[d];
+        F[s][2 * j + d] = -F[s][2 * j + d];
+        if (m->side[s].mine[j]) force[s][d] += F[s][2 * j + d];
       }
-    }
+  }
+  for (PetscInt s = 0; s < 2; ++s) {
+    if (m->slave[s]) MortarSlaveRows(m, s, F[s], rows[s], &nrow[s], &maxPen);
+    else PetscCall(MortarMasterRows(m, s, F[s], rows[s], &nrow[s], t->comm));
   }
   PetscCall(ContactTermReportBegin(&m->b, m->slave));
   m->b.report.nodal = PETSC_TRUE;
   PetscCall(ContactReportFinish(&m->b.report, &m->b.spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree(rows[s]));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree2(rows[s], F[s]));
   PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
-/* Both surfaces and their searches; per side the nodal integrals A_j (8-point
-   Gauss on every edge, every rank), the arc position of each node, the edges
+/* Both surfaces and their searches; per side the nodal integrals A_j and
+   int N_j dS (8-point Gauss on every edge, every rank), the arc position of each node, the edges
    on each node and the nodes this rank owns. */
 static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
 {
@@ -524,7 +620,8 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
     MortarSide     *D = &m->side[s];
     const PetscInt  e0 = S->nown ? S->ownEdges[0] : -1, e1 = S->nown ? S->ownEdges[S->nown - 1] : -2;
     PetscInt       *minEdge, *cnt;
-    PetscCall(PetscCalloc5(S->nn, &D->A, 2 * S->nn, &D->gw, S->nn, &D->gj, S->nn, &D->s, S->nn, &D->mine));
+    PetscCall(PetscCalloc5(2 * S->nn, &D->A, 2 * S->nn, &D->gw, S->nn, &D->gj, S->nn, &D->s, S->nn, &D->mine));
+    D->AN    = D->A + S->nn;
     D->cover = D->gw + S->nn;
     PetscCall(PetscMalloc2(S->nn, &minEdge, S->nn + 1, &cnt));
     PetscCall(PetscCalloc1(S->nn + 1, &D->nodeEdgeStart));
@@ -560,10 +657,14 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
       for (PetscInt h = 0; h < 2; ++h) /* each half of the edge: the sublinear weights have a kink at 0 */
         for (PetscInt q = 0; q < 8; ++q) {
           const PetscReal xi = 0.5 * (gx[q] + 2.0 * h - 1.0);
-          PetscReal       W[3], X[2], T[2];
+          PetscReal       W[3], N[3], dN[3], X[2], T[2];
           MortarWeights(m->basis, &D->dual[9 * e], xi, W);
+          EdgeShape(xi, N, dN);
           EdgeEval(S->X, en, xi, X, T);
-          for (PetscInt i = 0; i < 3; ++i) D->A[en[i]] += 0.5 * gw[q] * W[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+          for (PetscInt i = 0; i < 3; ++i) {
+            D->A[en[i]] += 0.5 * gw[q] * W[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+            D->AN[en[i]] += 0.5 * gw[q] * N[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+          }
         }
       for (PetscInt i = 0; i < 3; ++i) {
         minEdge[en[i]] = PetscMin(minEdge[en[i]], e);

@@ -297,6 +297,33 @@ PetscErrorCode ContactSurfaceArc(const ContactSurface *S, PetscInt e, PetscReal 
   PetscFunctionReturn(0);
 }
 
+/* The outward unit normal at each node in the current configuration: on a
+   mid-edge node its edge's, on a node shared by two edges the mean of their
+   two normals there (the bisector: the edges of a finite element surface
+   meet at a small corner), normalised. */
+void ContactSurfaceNodalNormals(const ContactSurface *S, PetscReal n[])
+{
+  const PetscReal xi[3] = {-1.0, 1.0, 0.0};
+
+  for (PetscInt k = 0; k < 2 * S->nn; ++k) n[k] = 0.0;
+  for (PetscInt e = 0; e < S->ne; ++e)
+    for (PetscInt i = 0; i < 3; ++i) {
+      const PetscInt j = S->enodes[3 * e + i];
+      PetscReal      p[2], t[2], l;
+      EdgeEval(S->x, &S->enodes[3 * e], xi[i], p, t);
+      l = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      n[2 * j] += S->esign[e] * t[1] / l;
+      n[2 * j + 1] -= S->esign[e] * t[0] / l;
+    }
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    const PetscReal l = PetscSqrtReal(n[2 * j] * n[2 * j] + n[2 * j + 1] * n[2 * j + 1]);
+    if (l > 0) {
+      n[2 * j] /= l;
+      n[2 * j + 1] /= l;
+    }
+  }
+}
+
 PetscReal ContactSurfaceLength(const ContactSurface *S)
 {
   PetscReal L = 0.0;
