@@ -31,7 +31,8 @@ def test_symmetry(tmp_path):
     r = run_contact(HERTZ + ["-indenter_mesh", msh], tmp_path)
     with r.h5() as f:
         for k, g in f["contact/interface"].items():
-            s, p, sc = g["s"][...], g["pressure"][...], g.attrs["centre"]
+            pre = "node_" if "node_s" in g else ""
+            s, p, sc = g[pre + "s"][...], g[pre + "pressure"][...], g.attrs["centre"]
             assert np.abs((s - sc) + (s - sc)[::-1]).max() < 1e-9
             err = np.abs(p - p[::-1]).max() / p.max()
             print(f"{k}: max |p(s) - p(-s)| / p_max = {err:.2e}")
@@ -39,16 +40,20 @@ def test_symmetry(tmp_path):
     assert abs(r.summary["contact"]["interface"]["force"][1]) <= 1e-6 * r.summary["contact_force"]
 
 
-def test_penetration_and_hertz_small(tmp_path):
-    """hertz-small (a/R = 0.1, graded meshes, size 0.004 at the contact): p_max and a
-    within 2 % of Hertz, the largest penetration is p_max(Hertz)/k_p within 1 %."""
+def test_hertz_small(tmp_path):
+    """hertz-small (a/R = 0.1, graded meshes, size 0.004 at the contact), where
+    Hertz holds to 0.4 % in the profile: with the default formulation (mortar)
+    p_max within 0.6 % of Hertz (measured +0.24 %), the half-width from the
+    profile's second moment within 0.7 % (measured -0.28 %; the one from the
+    zone's ends is -3.4 %, an element's width), the profile within 0.6 % in L2
+    (measured 0.25 %)."""
     s = run_contact(["-options_file", "meshes/hertz-small/hertz-small.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
-    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error", "max_penetration")})
+    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "fem_a_moment", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
+    assert s["contact"]["interface"]["formulation"] == "mortar"
     assert 0.08 <= s["hertz_a"] <= 0.12
-    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.02
-    assert rel(s["fem_a"], s["hertz_a"]) <= 0.02
-    assert rel(s["max_penetration"], s["hertz_pmax"] / 2e6) <= 0.01
-    assert s["pressure_l2_error"] <= 0.05
+    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.006
+    assert rel(s["fem_a_moment"], s["hertz_a"]) <= 0.007
+    assert s["pressure_l2_error"] <= 0.006
 
 
 def test_twodiscs(tmp_path):
@@ -87,11 +92,13 @@ def test_force_converges(tmp_path):
     assert monotone_convergence(P), P
 
 
-@pytest.mark.parametrize("scene", ["hertz-graded", "hertz-small", "twodiscs"])
+@pytest.mark.parametrize("scene", ["hertz-small", "twodiscs"])
 def test_force_converges_from_coarse(scene, tmp_path):
     """With the contact patch resolved by the mesh, the force converges
-    monotonically over h = 0.2, 0.1, 0.05: the reference problem meshed with
-    size h on its patch (hertz-graded), the small push, the two discs."""
+    monotonically over h = 0.2, 0.1, 0.05: the small push, the two discs.
+    (Not hertz-graded: -mesh_size sets only its patch's size, its bulk stays
+    coarse, so its force tends to that bulk mesh's limit, not monotonically:
+    55.087, 55.029, 54.962, 54.949, 54.957 from h = 0.2 to 0.0125.)"""
     P = [run_contact(["-options_file", f"meshes/{scene}/{scene}.opts", "-mesh_size", str(h), "-output", "none"], tmp_path,
                      name=f"h{h}").summary["contact_force"] for h in (0.2, 0.1, 0.05)]
     print(scene, "P:", P)
@@ -122,8 +129,9 @@ def test_ranks(tmp_path):
     after the solution was reached."""
     runs = [run_contact(HERTZ + ["-tao_gttol", "1e-13", "-taylor_test"], tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3)]
     ref = flatten(runs[0].summary)
+    scale = runs[0].summary["contact_force"]
     with runs[0].h5() as f:
-        p0 = {k: g["pressure"][...] for k, g in f["contact/interface"].items()}
+        p0 = {k: g["node_pressure" if "node_s" in g else "pressure"][...] for k, g in f["contact/interface"].items()}
     for n, r in zip((2, 3), runs[1:]):
         got = flatten(r.summary)
         assert set(got) == set(ref)
@@ -133,14 +141,16 @@ def test_ranks(tmp_path):
                 continue
             b = got[k]
             if isinstance(a, (int, float)) and not isinstance(a, bool) and a is not None:
-                assert abs(a - b) <= 1e-8 * max(abs(a), abs(b)), f"{k}: {a} at 1 rank, {b} at {n}"
+                # a force component that cancels (y, 2e-5 of P) to 1e-8 of the pair's force
+                floor = 1e-8 * scale if ".force." in f".{k}." else 0.0
+                assert abs(a - b) <= 1e-8 * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
                 compared += 1
             else:
                 assert a == b, f"{k}: {a} at 1 rank, {b} at {n}"
         assert compared > 40
         with r.h5() as f:
             for k, g in f["contact/interface"].items():
-                p = g["pressure"][...]
+                p = g["node_pressure" if "node_s" in g else "pressure"][...]
                 assert p.shape == p0[k].shape
                 assert np.abs(p - p0[k]).max() <= 1e-8 * np.abs(p0[k]).max()
 
@@ -158,3 +168,19 @@ def test_half_model(tmp_path):
     assert abs(half["fem_pmax"] / full["fem_pmax"] - 1) < 2e-2
     assert abs(half["pressure_l2_error"] - full["pressure_l2_error"]) < 1e-2
     assert half["dofs"] < 0.55 * full["dofs"]
+
+
+def test_default_formulation_is_mortar(tmp_path):
+    """The default contact formulation is mortar (the one that passes the
+    contact patch test and converges without oscillation): -help says so, and
+    a scene that names none runs mortar, with the same answer as one that
+    names it."""
+    import subprocess
+    from conftest import BIN, ENV, ROOT
+    out = subprocess.run([str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-help"], cwd=ROOT, env=ENV,
+                         capture_output=True, text=True, timeout=60).stdout
+    assert "-contact_formulation <now mortar : formerly mortar>" in out
+    default = run_contact(HERTZ + ["-mesh_size", "0.2", "-output", "none"], tmp_path, name="default").summary
+    named = run_contact(HERTZ + ["-mesh_size", "0.2", "-contact_formulation", "mortar", "-output", "none"], tmp_path, name="named").summary
+    assert default["contact"]["interface"]["formulation"] == "mortar"
+    assert default["contact_force"] == named["contact_force"]

@@ -60,7 +60,7 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
 
 PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscBool exactHessian, PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[])
 {
-  char     *names[64], formulation[CONTACT_NAME_LEN] = "gpts";
+  char     *names[64], formulation[CONTACT_NAME_LEN] = "mortar";
   PetscInt  np = 64, nq = 4;
   PetscReal kp = -1.0, blend = 0.05;
   PetscBool disable = PETSC_FALSE, setkp, setBlend, help;
