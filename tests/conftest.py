@@ -29,14 +29,15 @@ class RunResult:
         return h5py.File(self.output_path, "r")
 
 
-def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True):
-    """Runs bin/contact from the repository root with outputs in tmp_path."""
+def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, env=None):
+    """Runs bin/contact from the repository root with outputs in tmp_path
+    (env: variables added to the environment)."""
     summary = Path(tmp_path) / f"{name}.json"
     output = Path(tmp_path) / f"{name}.h5"
     cmd = [str(BIN)] + [str(a) for a in args] + ["-summary", str(summary), "-output", str(output)]
     if ranks > 1:
         cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
-    proc = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=timeout)
+    proc = subprocess.run(cmd, cwd=ROOT, env=dict(ENV, **(env or {})), capture_output=True, text=True, timeout=timeout)
     res = RunResult(proc, summary, output)
     if check and proc.returncode != 0:
         raise AssertionError(f"{' '.join(cmd)} exited {proc.returncode}:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
