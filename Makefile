@@ -19,7 +19,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
 
-.PHONY: all deps meshes run test stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
+.PHONY: all deps meshes run test check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -52,6 +52,23 @@ run: bin/contact meshes
 
 test: bin/contact meshes
 	$(PYTHON) -m pytest -q -m "not stress" tests
+
+# the same sources built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (build/san, bin/contact-sanitize), then a fast subset of the suite run with
+# it: any invalid access, overflow or undefined operation aborts the run with a
+# report and fails its test (leaks are not counted: MPI's own allocations)
+SAN_FLAGS = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+SAN_OBJS  = $(patsubst src/%.c,build/san/%.o,$(SRCS))
+build/san/%.o: src/%.c $(wildcard include/*.h) $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(SAN_FLAGS) -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS) -c $< -o $@
+bin/contact-sanitize: $(SAN_OBJS)
+	@mkdir -p bin
+	$(CC) $(SAN_FLAGS) -o $@ $(SAN_OBJS) $(LDLIBS)
+SAN_TESTS = tests/test_patch_contact.py tests/test_master_pressure.py tests/test_cases.py tests/test_bad_input.py tests/test_robustness.py
+check-sanitize: bin/contact-sanitize meshes
+	CONTACT_BIN=$(CURDIR)/bin/contact-sanitize ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
+	  $(PYTHON) -m pytest -q -m "not stress" $(wildcard $(SAN_TESTS))
 
 # the long extremes (k_p up to 1e12 without continuation, h = 0.01) and 500
 # mutated meshes through the mesh reader

@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-BIN = ROOT / "bin" / "contact"
+# CONTACT_BIN: another build of the program (make check-sanitize: bin/contact-sanitize)
+BIN = Path(os.environ.get("CONTACT_BIN", ROOT / "bin" / "contact"))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
 
