@@ -30,8 +30,7 @@ def finite_numbers(obj):
 
 def solve(tmp_path, args, name, ranks=1, check=True):
     r = run_contact(args, tmp_path, ranks=ranks, name=name, check=check)
-    if r.returncode == 0:
-        assert r.summary["converged"], r.stdout
+    if r.returncode == 0:  # exit 0: converged (an unconverged solve exits 2)
         assert finite_numbers(r.summary)
     return r
 

