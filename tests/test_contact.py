@@ -57,23 +57,39 @@ def test_hertz_small(tmp_path):
 
 
 def test_twodiscs(tmp_path):
-    """Two discs of radii 1 and 2, E 1000 and 3000, nu 0.3 and 0.25: Hertz with that E*, R*."""
+    """Two discs of radii 1 and 2, E 1000 and 3000, nu 0.3 and 0.25: E* and R*
+    as Hertz defines them (to round-off), and the default formulation against
+    Hertz with them (a/R* = 0.08, where Hertz holds): p_max within 1.3 %
+    (measured -0.52 %), the second-moment half-width within 1.8 % (+0.73 %),
+    the profile within 2 % in L2 (0.77 %)."""
     s = run_contact(["-options_file", "meshes/twodiscs/twodiscs.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
     c = s["contact"]["interface"]
     estar = 1.0 / ((1 - 0.3 ** 2) / 1000 + (1 - 0.25 ** 2) / 3000)
     assert rel(c["E_star"], estar) <= 1e-12 and rel(c["R_star"], 2.0 / 3.0) <= 1e-12
-    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
-    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.02
-    assert rel(s["fem_a"], s["hertz_a"]) <= 0.02
+    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a_moment", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
+    assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.013
+    assert rel(s["fem_a_moment"], s["hertz_a"]) <= 0.018
+    assert s["pressure_l2_error"] <= 0.02
 
 
-def test_reference_profile_error(tmp_path):
-    """The reference scene at h = 0.06: profile error against Hertz measured at 10.7 %
-    (a/R = 0.36 and a block of width 1: Hertz is not exact here)."""
-    s = run_contact(HERTZ + ["-mesh_size", "0.06", "-output", "none"], tmp_path).summary
-    print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
-    assert s["pressure_l2_error"] <= 0.12
-    assert rel(s["contact_force"], 54.86) <= 0.005
+def test_reference_against_finer(tmp_path):
+    """The reference scene at h = 0.06 against a finer mesh of the same model
+    (its mirrored half at h = 0.015, 4 times finer; P there is 3.2e-4 from the
+    Richardson limit of h = 0.03, 0.015, 0.0075): P within 0.3 % (measured
+    0.11 %), the disc's pressure profile within 4.5 % in L2 (measured 1.8 %).
+    Hertz is not the reference here (a/R = 0.36 and a block of width 1: Hertz
+    is itself 4.9 % from the finest profile)."""
+    import sys
+    from conftest import ROOT
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import profile_metrics as pm
+    coarse = run_contact(HERTZ + ["-mesh_size", "0.06"], tmp_path, name="coarse")
+    fine = run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", "0.015"] + NEWTON, tmp_path, name="fine")
+    d = pm.l2_distance(pm.profiles(coarse.output_path)[0]["indenter_contact"], pm.profiles(fine.output_path)[0]["indenter_contact"])
+    dP = rel(coarse.summary["contact_force"], fine.summary["contact_force"])
+    print(f"h = 0.06 against h = 0.015: P {dP:.2e}, profile {100 * d:.2f} %")
+    assert dP <= 3e-3
+    assert d <= 0.045
 
 
 def monotone_convergence(P):

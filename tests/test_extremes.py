@@ -65,18 +65,34 @@ def check_penalty_sweep(res):
 
 
 def test_penalty_range(tmp_path):
-    """k_p = 1e4 ... 1e10 on the reference scene (Newton, h = 0.1)."""
+    """k_p = 1e4 ... 1e10 on the reference scene (Newton, h = 0.1). Penalty
+    theory: the force's error is O(1/k_p), so each factor 100 in k_p divides
+    the step in P by 100 (measured 100.0 from 1e6-1e8 to 1e8-1e10: ratio held
+    within 70 to 140), and at k_p = 1e10 P is within 1.5e-5 of k_p = 1e8
+    (measured 5.2e-6)."""
     res = penalty_sweep(tmp_path, [1e4, 1e6, 1e8, 1e10])
     P = check_penalty_sweep(res)
-    assert abs(P[-1] - P[-2]) / P[-1] < 1e-3
+    ratio = (P[2] - P[1]) / (P[3] - P[2])
+    print(f"step ratio {ratio:.2f}, last step {abs(P[-1] - P[-2]) / P[-1]:.2e}")
+    assert 70 <= ratio <= 140
+    assert abs(P[-1] - P[-2]) / P[-1] < 1.5e-5
 
 
 def test_penalty_extremes(tmp_path):
-    """k_p = 1e1: the bodies interpenetrate but the answer is finite and
-    consistent (force = reaction); k_p = 1e12 with penalty continuation gives
+    """k_p = 1e1: the bodies interpenetrate nearly by the whole push, so the
+    disc is nearly rigid and the force is k_p times the integral of the
+    penetration of a circle by a straight edge at the computed depth d, over
+    the disc's (slave) arc: k_p (2 y0 - 2 (1 - d) asin y0), y0 = sqrt(1 - (1 -
+    d)^2) (R = 1), within 1.2 % (measured +0.6 %: the disc flattens a little);
+    the force equals the reaction; k_p = 1e12 with penalty continuation gives
     the stiff limit of the sweep above."""
     soft = solve(tmp_path, HERTZ + ["-contact_penalty", "1e1"], "soft").summary
-    assert 0 < soft["contact_force"] < 5 and soft["max_penetration"] > 0.1
+    d = soft["max_penetration"]
+    y0 = math.sqrt(1 - (1 - d) ** 2)
+    rigid = 1e1 * (2 * y0 - 2 * (1 - d) * math.asin(y0))
+    print(f"k_p = 10: P {soft['contact_force']:.6g}, rigid disc at depth {d:.5g}: {rigid:.6g}")
+    assert 0.1 < d < 0.15
+    assert abs(soft["contact_force"] / rigid - 1) < 0.012
     push = soft["reactions"]["block:push"][0]
     assert abs(abs(push) - soft["contact_force"]) < 1e-6 * soft["contact_force"]
     stiff = solve(tmp_path, HERTZ + ["-contact_penalty", "1e12", "-penalty_stages", "4", "-penalty_start", "1e-4"], "stiff").summary
@@ -203,8 +219,9 @@ def test_units(E, L, tmp_path):
 
 @pytest.mark.parametrize("nu", [0.0, 0.45, 0.49, 0.499])
 def test_poisson_ratio(nu, tmp_path):
-    """Converges for nu up to 0.499 and matches Hertz with that E*; a warning
-    names the locking risk from nu = 0.45."""
+    """Converges for nu up to 0.499 and matches Hertz with that E* within 2 %
+    (measured a -0.1 to -0.4 %, p_max +0.15 to +1.0 %, the most at 0.499); a
+    warning names the locking risk from nu = 0.45."""
     r = solve(tmp_path, SMALL + ["-indenter_nu", nu, "-block_nu", nu], "nu")
     s = r.summary
     warned = "nearly incompressible" in r.stderr
@@ -215,15 +232,17 @@ def test_poisson_ratio(nu, tmp_path):
 
 @pytest.mark.parametrize("E1", [1.0, 1e6])
 def test_stiffness_contrast(E1, tmp_path):
-    """E1/E2 = 1e-3 and 1e3 (penalty scaled with E*): Hertz with that E* to 3 %
-    (the soft disc of E1/E2 = 1e-3 flattens more than Hertz's half-spaces:
-    p_max +2.2 %)."""
+    """E1/E2 = 1e-3 and 1e3 (penalty scaled with E*): Hertz with that E*. The
+    soft disc (E1/E2 = 1e-3) within 0.4 % in a and p_max (measured +0.12 % and
+    +0.03 %); the stiff disc on the soft block (1e3) within 4.5 % (measured
+    -1.6 % and +2.0 %: the block, of width 10 a, is no half-space when it
+    carries the whole compliance)."""
     E2 = 1000.0
     Es = 1 / ((1 - 0.09) / E1 + (1 - 0.09) / E2)
     s = solve(tmp_path, SMALL + ["-indenter_E", E1, "-contact_penalty", f"{2e6 * Es / 549.45:.6g}"], "contrast").summary
     assert abs(s["E_star"] / Es - 1) < 1e-12
     for k, h in (("fem_a_moment", "hertz_a"), ("fem_pmax", "hertz_pmax")):
-        assert abs(s[k] / s[h] - 1) < 0.03, (k, s[k], s[h])
+        assert abs(s[k] / s[h] - 1) < {1.0: 0.004, 1e6: 0.045}[E1], (k, s[k], s[h])
 
 
 # -- meshes and ranks ----------------------------------------------------------
