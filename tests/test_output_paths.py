@@ -4,7 +4,6 @@ the option and the directory; of the missing directories only the default
 out/ is created."""
 import os
 import subprocess
-import time
 
 import pytest
 
@@ -28,14 +27,11 @@ def test_output_path_fails_before_meshing(case, tmp_path):
     }[case]
     cmd = [str(BIN)] + HERTZ + ["-mesh_size", "0.0123", "-mesh_dir", str(mesh_dir), "-output", str(tmp_path / "o.h5"),
                                 "-summary", str(tmp_path / "o.json")] + [str(a) for a in args]
-    t0 = time.time()
     proc = subprocess.run(cmd, cwd=tmp_path, env=ENV, capture_output=True, text=True, timeout=120)
-    elapsed = time.time() - t0
     lines = [l for l in proc.stderr.splitlines() if l.strip()]
     assert proc.returncode == 1 and len(lines) == 1 and cause in lines[0], proc.stderr
     assert not mesh_dir.exists(), "meshed before checking the outputs"
     assert sorted(os.listdir(tmp_path)) == ["afile"], os.listdir(tmp_path)
-    assert elapsed < 5, elapsed
 
 
 def test_default_out_created(tmp_path):

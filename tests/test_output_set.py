@@ -50,43 +50,65 @@ def test_one_run_id_per_set(tmp_path):
     assert sorted(os.listdir(tmp_path)) == sorted(SET)  # no lock, no temporary left
 
 
+class HeldLock:
+    """The set's lock held by this test as a run holds it (a line naming this
+    process, flock()ed), so that another run meets a live holder for as long
+    as the test wants: no race with a first run's speed. Released as a run
+    releases it: unlinked while still flocked, then closed."""
+
+    def __init__(self, d):
+        import fcntl
+        self.path = d / "out.lock"
+        self.fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o644)
+        fcntl.flock(self.fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        os.write(self.fd, f"pid={os.getpid()} host={os.uname().nodename} run_id=held-by-test\n".encode())
+
+    def release(self):
+        os.unlink(self.path)
+        os.close(self.fd)
+
+
 def test_second_run_stops_at_once(tmp_path):
-    """Two runs on the same names: the second stops with one line naming the
-    first (its pid) while the first goes on and writes a whole set."""
-    first = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE, text=True)
-    wait_for(tmp_path / "out.lock", first)
-    t0 = time.time()
-    second = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
-    elapsed = time.time() - t0
-    assert first.poll() is None, "the first run ended before the second started: use a finer mesh"
-    lines = [l for l in second.stderr.splitlines() if l.strip()]
-    assert second.returncode == 1 and len(lines) == 1, second.stderr
-    assert lines[0].startswith("contact: error: ") and f"pid {first.pid} " in lines[0], lines[0]
-    assert "-output_wait" in lines[0]
-    assert elapsed < 5, f"the second run took {elapsed:.1f} s to stop"
-    assert first.wait(timeout=600) == 0, first.stderr.read()[-2000:]
-    ids = run_ids(tmp_path)
-    assert set(ids.values()) == {ids["json"]} and ids["json"].endswith(f"-{first.pid}"), ids
-    assert sorted(os.listdir(tmp_path)) == sorted(SET)
+    """A run on names another run holds stops before it meshes, with one line
+    naming the holder (its pid and run id) and -output_wait, writes nothing,
+    and leaves the holder's lock alone."""
+    lock = HeldLock(tmp_path)
+    try:
+        second = subprocess.run(command(tmp_path, 0.2, "-progress"), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+        lines = [l for l in second.stderr.splitlines() if l.strip() and not l.startswith("contact: [")]
+        assert second.returncode == 1 and len(lines) == 1, second.stderr
+        assert lines[0].startswith("contact: error: ") and f"pid {os.getpid()} " in lines[0] and "held-by-test" in lines[0], lines[0]
+        assert "-output_wait" in lines[0]
+        assert "set-up" not in second.stderr, second.stderr  # it stopped in the first phase, before meshing
+        assert sorted(os.listdir(tmp_path)) == ["out.lock"]
+        assert "held-by-test" in (tmp_path / "out.lock").read_text()
+    finally:
+        lock.release()
 
 
 def test_second_run_waits(tmp_path):
-    """With -output_wait the second run waits for the first and then writes
-    its own whole set (its mesh, its run id in every file)."""
-    first = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE, text=True)
-    wait_for(tmp_path / "out.lock", first)
-    second = subprocess.Popen(command(tmp_path, 0.2, "-output_wait"), cwd=ROOT, env=ENV, stdout=subprocess.PIPE,
+    """With -output_wait a run waits while another holds the set, then writes
+    its own whole set over the earlier one (its mesh, its run id in every
+    file)."""
+    first = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    assert first.returncode == 0, first.stderr
+    first_nodes = json.loads((tmp_path / "out.json").read_text())["bodies"]["indenter"]["nodes"]
+    lock = HeldLock(tmp_path)
+    second = subprocess.Popen(command(tmp_path, 0.1, "-output_wait"), cwd=ROOT, env=ENV, stdout=subprocess.PIPE,
                               stderr=subprocess.PIPE, text=True)
-    assert first.wait(timeout=600) == 0, first.stderr.read()[-2000:]
+    try:
+        line = second.stderr.readline()  # blocks until the run says it waits (or ends)
+        assert line.startswith("contact: waiting: ") and f"pid {os.getpid()} " in line, line
+    finally:
+        lock.release()
     out, err = second.communicate(timeout=600)
     assert second.returncode == 0, err
-    assert "contact: waiting: " in err and f"pid {first.pid} " in err, err
     ids = run_ids(tmp_path)
     assert set(ids.values()) == {ids["json"]} and ids["json"].endswith(f"-{second.pid}"), ids
+    summary = json.loads((tmp_path / "out.json").read_text())
     with h5py.File(tmp_path / "out.h5", "r") as f:
-        assert len(f["bodies/indenter/geometry"]) == 561  # h = 0.2: the second run's mesh
+        nodes = len(f["bodies/indenter/geometry"])
+    assert nodes == summary["bodies"]["indenter"]["nodes"] != first_nodes  # the second run's mesh, h = 0.1
     assert sorted(os.listdir(tmp_path)) == sorted(SET)
 
 
