@@ -50,9 +50,11 @@ def indenter(run):
 
 def test_convergence(half):
     """The profile's L2 distance from the finest mesh falls monotonically at an
-    observed rate of at least 0.9 (least-squares fit over h) and is at most 2 %
-    at h = 0.03; p_max and the half-width are within 1 % of the finest from
-    h = 0.03 (measured 4.27, 1.93, 1.27, 0.50 %; rate 1.07; 0.0 % and 0.75 %)."""
+    observed rate of at least 0.9 (least-squares fit over h) and is at most 3 %
+    at h = 0.03; from h = 0.03 p_max is within 0.2 % of the finest (measured
+    +0.06 and +0.02 %), the half-width within 1.6 % (measured -0.75 and
+    -0.68 %: the zone's ends are found between nodes) (L2 measured 4.27,
+    1.93, 1.27, 0.49 %; rate 1.07)."""
     ref = indenter(half[HREF])
     d = [pm.l2_distance(indenter(half[h]), ref) for h in HS]
     rate = np.polyfit(np.log(HS), np.log(d), 1)[0]
@@ -60,13 +62,13 @@ def test_convergence(half):
     print("L2 distance from h =", HREF, ":", [f"{100 * x:.2f} %" for x in d], f"rate {rate:.2f}")
     assert all(b < a for a, b in zip(d, d[1:])), d
     assert rate >= 0.9
-    assert d[HS.index(0.03)] <= 0.02
+    assert d[HS.index(0.03)] <= 0.03
     for h in HS[HS.index(0.03):]:
         p = indenter(half[h])
         print(f"h = {h}: p_max {p[1].max():.5g} ({p[1].max() / pref - 1:+.2%}), a {pm.half_width(*p):.5g} "
               f"({pm.half_width(*p) / aref - 1:+.2%})")
-        assert abs(p[1].max() / pref - 1) <= 0.01
-        assert abs(pm.half_width(*p) / aref - 1) <= 0.01
+        assert abs(p[1].max() / pref - 1) <= 0.002
+        assert abs(pm.half_width(*p) / aref - 1) <= 0.016
 
 
 def test_no_oscillation(half, tmp_path):
@@ -103,9 +105,10 @@ def test_no_oscillation(half, tmp_path):
 def test_hertz_small(n, tmp_path):
     """Where Hertz holds (hertz-small, a/R = 0.10), meshed with a/h = n elements
     across the half-width (size a/n within 0.14 of the first contact point):
-    profile L2 error against Hertz at most 5, 2.5, 1.5, 1 % (measured 1.04,
-    0.34, 0.22, 0.28 %: the last is Hertz's own error at a/R = 0.1), p_max
-    within 1 % from a/h = 12 (measured +0.23, +0.21, +0.21 %)."""
+    profile L2 error against Hertz at most 2.6, 0.85, 0.6, 0.7 % (2.5 times
+    the measured 1.04, 0.34, 0.22, 0.28 %: from a/h = 24 on, Hertz's own
+    error at a/R = 0.1, about 0.3 %, is what remains), p_max within 0.6 %
+    from a/h = 12 (measured +0.23, +0.21, +0.21 %)."""
     hc = 0.1036 / n
     geo = f"hc={hc:.6g},rc=0.14,dc=0.3"
     r = run_contact(["-options_file", "meshes/hertz-small/hertz-small.opts"] + MORTAR +
@@ -114,9 +117,9 @@ def test_hertz_small(n, tmp_path):
     s = r.summary
     print(f"a/h = {n}: L2 {100 * s['pressure_l2_error']:.2f} %, p_max {s['fem_pmax'] / s['hertz_pmax'] - 1:+.2%}, "
           f"a {s['fem_a'] / s['hertz_a'] - 1:+.2%}, dofs {s['dofs']}")
-    assert s["pressure_l2_error"] <= {6: 0.05, 12: 0.025, 24: 0.015, 48: 0.01}[n]
+    assert s["pressure_l2_error"] <= {6: 0.026, 12: 0.0085, 24: 0.006, 48: 0.007}[n]
     if n >= 12:
-        assert abs(s["fem_pmax"] / s["hertz_pmax"] - 1) <= 0.01
+        assert abs(s["fem_pmax"] / s["hertz_pmax"] - 1) <= 0.006
 
 
 def test_ranks(tmp_path):
