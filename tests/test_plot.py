@@ -60,27 +60,92 @@ def assert_png(path):
     assert not [p for p in path.parent.iterdir() if p.name.startswith(".plot_hertz-")]
 
 
+def pressure_axes(h5, units="none", zoom=None):
+    """The pressure plot drawn by the script's own function on a fresh axes."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    fig, ax = plt.subplots()
+    with h5py.File(h5, "r") as f:
+        mod.plot_pressure(f, [ax], mod.parse_units(units), zoom)
+    return fig, ax
+
+
 def test_pressure_plot(hertz, tmp_path):
+    """The command writes a PNG; what it draws: the Hertz curve is p_max
+    sqrt(1 - (t/a)^2) with the HDF5's a and p_max (to round-off), zero
+    outside, and the box's P is the HDF5's."""
+    import matplotlib.pyplot as plt
     out = tmp_path / "p.png"
     r = plot(hertz, "-o", out)
     assert r.returncode == 0, r.stderr
     assert_png(out)
+    fig, ax = pressure_axes(hertz)
+    with h5py.File(hertz, "r") as f:
+        g = f["contact/interface"]
+        a, pmax, P = (float(np.ravel(g.attrs[k])[0]) for k in ("hertz_a", "hertz_pmax", "P"))
+    hz, = [l for l in ax.get_lines() if l.get_label() == "Hertz"]
+    t, p = hz.get_xdata(), hz.get_ydata()
+    assert np.abs(p - pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None))).max() <= 1e-12 * pmax
+    assert p.max() == pytest.approx(pmax, rel=1e-12) and t.min() <= -a and t.max() >= a
+    box = "\n".join(x.get_text() for x in ax.texts)
+    assert f"P = {P:.4g}" in box, box
+    plt.close(fig)
 
 
 def test_pressure_zoom_units(hertz, tmp_path):
+    """--zoom 3 frames three times the loaded arc (with Hertz's zone) about its
+    middle, computed here from the HDF5's samples; --units labels the axes."""
+    import matplotlib.pyplot as plt
     out = tmp_path / "pz.png"
     r = plot(hertz, "--zoom", "3", "--units", "mm,MPa", "-o", out)
     assert r.returncode == 0, r.stderr
     assert_png(out)
+    with h5py.File(hertz, "r") as f:
+        g = f["contact/interface"]
+        a = float(np.ravel(g.attrs["hertz_a"])[0])
+        loaded = []
+        sides = [g[k] for k in g]
+        pmax = max(float(side[("node_" if "node_s" in side else "") + "pressure"][()].max()) for side in sides)
+        for side in sides:
+            pre = "node_" if "node_s" in side else ""
+            sv, pv = side[pre + "s"][()] - side.attrs["centre"], side[pre + "pressure"][()]
+            loaded.append(sv[pv > 1e-3 * pmax])
+    s = np.concatenate(loaded + [[-a, a]])
+    mid, half = (s.min() + s.max()) / 2, (s.max() - s.min()) / 2
+    fig, ax = pressure_axes(hertz, "mm,MPa", 3.0)
+    assert ax.get_xlim() == pytest.approx((mid - 3 * half, mid + 3 * half), rel=1e-12, abs=1e-12)
+    assert ax.get_xlabel() == "arc position s - s_c [mm]" and ax.get_ylabel() == "pressure p [MPa]"
+    plt.close(fig)
 
 
 @pytest.mark.parametrize("extra", [["--zoom"], ["--zoom", "2", "--scale", "5"],
                                    ["--zoom", "-0.3,0.3,-0.3,0.3", "--units", "mm,MPa"]])
 def test_field_plot(hertz, tmp_path, extra):
+    """The command writes a PNG; what it colours: every body's nodal von Mises
+    stress from the HDF5 is among the values drawn (the subdivision's
+    vertices include the nodes), one colour scale for all; a window given
+    to --zoom is the axes' limits."""
+    import matplotlib.pyplot as plt
     out = tmp_path / "f.png"
     r = plot(hertz, "--field", *extra, "-o", out)
     assert r.returncode == 0, r.stderr
     assert_png(out)
+    mod = load_module()
+    fig, ax = plt.subplots()
+    window = mod.parse_zoom(extra[1]) if len(extra) > 1 and "," in extra[1] else None
+    with h5py.File(hertz, "r") as f:
+        mod.plot_field(f, 1.0, ax, "", mod.Units(), window)
+        nodal = np.concatenate([g["von_mises"][()] for g in f["bodies"].values()])
+    drawn = np.concatenate([c.get_array() for c in ax.collections if c.get_array() is not None])
+    scale = np.abs(nodal).max()
+    assert np.abs(drawn[None, :] - nodal[:, None]).min(1).max() <= 1e-12 * scale
+    norms = {(c.norm.vmin, c.norm.vmax) for c in ax.collections if c.get_array() is not None}
+    assert len(norms) == 1
+    if window is None:
+        assert norms.pop() == pytest.approx((drawn.min(), drawn.max()))
+    else:
+        assert ax.get_xlim() == window[:2] and ax.get_ylim() == window[2:]
+    plt.close(fig)
 
 
 def test_replaces_existing(hertz, tmp_path):
