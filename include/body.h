@@ -77,14 +77,19 @@ PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
 PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[3]);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
-PetscErrorCode BodyComputeErrorL2(Body, Vec Xl, PetscReal *err, PetscReal *norm);
+/* A body's errors against its exact solution, if any (zero without one), with
+   the exact solution's norms: L2 of u, energy norm, L2 of the stress. */
+typedef struct {
+  PetscReal l2, l2norm, energy, energynorm, stress, stressnorm;
+} BodyErrors;
+PetscErrorCode BodyComputeErrors(Body, Vec Xl, BodyErrors *);
 /* Nodal fields for output (fields.c), from the body's local vector Xl. */
 typedef struct {
   Vec       coords, disp, stress, vm;
   IS        topo;
   PetscInt  nnodes, ncells;
   PetscReal umax, unorm2;
-  PetscReal l2err, l2norm; /* against the body's exact solution, if any */
+  BodyErrors err; /* against the body's exact solution, if any */
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
 PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);

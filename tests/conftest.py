@@ -58,3 +58,17 @@ def contact(tmp_path):
     def _run(args, **kw):
         return run_contact(args, tmp_path, **kw)
     return _run
+
+
+# The mirrored half of the reference scene with mortar at these mesh sizes, run
+# once per session for the tests that read them (test_mortar, test_verification).
+HALF_MORTAR_H = (0.1, 0.06, 0.03, 0.015, 0.005)
+
+
+@pytest.fixture(scope="session")
+def half_mortar_runs(tmp_path_factory):
+    """Each run of HALF_MORTAR_H by h; a run that fails is kept (check=False)
+    and fails the tests that read it, not the others."""
+    tmp = tmp_path_factory.mktemp("half-mortar")
+    return {h: run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation", "mortar",
+                            "-mesh_size", str(h)], tmp, name=f"h{h}", timeout=900, check=False) for h in HALF_MORTAR_H}

@@ -10,7 +10,8 @@ Adding a case needs no code. Case keys:
                   value, rtol and/or atol, reduce (max, min, maxabs) for lists,
                   source (why the value is right)
   [compare_ranks] keys that must agree between the rank counts, rtol
-  [convergence]   option, values, key, min_rate: the observed order of key
+  [convergence]   option, values: one run per value of the option, and
+  [[convergence.rate]] key, min_rate, source: the observed order of key
                   between successive values must be at least min_rate
 """
 import math
@@ -28,7 +29,7 @@ CASES = sorted((Path(__file__).parent / "cases").glob("*.toml"))
 def load(path):
     with open(path, "rb") as f:
         case = tomllib.load(f)
-    for e in case.get("expect", []):
+    for e in case.get("expect", []) + case.get("convergence", {}).get("rate", []):
         assert "source" in e, f"{path.name}: every expectation names its source"
     return case
 
@@ -51,15 +52,16 @@ def test_case(path, tmp_path):
     base = ["-options_file", case["options_file"]] + [str(a) for a in case.get("args", [])]
     results = {}
     if "convergence" in case:
-        conv = case["convergence"]
-        errs = []
-        for v in conv["values"]:
-            r = run_contact(base + [conv["option"], str(v)], tmp_path, name=f"c{v}")
-            errs.append(lookup(r.summary, conv["key"]))
-        rates = [math.log(errs[i] / errs[i + 1]) / math.log(conv["values"][i] / conv["values"][i + 1])
-                 for i in range(len(errs) - 1)]
-        print(f"{conv['key']}: {errs}, observed orders {rates}")
-        assert min(rates) >= conv["min_rate"], f"observed orders {rates} < {conv['min_rate']} ({conv['source']})"
+        conv, h = case["convergence"], case["convergence"]["values"]
+        runs = [run_contact(base + [conv["option"], str(v)], tmp_path, name=f"c{v}").summary for v in h]
+        failed = []
+        for rate in conv["rate"]:
+            errs = [lookup(s, rate["key"]) for s in runs]
+            orders = [math.log(errs[i] / errs[i + 1]) / math.log(h[i] / h[i + 1]) for i in range(len(h) - 1)]
+            print(f"{rate['key']}: {errs}, observed orders {orders}")
+            if min(orders) < rate["min_rate"]:
+                failed.append(f"{rate['key']}: observed orders {orders} < {rate['min_rate']} ({rate['source']})")
+        assert not failed, "\n".join(failed)
         return
     for n in case.get("ranks", [1]):
         r = run_contact(base, tmp_path, ranks=n, name=f"np{n}")

@@ -10,7 +10,7 @@ import sys
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_contact
+from conftest import HALF_MORTAR_H, ROOT, run_contact
 from test_contact import RANK_DEPENDENT, flatten
 
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -18,29 +18,20 @@ import profile_metrics as pm  # noqa: E402
 
 MORTAR = ["-contact_formulation", "mortar"]
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"] + MORTAR
-HS = [0.1, 0.06, 0.03, 0.015]
-HREF = 0.005
-
-
-@pytest.fixture(scope="module")
-def half_runs(tmp_path_factory):
-    """The half reference scene (mirrored: the full scene's contact) at HS and
-    the finer HREF, each run once for the module; a run that fails is kept,
-    and fails the tests that read it (each test names it), not the others."""
-    tmp = tmp_path_factory.mktemp("mortar")
-    return {h: run_contact(HALF + ["-mesh_size", str(h)], tmp, name=f"h{h}", timeout=900, check=False)
-            for h in HS + [HREF]}
+HS, HREF = list(HALF_MORTAR_H[:-1]), HALF_MORTAR_H[-1]   # 0.1, 0.06, 0.03, 0.015 and the finest, 0.005
 
 
 @pytest.fixture
-def half(half_runs):
-    """The runs, each checked as a test reads it."""
+def half(half_mortar_runs):
+    """The half reference scene (mirrored: the full scene's contact) at HS and
+    the finer HREF (conftest.py's session runs), each checked as a test reads
+    it (a failed run fails the tests that read it, each naming it)."""
     class Checked(dict):
         def __getitem__(self, h):
             r = dict.__getitem__(self, h)
             assert r.returncode == 0, f"half scene, mortar, h = {h}: exit {r.returncode}\n{r.stdout[-2000:]}\n{r.stderr[-2000:]}"
             return r
-    return Checked(half_runs)
+    return Checked(half_mortar_runs)
 
 
 def indenter(run):

@@ -3,12 +3,17 @@
 
    affine: u = (p0 + p1 x + p2 y, p3 + p4 x + p5 y). Constant strain, so
            f = -div sigma = 0 and the strain energy is W(eps) times the area:
-           the patch test.
+           the patch test. grad u = [[p1, p2], [p4, p5]].
    trig:   u = A (sin(k x) cos(k y), cos(k x) sin(k y)), params {A, k}.
            div u = 2 A k cos(k x) cos(k y), Laplacian u = -2 k^2 u and
            grad div u = -2 k^2 u, so
            f = -(mu Lap u + (lambda + mu) grad div u) = 2 k^2 (lambda + 2 mu) u:
-           a manufactured solution for convergence studies. */
+           a manufactured solution for convergence studies. Its gradient,
+           du_i/dx_j at [i*2+j] as in elasticity.c:
+             grad u = A k [[ cos kx cos ky, -sin kx sin ky],
+                           [-sin kx sin ky,  cos kx cos ky]],
+           so eps = grad u (symmetric) and the exact stress is
+           sigma(grad u) (the energy-norm and stress errors of body.c). */
 #include "exact.h"
 
 PetscFunctionList ExactSolutionList = NULL;
@@ -17,6 +22,15 @@ static void AffineU(const PetscReal p[], const PetscReal x[], PetscReal u[])
 {
   u[0] = p[0] + p[1] * x[0] + p[2] * x[1];
   u[1] = p[3] + p[4] * x[0] + p[5] * x[1];
+}
+
+static void AffineDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  (void)x;
+  du[0] = p[1];
+  du[1] = p[2];
+  du[2] = p[4];
+  du[3] = p[5];
 }
 
 static void ZeroF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
@@ -33,6 +47,17 @@ static void TrigU(const PetscReal p[], const PetscReal x[], PetscReal u[])
   u[1] = A * PetscCosReal(k * x[0]) * PetscSinReal(k * x[1]);
 }
 
+static void TrigDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  const PetscReal A = p[0], k = p[1];
+  const PetscReal cc = PetscCosReal(k * x[0]) * PetscCosReal(k * x[1]), ss = PetscSinReal(k * x[0]) * PetscSinReal(k * x[1]);
+
+  du[0] = A * k * cc;
+  du[1] = -A * k * ss;
+  du[2] = -A * k * ss;
+  du[3] = A * k * cc;
+}
+
 static void TrigF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
 {
   const PetscReal k = p[1];
@@ -47,8 +72,9 @@ static PetscErrorCode ExactSetAffine(ExactSolution *e)
 {
   PetscFunctionBeginUser;
   PetscCheck(e->nparams == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution affine needs 6 parameters (u0, dux/dx, dux/dy, v0, duy/dx, duy/dy), got %" PetscInt_FMT, e->nparams);
-  e->u = AffineU;
-  e->f = ZeroF;
+  e->u  = AffineU;
+  e->du = AffineDU;
+  e->f  = ZeroF;
   PetscFunctionReturn(0);
 }
 
@@ -56,8 +82,9 @@ static PetscErrorCode ExactSetTrig(ExactSolution *e)
 {
   PetscFunctionBeginUser;
   PetscCheck(e->nparams == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution trig needs 2 parameters (A, k), got %" PetscInt_FMT, e->nparams);
-  e->u = TrigU;
-  e->f = TrigF;
+  e->u  = TrigU;
+  e->du = TrigDU;
+  e->f  = TrigF;
   PetscFunctionReturn(0);
 }
 

@@ -209,7 +209,7 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(ISSetBlockSize(F->topo, nb));
   PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
   F->ncells = b->ncellsGlobal;
-  PetscCall(BodyComputeErrorL2(b, Xl, &F->l2err, &F->l2norm));
+  PetscCall(BodyComputeErrors(b, Xl, &F->err));
   PetscFunctionReturn(0);
 }
 

@@ -624,18 +624,21 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
     fprintf(fp, ",\n  \"bodies\": {");
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       Body            b   = p->bodies[i];
-      const PetscReal err = F[i].l2err, nrm = F[i].l2norm;
+      const BodyErrors *e = &F[i].err;
       fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
       ContactJSONReal(fp, p->bodyEnergy[i]);
       fprintf(fp, ", \"max_displacement\": ");
       ContactJSONReal(fp, F[i].umax);
       fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
       ContactJSONReal(fp, b->h);
-      if (b->hasExact) {
-        fprintf(fp, ", \"exact\": \"%s\", \"l2_error\": ", b->exact.name);
-        ContactJSONReal(fp, err);
-        fprintf(fp, ", \"l2_norm\": ");
-        ContactJSONReal(fp, nrm);
+      if (b->hasExact) { /* each error with the exact solution's norm */
+        const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
+        const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
+        fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
+        for (PetscInt k = 0; k < 6; ++k) {
+          fprintf(fp, ", \"%s\": ", keys[k]);
+          ContactJSONReal(fp, vals[k]);
+        }
       }
       fprintf(fp, "}");
     }

@@ -791,12 +791,13 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   }
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
-    Body      b = p->bodies[i];
-    PetscReal err, nrm;
+    Body       b = p->bodies[i];
+    BodyErrors e;
 
     if (!b->hasExact) continue;
-    PetscCall(BodyComputeErrorL2(b, b->Xl, &err, &nrm)); /* Xl: X, scattered by ProblemEvaluate() */
-    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(nrm > 0 ? err / nrm : err)));
+    PetscCall(BodyComputeErrors(b, b->Xl, &e)); /* Xl: X, scattered by ProblemEvaluate() */
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(e.l2norm > 0 ? e.l2 / e.l2norm : e.l2)));
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative energy-norm error %.6e, relative L2 error of the stress %.6e\n", b->name, (double)(e.energynorm > 0 ? e.energy / e.energynorm : e.energy), (double)(e.stressnorm > 0 ? e.stress / e.stressnorm : e.stress)));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
   if (!p->deferView) PetscCall(ProblemView(p));
