@@ -121,3 +121,23 @@ def test_gpts_refused(tmp_path):
     lines = [l for l in res.stderr.splitlines() if l.strip()]
     assert len(lines) == 1 and "-accuracy" in lines[0] and "gpts" in lines[0] and "does not converge" in lines[0], res.stderr
     assert not res.summary_path.exists() and not res.output_path.exists()
+
+
+@pytest.mark.parametrize("tol", [0.01, 0.005])
+def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
+    """-accuracy TOL on the half scene against an independent run: the uniform
+    h = 0.005 mesh (905,296 dofs, 24 to 40 times the adapted answer's), whose
+    own profile error is about 0.25 % (first order from its 0.49 % distance to
+    h = 0.015). The adapted answer's profile lies within TOL + 0.3 % of it
+    (measured 0.90 % at TOL = 1 % with an estimate of 0.93 %; 0.07 % at 0.5 %,
+    estimate 0.20 %) and its force within TOL / 4 (measured 8.3e-4, 7.1e-5)."""
+    import profile_metrics as pm
+    ref = half_mortar_runs[0.005]
+    assert ref.returncode == 0, ref.stderr[-2000:]
+    res = run_contact(scene_args("hertz-half", tmp_path) + ["-accuracy", tol], tmp_path)
+    d = pm.l2_distance(pm.profiles(res.output_path)[0]["indenter_contact"], pm.profiles(ref.output_path)[0]["indenter_contact"])
+    dP = abs(res.summary["contact_force"] / ref.summary["contact_force"] - 1)
+    print(f"TOL {tol}: {res.summary['dofs']} dofs, estimate {res.summary['error_estimate']:.3g}, "
+          f"profile {d:.3g} and force {dP:.2g} from the uniform h = 0.005")
+    assert d <= tol + 0.003
+    assert dP <= tol / 4

@@ -103,12 +103,10 @@ def test_interrupted_while_meshing(sig, status, tmp_path):
     deadline = time.time() + 60
     while time.time() < deadline and not (mesh_dir.exists() and any(p.suffix == ".log" for p in mesh_dir.iterdir())):
         time.sleep(0.01)
-    time.sleep(0.3)
-    proc.send_signal(sig)
+    proc.send_signal(sig)  # Gmsh runs: its log is there, its mesh at h = 0.006 takes seconds
     rc = proc.wait(timeout=120)
     err = proc.stderr.read()
     assert rc == status, err
     assert err.strip() == "contact: interrupted during meshing; no output written", err
-    time.sleep(0.5)
     assert not [p for p in mesh_dir.iterdir() if p.suffix == ".msh"], list(mesh_dir.iterdir())
     assert not (tmp_path / "out.h5").exists() and not (tmp_path / "out.json").exists()
