@@ -55,7 +55,7 @@ test: bin/contact meshes
 
 # the long extremes (k_p up to 1e12 without continuation, h = 0.01), 500
 # mutated meshes through the mesh reader, and the robustness sweep (h x k_p x
-# push, both formulations, 1 and 2 ranks: 180 runs, about 80 minutes):
+# push, both formulations, 1 and 2 ranks: 180 runs, about 30 minutes):
 # bench/stress/results.json and RESULTS.md, the README's table
 stress: bin/contact meshes
 	$(PYTHON) -m pytest -q -m stress tests

@@ -11,14 +11,18 @@ The scene is the mirrored half of the reference scene
 the dofs, its contact force that of the whole model), at
 h in {0.25, 0.1, 0.03, 0.01, 0.005} x k_p in {1e3, 1e6, 1e10} x push in
 {0.01, 0.15, 0.3}, gpts and mortar, 1 and 2 ranks: 180 runs, one at a time,
-Newton with the program's defaults, `-output none`. About 80 minutes on 2
-cores, most of it at h = 0.005 (about 0.9 million dofs).
+Newton with the program's defaults, `-tao_monitor`, `-output none`. About
+30 minutes on 2 cores, two thirds of it at h = 0.005 (905,296 dofs; the whole
+scene would have 1.8 million, and its slowest case, gpts at k_p = 1e10 and
+push 0.3, took 320 s alone).
 
 It writes <out>/results.json (one record per run: the case, the command line,
 exit status, converged, TAO reason, Newton iterations, energy evaluations,
 solve and wall time, dofs, P, the pair's force and the pushed edge's reaction,
-and for a run that stops the one line it printed; then the agreement of 1 and
-2 ranks on P) after every run, so that an interrupted sweep keeps what it did
+and for a run that stops the one line it printed and the name of the file in
+<out>/stopped/ that keeps its whole output, -tao_monitor's lines and the
+report of its last iterate; then the agreement of 1 and 2 ranks on P) after
+every run, so that an interrupted sweep keeps what it did
 (--resume skips the runs already there), and <out>/RESULTS.md (the compact
 table and every run). scripts/readme_figures.py renders the compact table into
 the README from results.json.
@@ -58,7 +62,11 @@ def key(r):
 
 def args_of(h, kp, push, form):
     return ["-options_file", SCENE, "-mesh_size", f"{h:g}", "-contact_penalty", f"{kp:g}",
-            "-block_bc_push_values", f"{-push:g},0", "-contact_formulation", form]
+            "-block_bc_push_values", f"{-push:g},0", "-contact_formulation", form, "-tao_monitor"]
+
+
+def log_name(r):
+    return f"h{r['h']:g}-kp{power(r['kp'])}-push{r['push']:g}-{r['formulation']}-np{r['ranks']}.log"
 
 
 def why(p):
@@ -72,7 +80,7 @@ def why(p):
     return rest[-1] if rest else f"exit status {p.returncode}, no output"
 
 
-def one(h, kp, push, form, ranks, tmp):
+def one(h, kp, push, form, ranks, tmp, out):
     args = args_of(h, kp, push, form)
     cmd = "bin/contact " + " ".join(args) + " -output none"
     cmd = (f"mpiexec --oversubscribe -n {ranks} " if ranks > 1 else "") + cmd
@@ -98,6 +106,10 @@ def one(h, kp, push, form, ranks, tmp):
         r["converged"] = False
     if not r["converged"]:
         r["message"] = why(p)
+        r["log"] = os.path.join("stopped", log_name(r))
+        os.makedirs(os.path.join(out, "stopped"), exist_ok=True)
+        with open(os.path.join(out, r["log"]), "w") as f:
+            f.write(f"$ {cmd}\n(exit status {p.returncode})\n{p.stdout}{p.stderr}")
     return r
 
 
@@ -119,6 +131,9 @@ def sweep(out, hs, ranks, forms, resume):
     if resume and os.path.exists(path):
         with open(path) as f:
             res = json.load(f)
+    elif os.path.isdir(os.path.join(out, "stopped")):
+        for name in os.listdir(os.path.join(out, "stopped")):
+            os.remove(os.path.join(out, "stopped", name))
     done = {key(r) for r in res["runs"]}
     res.setdefault("started", datetime.datetime.now().isoformat(timespec="seconds"))
     res.setdefault("load_start", os.getloadavg()[0])
@@ -134,7 +149,7 @@ def sweep(out, hs, ranks, forms, resume):
                         for n in ranks:
                             if (h, kp, push, form, n) in done:
                                 continue
-                            r = one(h, kp, push, form, n, tmp)
+                            r = one(h, kp, push, form, n, tmp, out)
                             res["runs"].append(r)
                             print(f"h {h:g} k_p {kp:g} push {push:g} {form} {n} rank(s): " + (
                                 f"{r['reason']} in {r['iterations']} iterations, {r['solve']:.3g} s, P {r['P']:.8g}"
@@ -187,6 +202,24 @@ def row_of(h, kp, push, runs, agree):
             f"| {largest(solve, '.3g')} |")
 
 
+def stopped_cases(failed):
+    """The stopped runs, a case's rank counts together, and the line each
+    printed (once, where all printed the same)."""
+    cases = {}
+    for r in failed:
+        cases.setdefault((r["h"], r["kp"], r["push"], r["formulation"]), []).append(r)
+    lines = sorted({r["message"] for r in failed})
+    text = []
+    for (h, kp, push, form), rs in cases.items():
+        reasons = sorted({r.get("reason", "?") for r in rs})
+        its = " / ".join(str(r.get("iterations", "?")) for r in rs)
+        ranks = " / ".join(str(r["ranks"]) for r in rs)
+        text.append(f"h = {h:g}, k_p = {power(kp)}, push = {push:g}, {form}: {', '.join(reasons)} after {its} "
+                    f"iterations on {ranks} rank{'s' if len(rs) > 1 or rs[0]['ranks'] > 1 else ''}"
+                    + (f" (`{rs[0]['message']}`)" if len(lines) > 1 else ""))
+    return "; ".join(text) + (f"; each printed `{lines[0]}`" if len(lines) == 1 else "")
+
+
 def tables(res):
     """The compact table (one row per h x k_p x push) and the summary lines;
     rendered into the README by scripts/readme_figures.py."""
@@ -211,14 +244,15 @@ def tables(res):
     off = sorted((v, k) for k, v in agree.items() if v > RANK_TOL)
     ranks = (f"1 against 2 ranks: the largest relative difference of P is {largest(list(agree.values()), '.1e')} "
              f"over {len(agree)} pairs")
-    if off:
+    if not agree:
+        ranks = "1 against 2 ranks: no case ran converged on both"
+    elif off:
         ranks += f"; above {RANK_TOL:g}: " + ", ".join(
             f"h = {k[0]:g}, k_p = {power(k[1])}, push = {k[2]:g}, {k[3]} ({v:.1e})" for v, k in off)
     else:
         ranks += f", all within {RANK_TOL:g}"
     balance = largest([r["balance"] for r in runs if "balance" in r], ".1e")
-    stopped = f"Runs that stopped: {len(failed)}" + ("." if not failed else ": " + "; ".join(
-        f"`{r['command']}`: {r['message']}" for r in failed) + ".")
+    stopped = f"Runs that stopped: {len(failed)}" + ("." if not failed else ": " + stopped_cases(failed) + ".")
     out += ["", f"{ranks}. The largest relative difference between the pair's force and the pushed edge's "
             f"reaction: {balance}. {stopped} The sweep's runs took {res.get('sweep_seconds', 0) / 60:.0f} minutes."]
     return "\n".join(out) + "\n"
@@ -226,13 +260,18 @@ def tables(res):
 
 def every_run(res):
     out = ["| h | k_p | push | formulation | ranks | dofs | converged | TAO reason | iterations | energy evaluations "
-           "| solve [s] | wall [s] | P | force vs reaction | stopped with |", "|" + "---|" * 15]
+           "| solve [s] | wall [s] | P | largest penetration | force vs reaction | stopped with |", "|" + "---|" * 16]
     for r in res["runs"]:
         g = lambda k, f: format(r[k], f) if k in r else "-"  # noqa: E731
         out.append(f"| {r['h']:g} | {power(r['kp'])} | {r['push']:g} | {r['formulation']} | {r['ranks']} "
                    f"| {g('dofs', ',')} | {'yes' if r['converged'] else 'no'} | {r.get('reason', '-')} "
                    f"| {g('iterations', 'd')} | {g('function_evaluations', 'd')} | {g('solve', '.3g')} "
-                   f"| {r['wall']:.3g} | {g('P', '.10g')} | {g('balance', '.1e')} | {r.get('message', '')} |")
+                   f"| {r['wall']:.3g} | {g('P', '.10g')} | {g('max_penetration', '.3g')} | {g('balance', '.1e')} "
+                   f"| {r.get('message', '')} |")
+    stopped = [r for r in res["runs"] if "log" in r]
+    if stopped:
+        out += ["", "Each stopped run's output (its -tao_monitor lines and the report of the last iterate): "
+                + ", ".join(f"[{r['log']}]({r['log']})" for r in stopped) + "."]
     return "\n".join(out) + "\n"
 
 
