@@ -227,7 +227,8 @@ def tables(res):
     agree = {(a["h"], a["kp"], a["push"], a["formulation"]): a["rel"] for a in res["rank_agreement"]}
     ok = sum(r["converged"] for r in runs)
     out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), Newton with "
-           f"the defaults, `-output none`, one run at a time (niceness {res['nice']}) on a shared 2-core machine: "
+           f"the defaults, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
+           "2-core machine: "
            f"{ok} of {len(runs)} runs converged. Iterations: Newton iterations at 1 rank (gpts / mortar); "
            "converged: every run of the row at that rank count (both formulations); |dP|/P: the largest relative "
            f"difference of P between 1 and 2 ranks over the two formulations (target {RANK_TOL:g}); solve: the "

@@ -1,14 +1,15 @@
 """A cheap subset of the robustness sweep (scripts/stress_sweep.py, run by
 `make stress`): the mirrored half of the reference scene at the sweep's
-hardest penalty and push (k_p = 1e10, push 0.3) and its softest penalty
-(k_p = 1e3, the bodies 0.1 into each other), at h = 0.25 and 0.1, with both
-formulations, on 1 and 2 ranks (about 10 s in all).
+hardest penalty and push (k_p = 1e10, push 0.3) at h = 0.25 and 0.1, and at
+its softest penalty (k_p = 1e3, push 0.3: the bodies 0.1 into each other) at
+h = 0.1, the finest mesh where that case converges; with both formulations,
+on 1 and 2 ranks (about 10 s in all).
 
 Each run converges, and its answer is checked against what it must satisfy
 whatever the discretisation: the contact pair's force on the indenter equals
 the reaction at the pushed edge (equilibrium of the block, two independent
-sums; measured 1e-13 to 1.3e-8, bound 1e-6), and 1 and 2 ranks give the same
-P (measured 1e-16 to 1.5e-9, bound 1e-8) although at k_p = 1e10 they may take
+sums; measured 1.2e-10 to 1.3e-8, bound 1e-6), and 1 and 2 ranks give the same
+P (measured 0 to 1.5e-9, bound 1e-8) although at k_p = 1e10 they may take
 different Newton paths (62 against 49 iterations for gpts at h = 0.25)."""
 import math
 
