@@ -188,11 +188,12 @@ def largest(xs, fmt):
     return format(max(xs), fmt) if xs else "-"
 
 
-def row_of(h, kp, push, runs, agree):
-    """One line of the compact table: the four runs of a case."""
+def row_of(h, kp, push, runs, agree, dofs):
+    """One line of the compact table: the four runs of a case (dofs: that of
+    the mesh, from any run at h that wrote it)."""
     get = {(r["formulation"], r["ranks"]): r for r in runs}
     its = " / ".join(str(get[(f, 1)].get("iterations", "-")) if (f, 1) in get else "-" for f in FORMULATIONS)
-    dofs = next((format(r["dofs"], ",") for r in runs if "dofs" in r), "-")
+    dofs = format(dofs, ",") if dofs else "-"
     m = get.get(("mortar", 1))
     P = f"{m['P']:.6g}" if m and m["converged"] else "-"
     d = [agree[(h, kp, push, f)] for f in FORMULATIONS if (h, kp, push, f) in agree]
@@ -226,6 +227,7 @@ def tables(res):
     runs = res["runs"]
     agree = {(a["h"], a["kp"], a["push"], a["formulation"]): a["rel"] for a in res["rank_agreement"]}
     ok = sum(r["converged"] for r in runs)
+    dofs = {r["h"]: r["dofs"] for r in runs if "dofs" in r}
     out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), Newton with "
            f"the defaults, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
            "2-core machine: "
@@ -240,7 +242,7 @@ def tables(res):
             for push in PUSHES:
                 case = [r for r in runs if (r["h"], r["kp"], r["push"]) == (h, kp, push)]
                 if case:
-                    out.append(row_of(h, kp, push, case, agree))
+                    out.append(row_of(h, kp, push, case, agree, dofs.get(h)))
     failed = [r for r in runs if not r["converged"]]
     off = sorted((v, k) for k, v in agree.items() if v > RANK_TOL)
     ranks = (f"1 against 2 ranks: the largest relative difference of P is {largest(list(agree.values()), '.1e')} "
