@@ -70,11 +70,14 @@ check-sanitize: bin/contact-sanitize meshes
 	CONTACT_BIN=$(CURDIR)/bin/contact-sanitize ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  $(PYTHON) -m pytest -q -m "not stress" $(wildcard $(SAN_TESTS))
 
-# the long extremes (k_p up to 1e12 without continuation, h = 0.01) and 500
-# mutated meshes through the mesh reader
+# the long extremes (k_p up to 1e12 without continuation, h = 0.01), 500
+# mutated meshes through the mesh reader, and the robustness sweep (h x k_p x
+# push, both formulations, 1 and 2 ranks: 180 runs, about 30 minutes):
+# bench/stress/results.json and RESULTS.md, the README's table
 stress: bin/contact meshes
 	$(PYTHON) -m pytest -q -m stress tests
 	$(PYTHON) tests/fuzz_msh.py --cases 500 --seed 1 --jobs 2
+	$(PYTHON) scripts/stress_sweep.py --out bench/stress
 
 # the speed-accuracy sweep: bench/results.csv, bench/RESULTS.md, PNG plots
 # (the full sweep takes hours; bench-quick covers the main points in minutes)

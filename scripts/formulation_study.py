@@ -32,6 +32,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 import numpy as np
 
@@ -46,16 +47,36 @@ AH = [6, 12, 24, 48]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
+def launch(args, tmp, name, ranks=1, h5=True, binary=None, timeout=None):
+    """Runs bin/contact (or binary) from the repository root, on ranks MPI
+    ranks (mpiexec from 2), with its HDF5 output in tmp (h5=False: -output
+    none) and its JSON summary in tmp; returns (CompletedProcess, summary dict
+    or None where the run wrote none, HDF5 path or None, wall seconds). A run
+    that outlasts timeout seconds is killed (subprocess.TimeoutExpired)."""
+    out = os.path.join(tmp, name + ".h5") if h5 else "none"
+    js = os.path.join(tmp, name + ".json")
+    if os.path.exists(js):
+        os.remove(js)
+    cmd = [binary or os.path.join(ROOT, "bin", "contact")] + args + ["-output", out, "-summary", js]
+    if ranks > 1:
+        cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=timeout)
+    wall = time.perf_counter() - t0
+    summ = None
+    if os.path.exists(js):
+        with open(js) as f:
+            summ = json.load(f)
+    return p, summ, (out if h5 else None), wall
+
+
 def run(args, tmp, name, ok=(0,), binary=None):
     """Runs bin/contact (or binary); returns (summary dict, HDF5 path). An
     exit status not in ok stops the script."""
-    h5, js = os.path.join(tmp, name + ".h5"), os.path.join(tmp, name + ".json")
-    cmd = [binary or os.path.join(ROOT, "bin", "contact")] + args + ["-output", h5, "-summary", js]
-    p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
+    p, summ, h5, _ = launch(args, tmp, name, binary=binary)
     if p.returncode not in ok:
-        raise SystemExit(f"{' '.join(cmd)} failed:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
-    with open(js) as f:
-        return json.load(f), h5
+        raise SystemExit(f"{' '.join(p.args)} failed:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    return summ, h5
 
 
 def slave_profiles(h5):

@@ -17,6 +17,7 @@ that a table can neither be typed by hand nor go stale. The tables:
 - speed: bench/full/results.csv (scripts/bench.py --out bench/full);
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
+- stress: bench/stress/results.json (scripts/stress_sweep.py, run by make stress);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -158,8 +159,14 @@ def render_formulations():
     return formulation_study.tables(load("formulations"))
 
 
+def render_stress():
+    import stress_sweep
+    return stress_sweep.tables(load("stress"))
+
+
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
-          "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation}
+          "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
+          "stress": render_stress}
 
 
 def blocks(text):
