@@ -29,8 +29,7 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
     P = {}
     for n in (1, 2):
         r = run_contact(args, tmp_path, ranks=n, name=f"np{n}")
-        s = r.summary
-        assert s["converged"] and s["tao_reason"].startswith("CONVERGED"), (n, s["tao_reason"], r.stdout[-2000:])
+        s = r.summary  # exit 0: converged (run_contact checks it; an unconverged solve exits 2)
         assert all(math.isfinite(x) for x in (s["contact_force"], s["energy"], s["gradient_norm"]))
         f = s["contact"]["interface"]["force"][0]
         reaction = s["reactions"]["block:push"][0]
