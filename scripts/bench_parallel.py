@@ -20,7 +20,12 @@ iterations with the factorisations) and of the whole process's wall time
 Writes <out>/results.csv (one row per run) and <out>/RESULTS.md (machine,
 load, the speed-up table against the targets, the time per phase and per
 event, max over ranks). The machine is shared: the load average before each
-run is recorded beside it.
+run is recorded beside it, and so is the CPU time other processes took during
+it (/proc/stat's busy time less this script's children's); a run during which
+they took more than --foreign-max of a core is run again (--retries), since
+a 2-rank run that shares a core with another job loses far more than a 1-rank
+run does (each barrier waits for the slower rank), which would bias the
+speed-up against 2 ranks.
 """
 import argparse
 import csv
@@ -74,6 +79,22 @@ def wait_quiet(limit):
             break
         time.sleep(0.5)
     return time.time() - t0
+
+
+def busy_seconds():
+    """CPU time spent by every process of the machine so far (user, nice,
+    system, interrupts; /proc/stat), seconds."""
+    with open("/proc/stat") as fh:
+        f = [int(x) for x in fh.readline().split()[1:8]]
+    return (f[0] + f[1] + f[2] + f[5] + f[6]) / float(os.sysconf("SC_CLK_TCK"))
+
+
+def children_seconds():
+    """CPU time of this script's finished child processes (and theirs: mpiexec
+    waits for its ranks), seconds."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def load_average():
@@ -135,13 +156,21 @@ def run(args, binary, h, name, rep, tmp):
     if ranks > 1:
         cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    waited = wait_quiet(args.quiet_wait)
-    load = load_average()
-    t = time.perf_counter()
-    p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=args.timeout)
-    wall = time.perf_counter() - t
+    for attempt in range(1, args.retries + 2):
+        waited = wait_quiet(args.quiet_wait)
+        load = load_average()
+        busy, ours = busy_seconds(), children_seconds()
+        t = time.perf_counter()
+        p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=args.timeout)
+        wall = time.perf_counter() - t
+        # CPU time that other processes took during the run, as a fraction of one core
+        foreign = max(0.0, (busy_seconds() - busy) - (children_seconds() - ours)) / wall
+        if p.returncode or foreign <= args.foreign_max or attempt > args.retries:
+            break
+        print("h %-6s %-16s repeat %d: other processes took %.0f %% of a core during the run (%.2f s); again"
+              % (h, name, rep, 100 * foreign, wall), flush=True)
     row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": load, "waited": waited, "wall": wall,
-           "rc": p.returncode}
+           "rc": p.returncode, "foreign": foreign, "attempts": attempt}
     if p.returncode == 0 and os.path.exists(js):
         import json
         with open(js) as fh:
@@ -192,10 +221,14 @@ def report(args, rows, info, elapsed):
     L.append("Reference scene, contact formulation %s (%s), default solver, k_p = 2e6, `-tao_gttol 1e-8`, "
              "`-output none`; configurations interleaved, %d repeats, medians. Speed-up: median over 1 rank "
              "divided by median over 2 ranks. Each run started once no other process was running (waiting at "
-             "most %g s; median wait %.1f s).\n"
+             "most %g s; median wait %.1f s); a run during which other processes took more than %.0f %% of a core "
+             "was run again, at most %d times (%d of %d runs were; the last try is kept, and other processes took a "
+             "median %.1f %%, at most %.0f %% of a core during the kept runs).\n"
              % (", ".join(forms) or "?", "`-contact_formulation %s`" % args.formulation if args.formulation
                 else "the program's default", args.repeat, args.quiet_wait,
-                statistics.median(r["waited"] for r in rows)))
+                statistics.median(r["waited"] for r in rows), 100 * args.foreign_max, args.retries,
+                sum(r["attempts"] > 1 for r in rows), len(rows), 100 * statistics.median(r["foreign"] for r in rows),
+                100 * max(r["foreign"] for r in rows)))
     pairs = []  # (h, its 1-rank runs, its 2-rank runs), where it has both
     for h in sizes:
         one = [r for r in rows if r["h"] == h and r["config"] == "1"]
@@ -259,6 +292,10 @@ def main():
     ap.add_argument("--timeout", type=float, default=1200)
     ap.add_argument("--keep-logs", action="store_true", help="copy the first repeat's -log_view of each "
                     "configuration and size into --out")
+    ap.add_argument("--foreign-max", type=float, default=0.1, help="a run during which other processes took more "
+                    "than this fraction of a core is run again (a 2-rank run that shares a core waits at every "
+                    "barrier for its slower rank; a 1-rank run hardly notices)")
+    ap.add_argument("--retries", type=int, default=3, help="runs again at most this many times (the last one is kept)")
     ap.add_argument("--quiet-wait", type=float, default=60, help="before each run, wait up to this many seconds "
                     "for no other process to be running (the machine is shared; 0: start at once)")
     args = ap.parse_args()
