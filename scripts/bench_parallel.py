@@ -205,6 +205,54 @@ def med(rows, key):
     return statistics.median(v) if v else float("nan")
 
 
+def rank_pairs(rows):
+    """[(h, its 1-rank runs, its 2-rank runs)] for each h that has both, largest h first."""
+    pairs = []
+    for h in sorted({r["h"] for r in rows}, reverse=True):
+        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
+        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
+        if one and two:
+            pairs.append((h, one, two))
+    return pairs
+
+
+def speedup_table(pairs):
+    """The Markdown lines of the speed-up table (RESULTS.md and the README's
+    generated copy, scripts/readme_figures.py): medians, each run's solve
+    time, the targets and their verdicts."""
+    def verdict(ratio, target):
+        return ((">= %.1f" % target), "MET" if ratio >= target else "NOT MET") if target else ("", "")
+    L = ["| h | dofs | iterations (evaluations) | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) "
+         "| target | | wall 1 rank [s] | wall 2 ranks [s] | speed-up (wall) | target | |",
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for h, one, two in pairs:
+        s1, s2, w1, w2 = med(one, "time_solve"), med(two, "time_solve"), med(one, "wall"), med(two, "wall")
+        runs1 = ", ".join("%.2f" % r["time_solve"] for r in one if isinstance(r.get("time_solve"), float))
+        runs2 = ", ".join("%.2f" % r["time_solve"] for r in two if isinstance(r.get("time_solve"), float))
+        L.append("| %s | %s | %s (%s) | %.2f (%s) | %.2f (%s) | **%.2f** | %s | %s | %.2f | %.2f | **%.2f** | %s | %s |"
+                 % ((h, "{:,}".format(int(one[0].get("dofs", 0))), one[0].get("iterations", "?"),
+                     one[0].get("evaluations", "?"), s1, runs1, s2, runs2, s1 / s2) + verdict(s1 / s2, TARGETS.get(h))
+                    + (w1, w2, w1 / w2) + verdict(w1 / w2, WALL_TARGETS.get(h))))
+    return L
+
+
+def load_rows(path):
+    """The rows of a results.csv, numbers as numbers."""
+    rows = []
+    with open(path) as fh:
+        for r in csv.DictReader(fh):
+            for k, v in r.items():
+                if k in ("config", "formulation"):
+                    continue
+                try:
+                    r[k] = int(v) if k in ("ranks", "repeat", "rc", "dofs", "iterations", "evaluations",
+                                            "attempts") else float(v)
+                except (TypeError, ValueError):
+                    pass
+            rows.append(r)
+    return rows
+
+
 def report(args, rows, info, elapsed):
     sizes = sorted({r["h"] for r in rows}, reverse=True)
     names = [c for c in args.configs]
@@ -229,26 +277,8 @@ def report(args, rows, info, elapsed):
                 statistics.median(r["waited"] for r in rows), 100 * args.foreign_max, args.retries,
                 sum(r["attempts"] > 1 for r in rows), len(rows), 100 * statistics.median(r["foreign"] for r in rows),
                 100 * max(r["foreign"] for r in rows)))
-    pairs = []  # (h, its 1-rank runs, its 2-rank runs), where it has both
-    for h in sizes:
-        one = [r for r in rows if r["h"] == h and r["config"] == "1"]
-        two = [r for r in rows if r["h"] == h and r["config"] == "2"]
-        if one and two:
-            pairs.append((h, one, two))
-    L.append("| h | dofs | iterations (evaluations) | solve 1 rank [s] | solve 2 ranks [s] | speed-up (solve) "
-             "| target | | wall 1 rank [s] | wall 2 ranks [s] | speed-up (wall) | target | |")
-    L.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-
-    def verdict(ratio, target):
-        return ((">= %.1f" % target), "MET" if ratio >= target else "NOT MET") if target else ("", "")
-    for h, one, two in pairs:
-        s1, s2, w1, w2 = med(one, "time_solve"), med(two, "time_solve"), med(one, "wall"), med(two, "wall")
-        runs1 = ", ".join("%.2f" % r["time_solve"] for r in one if "time_solve" in r)
-        runs2 = ", ".join("%.2f" % r["time_solve"] for r in two if "time_solve" in r)
-        L.append("| %s | %s | %s (%s) | %.2f (%s) | %.2f (%s) | **%.2f** | %s | %s | %.2f | %.2f | **%.2f** | %s | %s |"
-                 % ((h, "{:,}".format(one[0].get("dofs", 0)), one[0].get("iterations", "?"),
-                     one[0].get("evaluations", "?"), s1, runs1, s2, runs2, s1 / s2) + verdict(s1 / s2, TARGETS.get(h))
-                    + (w1, w2, w1 / w2) + verdict(w1 / w2, WALL_TARGETS.get(h))))
+    pairs = rank_pairs(rows)
+    L += speedup_table(pairs)
     L.append("")
     L.append("Median time per -log_view stage (average over ranks), seconds, and its speed-up:\n")
     L.append("| h | stage | 1 rank | 2 ranks | speed-up |")

@@ -15,6 +15,8 @@ that a table can neither be typed by hand nor go stale. The tables:
   with each formulation, Newton with a direct factorisation, a few seconds);
 - formulations: bench/formulations/results.json (scripts/formulation_study.py);
 - speed: bench/full/results.csv (scripts/bench.py --out bench/full);
+- parallel: bench/parallel/results.csv (scripts/bench_parallel.py: 1 against
+  2 ranks, the same table as its RESULTS.md);
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
 - solver: bench/solver/results.json (written by --measure solver: the solver
@@ -140,6 +142,14 @@ def render_speed():
     return "\n".join(out) + "\n"
 
 
+def render_parallel():
+    import bench_parallel
+    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
+    forms = sorted({r["formulation"] for r in rows if r.get("formulation")}) or ["gpts"]
+    return ("Contact formulation: %s.\n\n" % ", ".join(forms)
+            + "\n".join(bench_parallel.speedup_table(bench_parallel.rank_pairs(rows))) + "\n")
+
+
 def render_accuracy():
     import accuracy_study
     return accuracy_study.tables(load("accuracy"))
@@ -157,7 +167,8 @@ def render_formulations():
 
 
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
-          "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation}
+          "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
+          "parallel": render_parallel}
 
 
 def blocks(text):
