@@ -446,11 +446,45 @@ static inline PetscErrorCode SparseAdd(PetscInt i, PetscReal v, PetscInt *n, Pet
   PetscFunctionReturn(0);
 }
 
+/* G_j = int_S' W_j dg dS of node j of slave side s, a sparse vector (n, idx,
+   val), from the points of the last update on this rank's edges; those of an
+   edge of another rank (at an end of this rank's run) are computed again, in
+   the work array *pts. */
+static PetscErrorCode MortarNodeGradient(Mortar *m, PetscInt s, PetscInt j, PetscInt nmax, PetscInt *n, PetscInt idx[], PetscReal val[], PetscInt *npmax, MortarPoint **pts)
+{
+  const ContactSurface *S = &m->b.S[s], *M = &m->b.S[1 - s];
+  const MortarSide     *D = &m->side[s];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
+    const PetscInt     e  = D->nodeEdge[k];
+    const MortarPoint *P0 = D->pbeg[e] >= 0 ? &D->pts[D->pbeg[e]] : NULL;
+    PetscInt           n0 = D->pbeg[e] >= 0 ? D->pend[e] - D->pbeg[e] : 0;
+    if (!P0) {
+      PetscCall(MortarEdgePoints(m, s, e, &n0, npmax, pts, NULL));
+      P0 = *pts;
+    }
+    for (PetscInt q = 0; q < n0; ++q) {
+      const MortarPoint *P  = &P0[q];
+      const PetscInt    *sn = &S->enodes[3 * P->se];
+      PetscInt           gi[20], i0 = -1;
+      PetscReal          dg[20];
+      for (PetscInt i = 0; i < 3; ++i)
+        if (sn[i] == j) i0 = i;
+      if (P->G.me < 0 || i0 < 0) continue;
+      ContactGapIndices(S, sn, M, &P->G, gi);
+      ContactGapFirst(&P->G, P->N, dg);
+      for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(gi[l], P->wt * P->W[i0] * dg[l], n, nmax, idx, val));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
 {
   Mortar        *m = (Mortar *)t->data;
   const PetscInt nmax = 512;
-  PetscInt      *gidx, np = 0, npmax = 0;
+  PetscInt      *gidx, npmax = 0;
   PetscReal     *gval;
   PetscScalar   *K;
   MortarPoint   *pts = NULL;
@@ -510,39 +544,12 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
       }
       PetscCall(MatSetValues(H, n, gidx, n, gidx, K, ADD_VALUES));
     }
-    /* (c k_p A_j / C_j^2) G_j G_j^T for the active nodes this rank owns,
-       from the points of the update on this rank's edges; those of an edge
-       of another rank (at the end of this rank's run) computed again */
+    /* (c k_p A_j / C_j^2) G_j G_j^T for the active nodes this rank owns */
     for (PetscInt j = 0; j < S->nn; ++j) {
       PetscInt  n = 0;
       PetscReal c;
       if (!D->mine[j] || D->gj[j] >= 0) continue;
-      for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
-        const PetscInt     e = D->nodeEdge[k];
-        const MortarPoint *P0;
-        PetscInt           n0;
-        if (D->pbeg[e] >= 0) {
-          P0 = &D->pts[D->pbeg[e]];
-          n0 = D->pend[e] - D->pbeg[e];
-        } else {
-          np = 0;
-          PetscCall(MortarEdgePoints(m, s, e, &np, &npmax, &pts, NULL));
-          P0 = pts;
-          n0 = np;
-        }
-        for (PetscInt q = 0; q < n0; ++q) {
-          const MortarPoint *P  = &P0[q];
-          const PetscInt    *sn = &S->enodes[3 * P->se];
-          PetscInt           idx[20], i0 = -1;
-          PetscReal          dg[20];
-          for (PetscInt i = 0; i < 3; ++i)
-            if (sn[i] == j) i0 = i;
-          if (P->G.me < 0 || i0 < 0) continue;
-          ContactGapIndices(S, sn, M, &P->G, idx);
-          ContactGapFirst(&P->G, P->N, dg);
-          for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(idx[l], P->wt * P->W[i0] * dg[l], &n, nmax, gidx, gval));
-        }
-      }
+      PetscCall(MortarNodeGradient(m, s, j, nmax, &n, gidx, gval, &npmax, &pts));
       c = m->c * m->b.kp * D->A[j] / (D->cover[j] * D->cover[j]);
       for (PetscInt a = 0; a < n; ++a)
         for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
