@@ -322,7 +322,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=1200)
     ap.add_argument("--keep-logs", action="store_true", help="copy the first repeat's -log_view of each "
                     "configuration and size into --out")
-    ap.add_argument("--foreign-max", type=float, default=0.1, help="a run during which other processes took more "
+    ap.add_argument("--foreign-max", type=float, default=0.05, help="a run during which other processes took more "
                     "than this fraction of a core is run again (a 2-rank run that shares a core waits at every "
                     "barrier for its slower rank; a 1-rank run hardly notices)")
     ap.add_argument("--retries", type=int, default=3, help="runs again at most this many times (the last one is kept)")
