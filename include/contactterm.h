@@ -14,6 +14,7 @@ typedef struct {
   ContactSearch   search[2];   /* over S[s] as master */
   PetscReal       kp;          /* penalty in use (continuation) */
   PetscBool       exactHessian; /* add the second-order terms to the Hessian */
+  PetscBool       built;       /* the searches have been built (at the surfaces' current coordinates) */
   ContactReport   report;
 } ContactTerm;
 
@@ -21,8 +22,10 @@ typedef struct {
 PetscErrorCode ContactTermInitialize(ContactTerm *, const ContactPairSpec *, EnergyTerm t);
 /* Collective: both surfaces (blend: the formulation's default where the scene sets none) and their searches. */
 PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *, Body[], PetscReal defaultBlend);
-/* Collective: the surfaces' current coordinates, the search grids rebuilt (in the log event given). */
-PetscErrorCode ContactTermUpdate(ContactTerm *, Body[], PetscLogEvent search);
+/* Collective: the surfaces' current coordinates, the searches rebuilt (in the
+   log event given) if these changed; changed (or NULL): whether they did, or
+   this is the first update. */
+PetscErrorCode ContactTermUpdate(ContactTerm *, Body[], PetscLogEvent search, PetscBool *changed);
 /* Starts a new report: the penalty, the surfaces' edge counts and which act as slave. */
 PetscErrorCode ContactTermReportBegin(ContactTerm *, const PetscBool slave[2]);
 PetscErrorCode ContactTermDestroy(ContactTerm *);

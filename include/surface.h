@@ -15,6 +15,7 @@ typedef struct {
   PetscInt  *enodes;      /* [ne][3]: nodes at eta = -1, +1, 0 */
   PetscReal *esign;       /* [ne] +-1 so that (t_y, -t_x) * esign is outward */
   PetscReal *s0, *edir, *elen; /* arc position of the walk entering the edge, direction, length */
+  PetscInt  *walk;        /* [ne] the edges in the order of the walk */
   PetscInt  *nodeId;      /* [nn] global node number, sorted */
   PetscReal *X, *x, *g;   /* [nn][2] reference, current coordinates, gradient */
   PetscInt  *big;         /* [nn][2] index in the joined vector, -1 if constrained */
@@ -30,8 +31,12 @@ typedef struct {
    the nodes, walks the arc and sets up the master blend of width blend (in eta). */
 PetscErrorCode ContactSurfaceSetUp(ContactSurface *, Body, const char pair[], PetscReal blend);
 PetscErrorCode ContactSurfaceDestroy(ContactSurface *);
-/* Collective: x = X + u of every node, from the body's local vector Xl. */
-PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body);
+/* Collective: x = X + u of every node, from the body's local vector Xl;
+   changed: whether x differs from the last (the same answer on every rank). */
+PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body, PetscBool *changed);
+/* The rank owner[e] of each edge when they are shared out among size ranks in
+   runs of the walk of nearly equal weight (weight NULL: one each). */
+void           ContactSurfaceSplitEdges(const ContactSurface *, PetscMPIInt size, const PetscReal weight[], PetscMPIInt owner[]);
 /* Collective: sums g over ranks and adds it to the body's local gradient Gl. */
 PetscErrorCode ContactSurfaceAddGradient(ContactSurface *, Body);
 /* Arc position (reference length) of edge e at parameter xi. */

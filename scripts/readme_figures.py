@@ -15,6 +15,9 @@ that a table can neither be typed by hand nor go stale. The tables:
   with each formulation, Newton with a direct factorisation, a few seconds);
 - formulations: bench/formulations/results.json (scripts/formulation_study.py);
 - speed: bench/full/results.csv (scripts/bench.py --out bench/full);
+- parallel: bench/parallel/results.csv (scripts/bench_parallel.py: 1 against
+  2 ranks, the same table as its RESULTS.md); parallel-stages: the same runs'
+  median -log_view stages from h = 0.015 down;
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
 - stress: bench/stress/results.json (scripts/stress_sweep.py, run by make stress);
@@ -143,6 +146,32 @@ def render_speed():
     return "\n".join(out) + "\n"
 
 
+def render_parallel():
+    import bench_parallel
+    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
+    forms = sorted({r["formulation"] for r in rows if r.get("formulation")}) or ["gpts"]
+    return ("Contact formulation: %s.\n\n" % ", ".join(forms)
+            + "\n".join(bench_parallel.speedup_table(bench_parallel.rank_pairs(rows))) + "\n")
+
+
+def render_parallel_stages():
+    import bench_parallel
+    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
+    pairs = [p for p in bench_parallel.rank_pairs(rows) if p[0] <= 0.015]
+    head, rule = "| stage |", "|---|"
+    for h, _, _ in pairs:
+        head += f" h = {h:g}, 1 rank [s] | 2 ranks [s] | speed-up |"
+        rule += "---|---|---|"
+    out = [head, rule]
+    for st in bench_parallel.STAGES:
+        line = f"| {st} |"
+        for _, one, two in pairs:
+            a, b = bench_parallel.med(one, "stage_" + st), bench_parallel.med(two, "stage_" + st)
+            line += f" {a:.3g} | {b:.3g} | {a / b:.2f} |"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
 def render_accuracy():
     import accuracy_study
     return accuracy_study.tables(load("accuracy"))
@@ -166,7 +195,7 @@ def render_stress():
 
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
-          "stress": render_stress}
+          "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages}
 
 
 def blocks(text):

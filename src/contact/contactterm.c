@@ -15,13 +15,29 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactTermUpdate(ContactTerm *b, Body bodies[], PetscLogEvent search)
+/* The trees depend on the current coordinates alone: they are rebuilt only
+   where these have changed since the last update (a Hessian at the point of
+   the last energy evaluation, the report at the solution). The ranks agree on
+   the change (their x are the same to the bit), and a logical or makes sure. */
+PetscErrorCode ContactTermUpdate(ContactTerm *b, Body bodies[], PetscLogEvent search, PetscBool *changed)
 {
+  PetscBool moved = PETSC_FALSE;
+
   PetscFunctionBeginUser;
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceUpdateCoordinates(&b->S[s], bodies[b->S[s].body]));
-  PetscCall(PetscLogEventBegin(search, 0, 0, 0, 0));
-  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(b->search[s]));
-  PetscCall(PetscLogEventEnd(search, 0, 0, 0, 0));
+  for (PetscInt s = 0; s < 2; ++s) {
+    PetscBool c;
+    PetscCall(ContactSurfaceUpdateCoordinates(&b->S[s], bodies[b->S[s].body], &c));
+    moved = (PetscBool)(moved || c);
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &moved, 1, MPIU_BOOL, MPI_LOR, bodies[b->S[0].body]->comm));
+  moved = (PetscBool)(moved || !b->built);
+  if (moved) {
+    PetscCall(PetscLogEventBegin(search, 0, 0, 0, 0));
+    for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSearchBuild(b->search[s]));
+    PetscCall(PetscLogEventEnd(search, 0, 0, 0, 0));
+    b->built = PETSC_TRUE;
+  }
+  if (changed) *changed = moved;
   PetscFunctionReturn(0);
 }
 

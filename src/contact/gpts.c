@@ -161,7 +161,7 @@ static PetscErrorCode GPTSEnergyGradient(EnergyTerm t, Body bodies[], PetscReal 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_EnergyGrad, 0, 0, 0, 0));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscArrayzero(cp->b.S[s].g, 2 * cp->b.S[s].nn));
-  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search, NULL));
   GPTSSlaveEnergyGradient(cp, 0, 0.5, &e);
   GPTSSlaveEnergyGradient(cp, 1, 0.5, &e);
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&cp->b.S[s], bodies[cp->b.S[s].body]));
@@ -176,7 +176,7 @@ static PetscErrorCode GPTSHessian(EnergyTerm t, Body bodies[], Mat H)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_Hessian, 0, 0, 0, 0));
-  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search, NULL));
   PetscCall(GPTSSlaveHessian(cp, 0, 0.5, H));
   PetscCall(GPTSSlaveHessian(cp, 1, 0.5, H));
   PetscCall(PetscLogEventEnd(GPTS_Hessian, 0, 0, 0, 0));
@@ -191,7 +191,7 @@ static PetscErrorCode GPTSPostProcess(EnergyTerm t, Body bodies[])
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(GPTS_Report, 0, 0, 0, 0));
-  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search));
+  PetscCall(ContactTermUpdate(&cp->b, bodies, GPTS_Search, NULL));
   for (PetscInt s = 0; s < 2; ++s) {
     PetscCall(PetscMalloc1(CONTACT_ROW_COLS * cp->npts[s] + 1, &rows[s]));
     L[s] = ContactSurfaceLength(&cp->b.S[s]);

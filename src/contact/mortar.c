@@ -47,7 +47,13 @@
    dc = -(dg_a - dg_b) du / d(g_a - g_b)/dxi (g_a = g_b at c). The second part is pointwise (gap.c's d2g, added
    with -contact_hessian exact or auto); the first couples every dof under the
    support of N_j, so it is assembled node by node, over the node's slave
-   edges, by the rank that owns the node (the lowest-numbered edge on it).
+   edges, by the rank that owns the node (the rank of its first edge along
+   the walk). Parallel: the surfaces are whole on every rank, so the slave
+   edges are shared out among the ranks in runs of the walk of nearly equal
+   cost, an active node costing more (MortarShareEdges), not by the cells'
+   partition; a rank builds the blocks of its nodes from the points of the
+   last update (of the state where the Hessian is asked: an update at
+   unchanged coordinates does nothing).
 
    Nodal forces and the master's pressure. The pair's contact force on node j
    of either surface is F_j = -dE/du_j, the gradient above: on a slave node
@@ -134,6 +140,10 @@ typedef struct {
   PetscReal *gw, *gj;      /* [nn] int N_j g dS (summed over ranks), g_j */
   PetscReal *s;            /* [nn] arc position of the node */
   PetscBool *mine;         /* [nn] node owned by this rank: its energy, Hessian block and report row */
+  PetscInt  *first;        /* [nn] the node's first edge along the walk: the node goes with it */
+  PetscMPIInt *owner;      /* [ne] the rank that integrates the edge as slave */
+  PetscReal *weight;       /* [ne] its expected cost, to share the edges out */
+  PetscInt  *pbeg, *pend;  /* [ne] the points of an edge of this rank: pts[pbeg, pend) (pbeg -1: another rank's) */
   PetscInt  *nodeEdgeStart, *nodeEdge; /* edges on each node */
   PetscReal *dual;         /* [ne][3][3] coefficients of the dual weights on each edge */
   PetscInt   np, npmax;    /* points of this rank's edges at the current state */
@@ -150,6 +160,8 @@ typedef struct {
   MortarBasis basis;
   PetscBool   slave[2];    /* the surfaces that act as slave */
   PetscReal   c;           /* weight of each one-sided energy: 1 / the number of slaves */
+  PetscBool   ready;       /* the points and weighted gaps are those of the surfaces' current coordinates */
+  PetscMPIInt rank, size;
 } Mortar;
 
 static PetscLogEvent MORTAR_EnergyGrad, MORTAR_Search, MORTAR_Segments, MORTAR_Hessian, MORTAR_Report;
@@ -296,20 +308,54 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
   PetscFunctionReturn(0);
 }
 
+/* Which rank integrates each edge of side s, and so owns each node (the
+   rank of its first edge along the walk): runs of the walk of nearly equal
+   cost (surface.c), whatever the mesh partition. An edge costs one (its
+   segments, at every evaluation) and MORTAR_NODE_COST for each active node
+   that goes with it (its block of the Hessian, the heaviest part of a Newton
+   step's contact work), the active set that of the last update. Every rank
+   shares out alike (g_j is the same on every rank), and only the sums' order
+   depends on it. */
+#define MORTAR_NODE_COST 2.0
+static void MortarShareEdges(Mortar *m, PetscInt s)
+{
+  const ContactSurface *S = &m->b.S[s];
+  MortarSide           *D = &m->side[s];
+
+  for (PetscInt e = 0; e < S->ne; ++e) D->weight[e] = 1.0;
+  for (PetscInt j = 0; j < S->nn && m->slave[s]; ++j)
+    if (D->gj[j] < 0) D->weight[D->first[j]] += MORTAR_NODE_COST;
+  ContactSurfaceSplitEdges(S, m->size, D->weight, D->owner);
+  for (PetscInt j = 0; j < S->nn; ++j) D->mine[j] = (PetscBool)(D->owner[D->first[j]] == m->rank);
+}
+
 /* The current coordinates of both surfaces, their search grids, and for each
-   side the points of this rank's slave edges and the weighted gaps g_j. */
+   side the points of this rank's slave edges and the weighted gaps g_j;
+   nothing but the coordinates where they have not changed since the last
+   update (a Hessian at the point of the last energy evaluation). */
 static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
 {
+  PetscBool changed;
+
   PetscFunctionBeginUser;
-  PetscCall(ContactTermUpdate(&m->b, bodies, MORTAR_Search));
+  PetscCall(ContactTermUpdate(&m->b, bodies, MORTAR_Search, &changed));
+  if (m->ready && !changed) PetscFunctionReturn(0);
   PetscCall(PetscLogEventBegin(MORTAR_Segments, 0, 0, 0, 0));
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &m->b.S[s];
     MortarSide     *D = &m->side[s];
     D->np             = 0;
     D->ncross         = 0;
+    MortarShareEdges(m, s);
     if (!m->slave[s]) continue;
-    for (PetscInt k = 0; k < S->nown; ++k) PetscCall(MortarEdgePoints(m, s, S->ownEdges[k], &D->np, &D->npmax, &D->pts, D));
+    for (PetscInt k = 0; k < S->ne; ++k) {
+      const PetscInt e = S->walk[k];
+      D->pbeg[e]       = -1;
+      if (D->owner[e] != m->rank) continue;
+      D->pbeg[e] = D->np;
+      PetscCall(MortarEdgePoints(m, s, e, &D->np, &D->npmax, &D->pts, D));
+      D->pend[e] = D->np;
+    }
     PetscCall(PetscArrayzero(D->gw, 2 * S->nn)); /* gw and cover, adjacent: one reduction */
     for (PetscInt k = 0; k < D->np; ++k) {
       const MortarPoint *P  = &D->pts[k];
@@ -323,6 +369,7 @@ static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, D->gw, 2 * S->nn, MPIU_REAL, MPIU_SUM, comm));
     for (PetscInt j = 0; j < S->nn; ++j) D->gj[j] = D->cover[j] > 0.5 * D->A[j] ? D->gw[j] / D->cover[j] : PETSC_INFINITY;
   }
+  m->ready = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(MORTAR_Segments, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -399,11 +446,45 @@ static inline PetscErrorCode SparseAdd(PetscInt i, PetscReal v, PetscInt *n, Pet
   PetscFunctionReturn(0);
 }
 
+/* G_j = int_S' W_j dg dS of node j of slave side s, a sparse vector (n, idx,
+   val), from the points of the last update on this rank's edges; those of an
+   edge of another rank (at an end of this rank's run) are computed again, in
+   the work array *pts. */
+static PetscErrorCode MortarNodeGradient(Mortar *m, PetscInt s, PetscInt j, PetscInt nmax, PetscInt *n, PetscInt idx[], PetscReal val[], PetscInt *npmax, MortarPoint **pts)
+{
+  const ContactSurface *S = &m->b.S[s], *M = &m->b.S[1 - s];
+  const MortarSide     *D = &m->side[s];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
+    const PetscInt     e  = D->nodeEdge[k];
+    const MortarPoint *P0 = D->pbeg[e] >= 0 ? &D->pts[D->pbeg[e]] : NULL;
+    PetscInt           n0 = D->pbeg[e] >= 0 ? D->pend[e] - D->pbeg[e] : 0;
+    if (!P0) {
+      PetscCall(MortarEdgePoints(m, s, e, &n0, npmax, pts, NULL));
+      P0 = *pts;
+    }
+    for (PetscInt q = 0; q < n0; ++q) {
+      const MortarPoint *P  = &P0[q];
+      const PetscInt    *sn = &S->enodes[3 * P->se];
+      PetscInt           gi[20], i0 = -1;
+      PetscReal          dg[20];
+      for (PetscInt i = 0; i < 3; ++i)
+        if (sn[i] == j) i0 = i;
+      if (P->G.me < 0 || i0 < 0) continue;
+      ContactGapIndices(S, sn, M, &P->G, gi);
+      ContactGapFirst(&P->G, P->N, dg);
+      for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(gi[l], P->wt * P->W[i0] * dg[l], n, nmax, idx, val));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
 {
   Mortar        *m = (Mortar *)t->data;
   const PetscInt nmax = 512;
-  PetscInt      *gidx, np = 0, npmax = 0;
+  PetscInt      *gidx, npmax = 0;
   PetscReal     *gval;
   PetscScalar   *K;
   MortarPoint   *pts = NULL;
@@ -468,20 +549,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
       PetscInt  n = 0;
       PetscReal c;
       if (!D->mine[j] || D->gj[j] >= 0) continue;
-      np = 0;
-      for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) PetscCall(MortarEdgePoints(m, s, D->nodeEdge[k], &np, &npmax, &pts, NULL));
-      for (PetscInt k = 0; k < np; ++k) {
-        const MortarPoint *P  = &pts[k];
-        const PetscInt    *sn = &S->enodes[3 * P->se];
-        PetscInt           idx[20], i0 = -1;
-        PetscReal          dg[20];
-        for (PetscInt i = 0; i < 3; ++i)
-          if (sn[i] == j) i0 = i;
-        if (P->G.me < 0 || i0 < 0) continue;
-        ContactGapIndices(S, sn, M, &P->G, idx);
-        ContactGapFirst(&P->G, P->N, dg);
-        for (PetscInt l = 0; l < 20; ++l) PetscCall(SparseAdd(idx[l], P->wt * P->W[i0] * dg[l], &n, nmax, gidx, gval));
-      }
+      PetscCall(MortarNodeGradient(m, s, j, nmax, &n, gidx, gval, &npmax, &pts));
       c = m->c * m->b.kp * D->A[j] / (D->cover[j] * D->cover[j]);
       for (PetscInt a = 0; a < n; ++a)
         for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
@@ -613,19 +681,22 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
   PetscReal gx[8], gw[8];
 
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(t->comm, &m->rank));
+  PetscCallMPI(MPI_Comm_size(t->comm, &m->size));
   PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
   PetscCall(ContactTermSetUpSurfaces(&m->b, bodies, 0.0)); /* no blend by default: see above */
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &m->b.S[s];
     MortarSide     *D = &m->side[s];
-    const PetscInt  e0 = S->nown ? S->ownEdges[0] : -1, e1 = S->nown ? S->ownEdges[S->nown - 1] : -2;
-    PetscInt       *minEdge, *cnt;
+    PetscInt       *wpos, *cnt;
     PetscCall(PetscCalloc5(2 * S->nn, &D->A, 2 * S->nn, &D->gw, S->nn, &D->gj, S->nn, &D->s, S->nn, &D->mine));
+    PetscCall(PetscMalloc5(S->nn, &D->first, S->ne, &D->owner, S->ne, &D->weight, S->ne, &D->pbeg, S->ne, &D->pend));
     D->AN    = D->A + S->nn;
     D->cover = D->gw + S->nn;
-    PetscCall(PetscMalloc2(S->nn, &minEdge, S->nn + 1, &cnt));
+    PetscCall(PetscMalloc2(S->ne, &wpos, S->nn + 1, &cnt));
     PetscCall(PetscCalloc1(S->nn + 1, &D->nodeEdgeStart));
-    for (PetscInt j = 0; j < S->nn; ++j) minEdge[j] = PETSC_MAX_INT;
+    for (PetscInt k = 0; k < S->ne; ++k) wpos[S->walk[k]] = k;
+    for (PetscInt j = 0; j < S->nn; ++j) D->first[j] = -1;
     PetscCall(PetscCalloc1(9 * S->ne, &D->dual));
     for (PetscInt e = 0; e < S->ne; ++e) { /* A = D M^-1 on each edge (dual weights) */
       PetscReal M[9] = {0}, d[3] = {0}, Mi[9], det;
@@ -667,7 +738,7 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
           }
         }
       for (PetscInt i = 0; i < 3; ++i) {
-        minEdge[en[i]] = PetscMin(minEdge[en[i]], e);
+        if (D->first[en[i]] < 0 || wpos[e] < wpos[D->first[en[i]]]) D->first[en[i]] = e;
         D->nodeEdgeStart[en[i] + 1]++;
       }
       D->s[en[0]] = S->edir[e] > 0 ? S->s0[e] : S->s0[e] + S->elen[e];
@@ -675,14 +746,14 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
       PetscCall(ContactSurfaceArc(S, e, 0.0, &D->s[en[2]]));
     }
     for (PetscInt j = 0; j < S->nn; ++j) {
-      D->mine[j]                = (PetscBool)(minEdge[j] >= e0 && minEdge[j] <= e1);
       D->nodeEdgeStart[j + 1] += D->nodeEdgeStart[j];
       cnt[j]                    = D->nodeEdgeStart[j];
     }
     PetscCall(PetscMalloc1(D->nodeEdgeStart[S->nn] + 1, &D->nodeEdge));
     for (PetscInt e = 0; e < S->ne; ++e)
       for (PetscInt i = 0; i < 3; ++i) D->nodeEdge[cnt[S->enodes[3 * e + i]]++] = e;
-    PetscCall(PetscFree2(minEdge, cnt));
+    PetscCall(PetscFree2(wpos, cnt));
+    MortarShareEdges(m, s);
   }
   PetscFunctionReturn(0);
 }
@@ -695,6 +766,7 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
   for (PetscInt s = 0; s < 2; ++s) {
     MortarSide *D = &m->side[s];
     PetscCall(PetscFree5(D->A, D->gw, D->gj, D->s, D->mine));
+    PetscCall(PetscFree5(D->first, D->owner, D->weight, D->pbeg, D->pend));
     PetscCall(PetscFree(D->nodeEdgeStart));
     PetscCall(PetscFree(D->nodeEdge));
     PetscCall(PetscFree(D->dual));
