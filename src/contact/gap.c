@@ -48,16 +48,23 @@ static PetscBool MasterEndBlended(const ContactSurface *M, PetscInt e, PetscInt 
   return PETSC_FALSE;
 }
 
+/* The master's outward unit normal from its tangent P->tm, and the gap of xs
+   from the master point P->xm along it. */
+static void ContactGapNormal(const ContactSurface *M, const PetscReal xs[2], ContactGap *P)
+{
+  P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
+  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
+  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
+  P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+}
+
 /* The gap at the closest point P->eta of master edge P->me. */
 static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], ContactGap *P)
 {
   MasterShape(M, P->me, P->eta, P->M7, P->dM7, P->d2M7); /* once: the point, normal and derivatives below */
   MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
-  P->tn   = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
-  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
-  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
-  P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
-  P->fan  = PETSC_FALSE;
+  ContactGapNormal(M, xs, P);
+  P->fan = PETSC_FALSE;
   if (PetscAbsReal(P->eta) >= 1.0 && !MasterEndBlended(M, P->me, P->eta > 0 ? 1 : 0)) {
     /* the closest point is a node where the edges meet at a corner (no blend):
        in the fan of normals there g is the signed distance to the node, along
@@ -87,8 +94,7 @@ static void ContactGapExtend(const ContactSurface *M, const PetscReal xs[2], Pet
 
   MasterShape(M, P->me, je, P->M7, P->dM7, P->d2M7);
   MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
-  P->tn = PetscSqrtReal(P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
-  delta = ((xs[0] - P->xm[0]) * P->tm[0] + (xs[1] - P->xm[1]) * P->tm[1]) / (P->tn * P->tn);
+  delta = ((xs[0] - P->xm[0]) * P->tm[0] + (xs[1] - P->xm[1]) * P->tm[1]) / (P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
   if (delta * je < 0) delta = 0.0; /* the clamped projection is at the end itself */
   for (PetscInt j = 0; j < 7; ++j) {
     P->M7[j] += delta * P->dM7[j];
@@ -98,12 +104,10 @@ static void ContactGapExtend(const ContactSurface *M, const PetscReal xs[2], Pet
     P->xm[d] += delta * P->tm[d];
     P->xpp[d] = 0.0;
   }
-  P->eta  = je + delta;
-  P->ext  = PETSC_TRUE;
-  P->fan  = PETSC_FALSE;
-  P->n[0] = M->esign[P->me] * P->tm[1] / P->tn;
-  P->n[1] = -M->esign[P->me] * P->tm[0] / P->tn;
-  P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
+  P->eta = je + delta;
+  P->ext = PETSC_TRUE;
+  P->fan = PETSC_FALSE;
+  ContactGapNormal(M, xs, P);
 }
 
 void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
