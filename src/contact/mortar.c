@@ -160,7 +160,6 @@ typedef struct {
   MortarBasis basis;
   PetscBool   slave[2];    /* the surfaces that act as slave */
   PetscReal   c;           /* weight of each one-sided energy: 1 / the number of slaves */
-  PetscBool   ready;       /* the points and weighted gaps are those of the surfaces' current coordinates */
   PetscMPIInt rank, size;
 } Mortar;
 
@@ -339,7 +338,7 @@ static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
 
   PetscFunctionBeginUser;
   PetscCall(ContactTermUpdate(&m->b, bodies, MORTAR_Search, &changed));
-  if (m->ready && !changed) PetscFunctionReturn(0);
+  if (!changed) PetscFunctionReturn(0); /* the points and weighted gaps are those of these coordinates (the first update always changes) */
   PetscCall(PetscLogEventBegin(MORTAR_Segments, 0, 0, 0, 0));
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &m->b.S[s];
@@ -369,7 +368,6 @@ static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, D->gw, 2 * S->nn, MPIU_REAL, MPIU_SUM, comm));
     for (PetscInt j = 0; j < S->nn; ++j) D->gj[j] = D->cover[j] > 0.5 * D->A[j] ? D->gw[j] / D->cover[j] : PETSC_INFINITY;
   }
-  m->ready = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(MORTAR_Segments, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
