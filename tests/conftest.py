@@ -3,11 +3,14 @@ summary and HDF5 output."""
 import json
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
+# the scripts' modules (profile_metrics, accuracy_study, ...) importable by every test
+sys.path.insert(0, str(ROOT / "scripts"))
 # CONTACT_BIN: another build of the program (make check-sanitize: bin/contact-sanitize)
 BIN = Path(os.environ.get("CONTACT_BIN", ROOT / "bin" / "contact"))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",

@@ -2,14 +2,12 @@
 (the answer two refinement steps further), the JSON it writes, its limits
 and errors, and its agreement across ranks."""
 import json
-import sys
 
 import pytest
 
 from conftest import ROOT, run_contact
 
-sys.path.insert(0, str(ROOT / "scripts"))
-import accuracy_study  # noqa: E402
+import accuracy_study
 
 MORTAR = ["-contact_formulation", "mortar"]
 

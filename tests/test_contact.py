@@ -79,9 +79,6 @@ def test_reference_against_finer(tmp_path):
     0.11 %), the disc's pressure profile within 4.5 % in L2 (measured 1.8 %).
     Hertz is not the reference here (a/R = 0.36 and a block of width 1: Hertz
     is itself 4.9 % from the finest profile)."""
-    import sys
-    from conftest import ROOT
-    sys.path.insert(0, str(ROOT / "scripts"))
     import profile_metrics as pm
     coarse = run_contact(HERTZ + ["-mesh_size", "0.06"], tmp_path, name="coarse")
     fine = run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", "0.015"] + NEWTON, tmp_path, name="fine")

@@ -260,8 +260,6 @@ def against_half(tmp_path, h, name):
     """The full scene at h against its mirrored half at the same h (another
     mesh of the same model, Gmsh's own): the force's relative difference and
     the disc's profile distance."""
-    import sys
-    sys.path.insert(0, str(ROOT / "scripts"))
     import profile_metrics as pm
     full = solve(tmp_path, HERTZ + ["-mesh_size", str(h)], name)
     half = solve(tmp_path, ["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", str(h)], name + "-half")

@@ -7,16 +7,13 @@ the flat patch the master's pressure is the exact uniform one; on the
 reference scene its peak is the slave's but for the two surfaces' different
 stretch; 1 and 2 ranks agree; h5py and profile_metrics read it. (ParaView:
 tests/test_paraview.py; the plot: tests/test_plot.py.)"""
-import sys
-
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_contact
+from conftest import run_contact
 from test_patch_contact import OPTS as PATCH, SOLVE as PATCH_SOLVE, scene as patch_scene
 
-sys.path.insert(0, str(ROOT / "scripts"))
-import profile_metrics as pm  # noqa: E402
+import profile_metrics as pm
 
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-contact_formulation", "mortar"]
 NODE_SETS = ("node_s", "node_X", "node_x", "node_gap", "node_pressure", "node_weight", "node_force")

@@ -5,16 +5,14 @@ values come from a finer mesh of the same model, from Hertz's solution at
 a/R = 0.1, and from other rank counts. (The contact patch test, exact to
 round-off, is tests/test_patch_contact.py.)"""
 import math
-import sys
 
 import numpy as np
 import pytest
 
-from conftest import HALF_MORTAR_H, ROOT, run_contact
+from conftest import HALF_MORTAR_H, run_contact
 from test_contact import RANK_DEPENDENT, flatten
 
-sys.path.insert(0, str(ROOT / "scripts"))
-import profile_metrics as pm  # noqa: E402
+import profile_metrics as pm
 
 MORTAR = ["-contact_formulation", "mortar"]
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"] + MORTAR

@@ -2,15 +2,10 @@
 oscillation index of an exact Hertz profile and of one with a saw-tooth, the
 L2 distance of a profile from itself and from a scaled copy, the half-width
 of a sampled Hertz profile. Each test names the defect it would catch."""
-import sys
-
 import numpy as np
 import pytest
 
-from conftest import ROOT
-
-sys.path.insert(0, str(ROOT / "scripts"))
-import profile_metrics as pm  # noqa: E402
+import profile_metrics as pm
 
 A, PMAX, C0 = 0.35, 100.0, 0.2   # half-width, peak and centre of the Hertz profile (about the reference scene's)
 R, KP = 1.0, 2e6                  # indenter radius and penalty, for the gaps
