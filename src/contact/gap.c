@@ -43,6 +43,7 @@ static PetscBool MasterEndBlended(const ContactSurface *M, PetscInt e, PetscInt 
 {
   const PetscReal *C = &M->mcorr[14 * e + 7 * j];
 
+  if (M->blend <= 0) return PETSC_FALSE; /* no blend zone (mortar's default): every node is a corner */
   for (PetscInt k = 0; k < 7; ++k)
     if (C[k] != 0.0) return PETSC_TRUE;
   return PETSC_FALSE;

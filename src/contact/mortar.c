@@ -25,8 +25,16 @@
    if they fall on two master edges that share a node v, the split point solves
    (x_s(xi) - x_v) . t_v = 0 (a quadratic in xi, t_v the master tangent at v,
    continuous by the blend); otherwise the piece is halved (to 2^-12 of the
-   edge at most: the end of a master surface). Each segment takes a Gauss rule
-   of -contact_quadrature_points points (4 by default: degree 7).
+   edge at most: the end of a master surface). Without the blend (mortar's
+   default) every master node is a corner: outside a convex one the closest
+   point stays at the node over a fan between the two edges' normal lines,
+   where g is the distance to the node (gap.c), and those two lines are cut
+   too, so that every segment's integrand is smooth. Inside a concave corner,
+   or behind a master surface that curves more tightly than the point's depth
+   (a deeply penetrated iterate), the closest point jumps from one edge to the
+   other where their distances tie: the piece is cut at that tie, found by
+   bisection on the difference of the squared distances. Each segment takes a
+   Gauss rule of -contact_quadrature_points points (4 by default: degree 7).
 
    Gradient. Since dg is exact (gap.c) and the integrand is continuous across
    the moving split points,
@@ -44,7 +52,8 @@
    closest point passes from master edge a to edge b across a node where
    their normals differ (no blend): the gradient's integrand jumps there by
    Lambda J (dg_a - dg_b) (J = dS/dxi), and c moves with u as
-   dc = -(dg_a - dg_b) du / d(g_a - g_b)/dxi (g_a = g_b at c). The second part is pointwise (gap.c's d2g, added
+   dc = -(dg_a - dg_b) du / d(g_a - g_b)/dxi (g_a = g_b at c; a tie's cut
+   alike). The second part is pointwise (gap.c's d2g, added
    with -contact_hessian exact or auto); the first couples every dof under the
    support of N_j, so it is assembled node by node, over the node's slave
    edges, by the rank that owns the node (the rank of its first edge along
@@ -191,8 +200,10 @@ static inline PetscInt MortarFacing(const Mortar *m, PetscInt s, PetscInt se, Pe
    passes from ea to eb: normal to the mean of the two edges' unit tangents at
    v (the bisector of their normals; the common normal where the blend makes
    them meet smoothly); a - 1 if none. The crossing solves
-   (x_s(xi) - x_v) . tau = 0, a quadratic in xi. */
-static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b)
+   (x_s(xi) - x_v) . tau = 0, a quadratic in xi, with tau the unit tangents of
+   ea and eb at v weighted wa and wb (1, 1: the bisector; 1, 0 or 0, 1: the
+   normal line of one edge, a side of the corner's fan). */
+static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b, PetscReal wa, PetscReal wb)
 {
   const PetscInt *sn = &S->enodes[3 * se];
   const PetscReal sg = i != j ? 1.0 : -1.0; /* tangents oriented the same way along the surface */
@@ -203,7 +214,7 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   MasterEval(M, eb, j ? 1.0 : -1.0, xv, tb, xpp);
   na = PetscSqrtReal(ta[0] * ta[0] + ta[1] * ta[1]);
   nb = PetscSqrtReal(tb[0] * tb[0] + tb[1] * tb[1]);
-  for (PetscInt d = 0; d < 2; ++d) tv[d] = ta[d] / na + sg * tb[d] / nb;
+  for (PetscInt d = 0; d < 2; ++d) tv[d] = wa * ta[d] / na + wb * sg * tb[d] / nb;
   for (PetscInt d = 0; d < 2; ++d) { /* x_s(xi) = x_m + xi (x_b - x_a)/2 + xi^2 ((x_a + x_b)/2 - x_m) */
     const PetscReal xa = S->x[2 * sn[0] + d], xb = S->x[2 * sn[1] + d], xm = S->x[2 * sn[2] + d];
     c0 += (xm - xv[d]) * tv[d];
@@ -225,25 +236,94 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   return a - 1.0;
 }
 
+/* Squared distance from point xi of slave edge se to master edge e (its
+   closest point on e). */
+static inline PetscReal MortarEdgeDistance2(const Mortar *m, PetscInt s, PetscInt se, PetscInt e, PetscReal xi)
+{
+  PetscReal xs[2], dS, eta, d2;
+
+  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
+  MasterProject(&m->b.S[1 - s], e, xs, &eta, &d2);
+  return d2;
+}
+
+/* Whether the crossing c of the line through master node v found by
+   MortarNodeCrossing is where the closest point passes from ea to eb: there
+   the point's closest point on each of the two edges is v itself. Where the
+   slave point lies deeper behind the master surface than the surface's
+   radius of curvature at v (a concave node seen from inside the master, a
+   deeply penetrated iterate), one edge has a closer point inside it and the
+   closest point jumps from one edge to the other elsewhere (a tie). */
+static PetscBool MortarCrossingValid(const Mortar *m, PetscInt s, PetscInt se, PetscInt ea, PetscInt eb, PetscInt v, PetscReal c)
+{
+  const PetscReal *xv = &m->b.S[1 - s].x[2 * v];
+  PetscReal        xs[2], dS, dv2, da2, db2;
+
+  MortarSlaveEval(&m->b.S[s], se, c, xs, &dS);
+  dv2 = PetscSqr(xs[0] - xv[0]) + PetscSqr(xs[1] - xv[1]);
+  da2 = MortarEdgeDistance2(m, s, se, ea, c);
+  db2 = MortarEdgeDistance2(m, s, se, eb, c);
+  return (PetscBool)(da2 >= (1.0 - 1e-8) * dv2 && db2 >= (1.0 - 1e-8) * dv2);
+}
+
+/* The tie in (a, b) where master edges ea (closest at a) and eb (closest at
+   b) are at the same distance from the slave point, by bisection on
+   d_a^2 - d_b^2 (which changes sign there, transversally); a - 1 if a and b
+   do not bracket one. The gap is continuous there (g_a = g_b) and its
+   derivative jumps: a cut like a node crossing's, with the same term in the
+   Hessian. */
+static PetscReal MortarTie(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb)
+{
+  PetscReal lo = a, hi = b;
+
+  if (MortarEdgeDistance2(m, s, se, ea, a) - MortarEdgeDistance2(m, s, se, eb, a) > 0) return a - 1.0;
+  if (MortarEdgeDistance2(m, s, se, ea, b) - MortarEdgeDistance2(m, s, se, eb, b) < 0) return a - 1.0;
+  for (PetscInt it = 0; it < 64 && hi - lo > 1e-14; ++it) {
+    const PetscReal c = 0.5 * (lo + hi);
+    if (MortarEdgeDistance2(m, s, se, ea, c) - MortarEdgeDistance2(m, s, se, eb, c) <= 0) lo = c;
+    else hi = c;
+  }
+  return 0.5 * (lo + hi);
+}
+
 /* Splits [a, b] of slave edge se, whose ends face master edges ea and eb,
-   until each piece faces one master edge; appends the cut points to cut[]. */
+   until each piece faces one master edge; appends the cut points to cut[].
+   Where ea and eb share a node the cut is where the closest point crosses
+   it, or else at the tie between the two edges; a tie between edges that do
+   not share a node is taken only if the midpoints of its two pieces face ea
+   and eb; otherwise the piece is halved. */
 static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
 {
   const ContactSurface *M = &m->b.S[1 - s];
   PetscReal             c;
   PetscInt              ec;
 
-  if (ea == eb || depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 2) return;
+  if (ea == eb || depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 4) return; /* room for a crossing and its fan (three cuts) */
   if (ea >= 0 && eb >= 0) {
+    PetscBool adjacent = PETSC_FALSE;
     for (PetscInt i = 0; i < 2; ++i)
       for (PetscInt j = 0; j < 2; ++j)
         if (M->enodes[3 * ea + i] == M->enodes[3 * eb + j]) {
-          c = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, b);
-          if (c > a) {
+          adjacent = PETSC_TRUE;
+          c        = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, b, 1.0, 1.0);
+          if (c > a && MortarCrossingValid(m, s, se, ea, eb, M->enodes[3 * ea + i], c)) {
+            /* the fan of a corner: from the normal line of ea at the node to
+               that of eb the closest point is the node itself; the gap is C1
+               across those lines but its second derivative jumps, so they are
+               cut too (no term in the Hessian: dg is continuous there) */
+            const PetscReal c1 = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, c, 1.0, 0.0);
+            const PetscReal c2 = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, c, b, 0.0, 1.0);
+            if (c1 > a && c1 < c) cut[(*ncut)++] = (MortarCut){se, -1, -1, c1};
             cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
+            if (c2 > c && c2 < b) cut[(*ncut)++] = (MortarCut){se, -1, -1, c2};
             return;
           }
         }
+    c = MortarTie(m, s, se, a, ea, b, eb);
+    if (c > a && (adjacent || (MortarFacing(m, s, se, 0.5 * (a + c)) == ea && MortarFacing(m, s, se, 0.5 * (c + b)) == eb))) {
+      cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
+      return;
+    }
   }
   c  = 0.5 * (a + b);
   ec = MortarFacing(m, s, se, c);
