@@ -93,6 +93,26 @@ def geo_missing_in_options_file(tmp_path):
     return ["-options_file", p], f"cannot read {d / 'nosuch.geo'} (nosuch.geo in {p}, relative to that file's folder)"
 
 
+def geo_string_hides_param(tmp_path):
+    """Guards against a syntax error reported as a misspelled parameter: an
+    unterminated string swallowed the uses of R, so the program's own check
+    said "geometry parameter 'R' is never used". Gmsh's parse error, with the
+    file and the line where Gmsh stops (line 2, at the next quote), must win."""
+    p = tmp_path / "unterminated.geo"
+    p.write_text('Printf("unterminated);\n// "a quote" ends it\n' + (ROOT / "meshes/hertz/indenter.geo").read_text())
+    return ["-indenter_geo", p], f"Gmsh cannot read geometry file {p}: line 2: syntax error (a)"
+
+
+def geo_syntax_error(tmp_path):
+    """Guards against a syntax error reported only as "gmsh failed ...; see
+    <log>": the line names the file and Gmsh's own message and line."""
+    text = (ROOT / "meshes/hertz/indenter.geo").read_text()
+    line = text.count("\n") + 1
+    p = tmp_path / "brace.geo"
+    p.write_text(text + "Point(99) = {{0, 0, 0};\n")
+    return ["-indenter_geo", p], f"Gmsh cannot read geometry file {p}: line {line}: syntax error ({{)"
+
+
 def options_file_two_per_line(tmp_path):
     p = tmp_path / "twice.opts"
     p.write_text("# two options on one line\n-mesh_size 0.3 -tao_monitor\n")
@@ -130,6 +150,8 @@ CASES = {
     "missing_geo": (["-indenter_geo", "/nonexistent/indenter.geo"], "/nonexistent/indenter.geo"),
     "missing_geo_relative": (["-indenter_geo", "nosuch.geo"], f"cannot read nosuch.geo (relative to the current directory {ROOT})"),
     "missing_geo_in_options_file": (geo_missing_in_options_file, None),
+    "geo_syntax_error_hides_param": (geo_string_hides_param, None),
+    "geo_syntax_error": (geo_syntax_error, None),
     "unreadable_mesh": (directory_as_mesh, None),
     "truncated_mesh": (truncated, None),
     "corrupted_mesh": (corrupted, None),
