@@ -93,6 +93,26 @@ def geo_missing_in_options_file(tmp_path):
     return ["-options_file", p], f"cannot read {d / 'nosuch.geo'} (nosuch.geo in {p}, relative to that file's folder)"
 
 
+def geo_string_hides_param(tmp_path):
+    """Guards against a syntax error reported as a misspelled parameter: an
+    unterminated string swallowed the uses of R, so the program's own check
+    said "geometry parameter 'R' is never used". Gmsh's parse error, with the
+    file and the line where Gmsh stops (line 2, at the next quote), must win."""
+    p = tmp_path / "unterminated.geo"
+    p.write_text('Printf("unterminated);\n// "a quote" ends it\n' + (ROOT / "meshes/hertz/indenter.geo").read_text())
+    return ["-indenter_geo", p], f"Gmsh cannot read geometry file {p}: line 2: syntax error (a)"
+
+
+def geo_syntax_error(tmp_path):
+    """Guards against a syntax error reported only as "gmsh failed ...; see
+    <log>": the line names the file and Gmsh's own message and line."""
+    text = (ROOT / "meshes/hertz/indenter.geo").read_text()
+    line = text.count("\n") + 1
+    p = tmp_path / "brace.geo"
+    p.write_text(text + "Point(99) = {{0, 0, 0};\n")
+    return ["-indenter_geo", p], f"Gmsh cannot read geometry file {p}: line {line}: syntax error ({{)"
+
+
 def options_file_two_per_line(tmp_path):
     p = tmp_path / "twice.opts"
     p.write_text("# two options on one line\n-mesh_size 0.3 -tao_monitor\n")
@@ -130,6 +150,8 @@ CASES = {
     "missing_geo": (["-indenter_geo", "/nonexistent/indenter.geo"], "/nonexistent/indenter.geo"),
     "missing_geo_relative": (["-indenter_geo", "nosuch.geo"], f"cannot read nosuch.geo (relative to the current directory {ROOT})"),
     "missing_geo_in_options_file": (geo_missing_in_options_file, None),
+    "geo_syntax_error_hides_param": (geo_string_hides_param, None),
+    "geo_syntax_error": (geo_syntax_error, None),
     "unreadable_mesh": (directory_as_mesh, None),
     "truncated_mesh": (truncated, None),
     "corrupted_mesh": (corrupted, None),
@@ -160,6 +182,16 @@ CASES = {
     "geo_param_inf": (["-indenter_geo_params", "R=inf"], "R=inf"),
     "radius_nan": (["-contact_interface_hertz_radii", "1,nan"], "hertz_radii"),
     "tolerance_nan": (["-tao_gttol", "nan"], "-tao_gttol"),
+    # PETSc's own options are stored by TaoSetFromOptions() as given: these ran
+    # 0 iterations and ended in a non-converged solve (exit 2) instead of
+    # being refused, before meshing, like the program's own options
+    "max_it_negative": (["-tao_max_it", "-5"], "option -tao_max_it: must be an integer >= 1, got -5"),
+    "max_it_zero": (["-tao_max_it", "0"], "option -tao_max_it: must be an integer >= 1, got 0"),
+    "max_funcs_negative": (["-tao_max_funcs", "-5"], "option -tao_max_funcs: must be an integer >= 1, or -1 for no limit, got -5"),
+    # a negative tolerance was refused only after meshing and set-up
+    "gatol_negative": (["-tao_gatol", "-1"], "option -tao_gatol: must be a finite number >= 0, got -1"),
+    "grtol_negative": (["-tao_grtol", "-1e-3"], "option -tao_grtol: must be a finite number >= 0, got -0.001"),
+    "gttol_negative": (["-tao_gttol", "-1e-8"], "option -tao_gttol: must be a finite number >= 0, got -1e-08"),
     "misspelled_option": (["-tao_monitr"], "-tao_monitr"),
     "misspelled_body_option": (["-block_nuu", "0.3"], "-block_nuu"),
     "unknown_solver": (["-tao_type", "newton"], "newton"),
@@ -172,6 +204,10 @@ CASES = {
     "singular_body": (singular, None),
     "non_finite_energy": (["-block_bc_push_values", "1e200,0"], "block"),
 }
+
+# refused before anything is meshed: no mesh directory is created
+BEFORE_MESHING = {"max_it_negative", "max_it_zero", "max_funcs_negative", "gatol_negative", "grtol_negative",
+                  "gttol_negative", "tolerance_nan"}
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -200,6 +236,8 @@ def test_bad_input(name, tmp_path):
     for p, text in outputs.items():
         assert p.read_text() == text, f"{p.name} was overwritten"
     assert sorted(os.listdir(run)) == sorted(p.name for p in outputs), os.listdir(run)
+    if name in BEFORE_MESHING:
+        assert not (tmp_path / "meshes").exists(), "refused only after meshing"
 
 
 @pytest.mark.parametrize("args", [["-options_file", "nosuch.opts"], SCENE + ["-mesh_size", "abc"]])
@@ -226,6 +264,15 @@ def test_unconverged_writes_nothing(tmp_path):
     assert re.search(r"did not converge \(DIVERGED_MAXITS\)", proc.stderr)
     for f in ("out.h5", "out.json"):
         assert (tmp_path / f).read_text() == SENTINEL
+
+
+def test_max_funcs_no_limit_accepted(tmp_path):
+    """-tao_max_funcs -1, TAO's own default (no limit), is not mistaken for a
+    bad value by the check of PETSc's options (guards that check's domain)."""
+    proc = subprocess.run([str(BIN)] + SCENE + ["-tao_max_funcs", "-1", "-output", "none", "-summary", "none",
+                                                "-mesh_dir", str(tmp_path / "meshes")],
+                          cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
 
 
 @pytest.mark.parametrize("opts", [["-tao_nls_ksp_converged_reason"],

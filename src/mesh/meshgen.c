@@ -133,6 +133,72 @@ static int RunLogged(char *const argv[], const char log[], const char out[])
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+/* Gmsh's first error in its log (lines "Error   : ..."), in msg (empty if
+   none): a parse error reads "'<file>', line N: text", given here as
+   "line N: text" (the file named only if it is another one, an Include). A
+   first error that names no line (an unterminated string or comment) is
+   followed by the first one that does, where the parser stopped. */
+static PetscErrorCode GmshLogFirstError(const char log[], const char geo[], char msg[], size_t len)
+{
+  FILE     *fp;
+  char      line[1024];
+  PetscBool located = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  msg[0] = 0;
+  if (!(fp = fopen(log, "r"))) PetscFunctionReturn(0);
+  while (!located && fgets(line, sizeof(line), fp)) {
+    char       *text = line + 5, *end;
+    const char *file = NULL;
+
+    if (strncmp(line, "Error", 5)) continue;
+    while (*text == ' ') ++text;
+    if (*text++ != ':') continue;
+    while (*text == ' ') ++text;
+    text[strcspn(text, "\r\n")] = 0;
+    if (text[0] == '\'' && (end = strchr(text + 1, '\'')) && !strncmp(end, "', line ", 8)) {
+      *end    = 0;
+      file    = strcmp(text + 1, geo) ? text + 1 : NULL;
+      text    = end + 3; /* "line N: ..." */
+      located = PETSC_TRUE;
+    }
+    if (!*text || (msg[0] && !located)) continue;
+    if (msg[0]) PetscCall(PetscStrlcat(msg, "; ", len));
+    if (file) {
+      PetscCall(PetscStrlcat(msg, file, len));
+      PetscCall(PetscStrlcat(msg, " ", len));
+    }
+    PetscCall(PetscStrlcat(msg, text, len));
+  }
+  fclose(fp);
+  PetscFunctionReturn(0);
+}
+
+/* Whether Gmsh can read geo with the options of argv[1..argc) (gmsh
+   -parse_and_exit: no mesh, no file): if not, errmsg names the file and
+   Gmsh's first error. Its log is a temporary beside msh. */
+static PetscErrorCode GeoCheckParse(char *argv[], PetscInt argc, const char geo[], const char msh[], char errmsg[], size_t len)
+{
+  char  log[PETSC_MAX_PATH_LEN + 32], gmsh[1024];
+  char *mode = argv[1];
+  int   r;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(log, sizeof(log), "%s.parse%d.log", msh, (int)getpid()));
+  argv[1]        = (char *)"-parse_and_exit"; /* in place of -2 */
+  argv[argc]     = (char *)geo;
+  argv[argc + 1] = NULL;
+  r              = RunLogged(argv, log, log);
+  argv[1]        = mode;
+  if (r != 0) {
+    PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
+    if (!gmsh[0]) PetscCall(PetscStrncpy(gmsh, r < 0 ? "gmsh could not be run" : "no error message", sizeof(gmsh)));
+    PetscCall(PetscSNPrintf(errmsg, len, "Gmsh cannot read geometry file %s: %s", geo, gmsh));
+  }
+  (void)unlink(log);
+  PetscFunctionReturn(0);
+}
+
 /* About how many nodes Gmsh would make of geo at size h: the extent of the
    geometry's points, unrolled by Gmsh without meshing (gmsh -0), times
    4.5 / h^2 (second-order nodes per h^2 of area, measured 4.5 to 4.8 on the
@@ -198,7 +264,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     char        base[PETSC_MAX_PATH_LEN], tag[1024] = "", cmd[4096], tmp[PETSC_MAX_PATH_LEN + 16], log[PETSC_MAX_PATH_LEN + 16], hs[64];
-    char        names[16][64], values[16][64], *argv[16 + 2 * 3 * 16], bgmTag[32] = "";
+    char        names[16][64], values[16][64], *argv[16 + 2 * 3 * 16], bgmTag[32] = "", unused[64] = "";
     PetscInt    argc = 0;
     const char *slash = strrchr(geo, '/');
     struct stat sg, sm;
@@ -219,7 +285,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
 
       PetscCall(CheckParam(geo, params[i], name, value));
       for (PetscInt j = 0; j < i; ++j) PetscCheck(strcmp(names[j], name), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' given twice for %s", name, geo);
-      PetscCheck(!strcmp(name, "h") || GeoUsesName(geo, name), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "geometry parameter '%s' is never used by %s (misspelled?)", name, geo);
+      if (!unused[0] && strcmp(name, "h") && !GeoUsesName(geo, name)) PetscCall(PetscStrncpy(unused, name, sizeof(unused)));
       PetscCall(PetscStrncpy(names[i], name, sizeof(names[i])));
       PetscCall(PetscStrncpy(values[i], value, sizeof(values[i])));
       argv[argc++] = (char *)"-setnumber";
@@ -248,6 +314,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscStrlcat(tag, part, sizeof(tag)));
     }
     PetscCall(PetscSNPrintf(msh, len, "%s/%s-%s.msh", dir, base, tag));
+    PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
     if (err) { /* the size field could not be read: errmsg says so */
     } else if ((err = ContactMakeDirs(dir))) {
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot create mesh directory %s: %s", dir, strerror(err)));
@@ -255,10 +322,13 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
     } else if (stat(geo, &sg)) {
       err = 1;
       PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot read geometry file %s: %s", geo, strerror(errno)));
+    } else if (unused[0]) { /* a syntax error (an unterminated string or comment) can hide a name from GeoUsesName: Gmsh's own error wins */
+      err = 1;
+      PetscCall(GeoCheckParse(argv, argc, geo, msh, errmsg, sizeof(errmsg)));
+      if (!errmsg[0]) PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "geometry parameter '%s' is never used by %s (misspelled?)", unused, geo));
     } else if (estimateOnly && !GeoUsesName(geo, "h")) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see README, Geometry files)\n", geo));
     if (!err && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
       PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp%d.msh", msh, (int)getpid()));
-      PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
       PetscCall(PetscStrlcat(cmd, " '", sizeof(cmd)));
       PetscCall(PetscStrlcat(cmd, geo, sizeof(cmd)));
       PetscCall(PetscStrlcat(cmd, "' -o '", sizeof(cmd)));
@@ -279,14 +349,20 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       }
     }
     if (!err && !estimateOnly && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
-      argv[argc++] = (char *)geo;
-      argv[argc++] = (char *)"-o";
-      argv[argc++] = tmp;
-      argv[argc]   = NULL;
+      argv[argc]     = (char *)geo;
+      argv[argc + 1] = (char *)"-o";
+      argv[argc + 2] = tmp;
+      argv[argc + 3] = NULL;
       if (RunLogged(argv, log, tmp) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
+        char gmsh[1024];
         err = 1;
         (void)unlink(tmp);
-        PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g); see %s", geo, (double)h, log));
+        PetscCall(GeoCheckParse(argv, argc, geo, msh, errmsg, sizeof(errmsg))); /* a file Gmsh cannot read: that error, and no log left */
+        if (errmsg[0]) (void)unlink(log);
+        else {
+          PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
+          PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g)%s%s; see %s", geo, (double)h, gmsh[0] ? ": " : "", gmsh, log));
+        }
       } else if (rename(tmp, msh)) {
         err = 1;
         PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "cannot rename %s to %s: %s", tmp, msh, strerror(errno)));

@@ -67,6 +67,37 @@ static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
   PetscFunctionReturn(0);
 }
 
+/* PETSc's own options that the solve relies on, checked like the program's:
+   TaoSetFromOptions() stores -tao_max_it -5 or -tao_gatol -1 as given, and
+   the solve then stops at once, unconverged. Read from the options database
+   (the solver has no prefix) rather than from the solver after
+   TaoSetFromOptions(), because the solver is created only after meshing and
+   set-up (its Newton defaults need the stiffness): read here, a bad value
+   stops the run before anything is meshed or any output is locked.
+   -tao_max_funcs -1 is TAO's default, no limit. An integer is quoted as
+   given: PETSc reads "default" or "decide" as a negative number. */
+static PetscErrorCode ProblemCheckSolverOptions(Problem p)
+{
+  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
+  PetscReal         tol;
+  PetscInt          n;
+  PetscBool         set;
+  char              given[64];
+
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < sizeof(tols) / sizeof(tols[0]); ++k) {
+    PetscCall(PetscOptionsGetReal(NULL, NULL, tols[k], &tol, &set));
+    PetscCheck(!set || (tol >= 0 && !PetscIsInfOrNanReal(tol)), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be a finite number >= 0, got %g", tols[k], (double)tol);
+  }
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-tao_max_it", &n, &set));
+  if (set) PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_max_it", given, sizeof(given), NULL));
+  PetscCheck(!set || n >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -tao_max_it: must be an integer >= 1, got %s", given);
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-tao_max_funcs", &n, &set));
+  if (set) PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_max_funcs", given, sizeof(given), NULL));
+  PetscCheck(!set || n >= 1 || n == -1, p->comm, PETSC_ERR_USER_INPUT, "option -tao_max_funcs: must be an integer >= 1, or -1 for no limit, got %s", given);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetFromOptions(Problem p)
 {
   char     *names[CONTACT_MAX_BODIES];
@@ -122,6 +153,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
   PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
   PetscCheck(p->stageRtol > 0 && p->stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->stageRtol);
+  PetscCall(ProblemCheckSolverOptions(p));
   if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
     PetscCall(PetscStrallocpy("<body>", &names[0]));
     nb  = 1;
@@ -748,11 +780,6 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(PetscLogStagePush(contactLog.solve));
   PetscCall(ProblemCreateSolver(p));
   PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
-  {
-    PetscReal tol[3];
-    PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-    for (PetscInt k = 0; k < 3; ++k) PetscCheck(!PetscIsInfOrNanReal(tol[k]) && tol[k] >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -tao_%s: must be a finite number >= 0, got %g", k == 0 ? "gatol" : k == 1 ? "grtol" : "gttol", (double)tol[k]);
-  }
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(ProblemSolveStaged(p, &its, &reason));
   p->iterations = its;
