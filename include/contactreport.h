@@ -29,6 +29,7 @@ typedef struct {
 typedef struct {
   ContactSide side[2];
   PetscReal   kp, force[2], P, maxPen, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
+  PetscReal   hEdge; /* the shorter of the two surfaces' mean reference edge lengths */
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
   PetscBool   done;
 } ContactReport;
@@ -38,6 +39,8 @@ typedef struct {
    sum and maximum over ranks is taken here, once. */
 PetscErrorCode ContactReportFinish(ContactReport *, const ContactPairSpec *, MPI_Comm, const PetscInt nloc[2], PetscReal *const rows[2], const PetscReal force[2][2], PetscReal maxPen, const PetscReal arcLength[2]);
 PetscErrorCode ContactReportView(const ContactReport *, const ContactPairSpec *, Body[], MPI_Comm);
+/* Why the pair may keep a solve from converging (an overlap deeper than its edges), or an empty string. */
+PetscErrorCode ContactReportDiagnose(const ContactReport *, const ContactPairSpec *, size_t, char[]);
 PetscErrorCode ContactReportWriteJSON(const ContactReport *, const ContactPairSpec *, Body[], FILE *, PetscBool summary);
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *, const ContactPairSpec *, Body[], PetscViewer);
 /* Rank 0: each surface with a profile as a line grid of the XDMF file, on the

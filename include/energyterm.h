@@ -22,6 +22,7 @@ typedef struct {
   PetscErrorCode (*writehdf5)(EnergyTerm, Body[], PetscViewer);
   PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
   PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);
+  PetscErrorCode (*diagnose)(EnergyTerm, size_t, char[]);
   PetscErrorCode (*destroy)(EnergyTerm);
 } EnergyTermOps;
 
@@ -65,3 +66,5 @@ PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
    not a slave, whose profile is transferred, or the term is no contact), and
    the contact force it transmits. */
 PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);
+/* After the post-processing: why the term may have kept the solve from converging, or an empty string. */
+PetscErrorCode EnergyTermDiagnose(EnergyTerm, size_t n, char why[]);

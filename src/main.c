@@ -130,8 +130,10 @@ static PetscErrorCode Run(int *status)
     }
     else {
       TaoConvergedReason reason;
+      char               why[PETSC_MAX_PATH_LEN] = "";
       PetscCall(TaoGetConvergedReason(problem->tao, &reason));
-      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s); no output written\n", TaoConvergedReasons[reason]));
+      for (PetscInt t = 0; t < problem->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(problem->terms[t], sizeof(why), why));
+      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s)%s%s; no output written\n", TaoConvergedReasons[reason], why[0] ? ": " : "", why));
       ContactOutputDiscard();
     }
     PetscCall(PetscTime(&t3));

@@ -41,3 +41,54 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
         assert abs(s["contact_force"] - 2 * abs(f)) <= 1e-12 * s["contact_force"]
         P[n] = s["contact_force"]
     assert abs(P[2] - P[1]) <= 1e-8 * abs(P[1]), P
+
+
+def _edge_length(h5, pair, surface):
+    """Mean reference edge length of a contact surface, from the HDF5's node
+    coordinates and edges (independent of the program's own figure)."""
+    import h5py
+    import numpy as np
+    with h5py.File(h5) as f:
+        g = f[f"/contact/{pair}/{surface}"]
+        X, cells = g["node_X"][...], g["node_cells"][...]
+    # node_cells joins consecutive nodes along the surface (corner and mid-edge
+    # nodes alike): an edge of the quadratic mesh is two of them
+    return np.linalg.norm(X[cells[:, 1]] - X[cells[:, 0]], axis=1).sum() / (len(cells) // 2)
+
+
+def test_deep_overlap_named(tmp_path):
+    """A penalty too soft for its load lets the bodies overlap by more than an
+    element, where the penalty's answer is no longer the contact's (and Newton
+    may meet the saddles of a non-convex discrete energy): the report says so,
+    with the overlap against the contact edges' length and the option to
+    raise. Here (half scene, h = 0.05, k_p = 1e3, push 0.3) the overlap is
+    0.10, about two edges; the default penalty (2e6) overlaps by 5e-5 and
+    gets no warning."""
+    r = run_contact(HALF + ["-mesh_size", 0.05, "-contact_penalty", "1e3", "-block_bc_push_values", "-0.3,0"],
+                    tmp_path, name="soft")
+    warn = [ln for ln in r.stdout.splitlines() if "bodies overlap" in ln]
+    assert len(warn) == 1 and warn[0].lstrip().startswith("WARNING: pair interface") and \
+        "-contact_interface_penalty" in warn[0], warn
+    ratio = float(warn[0].split(", ")[1].split(" times")[0])
+    h_edge = min(_edge_length(r.output_path, "interface", s) for s in ("indenter_contact", "block_contact"))
+    expected = r.summary["contact"]["interface"]["max_penetration"] / h_edge
+    print(f"overlap {r.summary['contact']['interface']['max_penetration']:.4g}, edges {h_edge:.4g}: "
+          f"ratio {expected:.4g}, printed {ratio}")
+    assert expected > 1.5
+    assert abs(ratio - expected) <= 0.005 * expected   # printed to 3 digits
+    stiff = run_contact(HALF + ["-mesh_size", 0.05], tmp_path, name="stiff")
+    assert "bodies overlap" not in stiff.stdout
+
+
+def test_deep_overlap_names_the_stop(tmp_path):
+    """A solve that stops while the bodies overlap by more than an element
+    ends in one line naming that cause, not TAO's reason alone: stopped here
+    after 2 Newton iterations (-tao_max_it 2), the first step from rest having
+    pushed the indenter 0.1 deep at k_p = 1e3."""
+    r = run_contact(HALF + ["-mesh_size", 0.05, "-contact_penalty", "1e3", "-block_bc_push_values", "-0.3,0",
+                            "-tao_max_it", 2], tmp_path, name="stop", check=False)
+    assert r.returncode == 2, r.stderr
+    lines = [ln for ln in r.stderr.splitlines() if ln.startswith("contact:")]
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith("contact: the solve did not converge (DIVERGED_MAXITS): pair interface: the bodies overlap by")
+    assert "raise -contact_interface_penalty" in lines[0] and lines[0].endswith("no output written")

@@ -89,6 +89,9 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
   fm[0] = spec->mirror ? 2.0 * f[0] : f[0];
   fm[1] = spec->mirror ? 0.0 : f[1];
   R->P  = PetscSqrtReal(fm[0] * fm[0] + fm[1] * fm[1]);
+  R->hEdge = PETSC_MAX_REAL;
+  for (PetscInt s = 0; s < 2; ++s)
+    if (R->side[s].nedges > 0) R->hEdge = PetscMin(R->hEdge, arcLength[s] / R->side[s].nedges);
   if (spec->hertz) HertzLineContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzPmax);
   for (PetscInt s = 0; s < 2; ++s) {
     PetscCall(ContactSideGather(&R->side[s], spec, R, comm, nloc[s], rows[s], arcLength[s]));
@@ -115,6 +118,22 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
   PetscFunctionReturn(0);
 }
 
+/* The penalty formulations are meant for overlaps small against the
+   elements. Deeper than a contact edge, the closest point on the master
+   jumps between its edges under small motions and the discrete energy turns
+   non-convex (measured on the half hertz scene at k_p = 1e3: saddles where
+   Newton's step meets negative curvature, with the solve then wandering to
+   lower, asymmetric states): the answer is the penalty's, not the contact's.
+   The cure is a stiffer penalty. */
+PetscErrorCode ContactReportDiagnose(const ContactReport *R, const ContactPairSpec *spec, size_t n, char why[])
+{
+  PetscFunctionBeginUser;
+  why[0] = 0;
+  if (!R->done || !(R->maxPen > R->hEdge)) PetscFunctionReturn(0);
+  PetscCall(PetscSNPrintf(why, n, "pair %s: the bodies overlap by %.3g, %.3g times the contact edges' mean length %.3g; the penalty k_p = %g is too soft for this load: raise -contact_%s_penalty", spec->name, (double)R->maxPen, (double)(R->maxPen / R->hEdge), (double)R->hEdge, (double)R->kp, spec->name));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], MPI_Comm comm)
 {
   const PetscInt C = CONTACT_ROW_COLS;
@@ -128,6 +147,11 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   PetscCall(PetscPrintf(comm, "  contact force on %s%s: (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : "", (double)fm[0], (double)fm[1], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
+  {
+    char why[PETSC_MAX_PATH_LEN];
+    PetscCall(ContactReportDiagnose(R, spec, sizeof(why), why));
+    if (why[0]) PetscCall(PetscPrintf(comm, "  WARNING: %s\n", why));
+  }
   if (!rank) {
     for (PetscInt s = 0; s < 2; ++s) {
       const ContactSide *S = &R->side[s];

@@ -155,6 +155,15 @@ static PetscErrorCode ContactTermGetProfile(EnergyTerm t, PetscInt side, PetscIn
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode ContactTermDiagnose(EnergyTerm t, size_t n, char why[])
+{
+  const ContactTerm *b = (const ContactTerm *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportDiagnose(&b->report, &b->spec, n, why));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec, EnergyTerm t)
 {
   PetscFunctionBeginUser;
@@ -173,5 +182,6 @@ PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec
   t->ops.writehdf5        = ContactTermWriteHDF5;
   t->ops.writexdmf        = ContactTermWriteXDMF;
   t->ops.getprofile       = ContactTermGetProfile;
+  t->ops.diagnose         = ContactTermDiagnose;
   PetscFunctionReturn(0);
 }

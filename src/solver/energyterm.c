@@ -112,3 +112,11 @@ PetscErrorCode EnergyTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, Pe
   if (t->ops.getprofile) PetscCall(t->ops.getprofile(t, side, n, s, p, w, force));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode EnergyTermDiagnose(EnergyTerm t, size_t n, char why[])
+{
+  PetscFunctionBeginUser;
+  why[0] = 0;
+  if (t->ops.diagnose) PetscCall(t->ops.diagnose(t, n, why));
+  PetscFunctionReturn(0);
+}
