@@ -18,6 +18,8 @@ typedef struct {
 void ContactGapProject(const ContactSurface *M, ContactSearch, const PetscReal xs[2], ContactGap *);
 /* The same against master edge e alone (its closest point to xs). */
 void ContactGapOnEdge(const ContactSurface *M, PetscInt e, const PetscReal xs[2], ContactGap *);
+/* Whether end j (0: eta = -1, 1: eta = +1) of master edge e is blended into its neighbour (no corner there). */
+PetscBool ContactGapEndBlended(const ContactSurface *M, PetscInt e, PetscInt j);
 /* The indices in the joined vector of the 20 dofs: slave edge sn's nodes, then the master edge's. */
 void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *, PetscInt idx[20]);
 /* dg over the 20 dofs, with N the slave edge's shape functions at the point. */

@@ -39,7 +39,7 @@
 
 /* Whether end j (0: eta = -1, 1: eta = +1) of master edge e is blended into its
    neighbour (a smooth node: no corner, no fan of normals). */
-static PetscBool MasterEndBlended(const ContactSurface *M, PetscInt e, PetscInt j)
+PetscBool ContactGapEndBlended(const ContactSurface *M, PetscInt e, PetscInt j)
 {
   const PetscReal *C = &M->mcorr[14 * e + 7 * j];
 
@@ -66,7 +66,7 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
   MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
   ContactGapNormal(M, xs, P);
   P->fan = PETSC_FALSE;
-  if (PetscAbsReal(P->eta) >= 1.0 && !MasterEndBlended(M, P->me, P->eta > 0 ? 1 : 0)) {
+  if (PetscAbsReal(P->eta) >= 1.0 && !ContactGapEndBlended(M, P->me, P->eta > 0 ? 1 : 0)) {
     /* the closest point is a node where the edges meet at a corner (no blend):
        in the fan of normals there g is the signed distance to the node, along
        the direction to the point, so that g stays continuous (C1 outside a

@@ -25,16 +25,20 @@
    if they fall on two master edges that share a node v, the split point solves
    (x_s(xi) - x_v) . t_v = 0 (a quadratic in xi, t_v the master tangent at v,
    continuous by the blend); otherwise the piece is halved (to 2^-12 of the
-   edge at most: the end of a master surface). Without the blend (mortar's
-   default) every master node is a corner: outside a convex one the closest
-   point stays at the node over a fan between the two edges' normal lines,
-   where g is the distance to the node (gap.c), and those two lines are cut
-   too, so that every segment's integrand is smooth. Inside a concave corner,
-   or behind a master surface that curves more tightly than the point's depth
-   (a deeply penetrated iterate), the closest point jumps from one edge to the
-   other where their distances tie: the piece is cut at that tie, found by
-   bisection on the difference of the squared distances. Each segment takes a
-   Gauss rule of -contact_quadrature_points points (4 by default: degree 7).
+   edge at most: the end of a master surface). More generally each slave
+   edge is cut wherever the feature of the master closest to its points
+   changes (MortarSplit): the inside of an edge, a corner node, or the
+   extension past an end. Without the blend (mortar's default) every master
+   node is a corner: outside a convex one the closest point stays at the node
+   over a fan between the two edges' normal lines, where g is the distance to
+   the node (gap.c), and those two lines are cut. Inside a concave corner, or
+   behind a master surface that curves more tightly than the point's depth (a
+   deeply penetrated iterate), the closest point jumps from one feature to
+   another where their distances tie: the piece is cut at that tie, found by
+   bisection on the difference of the squared distances. Every piece is
+   checked at its midpoint, and halved where it is not uniform, so that each
+   segment's integrand is smooth. Each segment takes a Gauss rule of
+   -contact_quadrature_points points (4 by default: degree 7).
 
    Gradient. Since dg is exact (gap.c) and the integrand is continuous across
    the moving split points,
@@ -184,15 +188,70 @@ static inline void MortarSlaveEval(const ContactSurface *S, PetscInt se, PetscRe
   *dS = PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
 }
 
-/* The master edge facing slave point xi of edge se (-1 if none). */
-static inline PetscInt MortarFacing(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi)
+/* The feature of the master surface closest to a slave point: the inside of
+   an edge (its orthogonal projection, or an end clamped at a blended node),
+   a corner node (the fan of directions outside a convex corner), or the
+   straight extension past an end of the surface; none where the master is
+   empty. edge: the master edge of the point's gap (for a node, the edge the
+   search reports), end: the node's or the extension's end of that edge. */
+typedef enum { REGION_NONE, REGION_EDGE, REGION_NODE, REGION_EXT } MortarRegionKind;
+typedef struct {
+  MortarRegionKind kind;
+  PetscInt         id, edge, end; /* id: the edge (inside, extension) or the node (corner) */
+} MortarRegion;
+
+static inline PetscBool MortarRegionSame(MortarRegion a, MortarRegion b)
 {
-  PetscReal  xs[2], dS;
-  ContactGap G;
+  return (PetscBool)(a.kind == b.kind && a.id == b.id);
+}
+
+static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi)
+{
+  const ContactSurface *M = &m->b.S[1 - s];
+  PetscReal             xs[2], dS;
+  ContactGap            G;
+  MortarRegion          R = {REGION_NONE, -1, -1, 0};
 
   MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
-  ContactGapProject(&m->b.S[1 - s], m->b.search[1 - s], xs, &G);
-  return G.me;
+  ContactGapProject(M, m->b.search[1 - s], xs, &G);
+  if (G.me < 0) return R;
+  R.edge = G.me;
+  R.end  = G.eta > 0 ? 1 : 0;
+  if (G.ext) {
+    R.kind = REGION_EXT;
+    R.id   = G.me;
+  } else if (G.fan) {
+    R.kind = REGION_NODE;
+    R.id   = M->enodes[3 * G.me + R.end];
+  } else {
+    R.kind = REGION_EDGE;
+    R.id   = G.me;
+  }
+  return R;
+}
+
+/* Squared distance from point xi of slave edge se to the feature of region R. */
+static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se, MortarRegion R, PetscReal xi)
+{
+  const ContactSurface *M = &m->b.S[1 - s];
+  PetscReal             xs[2], dS, eta, d2, xv[2], t[2], xpp[2], d[2], dt;
+
+  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
+  switch (R.kind) {
+  case REGION_EDGE:
+    MasterProject(M, R.id, xs, &eta, &d2);
+    return d2;
+  case REGION_NODE:
+    return PetscSqr(xs[0] - M->x[2 * R.id]) + PetscSqr(xs[1] - M->x[2 * R.id + 1]);
+  case REGION_EXT: /* to the end's tangent line */
+    MasterEval(M, R.id, R.end ? 1.0 : -1.0, xv, t, xpp);
+    d[0] = xs[0] - xv[0];
+    d[1] = xs[1] - xv[1];
+    dt   = (d[0] * t[0] + d[1] * t[1]) / PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+    return d[0] * d[0] + d[1] * d[1] - dt * dt;
+  default:
+    return PETSC_MAX_REAL;
+  }
 }
 
 /* The parameter in (a, b) where slave edge se crosses the line through master
@@ -236,100 +295,103 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   return a - 1.0;
 }
 
-/* Squared distance from point xi of slave edge se to master edge e (its
-   closest point on e). */
-static inline PetscReal MortarEdgeDistance2(const Mortar *m, PetscInt s, PetscInt se, PetscInt e, PetscReal xi)
-{
-  PetscReal xs[2], dS, eta, d2;
-
-  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
-  MasterProject(&m->b.S[1 - s], e, xs, &eta, &d2);
-  return d2;
-}
-
-/* Whether the crossing c of the line through master node v found by
-   MortarNodeCrossing is where the closest point passes from ea to eb: there
-   the point's closest point on each of the two edges is v itself. Where the
-   slave point lies deeper behind the master surface than the surface's
-   radius of curvature at v (a concave node seen from inside the master, a
-   deeply penetrated iterate), one edge has a closer point inside it and the
-   closest point jumps from one edge to the other elsewhere (a tie). */
-static PetscBool MortarCrossingValid(const Mortar *m, PetscInt s, PetscInt se, PetscInt ea, PetscInt eb, PetscInt v, PetscReal c)
-{
-  const PetscReal *xv = &m->b.S[1 - s].x[2 * v];
-  PetscReal        xs[2], dS, dv2, da2, db2;
-
-  MortarSlaveEval(&m->b.S[s], se, c, xs, &dS);
-  dv2 = PetscSqr(xs[0] - xv[0]) + PetscSqr(xs[1] - xv[1]);
-  da2 = MortarEdgeDistance2(m, s, se, ea, c);
-  db2 = MortarEdgeDistance2(m, s, se, eb, c);
-  return (PetscBool)(da2 >= (1.0 - 1e-8) * dv2 && db2 >= (1.0 - 1e-8) * dv2);
-}
-
-/* The tie in (a, b) where master edges ea (closest at a) and eb (closest at
-   b) are at the same distance from the slave point, by bisection on
-   d_a^2 - d_b^2 (which changes sign there, transversally); a - 1 if a and b
-   do not bracket one. The gap is continuous there (g_a = g_b) and its
-   derivative jumps: a cut like a node crossing's, with the same term in the
-   Hessian. */
-static PetscReal MortarTie(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb)
+/* The tie in (a, b) where the features of regions Ra (closest at a) and Rb
+   (closest at b) are at the same distance from the slave point, by bisection
+   on the difference of the squared distances (which changes sign there,
+   transversally); a - 1 if a and b do not bracket one. */
+static PetscReal MortarTie(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb)
 {
   PetscReal lo = a, hi = b;
 
-  if (MortarEdgeDistance2(m, s, se, ea, a) - MortarEdgeDistance2(m, s, se, eb, a) > 0) return a - 1.0;
-  if (MortarEdgeDistance2(m, s, se, ea, b) - MortarEdgeDistance2(m, s, se, eb, b) < 0) return a - 1.0;
+  if (MortarRegionDistance2(m, s, se, Ra, a) - MortarRegionDistance2(m, s, se, Rb, a) > 0) return a - 1.0;
+  if (MortarRegionDistance2(m, s, se, Ra, b) - MortarRegionDistance2(m, s, se, Rb, b) < 0) return a - 1.0;
   for (PetscInt it = 0; it < 64 && hi - lo > 1e-14; ++it) {
     const PetscReal c = 0.5 * (lo + hi);
-    if (MortarEdgeDistance2(m, s, se, ea, c) - MortarEdgeDistance2(m, s, se, eb, c) <= 0) lo = c;
+    if (MortarRegionDistance2(m, s, se, Ra, c) - MortarRegionDistance2(m, s, se, Rb, c) <= 0) lo = c;
     else hi = c;
   }
   return 0.5 * (lo + hi);
 }
 
-/* Splits [a, b] of slave edge se, whose ends face master edges ea and eb,
-   until each piece faces one master edge; appends the cut points to cut[].
-   Where ea and eb share a node the cut is where the closest point crosses
-   it, or else at the tie between the two edges; a tie between edges that do
-   not share a node is taken only if the midpoints of its two pieces face ea
-   and eb; otherwise the piece is halved. */
-static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscInt ea, PetscReal b, PetscInt eb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
+/* Where in (a, b) the closest point passes from region Ra to Rb (a - 1 if
+   not found), and the master edges of the cut (*ea, *eb; -1 where the gap's
+   derivative does not jump there). Smoothly, on a line through a master
+   node: from the inside of an edge to the fan of its end node or to the
+   extension past its end (the edge's normal line there), from one edge to
+   the next across a blended node (the common normal). Otherwise the closest
+   point jumps from one feature to the other where their distances tie:
+   inside a concave corner, between two corners, or behind a master surface
+   that curves more tightly than the point's depth (a deeply penetrated
+   iterate). The gap is continuous at a tie and its derivative jumps: the cut
+   carries the two edges for the Hessian's crossing term (none next to an
+   extension, whose gap ContactGapOnEdge does not give). */
+static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt *ea, PetscInt *eb)
 {
-  const ContactSurface *M = &m->b.S[1 - s];
-  PetscReal             c;
-  PetscInt              ec;
+  const ContactSurface *M = &m->b.S[1 - s], *S = &m->b.S[s];
 
-  if (ea == eb || depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 4) return; /* room for a crossing and its fan (three cuts) */
-  if (ea >= 0 && eb >= 0) {
-    PetscBool adjacent = PETSC_FALSE;
+  *ea = *eb = -1;
+  for (PetscInt k = 0; k < 2; ++k) { /* an edge and its own end's fan or extension, either way round */
+    const MortarRegion E = k ? Rb : Ra, O = k ? Ra : Rb;
+    if (E.kind != REGION_EDGE) continue;
+    for (PetscInt i = 0; i < 2; ++i)
+      if ((O.kind == REGION_NODE && O.id == M->enodes[3 * E.id + i]) || (O.kind == REGION_EXT && O.id == E.id && O.end == i)) return MortarNodeCrossing(S, se, M, E.id, i, E.id, i, a, b, 1.0, 0.0);
+  }
+  if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE) /* across a blended node */
     for (PetscInt i = 0; i < 2; ++i)
       for (PetscInt j = 0; j < 2; ++j)
-        if (M->enodes[3 * ea + i] == M->enodes[3 * eb + j]) {
-          adjacent = PETSC_TRUE;
-          c        = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, b, 1.0, 1.0);
-          if (c > a && MortarCrossingValid(m, s, se, ea, eb, M->enodes[3 * ea + i], c)) {
-            /* the fan of a corner: from the normal line of ea at the node to
-               that of eb the closest point is the node itself; the gap is C1
-               across those lines but its second derivative jumps, so they are
-               cut too (no term in the Hessian: dg is continuous there) */
-            const PetscReal c1 = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, a, c, 1.0, 0.0);
-            const PetscReal c2 = MortarNodeCrossing(&m->b.S[s], se, M, ea, i, eb, j, c, b, 0.0, 1.0);
-            if (c1 > a && c1 < c) cut[(*ncut)++] = (MortarCut){se, -1, -1, c1};
-            cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
-            if (c2 > c && c2 < b) cut[(*ncut)++] = (MortarCut){se, -1, -1, c2};
+        if (M->enodes[3 * Ra.id + i] == M->enodes[3 * Rb.id + j] && ContactGapEndBlended(M, Ra.id, i)) {
+          *ea = Ra.id;
+          *eb = Rb.id;
+          return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+        }
+  if (Ra.kind != REGION_EXT && Rb.kind != REGION_EXT) {
+    *ea = Ra.edge;
+    *eb = Rb.edge;
+  }
+  return MortarTie(m, s, se, a, Ra, b, Rb);
+}
+
+/* Splits [a, b] of slave edge se, whose ends lie in regions Ra and Rb,
+   until the closest point stays in one region over each piece (checked at
+   the pieces' midpoints), so that every piece's integrand is smooth;
+   appends the cuts to cut[]. A transition that is not found, or whose
+   pieces are not uniform, is halved (to 2^-12 of the edge at most). */
+static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
+{
+  PetscReal    c;
+  MortarRegion Rc;
+
+  if (depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 2) return;
+  if (MortarRegionSame(Ra, Rb)) {
+    Rc = MortarRegionAt(m, s, se, 0.5 * (a + b));
+    if (MortarRegionSame(Rc, Ra)) return;
+  } else if (Ra.kind != REGION_NONE && Rb.kind != REGION_NONE) {
+    const ContactSurface *M = &m->b.S[1 - s];
+    PetscInt              ea, eb;
+    if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE) /* two edges at a corner: its fan, if the bisector lies in it */
+      for (PetscInt i = 0; i < 2; ++i)
+        for (PetscInt j = 0; j < 2; ++j)
+          if (M->enodes[3 * Ra.id + i] == M->enodes[3 * Rb.id + j] && !ContactGapEndBlended(M, Ra.id, i)) {
+            c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+            if (!(c > a && c < b)) continue;
+            Rc = MortarRegionAt(m, s, se, c);
+            if (Rc.kind != REGION_NODE || Rc.id != M->enodes[3 * Ra.id + i]) continue;
+            MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut);
+            cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
+            MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut);
             return;
           }
-        }
-    c = MortarTie(m, s, se, a, ea, b, eb);
-    if (c > a && (adjacent || (MortarFacing(m, s, se, 0.5 * (a + c)) == ea && MortarFacing(m, s, se, 0.5 * (c + b)) == eb))) {
+    c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb);
+    if (c > a && c < b && MortarRegionSame(MortarRegionAt(m, s, se, 0.5 * (a + c)), Ra) && MortarRegionSame(MortarRegionAt(m, s, se, 0.5 * (c + b)), Rb)) {
       cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
       return;
     }
   }
   c  = 0.5 * (a + b);
-  ec = MortarFacing(m, s, se, c);
-  MortarSplit(m, s, se, a, ea, c, ec, depth + 1, ncut, cut);
+  Rc = MortarRegionAt(m, s, se, c);
+  MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut);
   cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
-  MortarSplit(m, s, se, c, ec, b, eb, depth + 1, ncut, cut);
+  MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut);
 }
 
 /* Appends the quadrature points of slave edge se, segment by segment, and
@@ -343,11 +405,11 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
   PetscFunctionBeginUser;
   cut[ncut++] = (MortarCut){se, -1, -1, -1.0};
   if (m->basis == MORTAR_BASIS_SUBLINEAR) { /* the weights' kink at the mid-edge node */
-    const PetscInt e0 = MortarFacing(m, s, se, 0.0);
-    MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 0.0, e0, 0, &ncut, cut);
+    const MortarRegion R0 = MortarRegionAt(m, s, se, 0.0);
+    MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0), 0.0, R0, 0, &ncut, cut);
     cut[ncut++] = (MortarCut){se, -1, -1, 0.0};
-    MortarSplit(m, s, se, 0.0, e0, 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
-  } else MortarSplit(m, s, se, -1.0, MortarFacing(m, s, se, -1.0), 1.0, MortarFacing(m, s, se, 1.0), 0, &ncut, cut);
+    MortarSplit(m, s, se, 0.0, R0, 1.0, MortarRegionAt(m, s, se, 1.0), 0, &ncut, cut);
+  } else MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0), 1.0, MortarRegionAt(m, s, se, 1.0), 0, &ncut, cut);
   cut[ncut++] = (MortarCut){se, -1, -1, 1.0};
   if (*np + (ncut - 1) * m->nq > *npmax) {
     MortarPoint *grown;
