@@ -1,10 +1,16 @@
 """Patch test: on distorted Tri6 and Quad9 meshes with curved (quadratic) edges,
 inside and on the boundary, an affine displacement imposed on the boundary is
-reproduced at every node to 1e-10, the program's energy-norm and stress errors
-against it are round-off (measured 5e-15 relative, bound 1e-10), and the
-energy equals the exact strain energy W(eps) * area, with the area of the
-curved domain computed here independently (Green's theorem on the quadratic
-boundary edges, Simpson's rule being exact for the cubic integrand)."""
+reproduced at every node, the program's energy-norm and stress errors against
+it are round-off, and the energy equals the exact strain energy W(eps) * area,
+with the area of the curved domain computed here independently (Green's
+theorem on the quadratic boundary edges, Simpson's rule being exact for the
+cubic integrand). A wrong isoparametric map of a curved edge, a wrong Jacobian
+or a constitutive law off plane strain each leave errors of 1e-4 and more.
+
+Bounds about 3 times the largest measured over the two meshes and 1 and 2
+ranks (all round-off): nodal displacement 1.7e-15 of max |u| (bound 5e-15),
+energy 1.1e-15 relative (3.3e-15), energy-norm error 4.8e-15 (1.4e-14), stress
+error 3.8e-15 (1.1e-14)."""
 import subprocess
 
 import numpy as np
@@ -83,7 +89,7 @@ def test_patch(quads, ranks, tmp_path):
     bedges = distort(nodes, elems, h, seed=11 + quads)
     msh22.write(msh, names, nodes, elems)
     area = area_of(bedges, nodes)
-    assert abs(area - 1.0) > 1e-4, "the boundary should be curved"
+    assert abs(area - 1.0) > 3e-4, "the boundary should be curved"  # measured 7.9e-4 (tri6), 5.6e-3 (quad9)
     r = run_contact(["-options_file", "meshes/square/square.opts", "-square_mesh", msh,
                      "-square_exact", "affine", "-square_exact_params", ",".join(map(str, A)),
                      "-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "lu",
@@ -93,12 +99,13 @@ def test_patch(quads, ranks, tmp_path):
         u = f["bodies/square/displacement"][...]
     exact = np.stack([A[0] + A[1] * x[:, 0] + A[2] * x[:, 1], A[3] + A[4] * x[:, 0] + A[5] * x[:, 1]], axis=1)
     scale = np.abs(exact).max()
-    print(f"max nodal error {np.abs(u - exact).max() / scale:.2e}, area {area:.6f}, energy {r.summary['energy']:.15e} vs {strain_energy_density() * area:.15e}")
-    assert np.abs(u - exact).max() <= 1e-10 * scale
     w = strain_energy_density()
-    assert abs(r.summary["energy"] - w * area) <= 1e-10 * w * area
+    print(f"max nodal error {np.abs(u - exact).max() / scale:.2e}, area {area:.6f}, energy {r.summary['energy']:.15e} "
+          f"vs {w * area:.15e} ({abs(r.summary['energy'] / (w * area) - 1):.1e})")
+    assert np.abs(u - exact).max() <= 5e-15 * scale
+    assert abs(r.summary["energy"] - w * area) <= 3.3e-15 * w * area
     # the program's own errors against the affine solution (its gradient and stress on the curved cells)
     b = r.summary["bodies"]["square"]
     print(f"relative energy-norm error {b['energy_error'] / b['energy_norm']:.1e}, stress {b['stress_l2_error'] / b['stress_l2_norm']:.1e}")
-    assert b["energy_error"] <= 1e-10 * b["energy_norm"]
-    assert b["stress_l2_error"] <= 1e-10 * b["stress_l2_norm"]
+    assert b["energy_error"] <= 1.4e-14 * b["energy_norm"]
+    assert b["stress_l2_error"] <= 1.1e-14 * b["stress_l2_norm"]
