@@ -5,7 +5,6 @@ independent reference: Hertz, a rigid translation, exact similarity under a
 change of units, or another run of the same model.
 
 The slow cases (marked `stress`) run in `make stress`, not in `make test`."""
-import json
 import math
 import subprocess
 
