@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from conftest import run_contact
-from test_patch_contact import OPTS as PATCH, SOLVE as PATCH_SOLVE, scene as patch_scene
+from test_patch_contact import EPS, OPTS as PATCH, SOLVE as PATCH_SOLVE, scene as patch_scene, tolerances
 
 import profile_metrics as pm
 
@@ -58,13 +58,15 @@ def current_weights(x):
 @pytest.mark.parametrize("slave", ["first", "second", "both"])
 def test_force_balance(runs, slave):
     """The pair's nodal contact forces on one surface sum to minus those on the
-    other (summed here: measured 1.3e-16, 1.3e-16 and 3.8e-18 relative at
-    h = 0.1; bound 4e-16), their norm is the JSON's contact force (measured
-    1.1e-16; bound 3.3e-16), each sum the JSON's force on its surface (measured
-    2.6e-16 of |F|; bound 8e-16); every surface has a profile whose peak is
-    Hertz's p_max for the force to 15 % (measured +3.2 to +6.1 %): a master
-    left without its transferred pressure, or given the slave's unscaled,
-    fails it."""
+    other, their norm is the JSON's contact force, each sum the JSON's force on
+    its surface, all to round-off: 100 EPS of |F| (measured at h = 0.1 over
+    the OpenBLAS kernels Nehalem, Sandybridge, Haswell (= Zen) and SkylakeX
+    (= this machine's default): balance up to 2.6e-16 (Nehalem, both), the
+    JSON's force up to 2.2e-16 (Sandybridge, Haswell), per surface up to
+    2.6e-16: 1 or 2 ulp; the margin is for another CPU's summation order);
+    every surface has a profile whose peak is Hertz's p_max for the force to
+    15 % (measured +3.2 to +6.1 %): a master left without its transferred
+    pressure, or given the slave's unscaled, fails it."""
     r = runs(slave)
     surf = surfaces(r)
     F = {k: v["node_force"].sum(axis=0) for k, v in surf.items()}
@@ -75,11 +77,11 @@ def test_force_balance(runs, slave):
     print(f"  |F| against the JSON's P {abs(np.linalg.norm(fa) / r.summary['contact_force'] - 1):.1e}; per surface "
           f"{[float(np.abs(F[x['body'] + '_' + x['group']] - x['force']).max() / np.linalg.norm(fa)) for x in surfs]}; "
           f"peak / Hertz's - 1 {[x['pmax'] / r.summary['hertz_pmax'] - 1 for x in surfs]}")
-    assert np.linalg.norm(fa + fb) <= 4e-16 * np.linalg.norm(fa)
-    assert np.linalg.norm(fa) == pytest.approx(r.summary["contact_force"], rel=3.3e-16)
+    assert np.linalg.norm(fa + fb) <= 100 * EPS * np.linalg.norm(fa)
+    assert np.linalg.norm(fa) == pytest.approx(r.summary["contact_force"], rel=100 * EPS)
     for s in surfs:
         k = f"{s['body']}_{s['group']}"
-        np.testing.assert_allclose(F[k], s["force"], rtol=0, atol=8e-16 * np.linalg.norm(fa))
+        np.testing.assert_allclose(F[k], s["force"], rtol=0, atol=100 * EPS * np.linalg.norm(fa))
         assert s["slave"] == bool(surf[k]["slave"]) == (slave == "both" or (slave == "first") == (s["body"] == "indenter"))
         assert len(surf[k]["node_s"]) > 0
         assert abs(s["pmax"] / r.summary["hertz_pmax"] - 1) <= 0.15
@@ -88,9 +90,12 @@ def test_force_balance(runs, slave):
 def test_patch_master_exact(tmp_path):
     """Flat patch, non-matching meshes (the Quad9 lower block the slave): the
     master's pressure is the exact uniform p at every node, its weighted gap
-    -p/k_p, to 7e-13 relative (measured 2.3e-13 and 2.4e-13: round-off, the
-    penetration 4e-6 a difference of displacements of 0.015), its weights sum to
-    the width W = 1 to 3 ulp (measured 0), one sample per node of the upper
+    -p/k_p, to round-off: test_patch_contact's bound for the slave, 64 EPS of
+    d / (p/k_p) = 5.4e-11 relative, the penetration 4e-6 being a difference of
+    displacements of d = 0.015 (measured over the OpenBLAS kernels 2.3e-13
+    (SkylakeX, this machine's default) to 3.1e-13 pressure and 3.6e-13 gap
+    (Nehalem)); its weights sum to the width W = 1 to 100 EPS (measured 0 to
+    2.2e-16 = 1 ulp), one sample per node of the upper
     block's interface edge (counted in the mesh's geometry)."""
     s = patch_scene({})
     r = run_contact(["-options_file", PATCH, "-contact_formulation", "mortar"] + PATCH_SOLVE, tmp_path)
@@ -103,9 +108,10 @@ def test_patch_master_exact(tmp_path):
     print(f"gap {np.abs(-gap - s['p'] / s['kp']).max() / (s['p'] / s['kp']):.1e}, weights {abs(w.sum() - s['W']):.1e}, "
           f"{len(p)} samples, {nodes} nodes")
     assert m["slave"] == 0 and len(p) == nodes
-    assert err <= 7e-13
-    assert np.abs(-gap - s["p"] / s["kp"]).max() <= 7e-13 * s["p"] / s["kp"]
-    assert abs(w.sum() - s["W"]) <= 6.7e-16
+    tol = tolerances(s)
+    assert err <= tol["p"]
+    assert np.abs(-gap - s["p"] / s["kp"]).max() <= tol["pen"] * s["p"] / s["kp"]
+    assert abs(w.sum() - s["W"]) <= 100 * EPS * s["W"]
 
 
 def test_master_peak_matches_slave(runs):
