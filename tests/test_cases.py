@@ -9,7 +9,9 @@ Adding a case needs no code. Case keys:
   [[expect]]      key (dotted, in the JSON summary) or dataset (in the HDF5),
                   value, rtol and/or atol, reduce (max, min, maxabs) for lists,
                   source (why the value is right, and the measured figure the
-                  tolerance guards: 2-3 times it; -s prints each error)
+                  tolerance guards: 2-3 times it, or for a round-off figure
+                  a multiple of EPS times its scale, measured over several
+                  OpenBLAS kernels (OPENBLAS_CORETYPE); -s prints each error)
   [compare_ranks] keys that must agree between the rank counts, rtol
   [convergence]   option, values: one run per value of the option, and
   [[convergence.rate]] key, min_rate, source: the observed order of key
