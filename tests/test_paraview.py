@@ -42,8 +42,10 @@ def paraview():
 
 def same(a, b):
     """Bit for bit: ParaView reads the HDF5 doubles themselves, and Warp By
-    Vector makes the same one addition X + u (measured difference 0 in every
-    array of both formulations and all three readers)."""
+    Vector makes the same one, correctly rounded, addition X + u (measured
+    difference 0 in every array of both formulations and all three readers,
+    with each of the OpenBLAS kernels Nehalem, Sandybridge, Haswell and
+    SkylakeX: no summation order enters, so no round-off allowance)."""
     a, b = np.asarray(a, float), np.asarray(b, float)
     assert a.shape == b.shape, (a.shape, b.shape)
     np.testing.assert_array_equal(a, b)
