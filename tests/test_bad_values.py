@@ -115,6 +115,9 @@ def mesh_dir(tmp_path_factory):
 
 @pytest.mark.parametrize("name,value", CASES, ids=[f"{n}={v}" for n, v in CASES])
 def test_bad_value(name, value, tmp_path, mesh_dir):
+    """Status 1, one line naming the option, no output: a value taken
+    silently (atof's 0 for "abc", a NaN that propagates, a negative size that
+    meshes forever) or a PETSc trace instead of the line fails it."""
     cmd = [str(BIN)] + SCENE + [f"-{name}", value, "-output", str(tmp_path / "o.h5"), "-summary",
                                 str(tmp_path / "o.json"), "-mesh_dir", str(mesh_dir)]
     p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)

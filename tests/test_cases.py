@@ -8,7 +8,10 @@ Adding a case needs no code. Case keys:
   ranks           list of rank counts; each [[expect]] is checked at each
   [[expect]]      key (dotted, in the JSON summary) or dataset (in the HDF5),
                   value, rtol and/or atol, reduce (max, min, maxabs) for lists,
-                  source (why the value is right)
+                  source (why the value is right, and the measured figure the
+                  tolerance guards: 2-3 times it, or for a round-off figure
+                  a multiple of EPS times its scale, measured over several
+                  OpenBLAS kernels (OPENBLAS_CORETYPE); -s prints each error)
   [compare_ranks] keys that must agree between the rank counts, rtol
   [convergence]   option, values: one run per value of the option, and
   [[convergence.rate]] key, min_rate, source: the observed order of key
@@ -42,6 +45,7 @@ def check_value(label, got, e):
         got = {"max": np.max, "min": np.min, "maxabs": lambda a: np.max(np.abs(a))}[e["reduce"]](got)
     err = np.abs(got - np.asarray(want, dtype=float))
     bound = atol + rtol * np.abs(np.asarray(want, dtype=float))
+    print(f"{label}: max error {np.max(err):.3e}, bound {np.max(bound):.3e}")
     assert np.all(err <= bound), (f"{label}: got {got if np.size(got) < 8 else '...'} want {want} "
                                   f"(max error {np.max(err):.3e} > tolerance; source: {e['source']})")
 
@@ -76,6 +80,9 @@ def test_case(path, tmp_path):
         cmp = case["compare_ranks"]
         ref = results[min(results)]
         for n, r in results.items():
+            if r is ref:
+                continue
             for key in cmp["keys"]:
                 a, b = lookup(ref.summary, key), lookup(r.summary, key)
+                print(f"{key}: {abs(a - b) / max(abs(a), abs(b), 1e-300):.1e} between {min(results)} and {n} ranks")
                 assert abs(a - b) <= cmp["rtol"] * max(abs(a), abs(b)), f"{key}: {a} at {min(results)} ranks, {b} at {n}"

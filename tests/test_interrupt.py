@@ -3,16 +3,19 @@ its files) leaves the earlier results intact and no temporary file behind, and
 says in one line in which phase it was interrupted (status 130 for SIGINT, 143
 for SIGTERM).
 
-The temporaries are created empty before meshing (the output set is checked
-and locked then); the write window is caught by polling the output directory
-for a temporary file with content and signalling the process as soon as one
-appears. Either way no temporary file and no lock file is left."""
+No clock: each signal is sent on an event of the run, never after a wait. The
+solve and the output phases are caught by the run's own -progress lines (the
+phase announced is the one the message must name); the meshing phase by a
+stand-in for Gmsh, first on PATH, that writes a partial mesh, says on a pipe
+that it runs, and blocks until it is killed."""
 import json
-import re
 import os
+import re
+import select
+import shutil
 import signal
 import subprocess
-import time
+import sys
 
 import pytest
 
@@ -22,19 +25,22 @@ SENTINEL = "earlier result\n"
 NAMES = ("out.h5", "out.xdmf", "out.json")
 
 
-def size(path):
-    try:
-        return path.stat().st_size
-    except FileNotFoundError:  # renamed meanwhile
-        return 0
-
-
 def start(tmp_path, h, *extra):
     for f in NAMES:
         (tmp_path / f).write_text(SENTINEL)
     cmd = [str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-mesh_size", str(h),
            "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json")] + list(extra)
     return subprocess.Popen(cmd, cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def signal_on(proc, marker, sig):
+    """Sends sig once the run's -progress reports a line containing marker;
+    False if the run ended without it."""
+    for line in proc.stderr:
+        if marker in line:
+            proc.send_signal(sig)
+            return True
+    return False
 
 
 def check_outcome(proc, tmp_path, phase=r"[\w -]+"):
@@ -61,17 +67,19 @@ def check_outcome(proc, tmp_path, phase=r"[\w -]+"):
 
 @pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
 def test_killed_while_writing(sig, tmp_path):
+    """Signalled as -progress announces the output: a defect in the removal of
+    the temporaries or in the renaming of the set shows as a file left behind or
+    an earlier result changed. The write (about 0.3 s at h = 0.04) may still
+    finish before the signal lands: then the run's new set is checked, and it is
+    tried again, up to 5 times."""
     hit = False
     for attempt in range(5):
         d = tmp_path / f"a{attempt}"
         d.mkdir()
-        proc = start(d, 0.04)
-        while proc.poll() is None:
-            if any(n.endswith(".tmp") and size(d / n) > 0 for n in os.listdir(d)):
-                proc.send_signal(sig)
-                break
-            time.sleep(0.0005)
-        hit = check_outcome(proc, d, "the output") or hit
+        proc = start(d, 0.04, "-progress")
+        assert signal_on(proc, "] output", sig), "the run ended without announcing its output"
+        hit = check_outcome(proc, d, "the output")
+        print(f"attempt {attempt + 1}: {'interrupted' if hit else 'finished first'}")
         if hit:
             break
     assert hit, "the write was never interrupted in 5 attempts"
@@ -82,29 +90,59 @@ def test_killed_while_solving(tmp_path):
     solve at h = 0.02 takes 8 or more): no waiting on the clock, so a faster
     or slower machine signals in the same phase, which the line must name."""
     proc = start(tmp_path, 0.02, "-progress")
-    for line in proc.stderr:
-        if "solve: iteration   1," in line:
-            proc.send_signal(signal.SIGTERM)
-            break
-    else:
+    if not signal_on(proc, "solve: iteration   1,", signal.SIGTERM):
         pytest.fail("the run ended without reporting its first Newton iteration")
     assert check_outcome(proc, tmp_path, "the solve")
+
+
+# A stand-in for Gmsh: the unrolling of the geometry (gmsh -0) by the real one;
+# for a mesh, a partial file at its -o path, "meshing" on the pipe whose write
+# end is the descriptor NOTIFY_FD, then a read of its standard input, which
+# the test holds open: it runs until it is killed.
+FAKE_GMSH = """#!{python}
+import os, sys
+args = sys.argv[1:]
+if "-0" in args:
+    os.execv({gmsh!r}, [{gmsh!r}] + args)
+with open(args[args.index("-o") + 1], "w") as f:
+    f.write("$MeshFormat\\n2.2 0 8\\n")
+os.write(int(os.environ["NOTIFY_FD"]), b"meshing\\n")
+sys.stdin.read()
+"""
 
 
 @pytest.mark.parametrize("sig,status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_while_meshing(sig, status, tmp_path):
     """Ctrl-C while Gmsh runs is not lost (the program waits for Gmsh itself,
     not through system(), which ignores SIGINT): Gmsh is stopped, its partial
-    mesh removed, and the one line names the phase."""
+    mesh removed, and the one line names the phase. Signalled once the stand-in
+    Gmsh has written its partial mesh and said so."""
+    gmsh = shutil.which("gmsh")
+    assert gmsh, "gmsh not on PATH"
+    fake = tmp_path / "bin" / "gmsh"
+    fake.parent.mkdir()
+    fake.write_text(FAKE_GMSH.format(python=sys.executable, gmsh=gmsh))
+    fake.chmod(0o755)
     mesh_dir = tmp_path / "meshes"
-    cmd = [str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.006", "-mesh_dir", str(mesh_dir),
+    cmd = [str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.3", "-mesh_dir", str(mesh_dir),
            "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json")]
-    proc = subprocess.Popen(cmd, cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 60
-    while time.time() < deadline and not (mesh_dir.exists() and any(p.suffix == ".log" for p in mesh_dir.iterdir())):
-        time.sleep(0.01)
-    proc.send_signal(sig)  # Gmsh runs: its log is there, its mesh at h = 0.006 takes seconds
-    rc = proc.wait(timeout=120)
+    rfd, wfd = os.pipe()
+    env = dict(ENV, PATH=f"{fake.parent}{os.pathsep}{ENV['PATH']}", NOTIFY_FD=str(wfd))
+    proc = subprocess.Popen(cmd, cwd=ROOT, env=env, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True, pass_fds=(wfd,))
+    os.close(wfd)
+    try:
+        # a guard against a hang only (the stand-in answers within a second)
+        ready, _, _ = select.select([rfd], [], [], 300)
+        said = os.read(rfd, 100) if ready else b""
+        assert said == b"meshing\n", f"the stand-in Gmsh never said it runs ({said!r})"
+        assert [p.name for p in mesh_dir.iterdir() if p.suffix == ".msh"], "no partial mesh to remove"
+        proc.send_signal(sig)
+        rc = proc.wait(timeout=120)
+    finally:
+        proc.stdin.close()  # ends a stand-in left running by a failure
+        proc.kill()
+        os.close(rfd)
     err = proc.stderr.read()
     assert rc == status, err
     assert err.strip() == "contact: interrupted during meshing; no output written", err

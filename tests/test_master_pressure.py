@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from conftest import run_contact
-from test_patch_contact import OPTS as PATCH, SOLVE as PATCH_SOLVE, scene as patch_scene
+from test_patch_contact import EPS, OPTS as PATCH, SOLVE as PATCH_SOLVE, scene as patch_scene, tolerances
 
 import profile_metrics as pm
 
@@ -58,38 +58,60 @@ def current_weights(x):
 @pytest.mark.parametrize("slave", ["first", "second", "both"])
 def test_force_balance(runs, slave):
     """The pair's nodal contact forces on one surface sum to minus those on the
-    other (summed here: measured 1.3e-16, 3.2e-18 and 2.6e-16 relative at
-    h = 0.1), and to the JSON's force on each surface; every surface has a
-    profile."""
+    other, their norm is the JSON's contact force, each sum the JSON's force on
+    its surface, all to round-off: 100 EPS of |F| (measured at h = 0.1 over
+    the OpenBLAS kernels Nehalem, Sandybridge, Haswell (= Zen) and SkylakeX
+    (= this machine's default): balance up to 2.6e-16 (Nehalem, both), the
+    JSON's force up to 2.2e-16 (Sandybridge, Haswell), per surface up to
+    2.6e-16: 1 or 2 ulp; the margin is for another CPU's summation order);
+    every surface has a profile whose peak is Hertz's p_max for the force to
+    15 % (measured +3.2 to +6.1 %): a master left without its transferred
+    pressure, or given the slave's unscaled, fails it."""
     r = runs(slave)
     surf = surfaces(r)
     F = {k: v["node_force"].sum(axis=0) for k, v in surf.items()}
     fa, fb = F["indenter_contact"], F["block_contact"]
     print(f"-contact_mortar_slave {slave}: indenter {fa}, block {fb}, "
           f"|sum| / |F| = {np.linalg.norm(fa + fb) / np.linalg.norm(fa):.1e}")
-    assert np.linalg.norm(fa + fb) <= 1e-10 * np.linalg.norm(fa)
-    assert np.linalg.norm(fa) == pytest.approx(r.summary["contact_force"], rel=1e-10)
-    for s in r.summary["contact"]["interface"]["surfaces"]:
+    surfs = r.summary["contact"]["interface"]["surfaces"]
+    print(f"  |F| against the JSON's P {abs(np.linalg.norm(fa) / r.summary['contact_force'] - 1):.1e}; per surface "
+          f"{[float(np.abs(F[x['body'] + '_' + x['group']] - x['force']).max() / np.linalg.norm(fa)) for x in surfs]}; "
+          f"peak / Hertz's - 1 {[x['pmax'] / r.summary['hertz_pmax'] - 1 for x in surfs]}")
+    assert np.linalg.norm(fa + fb) <= 100 * EPS * np.linalg.norm(fa)
+    assert np.linalg.norm(fa) == pytest.approx(r.summary["contact_force"], rel=100 * EPS)
+    for s in surfs:
         k = f"{s['body']}_{s['group']}"
-        np.testing.assert_allclose(F[k], s["force"], rtol=0, atol=1e-12 * np.linalg.norm(fa))
+        np.testing.assert_allclose(F[k], s["force"], rtol=0, atol=100 * EPS * np.linalg.norm(fa))
         assert s["slave"] == bool(surf[k]["slave"]) == (slave == "both" or (slave == "first") == (s["body"] == "indenter"))
-        assert len(surf[k]["node_s"]) > 0 and s["pmax"] > 90
+        assert len(surf[k]["node_s"]) > 0
+        assert abs(s["pmax"] / r.summary["hertz_pmax"] - 1) <= 0.15
 
 
 def test_patch_master_exact(tmp_path):
     """Flat patch, non-matching meshes (the Quad9 lower block the slave): the
     master's pressure is the exact uniform p at every node, its weighted gap
-    -p/k_p, its weights sum to the width, all to 1e-8 relative (measured 2.0e-13)."""
+    -p/k_p, to round-off: test_patch_contact's bound for the slave, 64 EPS of
+    d / (p/k_p) = 5.4e-11 relative, the penetration 4e-6 being a difference of
+    displacements of d = 0.015 (measured over the OpenBLAS kernels 2.3e-13
+    (SkylakeX, this machine's default) to 3.1e-13 pressure and 3.6e-13 gap
+    (Nehalem)); its weights sum to the width W = 1 to 100 EPS (measured 0 to
+    2.2e-16 = 1 ulp), one sample per node of the upper
+    block's interface edge (counted in the mesh's geometry)."""
     s = patch_scene({})
     r = run_contact(["-options_file", PATCH, "-contact_formulation", "mortar"] + PATCH_SOLVE, tmp_path)
     m = surfaces(r)["upper_contact"]
+    with r.h5() as f:
+        nodes = int(np.sum(np.abs(f["bodies/upper/geometry"][:, 1]) < 1e-12))  # on the interface y = 0
     p, gap, w = m["node_pressure"], m["node_gap"], m["node_weight"]
     err = np.abs(p - s["p"]).max() / s["p"]
     print(f"master pressure in [{p.min():.15g}, {p.max():.15g}] (exact {s['p']:.15g}): max rel error {err:.1e}")
-    assert m["slave"] == 0 and len(p) == 13
-    assert err <= 1e-8
-    assert np.abs(-gap - s["p"] / s["kp"]).max() <= 1e-8 * s["p"] / s["kp"]
-    assert abs(w.sum() - s["W"]) <= 1e-12
+    print(f"gap {np.abs(-gap - s['p'] / s['kp']).max() / (s['p'] / s['kp']):.1e}, weights {abs(w.sum() - s['W']):.1e}, "
+          f"{len(p)} samples, {nodes} nodes")
+    assert m["slave"] == 0 and len(p) == nodes
+    tol = tolerances(s)
+    assert err <= tol["p"]
+    assert np.abs(-gap - s["p"] / s["kp"]).max() <= tol["pen"] * s["p"] / s["kp"]
+    assert abs(w.sum() - s["W"]) <= 100 * EPS * s["W"]
 
 
 def test_master_peak_matches_slave(runs):
@@ -113,7 +135,9 @@ def test_master_peak_matches_slave(runs):
 
 
 def test_ranks_agree(runs):
-    """1 and 2 ranks: the master's node datasets agree to 1e-8 (measured 1e-12)."""
+    """1 and 2 ranks: the master's node datasets agree to 1e-8 (measured at
+    most 9.0e-13, the pressure): a transfer that misses the slave edges of the
+    other rank shows."""
     a, b = surfaces(runs("first", 1))["block_contact"], surfaces(runs("first", 2))["block_contact"]
     for n in ("node_s", "node_x", "node_pressure", "node_force", "node_weight"):
         scale = np.abs(a[n]).max()
@@ -126,8 +150,8 @@ def test_ranks_agree(runs):
 def test_layout_as_slave(runs):
     """The master's node datasets are the slave's (names, shapes, quadratic
     cells through the nodes); profile_metrics reads it with masters=True only,
-    and its transferred force over the weights is the slave's normal force
-    (measured 1.2e-6 relative)."""
+    and its transferred force over the weights is the slave's normal force to
+    3e-6 (measured 1.2e-6 relative: the master's weights on its own surface)."""
     r = runs("first")
     surf = surfaces(r)
     m, s = surf["block_contact"], surf["indenter_contact"]
@@ -142,6 +166,6 @@ def test_layout_as_slave(runs):
     np.testing.assert_array_equal(prof["block_contact"][1], m["node_pressure"])
     pm_, ps = (np.sum(v["node_pressure"] * v["node_weight"]) for v in (m, s))
     print(f"int p dS: master {pm_:.10g}, slave {ps:.10g}")
-    assert abs(pm_ / ps - 1) <= 1e-5
+    assert abs(pm_ / ps - 1) <= 3e-6
     xdmf = r.output_path.with_suffix(".xdmf").read_text()
     assert 'Grid Name="interface:block:contact"' in xdmf and "block_contact/node_cells" in xdmf

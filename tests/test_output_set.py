@@ -6,7 +6,6 @@ import json
 import os
 import re
 import subprocess
-import time
 
 import h5py
 from conftest import BIN, ENV, ROOT
@@ -34,15 +33,10 @@ def run_ids(d):
     return {"h5": h5, "json": json.loads((d / "out.json").read_text())["run_id"], "xdmf": m.group(1)}
 
 
-def wait_for(path, proc, timeout=60):
-    t0 = time.time()
-    while not path.exists():
-        assert proc.poll() is None, proc.communicate()
-        assert time.time() - t0 < timeout, f"{path} never appeared"
-        time.sleep(0.01)
-
-
 def test_one_run_id_per_set(tmp_path):
+    """The three files carry one run id and describe one mesh (a file renamed
+    from another run's temporary, or a stale XDMF, would not), and neither the
+    lock nor a temporary is left."""
     proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     ids = run_ids(tmp_path)
@@ -126,12 +120,20 @@ def test_stale_lock_taken_over(tmp_path):
 
 
 def test_killed_run_lock_taken_over(tmp_path):
-    run = subprocess.Popen(command(tmp_path, 0.02), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL)
-    wait_for(tmp_path / "out.lock", run)
-    run.kill()
+    """A run killed by SIGKILL (no handler runs) leaves its lock; the next run
+    takes it over, naming the dead holder's pid, and writes its whole set. The
+    kill is sent once the first run reports its first Newton iteration
+    (-progress), when it holds the lock: no waiting on the clock."""
+    run = subprocess.Popen(command(tmp_path, 0.02, "-progress"), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, text=True)
+    for line in run.stderr:
+        if "solve: iteration   1," in line:
+            run.kill()
+            break
     run.wait()
+    assert run.returncode == -9, f"the first run was not killed while solving (exit {run.returncode})"
     assert (tmp_path / "out.lock").exists()
     proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0 and f"pid={run.pid}" in proc.stderr, proc.stderr
+    assert len(set(run_ids(tmp_path).values())) == 1
     assert sorted(os.listdir(tmp_path)) == sorted(SET)

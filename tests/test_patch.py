@@ -1,10 +1,21 @@
 """Patch test: on distorted Tri6 and Quad9 meshes with curved (quadratic) edges,
 inside and on the boundary, an affine displacement imposed on the boundary is
-reproduced at every node to 1e-10, the program's energy-norm and stress errors
-against it are round-off (measured 5e-15 relative, bound 1e-10), and the
-energy equals the exact strain energy W(eps) * area, with the area of the
-curved domain computed here independently (Green's theorem on the quadratic
-boundary edges, Simpson's rule being exact for the cubic integrand)."""
+reproduced at every node, the program's energy-norm and stress errors against
+it are round-off, and the energy equals the exact strain energy W(eps) * area,
+with the area of the curved domain computed here independently (Green's
+theorem on the quadratic boundary edges, Simpson's rule being exact for the
+cubic integrand). A wrong isoparametric map of a curved edge, a wrong Jacobian
+or a constitutive law off plane strain each leave errors of 1e-4 and more.
+
+All four are round-off, so their bounds are multiples of the machine epsilon
+(EPS) times the quantity's own scale, generous enough for another CPU's BLAS
+kernels and summation order, not a few times one machine's figure. Measured
+largest over the two meshes, 1 and 2 ranks and the OpenBLAS kernels Nehalem,
+Sandybridge, Haswell (= Zen) and SkylakeX (= this machine's default):
+nodal displacement 1.7e-15 = 7.8 EPS of max |u| (bound 256 EPS), energy
+3.3e-15 = 15 EPS relative (Haswell; bound 256 EPS), energy-norm error 5.6e-15
+= 25 EPS (Haswell; bound 1000 EPS), stress error 4.3e-15 = 19 EPS (Haswell;
+bound 1000 EPS: the gradient's round-off, scaled by 1/h)."""
 import subprocess
 
 import numpy as np
@@ -12,6 +23,8 @@ import pytest
 
 import msh22
 from conftest import ROOT, run_contact
+
+EPS = np.finfo(float).eps
 
 E, NU = 1000.0, 0.3
 A = [1e-3, 2e-3, -1e-3, -2e-3, 5e-4, 3e-3]   # u = (a0 + a1 x + a2 y, a3 + a4 x + a5 y)
@@ -83,7 +96,7 @@ def test_patch(quads, ranks, tmp_path):
     bedges = distort(nodes, elems, h, seed=11 + quads)
     msh22.write(msh, names, nodes, elems)
     area = area_of(bedges, nodes)
-    assert abs(area - 1.0) > 1e-4, "the boundary should be curved"
+    assert abs(area - 1.0) > 3e-4, "the boundary should be curved"  # measured 7.9e-4 (tri6), 5.6e-3 (quad9)
     r = run_contact(["-options_file", "meshes/square/square.opts", "-square_mesh", msh,
                      "-square_exact", "affine", "-square_exact_params", ",".join(map(str, A)),
                      "-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "lu",
@@ -93,12 +106,13 @@ def test_patch(quads, ranks, tmp_path):
         u = f["bodies/square/displacement"][...]
     exact = np.stack([A[0] + A[1] * x[:, 0] + A[2] * x[:, 1], A[3] + A[4] * x[:, 0] + A[5] * x[:, 1]], axis=1)
     scale = np.abs(exact).max()
-    print(f"max nodal error {np.abs(u - exact).max() / scale:.2e}, area {area:.6f}, energy {r.summary['energy']:.15e} vs {strain_energy_density() * area:.15e}")
-    assert np.abs(u - exact).max() <= 1e-10 * scale
     w = strain_energy_density()
-    assert abs(r.summary["energy"] - w * area) <= 1e-10 * w * area
+    print(f"max nodal error {np.abs(u - exact).max() / scale:.2e}, area {area:.6f}, energy {r.summary['energy']:.15e} "
+          f"vs {w * area:.15e} ({abs(r.summary['energy'] / (w * area) - 1):.1e})")
+    assert np.abs(u - exact).max() <= 256 * EPS * scale
+    assert abs(r.summary["energy"] - w * area) <= 256 * EPS * w * area
     # the program's own errors against the affine solution (its gradient and stress on the curved cells)
     b = r.summary["bodies"]["square"]
     print(f"relative energy-norm error {b['energy_error'] / b['energy_norm']:.1e}, stress {b['stress_l2_error'] / b['stress_l2_norm']:.1e}")
-    assert b["energy_error"] <= 1e-10 * b["energy_norm"]
-    assert b["stress_l2_error"] <= 1e-10 * b["stress_l2_norm"]
+    assert b["energy_error"] <= 1000 * EPS * b["energy_norm"]
+    assert b["stress_l2_error"] <= 1000 * EPS * b["stress_l2_norm"]
