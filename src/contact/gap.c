@@ -59,6 +59,29 @@ static void ContactGapNormal(const ContactSurface *M, const PetscReal xs[2], Con
   P->gap  = (xs[0] - P->xm[0]) * P->n[0] + (xs[1] - P->xm[1]) * P->n[1];
 }
 
+/* The side (+1 outside, -1 inside the master body) of a point at d from the
+   node at end j of master edge e, for a point whose closest master point is
+   that node: the sign of d along the node's normal, the mean of the two
+   edges' (the edge's end tangent corrected by mcorr into the mean of its own
+   and its neighbour's, as the blend does). Near the node, in its fan, every
+   normal between the two edges' gives the same sign; a point deeper than the
+   surface's scallops (an iterate with a large overlap) may lie beyond the
+   tangent line of one edge, tilted at a corner, and not of the mean, which
+   keeps the sign of the gap continuous across the fan. */
+static PetscReal ContactGapNodeSide(const ContactSurface *M, PetscInt e, PetscInt j, const PetscReal d[2])
+{
+  const PetscReal  dNend[2][3] = {{-1.5, -0.5, 2.0}, {0.5, 1.5, -2.0}};
+  const PetscReal *C           = &M->mcorr[14 * e + 7 * j];
+  const PetscInt  *mn          = &M->mnodes[7 * e];
+  PetscReal        t[2]        = {0, 0}, n[2];
+
+  for (PetscInt k = 0; k < 7; ++k)
+    for (PetscInt c = 0; c < 2; ++c) t[c] += ((k < 3 ? dNend[j][k] : 0.0) + C[k]) * M->x[2 * mn[k] + c];
+  n[0] = M->esign[e] * t[1];
+  n[1] = -M->esign[e] * t[0];
+  return d[0] * n[0] + d[1] * n[1] >= 0 ? 1.0 : -1.0;
+}
+
 /* The gap at the closest point P->eta of master edge P->me. */
 static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], ContactGap *P)
 {
@@ -73,7 +96,7 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
        convex corner) */
     const PetscReal d[2] = {xs[0] - P->xm[0], xs[1] - P->xm[1]}, dist = PetscSqrtReal(d[0] * d[0] + d[1] * d[1]);
     if (dist > 0) {
-      const PetscReal sg = P->gap >= 0 ? 1.0 : -1.0;
+      const PetscReal sg = ContactGapNodeSide(M, P->me, P->eta > 0 ? 1 : 0, d);
       P->gap             = sg * dist;
       P->n[0]            = sg * d[0] / dist;
       P->n[1]            = sg * d[1] / dist;

@@ -36,7 +36,7 @@
    deeply penetrated iterate), the closest point jumps from one feature to
    another where their distances tie: the piece is cut at that tie, found by
    bisection on the difference of the squared distances. Every piece is
-   checked at its midpoint, and halved where it is not uniform, so that each
+   checked at its Gauss points, and halved where it is not uniform, so that each
    segment's integrand is smooth. Each segment takes a Gauss rule of
    -contact_quadrature_points points (4 by default: degree 7).
 
@@ -351,9 +351,23 @@ static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, Pets
   return MortarTie(m, s, se, a, Ra, b, Rb);
 }
 
+/* Whether the closest point of slave edge se stays in region R over [a, b],
+   checked at the piece's Gauss points (where its integrand is evaluated) and
+   its midpoint. */
+static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscReal b, MortarRegion R)
+{
+  const PetscReal h = 0.5 * (b - a), c = 0.5 * (a + b);
+
+  if (!MortarRegionSame(MortarRegionAt(m, s, se, c), R)) return PETSC_FALSE;
+  for (PetscInt q = 0; q < m->nq; ++q)
+    if (!MortarRegionSame(MortarRegionAt(m, s, se, c + h * m->xq[q]), R)) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 /* Splits [a, b] of slave edge se, whose ends lie in regions Ra and Rb,
    until the closest point stays in one region over each piece (checked at
-   the pieces' midpoints), so that every piece's integrand is smooth;
+   the pieces' Gauss points and midpoints), so that every piece's integrand
+   is smooth;
    appends the cuts to cut[]. A transition that is not found, or whose
    pieces are not uniform, is halved (to 2^-12 of the edge at most). */
 static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
@@ -363,8 +377,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
 
   if (depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 2) return;
   if (MortarRegionSame(Ra, Rb)) {
-    Rc = MortarRegionAt(m, s, se, 0.5 * (a + b));
-    if (MortarRegionSame(Rc, Ra)) return;
+    if (MortarPieceUniform(m, s, se, a, b, Ra)) return;
   } else if (Ra.kind != REGION_NONE && Rb.kind != REGION_NONE) {
     const ContactSurface *M = &m->b.S[1 - s];
     PetscInt              ea, eb;
@@ -382,7 +395,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
             return;
           }
     c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb);
-    if (c > a && c < b && MortarRegionSame(MortarRegionAt(m, s, se, 0.5 * (a + c)), Ra) && MortarRegionSame(MortarRegionAt(m, s, se, 0.5 * (c + b)), Rb)) {
+    if (c > a && c < b && MortarPieceUniform(m, s, se, a, c, Ra) && MortarPieceUniform(m, s, se, c, b, Rb)) {
       cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
       return;
     }
