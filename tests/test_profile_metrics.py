@@ -45,6 +45,7 @@ def test_hertz_profile_has_no_oscillation(grid):
     the uniform grid), or that subtracts a Hertz profile with another centre,
     half-width or peak, or at shifted samples."""
     s = GRIDS[grid]()
+    print(f"{grid}: sampled peak {hertz(s).max() - PMAX:.2e} from PMAX")
     assert np.isclose(hertz(s).max(), PMAX, rtol=0, atol=1e-12)
     osc = pm.oscillation_index(s, hertz(s), A)
     print(f"{grid}: {len(s)} samples, index {osc:.2e}")
@@ -87,8 +88,10 @@ def test_neighbour_deviation():
     0 on a straight line, 2 eps on an alternating +-eps. Catches an off-by-one
     between the sample and its neighbours."""
     x = np.linspace(0.0, 1.0, 9)
-    assert np.allclose(pm.neighbour_deviation(3 * x + 1), 0.0, atol=1e-15)
     alt = 0.25 * (-1.0) ** np.arange(9)
+    print(f"line {np.abs(pm.neighbour_deviation(3 * x + 1)).max():.2e}, "
+          f"alternating {np.abs(pm.neighbour_deviation(alt) - 2 * alt[1:-1]).max():.2e}")
+    assert np.allclose(pm.neighbour_deviation(3 * x + 1), 0.0, atol=1e-15)
     assert np.allclose(pm.neighbour_deviation(alt), 2 * alt[1:-1], rtol=0, atol=1e-15)
 
 
@@ -109,6 +112,7 @@ def test_l2_distance_of_itself_and_scaled(grid):
     p, w = hertz(s), trapezoid(s)
     assert pm.l2_distance((s, p), (s, p, w)) == 0.0
     for d in (0.01, -0.03, 0.2):
+        print(f"{grid}: d = {d}: {abs(pm.l2_distance((s, (1 + d) * p), (s, p, w)) - abs(d)):.2e} off")
         assert abs(pm.l2_distance((s, (1 + d) * p), (s, p, w)) - abs(d)) <= 1e-12
 
 
@@ -121,6 +125,7 @@ def test_l2_distance_interpolates_linearly():
     pc = np.abs(np.sin(3 * sc)) + 1.0
     sf = np.linspace(-1.0, 1.0, 101)
     pf = np.interp(sf, sc, pc)
+    print(f"distance {pm.l2_distance((sc, pc), (sf, pf, trapezoid(sf))):.2e}")
     assert pm.l2_distance((sc, pc), (sf, pf, trapezoid(sf))) <= 1e-14
 
 
@@ -161,8 +166,10 @@ def test_half_width_with_gaps(grid, s):
     tol = 0.5 * (blo + bhi)
     hw = pm.half_width(s, p, trapezoid(s), hertz_gap(s))
     print(f"{grid}: half-width {hw:.6f} (a {A}), tolerance {tol:.4f}")
+    exact = abs(pm.half_width(s, p, trapezoid(s), np.abs(s - C0) - A) - A)
+    print(f"linear gap: half-width {exact:.2e} off")
     assert abs(hw - A) <= tol
-    assert abs(pm.half_width(s, p, trapezoid(s), np.abs(s - C0) - A) - A) <= 1e-12
+    assert exact <= 1e-12
 
 
 @pytest.mark.parametrize("grid, s", list(shifted_grids()))
@@ -175,5 +182,7 @@ def test_half_width_without_gaps(grid, s):
     lo = s[np.searchsorted(s, C0 - A) - 1:np.searchsorted(s, C0 - A) + 1].mean()
     hi = s[np.searchsorted(s, C0 + A) - 1:np.searchsorted(s, C0 + A) + 1].mean()
     hw = pm.half_width(s, hertz(s), trapezoid(s), None)
+    print(f"{grid}: half-width {hw:.6f}, {abs(hw - 0.5 * (hi - lo)):.2e} from the mid-points', {abs(hw - A):.4f} from a "
+          f"(bound {0.25 * (blo + bhi):.4f})")
     assert abs(hw - 0.5 * (hi - lo)) <= 1e-15
     assert abs(hw - A) <= 0.25 * (blo + bhi)
