@@ -14,6 +14,7 @@ from test_contact import RANK_DEPENDENT, flatten
 
 import profile_metrics as pm
 
+EPS = np.finfo(float).eps
 MORTAR = ["-contact_formulation", "mortar"]
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"] + MORTAR
 HS, HREF = list(HALF_MORTAR_H[:-1]), HALF_MORTAR_H[-1]   # 0.1, 0.06, 0.03, 0.015 and the finest, 0.005
@@ -114,7 +115,10 @@ def test_hertz_small(n, tmp_path):
 def test_ranks(tmp_path):
     """1, 2, 3 and 4 ranks: every number of the JSON summary (but timings, the
     run id, the rank count, the stopping residual) agrees to 1e-8 (a near-zero force
-    component to 1e-8 of the pair's force)."""
+    component to 1e-8 of the pair's force): measured over the OpenBLAS kernels
+    Nehalem, Sandybridge, Haswell and SkylakeX at most 1.6e-9, always a y
+    reaction (4.5e-7 of P, a sum that cancels) relative to itself. Catches a
+    figure that is one rank's share or sums a shared node twice."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-13"]
     runs = [run_contact(base, tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)]
     ref = flatten(runs[0].summary)
@@ -139,14 +143,19 @@ def test_ranks(tmp_path):
 def test_schur_step(tmp_path):
     """The Newton step through the Schur complement on the contact surfaces
     (the default on one rank) and a full factorisation per step give the same
-    answer: the mortar Hessian stays in the surface block."""
+    answer: the mortar Hessian stays in the surface block (an entry outside
+    it, dropped by the Schur step, gives another Newton path, which stops
+    elsewhere within the stopping test). Measured over the OpenBLAS kernels Nehalem,
+    Sandybridge, Haswell and SkylakeX: P 1.5e-14 to 1.7e-13 apart, bound 5e-13
+    (was 1e-8); the energy 3.3e-16 to 6.7e-16 = 3 EPS, bound 100 EPS (was
+    1e-10)."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-12", "-output", "none"]
     a = run_contact(base, tmp_path, name="schur").summary
     b = run_contact(base + ["-newton_schur", "0"], tmp_path, name="full").summary
     print(a["iterations"], b["iterations"], a["contact_force"], b["contact_force"],
           f"P {a['contact_force'] / b['contact_force'] - 1:.2e}, energy {a['energy'] / b['energy'] - 1:.2e}")
-    assert abs(a["contact_force"] / b["contact_force"] - 1) <= 1e-8
-    assert abs(a["energy"] / b["energy"] - 1) <= 1e-10
+    assert abs(a["contact_force"] / b["contact_force"] - 1) <= 5e-13
+    assert abs(a["energy"] / b["energy"] - 1) <= 100 * EPS
 
 
 @pytest.mark.parametrize("kernels", ["Nehalem", "Haswell"])
