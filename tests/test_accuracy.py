@@ -31,9 +31,9 @@ def test_estimate_is_honest(scene, tmp_path):
     TOL stop at the same third step): true error 0.73 % (hertz), 0.25 %
     (twodiscs), 1.55 % (other), at most 0.77 TOL, against 1.5 TOL (catches an
     estimate that claims a target the answer misses); estimate / true error
-    0.93, 0.80, 0.86, against 0.5 to 2 (the lower bound 2.5 times the largest deviation from
-    1; catches an estimate from the wrong pair of steps or with a wrong rate,
-    off by a factor of 2 or more)."""
+    0.93, 0.80, 0.86, against 0.5 to 2 (the lower bound 2.5 times the
+    largest deviation from 1; catches an estimate from the wrong pair of
+    steps or with a wrong rate, off by a factor of 2 or more)."""
     base = scene_args(scene, tmp_path) + MORTAR
     answers = {}
     for tol in (0.05, 0.02):
