@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from conftest import run_contact
+from symmetric_mesh import build
 
 EPS = np.finfo(float).eps
-from symmetric_mesh import build
 
 NEWTON = ["-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "cholesky"]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts"] + NEWTON
