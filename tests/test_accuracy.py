@@ -27,7 +27,13 @@ def summary(res):
 @pytest.mark.parametrize("scene", ["hertz", "twodiscs", "other"])
 def test_estimate_is_honest(scene, tmp_path):
     """At TOL = 5 % and 2 %: the estimate is below TOL, the true error at most
-    1.5 TOL, the estimate within a factor 2 of the true error."""
+    1.5 TOL, the estimate within a factor 2 of the true error. Measured (both
+    TOL stop at the same third step): true error 0.73 % (hertz), 0.25 %
+    (twodiscs), 1.55 % (other), at most 0.77 TOL, against 1.5 TOL (catches an
+    estimate that claims a target the answer misses); estimate / true error
+    0.93, 0.80, 0.86, against 0.5 to 2 (the lower bound 2.5 times the
+    largest deviation from 1; catches an estimate from the wrong pair of
+    steps or with a wrong rate, off by a factor of 2 or more)."""
     base = scene_args(scene, tmp_path) + MORTAR
     answers = {}
     for tol in (0.05, 0.02):
@@ -92,20 +98,27 @@ def test_bad_target(value, tmp_path):
 
 def test_ranks_agree(tmp_path):
     """2 ranks refine like 1 and reach the same answer: on the same meshes
-    (measured: every step's dofs equal) every figure to 1e-8; should a cell's
-    marking flip on the last bit on another machine, the steps' dofs still
-    agree to 2 % and the answers to within the estimate, which is what a
-    user is promised."""
+    (measured: every step's dofs equal with each of the OpenBLAS kernels
+    Nehalem, Sandybridge, Haswell and SkylakeX) P and p_max to 3e-12
+    (measured up to 1.2e-12, p_max with Nehalem; was 1e-8) and each step's
+    estimate to 8e-12 (measured up to 3.1e-12; was 1e-6), so that a figure
+    or an estimate that is one rank's share fails. Should a cell's marking
+    flip on the last bit on another machine (the kernels do flip it: the
+    last step has 7686 dofs with Nehalem and Haswell, 7718 with the others,
+    0.42 % apart), the steps' dofs still agree to 1 % (was 2 %) and the
+    answers to within the estimate, which is what a user is promised."""
     args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
     one = run_contact(args, tmp_path, name="one").summary
     two = run_contact(args, tmp_path, ranks=2, name="two").summary
     d1, d2 = [s["dofs"] for s in one["adapt_steps"]], [s["dofs"] for s in two["adapt_steps"]]
     print("dofs per step", d1, d2)
-    assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.02 for a, b in zip(d1, d2))
-    rtol = 1e-8 if d1 == d2 else one["error_estimate"]
+    assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.01 for a, b in zip(d1, d2))
+    rtol = 3e-12 if d1 == d2 else one["error_estimate"]
     for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
+        print(f"estimate {a['error_estimate']!r} against {b['error_estimate']!r}: {b['error_estimate'] / a['error_estimate'] - 1:.2e}")
         if a["dofs"] == b["dofs"]:
-            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-6)
+            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=8e-12)
+    print(f"P {two['contact_force'] / one['contact_force'] - 1:.2e}, p_max {two['fem_pmax'] / one['fem_pmax'] - 1:.2e}")
     assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
     assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)
 

@@ -14,6 +14,7 @@ from test_contact import RANK_DEPENDENT, flatten
 
 import profile_metrics as pm
 
+EPS = np.finfo(float).eps
 MORTAR = ["-contact_formulation", "mortar"]
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"] + MORTAR
 HS, HREF = list(HALF_MORTAR_H[:-1]), HALF_MORTAR_H[-1]   # 0.1, 0.06, 0.03, 0.015 and the finest, 0.005
@@ -114,7 +115,10 @@ def test_hertz_small(n, tmp_path):
 def test_ranks(tmp_path):
     """1, 2, 3 and 4 ranks: every number of the JSON summary (but timings, the
     run id, the rank count, the stopping residual) agrees to 1e-8 (a near-zero force
-    component to 1e-8 of the pair's force)."""
+    component to 1e-8 of the pair's force): measured over the OpenBLAS kernels
+    Nehalem, Sandybridge, Haswell and SkylakeX at most 1.6e-9, always a y
+    reaction (4.5e-7 of P, a sum that cancels) relative to itself. Catches a
+    figure that is one rank's share or sums a shared node twice."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-13"]
     runs = [run_contact(base, tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)]
     ref = flatten(runs[0].summary)
@@ -122,27 +126,36 @@ def test_ranks(tmp_path):
     for n, r in zip((2, 3, 4), runs[1:]):
         got = flatten(r.summary)
         assert set(got) == set(ref)
+        worst = (0.0, "")
         for k, a in ref.items():
             if k.startswith(RANK_DEPENDENT):
                 continue
             b = got[k]
             if isinstance(a, (int, float)) and not isinstance(a, bool):
                 floor = 1e-8 * scale if ".force." in f".{k}." or k.endswith(("force.0", "force.1")) else 0.0
+                worst = max(worst, (abs(a - b) / (max(abs(a), abs(b)) + floor / 1e-8 or 1.0), k))
                 assert abs(a - b) <= 1e-8 * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
             else:
                 assert a == b, f"{k}: {a} at 1 rank, {b} at {n}"
+        print(f"{n} ranks: largest relative difference {worst[0]:.2e} ({worst[1]})")
 
 
 def test_schur_step(tmp_path):
     """The Newton step through the Schur complement on the contact surfaces
     (the default on one rank) and a full factorisation per step give the same
-    answer: the mortar Hessian stays in the surface block."""
+    answer: the mortar Hessian stays in the surface block (an entry outside
+    it, dropped by the Schur step, gives another Newton path, which stops
+    elsewhere within the stopping test). Measured over the OpenBLAS kernels Nehalem,
+    Sandybridge, Haswell and SkylakeX: P 1.5e-14 to 1.7e-13 apart, bound 5e-13
+    (was 1e-8); the energy 3.3e-16 to 6.7e-16 = 3 EPS, bound 100 EPS (was
+    1e-10)."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-12", "-output", "none"]
     a = run_contact(base, tmp_path, name="schur").summary
     b = run_contact(base + ["-newton_schur", "0"], tmp_path, name="full").summary
-    print(a["iterations"], b["iterations"], a["contact_force"], b["contact_force"])
-    assert abs(a["contact_force"] / b["contact_force"] - 1) <= 1e-8
-    assert abs(a["energy"] / b["energy"] - 1) <= 1e-10
+    print(a["iterations"], b["iterations"], a["contact_force"], b["contact_force"],
+          f"P {a['contact_force'] / b['contact_force'] - 1:.2e}, energy {a['energy'] / b['energy'] - 1:.2e}")
+    assert abs(a["contact_force"] / b["contact_force"] - 1) <= 5e-13
+    assert abs(a["energy"] / b["energy"] - 1) <= 100 * EPS
 
 
 @pytest.mark.parametrize("kernels", ["Nehalem", "Haswell"])
@@ -154,11 +167,17 @@ def test_blas_kernels(kernels, half, tmp_path):
     Newton converges. Before the search lost its reach limit and the master's
     ends their cut-off, these three failed (DIVERGED_LS_FAILURE after 2
     iterations, as did Zen's) and SkylakeX converged. The answers agree to the solve's
-    tolerance (gttol 1e-8: P measured equal to 7 digits, energy to 1e-10)."""
+    tolerance (gttol 1e-8): measured with Nehalem, Sandybridge and Haswell
+    (8 iterations) against this machine's SkylakeX (14), P 7.18e-8 apart with
+    each, bound 2e-7 (was 1e-6); the energy, stationary there, 1.9e-14 to
+    7.3e-14, bound 2e-13 (was 1e-8). Catches a solve that stops at another
+    answer with other kernels (a stopping test on a residual that depends on
+    the summation order)."""
     ref = half[HREF]
     r = run_contact(HALF + ["-mesh_size", str(HREF), "-output", "none"], tmp_path, timeout=900,
                     env={"OPENBLAS_CORETYPE": kernels}, check=False)
     assert r.returncode == 0, f"{kernels}: exit {r.returncode}\n{r.stdout[-2000:]}"
     a, b = ref.summary, r.summary
-    assert abs(b["contact_force"] / a["contact_force"] - 1) <= 1e-6
-    assert abs(b["energy"] / a["energy"] - 1) <= 1e-8
+    print(f"{kernels}: P {b['contact_force'] / a['contact_force'] - 1:.2e}, energy {b['energy'] / a['energy'] - 1:.2e}")
+    assert abs(b["contact_force"] / a["contact_force"] - 1) <= 2e-7
+    assert abs(b["energy"] / a["energy"] - 1) <= 2e-13

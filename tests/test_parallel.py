@@ -5,11 +5,13 @@ Schur complement of K on one rank and as a full factorisation per step; the
 exact (indefinite) contact Hessian through the same step; subdomains that are
 empty or all boundary; and the one-rank MUMPS step refused on several ranks.
 Expected values come from the other rank counts and the other Newton steps."""
+import numpy as np
 import pytest
 
 from conftest import run_contact
 from test_contact import RANK_DEPENDENT, flatten
 
+EPS = np.finfo(float).eps
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
 
 
@@ -19,17 +21,19 @@ def compare(ref, got, label, rtol=1e-8):
     a, b = flatten(ref), flatten(got)
     assert set(a) == set(b)
     scale = ref["contact_force"]
-    compared = 0
+    compared, worst = 0, (0.0, "")
     for k, x in a.items():
         if k.startswith(RANK_DEPENDENT):
             continue
         y = b[k]
         if isinstance(x, (int, float)) and not isinstance(x, bool):
             floor = rtol * scale if ".force." in f".{k}." or k.endswith(("force.0", "force.1")) else 0.0
+            worst = max(worst, (abs(x - y) / (max(abs(x), abs(y)) + floor / rtol or 1.0), k))
             assert abs(x - y) <= rtol * max(abs(x), abs(y)) + floor, f"{label}: {k}: {x} against {y}"
             compared += 1
         else:
             assert x == y, f"{label}: {k}: {x} against {y}"
+    print(f"{label}: largest relative difference {worst[0]:.2e} ({worst[1]})")
     return compared
 
 
@@ -37,7 +41,12 @@ def compare(ref, got, label, rtol=1e-8):
 def test_substructure_ranks(formulation, tmp_path):
     """h = 0.1: 1, 2, 3 and 4 ranks on the substructured step, the one-rank
     MUMPS Schur step and a full factorisation per step on 2 ranks agree in
-    every number of the JSON summary to 1e-8 (measured 1e-13)."""
+    every number of the JSON summary to 1e-8: measured over the OpenBLAS
+    kernels Nehalem, Sandybridge, Haswell and SkylakeX at most 3.5e-11 with
+    gpts and 1.6e-9 with mortar, always a y reaction (4.5e-7 of P, a sum that
+    cancels) relative to itself; every other figure closer (was documented as
+    1e-13). Catches a substructured step that solves another system on some
+    rank counts (a shared node's block assembled twice or not at all)."""
     base = HERTZ + ["-mesh_size", "0.1", "-contact_formulation", formulation, "-tao_gttol", "1e-13"]
     runs = {n: run_contact(base + ["-tao_nls_ksp_view"], tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)}
     for n, r in runs.items():
@@ -55,20 +64,28 @@ def test_substructure_exact_hessian(tmp_path):
     """The exact contact Hessian from rest (indefinite while the active set
     settles; penalty continuation keeps the iterations few): the surface
     system is then factored by LU, and 2 ranks agree with one and with the
-    one-rank MUMPS step."""
+    one-rank MUMPS step: measured over the OpenBLAS kernels Nehalem,
+    Sandybridge, Haswell and SkylakeX P 2.8e-14 to 2.2e-13 apart, bound 6e-13
+    (was 1e-8), the energy 1.1e-16 to 3.6e-15 = 16 EPS, bound 100 EPS (was
+    1e-10). Catches a surface system factored as if definite, or otherwise
+    solved differently on 2 ranks or by MUMPS."""
     base = HERTZ + ["-mesh_size", "0.1", "-contact_hessian", "exact", "-penalty_stages", "3", "-tao_gttol", "1e-12"]
     one = run_contact(base, tmp_path, name="np1").summary
     two = run_contact(base, tmp_path, ranks=2, name="np2").summary
     mumps = run_contact(base + ["-newton_schur_type", "mumps"], tmp_path, name="mumps").summary
     for s, label in ((two, "2 ranks"), (mumps, "MUMPS Schur step")):
-        assert abs(s["contact_force"] / one["contact_force"] - 1) <= 1e-8, label
-        assert abs(s["energy"] / one["energy"] - 1) <= 1e-10, label
+        print(f"{label}: P {s['contact_force'] / one['contact_force'] - 1:.2e}, energy {s['energy'] / one['energy'] - 1:.2e}")
+        assert abs(s["contact_force"] / one["contact_force"] - 1) <= 6e-13, label
+        assert abs(s["energy"] / one["energy"] - 1) <= 100 * EPS, label
 
 
 def test_substructure_tiny_subdomains(tmp_path):
     """h = 0.5 (320 dofs) on 24 ranks: subdomains of a few dofs, empty ones and
     ones without an interior dof, some whose MUMPS workspace estimate falls
-    short and is enlarged; the answer is one rank's to 1e-8."""
+    short and is enlarged; the answer is one rank's to 1e-8 (measured over
+    the OpenBLAS kernels 4.5e-13 to 1.4e-12: the bound is compare()'s, set by
+    the y reactions of the runs at h = 0.1). Catches a subdomain of no
+    interior dof, or none at all, that drops or doubles its surface rows."""
     base = HERTZ + ["-mesh_size", "0.5", "-tao_gttol", "1e-12"]
     one = run_contact(base, tmp_path, name="np1").summary
     many = run_contact(base + ["-info", ":sys"], tmp_path, ranks=24, name="np24")
@@ -91,12 +108,19 @@ def test_mumps_schur_one_rank_only(tmp_path):
 def test_iterative_step(formulation, ranks, tmp_path):
     """-newton_iterative (CG preconditioned by GAMG with the bodies' rigid
     motions as near-nullspace, each step to relative residual 1e-6) reaches
-    the direct step's solution: P to 1e-7 (measured 4e-10), the energy to
-    1e-10."""
+    the direct step's solution, to what each step's residual 1e-6 leaves at
+    the stop: P measured 2.7e-10 (gpts, 1 rank), 4.4e-10 (gpts, 2 ranks),
+    2.2e-14 to 3.9e-13 (mortar, 2 ranks) apart over the OpenBLAS kernels
+    Nehalem, Sandybridge, Haswell and SkylakeX (the same figures with each),
+    bound 1e-9 (was 1e-7); the energy, stationary there, 2.2e-16 to 2.9e-15
+    = 13 EPS apart, bound 100 EPS (was 1e-10). Catches a CG step that solves another
+    system than the direct one (a wrong operator or near-nullspace): Newton
+    then takes another path and stops elsewhere within its stopping test."""
     base = HERTZ + ["-mesh_size", "0.1", "-contact_formulation", formulation]
     it = run_contact(base + ["-newton_iterative"], tmp_path, ranks=ranks, name="iterative")
     direct = run_contact(base, tmp_path, name="direct").summary
     assert " CG iterations" in it.stdout
     s = it.summary
-    assert abs(s["contact_force"] / direct["contact_force"] - 1) <= 1e-7
-    assert abs(s["energy"] / direct["energy"] - 1) <= 1e-10
+    print(f"P {s['contact_force'] / direct['contact_force'] - 1:.2e}, energy {s['energy'] / direct['energy'] - 1:.2e}")
+    assert abs(s["contact_force"] / direct["contact_force"] - 1) <= 1e-9
+    assert abs(s["energy"] / direct["energy"] - 1) <= 100 * EPS

@@ -16,6 +16,7 @@ from conftest import ROOT, run_contact
 
 SCRIPT = ROOT / "scripts" / "plot_hertz.py"
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+EPS = np.finfo(float).eps
 
 
 @pytest.fixture(scope="module")
@@ -73,7 +74,10 @@ def pressure_axes(h5, units="none", zoom=None):
 def test_pressure_plot(hertz, tmp_path):
     """The command writes a PNG; what it draws: the Hertz curve is p_max
     sqrt(1 - (t/a)^2) with the HDF5's a and p_max (to round-off), zero
-    outside, and the box's P is the HDF5's."""
+    outside, and the box's P is the HDF5's. The curve against the formula and
+    its peak against p_max: measured 0 (the same operations), bound 100 EPS
+    of p_max (was 1e-12); catches a curve drawn with another a or p_max, or
+    not centred."""
     import matplotlib.pyplot as plt
     out = tmp_path / "p.png"
     r = plot(hertz, "-o", out)
@@ -85,8 +89,10 @@ def test_pressure_plot(hertz, tmp_path):
         a, pmax, P = (float(np.ravel(g.attrs[k])[0]) for k in ("hertz_a", "hertz_pmax", "P"))
     hz, = [l for l in ax.get_lines() if l.get_label() == "Hertz"]
     t, p = hz.get_xdata(), hz.get_ydata()
-    assert np.abs(p - pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None))).max() <= 1e-12 * pmax
-    assert p.max() == pytest.approx(pmax, rel=1e-12) and t.min() <= -a and t.max() >= a
+    dh = np.abs(p - pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None))).max() / pmax
+    print(f"Hertz curve against p_max sqrt(1 - (t/a)^2): {dh:.2e} of p_max, peak {p.max() / pmax - 1:.2e}")
+    assert dh <= 100 * EPS
+    assert p.max() == pytest.approx(pmax, rel=100 * EPS) and t.min() <= -a and t.max() >= a
     box = "\n".join(x.get_text() for x in ax.texts)
     assert f"P = {P:.4g}" in box, box
     plt.close(fig)
@@ -94,7 +100,9 @@ def test_pressure_plot(hertz, tmp_path):
 
 def test_pressure_zoom_units(hertz, tmp_path):
     """--zoom 3 frames three times the loaded arc (with Hertz's zone) about its
-    middle, computed here from the HDF5's samples; --units labels the axes."""
+    middle, computed here from the HDF5's samples; --units labels the axes.
+    The limits: measured equal to the last bit, bound 100 EPS of the window
+    (was 1e-12); catches a window about another centre or of another width."""
     import matplotlib.pyplot as plt
     out = tmp_path / "pz.png"
     r = plot(hertz, "--zoom", "3", "--units", "mm,MPa", "-o", out)
@@ -113,7 +121,8 @@ def test_pressure_zoom_units(hertz, tmp_path):
     s = np.concatenate(loaded + [[-a, a]])
     mid, half = (s.min() + s.max()) / 2, (s.max() - s.min()) / 2
     fig, ax = pressure_axes(hertz, "mm,MPa", 3.0)
-    assert ax.get_xlim() == pytest.approx((mid - 3 * half, mid + 3 * half), rel=1e-12, abs=1e-12)
+    print(f"xlim {ax.get_xlim()!r}, expected {(mid - 3 * half, mid + 3 * half)!r}")
+    assert ax.get_xlim() == pytest.approx((mid - 3 * half, mid + 3 * half), rel=100 * EPS, abs=100 * EPS * half)
     assert ax.get_xlabel() == "arc position s - s_c [mm]" and ax.get_ylabel() == "pressure p [MPa]"
     plt.close(fig)
 
@@ -124,7 +133,9 @@ def test_field_plot(hertz, tmp_path, extra):
     """The command writes a PNG; what it colours: every body's nodal von Mises
     stress from the HDF5 is among the values drawn (the subdivision's
     vertices include the nodes), one colour scale for all; a window given
-    to --zoom is the axes' limits."""
+    to --zoom is the axes' limits. Each nodal value's distance from the
+    nearest drawn one: measured 0, bound 100 EPS of the largest (was 1e-12);
+    catches a field drawn from another dataset, body or component."""
     import matplotlib.pyplot as plt
     out = tmp_path / "f.png"
     r = plot(hertz, "--field", *extra, "-o", out)
@@ -138,7 +149,9 @@ def test_field_plot(hertz, tmp_path, extra):
         nodal = np.concatenate([g["von_mises"][()] for g in f["bodies"].values()])
     drawn = np.concatenate([c.get_array() for c in ax.collections if c.get_array() is not None])
     scale = np.abs(nodal).max()
-    assert np.abs(drawn[None, :] - nodal[:, None]).min(1).max() <= 1e-12 * scale
+    miss = np.abs(drawn[None, :] - nodal[:, None]).min(1).max() / scale
+    print(f"largest distance of a nodal value from the drawn ones: {miss:.2e} of the largest")
+    assert miss <= 100 * EPS
     norms = {(c.norm.vmin, c.norm.vmax) for c in ax.collections if c.get_array() is not None}
     assert len(norms) == 1
     if window is None:
@@ -188,7 +201,13 @@ def load_module():
 
 def test_scale_keeps_rigid_motion():
     """--scale magnifies the deformation only: a rigid displacement (rotation and
-    translation) is drawn as it is, and the remainder S times."""
+    translation) is drawn as it is (measured 2.0e-15 off, 9 EPS of the
+    coordinates, bound 100 EPS of them, was 1e-12), and the remainder S times
+    (measured exactly, bound 100 EPS, was numpy's default 1e-5 relative). With
+    a strain of 1e-3 added, the fitted rigid part is 6.7e-5 from the rigid
+    motion (the strain's own weighted mean and skew part, fixed by the seed),
+    bound 2e-4 (was 2e-3): a fit that magnified the push or missed the
+    rotation (0.3) is 0.1 or more off."""
     mod = load_module()
     rng = np.random.default_rng(1)
     X = rng.uniform(-1, 1, (50, 2))
@@ -197,13 +216,16 @@ def test_scale_keeps_rigid_motion():
     R = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
     rigid = X @ R.T + [0.2, -0.5]
     fit = mod.RigidFit(X, rigid, w)
-    assert np.allclose(fit.display(X, rigid, 10.0), rigid, atol=1e-12)
+    print(f"rigid motion drawn at scale 10: {np.abs(fit.display(X, rigid, 10.0) - rigid).max():.2e} off")
+    assert np.abs(fit.display(X, rigid, 10.0) - rigid).max() <= 100 * EPS * np.abs(rigid).max()
     d = 1e-3 * np.column_stack([X[:, 0], -0.5 * X[:, 1]])   # a strain, no rotation
     x = rigid + d @ R.T
     fit = mod.RigidFit(X, x, w)
     shown = fit.display(X, x, 20.0)
-    assert np.allclose(shown - fit.rigid(X), 20 * (x - fit.rigid(X)))
-    assert np.abs(fit.rigid(X) - rigid).max() < 2e-3     # the push is not magnified
+    print(f"remainder at scale 20: {np.abs(shown - fit.rigid(X) - 20 * (x - fit.rigid(X))).max():.2e} off, "
+          f"fitted rigid part {np.abs(fit.rigid(X) - rigid).max():.2e} from the rigid motion")
+    assert np.abs(shown - fit.rigid(X) - 20 * (x - fit.rigid(X))).max() <= 100 * EPS * np.abs(shown).max()
+    assert np.abs(fit.rigid(X) - rigid).max() < 2e-4     # the push is not magnified
     assert np.array_equal(fit.display(X, x, 1.0), x)
 
 
