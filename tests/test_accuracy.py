@@ -113,11 +113,11 @@ def test_ranks_agree(tmp_path):
     d1, d2 = [s["dofs"] for s in one["adapt_steps"]], [s["dofs"] for s in two["adapt_steps"]]
     print("dofs per step", d1, d2)
     assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.01 for a, b in zip(d1, d2))
-    rtol = 3e-12 if d1 == d2 else one["error_estimate"]
+    rtol = 1e-8 if d1 == d2 else one["error_estimate"]  # measured 1.2e-12; 1e-8 as every rank comparison: the ranks' Newton paths may differ elsewhere
     for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
         print(f"estimate {a['error_estimate']!r} against {b['error_estimate']!r}: {b['error_estimate'] / a['error_estimate'] - 1:.2e}")
         if a["dofs"] == b["dofs"]:
-            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=8e-12)
+            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-8)  # measured 3.1e-12
     print(f"P {two['contact_force'] / one['contact_force'] - 1:.2e}, p_max {two['fem_pmax'] / one['fem_pmax'] - 1:.2e}")
     assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
     assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)

@@ -20,7 +20,10 @@ def test_force_balance(tmp_path):
     """At convergence the contact force on the block equals the reaction at its
     pushed edge, to the solver's stopping residual: measured 2.78e-11 to
     2.80e-11 of P over the OpenBLAS kernels Nehalem, Sandybridge, Haswell and
-    SkylakeX, bound 7e-11 (was 1e-6). Catches a reaction summed over the wrong
+    SkylakeX; bound 1e-6, from the stopping test rather than one machine's
+    path: gttol 1e-8 of ||g0|| = 1806 lets the residual reach 1.8e-5, 3.3e-7
+    of P, and a machine whose Newton stops one step earlier stays within it.
+    Catches a reaction summed over the wrong
     dofs or ranks, or a contact force reported from another state than the
     one solved. The two reactions balance each other to round-off (the energy
     is invariant under a rigid translation of both bodies): measured 1.3e-15
@@ -31,7 +34,7 @@ def test_force_balance(tmp_path):
     r = s["reactions"]["block:push"][0]          # dPi/du_x summed over the pushed edge
     rc = s["reactions"]["indenter:clamp"][0]
     print(f"contact force {fc!r}, reaction {r!r}, clamp {rc!r}: {rel(fc, r):.2e}, {rel(rc, -r):.2e}")
-    assert rel(fc, r) <= 7e-11
+    assert rel(fc, r) <= 1e-6
     assert rel(rc, -r) <= 1000 * EPS
 
 
@@ -205,7 +208,7 @@ def test_ranks(tmp_path):
                 assert p.shape == p0[k].shape
                 dp = np.abs(p - p0[k]).max() / np.abs(p0[k]).max()
                 print(f"{n} ranks: largest relative difference {worst[0]:.2e} ({worst[1]}), {k} pressure {dp:.2e}")
-                assert dp <= 3e-12
+                assert dp <= 1e-8  # measured 1.1e-12; 1e-8 as the JSON's figures: another machine's ranks may take other Newton paths
 
 
 def test_half_model(tmp_path):

@@ -169,8 +169,9 @@ def test_blas_kernels(kernels, half, tmp_path):
     iterations, as did Zen's) and SkylakeX converged. The answers agree to the solve's
     tolerance (gttol 1e-8): measured with Nehalem, Sandybridge and Haswell
     (8 iterations) against this machine's SkylakeX (14), P 7.18e-8 apart with
-    each, bound 2e-7 (was 1e-6); the energy, stationary there, 1.9e-14 to
-    7.3e-14, bound 2e-13 (was 1e-8). Catches a solve that stops at another
+    each, bound 1e-6 (a third path on another machine stops anywhere within
+    the stopping test); the energy, stationary there, 1.9e-14 to 7.3e-14,
+    bound 1e-10. Catches a solve that stops at another
     answer with other kernels (a stopping test on a residual that depends on
     the summation order)."""
     ref = half[HREF]
@@ -179,5 +180,5 @@ def test_blas_kernels(kernels, half, tmp_path):
     assert r.returncode == 0, f"{kernels}: exit {r.returncode}\n{r.stdout[-2000:]}"
     a, b = ref.summary, r.summary
     print(f"{kernels}: P {b['contact_force'] / a['contact_force'] - 1:.2e}, energy {b['energy'] / a['energy'] - 1:.2e}")
-    assert abs(b["contact_force"] / a["contact_force"] - 1) <= 2e-7
-    assert abs(b["energy"] / a["energy"] - 1) <= 2e-13
+    assert abs(b["contact_force"] / a["contact_force"] - 1) <= 1e-6
+    assert abs(b["energy"] / a["energy"] - 1) <= 1e-10

@@ -10,7 +10,8 @@ whatever the discretisation: the contact pair's force on the indenter equals
 the reaction at the pushed edge (equilibrium of the block, two independent
 sums, equal to the solver's stopping residual; measured over the OpenBLAS
 kernels Nehalem, Sandybridge, Haswell and SkylakeX 1e-11 to 3.2e-9, and
-1.32e-8 for the softest penalty with gpts, bound 4e-8, was 1e-6: catches a
+1.32e-8 for the softest penalty with gpts, bound 1e-6, what the stopping test
+allows at k_p = 1e10 (the sweep measures 1.7e-6 at h = 0.01): catches a
 reaction summed over the wrong dofs or ranks, a force reported from another
 state), 1 and 2 ranks give the same P (measured 0 to 2.1e-9, bound 1e-8:
 catches a rank's share reported as the whole) although at k_p = 1e10 they
@@ -45,7 +46,7 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
               f"reaction {reaction:.10g}: balance {abs(abs(f) - abs(reaction)) / abs(reaction):.2e}, "
               f"P - 2|f| {abs(s['contact_force'] - 2 * abs(f)) / s['contact_force']:.2e}")
         assert f < 0 < s["contact_force"], "the block pushes the indenter away (-x)"
-        assert abs(abs(f) - abs(reaction)) <= 4e-8 * abs(reaction), (f, reaction)
+        assert abs(abs(f) - abs(reaction)) <= 1e-6 * abs(reaction), (f, reaction)
         # the half model's P is that of the whole: twice the half's force
         assert abs(s["contact_force"] - 2 * abs(f)) <= 100 * EPS * s["contact_force"]
         P[n] = s["contact_force"]

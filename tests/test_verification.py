@@ -223,7 +223,7 @@ def test_moment_balance(tmp_path):
     stopping test -tao_gttol 1e-12 would allow, |g| <= 2e-9, which Newton's
     last step undercuts by far): free nodes 1.8e-15 to 1.07e-14 of P, bound
     3e-14; contact nodes 1.86e-12 to 2.11e-12 of P (the contact's residual),
-    bound 5e-12; reactions 4.1e-15 to 1.34e-13 of P, bound 3e-13; moment
+    bound 1e-10 (3 times what gttol 1e-12 allows, 3.3e-11); reactions 4.1e-15 to 1.34e-13 of P, bound 3e-13; moment
     imbalance 2.9e-13 to 6.5e-13 of the moment, bound 1.5e-12 (at the default
     gttol 1e-8 it is 7e-10; the block's forces mirrored about its zone are
     8 % off, taken at the current positions 4 %); the pair's moment 0 to
@@ -252,7 +252,7 @@ def test_moment_balance(tmp_path):
             print(f"{body}: free {np.abs(Ku[free]).max() / P:.2e}, contact {np.abs(Ku[contact] - FC).max() / P:.2e}, "
                   f"reactions {np.abs(Ku[dirichlet].sum(axis=0) - s['reactions'][group]).max() / P:.2e} of P")
             assert np.abs(Ku[free]).max() <= 3e-14 * P
-            assert np.abs(Ku[contact] - FC).max() <= 5e-12 * P
+            assert np.abs(Ku[contact] - FC).max() <= 1e-10 * P  # the stopping residual: gttol 1e-12 allows 3.3e-11 of P
             assert np.abs(Ku[dirichlet].sum(axis=0) - s["reactions"][group]).max() <= 3e-13 * P
             Mc, Mr = cross(XC - c, FC).sum(), cross(X[dirichlet] - c, Ku[dirichlet]).sum()
             print(f"{body}: moment of the contact forces {Mc!r}, of the reactions {Mr!r}, imbalance {(Mc + Mr) / Mc:.1e}")
