@@ -78,7 +78,7 @@ static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
    given: PETSc reads "default" or "decide" as a negative number. */
 static PetscErrorCode ProblemCheckSolverOptions(Problem p)
 {
-  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
+  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"}, *const limits[] = {"-tao_max_it", "-tao_max_funcs"};
   PetscReal         tol;
   PetscInt          n;
   PetscBool         set;
@@ -89,12 +89,13 @@ static PetscErrorCode ProblemCheckSolverOptions(Problem p)
     PetscCall(PetscOptionsGetReal(NULL, NULL, tols[k], &tol, &set));
     PetscCheck(!set || (tol >= 0 && !PetscIsInfOrNanReal(tol)), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be a finite number >= 0, got %g", tols[k], (double)tol);
   }
-  PetscCall(PetscOptionsGetInt(NULL, NULL, "-tao_max_it", &n, &set));
-  if (set) PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_max_it", given, sizeof(given), NULL));
-  PetscCheck(!set || n >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -tao_max_it: must be an integer >= 1, got %s", given);
-  PetscCall(PetscOptionsGetInt(NULL, NULL, "-tao_max_funcs", &n, &set));
-  if (set) PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_max_funcs", given, sizeof(given), NULL));
-  PetscCheck(!set || n >= 1 || n == -1, p->comm, PETSC_ERR_USER_INPUT, "option -tao_max_funcs: must be an integer >= 1, or -1 for no limit, got %s", given);
+  for (size_t k = 0; k < sizeof(limits) / sizeof(limits[0]); ++k) { /* -tao_max_funcs also takes -1, no limit */
+    const PetscBool noLimit = (PetscBool)(k == 1);
+    PetscCall(PetscOptionsGetInt(NULL, NULL, limits[k], &n, &set));
+    if (!set) continue;
+    PetscCall(PetscOptionsGetString(NULL, NULL, limits[k], given, sizeof(given), NULL));
+    PetscCheck(n >= 1 || (noLimit && n == -1), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be an integer >= 1%s, got %s", limits[k], noLimit ? ", or -1 for no limit" : "", given);
+  }
   PetscFunctionReturn(0);
 }
 
