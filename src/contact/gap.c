@@ -70,13 +70,13 @@ static void ContactGapNormal(const ContactSurface *M, const PetscReal xs[2], Con
    keeps the sign of the gap continuous across the fan. */
 static PetscReal ContactGapNodeSide(const ContactSurface *M, PetscInt e, PetscInt j, const PetscReal d[2])
 {
-  const PetscReal  dNend[2][3] = {{-1.5, -0.5, 2.0}, {0.5, 1.5, -2.0}};
-  const PetscReal *C           = &M->mcorr[14 * e + 7 * j];
-  const PetscInt  *mn          = &M->mnodes[7 * e];
-  PetscReal        t[2]        = {0, 0}, n[2];
+  const PetscReal *C  = &M->mcorr[14 * e + 7 * j];
+  const PetscInt  *mn = &M->mnodes[7 * e];
+  PetscReal        N[3], dN[3], t[2] = {0, 0}, n[2];
 
+  EdgeShape(j ? 1.0 : -1.0, N, dN); /* the edge's own end tangent, then the correction */
   for (PetscInt k = 0; k < 7; ++k)
-    for (PetscInt c = 0; c < 2; ++c) t[c] += ((k < 3 ? dNend[j][k] : 0.0) + C[k]) * M->x[2 * mn[k] + c];
+    for (PetscInt c = 0; c < 2; ++c) t[c] += ((k < 3 ? dN[k] : 0.0) + C[k]) * M->x[2 * mn[k] + c];
   n[0] = M->esign[e] * t[1];
   n[1] = -M->esign[e] * t[0];
   return d[0] * n[0] + d[1] * n[1] >= 0 ? 1.0 : -1.0;
