@@ -19,25 +19,24 @@
    pressure: the formulation passes the contact patch test, where collocation
    at Gauss points (gpts) does not.
 
-   Segments. g is smooth along a slave edge except where the closest master
-   point crosses a master node (its normal turns, the master shape functions
-   change). Each slave edge is split there: the ends of a piece are projected;
-   if they fall on two master edges that share a node v, the split point solves
-   (x_s(xi) - x_v) . t_v = 0 (a quadratic in xi, t_v the master tangent at v,
-   continuous by the blend); otherwise the piece is halved (to 2^-12 of the
-   edge at most: the end of a master surface). More generally each slave
-   edge is cut wherever the feature of the master closest to its points
-   changes (MortarSplit): the inside of an edge, a corner node, or the
-   extension past an end. Without the blend (mortar's default) every master
-   node is a corner: outside a convex one the closest point stays at the node
-   over a fan between the two edges' normal lines, where g is the distance to
-   the node (gap.c), and those two lines are cut. Inside a concave corner, or
+   Segments. g is smooth along a slave edge except where the feature of the
+   master closest to its points changes (its normal turns, the master shape
+   functions change): the inside of an edge, a corner node, or the extension
+   past an end. Each slave edge is cut there (MortarSplit). Where the closest
+   point passes smoothly through a master node v the cut solves
+   (x_s(xi) - x_v) . t = 0, a quadratic in xi: t the common tangent at a
+   blended node, the edge's own where it gives way to its end's fan or
+   extension. Without the blend (mortar's default) every master node is a
+   corner: outside a convex one the closest point stays at the node over a
+   fan between the two edges' normal lines, where g is the distance to the
+   node (gap.c), and those two lines are cut. Inside a concave corner, or
    behind a master surface that curves more tightly than the point's depth (a
    deeply penetrated iterate), the closest point jumps from one feature to
    another where their distances tie: the piece is cut at that tie, found by
    bisection on the difference of the squared distances. Every piece is
-   checked at its Gauss points, and halved where it is not uniform, so that each
-   segment's integrand is smooth. Each segment takes a Gauss rule of
+   checked at its Gauss points, and halved where it is not uniform (to 2^-12
+   of the edge at most), so that each segment's integrand is smooth. Each
+   segment takes a Gauss rule of
    -contact_quadrature_points points (4 by default: degree 7).
 
    Gradient. Since dg is exact (gap.c) and the integrand is continuous across
@@ -205,15 +204,43 @@ static inline PetscBool MortarRegionSame(MortarRegion a, MortarRegion b)
   return (PetscBool)(a.kind == b.kind && a.id == b.id);
 }
 
-static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi)
+/* The gaps that MortarPieceUniform computes at a piece's Gauss points, which
+   are the points of the piece if it is kept (the same arithmetic from the
+   same ends): MortarEdgePoints takes them from here instead of projecting
+   the points again. */
+#define MORTAR_CACHE 64
+typedef struct {
+  PetscInt   n;
+  PetscReal  xi[MORTAR_CACHE];
+  ContactGap G[MORTAR_CACHE];
+} MortarGapCache;
+
+/* The gap of point xi of slave edge se, from the cache if it is there. */
+static void MortarGapAt(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi, const MortarGapCache *cache, ContactGap *G)
+{
+  PetscReal xs[2], dS;
+
+  for (PetscInt k = 0; cache && k < cache->n; ++k)
+    if (cache->xi[k] == xi) {
+      *G = cache->G[k];
+      return;
+    }
+  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
+  ContactGapProject(&m->b.S[1 - s], m->b.search[1 - s], xs, G);
+}
+
+/* The region of point xi of slave edge se; its gap is kept in cache (if not NULL and not full). */
+static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi, MortarGapCache *cache)
 {
   const ContactSurface *M = &m->b.S[1 - s];
-  PetscReal             xs[2], dS;
   ContactGap            G;
   MortarRegion          R = {REGION_NONE, -1, -1, 0};
 
-  MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
-  ContactGapProject(M, m->b.search[1 - s], xs, &G);
+  MortarGapAt(m, s, se, xi, cache, &G);
+  if (cache && cache->n < MORTAR_CACHE) {
+    cache->xi[cache->n]  = xi;
+    cache->G[cache->n++] = G;
+  }
   if (G.me < 0) return R;
   R.edge = G.me;
   R.end  = G.eta > 0 ? 1 : 0;
@@ -295,6 +322,15 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   return a - 1.0;
 }
 
+/* Whether master edges ea and eb share a node: end i of ea and end j of eb. */
+static PetscBool MortarSharedEnd(const ContactSurface *M, PetscInt ea, PetscInt eb, PetscInt *i, PetscInt *j)
+{
+  for (*i = 0; *i < 2; ++*i)
+    for (*j = 0; *j < 2; ++*j)
+      if (M->enodes[3 * ea + *i] == M->enodes[3 * eb + *j]) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 /* The tie in (a, b) where the features of regions Ra (closest at a) and Rb
    (closest at b) are at the same distance from the slave point, by bisection
    on the difference of the squared distances (which changes sign there,
@@ -328,22 +364,20 @@ static PetscReal MortarTie(const Mortar *m, PetscInt s, PetscInt se, PetscReal a
 static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt *ea, PetscInt *eb)
 {
   const ContactSurface *M = &m->b.S[1 - s], *S = &m->b.S[s];
+  PetscInt              i, j;
 
   *ea = *eb = -1;
   for (PetscInt k = 0; k < 2; ++k) { /* an edge and its own end's fan or extension, either way round */
     const MortarRegion E = k ? Rb : Ra, O = k ? Ra : Rb;
     if (E.kind != REGION_EDGE) continue;
-    for (PetscInt i = 0; i < 2; ++i)
-      if ((O.kind == REGION_NODE && O.id == M->enodes[3 * E.id + i]) || (O.kind == REGION_EXT && O.id == E.id && O.end == i)) return MortarNodeCrossing(S, se, M, E.id, i, E.id, i, a, b, 1.0, 0.0);
+    for (PetscInt e = 0; e < 2; ++e)
+      if ((O.kind == REGION_NODE && O.id == M->enodes[3 * E.id + e]) || (O.kind == REGION_EXT && O.id == E.id && O.end == e)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0);
   }
-  if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE) /* across a blended node */
-    for (PetscInt i = 0; i < 2; ++i)
-      for (PetscInt j = 0; j < 2; ++j)
-        if (M->enodes[3 * Ra.id + i] == M->enodes[3 * Rb.id + j] && ContactGapEndBlended(M, Ra.id, i)) {
-          *ea = Ra.id;
-          *eb = Rb.id;
-          return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
-        }
+  if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && ContactGapEndBlended(M, Ra.id, i)) { /* across a blended node */
+    *ea = Ra.id;
+    *eb = Rb.id;
+    return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+  }
   if (Ra.kind != REGION_EXT && Rb.kind != REGION_EXT) {
     *ea = Ra.edge;
     *eb = Rb.edge;
@@ -354,13 +388,13 @@ static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, Pets
 /* Whether the closest point of slave edge se stays in region R over [a, b],
    checked at the piece's Gauss points (where its integrand is evaluated) and
    its midpoint. */
-static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscReal b, MortarRegion R)
+static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, PetscReal b, MortarRegion R, MortarGapCache *cache)
 {
   const PetscReal h = 0.5 * (b - a), c = 0.5 * (a + b);
 
-  if (!MortarRegionSame(MortarRegionAt(m, s, se, c), R)) return PETSC_FALSE;
+  if (!MortarRegionSame(MortarRegionAt(m, s, se, c, NULL), R)) return PETSC_FALSE;
   for (PetscInt q = 0; q < m->nq; ++q)
-    if (!MortarRegionSame(MortarRegionAt(m, s, se, c + h * m->xq[q]), R)) return PETSC_FALSE;
+    if (!MortarRegionSame(MortarRegionAt(m, s, se, c + h * m->xq[q], cache), R)) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
@@ -370,41 +404,41 @@ static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, Pe
    is smooth;
    appends the cuts to cut[]. A transition that is not found, or whose
    pieces are not uniform, is halved (to 2^-12 of the edge at most). */
-static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt depth, PetscInt *ncut, MortarCut cut[])
+static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt depth, PetscInt *ncut, MortarCut cut[], MortarGapCache *cache)
 {
   PetscReal    c;
   MortarRegion Rc;
 
   if (depth >= MORTAR_MAX_DEPTH || *ncut >= MORTAR_MAX_SEG - 2) return;
   if (MortarRegionSame(Ra, Rb)) {
-    if (MortarPieceUniform(m, s, se, a, b, Ra)) return;
+    if (MortarPieceUniform(m, s, se, a, b, Ra, cache)) return;
   } else if (Ra.kind != REGION_NONE && Rb.kind != REGION_NONE) {
     const ContactSurface *M = &m->b.S[1 - s];
-    PetscInt              ea, eb;
-    if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE) /* two edges at a corner: its fan, if the bisector lies in it */
-      for (PetscInt i = 0; i < 2; ++i)
-        for (PetscInt j = 0; j < 2; ++j)
-          if (M->enodes[3 * Ra.id + i] == M->enodes[3 * Rb.id + j] && !ContactGapEndBlended(M, Ra.id, i)) {
-            c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
-            if (!(c > a && c < b)) continue;
-            Rc = MortarRegionAt(m, s, se, c);
-            if (Rc.kind != REGION_NODE || Rc.id != M->enodes[3 * Ra.id + i]) continue;
-            MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut);
-            cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
-            MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut);
-            return;
-          }
+    PetscInt              ea, eb, i, j;
+    if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && !ContactGapEndBlended(M, Ra.id, i)) {
+      /* two edges at a corner: its fan, if the bisector lies in it */
+      c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+      if (c > a && c < b) {
+        Rc = MortarRegionAt(m, s, se, c, NULL);
+        if (Rc.kind == REGION_NODE && Rc.id == M->enodes[3 * Ra.id + i]) {
+          MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut, cache);
+          cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
+          MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut, cache);
+          return;
+        }
+      }
+    }
     c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb);
-    if (c > a && c < b && MortarPieceUniform(m, s, se, a, c, Ra) && MortarPieceUniform(m, s, se, c, b, Rb)) {
+    if (c > a && c < b && MortarPieceUniform(m, s, se, a, c, Ra, cache) && MortarPieceUniform(m, s, se, c, b, Rb, cache)) {
       cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
       return;
     }
   }
   c  = 0.5 * (a + b);
-  Rc = MortarRegionAt(m, s, se, c);
-  MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut);
+  Rc = MortarRegionAt(m, s, se, c, NULL);
+  MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut, cache);
   cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
-  MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut);
+  MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut, cache);
 }
 
 /* Appends the quadrature points of slave edge se, segment by segment, and
@@ -414,15 +448,17 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
   const ContactSurface *S = &m->b.S[s];
   MortarCut             cut[MORTAR_MAX_SEG + MORTAR_MAX_DEPTH + 4]; /* MortarSplit stops adding at MORTAR_MAX_SEG, then closes its open levels */
   PetscInt              ncut = 0;
+  MortarGapCache        cache;
 
   PetscFunctionBeginUser;
+  cache.n     = 0;
   cut[ncut++] = (MortarCut){se, -1, -1, -1.0};
   if (m->basis == MORTAR_BASIS_SUBLINEAR) { /* the weights' kink at the mid-edge node */
-    const MortarRegion R0 = MortarRegionAt(m, s, se, 0.0);
-    MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0), 0.0, R0, 0, &ncut, cut);
+    const MortarRegion R0 = MortarRegionAt(m, s, se, 0.0, NULL);
+    MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0, NULL), 0.0, R0, 0, &ncut, cut, &cache);
     cut[ncut++] = (MortarCut){se, -1, -1, 0.0};
-    MortarSplit(m, s, se, 0.0, R0, 1.0, MortarRegionAt(m, s, se, 1.0), 0, &ncut, cut);
-  } else MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0), 1.0, MortarRegionAt(m, s, se, 1.0), 0, &ncut, cut);
+    MortarSplit(m, s, se, 0.0, R0, 1.0, MortarRegionAt(m, s, se, 1.0, NULL), 0, &ncut, cut, &cache);
+  } else MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0, NULL), 1.0, MortarRegionAt(m, s, se, 1.0, NULL), 0, &ncut, cut, &cache);
   cut[ncut++] = (MortarCut){se, -1, -1, 1.0};
   if (*np + (ncut - 1) * m->nq > *npmax) {
     MortarPoint *grown;
@@ -456,7 +492,7 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
       MortarWeights(m->basis, &m->side[s].dual[9 * se], xi, P->W);
       MortarSlaveEval(S, se, xi, xs, &dS);
       P->wt = h * m->wq[q] * dS;
-      ContactGapProject(&m->b.S[1 - s], m->b.search[1 - s], xs, &P->G);
+      MortarGapAt(m, s, se, xi, &cache, &P->G);
     }
   }
   PetscFunctionReturn(0);
