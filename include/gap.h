@@ -11,13 +11,15 @@ typedef struct {
   PetscReal M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
   PetscBool fan; /* the closest point is a corner node: g is the distance to it */
   PetscBool ext; /* the closest point is on the extension past an end of the master surface */
+  PetscBool mirror; /* the closest point is on the master's mirror image (a half model): n, x_m are those of the reflected slave point */
+  PetscReal ns[2];  /* the normal as seen by the slave point: n, reflected where mirror (the slave rows of dg) */
 } ContactGap;
 
 /* Closest point of the master surface to the slave point xs, its outward
    normal n and the gap g = (xs - x_m) . n. */
 void ContactGapProject(const ContactSurface *M, ContactSearch, const PetscReal xs[2], ContactGap *);
-/* The same against master edge e alone (its closest point to xs). */
-void ContactGapOnEdge(const ContactSurface *M, PetscInt e, const PetscReal xs[2], ContactGap *);
+/* The same against master edge e alone (its closest point to xs), or its mirror image. */
+void ContactGapOnEdge(const ContactSurface *M, PetscInt e, PetscBool mirror, const PetscReal xs[2], ContactGap *);
 /* Whether end j (0: eta = -1, 1: eta = +1) of master edge e is blended into its neighbour (no corner there). */
 PetscBool ContactGapEndBlended(const ContactSurface *M, PetscInt e, PetscInt j);
 /* The indices in the joined vector of the 20 dofs: slave edge sn's nodes, then the master edge's. */

@@ -20,6 +20,9 @@ typedef struct {
   PetscReal *X, *x, *g;   /* [nn][2] reference, current coordinates, gradient */
   PetscInt  *big;         /* [nn][2] index in the joined vector, -1 if constrained */
   PetscBool *endNode;     /* [nn] node on a single edge: an end of the surface */
+  PetscBool  mirror;      /* the surface is half of one symmetric about y = mirrorY (its mirror image continues it) */
+  PetscReal  mirrorY, mirrorReach; /* the line; how far the current surface reaches past it (>= 0) */
+  PetscReal *cutNode;     /* [nn] at an end of the surface on the mirror line, where its image joins it: the sign (+-1) of the x component of the outward normal there (reference configuration); else 0 */
   PetscInt  *mnodes;      /* [ne][7] as master: own nodes (eta = -1, +1, 0), the other nodes of the neighbour at eta = -1, at +1 */
   PetscReal *mcorr;       /* [ne][2][7] end-tangent corrections at eta = -1, +1 over those nodes */
   PetscReal  blend;       /* W: width in eta of the blend zone at each end (0: none) */
@@ -31,6 +34,9 @@ typedef struct {
    the nodes, walks the arc and sets up the master blend of width blend (in eta). */
 PetscErrorCode ContactSurfaceSetUp(ContactSurface *, Body, const char pair[], PetscReal blend);
 PetscErrorCode ContactSurfaceDestroy(ContactSurface *);
+/* The surface is the half y >= y of one symmetric about that line: marks its
+   ends on the line, where the mirror image continues it. */
+PetscErrorCode ContactSurfaceSetMirror(ContactSurface *, PetscReal y);
 /* Collective: x = X + u of every node, from the body's local vector Xl;
    changed: whether x differs from the last (the same answer on every rank). */
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body, PetscBool *changed);

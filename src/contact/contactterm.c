@@ -10,6 +10,7 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &b->S[s];
     PetscCall(ContactSurfaceSetUp(S, bodies[S->body], b->spec.name, 2.0 * blend)); /* blend width in eta */
+    if (b->spec.mirror) PetscCall(ContactSurfaceSetMirror(S, b->spec.mirrorY));
     PetscCall(ContactSearchCreate(S, &b->search[s]));
   }
   PetscFunctionReturn(0);

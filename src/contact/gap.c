@@ -33,7 +33,20 @@
 
    Ends. Past an end of the master surface the closest point is the end node;
    there the master is continued by its tangent line (ContactGapExtend), so a
-   deeply penetrated iterate's gap is continuous wherever the point goes. */
+   deeply penetrated iterate's gap is continuous wherever the point goes.
+
+   Mirror. In a half model (the pair's -mirror_y y0) the master surface is
+   continued across the line by its mirror image R(M), R(x, y) = (x, 2 y0 - y),
+   not by its tangent: the closest point of M u R(M) to x_s is that of M, or
+   the image of the closest point of M to R x_s, whichever is nearer (the
+   image only where it can be: x_s lies below y0 + the surface's reach past
+   the line + the gap to M). On R(M) the gap is g = (R x_s - x_m) . n, so dg
+   and d2g are those of R x_s with their slave rows reflected (n_s = R n). An
+   end on the line joins its image at a corner: its fan's side is that of the
+   two edges' mean normal, which lies along the line. A tangent extension at
+   the cut would tilt with the end edge, and a point that an iterate pushes
+   deep across it would find a positive gap: the bodies would pass each other
+   through the cut. */
 #include "gap.h"
 #include "edge.h"
 
@@ -74,6 +87,7 @@ static PetscReal ContactGapNodeSide(const ContactSurface *M, PetscInt e, PetscIn
   const PetscInt  *mn = &M->mnodes[7 * e];
   PetscReal        N[3], dN[3], t[2] = {0, 0}, n[2];
 
+  if (M->cutNode && M->cutNode[mn[j]] != 0) return d[0] * M->cutNode[mn[j]] >= 0 ? 1.0 : -1.0; /* on the mirror line: the mean of its image's normal and its own is along the line */
   EdgeShape(j ? 1.0 : -1.0, N, dN); /* the edge's own end tangent, then the correction */
   for (PetscInt k = 0; k < 7; ++k)
     for (PetscInt c = 0; c < 2; ++c) t[c] += ((k < 3 ? dN[k] : 0.0) + C[k]) * M->x[2 * mn[k] + c];
@@ -134,7 +148,8 @@ static void ContactGapExtend(const ContactSurface *M, const PetscReal xs[2], Pet
   ContactGapNormal(M, xs, P);
 }
 
-void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
+/* The closest point of the master half itself. */
+static void ContactGapProjectHalf(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
 {
   const PetscInt *mn;
 
@@ -145,21 +160,46 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
   mn = &M->mnodes[7 * P->me];
   /* beyond an end of the master surface: its straight extension. A positive
      gap there is no contact; a negative one is a point pushed past the end,
-     whose energy must not vanish as it crosses the end's normal line (at the
-     cut of a half model the extension is the mirror half's continuation) */
-  if (P->eta <= -1.0 && M->endNode[mn[0]]) ContactGapExtend(M, xs, -1.0, P);
-  else if (P->eta >= 1.0 && M->endNode[mn[1]]) ContactGapExtend(M, xs, 1.0, P);
+     whose energy must not vanish as it crosses the end's normal line. Not at
+     the cut of a half model, which the mirror image continues (a corner) */
+  if (P->eta <= -1.0 && M->endNode[mn[0]] && !(M->cutNode && M->cutNode[mn[0]] != 0)) ContactGapExtend(M, xs, -1.0, P);
+  else if (P->eta >= 1.0 && M->endNode[mn[1]] && !(M->cutNode && M->cutNode[mn[1]] != 0)) ContactGapExtend(M, xs, 1.0, P);
   else ContactGapEvaluate(M, xs, P);
 }
 
-void ContactGapOnEdge(const ContactSurface *M, PetscInt e, const PetscReal xs[2], ContactGap *P)
+/* The slave's normal: n, or its reflection where the closest point is on the mirror image. */
+static void ContactGapSetMirror(ContactGap *P, PetscBool mirror)
 {
-  PetscReal d2;
+  P->mirror = mirror;
+  P->ns[0]  = P->n[0];
+  P->ns[1]  = mirror ? -P->n[1] : P->n[1];
+}
+
+void ContactGapProject(const ContactSurface *M, ContactSearch search, const PetscReal xs[2], ContactGap *P)
+{
+  ContactGapProjectHalf(M, search, xs, P);
+  ContactGapSetMirror(P, PETSC_FALSE);
+  if (M->mirror && P->me >= 0 && xs[1] - M->mirrorY < M->mirrorReach + PetscAbsReal(P->gap)) {
+    const PetscReal xr[2] = {xs[0], 2.0 * M->mirrorY - xs[1]};
+    ContactGap      R;
+    ContactGapProjectHalf(M, search, xr, &R);
+    if (R.me >= 0 && PetscAbsReal(R.gap) < PetscAbsReal(P->gap)) { /* a tie (a point on the line) keeps the half's own */
+      *P = R;
+      ContactGapSetMirror(P, PETSC_TRUE);
+    }
+  }
+}
+
+void ContactGapOnEdge(const ContactSurface *M, PetscInt e, PetscBool mirror, const PetscReal xs[2], ContactGap *P)
+{
+  const PetscReal xr[2] = {xs[0], mirror ? 2.0 * M->mirrorY - xs[1] : xs[1]};
+  PetscReal       d2;
 
   P->me  = e;
   P->ext = PETSC_FALSE;
-  MasterProject(M, e, xs, &P->eta, &d2);
-  ContactGapEvaluate(M, xs, P);
+  MasterProject(M, e, xr, &P->eta, &d2);
+  ContactGapEvaluate(M, xr, P);
+  ContactGapSetMirror(P, mirror);
 }
 
 void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const ContactSurface *M, const ContactGap *P, PetscInt idx[20])
@@ -175,7 +215,7 @@ void ContactGapIndices(const ContactSurface *S, const PetscInt sn[3], const Cont
 void ContactGapFirst(const ContactGap *P, const PetscReal N[3], PetscReal dg[20])
 {
   for (PetscInt d = 0; d < 2; ++d) {
-    for (PetscInt i = 0; i < 3; ++i) dg[2 * i + d] = N[i] * P->n[d];
+    for (PetscInt i = 0; i < 3; ++i) dg[2 * i + d] = N[i] * P->ns[d];
     for (PetscInt j = 0; j < 7; ++j) dg[6 + 2 * j + d] = -P->M7[j] * P->n[d];
   }
 }
@@ -184,12 +224,13 @@ void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c,
 {
   const PetscReal tau[2] = {P->tm[0] / P->tn, P->tm[1] / P->tn};
   const PetscReal kappa = P->n[0] * P->xpp[0] + P->n[1] * P->xpp[1], D = P->tn * P->tn - P->gap * kappa;
+  const PetscReal r[2]  = {1.0, P->mirror ? -1.0 : 1.0}; /* the slave rows of a reflected point */
   PetscReal       a[20], b[20];
 
   if (P->fan) {
     const PetscReal t[2] = {-P->n[1], P->n[0]};
     for (PetscInt d = 0; d < 2; ++d) {
-      for (PetscInt i = 0; i < 3; ++i) a[2 * i + d] = N[i] * t[d];
+      for (PetscInt i = 0; i < 3; ++i) a[2 * i + d] = N[i] * r[d] * t[d];
       for (PetscInt j = 0; j < 7; ++j) a[6 + 2 * j + d] = -P->M7[j] * t[d];
     }
     for (PetscInt i = 0; i < 20; ++i)
@@ -199,7 +240,7 @@ void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c,
   if (PetscAbsReal(P->eta) >= 1.0 && !P->ext) return;
   for (PetscInt d = 0; d < 2; ++d) {
     for (PetscInt i = 0; i < 3; ++i) {
-      a[2 * i + d] = N[i] * tau[d];
+      a[2 * i + d] = N[i] * r[d] * tau[d];
       b[2 * i + d] = 0.0;
     }
     for (PetscInt j = 0; j < 7; ++j) {

@@ -76,7 +76,7 @@ static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal
       e += c * 0.5 * cp->b.kp * w * pen * pen;
       f = c * cp->b.kp * w * pen;
       for (PetscInt i = 0; i < 3; ++i)
-        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.G.n[d];
+        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.G.ns[d];
       for (PetscInt j = 0; j < 7; ++j)
         for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.G.me + j] + d] += f * P.G.M7[j] * P.G.n[d];
     }
@@ -145,8 +145,8 @@ static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[]
       r[CONTACT_ROW_P] = cp->b.kp * pen;
       *maxPen          = PetscMax(*maxPen, pen);
       f                = c * cp->b.kp * sp[3] * pen;
-      force[s][0] += f * P.G.n[0];
-      force[s][1] += f * P.G.n[1];
+      force[s][0] += f * P.G.ns[0];
+      force[s][1] += f * P.G.ns[1];
       force[1 - s][0] -= f * P.G.n[0];
       force[1 - s][1] -= f * P.G.n[1];
     }

@@ -10,7 +10,8 @@
 
    where g is the normal gap of gap.c (closest point on the master surface,
    continuous across the master's nodes, and past the master surface's ends
-   the gap to its straight extension) and S' the part of the slave surface
+   the gap to its straight extension, or in a half model to its mirror
+   image) and S' the part of the slave surface
    that faces a master edge: all of it, but for an empty master, so C_j = A_j.
    (A quadratic N_j is negative on part of its support; a node whose support
    faced the master over less than half of A_j would be left out.) The pair's energy
@@ -140,10 +141,12 @@ static inline void MortarWeights(MortarBasis basis, const PetscReal *dual, Petsc
 }
 
 /* A cut of a slave edge at xi; where the closest point passes there from
-   master edge ea to eb across their common node, ea and eb (else -1). */
+   master edge ea to eb across their common node, ea and eb (else -1), and
+   whether each is the edge's mirror image (a half model). */
 typedef struct {
   PetscInt  se, ea, eb;
   PetscReal xi;
+  PetscBool ma, mb;
 } MortarCut;
 
 typedef struct {
@@ -192,16 +195,19 @@ static inline void MortarSlaveEval(const ContactSurface *S, PetscInt se, PetscRe
    a corner node (the fan of directions outside a convex corner), or the
    straight extension past an end of the surface; none where the master is
    empty. edge: the master edge of the point's gap (for a node, the edge the
-   search reports), end: the node's or the extension's end of that edge. */
+   search reports), end: the node's or the extension's end of that edge;
+   mirror: the feature is on the master's mirror image (a half model; never
+   for a node on the line, its own image). */
 typedef enum { REGION_NONE, REGION_EDGE, REGION_NODE, REGION_EXT } MortarRegionKind;
 typedef struct {
   MortarRegionKind kind;
   PetscInt         id, edge, end; /* id: the edge (inside, extension) or the node (corner) */
+  PetscBool        mirror;
 } MortarRegion;
 
 static inline PetscBool MortarRegionSame(MortarRegion a, MortarRegion b)
 {
-  return (PetscBool)(a.kind == b.kind && a.id == b.id);
+  return (PetscBool)(a.kind == b.kind && a.id == b.id && a.mirror == b.mirror);
 }
 
 /* The gaps that MortarPieceUniform computes at a piece's Gauss points, which
@@ -234,7 +240,7 @@ static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, Pet
 {
   const ContactSurface *M = &m->b.S[1 - s];
   ContactGap            G;
-  MortarRegion          R = {REGION_NONE, -1, -1, 0};
+  MortarRegion          R = {REGION_NONE, -1, -1, 0, PETSC_FALSE};
 
   MortarGapAt(m, s, se, xi, cache, &G);
   if (cache && cache->n < MORTAR_CACHE) {
@@ -242,7 +248,8 @@ static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, Pet
     cache->G[cache->n++] = G;
   }
   if (G.me < 0) return R;
-  R.edge = G.me;
+  R.edge   = G.me;
+  R.mirror = G.mirror;
   R.end  = G.eta > 0 ? 1 : 0;
   if (G.ext) {
     R.kind = REGION_EXT;
@@ -264,6 +271,7 @@ static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se,
   PetscReal             xs[2], dS, eta, d2, xv[2], t[2], xpp[2], d[2], dt;
 
   MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
+  if (R.mirror) xs[1] = 2.0 * M->mirrorY - xs[1]; /* the image's distance is the reflected point's */
   switch (R.kind) {
   case REGION_EDGE:
     MasterProject(M, R.id, xs, &eta, &d2);
@@ -288,8 +296,9 @@ static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se,
    them meet smoothly); a - 1 if none. The crossing solves
    (x_s(xi) - x_v) . tau = 0, a quadratic in xi, with tau the unit tangents of
    ea and eb at v weighted wa and wb (1, 1: the bisector; 1, 0 or 0, 1: the
-   normal line of one edge, a side of the corner's fan). */
-static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b, PetscReal wa, PetscReal wb)
+   normal line of one edge, a side of the corner's fan). mirror: the edges are
+   the master's mirror image, whose line the reflected slave edge crosses. */
+static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b, PetscReal wa, PetscReal wb, PetscBool mirror)
 {
   const PetscInt *sn = &S->enodes[3 * se];
   const PetscReal sg = i != j ? 1.0 : -1.0; /* tangents oriented the same way along the surface */
@@ -302,7 +311,8 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   nb = PetscSqrtReal(tb[0] * tb[0] + tb[1] * tb[1]);
   for (PetscInt d = 0; d < 2; ++d) tv[d] = wa * ta[d] / na + wb * sg * tb[d] / nb;
   for (PetscInt d = 0; d < 2; ++d) { /* x_s(xi) = x_m + xi (x_b - x_a)/2 + xi^2 ((x_a + x_b)/2 - x_m) */
-    const PetscReal xa = S->x[2 * sn[0] + d], xb = S->x[2 * sn[1] + d], xm = S->x[2 * sn[2] + d];
+    const PetscReal r = mirror && d == 1 ? -1.0 : 1.0, o = mirror && d == 1 ? 2.0 * M->mirrorY : 0.0;
+    const PetscReal xa = o + r * S->x[2 * sn[0] + d], xb = o + r * S->x[2 * sn[1] + d], xm = o + r * S->x[2 * sn[2] + d];
     c0 += (xm - xv[d]) * tv[d];
     c1 += 0.5 * (xb - xa) * tv[d];
     c2 += (0.5 * (xa + xb) - xm) * tv[d];
@@ -361,26 +371,32 @@ static PetscReal MortarTie(const Mortar *m, PetscInt s, PetscInt se, PetscReal a
    iterate). The gap is continuous at a tie and its derivative jumps: the cut
    carries the two edges for the Hessian's crossing term (none next to an
    extension, whose gap ContactGapOnEdge does not give). */
-static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt *ea, PetscInt *eb)
+static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt *ea, PetscInt *eb, PetscBool *ma, PetscBool *mb)
 {
   const ContactSurface *M = &m->b.S[1 - s], *S = &m->b.S[s];
   PetscInt              i, j;
 
   *ea = *eb = -1;
-  for (PetscInt k = 0; k < 2; ++k) { /* an edge and its own end's fan or extension, either way round */
+  *ma = *mb = PETSC_FALSE;
+  for (PetscInt k = 0; k < 2; ++k) { /* an edge and its own end's fan or extension, either way round (an end on the mirror line is the image's end too) */
     const MortarRegion E = k ? Rb : Ra, O = k ? Ra : Rb;
     if (E.kind != REGION_EDGE) continue;
-    for (PetscInt e = 0; e < 2; ++e)
-      if ((O.kind == REGION_NODE && O.id == M->enodes[3 * E.id + e]) || (O.kind == REGION_EXT && O.id == E.id && O.end == e)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0);
+    for (PetscInt e = 0; e < 2; ++e) {
+      const PetscInt v = M->enodes[3 * E.id + e];
+      if ((O.kind == REGION_NODE && O.id == v && (O.mirror == E.mirror || (M->cutNode && M->cutNode[v] != 0))) || (O.kind == REGION_EXT && O.id == E.id && O.end == e && O.mirror == E.mirror)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0, E.mirror);
+    }
   }
-  if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && ContactGapEndBlended(M, Ra.id, i)) { /* across a blended node */
+  if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && ContactGapEndBlended(M, Ra.id, i)) { /* across a blended node */
     *ea = Ra.id;
     *eb = Rb.id;
-    return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+    *ma = *mb = Ra.mirror;
+    return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, Ra.mirror);
   }
   if (Ra.kind != REGION_EXT && Rb.kind != REGION_EXT) {
     *ea = Ra.edge;
     *eb = Rb.edge;
+    *ma = Ra.mirror;
+    *mb = Rb.mirror;
   }
   return MortarTie(m, s, se, a, Ra, b, Rb);
 }
@@ -415,29 +431,30 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
   } else if (Ra.kind != REGION_NONE && Rb.kind != REGION_NONE) {
     const ContactSurface *M = &m->b.S[1 - s];
     PetscInt              ea, eb, i, j;
-    if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && !ContactGapEndBlended(M, Ra.id, i)) {
+    PetscBool             ma, mb;
+    if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && !ContactGapEndBlended(M, Ra.id, i)) {
       /* two edges at a corner: its fan, if the bisector lies in it */
-      c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0);
+      c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, Ra.mirror);
       if (c > a && c < b) {
         Rc = MortarRegionAt(m, s, se, c, NULL);
         if (Rc.kind == REGION_NODE && Rc.id == M->enodes[3 * Ra.id + i]) {
           MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut, cache);
-          cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
+          cut[(*ncut)++] = (MortarCut){se, -1, -1, c, PETSC_FALSE, PETSC_FALSE};
           MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut, cache);
           return;
         }
       }
     }
-    c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb);
+    c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb, &ma, &mb);
     if (c > a && c < b && MortarPieceUniform(m, s, se, a, c, Ra, cache) && MortarPieceUniform(m, s, se, c, b, Rb, cache)) {
-      cut[(*ncut)++] = (MortarCut){se, ea, eb, c};
+      cut[(*ncut)++] = (MortarCut){se, ea, eb, c, ma, mb};
       return;
     }
   }
   c  = 0.5 * (a + b);
   Rc = MortarRegionAt(m, s, se, c, NULL);
   MortarSplit(m, s, se, a, Ra, c, Rc, depth + 1, ncut, cut, cache);
-  cut[(*ncut)++] = (MortarCut){se, -1, -1, c};
+  cut[(*ncut)++] = (MortarCut){se, -1, -1, c, PETSC_FALSE, PETSC_FALSE};
   MortarSplit(m, s, se, c, Rc, b, Rb, depth + 1, ncut, cut, cache);
 }
 
@@ -452,14 +469,14 @@ static PetscErrorCode MortarEdgePoints(Mortar *m, PetscInt s, PetscInt se, Petsc
 
   PetscFunctionBeginUser;
   cache.n     = 0;
-  cut[ncut++] = (MortarCut){se, -1, -1, -1.0};
+  cut[ncut++] = (MortarCut){se, -1, -1, -1.0, PETSC_FALSE, PETSC_FALSE};
   if (m->basis == MORTAR_BASIS_SUBLINEAR) { /* the weights' kink at the mid-edge node */
     const MortarRegion R0 = MortarRegionAt(m, s, se, 0.0, NULL);
     MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0, NULL), 0.0, R0, 0, &ncut, cut, &cache);
-    cut[ncut++] = (MortarCut){se, -1, -1, 0.0};
+    cut[ncut++] = (MortarCut){se, -1, -1, 0.0, PETSC_FALSE, PETSC_FALSE};
     MortarSplit(m, s, se, 0.0, R0, 1.0, MortarRegionAt(m, s, se, 1.0, NULL), 0, &ncut, cut, &cache);
   } else MortarSplit(m, s, se, -1.0, MortarRegionAt(m, s, se, -1.0, NULL), 1.0, MortarRegionAt(m, s, se, 1.0, NULL), 0, &ncut, cut, &cache);
-  cut[ncut++] = (MortarCut){se, -1, -1, 1.0};
+  cut[ncut++] = (MortarCut){se, -1, -1, 1.0, PETSC_FALSE, PETSC_FALSE};
   if (*np + (ncut - 1) * m->nq > *npmax) {
     MortarPoint *grown;
     *npmax = 2 * (*np + (ncut - 1) * m->nq);
@@ -597,7 +614,7 @@ static PetscErrorCode MortarAccumulateGradient(Mortar *m, PetscReal *energy)
       if (f == 0) continue;
       mn = &M->mnodes[7 * P->G.me];
       for (PetscInt i = 0; i < 3; ++i)
-        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] += f * P->N[i] * P->G.n[d];
+        for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] += f * P->N[i] * P->G.ns[d];
       for (PetscInt j = 0; j < 7; ++j)
         for (PetscInt d = 0; d < 2; ++d) M->g[2 * mn[j] + d] -= f * P->G.M7[j] * P->G.n[d];
     }
@@ -714,9 +731,9 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
       if (L == 0) continue;
       EdgeEval(S->x, sn, X->xi, xs, ts);
       EdgeEval(S->X, sn, X->xi, Xr, Tr);
-      ContactGapOnEdge(M, X->ea, xs, &Ga);
-      ContactGapOnEdge(M, X->eb, xs, &Gb);
-      den = (Ga.n[0] - Gb.n[0]) * ts[0] + (Ga.n[1] - Gb.n[1]) * ts[1]; /* d/dxi (g_a - g_b) */
+      ContactGapOnEdge(M, X->ea, X->ma, xs, &Ga);
+      ContactGapOnEdge(M, X->eb, X->mb, xs, &Gb);
+      den = (Ga.ns[0] - Gb.ns[0]) * ts[0] + (Ga.ns[1] - Gb.ns[1]) * ts[1]; /* d/dxi (g_a - g_b) */
       if (PetscAbsReal(den) <= 1e-12 * PetscSqrtReal(ts[0] * ts[0] + ts[1] * ts[1])) continue;
       ContactGapIndices(S, sn, M, &Ga, ia);
       ContactGapIndices(S, sn, M, &Gb, ib);

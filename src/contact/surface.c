@@ -251,6 +251,48 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
 /* Gathers the current coordinates x = X + u of the surface nodes on every
    rank (each node's u from the one rank that owns it, so x is the same to the
    bit on every rank); changed: whether any differs from the last x. */
+/* How far below the mirror line the current surface reaches: each quadratic
+   edge lies in the triangle of its end nodes and its control point
+   2 x_mid - (x_a + x_b)/2, so the lowest of these bounds it. A point at
+   y - mirrorY >= mirrorReach + d is at least d from the mirror image. */
+static void ContactSurfaceMirrorReach(ContactSurface *S)
+{
+  PetscReal lo = 0.0;
+
+  for (PetscInt e = 0; e < S->ne; ++e) {
+    const PetscInt *n  = &S->enodes[3 * e];
+    const PetscReal ya = S->x[2 * n[0] + 1], yb = S->x[2 * n[1] + 1], yc = 2.0 * S->x[2 * n[2] + 1] - 0.5 * (ya + yb);
+    lo = PetscMin(lo, PetscMin(ya, PetscMin(yb, yc)) - S->mirrorY);
+  }
+  S->mirrorReach = -lo;
+}
+
+/* The ends of the surface on the line (to a millionth of the surface's
+   length, in the reference configuration), and the side the surface faces
+   there: its outward normal and its image's have the mean (n_x, 0), and the
+   sign of n_x is fixed by the reference configuration (an iterate may bend
+   the end edge until its own tangent there is parallel to the line). */
+PetscErrorCode ContactSurfaceSetMirror(ContactSurface *S, PetscReal y)
+{
+  const PetscReal tol = 1e-6 * ContactSurfaceLength(S);
+
+  PetscFunctionBeginUser;
+  S->mirror  = PETSC_TRUE;
+  S->mirrorY = y;
+  PetscCall(PetscCalloc1(S->nn, &S->cutNode));
+  for (PetscInt e = 0; e < S->ne; ++e)
+    for (PetscInt j = 0; j < 2; ++j) {
+      const PetscInt v = S->enodes[3 * e + j];
+      PetscReal      p[2], t[2];
+      if (!S->endNode[v] || PetscAbsReal(S->X[2 * v + 1] - y) > tol) continue;
+      EdgeEval(S->X, &S->enodes[3 * e], j ? 1.0 : -1.0, p, t);
+      PetscCheck(PetscAbsReal(t[1]) > 1e-3 * PetscAbsReal(t[0]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "surface '%s' ends on the mirror line y = %g at (%g, %g) running along it: a mirrored surface must cross the line", S->group, (double)y, (double)p[0], (double)p[1]);
+      S->cutNode[v] = S->esign[e] * t[1] > 0 ? 1.0 : -1.0; /* n = esign (t_y, -t_x) */
+    }
+  ContactSurfaceMirrorReach(S);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscBool *changed)
 {
   const PetscScalar *u;
@@ -272,6 +314,7 @@ PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscB
   }
   PetscCall(PetscArraycpy(S->x, x, 2 * S->nn));
   PetscCall(PetscFree2(du, x));
+  if (S->mirror) ContactSurfaceMirrorReach(S);
   PetscFunctionReturn(0);
 }
 
@@ -374,6 +417,7 @@ PetscErrorCode ContactSurfaceDestroy(ContactSurface *S)
   PetscCall(PetscFree(S->nodeId));
   PetscCall(PetscFree4(S->X, S->x, S->g, S->big));
   PetscCall(PetscFree(S->endNode));
+  PetscCall(PetscFree(S->cutNode));
   PetscCall(PetscFree2(S->mnodes, S->mcorr));
   PetscCall(PetscFree2(S->locNode, S->locOff));
   PetscCall(PetscFree(S->ownEdges));
