@@ -65,6 +65,8 @@ struct _n_Problem {
   PetscInt  taylorN;
   PetscReal taylorScale;
   PetscInt  loadSteps, penaltyStages, stagesDone;
+  PetscInt  maxCutbacks, cutbacks; /* automatic load cutback: the limit, and how many a solve took */
+  PetscReal loadDone;               /* the load factor of the last converged stage */
   PetscBool schur; /* Newton through the contact-surface Schur complement */
   PetscBool iterative; /* Newton by CG + GAMG (iterative.c) */
   SchurType schurType;

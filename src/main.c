@@ -130,10 +130,11 @@ static PetscErrorCode Run(int *status)
     }
     else {
       TaoConvergedReason reason;
-      char               why[PETSC_MAX_PATH_LEN] = "";
+      char               why[PETSC_MAX_PATH_LEN] = "", cut[128] = "";
       PetscCall(TaoGetConvergedReason(problem->tao, &reason));
       for (PetscInt t = 0; t < problem->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(problem->terms[t], sizeof(why), why));
-      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s)%s%s; no output written\n", TaoConvergedReasons[reason], why[0] ? ": " : "", why));
+      if (problem->cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", problem->cutbacks, problem->cutbacks > 1 ? "s" : "", (double)problem->loadDone));
+      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[reason], cut, why[0] ? ": " : "", why));
       ContactOutputDiscard();
     }
     PetscCall(PetscTime(&t3));

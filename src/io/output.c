@@ -594,6 +594,7 @@ static PetscErrorCode WriteJSON(Problem p, BodyNodalFields F[], PetscBool conver
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->scene, set.runId, (int)dofs, (int)size, type);
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], converged ? "true" : "false", (int)its);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->nEnergyEvals, (int)p->nHessianEvals);
+    fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->stagesDone, (int)p->cutbacks);
     fprintf(fp, "  \"energy\": ");
     ContactJSONReal(fp, p->energy);
     fprintf(fp, ",\n  \"gradient_norm\": ");

@@ -28,6 +28,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->h0          = H0_ELASTIC;
   p->taylorScale = 1e-4;
   p->loadSteps     = 1;
+  p->maxCutbacks   = 4;
   p->schur         = PETSC_TRUE;
   p->hessianType   = HESSIAN_AUTO;
   p->hessianSwitch = 1e-4;
@@ -132,6 +133,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
+  PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->maxCutbacks, &p->maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->stageRtol, &p->stageRtol, NULL));
@@ -151,6 +153,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
   p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
+  PetscCheck(p->maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->maxCutbacks);
   PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
   PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
   PetscCheck(p->stageRtol > 0 && p->stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->stageRtol);
@@ -719,55 +722,120 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
   PetscFunctionReturn(0);
 }
 
-/* Load stepping (outer) and penalty continuation (inner): each stage is a TAO
-   solve from the last stage's solution. Intermediate stages stop when their
-   gradient norm has fallen by -stage_rtol; the last one stops where a single
-   solve from rest would, at -tao_gttol times the gradient norm of the full
-   problem at rest, which makes the result independent of the staging. A
-   single solve from p->X0 stops there too. */
+/* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
+   rest, where a solve from rest starts and the last stage stops relative to;
+   the energy evaluation is not counted. */
+static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
+{
+  PetscReal f;
+  Vec       X;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(p->X, &X));
+  PetscCall(ProblemSetStage(p, 1.0, 1.0));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
+  p->nEnergyEvals--;
+  PetscCall(VecNorm(p->G, NORM_2, g0));
+  PetscCall(VecDestroy(&X));
+  PetscFunctionReturn(0);
+}
+
+/* Whether a stopped solve is retried with a smaller load increment: its line
+   search failed (or met a NaN), which is what an iterate thrown far from the
+   solution by a large step of the load meets (the contact's kinks, a
+   non-convex energy at deep overlap); not a limit the user set. */
+static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
+{
+  return (PetscBool)(r == TAO_DIVERGED_LS_FAILURE || r == TAO_DIVERGED_NAN || r == TAO_DIVERGED_TR_REDUCTION);
+}
+
+/* The penalty stages at load factor load, each a TAO solve from the last;
+   the last stage of the last load stops at the final tolerance, gttol times
+   the gradient norm g0 of the full problem at rest, the others when their
+   gradient norm has fallen by -stage_rtol. */
+static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 1; s <= p->penaltyStages; ++s) {
+    const PetscBool last    = (PetscBool)(lastLoad && s == p->penaltyStages);
+    const PetscReal penalty = p->penaltyStages > 1 ? PetscPowReal(p->penaltyStart, (PetscReal)(p->penaltyStages - s) / (p->penaltyStages - 1)) : 1.0;
+    PetscInt        n;
+
+    PetscCall(ProblemSetStage(p, load, penalty));
+    if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
+    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->stageRtol));
+    PetscCall(TaoSolve(p->tao));
+    PetscCall(TaoGetSolutionStatus(p->tao, &n, NULL, NULL, NULL, NULL, reason));
+    PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
+    *its += n;
+    p->stagesDone++;
+    if (*reason <= 0) PetscFunctionReturn(0);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Load stepping (outer), penalty continuation (inner) and automatic cutback.
+   The load factor walks from 0 to 1 in steps of 1/-load_steps; each load is
+   solved from the last converged state. Where a load's solve stops with a
+   failed line search the state goes back to the last converged one and the
+   step is halved (at most -load_cutbacks times in all): a smaller step of the
+   load starts Newton closer to the solution it tracks, as an implicit
+   analysis cuts back its increment. A single solve from rest (the default)
+   that fails starts this walk with a step of 1/2. The last stage stops
+   where a single solve from rest would, at -tao_gttol times the gradient
+   norm of the full problem at rest, which makes the result independent of
+   the staging. */
 static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt nstages = p->loadSteps * p->penaltyStages;
-  PetscReal      gatol, grtol, gttol, g0, f;
+  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->loadSteps;
+  Vec       Xs;
 
   PetscFunctionBeginUser;
   *its = 0;
   p->stagesDone = 0;
+  p->cutbacks   = 0;
+  p->loadDone   = 0.0;
   p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
-  if (nstages > 1 || p->X0) { /* the gradient at rest (X is zero here), where the last stage stops */
-    PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
-    PetscCall(ProblemComputeObjectiveGradient(p->tao, p->X, &f, p->G, p));
-    p->nEnergyEvals--;
-    PetscCall(VecNorm(p->G, NORM_2, &g0));
-    p->hessianG0 = g0; /* every stage switches where a single solve would */
-  }
-  if (nstages == 1) {
+  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  if (p->loadSteps * p->penaltyStages == 1) { /* one solve, from rest or from the given start */
+    PetscBool cut;
     if (p->X0) {
+      PetscCall(ProblemGradientAtRest(p, &g0));
       PetscCall(VecCopy(p->X0, p->X));
-      PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+      PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     }
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
     p->stagesDone = 1;
-    PetscFunctionReturn(0);
-  }
-  for (PetscInt l = 1; l <= p->loadSteps; ++l) {
-    for (PetscInt s = 1; s <= p->penaltyStages; ++s) {
-      const PetscBool last    = (PetscBool)(l == p->loadSteps && s == p->penaltyStages);
-      const PetscReal penalty = p->penaltyStages > 1 ? PetscPowReal(p->penaltyStart, (PetscReal)(p->penaltyStages - s) / (p->penaltyStages - 1)) : 1.0;
-      PetscInt        n;
-
-      PetscCall(ProblemSetStage(p, (PetscReal)l / p->loadSteps, penalty));
-      if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
-      else PetscCall(TaoSetTolerances(p->tao, gatol, grtol, p->stageRtol));
-      PetscCall(TaoSolve(p->tao));
-      PetscCall(TaoGetSolutionStatus(p->tao, &n, NULL, NULL, NULL, NULL, reason));
-      PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->stagesDone + 1, (double)l / p->loadSteps, (double)penalty, TaoConvergedReasons[*reason], n));
-      *its += n;
-      p->stagesDone++;
-      if (*reason <= 0) PetscFunctionReturn(0);
+    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->maxCutbacks > 0);
+    if (!cut) {
+      if (*reason > 0) p->loadDone = 1.0;
+      PetscFunctionReturn(0);
     }
+    PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
+    p->cutbacks = 1;
+    step        = 0.5;
   }
+  if (g0 < 0) PetscCall(ProblemGradientAtRest(p, &g0));
+  p->hessianG0 = g0; /* every stage switches where a single solve would */
+  PetscCall(VecZeroEntries(p->X));
+  PetscCall(VecDuplicate(p->X, &Xs));
+  PetscCall(VecCopy(p->X, Xs));
+  while (p->loadDone < 1.0) {
+    const PetscReal next = p->loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
+    PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
+    if (*reason > 0) {
+      p->loadDone = load;
+      PetscCall(VecCopy(p->X, Xs));
+      continue;
+    }
+    if (!ProblemCutbackApplies(*reason) || p->cutbacks >= p->maxCutbacks) break;
+    PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->loadDone, (double)(0.5 * step)));
+    p->cutbacks++;
+    step *= 0.5;
+    PetscCall(VecCopy(Xs, p->X));
+  }
+  PetscCall(VecDestroy(&Xs));
   PetscFunctionReturn(0);
 }
 
@@ -793,7 +861,8 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
     PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
     PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
   }
-  if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
+  if (p->cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->stagesDone, p->cutbacks, p->cutbacks > 1 ? "s" : "", (double)p->loadDone));
+  else if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
