@@ -103,3 +103,58 @@ def test_deep_overlap_names_the_stop(tmp_path):
     assert len(lines) == 1, r.stderr
     assert lines[0].startswith("contact: the solve did not converge (DIVERGED_MAXITS): pair interface: the bodies overlap by")
     assert "raise -contact_interface_penalty" in lines[0] and lines[0].endswith("no output written")
+
+
+def test_cutback_recovers(tmp_path):
+    """A load whose line search fails is cut back (-load_cutbacks, on by
+    default): the half scene at h = 0.02, k_p = 3e3, push 0.15 stops from rest
+    here (DIVERGED_LS_FAILURE after 41 iterations, the bodies 1.4 edges into
+    each other) and converges after one cutback, from rest in two load steps
+    (47 iterations in all). Whether the solve from rest stops may depend on
+    the machine's rounding, so the test follows what -load_cutbacks 0 does
+    here: if it stops, the default must have cut back and converged; if it
+    converges, the default must not have cut back and must give the same P.
+    Either way P must agree with the neighbouring mesh h = 0.025, which
+    converges from rest (measured 1.5e-5 apart; bound 1e-3: a run that ended
+    on the wrinkled states of a deep overlap is 0.3 to 3 % off)."""
+    args = HALF + ["-contact_penalty", "3e3", "-block_bc_push_values", "-0.15,0"]
+    off = run_contact(args + ["-mesh_size", 0.02, "-load_cutbacks", 0], tmp_path, name="off", check=False)
+    on = run_contact(args + ["-mesh_size", 0.02], tmp_path, name="on").summary
+    ref = run_contact(args + ["-mesh_size", 0.025], tmp_path, name="ref").summary
+    print(f"without cutback: exit {off.returncode}; with: {on['load_cutbacks']} cutback(s), {on['stages']} stages, "
+          f"{on['iterations']} iterations, P {on['contact_force']:.10g}; h = 0.025: P {ref['contact_force']:.10g}, "
+          f"{ref['load_cutbacks']} cutback(s)")
+    if off.returncode == 0:
+        assert on["load_cutbacks"] == 0 and on["stages"] == 1
+        assert abs(on["contact_force"] - off.summary["contact_force"]) <= 1e-12 * on["contact_force"]
+    else:
+        assert off.returncode == 2 and "(DIVERGED_LS_FAILURE)" in off.stderr, off.stderr
+        assert on["load_cutbacks"] >= 1 and on["stages"] >= 3   # the failed solve from rest, then loads 1/2 and 1
+    assert ref["load_cutbacks"] == 0
+    assert abs(on["contact_force"] - ref["contact_force"]) <= 1e-3 * ref["contact_force"]
+    f, reaction = on["contact"]["interface"]["force"][0], on["reactions"]["block:push"][0]
+    assert abs(abs(f) - abs(reaction)) <= 1e-6 * abs(reaction)
+
+
+def test_cutback_names_the_load(tmp_path):
+    """A solve whose every load fails (here each line search may try only the
+    full Newton step, -tao_ls_max_funcs 1, which from rest always overshoots)
+    is cut back -load_cutbacks times, from rest in steps of 1/2, 1/4, ...,
+    and stops with one line that says so and names the load it reached (none:
+    0); the summary line counts the stages (the solve from rest and one per
+    cutback). With -load_cutbacks 0 it stops after the one solve."""
+    args = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", 0.2, "-tao_ls_max_funcs", 1]
+    for n in (0, 2):
+        r = run_contact(args + ["-load_cutbacks", n], tmp_path, name=f"cut{n}", check=False)
+        assert r.returncode == 2, r.stderr
+        lines = [ln for ln in r.stderr.splitlines() if ln.startswith("contact:")]
+        assert len(lines) == 1, r.stderr
+        tao = [ln for ln in r.stdout.splitlines() if ln.startswith("TAO ")]
+        print(lines[0], tao)
+        if n == 0:
+            assert lines[0] == "contact: the solve did not converge (DIVERGED_LS_FAILURE); no output written"
+            assert "stages" not in tao[0]
+        else:
+            assert lines[0] == ("contact: the solve did not converge (DIVERGED_LS_FAILURE; the load cut back 2 times, "
+                                "solved up to 0 of it); no output written")
+            assert tao[0].endswith("(3 stages; the load cut back 2 times, the last converged load 0.)")
