@@ -109,7 +109,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-penalty", "Penalty k_p of this pair (default -contact_penalty)", "-contact_penalty", setkp, &spec.kp, &setPairKp));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, spec.radii, &nr, &spec.hertz));
-    PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
+    PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
     PetscOptionsEnd();
     if (help && !setPair) { /* -help: a pair without surfaces (the placeholder) is only listed */
       for (PetscInt s = 0; s < ns; ++s) PetscCall(PetscFree(surf[s]));
