@@ -50,6 +50,7 @@ RANKS = [1, 2]
 RANK_TOL = 1e-8      # 1 and 2 ranks agree on P to this, relative
 TIMEOUT = 1800       # seconds; the slowest run takes about 200
 TAO_LINE = re.compile(r"TAO \w+: (\w+) after (\d+) iterations, (\d+) energy evaluations")
+CUTBACKS = re.compile(r"the load cut back (\d+) time")
 
 
 def git(*args):
@@ -94,6 +95,8 @@ def one(h, kp, push, form, ranks, tmp, out):
     m = TAO_LINE.search(p.stdout)
     if m:
         r.update(reason=m.group(1), iterations=int(m.group(2)), function_evaluations=int(m.group(3)))
+    c = CUTBACKS.search(p.stdout)
+    r["cutbacks"] = int(c.group(1)) if c else 0
     if s is not None:
         pair = s["contact"]["interface"]
         r.update(converged=bool(s["converged"]) and p.returncode == 0, reason=s["tao_reason"],
@@ -256,6 +259,11 @@ def tables(res):
         ranks += f", all within {RANK_TOL:g}"
     balance = largest([r["balance"] for r in runs if "balance" in r], ".1e")
     stopped = f"Runs that stopped: {len(failed)}" + ("." if not failed else ": " + stopped_cases(failed) + ".")
+    cut = [r for r in runs if r["converged"] and r.get("cutbacks", 0) > 0]
+    if cut:
+        stopped += (f" Runs that converged after the automatic load cutback: {len(cut)} ("
+                    + ", ".join(f"h = {r['h']:g}, k_p = {power(r['kp'])}, push = {r['push']:g}, {r['formulation']}, "
+                                f"{r['ranks']} rank{'s' if r['ranks'] > 1 else ''}: {r['cutbacks']}" for r in cut) + ").")
     out += ["", f"{ranks}. The largest relative difference between the pair's force and the pushed edge's "
             f"reaction: {balance}. {stopped} The sweep's runs took {res.get('sweep_seconds', 0) / 60:.0f} minutes."]
     return "\n".join(out) + "\n"
