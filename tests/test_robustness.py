@@ -87,8 +87,14 @@ def test_deep_overlap_named(tmp_path):
           f"ratio {expected:.4g}, printed {ratio}")
     assert expected > 1.5
     assert abs(ratio - expected) <= 0.005 * expected   # printed to 3 digits
+    for figures in (r.summary, r.summary["contact"]["interface"]):
+        # the JSON's, unrounded; the program's edges are arcs, the test's two chords through the mid-edge
+        # node, shorter on the disc by (theta/2)^2/6 = 2.6e-5 (theta = h/R = 0.05): measured 2.6e-5
+        print(f"JSON overlap_edges {figures['overlap_edges']!r}, {figures['overlap_edges'] / expected - 1:.1e} off")
+        assert abs(figures["overlap_edges"] - expected) <= 7e-5 * expected
     stiff = run_contact(HALF + ["-mesh_size", 0.05], tmp_path, name="stiff")
     assert "bodies overlap" not in stiff.stdout
+    assert stiff.summary["overlap_edges"] <= 3e-3   # measured 1.0e-3: 5e-5 into each other, edges of 0.05
 
 
 def test_deep_overlap_names_the_stop(tmp_path):

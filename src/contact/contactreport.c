@@ -223,6 +223,7 @@ static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairS
 {
   JKV(fp, sep, forceKey, R->P);
   JKV(fp, sep, "max_penetration", R->maxPen);
+  JKV(fp, sep, "overlap_edges", R->hEdge > 0 && R->hEdge < PETSC_MAX_REAL ? R->maxPen / R->hEdge : 0.0); /* over 1: the report's warning */
   JKV(fp, sep, "fem_pmax", R->femPmax);
   JKV(fp, sep, "fem_a", R->femA);
   JKV(fp, sep, "fem_a_moment", R->femAm);
