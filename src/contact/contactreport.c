@@ -5,6 +5,7 @@
    ranks; the console report, the JSON members and the HDF5 group. */
 #include <petscviewerhdf5.h>
 #include "contactreport.h"
+#include "xdmf.h"
 
 PetscErrorCode ContactReportReset(ContactReport *R)
 {
@@ -318,6 +319,17 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
       PetscCall(VecView(vec, v));
       PetscCall(VecDestroy(&vec));
     }
+    for (PetscInt k = 0; k < 2; ++k) { /* the XDMF grid's stand-ins for the bodies' fields (xdmf.h) */
+      Vec vec;
+      PetscCall(VecCreate(comm, &vec));
+      PetscCall(VecSetSizes(vec, n * (k ? 3 : 1), PETSC_DETERMINE));
+      PetscCall(VecSetBlockSize(vec, k ? 3 : 1));
+      PetscCall(VecSetType(vec, VECSTANDARD));
+      PetscCall(PetscObjectSetName((PetscObject)vec, k ? "xdmf_zero_xyz" : "xdmf_nan"));
+      PetscCall(VecSet(vec, k ? 0.0 : (PetscScalar)NAN));
+      PetscCall(VecView(vec, v));
+      PetscCall(VecDestroy(&vec));
+    }
     { /* the line cells, decided on rank 0 (it holds the samples) */
       PetscInt lc[2] = {0, 2}, m, *idx;
       IS       is;
@@ -377,14 +389,13 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
 PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, const char h5[])
 {
   const char *pre = R->nodal ? "node_" : "";
-  const char *attr[3] = {"pressure", "gap", "s"};
 
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S = &R->side[s];
     const char        *body = bodies[spec->body[s]]->name, *grp = spec->group[s];
     PetscInt           nc, nper;
-    char               g[4 * CONTACT_NAME_LEN];
+    char               g[4 * CONTACT_NAME_LEN], path[PETSC_MAX_PATH_LEN];
 
     ContactSideLineCells(S, R->nodal, &nc, &nper);
     if (!nc) continue;
@@ -394,7 +405,15 @@ PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairS
     else fprintf(fp, "    <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"%d\">\n", (int)nc);
     fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%scells</DataItem>\n    </Topology>\n", (int)nc, (int)nper, (int)sizeof(PetscInt), g);
     fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%sx</DataItem>\n    </Geometry>\n", (int)S->n, g);
-    for (PetscInt k = 0; k < 3; ++k) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s%s</DataItem>\n    </Attribute>\n", attr[k], (int)S->n, g, attr[k]);
+    for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) {
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, XdmfSurfaceScalars[k]));
+      XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)S->n, 1, path);
+    }
+    /* the bodies' fields (xdmf.h): no displacement to apply (the grid is at the current positions), no stress */
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_zero_xyz", h5, spec->name, body, grp));
+    XdmfWriteAttribute(fp, "displacement", (int)S->n, 3, path);
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_nan", h5, spec->name, body, grp));
+    for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfBodyScalars[k], (int)S->n, 1, path);
     fprintf(fp, "   </Grid>\n");
   }
   PetscFunctionReturn(0);

@@ -30,6 +30,7 @@
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 #include "problem.h"
+#include "xdmf.h"
 #include "progress.h"
 
 #define MAX_PENDING  3
@@ -468,9 +469,15 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
       fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
       fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
       fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
-      fprintf(fp, "    <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/displacement_xyz</DataItem>\n    </Attribute>\n", (int)N, base, g);
-      for (PetscInt k = 0; k < 4; ++k) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/%s</DataItem>\n    </Attribute>\n", stressNames[k], (int)N, base, g, stressNames[k]);
-      fprintf(fp, "    <Attribute Name=\"von_mises\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/von_mises</DataItem>\n    </Attribute>\n", (int)N, base, g);
+      char        path[PETSC_MAX_PATH_LEN];
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/displacement_xyz", base, g));
+      XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
+      for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
+        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, XdmfBodyScalars[k]));
+        XdmfWriteAttribute(fp, XdmfBodyScalars[k], (int)N, 1, path);
+      }
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
+      for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
       fprintf(fp, "   </Grid>\n");
     }
     for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
@@ -481,7 +488,8 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
 }
 
 /* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
-   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress. */
+   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress,
+   and xdmf_nan, NaN at every node, for the contact fields a body has not. */
 static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
 {
   Vec                d3, c;
@@ -513,6 +521,9 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
     PetscCall(PetscObjectSetName((PetscObject)c, stressNames[k]));
     PetscCall(VecView(c, v));
   }
+  PetscCall(VecSet(c, (PetscScalar)NAN)); /* the contact fields a body has not (xdmf.h) */
+  PetscCall(PetscObjectSetName((PetscObject)c, "xdmf_nan"));
+  PetscCall(VecView(c, v));
   PetscCall(VecDestroy(&c));
   PetscFunctionReturn(0);
 }

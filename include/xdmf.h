@@ -1,0 +1,22 @@
+#pragma once
+#include <stdio.h>
+
+/* The point fields of the XDMF file's grids (output.c writes the bodies',
+   contactreport.c the contact surfaces'). ParaView's Xdmf3ReaderS, the
+   reader OpenDataFile picks, reads the file's spatial collection as the
+   pieces of one dataset and colours by a field only where every piece has
+   it (a body coloured by von_mises rendered uniform grey). So every grid
+   carries every field: a body's contact fields are NaN (no value), a
+   surface's stress fields NaN and its displacement zero (its grid is drawn at
+   the current positions already, so Warp By Vector leaves it there). */
+#define XDMF_BODY_SCALARS    5
+#define XDMF_SURFACE_SCALARS 3
+static const char *const XdmfBodyScalars[XDMF_BODY_SCALARS]       = {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "von_mises"};
+static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
+
+/* One node-centred attribute: n tuples of 1 or 3 components in dataset path. */
+static inline void XdmfWriteAttribute(FILE *fp, const char name[], int n, int components, const char path[])
+{
+  if (components == 3) fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s</DataItem>\n    </Attribute>\n", name, n, path);
+  else fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n     <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s</DataItem>\n    </Attribute>\n", name, n, path);
+}
