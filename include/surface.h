@@ -37,6 +37,17 @@ PetscErrorCode ContactSurfaceDestroy(ContactSurface *);
 /* The surface is the half y >= y of one symmetric about that line: marks its
    ends on the line, where the mirror image continues it. */
 PetscErrorCode ContactSurfaceSetMirror(ContactSurface *, PetscReal y);
+/* The mirror image of height y (a half model's line, ContactSurfaceSetMirror). */
+static inline PetscReal ContactSurfaceMirrorY(const ContactSurface *S, PetscReal y)
+{
+  return 2.0 * S->mirrorY - y;
+}
+/* At an end of the surface on the mirror line: the sign (+-1) of the x
+   component of the outward normal there; 0 elsewhere or without a mirror. */
+static inline PetscReal ContactSurfaceCutSide(const ContactSurface *S, PetscInt v)
+{
+  return S->cutNode ? S->cutNode[v] : 0.0;
+}
 /* Collective: x = X + u of every node, from the body's local vector Xl;
    changed: whether x differs from the last (the same answer on every rank). */
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *, Body, PetscBool *changed);

@@ -87,7 +87,7 @@ static PetscReal ContactGapNodeSide(const ContactSurface *M, PetscInt e, PetscIn
   const PetscInt  *mn = &M->mnodes[7 * e];
   PetscReal        N[3], dN[3], t[2] = {0, 0}, n[2];
 
-  if (M->cutNode && M->cutNode[mn[j]] != 0) return d[0] * M->cutNode[mn[j]] >= 0 ? 1.0 : -1.0; /* on the mirror line: the mean of its image's normal and its own is along the line */
+  if (ContactSurfaceCutSide(M, mn[j]) != 0) return d[0] * ContactSurfaceCutSide(M, mn[j]) >= 0 ? 1.0 : -1.0; /* on the mirror line: the mean of its image's normal and its own is along the line */
   EdgeShape(j ? 1.0 : -1.0, N, dN); /* the edge's own end tangent, then the correction */
   for (PetscInt k = 0; k < 7; ++k)
     for (PetscInt c = 0; c < 2; ++c) t[c] += ((k < 3 ? dN[k] : 0.0) + C[k]) * M->x[2 * mn[k] + c];
@@ -162,8 +162,8 @@ static void ContactGapProjectHalf(const ContactSurface *M, ContactSearch search,
      gap there is no contact; a negative one is a point pushed past the end,
      whose energy must not vanish as it crosses the end's normal line. Not at
      the cut of a half model, which the mirror image continues (a corner) */
-  if (P->eta <= -1.0 && M->endNode[mn[0]] && !(M->cutNode && M->cutNode[mn[0]] != 0)) ContactGapExtend(M, xs, -1.0, P);
-  else if (P->eta >= 1.0 && M->endNode[mn[1]] && !(M->cutNode && M->cutNode[mn[1]] != 0)) ContactGapExtend(M, xs, 1.0, P);
+  if (P->eta <= -1.0 && M->endNode[mn[0]] && ContactSurfaceCutSide(M, mn[0]) == 0) ContactGapExtend(M, xs, -1.0, P);
+  else if (P->eta >= 1.0 && M->endNode[mn[1]] && ContactSurfaceCutSide(M, mn[1]) == 0) ContactGapExtend(M, xs, 1.0, P);
   else ContactGapEvaluate(M, xs, P);
 }
 
@@ -180,7 +180,7 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
   ContactGapProjectHalf(M, search, xs, P);
   ContactGapSetMirror(P, PETSC_FALSE);
   if (M->mirror && P->me >= 0 && xs[1] - M->mirrorY < M->mirrorReach + PetscAbsReal(P->gap)) {
-    const PetscReal xr[2] = {xs[0], 2.0 * M->mirrorY - xs[1]};
+    const PetscReal xr[2] = {xs[0], ContactSurfaceMirrorY(M, xs[1])};
     ContactGap      R;
     ContactGapProjectHalf(M, search, xr, &R);
     if (R.me >= 0 && PetscAbsReal(R.gap) < PetscAbsReal(P->gap)) { /* a tie (a point on the line) keeps the half's own */
@@ -192,7 +192,7 @@ void ContactGapProject(const ContactSurface *M, ContactSearch search, const Pets
 
 void ContactGapOnEdge(const ContactSurface *M, PetscInt e, PetscBool mirror, const PetscReal xs[2], ContactGap *P)
 {
-  const PetscReal xr[2] = {xs[0], mirror ? 2.0 * M->mirrorY - xs[1] : xs[1]};
+  const PetscReal xr[2] = {xs[0], mirror ? ContactSurfaceMirrorY(M, xs[1]) : xs[1]};
   PetscReal       d2;
 
   P->me  = e;

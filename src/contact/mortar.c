@@ -271,7 +271,7 @@ static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se,
   PetscReal             xs[2], dS, eta, d2, xv[2], t[2], xpp[2], d[2], dt;
 
   MortarSlaveEval(&m->b.S[s], se, xi, xs, &dS);
-  if (R.mirror) xs[1] = 2.0 * M->mirrorY - xs[1]; /* the image's distance is the reflected point's */
+  if (R.mirror) xs[1] = ContactSurfaceMirrorY(M, xs[1]); /* the image's distance is the reflected point's */
   switch (R.kind) {
   case REGION_EDGE:
     MasterProject(M, R.id, xs, &eta, &d2);
@@ -311,8 +311,12 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   nb = PetscSqrtReal(tb[0] * tb[0] + tb[1] * tb[1]);
   for (PetscInt d = 0; d < 2; ++d) tv[d] = wa * ta[d] / na + wb * sg * tb[d] / nb;
   for (PetscInt d = 0; d < 2; ++d) { /* x_s(xi) = x_m + xi (x_b - x_a)/2 + xi^2 ((x_a + x_b)/2 - x_m) */
-    const PetscReal r = mirror && d == 1 ? -1.0 : 1.0, o = mirror && d == 1 ? 2.0 * M->mirrorY : 0.0;
-    const PetscReal xa = o + r * S->x[2 * sn[0] + d], xb = o + r * S->x[2 * sn[1] + d], xm = o + r * S->x[2 * sn[2] + d];
+    PetscReal xa = S->x[2 * sn[0] + d], xb = S->x[2 * sn[1] + d], xm = S->x[2 * sn[2] + d];
+    if (mirror && d == 1) {
+      xa = ContactSurfaceMirrorY(M, xa);
+      xb = ContactSurfaceMirrorY(M, xb);
+      xm = ContactSurfaceMirrorY(M, xm);
+    }
     c0 += (xm - xv[d]) * tv[d];
     c1 += 0.5 * (xb - xa) * tv[d];
     c2 += (0.5 * (xa + xb) - xm) * tv[d];
@@ -383,7 +387,7 @@ static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, Pets
     if (E.kind != REGION_EDGE) continue;
     for (PetscInt e = 0; e < 2; ++e) {
       const PetscInt v = M->enodes[3 * E.id + e];
-      if ((O.kind == REGION_NODE && O.id == v && (O.mirror == E.mirror || (M->cutNode && M->cutNode[v] != 0))) || (O.kind == REGION_EXT && O.id == E.id && O.end == e && O.mirror == E.mirror)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0, E.mirror);
+      if ((O.kind == REGION_NODE && O.id == v && (O.mirror == E.mirror || ContactSurfaceCutSide(M, v) != 0)) || (O.kind == REGION_EXT && O.id == E.id && O.end == e && O.mirror == E.mirror)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0, E.mirror);
     }
   }
   if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && ContactGapEndBlended(M, Ra.id, i)) { /* across a blended node */

@@ -248,9 +248,6 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
   PetscFunctionReturn(0);
 }
 
-/* Gathers the current coordinates x = X + u of the surface nodes on every
-   rank (each node's u from the one rank that owns it, so x is the same to the
-   bit on every rank); changed: whether any differs from the last x. */
 /* How far below the mirror line the current surface reaches: each quadratic
    edge lies in the triangle of its end nodes and its control point
    2 x_mid - (x_a + x_b)/2, so the lowest of these bounds it. A point at
@@ -293,6 +290,9 @@ PetscErrorCode ContactSurfaceSetMirror(ContactSurface *S, PetscReal y)
   PetscFunctionReturn(0);
 }
 
+/* Gathers the current coordinates x = X + u of the surface nodes on every
+   rank (each node's u from the one rank that owns it, so x is the same to the
+   bit on every rank); changed: whether any differs from the last x. */
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscBool *changed)
 {
   const PetscScalar *u;

@@ -437,8 +437,6 @@ static PetscErrorCode OutputCommit(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-static const char *const stressNames[4] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
-
 /* The XDMF file: one spatial collection of a grid per body (its second-order
    cells, reference coordinates, displacement as a 3-component vector, stress
    components and von Mises stress) and a line grid per contact surface with a
@@ -518,7 +516,7 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
   PetscCall(VecDuplicate(F->vm, &c));
   for (PetscInt k = 0; k < 4; ++k) {
     PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
-    PetscCall(PetscObjectSetName((PetscObject)c, stressNames[k]));
+    PetscCall(PetscObjectSetName((PetscObject)c, XdmfBodyScalars[k])); /* stress_xx, _yy, _zz, _xy: the XDMF names */
     PetscCall(VecView(c, v));
   }
   PetscCall(VecSet(c, (PetscScalar)NAN)); /* the contact fields a body has not (xdmf.h) */
