@@ -7,14 +7,19 @@ on 1 and 2 ranks (about 10 s in all).
 
 Each run converges, and its answer is checked against what it must satisfy
 whatever the discretisation: the contact pair's force on the indenter equals
-the reaction at the pushed edge (equilibrium of the block, two independent
-sums, equal to the solver's stopping residual; measured over the OpenBLAS
-kernels Nehalem, Sandybridge, Haswell and SkylakeX 1e-11 to 3.2e-9, and
-1.32e-8 for the softest penalty with gpts, bound 1e-6, what the stopping test
-allows at k_p = 1e10 (the sweep measures 1.7e-6 at h = 0.01): catches a
-reaction summed over the wrong dofs or ranks, a force reported from another
-state), 1 and 2 ranks give the same P (measured 0 to 2.1e-9, bound 1e-8:
-catches a rank's share reported as the whole) although at k_p = 1e10 they
+the reaction at the pushed edge to what the run's own residual allows. The
+energy of the block is invariant under its rigid translation in x, so the
+force minus the reaction is exactly the sum of the gradient over the block's
+free x-dofs, and |that sum| <= sqrt(n) ||g|| (Cauchy-Schwarz, n <= the dofs):
+a bound from the run's gradient_norm, whatever path Newton took on whatever
+machine (at k_p = 1e10 the paths differ: the imbalance measured 4.3e-11 to
+3.1e-9 of P over the OpenBLAS kernels Nehalem, Sandybridge, Haswell and
+SkylakeX, where a fixed bound 3 times the largest would stand on one
+machine's rounding). Measured 5e-4 to 6.0e-2 of that bound over these
+kernels and cases (was a fixed 1e-6). Catches a reaction summed over the
+wrong dofs or ranks, a force reported from another state, a gradient norm
+that is not the gradient's. 1 and 2 ranks give the same P (measured 0 to
+2.1e-9, bound 1e-8: catches a rank's share reported as the whole) although at k_p = 1e10 they
 may take different Newton paths (62 against 49 iterations for gpts at
 h = 0.25), and the half model's P is twice its pair's force (measured
 exactly, bound 100 EPS: catches a mirror that does not double it)."""
@@ -46,7 +51,9 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
               f"reaction {reaction:.10g}: balance {abs(abs(f) - abs(reaction)) / abs(reaction):.2e}, "
               f"P - 2|f| {abs(s['contact_force'] - 2 * abs(f)) / s['contact_force']:.2e}")
         assert f < 0 < s["contact_force"], "the block pushes the indenter away (-x)"
-        assert abs(abs(f) - abs(reaction)) <= 1e-6 * abs(reaction), (f, reaction)
+        bound = math.sqrt(s["dofs"]) * s["gradient_norm"] + 1000 * EPS * abs(reaction)
+        print(f"    imbalance {abs(abs(f) - abs(reaction)):.3e}, {abs(abs(f) - abs(reaction)) / bound:.2e} of sqrt(n) ||g||")
+        assert abs(abs(f) - abs(reaction)) <= bound, (f, reaction, bound)
         # the half model's P is that of the whole: twice the half's force
         assert abs(s["contact_force"] - 2 * abs(f)) <= 100 * EPS * s["contact_force"]
         P[n] = s["contact_force"]
