@@ -1,9 +1,10 @@
 #pragma once
-#include "problem.h"
+#include "run.h"
 
-/* -accuracy TOL (accuracy.c): the scene solved on a sequence of meshes, each
-   refined around the contact zones of the last, until the estimated relative
-   error of the contact pressure profiles and forces is below TOL. */
+/* -accuracy TOL (accuracy.c): the pipeline of run.h in a loop, on a sequence
+   of meshes, each refined around the contact zones of the last, until the
+   estimated relative error of the contact pressure profiles and forces is
+   below TOL. */
 typedef struct _n_Accuracy *Accuracy;
 
 PetscErrorCode AccuracyCreate(MPI_Comm, Accuracy *);
@@ -11,9 +12,10 @@ PetscErrorCode AccuracyCreate(MPI_Comm, Accuracy *);
 PetscErrorCode AccuracySetFromOptions(Accuracy);
 /* Whether -accuracy was given. */
 PetscBool      AccuracyIsSet(Accuracy);
-/* Collective: the refinement loop, the report and the output of the last
-   step; *status 0 when the target is reached, 2 when a limit stops the loop
-   first (the best answer is written) or a solve does not converge. t0: the
-   start of the run. */
-PetscErrorCode AccuracySolve(Accuracy, PetscLogDouble t0, int *status);
+/* Collective: the refinement loop from the problem given (created, not yet
+   meshed; taken and destroyed), the report and the output of the last
+   converged step (RunFinish); rec->status 0 when the target is reached, 2
+   when a limit stops the loop first (the best answer is written) or no step
+   converges (none is). */
+PetscErrorCode AccuracySolve(Accuracy, Problem *, RunRecord *);
 PetscErrorCode AccuracyDestroy(Accuracy *);

@@ -23,7 +23,7 @@ struct _n_Body {
   PetscReal h;
   PetscInt  ngeoparams;
   char     *geoparams[16];
-  char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement), or empty */
+  char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement, BodySetSizeField), or empty */
   PetscReal E, nu, param[2]; /* param = {lambda, mu} */
   PetscInt  nbc, qdeg;
   void     *bcctx[CONTACT_MAX_BC][2];
@@ -59,6 +59,8 @@ struct _n_Body {
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
 PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride);
+/* The Gmsh size field (a .pos file) the body's next mesh follows; "" or NULL: none. */
+PetscErrorCode BodySetSizeField(Body, const char path[]);
 /* Meshes the body's .geo with Gmsh (cached in meshDir), unless the mesh would
    exceed *maxDofs (> 0), which its estimate is taken off (limit describes
    where the limit comes from); estimateOnly: the check alone, no meshing. */

@@ -20,18 +20,7 @@ extern ContactLog contactLog;
 PetscErrorCode ContactInitializeLogging(void);
 /* mkdir -p; returns 0 or errno (meshgen.c). */
 int ContactMakeDirs(const char dir[]);
-/* The output set (output.c): ContactOutputOpen() locks it, checks its paths
-   and creates its temporaries before meshing (h5 or json may be "none"; wait:
-   wait for another run that holds the lock); ProblemWriteOutput() writes and
-   publishes it; a failed or interrupted run discards it (its temporaries and
-   lock removed, earlier files intact). */
-PetscErrorCode ContactOutputOpen(MPI_Comm, const char h5[], const char json[], PetscBool wait);
-PetscErrorCode ContactOutputInstallSignalHandlers(void);
-void           ContactOutputDiscard(void);
-/* A child process (Gmsh) and the file it writes: an interrupted run stops it
-   and removes the file (pid 0: none). */
-void           ContactOutputSetChild(int pid, const char file[]);
-/* A real in JSON: null for NaN and Inf (output.c). */
+/* A real in JSON: null for NaN and Inf (json.c). */
 void ContactJSONReal(FILE *fp, PetscReal v);
 
 /* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */

@@ -13,7 +13,6 @@ typedef struct {
   PetscReal kp;           /* the scene's penalty k_p */
   PetscInt  nqp;          /* Gauss points per slave edge (-contact_quadrature_points) */
   PetscReal blend;        /* -contact_blend: fraction of a master edge; < 0: the formulation's default */
-  PetscBool exactHessian; /* start with the second-order term in the Hessian */
   PetscBool hertz;        /* compare with Hertz: radii of the two surfaces (0: flat), E*, R* */
   PetscReal radii[2], Estar, Rstar;
   PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
@@ -27,8 +26,8 @@ PetscErrorCode ContactFormulationRegisterAll(void);
 PetscErrorCode ContactFormulationFinalize(void);
 
 /* Reads -contact_pairs and each pair's options, and creates each pair's energy
-   term in its formulation (at most maxTerms). */
-PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bodies[], PetscBool exactHessian, PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[]);
+   term in its formulation (at most maxTerms), Gauss-Newton Hessian to start. */
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[]);
 
 /* The formulations (one file each). */
 PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *, EnergyTerm);

@@ -17,68 +17,72 @@ extern const char *const H0Types[];
 typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
 extern const char *const SchurTypes[];
 
-/* One step of -accuracy's refinement (accuracy.c): its dofs, solve time and
-   error estimates (relative: the pressure profiles', the contact force's, and
-   the larger of the two; Inf at the first step). */
+/* What ProblemSetFromOptions reads, and nothing else. */
 typedef struct {
-  PetscInt  dofs, iterations;
-  PetscReal tsolve, estimate, profile, force;
-} AccuracyStep;
+  char        scene[CONTACT_NAME_LEN];
+  char        meshDir[PETSC_MAX_PATH_LEN];
+  PetscReal   meshSize; /* -mesh_size, or -1: each body's own */
+  PetscReal   maxDofs;  /* refuse a generated mesh above this many dofs (-max_dofs; 0: from memory, set when meshing) */
+  PetscInt    partitioner;
+  PetscBool   partitionView, taylor;
+  PetscReal   taylorScale;
+  H0Type      h0;
+  PetscInt    loadSteps, penaltyStages;
+  PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
+  PetscReal   penaltyStart, stageRtol;
+  PetscBool   schur;     /* Newton through the contact-surface Schur complement */
+  PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
+  SchurType   schurType;
+  HessianType hessianType;   /* -contact_hessian */
+  PetscReal   hessianSwitch; /* auto: exact once ||g|| < hessianSwitch ||g0|| */
+} ProblemOptions;
+
+/* What a solve and its post-processing found. */
+typedef struct {
+  PetscInt           nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
+  PetscInt           stagesDone, cutbacks; /* the stages solved, and how many times the load was cut back */
+  PetscReal          loadDone;             /* the load factor of the last converged stage */
+  TaoConvergedReason reason;
+  PetscReal          energy, gnorm;        /* at the solution (ProblemPostProcess) */
+  PetscReal          bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
+  PetscReal          taylorRates[2], taylorRemainders[2][8], taylorEps[8]; /* ProblemTaylorTest */
+  PetscInt           taylorN;
+} ProblemResults;
 
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
-  MPI_Comm  comm;
-  char      scene[CONTACT_NAME_LEN];
-  char      output[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], meshDir[PETSC_MAX_PATH_LEN];
-  PetscBool outputWait; /* wait for another run writing the same outputs */
-  PetscBool meshOnly;   /* set before ProblemSetFromOptions: mesh, write nothing */
-  PetscBool outputOpen; /* set before ProblemSetFromOptions: the output set is already open (an earlier -accuracy step) */
-  PetscBool deferView;  /* ProblemPostProcess does not print the terms' reports (ProblemView does) */
-  Vec       X0;         /* set before ProblemSolve: the first iterate (NULL: rest; ignored with load or penalty stages) */
-  char      bgm[CONTACT_MAX_BODIES][PETSC_MAX_PATH_LEN]; /* set before ProblemSetFromOptions: each body's size field, or empty */
-  PetscReal accuracyTarget, errorEstimate; /* -accuracy's target and the estimate of the answer (0: not adaptive) */
-  PetscInt  nAccuracySteps;
-  const AccuracyStep *accuracySteps;
-  PetscReal meshSize;
-  PetscReal maxDofs; /* refuse a generated mesh above this many dofs (-max_dofs, else from memory) */
-  PetscInt  nbodies;
-  Body      bodies[CONTACT_MAX_BODIES];
-  PetscInt  nterms;
-  EnergyTerm terms[CONTACT_MAX_TERMS];
-  PetscInt  partitioner;
-  PetscBool partitionView, taylor;
-  PetscInt  offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
-  Vec       X, G;
-  Mat       H, K; /* Hessian, elastic stiffness of the bodies */
-  IS        surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
-  Subdomain sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
-  H0Type    h0;
-  Tao       tao;
-  PetscInt  nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
-  PetscReal energy, gnorm;  /* at the solution (ProblemPostProcess) */
-  PetscReal bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
-  TaoConvergedReason reason;
-  PetscReal time[5]; /* mesh, setup, solve, output, total */
-  PetscLogDouble t0; /* start of the run */
-  PetscReal taylorRates[2], taylorRemainders[2][8], taylorEps[8];
-  PetscInt  taylorN;
-  PetscReal taylorScale;
-  PetscInt  loadSteps, penaltyStages, stagesDone;
-  PetscInt  maxCutbacks, cutbacks; /* automatic load cutback: the limit, and how many a solve took */
-  PetscReal loadDone;               /* the load factor of the last converged stage */
-  PetscBool schur; /* Newton through the contact-surface Schur complement */
-  PetscBool iterative; /* Newton by CG + GAMG (iterative.c) */
-  SchurType schurType;
-  HessianType hessianType;  /* -contact_hessian */
-  PetscReal hessianSwitch;   /* auto: exact once ||g|| < hessianSwitch ||g0|| */
-  PetscReal hessianG0;       /* ||g|| at the current TAO solve's first iterate */
-  PetscBool exactHessian;    /* the second-order term is in the current Hessian (may be indefinite) */
-  PetscReal penaltyStart, stageRtol;
+  MPI_Comm       comm;
+  ProblemOptions opt;
+  PetscInt       nbodies;
+  Body           bodies[CONTACT_MAX_BODIES];
+  PetscInt       nterms;
+  EnergyTerm     terms[CONTACT_MAX_TERMS];
+  PetscInt       offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
+  Vec            X, G;
+  Vec            X0;   /* the first iterate (NULL: rest; ignored with load or penalty stages) */
+  Mat            H, K; /* Hessian, elastic stiffness of the bodies */
+  IS             surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
+  Subdomain      sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
+  Tao            tao;
+  PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
+  PetscReal      hessianG0;    /* ||g|| at the current TAO solve's first iterate */
+  ProblemResults res;
 };
 
+/* The life of a problem: Create, SetFromOptions (reads the scene's options
+   and its bodies' and nothing else), GenerateMeshes (each body's mesh, sizes
+   checked first), AddTerm (the contact terms, created by the caller), SetUp,
+   Solve, PostProcess, View, Destroy. */
 PetscErrorCode ProblemCreate(MPI_Comm, Problem *);
 PetscErrorCode ProblemSetFromOptions(Problem);
+/* Collective: generates every body's mesh (with its size field, if one was
+   set by BodySetSizeField), refusing one above -max_dofs before any is made. */
+PetscErrorCode ProblemGenerateMeshes(Problem);
+/* Adds an energy term; the problem takes the reference and destroys it. */
+PetscErrorCode ProblemAddTerm(Problem, EnergyTerm);
+/* The first iterate of ProblemSolve (after ProblemSetUp; referenced). */
+PetscErrorCode ProblemSetInitialGuess(Problem, Vec X0);
 PetscErrorCode ProblemSetUp(Problem);
 PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
@@ -89,11 +93,10 @@ PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
 PetscErrorCode ProblemCreateSolver(Problem);
 PetscErrorCode ProblemSolve(Problem, PetscBool *converged);
 /* Collective: the results at the converged state X (energy, gradient norm,
-   reactions, each term's results) and the report. */
+   reactions, each term's results). */
 PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);
-/* Collective: prints each term's report of ProblemPostProcess (there, unless deferView). */
+/* Collective: prints each term's report of ProblemPostProcess. */
 PetscErrorCode ProblemView(Problem);
 PetscErrorCode ProblemCheckUnusedOptions(Problem, PetscBool final);
 PetscErrorCode ProblemTaylorTest(Problem);
 PetscErrorCode ProblemDestroy(Problem *);
-PetscErrorCode ProblemWriteOutput(Problem, PetscBool converged);

@@ -136,6 +136,13 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodySetSizeField(Body b, const char path[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(b->bgm, path ? path : "", sizeof(b->bgm)));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly)
 {
   PetscLogDouble t0, t1;

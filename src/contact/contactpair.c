@@ -58,7 +58,7 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscBool exactHessian, PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[])
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[])
 {
   char     *names[64], formulation[CONTACT_NAME_LEN] = "mortar";
   PetscInt  np = 64, nq = 4;
@@ -102,7 +102,6 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     spec.kp           = kp;
     spec.nqp          = nq;
     spec.blend        = setBlend ? blend : -1.0;
-    spec.exactHessian = exactHessian;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
     PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));

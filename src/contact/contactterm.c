@@ -170,7 +170,6 @@ PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec
   PetscFunctionBeginUser;
   b->spec         = *spec;
   b->kp           = spec->kp;
-  b->exactHessian = spec->exactHessian;
   for (PetscInt s = 0; s < 2; ++s) {
     b->S[s].body = spec->body[s];
     PetscCall(PetscStrncpy(b->S[s].group, spec->group[s], sizeof(b->S[s].group)));

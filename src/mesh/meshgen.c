@@ -9,6 +9,7 @@
 #include <math.h>
 #include "contact.h"
 #include "meshgen.h"
+#include "outputset.h"
 
 /* mkdir -p: creates dir and its parents; returns 0 or the errno of the failure. */
 int ContactMakeDirs(const char dir[])

@@ -5,7 +5,6 @@
    and are added beside the bodies' elastic terms without touching them. */
 #include "problem.h"
 #include "partition.h"
-#include "contactpair.h"
 #include "schur.h"
 #include "progress.h"
 #include "options.h"
@@ -23,19 +22,19 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&p));
   p->comm        = comm;
-  p->meshSize    = -1.0;
-  p->partitioner = PARTITION_METIS;
-  p->h0          = H0_ELASTIC;
-  p->taylorScale = 1e-4;
-  p->loadSteps     = 1;
-  p->maxCutbacks   = 4;
-  p->schur         = PETSC_TRUE;
-  p->hessianType   = HESSIAN_AUTO;
-  p->hessianSwitch = 1e-4;
-  p->penaltyStages = 1;
-  p->penaltyStart  = 1e-2;
-  p->stageRtol     = 1e-3;
-  PetscCall(PetscStrncpy(p->scene, "scene", sizeof(p->scene)));
+  p->opt.meshSize    = -1.0;
+  p->opt.partitioner = PARTITION_METIS;
+  p->opt.h0          = H0_ELASTIC;
+  p->opt.taylorScale = 1e-4;
+  p->opt.loadSteps     = 1;
+  p->opt.maxCutbacks   = 4;
+  p->opt.schur         = PETSC_TRUE;
+  p->opt.hessianType   = HESSIAN_AUTO;
+  p->opt.hessianSwitch = 1e-4;
+  p->opt.penaltyStages = 1;
+  p->opt.penaltyStart  = 1e-2;
+  p->opt.stageRtol     = 1e-3;
+  PetscCall(PetscStrncpy(p->opt.scene, "scene", sizeof(p->opt.scene)));
   *problem = p;
   PetscFunctionReturn(0);
 }
@@ -46,7 +45,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
 {
   PetscFunctionBeginUser;
-  if (p->maxDofs > 0) {
+  if (p->opt.maxDofs > 0) {
     PetscCall(PetscSNPrintf(limit, len, "-max_dofs"));
     PetscFunctionReturn(0);
   }
@@ -62,7 +61,7 @@ static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
       if (fp) fclose(fp);
     }
     PetscCallMPI(MPI_Bcast(&kb, 1, MPI_DOUBLE, 0, p->comm));
-    p->maxDofs = kb * 1024.0 / CONTACT_BYTES_PER_DOF;
+    p->opt.maxDofs = kb * 1024.0 / CONTACT_BYTES_PER_DOF;
     PetscCall(PetscSNPrintf(limit, len, "the machine's available memory, %.1f GB; -max_dofs sets another", kb * 1024.0 / 1e9));
   }
   PetscFunctionReturn(0);
@@ -110,53 +109,38 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
-  PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->scene, p->scene, sizeof(p->scene), NULL));
+  PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
   PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->meshSize, &setMeshSize));
-  PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->scene));
-  PetscCall(PetscStrncpy(p->meshDir, def, sizeof(p->meshDir)));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &p->maxDofs, &setMaxDofs));
-  PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->meshDir, p->meshDir, sizeof(p->meshDir), NULL));
-  PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.h5", p->scene));
-  PetscCall(PetscStrncpy(p->output, def, sizeof(p->output)));
-  PetscCall(PetscOptionsString("-output", "HDF5 output file, an XDMF file beside it (none: no output)", NULL, p->output, p->output, sizeof(p->output), NULL));
-  PetscCall(PetscSNPrintf(def, sizeof(def), "out/%s.json", p->scene));
-  PetscCall(PetscStrncpy(p->summary, def, sizeof(p->summary)));
-  PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, p->summary, p->summary, sizeof(p->summary), NULL));
-  PetscCall(PetscOptionsBool("-output_wait", "Wait for another run writing the same output files (else stop at once)", NULL, p->outputWait, &p->outputWait, NULL));
-  PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->partitioner, (PetscEnum *)&p->partitioner, NULL));
-  PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->partitionView, &p->partitionView, NULL));
-  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->h0, (PetscEnum *)&p->h0, NULL));
-  PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->taylor, &p->taylor, NULL));
-  PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->taylorScale, &p->taylorScale, NULL));
-  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->iterative, &p->iterative, NULL));
-  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->schur, &p->schur, NULL));
-  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->schurType, (PetscEnum *)&p->schurType, NULL));
-  PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->loadSteps, &p->loadSteps, NULL));
-  PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->maxCutbacks, &p->maxCutbacks, NULL));
-  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->penaltyStages, &p->penaltyStages, NULL));
-  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->penaltyStart, &p->penaltyStart, NULL));
-  PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->stageRtol, &p->stageRtol, NULL));
-  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->hessianType, (PetscEnum *)&p->hessianType, NULL));
-  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->hessianSwitch, &p->hessianSwitch, NULL));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->opt.meshSize, &setMeshSize));
+  PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->opt.scene));
+  PetscCall(PetscStrncpy(p->opt.meshDir, def, sizeof(p->opt.meshDir)));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &p->opt.maxDofs, &setMaxDofs));
+  PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->opt.meshDir, p->opt.meshDir, sizeof(p->opt.meshDir), NULL));
+  PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->opt.partitioner, (PetscEnum *)&p->opt.partitioner, NULL));
+  PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->opt.partitionView, &p->opt.partitionView, NULL));
+  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: elastic (stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->opt.h0, (PetscEnum *)&p->opt.h0, NULL));
+  PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->opt.taylor, &p->opt.taylor, NULL));
+  PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->opt.taylorScale, &p->opt.taylorScale, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->opt.iterative, &p->opt.iterative, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->opt.schur, &p->opt.schur, NULL));
+  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
+  PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
+  PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
+  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, NULL));
+  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, NULL));
+  PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
+  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
+  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->opt.hessianSwitch, &p->opt.hessianSwitch, NULL));
   PetscOptionsEnd();
-  { /* relative to the options file that names them */
-    char *paths[3] = {p->meshDir, p->output, p->summary};
-    const char *opts[3] = {"-mesh_dir", "-output", "-summary"};
-    for (PetscInt k = 0; k < 3; ++k) {
-      PetscBool none;
-      PetscCall(PetscStrcmp(paths[k], "none", &none));
-      if (!none) PetscCall(ContactOptionsResolvePath(NULL, opts[k], paths[k], PETSC_MAX_PATH_LEN, NULL, 0));
-    }
-  }
-  PetscCheck(p->taylorScale > 0 && !PetscIsInfOrNanReal(p->taylorScale), p->comm, PETSC_ERR_USER_INPUT, "option -taylor_scale: must be a finite number > 0, got %g", (double)p->taylorScale);
-  PetscCheck(p->hessianSwitch >= 0 && p->hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->hessianSwitch);
-  p->exactHessian = (PetscBool)(p->hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
-  PetscCheck(p->loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->loadSteps);
-  PetscCheck(p->maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->maxCutbacks);
-  PetscCheck(p->penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->penaltyStages);
-  PetscCheck(p->penaltyStart > 0 && p->penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->penaltyStart);
-  PetscCheck(p->stageRtol > 0 && p->stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->stageRtol);
+  PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", p->opt.meshDir, sizeof(p->opt.meshDir), NULL, 0)); /* relative to the options file that names it */
+  PetscCheck(p->opt.taylorScale > 0 && !PetscIsInfOrNanReal(p->opt.taylorScale), p->comm, PETSC_ERR_USER_INPUT, "option -taylor_scale: must be a finite number > 0, got %g", (double)p->opt.taylorScale);
+  PetscCheck(p->opt.hessianSwitch >= 0 && p->opt.hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->opt.hessianSwitch);
+  p->exactHessian = (PetscBool)(p->opt.hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
+  PetscCheck(p->opt.loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->opt.loadSteps);
+  PetscCheck(p->opt.maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->opt.maxCutbacks);
+  PetscCheck(p->opt.penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->opt.penaltyStages);
+  PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
+  PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
   PetscCall(ProblemCheckSolverOptions(p));
   if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
     PetscCall(PetscStrallocpy("<body>", &names[0]));
@@ -164,10 +148,10 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     set = PETSC_TRUE;
   }
   PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
-  PetscCheck(!setMeshSize || (p->meshSize > 0 && !PetscIsInfOrNanReal(p->meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)p->meshSize);
-  if (!setMeshSize) p->meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
-  PetscCheck(!setMaxDofs || (p->maxDofs >= 1 && !PetscIsInfOrNanReal(p->maxDofs)), p->comm, PETSC_ERR_USER_INPUT, "option -max_dofs: must be a finite number >= 1, got %g", (double)p->maxDofs);
-  if (!setMaxDofs) p->maxDofs = 0.0; /* from the machine's memory (ProblemDofLimit) */
+  PetscCheck(!setMeshSize || (p->opt.meshSize > 0 && !PetscIsInfOrNanReal(p->opt.meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)p->opt.meshSize);
+  if (!setMeshSize) p->opt.meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
+  PetscCheck(!setMaxDofs || (p->opt.maxDofs >= 1 && !PetscIsInfOrNanReal(p->opt.maxDofs)), p->comm, PETSC_ERR_USER_INPUT, "option -max_dofs: must be a finite number >= 1, got %g", (double)p->opt.maxDofs);
+  if (!setMaxDofs) p->opt.maxDofs = 0.0; /* from the machine's memory (ProblemDofLimit) */
   p->nbodies = nb;
   for (PetscInt i = 0; i < nb; ++i) {
     for (PetscInt j = 0; j < i; ++j) {
@@ -178,22 +162,39 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
     PetscCall(PetscFree(names[i]));
   }
-  /* the outputs locked and checked before meshing, so that a bad path or a busy set fails at once */
-  if (!help && !p->meshOnly && !p->outputOpen) PetscCall(ContactOutputOpen(p->comm, p->output, p->summary, p->outputWait));
-  {
-    char      limit[128];
-    PetscReal left;
-    for (PetscInt i = 0; i < nb; ++i) {
-      PetscCall(BodySetFromOptions(p->bodies[i], p->meshSize));
-      PetscCall(PetscStrncpy(p->bodies[i]->bgm, p->bgm[i], sizeof(p->bodies[i]->bgm)));
-    }
-    PetscCall(ProblemDofLimit(p, limit, sizeof(limit)));
-    /* every body's size checked before any is meshed */
-    left = p->maxDofs;
-    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->meshDir, &left, limit, PETSC_TRUE));
-    for (PetscInt i = 0; i < nb; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->meshDir, NULL, limit, PETSC_FALSE));
-  }
-  PetscCall(ContactPairsCreateFromOptions(p->comm, p->nbodies, p->bodies, p->exactHessian, CONTACT_MAX_TERMS, &p->nterms, p->terms));
+  for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->opt.meshSize));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemGenerateMeshes(Problem p)
+{
+  char      limit[128];
+  PetscReal left;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemDofLimit(p, limit, sizeof(limit)));
+  /* every body's size checked before any is meshed */
+  left = p->opt.maxDofs;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->opt.meshDir, &left, limit, PETSC_TRUE));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->opt.meshDir, NULL, limit, PETSC_FALSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(p->nterms < CONTACT_MAX_TERMS, p->comm, PETSC_ERR_USER_INPUT, "more than %d contact pairs", CONTACT_MAX_TERMS);
+  PetscCall(EnergyTermSetHessianExact(t, p->exactHessian));
+  p->terms[p->nterms++] = t;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetInitialGuess(Problem p, Vec X0)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectReference((PetscObject)X0));
+  PetscCall(VecDestroy(&p->X0));
+  p->X0 = X0;
   PetscFunctionReturn(0);
 }
 
@@ -399,7 +400,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->partitioner, p->partitionView));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->opt.partitioner, p->opt.partitionView));
   PetscCall(PetscLogStagePush(contactLog.setup));
   PetscCall(ProblemCheckSupports(p));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
@@ -526,7 +527,7 @@ PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec
   PetscFunctionBeginUser;
   (void)tao;
   PetscCall(ProblemEvaluate(p, X, f, G, NULL));
-  p->nEnergyEvals++;
+  p->res.nEnergyEvals++;
   PetscFunctionReturn(0);
 }
 
@@ -547,10 +548,10 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   PetscBool          exact;
 
   PetscFunctionBeginUser;
-  if (p->hessianType != HESSIAN_AUTO) PetscFunctionReturn(0);
+  if (p->opt.hessianType != HESSIAN_AUTO) PetscFunctionReturn(0);
   PetscCall(TaoGetSolutionStatus(tao, &its, &f, &gnorm, &cnorm, &step, &reason));
   if (p->hessianG0 < 0) p->hessianG0 = gnorm; /* the first Hessian of this TaoSolve */
-  exact = (PetscBool)(gnorm > 0 && gnorm < p->hessianSwitch * p->hessianG0);
+  exact = (PetscBool)(gnorm > 0 && gnorm < p->opt.hessianSwitch * p->hessianG0);
   if (exact != p->exactHessian) PetscCall(PetscInfo(tao, "contact Hessian: %s from iteration %" PetscInt_FMT " (||g|| = %g)\n", exact ? "exact" : "Gauss-Newton", its, (double)gnorm));
   p->exactHessian = exact;
   for (PetscInt t = 0; t < p->nterms; ++t)
@@ -573,7 +574,7 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
     PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
   }
-  p->nHessianEvals++;
+  p->res.nHessianEvals++;
   PetscFunctionReturn(0);
 }
 
@@ -602,7 +603,7 @@ static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
-  if (!(lmvm || blmvm) || p->h0 == H0_NONE) PetscFunctionReturn(0);
+  if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
   PetscCall(TaoLMVMSetH0(p->tao, p->K));
   PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
@@ -639,14 +640,14 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   PetscCall(TaoGetKSP(p->tao, &ksp));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (p->iterative) {
+  if (p->opt.iterative) {
     if (p->K) PetscCall(ContactIterativeKSPSetUp(p, ksp));
-  } else if (p->schur && p->nterms > 0) {
-    PetscCheck(p->schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+  } else if (p->opt.schur && p->nterms > 0) {
+    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
-    else if (p->schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
+    else if (p->opt.schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
-  } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->hessianType != HESSIAN_GAUSS_NEWTON)));
+  } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscFunctionReturn(0);
 }
 
@@ -734,7 +735,7 @@ static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
   PetscCall(VecDuplicate(p->X, &X));
   PetscCall(ProblemSetStage(p, 1.0, 1.0));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
-  p->nEnergyEvals--;
+  p->res.nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, g0));
   PetscCall(VecDestroy(&X));
   PetscFunctionReturn(0);
@@ -756,19 +757,19 @@ static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
 static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscFunctionBeginUser;
-  for (PetscInt s = 1; s <= p->penaltyStages; ++s) {
-    const PetscBool last    = (PetscBool)(lastLoad && s == p->penaltyStages);
-    const PetscReal penalty = p->penaltyStages > 1 ? PetscPowReal(p->penaltyStart, (PetscReal)(p->penaltyStages - s) / (p->penaltyStages - 1)) : 1.0;
+  for (PetscInt s = 1; s <= p->opt.penaltyStages; ++s) {
+    const PetscBool last    = (PetscBool)(lastLoad && s == p->opt.penaltyStages);
+    const PetscReal penalty = p->opt.penaltyStages > 1 ? PetscPowReal(p->opt.penaltyStart, (PetscReal)(p->opt.penaltyStages - s) / (p->opt.penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
     PetscCall(ProblemSetStage(p, load, penalty));
     if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
-    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->stageRtol));
+    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, &n, NULL, NULL, NULL, NULL, reason));
-    PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
+    PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
     *its += n;
-    p->stagesDone++;
+    p->res.stagesDone++;
     if (*reason <= 0) PetscFunctionReturn(0);
   }
   PetscFunctionReturn(0);
@@ -787,17 +788,17 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
    the staging. */
 static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->loadSteps;
+  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->opt.loadSteps;
   Vec       Xs;
 
   PetscFunctionBeginUser;
   *its = 0;
-  p->stagesDone = 0;
-  p->cutbacks   = 0;
-  p->loadDone   = 0.0;
+  p->res.stagesDone = 0;
+  p->res.cutbacks   = 0;
+  p->res.loadDone   = 0.0;
   p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-  if (p->loadSteps * p->penaltyStages == 1) { /* one solve, from rest or from the given start */
+  if (p->opt.loadSteps * p->opt.penaltyStages == 1) { /* one solve, from rest or from the given start */
     PetscBool cut;
     if (p->X0) {
       PetscCall(ProblemGradientAtRest(p, &g0));
@@ -806,14 +807,14 @@ static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedR
     }
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
-    p->stagesDone = 1;
-    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->maxCutbacks > 0);
+    p->res.stagesDone = 1;
+    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
-      if (*reason > 0) p->loadDone = 1.0;
+      if (*reason > 0) p->res.loadDone = 1.0;
       PetscFunctionReturn(0);
     }
     PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
-    p->cutbacks = 1;
+    p->res.cutbacks = 1;
     step        = 0.5;
   }
   if (g0 < 0) PetscCall(ProblemGradientAtRest(p, &g0));
@@ -821,17 +822,17 @@ static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedR
   PetscCall(VecZeroEntries(p->X));
   PetscCall(VecDuplicate(p->X, &Xs));
   PetscCall(VecCopy(p->X, Xs));
-  while (p->loadDone < 1.0) {
-    const PetscReal next = p->loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
+  while (p->res.loadDone < 1.0) {
+    const PetscReal next = p->res.loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
     PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
     if (*reason > 0) {
-      p->loadDone = load;
+      p->res.loadDone = load;
       PetscCall(VecCopy(p->X, Xs));
       continue;
     }
-    if (!ProblemCutbackApplies(*reason) || p->cutbacks >= p->maxCutbacks) break;
-    PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->loadDone, (double)(0.5 * step)));
-    p->cutbacks++;
+    if (!ProblemCutbackApplies(*reason) || p->res.cutbacks >= p->opt.maxCutbacks) break;
+    PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->res.loadDone, (double)(0.5 * step)));
+    p->res.cutbacks++;
     step *= 0.5;
     PetscCall(VecCopy(Xs, p->X));
   }
@@ -851,18 +852,18 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
   PetscCall(ProblemSolveStaged(p, &its, &reason));
-  p->iterations = its;
-  p->reason     = reason;
+  p->res.iterations = its;
+  p->res.reason     = reason;
   PetscCall(TaoGetType(p->tao, &type));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->nEnergyEvals, p->nHessianEvals));
-  if (p->iterative) {
+  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->res.nEnergyEvals, p->res.nHessianEvals));
+  if (p->opt.iterative) {
     PetscInt lits;
     PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
     PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
   }
-  if (p->cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->stagesDone, p->cutbacks, p->cutbacks > 1 ? "s" : "", (double)p->loadDone));
-  else if (p->loadSteps * p->penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->stagesDone, p->loadSteps * p->penaltyStages));
+  if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
+  else if (p->opt.loadSteps * p->opt.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->opt.loadSteps * p->opt.penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
@@ -879,14 +880,14 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(contactLog.postprocess));
-  if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->reason]));
-  PetscCall(ProblemEvaluate(p, X, &p->energy, p->G, parts));
-  PetscCall(VecNorm(p->G, NORM_2, &p->gnorm));
+  if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->res.reason]));
+  PetscCall(ProblemEvaluate(p, X, &p->res.energy, p->G, parts));
+  PetscCall(VecNorm(p->G, NORM_2, &p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    p->bodyEnergy[i] = parts[i];
+    p->res.bodyEnergy[i] = parts[i];
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
-  PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->energy, (double)p->gnorm));
+  PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
     Body       b = p->bodies[i];
     BodyErrors e;
@@ -897,7 +898,6 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     PetscCall(PetscPrintf(p->comm, "  body %s: relative energy-norm error %.6e, relative L2 error of the stress %.6e\n", b->name, (double)(e.energynorm > 0 ? e.energy / e.energynorm : e.energy), (double)(e.stressnorm > 0 ? e.stress / e.stressnorm : e.stress)));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
-  if (!p->deferView) PetscCall(ProblemView(p));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -935,13 +935,13 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   PetscCall(VecSetRandom(V, rnd));
   PetscCall(VecNorm(U, NORM_INFINITY, &umax));
   if (umax == 0.0) umax = 1e-3;
-  PetscCall(VecScale(V, p->taylorScale * umax));
+  PetscCall(VecScale(V, p->opt.taylorScale * umax));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p));
   PetscCall(ProblemComputeHessian(p->tao, U, p->H, p->H, p));
   PetscCall(MatMult(p->H, V, HV));
   PetscCall(VecNorm(HV, NORM_2, &hvn));
   PetscCall(VecDot(G0, V, &gv));
-  p->taylorN = n;
+  p->res.taylorN = n;
   PetscCall(PetscPrintf(p->comm, "Taylor test: eps, |E(u+eps v)-E(u)-eps g.v|, |g(u+eps v)-g(u)-eps H v|/(eps |H v|)\n"));
   for (PetscInt k = 0; k < n; ++k) {
     PetscReal eps = PetscPowReal(2.0, -(PetscReal)k), r2;
@@ -950,19 +950,19 @@ PetscErrorCode ProblemTaylorTest(Problem p)
     PetscCall(VecAXPY(G1, -1.0, G0));
     PetscCall(VecAXPY(G1, -eps, HV));
     PetscCall(VecNorm(G1, NORM_2, &r2));
-    p->taylorEps[k]           = eps;
-    p->taylorRemainders[0][k] = PetscAbsReal(f1 - f0 - eps * gv);
-    p->taylorRemainders[1][k] = r2 / (eps * hvn);
-    PetscCall(PetscPrintf(p->comm, "  %.4e  %.6e  %.6e\n", (double)eps, (double)p->taylorRemainders[0][k], (double)p->taylorRemainders[1][k]));
+    p->res.taylorEps[k]           = eps;
+    p->res.taylorRemainders[0][k] = PetscAbsReal(f1 - f0 - eps * gv);
+    p->res.taylorRemainders[1][k] = r2 / (eps * hvn);
+    PetscCall(PetscPrintf(p->comm, "  %.4e  %.6e  %.6e\n", (double)eps, (double)p->res.taylorRemainders[0][k], (double)p->res.taylorRemainders[1][k]));
   }
   /* rate of the gradient remainder over the last halvings; for r2 the rate of
      r2 itself, i.e. 1 + rate of the relative remainder */
-  p->taylorRates[0] = PetscLog2Real(p->taylorRemainders[0][n - 2] / p->taylorRemainders[0][n - 1]);
-  p->taylorRates[1] = 1.0 + PetscLog2Real(p->taylorRemainders[1][n - 2] / p->taylorRemainders[1][n - 1]);
-  PetscCall(PetscPrintf(p->comm, "  observed orders: gradient remainder %.3f, Hessian remainder %.3f\n", (double)p->taylorRates[0], (double)p->taylorRates[1]));
+  p->res.taylorRates[0] = PetscLog2Real(p->res.taylorRemainders[0][n - 2] / p->res.taylorRemainders[0][n - 1]);
+  p->res.taylorRates[1] = 1.0 + PetscLog2Real(p->res.taylorRemainders[1][n - 2] / p->res.taylorRemainders[1][n - 1]);
+  PetscCall(PetscPrintf(p->comm, "  observed orders: gradient remainder %.3f, Hessian remainder %.3f\n", (double)p->res.taylorRates[0], (double)p->res.taylorRates[1]));
   /* where a remainder is round-off its order means nothing: say so */
-  if (p->taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0)) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->taylorRemainders[0][n - 1], (double)f0));
-  if (p->taylorRemainders[1][0] <= 1e-9) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->taylorRemainders[1][0]));
+  if (p->res.taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0)) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->res.taylorRemainders[0][n - 1], (double)f0));
+  if (p->res.taylorRemainders[1][0] <= 1e-9) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->res.taylorRemainders[1][0]));
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&U));
   PetscCall(VecDestroy(&V));

@@ -6,6 +6,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
 #include "progress.h"
 #include "contactpair.h"
 #include "options.h"
+#include "outputset.h"
 
 ContactLog contactLog;
 
@@ -73,75 +74,56 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
   return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
 }
 
+/* The pipeline once (run.h), or in -accuracy's loop. -help lists every
+   option with the default a run would use: nothing is meshed, solved or
+   written. */
 static PetscErrorCode Run(int *status)
 {
-  Problem        problem;
-  Accuracy       acc;
-  PetscBool      converged = PETSC_FALSE, meshOnly = PETSC_FALSE, help;
-  PetscLogDouble t0, t1, t2, t3;
+  Problem    problem;
+  Accuracy   acc;
+  RunOptions ro;
+  RunRecord  rec;
+  PetscBool  help;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscTime(&t0));
+  PetscCall(PetscMemzero(&ro, sizeof(ro)));
+  PetscCall(PetscMemzero(&rec, sizeof(rec)));
+  PetscCall(PetscTime(&rec.start));
+  rec.mark = rec.start;
   PetscCall(ContactInitializeLogging());
   PetscCall(ExactSolutionRegisterAll());
-  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Program options", NULL);
-  PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, meshOnly, &meshOnly, NULL));
-  PetscOptionsEnd();
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
   PetscCall(AccuracyCreate(PETSC_COMM_WORLD, &acc));
   PetscCall(AccuracySetFromOptions(acc));
-  if (!help && !meshOnly && AccuracyIsSet(acc)) { /* a sequence of problems */
-    PetscCall(AccuracySolve(acc, t0, status));
-    PetscCall(AccuracyDestroy(&acc));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(AccuracyDestroy(&acc));
-  PetscCall(ProblemCreate(PETSC_COMM_WORLD, &problem));
-  problem->meshOnly = meshOnly;
   PetscCall(ContactProgressPhase("meshing", "scene and meshes"));
-  PetscCall(ProblemSetFromOptions(problem));
-  if (help) { /* every option listed with the default a run would use; nothing meshed, solved or written */
-    PetscCall(ProblemCreateSolver(problem));
-    converged = PETSC_TRUE;
-  } else if (!meshOnly) {
-    PetscInt n;
-    PetscCall(ContactProgressPhase("set-up", "set-up: reading and distributing the meshes, the stiffness"));
-    PetscCall(ProblemSetUp(problem));
-    PetscCall(VecGetSize(problem->X, &n));
-    PetscCall(PetscTime(&t1));
-    PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
-    PetscCall(ProblemSolve(problem, &converged));
-    PetscCall(PetscTime(&t2));
-    PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
-    PetscCall(ProblemPostProcess(problem, problem->X, converged));
-    if (problem->taylor) {
-      PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
-      PetscCall(ProblemTaylorTest(problem));
+  PetscCall(RunCreateProblem(PETSC_COMM_WORLD, &problem));
+  PetscCall(RunOptionsSetFromOptions(PETSC_COMM_WORLD, problem->opt.scene, &ro));
+  if (help) PetscCall(ProblemCreateSolver(problem));
+  else if (ro.meshOnly) PetscCall(RunMesh(problem, NULL));
+  else {
+    /* the outputs locked and checked before meshing, so that a bad path or a busy set fails at once */
+    PetscCall(ContactOutputOpen(PETSC_COMM_WORLD, ro.output, ro.summary, ro.outputWait));
+    if (AccuracyIsSet(acc)) { /* the pipeline in a loop of refinements, from the scene's options on */
+      PetscCall(AccuracySolve(acc, &problem, &rec));
+    } else {
+      PetscInt n;
+      PetscCall(RunMesh(problem, NULL));
+      PetscCall(ContactProgressPhase("set-up", "set-up: reading and distributing the meshes, the stiffness"));
+      PetscCall(RunSetUp(problem, &rec));
+      PetscCall(VecGetSize(problem->X, &n));
+      PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
+      PetscCall(RunSolve(problem, &rec, &rec.converged));
+      PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
+      PetscCall(RunPostProcess(problem, rec.converged));
+      PetscCall(ProblemView(problem));
+      rec.status = rec.converged ? 0 : 2;
+      PetscCall(RunFinish(problem, &rec));
     }
-    for (PetscInt i = 0; i < problem->nbodies; ++i) problem->time[0] += problem->bodies[i]->tmesh;
-    problem->time[1] = (t1 - t0) - problem->time[0];
-    problem->time[2] = t2 - t1;
-    problem->t0      = t0;
-    PetscCall(ProblemCheckUnusedOptions(problem, PETSC_TRUE));
-    if (converged) {
-      PetscCall(ContactProgressPhase("the output", "output"));
-      PetscCall(ProblemWriteOutput(problem, converged));
-    }
-    else {
-      TaoConvergedReason reason;
-      char               why[PETSC_MAX_PATH_LEN] = "", cut[128] = "";
-      PetscCall(TaoGetConvergedReason(problem->tao, &reason));
-      for (PetscInt t = 0; t < problem->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(problem->terms[t], sizeof(why), why));
-      if (problem->cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", problem->cutbacks, problem->cutbacks > 1 ? "s" : "", (double)problem->loadDone));
-      PetscCall(PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[reason], cut, why[0] ? ": " : "", why));
-      ContactOutputDiscard();
-    }
-    PetscCall(PetscTime(&t3));
-    problem->time[4] = t3 - t0;
-  } else converged = PETSC_TRUE;
+  }
   PetscCall(ProblemDestroy(&problem));
-  *status = converged ? 0 : 2;
+  PetscCall(AccuracyDestroy(&acc));
+  *status = rec.status;
   PetscFunctionReturn(0);
 }
 

@@ -40,6 +40,7 @@
 #include "accuracy.h"
 #include "options.h"
 #include "progress.h"
+#include "outputset.h"
 
 struct _n_Accuracy {
   MPI_Comm  comm;
@@ -381,7 +382,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
     PetscInt   nz = 0;
     PetscReal *z  = NULL;
     PetscCall(AccuracyZone(b, &nz, &z));
-    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->meshDir, b->name, (int)getpid(), (int)step));
+    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->opt.meshDir, b->name, (int)getpid(), (int)step));
     PetscCall(AccuracyWriteField(b, nz, z, eta[i], eta2min, acc->grading, paths[i]));
     PetscCall(PetscFree(z));
     PetscCall(PetscFree(eta[i]));
@@ -572,132 +573,160 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
+/* Step 0's checks: the scene has a contact pair, and none in gpts. */
+static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
 {
-  Problem          prev = NULL, cur = NULL;
+  PetscFunctionBeginUser;
+  PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscBool gpts;
+    PetscCall(PetscStrcmp(p->terms[t]->type, "gpts", &gpts));
+    /* gpts' pressure does not converge under refinement (it oscillates at
+       every h: docs/formulations.md), so the distance between two steps'
+       profiles says nothing of the error */
+    PetscCheck(!gpts, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: pair %s uses the gpts formulation, whose pressure does not converge under refinement, so no error estimate of it can be honest; use -contact_formulation mortar (the default)", p->terms[t]->name);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* One step's problem meshed (with the last step's size fields, then removed)
+   and set up, its first iterate interpolated from the last step's answer. */
+static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, Problem cur, char fields[][PETSC_MAX_PATH_LEN], RunRecord *rec)
+{
+  PetscMPIInt rank;
+  PetscInt    n, nprev;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(acc->comm, &rank));
+  if (k == 0) PetscCall(AccuracyCheckScene(acc, cur));
+  PetscCall(ContactProgressPhase("meshing", "accuracy step %" PetscInt_FMT ": meshing", k));
+  PetscCall(RunMesh(cur, fields));
+  if (!rank)
+    for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i)
+      if (fields[i][0]) (void)unlink(fields[i]);
+  if (acc->maxDofs <= 0) acc->maxDofs = cur->opt.maxDofs;
+  PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
+  PetscCall(RunSetUp(cur, rec));
+  if (!prev) PetscFunctionReturn(0);
+  PetscCall(VecGetSize(cur->X, &n));
+  PetscCall(VecGetSize(prev->X, &nprev));
+  PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see docs/scenes.md, Geometry files)", n, nprev);
+  if (acc->warm) { /* from the last step's answer */
+    Vec X0;
+    PetscCall(VecDuplicate(cur->X, &X0));
+    PetscCall(AccuracyInterpolate(prev, cur, X0));
+    PetscCall(ProblemSetInitialGuess(cur, X0));
+    PetscCall(VecDestroy(&X0));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The step's estimate against the last step's profiles, printed. */
+static PetscErrorCode AccuracyStepEstimate(Accuracy acc, PetscInt k, const AccuracyProfiles *pp, const AccuracyProfiles *pc, AccuracyStep *st)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(acc->comm, &rank));
+  st->estimate = st->profile = st->force = (PetscReal)INFINITY; /* none yet: null in the JSON */
+  if (!rank && k > 0) {
+    AccuracyEstimate(pp, pc, &st->profile, &st->force);
+    st->estimate = PetscMax(st->profile, st->force);
+  }
+  PetscCallMPI(MPI_Bcast(&st->estimate, 3, MPIU_REAL, 0, acc->comm));
+  if (k > 0) PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s, estimated error %.3g %% (pressure profile %.3g %%, force %.3g %%), target %.3g %%\n", k, st->dofs, (double)st->tsolve, (double)(100 * st->estimate), (double)(100 * st->profile), (double)(100 * st->force), (double)(100 * acc->tol)));
+  else PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s (no estimate yet: it compares two steps of refinement)\n", k, st->dofs, (double)st->tsolve));
+  PetscFunctionReturn(0);
+}
+
+/* Whether the loop stops after step k (stop says why, unless the target is reached). */
+static PetscBool AccuracyStepLast(Accuracy acc, PetscInt k, const AccuracyStep steps[], PetscReal problemMaxDofs, PetscBool *reached, char stop[], size_t len)
+{
+  *reached = (PetscBool)(k >= 2 && steps[k].estimate <= acc->tol);
+  if (*reached) return PETSC_TRUE;
+  if (k + 1 == acc->maxSteps) {
+    (void)PetscSNPrintf(stop, len, "-accuracy_max_steps %" PetscInt_FMT " reached", acc->maxSteps);
+    return PETSC_TRUE;
+  }
+  { /* the next step's size: this step's growth over the last (3 at first) */
+    const PetscReal growth = k > 0 ? (PetscReal)steps[k].dofs / steps[k - 1].dofs : 3.0, next = growth * steps[k].dofs;
+    if (acc->maxDofs > 0 && next > acc->maxDofs) {
+      (void)PetscSNPrintf(stop, len, "the next step would have about %.3g dofs, more than %.3g (%s)", (double)next, (double)acc->maxDofs, acc->maxDofs == problemMaxDofs ? "-max_dofs or the machine's memory; -accuracy_max_dofs sets another" : "-accuracy_max_dofs");
+      return PETSC_TRUE;
+    }
+  }
+  return PETSC_FALSE;
+}
+
+/* The pipeline of run.h in a loop: step 0 is the problem given (created
+   from the scene's options, its output set open), each later step a new
+   problem on refined meshes. The last converged step is reported and
+   written. */
+PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
+{
+  Problem          prev = NULL, cur = *first;
   AccuracyProfiles pp, pc;
   AccuracyStep    *steps;
   char             (*fields)[PETSC_MAX_PATH_LEN];
   char             stop[512] = "";
   PetscBool        reached = PETSC_FALSE, converged = PETSC_FALSE;
-  PetscMPIInt      rank;
-  PetscInt         k;
+  PetscInt         k, last = -1;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(acc->comm, &rank));
+  *first = NULL;
   PetscCall(PetscMemzero(&pp, sizeof(pp)));
   PetscCall(PetscMemzero(&pc, sizeof(pc)));
   PetscCall(PetscCalloc1(acc->maxSteps, &steps));
   PetscCall(PetscCalloc1(CONTACT_MAX_BODIES, &fields));
   for (k = 0; k < acc->maxSteps; ++k) {
-    PetscLogDouble t1, t2;
-    PetscInt       n;
-    AccuracyStep  *st = &steps[k];
+    AccuracyStep *st = &steps[k];
+    PetscReal     t0 = rec->time[RUN_TIME_SOLVE];
 
-    PetscCall(ProblemCreate(acc->comm, &cur));
-    cur->outputOpen = (PetscBool)(k > 0);
-    cur->deferView  = PETSC_TRUE;
-    for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i) PetscCall(PetscStrncpy(cur->bgm[i], fields[i], PETSC_MAX_PATH_LEN));
-    PetscCall(ContactProgressPhase("meshing", "accuracy step %" PetscInt_FMT ": meshing", k));
-    PetscCall(ProblemSetFromOptions(cur));
-    if (!rank)
-      for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i)
-        if (fields[i][0]) (void)unlink(fields[i]);
-    if (k == 0) {
-      PetscCheck(cur->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
-      for (PetscInt t = 0; t < cur->nterms; ++t) {
-        PetscBool gpts;
-        PetscCall(PetscStrcmp(cur->terms[t]->type, "gpts", &gpts));
-        /* gpts' pressure does not converge under refinement (it oscillates at
-           every h: README, Formulations), so the distance between two steps'
-           profiles says nothing of the error */
-        PetscCheck(!gpts, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: pair %s uses the gpts formulation, whose pressure does not converge under refinement, so no error estimate of it can be honest; use -contact_formulation mortar (the default)", cur->terms[t]->name);
-      }
+    if (!cur) {
+      PetscCall(PetscTime(&rec->mark));
+      PetscCall(RunCreateProblem(acc->comm, &cur));
     }
-    if (acc->maxDofs <= 0) acc->maxDofs = cur->maxDofs;
-    PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
-    PetscCall(ProblemSetUp(cur));
-    PetscCall(VecGetSize(cur->X, &n));
-    if (prev) {
-      PetscInt nprev;
-      PetscCall(VecGetSize(prev->X, &nprev));
-      PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see README, Geometry files)", n, nprev);
-    }
-    if (prev && acc->warm) { /* from the last step's answer */
-      PetscCall(VecDuplicate(cur->X, &cur->X0));
-      PetscCall(AccuracyInterpolate(prev, cur, cur->X0));
-    }
-    PetscCall(ContactProgressPhase("the solve", "accuracy step %" PetscInt_FMT ": solve, %" PetscInt_FMT " dofs", k, n));
-    PetscCall(PetscTime(&t1));
-    PetscCall(ProblemSolve(cur, &converged));
-    PetscCall(PetscTime(&t2));
+    PetscCall(AccuracyStepSetUp(acc, k, prev, cur, fields, rec));
+    PetscCall(VecGetSize(cur->X, &st->dofs));
+    PetscCall(ContactProgressPhase("the solve", "accuracy step %" PetscInt_FMT ": solve, %" PetscInt_FMT " dofs", k, st->dofs));
+    PetscCall(RunSolve(cur, rec, &converged));
+    st->tsolve = rec->time[RUN_TIME_SOLVE] - t0;
     if (!converged) {
-      PetscCall(PetscSNPrintf(stop, sizeof(stop), "the solve of step %" PetscInt_FMT " (%" PetscInt_FMT " dofs) did not converge (%s)", k, n, TaoConvergedReasons[cur->reason]));
+      PetscCall(PetscSNPrintf(stop, sizeof(stop), "the solve of step %" PetscInt_FMT " (%" PetscInt_FMT " dofs) did not converge (%s)", k, st->dofs, TaoConvergedReasons[cur->res.reason]));
+      st->dofs = 0;
       break;
     }
     PetscCall(ContactProgressPhase("post-processing", "accuracy step %" PetscInt_FMT ": post-processing", k));
-    PetscCall(ProblemPostProcess(cur, cur->X, converged));
+    PetscCall(RunPostProcess(cur, converged));
     PetscCall(AccuracyProfilesGet(cur, &pc));
-    st->dofs       = n;
-    st->iterations = cur->iterations;
-    st->tsolve     = t2 - t1;
-    st->estimate = st->profile = st->force = (PetscReal)INFINITY; /* none yet: null in the JSON */
-    if (!rank && prev) {
-      AccuracyEstimate(&pp, &pc, &st->profile, &st->force);
-      st->estimate = PetscMax(st->profile, st->force);
-    }
-    PetscCallMPI(MPI_Bcast(&st->estimate, 3, MPIU_REAL, 0, acc->comm));
-    if (prev) PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s, estimated error %.3g %% (pressure profile %.3g %%, force %.3g %%), target %.3g %%\n", k, n, (double)st->tsolve, (double)(100 * st->estimate), (double)(100 * st->profile), (double)(100 * st->force), (double)(100 * acc->tol)));
-    else PetscCall(PetscPrintf(acc->comm, "accuracy step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, solve %.3g s (no estimate yet: it compares two steps of refinement)\n", k, n, (double)st->tsolve));
+    st->iterations = cur->res.iterations;
+    PetscCall(AccuracyStepEstimate(acc, k, &pp, &pc, st));
     PetscCall(ProblemDestroy(&prev));
     PetscCall(AccuracyProfilesDestroy(&pp));
     pp   = pc;
     prev = cur;
     cur  = NULL;
-    if (k >= 2 && st->estimate <= acc->tol) {
-      reached = PETSC_TRUE;
-      break;
-    }
-    if (k + 1 == acc->maxSteps) {
-      PetscCall(PetscSNPrintf(stop, sizeof(stop), "-accuracy_max_steps %" PetscInt_FMT " reached", acc->maxSteps));
-      break;
-    }
-    { /* the next step's size: this step's growth over the last (3 at first) */
-      const PetscReal growth = k > 0 ? (PetscReal)n / steps[k - 1].dofs : 3.0, next = growth * n;
-      if (acc->maxDofs > 0 && next > acc->maxDofs) {
-        PetscCall(PetscSNPrintf(stop, sizeof(stop), "the next step would have about %.3g dofs, more than %.3g (%s)", (double)next, (double)acc->maxDofs, acc->maxDofs == prev->maxDofs ? "-max_dofs or the machine's memory; -accuracy_max_dofs sets another" : "-accuracy_max_dofs"));
-        break;
-      }
-    }
+    last = k;
+    if (AccuracyStepLast(acc, k, steps, prev->opt.maxDofs, &reached, stop, sizeof(stop))) break;
     PetscCall(AccuracyRefine(acc, prev, k + 1, fields));
   }
   PetscCall(ProblemDestroy(&cur)); /* a step that did not converge: the answer is the last one that did */
   if (prev) {
-    PetscInt last = 0;
-    for (PetscInt j = 0; j < acc->maxSteps; ++j)
-      if (steps[j].dofs > 0) last = j;
-    prev->accuracyTarget = acc->tol;
-    prev->errorEstimate  = steps[last].estimate;
-    prev->nAccuracySteps = last + 1;
-    prev->accuracySteps  = steps;
-    prev->t0             = t0;
+    rec->accuracyTarget = acc->tol;
+    rec->errorEstimate  = steps[last].estimate;
+    rec->nsteps         = last + 1;
+    rec->steps          = steps;
+    rec->converged      = PETSC_TRUE;
+    rec->status         = reached ? 0 : 2;
     PetscCall(ProblemView(prev));
     if (reached) PetscCall(PetscPrintf(acc->comm, "accuracy: target %.3g %% reached: estimated error %.3g %% after %" PetscInt_FMT " steps, %" PetscInt_FMT " dofs\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), last + 1, steps[last].dofs));
     else PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: accuracy: target %.3g %% not reached: estimated error %.3g %% at %" PetscInt_FMT " dofs; stopped because %s; writing that answer\n", (double)(100 * acc->tol), (double)(100 * steps[last].estimate), steps[last].dofs, stop));
-    if (prev->taylor) {
-      PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
-      PetscCall(ProblemTaylorTest(prev));
-    }
-    PetscCall(ProblemCheckUnusedOptions(prev, PETSC_TRUE));
-    for (PetscInt i = 0; i < prev->nbodies; ++i) prev->time[0] += prev->bodies[i]->tmesh;
-    prev->time[2] = steps[last].tsolve;
-    PetscCall(ContactProgressPhase("the output", "output"));
-    PetscCall(ProblemWriteOutput(prev, PETSC_TRUE));
+    PetscCall(RunFinish(prev, rec));
   } else {
     PetscCall(PetscFPrintf(acc->comm, PETSC_STDERR, "contact: accuracy: %s; no output written\n", stop));
     ContactOutputDiscard();
+    rec->status = 2;
   }
-  *status = reached ? 0 : 2;
   PetscCall(ProblemDestroy(&prev));
   PetscCall(AccuracyProfilesDestroy(&pp));
   PetscCall(PetscFree(fields));

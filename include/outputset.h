@@ -1,0 +1,22 @@
+#pragma once
+/* The output set of a run (outputset.c): ContactOutputOpen() locks it, checks
+   its paths and creates its temporaries before meshing (h5 or json may be
+   "none"; wait: wait for another run that holds the lock); the writer fills
+   the temporaries and ContactOutputCommit() publishes them; a failed or
+   interrupted run discards the set (its temporaries and lock removed, earlier
+   files intact). Nothing here knows what the files hold. */
+#include <petscsys.h>
+
+/* The set's final names ("" when not written), temporaries and run id. */
+typedef struct {
+  const char *h5, *xdmf, *json, *htmp, *xtmp, *jtmp, *runId;
+} ContactOutputFiles;
+
+PetscErrorCode ContactOutputOpen(MPI_Comm, const char h5[], const char json[], PetscBool wait);
+PetscErrorCode ContactOutputGetFiles(ContactOutputFiles *);
+PetscErrorCode ContactOutputCommit(MPI_Comm);
+PetscErrorCode ContactOutputInstallSignalHandlers(void);
+void           ContactOutputDiscard(void);
+/* A child process (Gmsh) and the file it writes: an interrupted run stops it
+   and removes the file (pid 0: none). */
+void           ContactOutputSetChild(int pid, const char file[]);

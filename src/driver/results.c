@@ -1,0 +1,297 @@
+/* The results of a run, written into its output set (outputset.h): per body
+   the second-order nodal mesh (coordinates, Tri6/Quad9 connectivity in XDMF
+   node order), displacement, stress (xx, yy, zz, xy) and von Mises stress
+   averaged at the nodes, in one HDF5 file with an XDMF file beside it, and a
+   JSON summary of the run; each contact term adds its own. */
+#include <errno.h>
+#include <petscviewerhdf5.h>
+#include "run.h"
+#include "outputset.h"
+#include "xdmf.h"
+
+/* The XDMF file: one spatial collection of a grid per body (its second-order
+   cells, reference coordinates, displacement as a 3-component vector, stress
+   components and von Mises stress) and a line grid per contact surface with a
+   profile (EnergyTermWriteXDMF), all on the HDF5 file h5. ParaView's legacy
+   reader (XDMFReader) and its Xdmf3 readers read every item alike only as
+   plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
+   and the readers map the columns of a Tensor6 differently; so the HDF5 file
+   holds the displacement with z = 0 and each stress component on its own. */
+static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[], const char runId[])
+{
+  PetscMPIInt rank;
+  const char *base = strrchr(h5, '/');
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  base = base ? base + 1 : h5;
+  if (rank == 0) {
+    FILE *fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
+    fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", runId);
+    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      Body        b  = p->bodies[i];
+      const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
+      const char *g  = b->name;
+      PetscInt    N = F[i].nnodes, C = F[i].ncells;
+      fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
+      fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
+      fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
+      fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
+      char        path[PETSC_MAX_PATH_LEN];
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/displacement_xyz", base, g));
+      XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
+      for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
+        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, XdmfBodyScalars[k]));
+        XdmfWriteAttribute(fp, XdmfBodyScalars[k], (int)N, 1, path);
+      }
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
+      for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
+      fprintf(fp, "   </Grid>\n");
+    }
+    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
+    fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
+    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
+   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress,
+   and xdmf_nan, NaN at every node, for the contact fields a body has not. */
+static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
+{
+  Vec                d3, c;
+  PetscInt           n;
+  const PetscScalar *u;
+  PetscScalar       *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(F->vm, &n));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)F->vm), &d3));
+  PetscCall(VecSetSizes(d3, 3 * n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(d3, 3));
+  PetscCall(VecSetType(d3, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)d3, "displacement_xyz"));
+  PetscCall(VecGetArrayRead(F->disp, &u));
+  PetscCall(VecGetArray(d3, &a));
+  for (PetscInt i = 0; i < n; ++i) {
+    a[3 * i]     = u[2 * i];
+    a[3 * i + 1] = u[2 * i + 1];
+    a[3 * i + 2] = 0.0;
+  }
+  PetscCall(VecRestoreArray(d3, &a));
+  PetscCall(VecRestoreArrayRead(F->disp, &u));
+  PetscCall(VecView(d3, v));
+  PetscCall(VecDestroy(&d3));
+  PetscCall(VecDuplicate(F->vm, &c));
+  for (PetscInt k = 0; k < 4; ++k) {
+    PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
+    PetscCall(PetscObjectSetName((PetscObject)c, XdmfBodyScalars[k])); /* stress_xx, _yy, _zz, _xy: the XDMF names */
+    PetscCall(VecView(c, v));
+  }
+  PetscCall(VecSet(c, (PetscScalar)NAN)); /* the contact fields a body has not (xdmf.h) */
+  PetscCall(PetscObjectSetName((PetscObject)c, "xdmf_nan"));
+  PetscCall(VecView(c, v));
+  PetscCall(VecDestroy(&c));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields F[], const char path[], const char runId[])
+{
+  PetscViewer v;
+  char       *opts, version[256];
+  PetscMPIInt size;
+  PetscInt    its;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5Open(p->comm, path, FILE_MODE_WRITE, &v));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    char group[2 * CONTACT_NAME_LEN];
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    PetscCall(VecView(F[i].coords, v));
+    PetscCall(VecView(F[i].disp, v));
+    PetscCall(VecView(F[i].stress, v));
+    PetscCall(VecView(F[i].vm, v));
+    PetscCall(WriteXDMFFields(&F[i], v));
+    PetscCall(ISView(F[i].topo, v));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+  }
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteHDF5(p->terms[t], p->bodies, v));
+  PetscCall(PetscOptionsGetAll(NULL, &opts));
+  PetscCall(PetscGetVersion(version, sizeof(version)));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(PetscViewerHDF5PushGroup(v, "/metadata"));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->opt.scene));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "run_id", PETSC_STRING, runId));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "ranks", PETSC_INT, &size));
+  its = p->res.iterations; /* over all stages */
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "iterations", PETSC_INT, &its));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "energy", PETSC_REAL, &p->res.energy));
+  for (PetscInt k = 0; k < RUN_TIME_TOTAL; ++k) { /* the total is not known yet */
+    char name[32];
+    PetscCall(PetscSNPrintf(name, sizeof(name), "time_%s", RunTimeNames[k]));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", name, PETSC_REAL, &rec->time[k]));
+  }
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscCall(PetscFree(opts));
+  PetscCall(PetscViewerDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields F[], const char path[], const char runId[])
+{
+  PetscMPIInt        rank, size;
+  PetscInt           its, dofs;
+  TaoConvergedReason reason;
+  TaoType            type;
+  PetscReal          umax = 0, unorm2 = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  its = p->res.iterations; /* over all stages */
+  PetscCall(TaoGetConvergedReason(p->tao, &reason));
+  PetscCall(TaoGetType(p->tao, &type));
+  PetscCall(VecGetSize(p->X, &dofs));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    umax = PetscMax(umax, F[i].umax);
+    unorm2 += F[i].unorm2;
+  }
+  if (rank == 0) {
+    FILE *fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, runId, (int)dofs, (int)size, type);
+    fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)its);
+    fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
+    fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
+    fprintf(fp, "  \"energy\": ");
+    ContactJSONReal(fp, p->res.energy);
+    fprintf(fp, ",\n  \"gradient_norm\": ");
+    ContactJSONReal(fp, p->res.gnorm);
+    fprintf(fp, ",\n  \"max_displacement\": ");
+    ContactJSONReal(fp, umax);
+    fprintf(fp, ",\n  \"displacement_norm\": ");
+    ContactJSONReal(fp, PetscSqrtReal(unorm2));
+    fprintf(fp, ",\n  \"reactions\": {");
+    for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
+      for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
+        fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
+        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[0]);
+        fprintf(fp, ", ");
+        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[1]);
+        fprintf(fp, "]");
+      }
+    fprintf(fp, "\n  }");
+    if (p->nterms) { /* the first pair's figures at top level, then every pair */
+      PetscCall(EnergyTermWriteJSON(p->terms[0], p->bodies, fp, PETSC_TRUE));
+      fprintf(fp, ",\n  \"contact\": {");
+      for (PetscInt t = 0; t < p->nterms; ++t) {
+        fprintf(fp, "%s\n    \"%s\": ", t ? "," : "", p->terms[t]->name);
+        PetscCall(EnergyTermWriteJSON(p->terms[t], p->bodies, fp, PETSC_FALSE));
+      }
+      fprintf(fp, "\n  }");
+    }
+    fprintf(fp, ",\n  \"bodies\": {");
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      Body            b   = p->bodies[i];
+      const BodyErrors *e = &F[i].err;
+      fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+      ContactJSONReal(fp, p->res.bodyEnergy[i]);
+      fprintf(fp, ", \"max_displacement\": ");
+      ContactJSONReal(fp, F[i].umax);
+      fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
+      ContactJSONReal(fp, b->h);
+      if (b->hasExact) { /* each error with the exact solution's norm */
+        const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
+        const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
+        fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
+        for (PetscInt k = 0; k < 6; ++k) {
+          fprintf(fp, ", \"%s\": ", keys[k]);
+          ContactJSONReal(fp, vals[k]);
+        }
+      }
+      fprintf(fp, "}");
+    }
+    fprintf(fp, "\n  },\n");
+    if (rec->accuracyTarget > 0) {
+      fprintf(fp, "  \"accuracy_target\": ");
+      ContactJSONReal(fp, rec->accuracyTarget);
+      fprintf(fp, ",\n  \"error_estimate\": ");
+      ContactJSONReal(fp, rec->errorEstimate);
+      fprintf(fp, ",\n  \"adapt_steps\": [");
+      for (PetscInt k = 0; k < rec->nsteps; ++k) {
+        const AccuracyStep *a = &rec->steps[k];
+        fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs, (int)a->iterations);
+        ContactJSONReal(fp, a->tsolve);
+        fprintf(fp, ", \"error_estimate\": ");
+        ContactJSONReal(fp, a->estimate);
+        fprintf(fp, ", \"profile_estimate\": ");
+        ContactJSONReal(fp, a->profile);
+        fprintf(fp, ", \"force_estimate\": ");
+        ContactJSONReal(fp, a->force);
+        fprintf(fp, "}");
+      }
+      fprintf(fp, "\n  ],\n");
+    }
+    if (p->opt.taylor) {
+      fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
+      ContactJSONReal(fp, p->res.taylorRates[0]);
+      fprintf(fp, ", \"hessian_order\": ");
+      ContactJSONReal(fp, p->res.taylorRates[1]);
+      fprintf(fp, ", \"eps\": [");
+      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorEps[k]);
+      fprintf(fp, "], \"gradient_remainder\": [");
+      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorRemainders[0][k]);
+      fprintf(fp, "], \"hessian_relative_remainder\": [");
+      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorRemainders[1][k]);
+      fprintf(fp, "]},\n");
+    }
+    fprintf(fp, "  \"time\": {");
+    for (PetscInt k = 0; k < RUN_TIME_N; ++k) {
+      fprintf(fp, "%s\"%s\": ", k ? ", " : "", RunTimeNames[k]);
+      ContactJSONReal(fp, rec->time[k]);
+    }
+    fprintf(fp, "}\n}\n");
+    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunWriteResults(Problem p, RunRecord *rec)
+{
+  BodyNodalFields    F[CONTACT_MAX_BODIES];
+  ContactOutputFiles out;
+  PetscLogDouble     t0, t1;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactOutputGetFiles(&out));
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.output));
+  PetscCall(PetscLogEventBegin(contactLog.writeOutput, 0, 0, 0, 0));
+  PetscCall(PetscMemzero(F, sizeof(F)));
+  PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
+  if (out.h5[0]) {
+    PetscCall(WriteHDF5(p, rec, F, out.htmp, out.runId));
+    PetscCall(WriteXDMF(p, F, out.xtmp, out.h5, out.runId));
+  }
+  PetscCall(PetscTime(&t1));
+  rec->time[RUN_TIME_OUTPUT] = t1 - t0;
+  rec->time[RUN_TIME_TOTAL]  = t1 - rec->start;
+  if (out.json[0]) PetscCall(WriteJSON(p, rec, F, out.jtmp, out.runId));
+  PetscCall(ContactOutputCommit(p->comm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyNodalFieldsDestroy(&F[i]));
+  PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
+  if (out.h5[0]) PetscCall(PetscPrintf(p->comm, "Wrote %s and %s\n", out.h5, out.xdmf));
+  if (out.json[0]) PetscCall(PetscPrintf(p->comm, "Wrote %s\n", out.json));
+  PetscFunctionReturn(0);
+}

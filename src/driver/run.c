@@ -1,0 +1,126 @@
+/* The pipeline of a run (run.h): each step of main() and of each -accuracy
+   step, with the progress phase it announces and the time slot it fills. */
+#include "run.h"
+#include "contactpair.h"
+#include "options.h"
+#include "outputset.h"
+#include "progress.h"
+
+const char *const RunTimeNames[] = {"mesh", "setup", "solve", "output", "total"};
+
+PetscErrorCode RunOptionsSetFromOptions(MPI_Comm comm, const char scene[], RunOptions *o)
+{
+  char *paths[2] = {o->output, o->summary};
+  const char *opts[2] = {"-output", "-summary"};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(o->output, sizeof(o->output), "out/%s.h5", scene));
+  PetscCall(PetscSNPrintf(o->summary, sizeof(o->summary), "out/%s.json", scene));
+  PetscOptionsBegin(comm, NULL, "Output options", NULL);
+  PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, o->meshOnly, &o->meshOnly, NULL));
+  PetscCall(PetscOptionsString("-output", "HDF5 output file, an XDMF file beside it (none: no output)", NULL, o->output, o->output, sizeof(o->output), NULL));
+  PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, o->summary, o->summary, sizeof(o->summary), NULL));
+  PetscCall(PetscOptionsBool("-output_wait", "Wait for another run writing the same output files (else stop at once)", NULL, o->outputWait, &o->outputWait, NULL));
+  PetscOptionsEnd();
+  for (PetscInt k = 0; k < 2; ++k) { /* relative to the options file that names them */
+    PetscBool none;
+    PetscCall(PetscStrcmp(paths[k], "none", &none));
+    if (!none) PetscCall(ContactOptionsResolvePath(NULL, opts[k], paths[k], PETSC_MAX_PATH_LEN, NULL, 0));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The scene's options read (the problem's, its bodies', its contact pairs'),
+   and the contact terms created and handed to the problem. */
+PetscErrorCode RunCreateProblem(MPI_Comm comm, Problem *problem)
+{
+  Problem    p;
+  EnergyTerm terms[CONTACT_MAX_TERMS];
+  PetscInt   nterms;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemCreate(comm, &p));
+  PetscCall(ProblemSetFromOptions(p));
+  PetscCall(ContactPairsCreateFromOptions(comm, p->nbodies, p->bodies, CONTACT_MAX_TERMS, &nterms, terms));
+  for (PetscInt t = 0; t < nterms; ++t) PetscCall(ProblemAddTerm(p, terms[t]));
+  *problem = p;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunMesh(Problem p, char fields[][PETSC_MAX_PATH_LEN])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetSizeField(p->bodies[i], fields ? fields[i] : NULL));
+  PetscCall(ProblemGenerateMeshes(p));
+  PetscFunctionReturn(0);
+}
+
+/* The set-up, and the time slots of the pass begun at rec->mark: meshing is
+   the bodies' generating and reading of their meshes, set-up the rest. */
+PetscErrorCode RunSetUp(Problem p, RunRecord *rec)
+{
+  PetscLogDouble t;
+  PetscReal      tmesh = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemSetUp(p));
+  PetscCall(PetscTime(&t));
+  for (PetscInt i = 0; i < p->nbodies; ++i) tmesh += p->bodies[i]->tmesh;
+  rec->time[RUN_TIME_MESH] += tmesh;
+  rec->time[RUN_TIME_SETUP] += (t - rec->mark) - tmesh;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunSolve(Problem p, RunRecord *rec, PetscBool *converged)
+{
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  PetscCall(ProblemSolve(p, converged));
+  PetscCall(PetscTime(&t1));
+  rec->time[RUN_TIME_SOLVE] += t1 - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunPostProcess(Problem p, PetscBool converged)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ProblemPostProcess(p, p->X, converged));
+  PetscFunctionReturn(0);
+}
+
+/* Why a solve stopped, in one line: TAO's reason, the load it reached, and
+   what a term found wrong with the state. */
+static PetscErrorCode RunSayNotConverged(Problem p)
+{
+  char why[PETSC_MAX_PATH_LEN] = "", cut[128] = "";
+
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(p->terms[t], sizeof(why), why));
+  if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
+  PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunFinish(Problem p, RunRecord *rec)
+{
+  PetscLogDouble t;
+
+  PetscFunctionBeginUser;
+  if (p->opt.taylor) {
+    PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
+    PetscCall(ProblemTaylorTest(p));
+  }
+  PetscCall(ProblemCheckUnusedOptions(p, PETSC_TRUE));
+  if (rec->converged) {
+    PetscCall(ContactProgressPhase("the output", "output"));
+    PetscCall(RunWriteResults(p, rec));
+  } else {
+    PetscCall(RunSayNotConverged(p));
+    ContactOutputDiscard();
+  }
+  PetscCall(PetscTime(&t));
+  rec->time[RUN_TIME_TOTAL] = t - rec->start;
+  PetscFunctionReturn(0);
+}
