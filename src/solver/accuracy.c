@@ -609,7 +609,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
         PetscBool gpts;
         PetscCall(PetscStrcmp(cur->terms[t]->type, "gpts", &gpts));
         /* gpts' pressure does not converge under refinement (it oscillates at
-           every h: README, Formulations), so the distance between two steps'
+           every h: docs/formulations.md, gpts), so the distance between two steps'
            profiles says nothing of the error */
         PetscCheck(!gpts, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: pair %s uses the gpts formulation, whose pressure does not converge under refinement, so no error estimate of it can be honest; use -contact_formulation mortar (the default)", cur->terms[t]->name);
       }
@@ -621,7 +621,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, PetscLogDouble t0, int *status)
     if (prev) {
       PetscInt nprev;
       PetscCall(VecGetSize(prev->X, &nprev));
-      PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see README, Geometry files)", n, nprev);
+      PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see docs/scenes.md, Geometry files)", n, nprev);
     }
     if (prev && acc->warm) { /* from the last step's answer */
       PetscCall(VecDuplicate(cur->X, &cur->X0));
