@@ -118,3 +118,15 @@ def test_link_check_finds_a_broken_anchor(tmp_path, monkeypatch):
     monkeypatch.setattr(sys.modules[__name__], "PAGES", [page])
     monkeypatch.setattr(sys.modules[__name__], "ROOT", tmp_path)
     assert broken_links() == ["page.md:5: #nowhere (no such heading)", "page.md:6: other.md (no such file)"]
+
+
+def test_readme_is_a_guide():
+    """The README stays a guide (the reference is in docs/ and bench/): at
+    most 400 lines, opening with the two commands, showing the picture."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import readme_figures
+    text = (ROOT / "README.md").read_text()
+    assert len(text.splitlines()) <= 400
+    commands = [l.split()[:2] for l in text.splitlines()[:6] if l.startswith("    make ")]
+    assert commands == [["make", "run"], ["make", "test"]]
+    assert f"]({readme_figures.PICTURE})" in text
