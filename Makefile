@@ -73,7 +73,7 @@ check-sanitize: bin/contact-sanitize meshes
 # the long extremes (k_p up to 1e12 without continuation, h = 0.01), 500
 # mutated meshes through the mesh reader, and the robustness sweep (h x k_p x
 # push, both formulations, 1 and 2 ranks: 180 runs, about 30 minutes):
-# bench/stress/results.json and RESULTS.md, the README's table
+# bench/stress/results.json and RESULTS.md, bench/README.md's table
 stress: bin/contact meshes
 	$(PYTHON) -m pytest -q -m stress tests
 	$(PYTHON) tests/fuzz_msh.py --cases 500 --seed 1 --jobs 2

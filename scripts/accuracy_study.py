@@ -190,7 +190,7 @@ def against_sweep(tmp, repeat):
 
 
 def tables(out):
-    """The tables of RESULTS.md (and the README's), from results.json."""
+    """The tables of RESULTS.md (and docs/solver.md's), from results.json."""
     res, sweep, cur, repeat = out["scenes"], out["sweep"], out["curve"], out["repeat"]
     lines = ["*true error*: against the answer two refinement steps further (the larger of the pressure profile's "
              "relative L2 distance and the contact force's relative difference, the program's own measure). "

@@ -220,7 +220,7 @@ def rank_pairs(rows):
 
 
 def speedup_table(pairs):
-    """The Markdown lines of the speed-up table (RESULTS.md and the README's
+    """The Markdown lines of the speed-up table (RESULTS.md and bench/README.md's
     generated copy, scripts/readme_figures.py): medians, each run's solve
     time, the targets and their verdicts."""
     def verdict(ratio, target):

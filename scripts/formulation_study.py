@@ -7,7 +7,7 @@ the contact patch test.
 
 Runs bin/contact (from the repository root) and writes <out>/results.json
 (every figure) and <out>/RESULTS.md (the tables); scripts/readme_figures.py
-renders the same tables into the README from results.json. About 8 minutes
+renders the same tables into docs/formulations.md from results.json. About 8 minutes
 on 2 cores.
 
 - Convergence: the mirrored half of the reference scene (hertz-half: the full

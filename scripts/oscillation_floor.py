@@ -81,7 +81,7 @@ def nodal(a_over_h, offset, kind, nfine=200001):
 
 
 def tables(res):
-    """The two tables (README and oscillation_floor.md) from the results."""
+    """The two tables (docs/formulations.md and oscillation_floor.md) from the results."""
     lines = ["| a/h | weights | min | median | max |", "|---|---|---|---|---|"]
     for r in res["floor"]:
         lines.append(f"| {r['a_over_h']} | {r['kind']} | {r['min']:.4f} | {r['median']:.4f} | {r['max']:.4f} |")

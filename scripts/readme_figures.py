@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
-"""The README's tables of measured figures, generated from committed results.
+"""The documentation's tables of measured figures, generated from committed
+results, and the README's picture.
 
     python3 scripts/readme_figures.py --check      # exit 1 if a table differs from its results
     python3 scripts/readme_figures.py --update     # rewrite the tables from the results
     python3 scripts/readme_figures.py --measure scenes --measure solver [--update]
                                                    # run a table's cases first
+    python3 scripts/readme_figures.py --measure picture
+                                                   # redraw docs/img/hertz-pressure.png
 
-Each table sits between the markers <!-- figures:NAME:begin --> and
-<!-- figures:NAME:end --> and is rendered by a function of this script from a
+The pages are README.md, every docs/*.md and bench/README.md. Each table sits
+between the markers <!-- figures:NAME:begin --> and <!-- figures:NAME:end -->
+on one of them (any one, exactly once over all of them: a table's markers
+move with its section) and is rendered by a function of this script from a
 committed result file; a test (tests/test_readme_figures.py) runs --check, so
-that a table can neither be typed by hand nor go stale. The tables:
+that a table can neither be typed by hand nor go stale. A table whose markers
+are missing, doubled or unclosed is an error naming the page. The tables:
 
 - scenes: bench/scenes/results.json (written by --measure scenes: each scene
   with each formulation, Newton with a direct factorisation, a few seconds);
@@ -25,6 +31,11 @@ that a table can neither be typed by hand nor go stale. The tables:
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
   2 minutes).
+
+The picture: --measure picture runs the reference scene as `make run` does
+(meshes/hertz/hertz.opts, the program's defaults), its HDF5 output in a
+temporary directory, and draws its pressure plot with scripts/plot_hertz.py
+into docs/img/hertz-pressure.png, the PNG the README shows (a few seconds).
 """
 import argparse
 import json
@@ -33,7 +44,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-README = os.path.join(ROOT, "README.md")
+PICTURE = os.path.join("docs", "img", "hertz-pressure.png")
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 
 SCENES = [("hertz", "meshes/hertz/hertz.opts", ["-mesh_size", "0.1"], "hertz, h = 0.1"),
@@ -66,6 +77,16 @@ def measure_scenes():
                                  P=s["contact_force"], fem_a=s["fem_a"], hertz_a=s["hertz_a"], fem_pmax=s["fem_pmax"],
                                  hertz_pmax=s["hertz_pmax"], l2=s["pressure_l2_error"]))
     save("scenes", rows)
+
+
+def measure_picture():
+    """The pressure plot of `make run`'s scene, drawn into PICTURE."""
+    import subprocess
+    from formulation_study import run
+    with tempfile.TemporaryDirectory() as tmp:
+        _, h5 = run(["-options_file", "meshes/hertz/hertz.opts"], tmp, "hertz")
+        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "plot_hertz.py"), h5, "-o",
+                        os.path.join(ROOT, PICTURE)], cwd=ROOT, check=True)
 
 
 def render_scenes():
@@ -198,49 +219,82 @@ RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver"
           "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages}
 
 
-def blocks(text):
-    """{name: (start, end)} of the text between each pair of markers."""
+def pages():
+    """The pages that may hold tables, relative to ROOT: README.md, every
+    docs/*.md, bench/README.md."""
+    docs = os.path.join(ROOT, "docs")
+    found = sorted(os.path.join("docs", f) for f in os.listdir(docs) if f.endswith(".md")) if os.path.isdir(docs) else []
+    return ["README.md"] + found + [os.path.join("bench", "README.md")]
+
+
+def blocks(text, page="README.md"):
+    """{name: (start, end)} of the text between each pair of markers; a
+    marker doubled, or a begin without its end, is an error naming page."""
     out = {}
     for name in RENDER:
         b, e = f"<!-- figures:{name}:begin -->\n", f"<!-- figures:{name}:end -->"
+        if text.count(b) > 1 or text.count(e) > 1:
+            raise SystemExit(f"{page}: the markers of table {name} appear more than once")
         if b in text:
             i = text.index(b) + len(b)
+            if e not in text[i:]:
+                raise SystemExit(f"{page}: table {name} has no end marker <!-- figures:{name}:end -->")
             out[name] = (i, text.index(e, i))
+        elif e in text:
+            raise SystemExit(f"{page}: table {name} has an end marker without its begin marker")
     return out
+
+
+def locate(texts):
+    """{name: page} of every table over the pages {page: text}; a table on
+    two pages, or on none, is an error naming them."""
+    where = {}
+    for page, text in texts.items():
+        for name in blocks(text, page):
+            if name in where:
+                raise SystemExit(f"table {name} has markers on two pages: {where[name]} and {page}")
+            where[name] = page
+    missing = sorted(set(RENDER) - set(where))
+    if missing:
+        raise SystemExit(f"no page ({', '.join(texts)}) has markers for: {', '.join(missing)}")
+    return where
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver", "picture"], action="append", default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
     if "solver" in args.measure:
         measure_solver()
-    with open(README) as f:
-        text = f.read()
-    found = blocks(text)
-    missing = sorted(set(RENDER) - set(found))
-    if missing:
-        raise SystemExit(f"README.md has no markers for: {', '.join(missing)}")
+    if "picture" in args.measure:
+        measure_picture()
+    texts = {}
+    for page in pages():
+        with open(os.path.join(ROOT, page)) as f:
+            texts[page] = f.read()
+    where = locate(texts)
     stale = []
-    for name, (i, j) in sorted(found.items(), key=lambda kv: -kv[1][0]):
-        new = RENDER[name]()
-        if text[i:j] != new:
-            stale.append(name)
-            text = text[:i] + new + text[j:]
+    for page, text in texts.items():
+        for name, (i, j) in sorted(blocks(text, page).items(), key=lambda kv: -kv[1][0]):
+            new = RENDER[name]()
+            if text[i:j] != new:
+                stale.append(f"{name} ({page})")
+                text = text[:i] + new + text[j:]
+        if args.update and text != texts[page]:
+            with open(os.path.join(ROOT, page), "w") as f:
+                f.write(text)
     if args.update:
-        with open(README, "w") as f:
-            f.write(text)
         print("updated:", ", ".join(stale) if stale else "nothing (all up to date)")
     elif stale:
-        print("README tables that differ from their committed results:", ", ".join(stale),
+        print("tables that differ from their committed results:", ", ".join(stale),
               "(python3 scripts/readme_figures.py --update)")
         sys.exit(1)
     else:
-        print("README tables match their results:", ", ".join(sorted(found)))
+        print("tables match their results:", ", ".join(f"{n} ({where[n]})" for n in sorted(where)))
 
 
 if __name__ == "__main__":

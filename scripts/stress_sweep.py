@@ -25,7 +25,7 @@ report of its last iterate; then the agreement of 1 and 2 ranks on P) after
 every run, so that an interrupted sweep keeps what it did
 (--resume skips the runs already there), and <out>/RESULTS.md (the compact
 table and every run). scripts/readme_figures.py renders the compact table into
-the README from results.json.
+bench/README.md from results.json.
 """
 import argparse
 import datetime
@@ -226,7 +226,7 @@ def stopped_cases(failed):
 
 def tables(res):
     """The compact table (one row per h x k_p x push) and the summary lines;
-    rendered into the README by scripts/readme_figures.py."""
+    rendered into bench/README.md by scripts/readme_figures.py."""
     runs = res["runs"]
     agree = {(a["h"], a["kp"], a["push"], a["formulation"]): a["rel"] for a in res["rank_agreement"]}
     ok = sum(r["converged"] for r in runs)

@@ -1,13 +1,132 @@
-"""The README's tables of measured figures are rendered from committed results
-(scripts/readme_figures.py): a table typed by hand, or results committed
-without their table, fail here."""
+"""The documentation (README.md, docs/*.md, bench/README.md): its tables of
+measured figures are rendered from committed results
+(scripts/readme_figures.py), so that a table typed by hand, or results
+committed without their table, fail here; and every link between its pages
+reaches a file and, where it names one, a heading of that file."""
+import re
 import subprocess
 import sys
 
+import pytest
+
 from conftest import ROOT
+
+PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md")) + [ROOT / "bench" / "README.md"]
+FIGURES = ROOT / "scripts" / "readme_figures.py"
 
 
 def test_readme_tables_match_results():
-    p = subprocess.run([sys.executable, str(ROOT / "scripts" / "readme_figures.py"), "--check"],
-                       cwd=ROOT, capture_output=True, text=True)
+    p = subprocess.run([sys.executable, str(FIGURES), "--check"], cwd=ROOT, capture_output=True, text=True)
     assert p.returncode == 0, p.stdout + p.stderr
+    for page in ("docs/formulations.md", "docs/solver.md", "bench/README.md"):
+        assert page in p.stdout, p.stdout
+
+
+def test_pages_are_the_documentation():
+    """The pages the script reads are the ones this test checks."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import readme_figures
+    assert [ROOT / p for p in readme_figures.pages()] == PAGES
+    assert (ROOT / readme_figures.PICTURE).is_file()
+
+
+@pytest.mark.parametrize("page, change, message", [
+    ("docs/solver.md", lambda text: text.replace("<!-- figures:solver:end -->", ""),
+     "docs/solver.md: table solver has no end marker"),
+    ("README.md", lambda text: text + "\n<!-- figures:solver:begin -->\n<!-- figures:solver:end -->\n",
+     "table solver has markers on two pages: README.md and docs/solver.md"),
+    ("bench/README.md", lambda text: text.replace("<!-- figures:stress:begin -->", "").replace("<!-- figures:stress:end -->", ""),
+     "no page (README.md, docs/"),
+])
+def test_marker_errors_name_the_page(page, change, message, tmp_path):
+    """A table's markers left unclosed, on two pages or on none stop the
+    check with a line naming the page (the script and a copy of the pages in
+    tmp_path)."""
+    (tmp_path / "scripts").mkdir()
+    (tmp_path / "scripts" / "readme_figures.py").write_text(FIGURES.read_text())
+    for p in PAGES:
+        dest = tmp_path / p.relative_to(ROOT)
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        dest.write_text(p.read_text())
+    (tmp_path / page).write_text(change((ROOT / page).read_text()))
+    p = subprocess.run([sys.executable, str(tmp_path / "scripts" / "readme_figures.py"), "--check"],
+                       cwd=tmp_path, capture_output=True, text=True)
+    assert p.returncode != 0
+    assert message in p.stdout + p.stderr, p.stdout + p.stderr
+
+
+def anchor(heading):
+    """GitHub's anchor of a heading: lower case, punctuation but - and _
+    dropped, spaces as hyphens."""
+    text = re.sub(r"`([^`]*)`", r"\1", heading.strip().lower())
+    return re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
+
+
+def headings(path):
+    """The anchors of a Markdown file's headings (outside code), a repeated
+    heading numbered as GitHub numbers it."""
+    out, seen, fenced = set(), {}, False
+    for line in path.read_text().splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        m = re.match(r"(#{1,6}) +(.*?) *#* *$", line)
+        if m and not fenced:
+            a = anchor(m.group(2))
+            n = seen.get(a, 0)
+            seen[a] = n + 1
+            out.add(a if n == 0 else f"{a}-{n}")
+    return out
+
+
+def links(path):
+    """(line number, target) of every Markdown link and image of a page,
+    code (indented blocks, fences and spans) left out."""
+    fenced = False
+    for k, line in enumerate(path.read_text().splitlines(), 1):
+        if line.startswith("```"):
+            fenced = not fenced
+        if fenced or line.startswith("    "):
+            continue
+        for m in re.finditer(r"\]\(([^)\s]+)\)", re.sub(r"`[^`]*`", "", line)):
+            yield k, m.group(1)
+
+
+def broken_links():
+    bad = []
+    for page in PAGES:
+        for k, target in links(page):
+            if re.match(r"[a-z]+:", target):
+                continue
+            path, _, frag = target.partition("#")
+            dest = (page.parent / path).resolve() if path else page
+            where = f"{page.relative_to(ROOT)}:{k}: {target}"
+            if not dest.exists():
+                bad.append(where + " (no such file)")
+            elif frag and (dest.suffix != ".md" or frag not in headings(dest)):
+                bad.append(where + " (no such heading)")
+    return bad
+
+
+def test_links_resolve():
+    assert broken_links() == []
+
+
+def test_link_check_finds_a_broken_anchor(tmp_path, monkeypatch):
+    page = tmp_path / "page.md"
+    page.write_text("# A page\n\n## Its `-accuracy` part\n\n[ok](#its--accuracy-part) [bad](#nowhere)\n"
+                    "[file](other.md) [code](`no`)\n\n    [indented](#code)\n")
+    monkeypatch.setattr(sys.modules[__name__], "PAGES", [page])
+    monkeypatch.setattr(sys.modules[__name__], "ROOT", tmp_path)
+    assert broken_links() == ["page.md:5: #nowhere (no such heading)", "page.md:6: other.md (no such file)"]
+
+
+def test_readme_is_a_guide():
+    """The README stays a guide (the reference is in docs/ and bench/): at
+    most 400 lines, opening with the two commands, showing the picture."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import readme_figures
+    text = (ROOT / "README.md").read_text()
+    assert len(text.splitlines()) <= 400
+    commands = [l.split()[:2] for l in text.splitlines()[:6] if l.startswith("    make ")]
+    assert commands == [["make", "run"], ["make", "test"]]
+    assert f"]({readme_figures.PICTURE})" in text

@@ -582,7 +582,7 @@ static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
     PetscBool gpts;
     PetscCall(PetscStrcmp(p->terms[t]->type, "gpts", &gpts));
     /* gpts' pressure does not converge under refinement (it oscillates at
-       every h: docs/formulations.md), so the distance between two steps'
+       every h: docs/formulations.md, gpts), so the distance between two steps'
        profiles says nothing of the error */
     PetscCheck(!gpts, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: pair %s uses the gpts formulation, whose pressure does not converge under refinement, so no error estimate of it can be honest; use -contact_formulation mortar (the default)", p->terms[t]->name);
   }

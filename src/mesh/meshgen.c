@@ -327,7 +327,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       err = 1;
       PetscCall(GeoCheckParse(argv, argc, geo, msh, errmsg, sizeof(errmsg)));
       if (!errmsg[0]) PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "geometry parameter '%s' is never used by %s (misspelled?)", unused, geo));
-    } else if (estimateOnly && !GeoUsesName(geo, "h")) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see README, Geometry files)\n", geo));
+    } else if (estimateOnly && !GeoUsesName(geo, "h")) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "contact: warning: %s never uses the mesh size h, so -mesh_size and -<body>_mesh_size do not change its mesh (see docs/scenes.md, Geometry files)\n", geo));
     if (!err && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
       PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp%d.msh", msh, (int)getpid()));
       PetscCall(PetscStrlcat(cmd, " '", sizeof(cmd)));

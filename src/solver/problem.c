@@ -666,7 +666,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
   PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_type", type, sizeof(type), NULL));
   newton = (PetscBool)(!strcmp(type, TAONLS) || !strcmp(type, TAONTR));
   /* Newton with the Cholesky-factored Gauss-Newton Hessian: the fastest type
-     that converges on every scene and extreme of the tests (README, "Solvers") */
+     that converges on every scene and extreme of the tests (docs/solver.md, "The solver") */
   PetscCall(TaoSetType(p->tao, newton ? type : TAONLS));
   /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
