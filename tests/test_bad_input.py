@@ -192,9 +192,19 @@ CASES = {
     "gatol_negative": (["-tao_gatol", "-1"], "option -tao_gatol: must be a finite number >= 0, got -1"),
     "grtol_negative": (["-tao_grtol", "-1e-3"], "option -tao_grtol: must be a finite number >= 0, got -0.001"),
     "gttol_negative": (["-tao_gttol", "-1e-8"], "option -tao_gttol: must be a finite number >= 0, got -1e-08"),
+    "ls_max_funcs_negative": (["-tao_ls_max_funcs", "-3"], "option -tao_ls_max_funcs: must be an integer >= 1, got -3"),
+    "ls_stepmax_zero": (["-tao_ls_stepmax", "0"], "option -tao_ls_stepmax: must be a finite number > 0, got 0"),
+    "ksp_rtol_negative": (["-newton_iterative", "-tao_nls_ksp_rtol", "-1"], "option -tao_nls_ksp_rtol: must be a finite number >= 0, got -1"),
+    "ksp_max_it_zero": (["-tao_nls_ksp_max_it", "0"], "option -tao_nls_ksp_max_it: must be an integer >= 1, got 0"),
+    # a PETSc type that does not exist: PETSc's own message named neither the option nor the known types
+    "unknown_ksp": (["-tao_nls_ksp_type", "foo"], "option -tao_nls_ksp_type: 'foo' is not a known KSP type (cg, "),
+    "unknown_pc": (["-tao_nls_pc_type", "foo"], "option -tao_nls_pc_type: 'foo' is not a known PC type (none, "),
+    "unknown_linesearch": (["-tao_ls_type", "foo"], "option -tao_ls_type: 'foo' is not a known TaoLineSearch type (unit, more-thuente"),
+    # a KSP tolerance the direct Newton step never reads: said so, not "unknown"
+    "ksp_rtol_unused": (["-tao_nls_ksp_rtol", "1e-3"], "option -tao_nls_ksp_rtol 1e-3: unused: the Newton step is a direct solve"),
     "misspelled_option": (["-tao_monitr"], "-tao_monitr"),
     "misspelled_body_option": (["-block_nuu", "0.3"], "-block_nuu"),
-    "unknown_solver": (["-tao_type", "newton"], "newton"),
+    "unknown_solver": (["-tao_type", "newton"], "option -tao_type: 'newton' is not a known Tao type (lmvm, nls,"),
     "unknown_hessian": (["-contact_hessian", "newton"], "newton"),
     "unknown_partitioner": (["-partitioner", "foo"], "foo"),
     "hessian_switch_nan": (["-contact_hessian_switch", "nan"], "-contact_hessian_switch"),
@@ -207,7 +217,8 @@ CASES = {
 
 # refused before anything is meshed: no mesh directory is created
 BEFORE_MESHING = {"max_it_negative", "max_it_zero", "max_funcs_negative", "gatol_negative", "grtol_negative",
-                  "gttol_negative", "tolerance_nan"}
+                  "gttol_negative", "tolerance_nan", "ls_max_funcs_negative", "ls_stepmax_zero", "ksp_rtol_negative",
+                  "ksp_max_it_zero"}
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

@@ -57,7 +57,7 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
   if (IsInputError(n)) {
     if (p == PETSC_ERROR_INITIAL) {
       PetscMPIInt rank = 0;
-      char        option[1024];
+      char        option[2048];
 
       /* a bad option value: the same on every rank, so reported once */
       if (ContactOptionsDescribeValueError(fun, mess, option, sizeof(option))) {

@@ -29,6 +29,8 @@
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <petscksp.h>
+#include <petsctao.h>
 #include "options.h"
 
 #define MAX_DEPTH 16
@@ -437,23 +439,60 @@ PetscErrorCode ContactOptionsGetInputFile(MPI_Comm comm, const char pre[], const
 }
 
 /* The value quoted by PETSc's message, and what it should have been. */
-static PetscBool ParseValueError(const char fun[], const char mess[], char value[], size_t len, const char **expected)
+/* The known names of a PETSc type family, as "a, b, c" (the types PETSc
+   registers once a solver of that family exists). */
+static void KnownTypes(const char kind[], char buf[], size_t len)
 {
-  const char *v = NULL, *end = NULL;
+  PetscFunctionList list = NULL;
+  const char      **names;
+  int               n = 0;
+
+  buf[0] = 0;
+  if (!strcmp(kind, "KSP")) list = KSPList;
+  else if (!strcmp(kind, "PC")) list = PCList;
+  else if (!strcmp(kind, "Tao")) list = TaoList;
+  else if (!strcmp(kind, "TaoLineSearch")) list = TaoLineSearchList;
+  if (!list || PetscFunctionListGet(list, &names, &n)) return;
+  for (int i = 0; i < n && names[i]; ++i) /* PETSc 3.18 counts the NULL that ends the array */
+    if (strlen(buf) + strlen(names[i]) + 3 < len) {
+      if (i) strcat(buf, ", ");
+      strcat(buf, names[i]);
+    }
+  (void)PetscFree(names);
+}
+
+/* PETSc's message of a value its options code cannot take: the value, and
+   what was expected (a number, an integer, a boolean, or a known type of a
+   family, with the known ones). */
+static PetscBool ParseValueError(const char fun[], const char mess[], char value[], size_t len, char expected[], size_t elen)
+{
+  const char *v = NULL, *end = NULL, *const unknown = "Unable to find requested ";
 
   if (!fun || !mess) return PETSC_FALSE;
-  if (!strcmp(fun, "PetscOptionsStringToReal") || !strcmp(fun, "PetscOptionsStringToScalar")) *expected = "a number";
-  else if (!strcmp(fun, "PetscOptionsStringToInt")) *expected = "an integer";
-  else if (!strcmp(fun, "PetscOptionsStringToBool")) *expected = "true or false";
-  else return PETSC_FALSE;
-  if (!strncmp(mess, "Input string ", 13)) {
-    v   = mess + 13;
-    end = strstr(v, " has no ");
-  } else if (!strncmp(mess, "Unknown logical value: ", 23)) {
-    v   = mess + 23;
+  if (!strncmp(mess, unknown, strlen(unknown)) && strstr(mess, " type ")) { /* XSetType() with an unknown name */
+    const char *kind = mess + strlen(unknown), *t = strstr(kind, " type ");
+    char        k[64], known[1024];
+    if ((size_t)(t - kind) >= sizeof(k)) return PETSC_FALSE;
+    memcpy(k, kind, (size_t)(t - kind));
+    k[t - kind] = 0;
+    KnownTypes(k, known, sizeof(known));
+    snprintf(expected, elen, "a known %s type%s%s%s", k, known[0] ? " (" : "", known, known[0] ? ")" : "");
+    v   = t + 6;
     end = v + strlen(v);
-  } else if (strstr(mess, "length zero")) {
-    v = end = mess; /* the empty string */
+  } else {
+    if (!strcmp(fun, "PetscOptionsStringToReal") || !strcmp(fun, "PetscOptionsStringToScalar")) snprintf(expected, elen, "a number");
+    else if (!strcmp(fun, "PetscOptionsStringToInt")) snprintf(expected, elen, "an integer");
+    else if (!strcmp(fun, "PetscOptionsStringToBool")) snprintf(expected, elen, "true or false");
+    else return PETSC_FALSE;
+    if (!strncmp(mess, "Input string ", 13)) {
+      v   = mess + 13;
+      end = strstr(v, " has no ");
+    } else if (!strncmp(mess, "Unknown logical value: ", 23)) {
+      v   = mess + 23;
+      end = v + strlen(v);
+    } else if (strstr(mess, "length zero")) {
+      v = end = mess; /* the empty string */
+    }
   }
   if (!v || !end || (size_t)(end - v) >= len) return PETSC_FALSE;
   memcpy(value, v, (size_t)(end - v));
@@ -478,11 +517,11 @@ static int HasEntry(const char *v, const char *value)
 
 PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], char buf[], size_t len)
 {
-  char        value[256], names[512] = "", *all = NULL, *tok, *save = NULL;
-  const char *expected, *name = NULL, *val = NULL;
+  char        value[256], names[512] = "", *all = NULL, *tok, *save = NULL, expected[1200];
+  const char *name = NULL, *val = NULL;
   int         found = 0;
 
-  if (!ParseValueError(fun, mess, value, sizeof(value), &expected)) return PETSC_FALSE;
+  if (!ParseValueError(fun, mess, value, sizeof(value), expected, sizeof(expected))) return PETSC_FALSE;
   /* the database as "-name value -name value ..."; the option being converted
      has just been looked up, so it is marked used */
   if (PetscOptionsGetAll(NULL, &all) || !all) return PETSC_FALSE;

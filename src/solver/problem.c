@@ -76,23 +76,53 @@ static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
    stops the run before anything is meshed or any output is locked.
    -tao_max_funcs -1 is TAO's default, no limit. An integer is quoted as
    given: PETSc reads "default" or "decide" as a negative number. */
+/* Reads an option as the check below does without marking it used, so that
+   one the solver then never reads is still reported (ProblemCheckUnusedOptions):
+   PetscOptionsGet*() marks it, and re-setting the value clears the mark. */
+static PetscErrorCode ProblemRestoreUnused(const char name[], PetscBool wasUsed)
+{
+  char value[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  if (wasUsed) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsGetString(NULL, NULL, name, value, sizeof(value), NULL));
+  PetscCall(PetscOptionsClearValue(NULL, name));
+  PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode ProblemCheckSolverOptions(Problem p)
 {
-  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"}, *const limits[] = {"-tao_max_it", "-tao_max_funcs"};
+  /* tolerances: finite and >= 0 (> 0 where zero means nothing) */
+  const struct {
+    const char *name;
+    PetscBool   positive;
+  } tols[] = {
+    {"-tao_gatol", PETSC_FALSE},        {"-tao_grtol", PETSC_FALSE},      {"-tao_gttol", PETSC_FALSE},
+    {"-tao_ls_ftol", PETSC_FALSE},      {"-tao_ls_gtol", PETSC_FALSE},    {"-tao_ls_rtol", PETSC_FALSE},
+    {"-tao_ls_stepmin", PETSC_FALSE},   {"-tao_ls_stepmax", PETSC_TRUE},  {"-tao_nls_ksp_rtol", PETSC_FALSE},
+    {"-tao_nls_ksp_atol", PETSC_FALSE}, {"-tao_nls_ksp_divtol", PETSC_TRUE},
+  };
+  /* limits: integers >= 1; -tao_max_funcs also takes -1, no limit */
+  const char *const limits[] = {"-tao_max_it", "-tao_max_funcs", "-tao_ls_max_funcs", "-tao_nls_ksp_max_it"};
   PetscReal         tol;
   PetscInt          n;
-  PetscBool         set;
+  PetscBool         set, used;
   char              given[64];
 
   PetscFunctionBeginUser;
   for (size_t k = 0; k < sizeof(tols) / sizeof(tols[0]); ++k) {
-    PetscCall(PetscOptionsGetReal(NULL, NULL, tols[k], &tol, &set));
-    PetscCheck(!set || (tol >= 0 && !PetscIsInfOrNanReal(tol)), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be a finite number >= 0, got %g", tols[k], (double)tol);
+    PetscCall(PetscOptionsUsed(NULL, tols[k].name, &used));
+    PetscCall(PetscOptionsGetReal(NULL, NULL, tols[k].name, &tol, &set));
+    if (set) PetscCall(ProblemRestoreUnused(tols[k].name, used));
+    PetscCheck(!set || (tol >= 0 && !(tols[k].positive && tol == 0) && !PetscIsInfOrNanReal(tol)), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be a finite number %s 0, got %g", tols[k].name, tols[k].positive ? ">" : ">=", (double)tol);
   }
-  for (size_t k = 0; k < sizeof(limits) / sizeof(limits[0]); ++k) { /* -tao_max_funcs also takes -1, no limit */
+  for (size_t k = 0; k < sizeof(limits) / sizeof(limits[0]); ++k) {
     const PetscBool noLimit = (PetscBool)(k == 1);
+    PetscCall(PetscOptionsUsed(NULL, limits[k], &used));
     PetscCall(PetscOptionsGetInt(NULL, NULL, limits[k], &n, &set));
     if (!set) continue;
+    PetscCall(ProblemRestoreUnused(limits[k], used));
     PetscCall(PetscOptionsGetString(NULL, NULL, limits[k], given, sizeof(given), NULL));
     PetscCheck(n >= 1 || (noLimit && n == -1), p->comm, PETSC_ERR_USER_INPUT, "option %s: must be an integer >= 1%s, got %s", limits[k], noLimit ? ", or -1 for no limit" : "", given);
   }
@@ -710,6 +740,8 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
     if (final || !OptionReadLazily(names[i])) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  /* KSPSetFromOptions() reads no tolerance of a preonly KSP, the direct Newton step */
+  PetscCheck(!bad[0] || !strstr(bad, "-tao_nls_ksp_") || strstr(bad, "ksp_type"), p->comm, PETSC_ERR_ARG_WRONG, "option %s: unused: the Newton step is a direct solve (-tao_nls_ksp_type preonly), which has no iterations or tolerances; -newton_iterative or -tao_nls_ksp_type cg make it iterative", bad);
   PetscCheck(!bad[0], p->comm, PETSC_ERR_ARG_WRONG, "unknown or unused option %s (misspelled? see -help)", bad);
   PetscFunctionReturn(0);
 }
