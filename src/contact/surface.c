@@ -23,228 +23,289 @@ static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
   return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* Builds the whole surface on every rank: the owned edges of the physical
-   group with their nodes' global numbers, reference coordinates and outward
-   normal sign, gathered from all ranks. */
-PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[], PetscReal blend)
+/* Whether the edge e's outward normal is +n or -n, n = (t_y, -t_x) for the
+   chord t from its first to its second node: away from the centroid of the
+   cell on the edge. x: the edge's nodes' coordinates (corner, corner, mid). */
+static PetscErrorCode EdgeOutwardSign(Body b, PetscSection s, PetscInt e, const char pair[], const char group[], const PetscReal x[6], PetscReal *sign)
+{
+  const PetscInt *supp;
+  PetscInt        nsupp, *cl = NULL, ncl;
+  PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
+  PetscCall(DMPlexGetSupport(b->dm, e, &supp));
+  PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: an edge of group '%s' of body %s is not on the boundary", pair, group, b->name);
+  PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+  for (PetscInt j = 0; j < ncl; ++j) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
+    if (!dof) continue;
+    xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
+    xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
+    cnt += 1;
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+  t[0]   = x[2] - x[0];
+  t[1]   = x[3] - x[1];
+  nrm[0] = t[1];
+  nrm[1] = -t[0];
+  *sign  = (nrm[0] * (x[4] - xc[0] / cnt) + nrm[1] * (x[5] - xc[1] / cnt)) > 0 ? 1.0 : -1.0;
+  PetscFunctionReturn(0);
+}
+
+/* This rank's owned edges of the surface's physical group: *n of them, each
+   with its nodes' global numbers (eid, 3 per edge) and, in erl (7 per edge),
+   their reference coordinates and the outward normal's sign. */
+static PetscErrorCode ContactSurfaceOwnedEdges(ContactSurface *S, Body b, const char pair[], PetscInt *n, PetscInt **eid, PetscReal **erl)
 {
   DMLabel         faces;
   IS              is = NULL;
   PetscSection    s;
-  PetscInt        n = 0, *eid, nall, *ids;
-  PetscReal      *erl;
-  PetscMPIInt     size, *cnt, *disp, cntl;
+  PetscInt        np = 0, k = 0;
   const PetscInt *pts = NULL;
 
   PetscFunctionBeginUser;
-  S->blend = blend;
-  PetscCallMPI(MPI_Comm_size(b->comm, &size));
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
   PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
   if (faces) PetscCall(DMLabelGetStratumIS(faces, S->tag, &is));
   if (is) {
-    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetLocalSize(is, &np));
     PetscCall(ISGetIndices(is, &pts));
   }
-  PetscCall(PetscMalloc2(3 * n + 1, &eid, 7 * n + 1, &erl));
-  {
-    PetscInt k = 0;
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscInt  e = pts[i];
-      const PetscInt *cone, *supp;
-      PetscInt        nsupp, *cl = NULL, ncl, nodes[3];
-      PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt2 = 0;
+  PetscCall(PetscMalloc2(3 * np + 1, eid, 7 * np + 1, erl));
+  for (PetscInt i = 0; i < np; ++i) {
+    const PetscInt  e = pts[i];
+    const PetscInt *cone;
+    PetscInt        nodes[3];
+    PetscReal      *x = &(*erl)[7 * k];
 
-      if (!b->owned[e - b->pStart]) continue;
-      PetscCall(DMPlexGetCone(b->dm, e, &cone));
-      nodes[0] = cone[0];
-      nodes[1] = cone[1];
-      nodes[2] = e;
-      for (PetscInt j = 0; j < 3; ++j) {
-        PetscCall(BodyGetNodeNumber(b, nodes[j], &eid[3 * k + j]));
-        erl[7 * k + 2 * j]     = b->xpoint[2 * (nodes[j] - b->pStart)];
-        erl[7 * k + 2 * j + 1] = b->xpoint[2 * (nodes[j] - b->pStart) + 1];
-      }
-      /* outward: away from the centroid of the cell on the edge */
-      PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
-      PetscCall(DMPlexGetSupport(b->dm, e, &supp));
-      PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: an edge of group '%s' of body %s is not on the boundary", pair, S->group, b->name);
-      PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-      for (PetscInt j = 0; j < ncl; ++j) {
-        PetscInt dof;
-        PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
-        if (!dof) continue;
-        xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
-        xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
-        cnt2 += 1;
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-      t[0]   = erl[7 * k + 2] - erl[7 * k];
-      t[1]   = erl[7 * k + 3] - erl[7 * k + 1];
-      nrm[0] = t[1];
-      nrm[1] = -t[0];
-      erl[7 * k + 6] = (nrm[0] * (erl[7 * k + 4] - xc[0] / cnt2) + nrm[1] * (erl[7 * k + 5] - xc[1] / cnt2)) > 0 ? 1.0 : -1.0;
-      k++;
+    if (!b->owned[e - b->pStart]) continue;
+    PetscCall(DMPlexGetCone(b->dm, e, &cone));
+    nodes[0] = cone[0];
+    nodes[1] = cone[1];
+    nodes[2] = e;
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscCall(BodyGetNodeNumber(b, nodes[j], &(*eid)[3 * k + j]));
+      x[2 * j]     = b->xpoint[2 * (nodes[j] - b->pStart)];
+      x[2 * j + 1] = b->xpoint[2 * (nodes[j] - b->pStart) + 1];
     }
-    n = k;
+    PetscCall(EdgeOutwardSign(b, s, e, pair, S->group, x, &x[6]));
+    k++;
   }
+  *n = k;
   if (is) {
     PetscCall(ISRestoreIndices(is, &pts));
     PetscCall(ISDestroy(&is));
   }
+  PetscFunctionReturn(0);
+}
+
+/* Every rank's owned edges gathered on every rank (in rank order): the
+   surface's nodes (sorted unique global numbers), their reference
+   coordinates, each edge's nodes and sign, and which edges are this rank's. */
+static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const char pair[], PetscInt n, const PetscInt eid[], const PetscReal erl[])
+{
+  PetscMPIInt  size, rank, *cnt, *disp, cntl = (PetscMPIInt)n, *c3, *d3, *c7, *d7;
+  PetscInt    *alle, nall, *ids;
+  PetscReal   *allr;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
   PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  cntl = (PetscMPIInt)n;
   PetscCallMPI(MPI_Allgather(&cntl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
   disp[0] = 0;
   for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
   S->ne = disp[size];
   PetscCheck(S->ne > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: surface '%s' of body %s has no edges", pair, S->group, b->name);
-  {
-    PetscMPIInt rank;
-    PetscInt   *alle;
-    PetscReal  *allr;
-    PetscMPIInt *c3, *d3, *c7, *d7;
-    PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-    PetscCall(PetscMalloc4(size, &c3, size, &d3, size, &c7, size, &d7));
-    for (PetscMPIInt r = 0; r < size; ++r) {
-      c3[r] = 3 * cnt[r];
-      d3[r] = 3 * disp[r];
-      c7[r] = 7 * cnt[r];
-      d7[r] = 7 * disp[r];
-    }
-    PetscCall(PetscMalloc2(3 * S->ne, &alle, 7 * S->ne, &allr));
-    PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, b->comm));
-    PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, b->comm));
-    PetscCall(PetscFree4(c3, d3, c7, d7));
-    /* surface nodes: sorted unique global numbers */
-    nall = 3 * S->ne;
-    PetscCall(PetscMalloc1(nall, &ids));
-    PetscCall(PetscArraycpy(ids, alle, nall));
-    PetscCall(PetscSortRemoveDupsInt(&nall, ids));
-    S->nn = nall;
-    S->nodeId = ids;
-    PetscCall(PetscMalloc3(3 * S->ne, &S->enodes, S->ne, &S->esign, S->ne, &S->s0));
-    PetscCall(PetscMalloc2(S->ne, &S->edir, S->ne, &S->elen));
-    PetscCall(PetscMalloc4(2 * S->nn, &S->X, 2 * S->nn, &S->x, 2 * S->nn, &S->g, 2 * S->nn, &S->big));
-    PetscCall(PetscCalloc1(S->nn, &S->endNode));
-    for (PetscInt e = 0; e < S->ne; ++e) {
-      for (PetscInt j = 0; j < 3; ++j) {
-        PetscInt loc;
-        PetscCall(PetscFindInt(alle[3 * e + j], S->nn, S->nodeId, &loc));
-        S->enodes[3 * e + j]  = loc;
-        S->X[2 * loc]         = allr[7 * e + 2 * j];
-        S->X[2 * loc + 1]     = allr[7 * e + 2 * j + 1];
-      }
-      S->esign[e] = allr[7 * e + 6];
-    }
-    PetscCall(PetscMalloc1(n + 1, &S->ownEdges));
-    S->nown = n;
-    for (PetscInt k = 0; k < n; ++k) S->ownEdges[k] = disp[rank] + k;
-    PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: %" PetscInt_FMT " edges, %" PetscInt_FMT " in this rank's cells\n", pair, S->group, b->name, S->ne, n));
-    PetscCall(PetscFree2(alle, allr));
+  PetscCall(PetscMalloc4(size, &c3, size, &d3, size, &c7, size, &d7));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    c3[r] = 3 * cnt[r];
+    d3[r] = 3 * disp[r];
+    c7[r] = 7 * cnt[r];
+    d7[r] = 7 * disp[r];
   }
+  PetscCall(PetscMalloc2(3 * S->ne, &alle, 7 * S->ne, &allr));
+  PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, b->comm));
+  PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, b->comm));
+  PetscCall(PetscFree4(c3, d3, c7, d7));
+  /* surface nodes: sorted unique global numbers */
+  nall = 3 * S->ne;
+  PetscCall(PetscMalloc1(nall, &ids));
+  PetscCall(PetscArraycpy(ids, alle, nall));
+  PetscCall(PetscSortRemoveDupsInt(&nall, ids));
+  S->nn     = nall;
+  S->nodeId = ids;
+  PetscCall(PetscMalloc3(3 * S->ne, &S->enodes, S->ne, &S->esign, S->ne, &S->s0));
+  PetscCall(PetscMalloc2(S->ne, &S->edir, S->ne, &S->elen));
+  PetscCall(PetscMalloc4(2 * S->nn, &S->X, 2 * S->nn, &S->x, 2 * S->nn, &S->g, 2 * S->nn, &S->big));
+  PetscCall(PetscCalloc1(S->nn, &S->endNode));
+  for (PetscInt e = 0; e < S->ne; ++e) {
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscInt loc;
+      PetscCall(PetscFindInt(alle[3 * e + j], S->nn, S->nodeId, &loc));
+      S->enodes[3 * e + j] = loc;
+      S->X[2 * loc]        = allr[7 * e + 2 * j];
+      S->X[2 * loc + 1]    = allr[7 * e + 2 * j + 1];
+    }
+    S->esign[e] = allr[7 * e + 6];
+  }
+  PetscCall(PetscMalloc1(n + 1, &S->ownEdges));
+  S->nown = n;
+  for (PetscInt k = 0; k < n; ++k) S->ownEdges[k] = disp[rank] + k;
+  PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: %" PetscInt_FMT " edges, %" PetscInt_FMT " in this rank's cells\n", pair, S->group, b->name, S->ne, n));
+  PetscCall(PetscFree2(alle, allr));
   PetscCall(PetscFree2(cnt, disp));
-  PetscCall(PetscFree2(eid, erl));
   PetscCall(PetscArraycpy(S->x, S->X, 2 * S->nn));
-  /* owned local node points on the surface; their indices in the joined vector */
-  {
-    PetscInt *bigl, k = 0;
-    PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
-    PetscCall(PetscMalloc1(2 * S->nn, &bigl));
-    for (PetscInt i = 0; i < 2 * S->nn; ++i) bigl[i] = -2;
-    for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
-      PetscInt dof, id, loc, off;
-      if (!b->owned[pt - b->pStart]) continue;
-      PetscCall(PetscSectionGetDof(s, pt, &dof));
-      if (!dof) continue;
-      PetscCall(BodyGetNodeNumber(b, pt, &id));
-      PetscCall(PetscFindInt(id, S->nn, S->nodeId, &loc));
-      if (loc < 0) continue;
-      PetscCall(PetscSectionGetOffset(s, pt, &off));
-      S->locNode[k] = loc;
-      S->locOff[k]  = off;
-      bigl[2 * loc]     = b->l2b[off];
-      bigl[2 * loc + 1] = b->l2b[off + 1];
-      k++;
-    }
-    S->nloc = k;
-    PetscCall(MPIU_Allreduce(bigl, S->big, 2 * S->nn, MPIU_INT, MPI_MAX, b->comm));
-    PetscCall(PetscFree(bigl));
+  PetscFunctionReturn(0);
+}
+
+/* The surface nodes among this rank's owned points (locNode, with their
+   offsets in the body's local vector, locOff), and every node's indices in
+   the joined vector (big, on every rank). */
+static PetscErrorCode ContactSurfaceMapNodes(ContactSurface *S, Body b)
+{
+  PetscSection s;
+  PetscInt    *bigl, k = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
+  PetscCall(PetscMalloc1(2 * S->nn, &bigl));
+  for (PetscInt i = 0; i < 2 * S->nn; ++i) bigl[i] = -2;
+  for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
+    PetscInt dof, id, loc, off;
+    if (!b->owned[pt - b->pStart]) continue;
+    PetscCall(PetscSectionGetDof(s, pt, &dof));
+    if (!dof) continue;
+    PetscCall(BodyGetNodeNumber(b, pt, &id));
+    PetscCall(PetscFindInt(id, S->nn, S->nodeId, &loc));
+    if (loc < 0) continue;
+    PetscCall(PetscSectionGetOffset(s, pt, &off));
+    S->locNode[k]     = loc;
+    S->locOff[k]      = off;
+    bigl[2 * loc]     = b->l2b[off];
+    bigl[2 * loc + 1] = b->l2b[off + 1];
+    k++;
   }
-  /* ends of the surface, and the arc position along a walk over its chains */
-  {
-    PetscInt *deg, *adj, *adjStart;
-    PetscBool *done;
-    PetscReal gx[8], gw[8], s0 = 0.0;
-    PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
-    PetscInt  nwalk = 0;
-    PetscCall(PetscCalloc3(S->nn, &deg, S->nn + 1, &adjStart, S->ne, &done));
-    PetscCall(PetscMalloc1(S->ne, &S->walk));
-    for (PetscInt e = 0; e < S->ne; ++e) {
-      deg[S->enodes[3 * e]]++;
-      deg[S->enodes[3 * e + 1]]++;
-      S->elen[e] = 0.0;
-      for (PetscInt q = 0; q < 8; ++q) {
-        PetscReal pq[2], t[2];
-        EdgeEval(S->X, &S->enodes[3 * e], gx[q], pq, t);
-        S->elen[e] += gw[q] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
-      }
+  S->nloc = k;
+  PetscCall(MPIU_Allreduce(bigl, S->big, 2 * S->nn, MPIU_INT, MPI_MAX, b->comm));
+  PetscCall(PetscFree(bigl));
+  PetscFunctionReturn(0);
+}
+
+/* Each edge's reference length (8-point Gauss), each node's degree (an end
+   node has one edge) and the edges at each node (adj[adjStart[v] ..
+   adjStart[v + 1]]; PetscFree the three). */
+static PetscErrorCode ContactSurfaceAdjacency(ContactSurface *S, PetscInt **degree, PetscInt **adjacent, PetscInt **adjacentStart)
+{
+  PetscInt *deg, *adj, *adjStart;
+  PetscReal gx[8], gw[8];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(8, -1.0, 1.0, gx, gw));
+  PetscCall(PetscCalloc2(S->nn, &deg, S->nn + 1, &adjStart));
+  for (PetscInt e = 0; e < S->ne; ++e) {
+    deg[S->enodes[3 * e]]++;
+    deg[S->enodes[3 * e + 1]]++;
+    S->elen[e] = 0.0;
+    for (PetscInt q = 0; q < 8; ++q) {
+      PetscReal pq[2], t[2];
+      EdgeEval(S->X, &S->enodes[3 * e], gx[q], pq, t);
+      S->elen[e] += gw[q] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
     }
-    for (PetscInt v = 0; v < S->nn; ++v) {
-      adjStart[v + 1] = adjStart[v] + deg[v];
-      S->endNode[v]   = deg[v] == 1 ? PETSC_TRUE : PETSC_FALSE;
-      deg[v]          = 0;
+  }
+  for (PetscInt v = 0; v < S->nn; ++v) {
+    adjStart[v + 1] = adjStart[v] + deg[v];
+    S->endNode[v]   = deg[v] == 1 ? PETSC_TRUE : PETSC_FALSE;
+    deg[v]          = 0;
+  }
+  PetscCall(PetscMalloc1(adjStart[S->nn] + 1, &adj));
+  for (PetscInt e = 0; e < S->ne; ++e)
+    for (PetscInt j = 0; j < 2; ++j) {
+      const PetscInt v = S->enodes[3 * e + j];
+      adj[adjStart[v] + deg[v]++] = e;
     }
-    PetscCall(PetscMalloc1(adjStart[S->nn] + 1, &adj));
-    for (PetscInt e = 0; e < S->ne; ++e)
+  *degree        = deg;
+  *adjacent      = adj;
+  *adjacentStart = adjStart;
+  PetscFunctionReturn(0);
+}
+
+/* The walk over the surface's chains that gives each edge its direction
+   (edir) and the arc position where the walk enters it (s0). */
+static PetscErrorCode ContactSurfaceWalk(ContactSurface *S, const PetscInt adj[], const PetscInt adjStart[])
+{
+  PetscBool *done;
+  PetscReal  s0    = 0.0;
+  PetscInt   nwalk = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(S->ne, &done));
+  PetscCall(PetscMalloc1(S->ne, &S->walk));
+  for (;;) {
+    PetscInt start = -1, v, e = -1;
+    /* start a chain at the unwalked end node of smallest (x, then y)
+       reference coordinate, so that the walk does not depend on the
+       partition; else at any unwalked edge */
+    for (PetscInt k = 0; k < S->ne; ++k) {
+      if (done[k]) continue;
       for (PetscInt j = 0; j < 2; ++j) {
-        const PetscInt v = S->enodes[3 * e + j];
-        adj[adjStart[v] + deg[v]++] = e;
-      }
-    PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
-    for (;;) {
-      PetscInt start = -1, v, e = -1;
-      /* start a chain at the unwalked end node of smallest (x, then y)
-         reference coordinate, so that the walk does not depend on the
-         partition; else at any unwalked edge */
-      for (PetscInt k = 0; k < S->ne; ++k) {
-        if (done[k]) continue;
-        for (PetscInt j = 0; j < 2; ++j) {
-          const PetscInt w = S->enodes[3 * k + j];
-          if (S->endNode[w] && (start < 0 || NodeBefore(S, w, start))) {
-            start = w;
-            e     = k;
-          }
-        }
-      }
-      for (PetscInt k = 0; k < S->ne && start < 0; ++k)
-        if (!done[k]) {
-          start = S->enodes[3 * k] < S->enodes[3 * k + 1] ? S->enodes[3 * k] : S->enodes[3 * k + 1];
+        const PetscInt w = S->enodes[3 * k + j];
+        if (S->endNode[w] && (start < 0 || NodeBefore(S, w, start))) {
+          start = w;
           e     = k;
         }
-      if (start < 0) break;
-      v = start;
-      while (e >= 0) {
-        done[e]    = PETSC_TRUE;
-        S->walk[nwalk++] = e;
-        S->edir[e] = S->enodes[3 * e] == v ? 1.0 : -1.0;
-        /* the arc position where the walk enters the edge: at eta = -1 if
-           dir > 0, at eta = +1 if dir < 0 (see ContactSurfaceArc) */
-        S->s0[e]   = s0;
-        s0 += S->elen[e];
-        v = S->edir[e] > 0 ? S->enodes[3 * e + 1] : S->enodes[3 * e];
-        {
-          PetscInt next = -1;
-          for (PetscInt j = adjStart[v]; j < adjStart[v + 1]; ++j)
-            if (!done[adj[j]]) next = adj[j];
-          e = next;
-        }
       }
     }
-    PetscCall(PetscFree3(deg, adjStart, done));
-    PetscCall(PetscFree(adj));
+    for (PetscInt k = 0; k < S->ne && start < 0; ++k)
+      if (!done[k]) {
+        start = S->enodes[3 * k] < S->enodes[3 * k + 1] ? S->enodes[3 * k] : S->enodes[3 * k + 1];
+        e     = k;
+      }
+    if (start < 0) break;
+    v = start;
+    while (e >= 0) {
+      PetscInt next = -1;
+      done[e]          = PETSC_TRUE;
+      S->walk[nwalk++] = e;
+      S->edir[e]       = S->enodes[3 * e] == v ? 1.0 : -1.0;
+      /* the arc position where the walk enters the edge: at eta = -1 if
+         dir > 0, at eta = +1 if dir < 0 (see ContactSurfaceArc) */
+      S->s0[e] = s0;
+      s0 += S->elen[e];
+      v = S->edir[e] > 0 ? S->enodes[3 * e + 1] : S->enodes[3 * e];
+      for (PetscInt j = adjStart[v]; j < adjStart[v + 1]; ++j)
+        if (!done[adj[j]]) next = adj[j];
+      e = next;
+    }
   }
+  PetscCall(PetscFree(done));
+  PetscFunctionReturn(0);
+}
+
+/* Builds the whole surface on every rank: the owned edges of the physical
+   group with their nodes' global numbers, reference coordinates and outward
+   normal sign, gathered from all ranks; the map to the body's and the joined
+   vectors; the blend at the nodes; the walk that gives the arc position. */
+PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[], PetscReal blend)
+{
+  PetscInt  n = 0, *eid = NULL, *deg = NULL, *adj = NULL, *adjStart = NULL;
+  PetscReal *erl = NULL;
+
+  PetscFunctionBeginUser;
+  S->blend = blend;
+  PetscCall(ContactSurfaceOwnedEdges(S, b, pair, &n, &eid, &erl));
+  PetscCall(ContactSurfaceGatherEdges(S, b, pair, n, eid, erl));
+  PetscCall(PetscFree2(eid, erl));
+  PetscCall(ContactSurfaceMapNodes(S, b));
+  PetscCall(ContactSurfaceAdjacency(S, &deg, &adj, &adjStart));
+  PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
+  PetscCall(ContactSurfaceWalk(S, adj, adjStart));
+  PetscCall(PetscFree2(deg, adjStart));
+  PetscCall(PetscFree(adj));
   PetscFunctionReturn(0);
 }
 
