@@ -146,18 +146,116 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   PetscFunctionReturn(0);
 }
 
+static void JSONReactions(FILE *fp, Problem p)
+{
+  fprintf(fp, ",\n  \"reactions\": {");
+  for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
+      fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
+      ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[0]);
+      fprintf(fp, ", ");
+      ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[1]);
+      fprintf(fp, "]");
+    }
+  fprintf(fp, "\n  }");
+}
+
+/* The first pair's figures at top level, then every pair's under "contact". */
+static PetscErrorCode JSONContact(FILE *fp, Problem p)
+{
+  PetscFunctionBeginUser;
+  if (!p->nterms) PetscFunctionReturn(0);
+  PetscCall(EnergyTermWriteJSON(p->terms[0], p->bodies, fp, PETSC_TRUE));
+  fprintf(fp, ",\n  \"contact\": {");
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    fprintf(fp, "%s\n    \"%s\": ", t ? "," : "", p->terms[t]->name);
+    PetscCall(EnergyTermWriteJSON(p->terms[t], p->bodies, fp, PETSC_FALSE));
+  }
+  fprintf(fp, "\n  }");
+  PetscFunctionReturn(0);
+}
+
+static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
+{
+  fprintf(fp, ",\n  \"bodies\": {");
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body              b = p->bodies[i];
+    const BodyErrors *e = &F[i].err;
+    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+    ContactJSONReal(fp, p->res.bodyEnergy[i]);
+    fprintf(fp, ", \"max_displacement\": ");
+    ContactJSONReal(fp, F[i].umax);
+    fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
+    ContactJSONReal(fp, b->h);
+    if (b->hasExact) { /* each error with the exact solution's norm */
+      const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
+      const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
+      fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
+      for (PetscInt k = 0; k < 6; ++k) {
+        fprintf(fp, ", \"%s\": ", keys[k]);
+        ContactJSONReal(fp, vals[k]);
+      }
+    }
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "\n  },\n");
+}
+
+static void JSONAccuracy(FILE *fp, const RunRecord *rec)
+{
+  if (!(rec->accuracyTarget > 0)) return;
+  fprintf(fp, "  \"accuracy_target\": ");
+  ContactJSONReal(fp, rec->accuracyTarget);
+  fprintf(fp, ",\n  \"error_estimate\": ");
+  ContactJSONReal(fp, rec->errorEstimate);
+  fprintf(fp, ",\n  \"adapt_steps\": [");
+  for (PetscInt k = 0; k < rec->nsteps; ++k) {
+    const AccuracyStep *a = &rec->steps[k];
+    fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs, (int)a->iterations);
+    ContactJSONReal(fp, a->tsolve);
+    fprintf(fp, ", \"error_estimate\": ");
+    ContactJSONReal(fp, a->estimate);
+    fprintf(fp, ", \"profile_estimate\": ");
+    ContactJSONReal(fp, a->profile);
+    fprintf(fp, ", \"force_estimate\": ");
+    ContactJSONReal(fp, a->force);
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "\n  ],\n");
+}
+
+static void JSONTaylor(FILE *fp, Problem p)
+{
+  const PetscReal *rows[3] = {p->res.taylorEps, p->res.taylorRemainders[0], p->res.taylorRemainders[1]};
+  const char      *keys[3] = {"eps", "gradient_remainder", "hessian_relative_remainder"};
+
+  if (!p->opt.taylor) return;
+  fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
+  ContactJSONReal(fp, p->res.taylorRates[0]);
+  fprintf(fp, ", \"hessian_order\": ");
+  ContactJSONReal(fp, p->res.taylorRates[1]);
+  for (PetscInt r = 0; r < 3; ++r) {
+    fprintf(fp, ", \"%s\": [", keys[r]);
+    for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)rows[r][k]);
+    fprintf(fp, "]");
+  }
+  fprintf(fp, "},\n");
+}
+
+/* The summary (rank 0): the solve, the reactions, the contact, the bodies,
+   -accuracy's steps, the Taylor test, the time slots. */
 static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields F[], const char path[], const char runId[])
 {
   PetscMPIInt        rank, size;
-  PetscInt           its, dofs;
+  PetscInt           dofs;
   TaoConvergedReason reason;
   TaoType            type;
   PetscReal          umax = 0, unorm2 = 0;
+  FILE              *fp;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  its = p->res.iterations; /* over all stages */
   PetscCall(TaoGetConvergedReason(p->tao, &reason));
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(VecGetSize(p->X, &dofs));
@@ -165,103 +263,33 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     umax = PetscMax(umax, F[i].umax);
     unorm2 += F[i].unorm2;
   }
-  if (rank == 0) {
-    FILE *fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
-    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, runId, (int)dofs, (int)size, type);
-    fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)its);
-    fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
-    fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
-    fprintf(fp, "  \"energy\": ");
-    ContactJSONReal(fp, p->res.energy);
-    fprintf(fp, ",\n  \"gradient_norm\": ");
-    ContactJSONReal(fp, p->res.gnorm);
-    fprintf(fp, ",\n  \"max_displacement\": ");
-    ContactJSONReal(fp, umax);
-    fprintf(fp, ",\n  \"displacement_norm\": ");
-    ContactJSONReal(fp, PetscSqrtReal(unorm2));
-    fprintf(fp, ",\n  \"reactions\": {");
-    for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
-      for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
-        fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
-        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[0]);
-        fprintf(fp, ", ");
-        ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[1]);
-        fprintf(fp, "]");
-      }
-    fprintf(fp, "\n  }");
-    if (p->nterms) { /* the first pair's figures at top level, then every pair */
-      PetscCall(EnergyTermWriteJSON(p->terms[0], p->bodies, fp, PETSC_TRUE));
-      fprintf(fp, ",\n  \"contact\": {");
-      for (PetscInt t = 0; t < p->nterms; ++t) {
-        fprintf(fp, "%s\n    \"%s\": ", t ? "," : "", p->terms[t]->name);
-        PetscCall(EnergyTermWriteJSON(p->terms[t], p->bodies, fp, PETSC_FALSE));
-      }
-      fprintf(fp, "\n  }");
-    }
-    fprintf(fp, ",\n  \"bodies\": {");
-    for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body            b   = p->bodies[i];
-      const BodyErrors *e = &F[i].err;
-      fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
-      ContactJSONReal(fp, p->res.bodyEnergy[i]);
-      fprintf(fp, ", \"max_displacement\": ");
-      ContactJSONReal(fp, F[i].umax);
-      fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
-      ContactJSONReal(fp, b->h);
-      if (b->hasExact) { /* each error with the exact solution's norm */
-        const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
-        const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
-        fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
-        for (PetscInt k = 0; k < 6; ++k) {
-          fprintf(fp, ", \"%s\": ", keys[k]);
-          ContactJSONReal(fp, vals[k]);
-        }
-      }
-      fprintf(fp, "}");
-    }
-    fprintf(fp, "\n  },\n");
-    if (rec->accuracyTarget > 0) {
-      fprintf(fp, "  \"accuracy_target\": ");
-      ContactJSONReal(fp, rec->accuracyTarget);
-      fprintf(fp, ",\n  \"error_estimate\": ");
-      ContactJSONReal(fp, rec->errorEstimate);
-      fprintf(fp, ",\n  \"adapt_steps\": [");
-      for (PetscInt k = 0; k < rec->nsteps; ++k) {
-        const AccuracyStep *a = &rec->steps[k];
-        fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs, (int)a->iterations);
-        ContactJSONReal(fp, a->tsolve);
-        fprintf(fp, ", \"error_estimate\": ");
-        ContactJSONReal(fp, a->estimate);
-        fprintf(fp, ", \"profile_estimate\": ");
-        ContactJSONReal(fp, a->profile);
-        fprintf(fp, ", \"force_estimate\": ");
-        ContactJSONReal(fp, a->force);
-        fprintf(fp, "}");
-      }
-      fprintf(fp, "\n  ],\n");
-    }
-    if (p->opt.taylor) {
-      fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
-      ContactJSONReal(fp, p->res.taylorRates[0]);
-      fprintf(fp, ", \"hessian_order\": ");
-      ContactJSONReal(fp, p->res.taylorRates[1]);
-      fprintf(fp, ", \"eps\": [");
-      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorEps[k]);
-      fprintf(fp, "], \"gradient_remainder\": [");
-      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorRemainders[0][k]);
-      fprintf(fp, "], \"hessian_relative_remainder\": [");
-      for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)p->res.taylorRemainders[1][k]);
-      fprintf(fp, "]},\n");
-    }
-    fprintf(fp, "  \"time\": {");
-    for (PetscInt k = 0; k < RUN_TIME_N; ++k) {
-      fprintf(fp, "%s\"%s\": ", k ? ", " : "", RunTimeNames[k]);
-      ContactJSONReal(fp, rec->time[k]);
-    }
-    fprintf(fp, "}\n}\n");
-    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  if (rank) PetscFunctionReturn(0);
+  fp = fopen(path, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
+  fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, runId, (int)dofs, (int)size, type);
+  fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
+  fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
+  fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
+  fprintf(fp, "  \"energy\": ");
+  ContactJSONReal(fp, p->res.energy);
+  fprintf(fp, ",\n  \"gradient_norm\": ");
+  ContactJSONReal(fp, p->res.gnorm);
+  fprintf(fp, ",\n  \"max_displacement\": ");
+  ContactJSONReal(fp, umax);
+  fprintf(fp, ",\n  \"displacement_norm\": ");
+  ContactJSONReal(fp, PetscSqrtReal(unorm2));
+  JSONReactions(fp, p);
+  PetscCall(JSONContact(fp, p));
+  JSONBodies(fp, p, F);
+  JSONAccuracy(fp, rec);
+  JSONTaylor(fp, p);
+  fprintf(fp, "  \"time\": {");
+  for (PetscInt k = 0; k < RUN_TIME_N; ++k) {
+    fprintf(fp, "%s\"%s\": ", k ? ", " : "", RunTimeNames[k]);
+    ContactJSONReal(fp, rec->time[k]);
   }
+  fprintf(fp, "}\n}\n");
+  PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
   PetscFunctionReturn(0);
 }
 
