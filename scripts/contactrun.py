@@ -156,13 +156,13 @@ def run_case(args, tmp, name, ranks=1, h5=True, binary=None, timeout=None):
 
 
 def run_checked(args, tmp, name, ok=(0,), binary=None):
-    """run_case on one rank; an exit status not in ok stops the script with
-    the command line and the end of its output. Returns (summary, HDF5
-    path)."""
+    """run_case on one rank, its HDF5 output written; an exit status not in
+    ok stops the script with the command line and the end of its output.
+    Returns the Run."""
     res = run_case(args, tmp, name, binary=binary)
     if res.returncode not in ok:
         raise SystemExit(f"{' '.join(res.cmd)} failed:\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
-    return res.summary, res.h5
+    return res
 
 
 def mesh_only(args, binary=None):
