@@ -57,6 +57,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import types
 
 import numpy as np
 
@@ -910,23 +911,9 @@ def cost_ratio_text(g, m):
         g.get("repeats", "?"))
 
 
-def report(rows, args, info, meshes, elapsed, load):
-    out = args.out
-    refs = attach_references(rows)
-    attach_profile_refs(rows)
-    ref_sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
-    fit_solve, n_solve = fit_exponent([r["dofs"] for r in ref_sel], [r["solve_median"] for r in ref_sel])
-    fit_wall, _ = fit_exponent([r["dofs"] for r in ref_sel], [r["wall_median"] for r in ref_sel])
-    fit_lin, _ = fit_exponent([r["dofs"] for r in ref_sel], [r.get("linear_solve_time") for r in ref_sel])
-    mort_sel = sorted(default_runs(rows, "hertz", REF_KP, formulation="mortar"), key=lambda r: r["dofs"])
-    fit_mort, n_mort = fit_exponent([r["dofs"] for r in mort_sel], [r["solve_median"] for r in mort_sel])
-    write_csv(rows, os.path.join(out, "results.csv"))
-    try:
-        plots(rows, out, fit_solve, fit_lin)
-    except Exception as e:
-        print("plots failed: %s" % e, file=sys.stderr)
-    forms = [f for f in FORMULATIONS if any(r["formulation"] == f for r in rows)]
-
+def report_header(rows, ctx):
+    """The title, and how, when, on which binary and under what load the sweep ran."""
+    out, args, elapsed, load = ctx.out, ctx.args, ctx.elapsed, ctx.load
     L = []
     A = L.append
     A("# Benchmark: error against cost (`scripts/bench.py%s`)" % (" --quick" if args.quick else ""))
@@ -939,6 +926,14 @@ def report(rows, args, info, meshes, elapsed, load):
          len(rows), os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
          git_info(out), args.bin_sha, load[0], load[1]))
     A("")
+    return L
+
+
+def report_machine(rows, ctx):
+    """The machine's table: cores, CPU, memory, BLAS, PETSc, OS."""
+    info = ctx.info
+    L = []
+    A = L.append
     A("## Machine")
     A("")
     A("| | |")
@@ -950,6 +945,14 @@ def report(rows, args, info, meshes, elapsed, load):
     A("| PETSc | %s |" % info["petsc"])
     A("| OS | %s |" % info["os"])
     A("")
+    return L
+
+
+def report_design(rows, ctx):
+    """Which meshes, strategies, penalties and formulations were run, and how often."""
+    args = ctx.args
+    L = []
+    A = L.append
     A("## Design")
     A("")
     if args.quick:
@@ -991,6 +994,14 @@ def report(rows, args, info, meshes, elapsed, load):
     A("Strategies: " + "; ".join("**%s** `%s`" % (s, " ".join(v) or "(defaults: -tao_type nls)")
                                  for s, v in STRATEGIES.items()) + ".")
     A("")
+    return L
+
+
+def report_definitions(rows, ctx):
+    """What each column means, and the references P_ref."""
+    refs = ctx.refs
+    L = []
+    A = L.append
     A("Definitions. *wall*: the process's wall time (start to exit, mesh read included, Gmsh not: meshes "
       "are generated beforehand), median of the repeats. *solve*: the program's Solve stage (JSON time.solve). "
       "*linear*: the Solve stage of `-contact_disable -tao_type nls` on the same mesh, run just before that mesh's "
@@ -1022,102 +1033,15 @@ def report(rows, args, info, meshes, elapsed, load):
     A("References P_ref: " + ", ".join("%s k_p = %g: P = %.6g (h = %g)" % (f, k, v[0], v[1])
                                         for (f, k), v in sorted(refs.items())) + ".")
     A("")
+    return L
 
-    # targets
-    A("## Targets")
-    A("")
-    A("| target | measured | status |")
-    A("|---|---|---|")
-    h06 = [r for r in rows if r["scene"] == "hertz" and r["h"] == 0.06 and r["kp"] == REF_KP and r["gttol"] == REF_TOL
-           and r["ranks"] == 1 and r["formulation"] == REF_FORMULATION]
-    d06 = [r for r in h06 if r["strategy"] == REF_STRATEGY]
-    conv06 = [r for r in h06 if r["converged"] and finite(r.get("solve_median"))]
-    if conv06:
-        best = min(conv06, key=lambda r: r["solve_median"])
-        dtxt = ("default (newton) %.3g s" % d06[0]["solve_median"]) if d06 and finite(d06[0].get("solve_median")) else "default: not converged"
-        dok = bool(d06) and d06[0]["converged"] and d06[0]["solve_median"] <= 0.5
-        st = "MET" if dok else ("MET with %s only" % best["strategy"] if best["solve_median"] <= 0.5 else "NOT MET")
-        A("| reference scene, h = 0.06, k_p = 2e6, gttol 1e-8, solve time <= 0.5 s on one core (gpts) | %s; fastest: %s "
-          "%.3g s (%d iterations) | %s |" % (dtxt, best["strategy"], best["solve_median"], best.get("iterations", 0), st))
-    else:
-        A("| reference scene, h = 0.06, solve <= 0.5 s | no converged run | NOT MEASURED |")
-    rat = [r for r in ref_sel if finite(r.get("ratio_to_linear"))]
-    big_rat = [r for r in rat if r["dofs"] >= 1e4]
-    if big_rat:
-        worst = max(big_rat, key=lambda r: r["ratio_to_linear"])
-        small = [r for r in rat if r["dofs"] < 1e4 and r["ratio_to_linear"] > 10]
-        A("| time-to-solution <= 10 linear solves of the same mesh (gpts, newton, k_p 2e6, 1e-8, uniform meshes from 1e4 "
-          "dofs; below, a linear solve takes milliseconds and fixed costs dominate) | %s; worst %.1f at %d dofs | %s%s |"
-          % (", ".join("%.1f (%d dofs)" % (r["ratio_to_linear"], r["dofs"]) for r in rat), worst["ratio_to_linear"],
-             worst["dofs"], status(worst["ratio_to_linear"] <= 10),
-             (" (over 10 below 1e4 dofs: %s)" % ", ".join("%d dofs" % r["dofs"] for r in small)) if small else ""))
-    else:
-        A("| time-to-solution <= 10 linear solves | - | NOT MEASURED |")
-    span = [r["dofs"] for r in ref_sel if 1e4 <= r["dofs"] <= 1.2e6]
-    if fit_solve and span and max(span) >= 5e5:
-        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs (solve time, gpts, newton) | %.2f over %d meshes, %d..%d dofs "
-          "(wall time: %.2f; linear solve: %s; mortar's solve time: %s) | %s |"
-          % (fit_solve[0], n_solve, min(span), max(span), fit_wall[0] if fit_wall else float("nan"),
-             fmt(fit_lin[0] if fit_lin else None, "%.2f"),
-             ("%.2f over %d meshes" % (fit_mort[0], n_mort)) if fit_mort else "-", status(fit_solve[0] <= 1.2)))
-    else:
-        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs | %s | NOT MEASURED (needs meshes up to 1e6 dofs: full sweep) |"
-          % ("%.2f over %d..%d dofs only" % (fit_solve[0], min(span), max(span)) if fit_solve and span else "-"))
-    big = ref_sel[-1] if ref_sel else None
-    if big and finite(big.get("time_total")):
-        frac = (big["time_mesh"] + big["time_setup"] + big["time_output"]) / big["time_total"]
-        ok = big["dofs"] >= 5e5
-        A("| mesh reading + set-up + output < 20 %% of the total at 1e6 dofs | %.1f %% at %d dofs (mesh %.2f s, "
-          "set-up %.2f s, output %.2f s of %.2f s; output off: -output none) | %s |"
-          % (100 * frac, big["dofs"], big["time_mesh"], big["time_setup"], big["time_output"], big["time_total"],
-             status(frac < 0.2) if ok else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)"
-             % (big["dofs"], status(frac < 0.2))))
-    if big and finite(big.get("search_time_per_call")):
-        f = big["search_time_per_call"] / big["energy_time_per_call"]
-        ok = big["dofs"] >= 5e5
-        A("| contact search a small fraction of an energy evaluation at 1e6 dofs | search %.3g ms per call, "
-          "energy evaluation %.3g ms per call: %.2f %% at %d dofs | %s |"
-          % (1e3 * big["search_time_per_call"], 1e3 * big["energy_time_per_call"], 100 * f, big["dofs"],
-             (status(f < 0.1) + " (taken as < 10 %)") if ok else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < 0.1), big["dofs"])))
-    # the cost of the mortar formulation
-    pairs = formulation_ratio_rows(rows)
-    at06 = [p for p in pairs if p[0] == 0.06]
-    finest = pairs[-1] if pairs else None
-    items = [("h = 0.06", at06[0])] if at06 else []
-    if finest and not (at06 and finest is at06[0]):
-        items.append(("largest mesh of this sweep, h = %g (%d dofs)" % (finest[0], finest[1]["dofs"]), finest))
-    if items:
-        ratios = [p[2]["solve_median"] / p[1]["solve_median"] for _, p in items]
-        ok = all(x <= COST_TARGET for x in ratios)
-        text = "; ".join("%s: %s" % (label, cost_ratio_text(p[1], p[2])) for label, p in items)
-        if finest[1]["dofs"] < 5e5:
-            text += "; h = %g is this sweep's largest mesh" % finest[0]
-        A("| mortar / gpts solve time <= %g (hertz, newton, k_p 2e6, gttol 1e-8, one core; medians of runs made "
-          "interleaved) at h = 0.06 and at the largest mesh | %s | %s |"
-          % (COST_TARGET, text, status(ok) if finest[1]["dofs"] >= 5e5
-             else "%s here; at 1e6 dofs: NOT MEASURED in this sweep%s" % (
-                 status(ok), " (see the next row)" if os.path.exists(os.path.join(out, "formulations.csv")) else "")))
-    else:
-        A("| mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh | no pair of converged runs | "
-          "NOT MEASURED |" % COST_TARGET)
-    fc = read_formulations_cost(out)
-    if fc:
-        sizes = sorted({float(r["h"]) for r in fc}, reverse=True)
-        parts, oks = [], []
-        for h in sizes:
-            rr = {r["formulation"]: r for r in fc if float(r["h"]) == h}
-            if "gpts" in rr and "mortar" in rr and rr["mortar"].get("ratio"):
-                ratio = float(rr["mortar"]["ratio"])
-                oks.append(ratio <= COST_TARGET)
-                parts.append("h = %g (%s dofs): %.2f (mortar %.3g s / gpts %.3g s)" % (
-                    h, rr["gpts"]["dofs"], ratio, float(rr["mortar"]["solve_median"]),
-                    float(rr["gpts"]["solve_median"])))
-        A("| the same, from `formulations.md` (`--formulations-cost`, %s, median of %s, interleaved) | %s | %s |"
-          % (fc[0].get("date", "?"), fc[0].get("repeats", "?"), "; ".join(parts) or "-",
-             status(all(oks)) if oks else "NOT MEASURED"))
-    A("")
 
-    # formulations
+def report_formulations(rows, ctx):
+    """Each formulation's default runs against the finest run of the same model, and mortar / gpts
+    on the same mesh."""
+    forms, pairs = ctx.forms, ctx.pairs
+    L = []
+    A = L.append
     A("## Formulations: error against the finest mesh of the same model")
     A("")
     A("Newton, k_p = 2e6, gttol 1e-8, one rank. *profile err*: the L2 distance of the profile from the finest "
@@ -1152,8 +1076,14 @@ def report(rows, args, info, meshes, elapsed, load):
                 m.get("energy_evals", "-"), fmt(per_it, "%.2f"), pct(g.get("contact_share")),
                 pct(m.get("contact_share"))))
         A("")
+    return L
 
-    # cheapest
+
+def report_cheapest(rows, ctx):
+    """The cheapest configuration reaching each error level, per error measure and formulation."""
+    forms = ctx.forms
+    L = []
+    A = L.append
     A("## Cheapest configuration reaching an error")
     A("")
     A("Cheapest = smallest median wall time among converged one-rank runs, per formulation. The error against "
@@ -1207,8 +1137,16 @@ def report(rows, args, info, meshes, elapsed, load):
       "out of reach of any configuration of this scene; the distance from the finest mesh of the same model is "
       "the discretisation measure." % (", ".join(fin) or "-"))
     A("")
+    return L
 
-    # scaling table
+
+def report_scaling(rows, ctx):
+    """The default runs of the reference scene by mesh size, and the fitted cost exponents."""
+    ref_sel, mort_sel = ctx.ref_sel, ctx.mort_sel
+    fit_solve, n_solve, fit_wall, fit_lin, fit_mort, n_mort = (ctx.fit_solve, ctx.n_solve, ctx.fit_wall, ctx.fit_lin,
+                                                                ctx.fit_mort, ctx.n_mort)
+    L = []
+    A = L.append
     A("## Scaling: newton, k_p = 2e6, gttol 1e-8, uniform meshes")
     A("")
     A("| formulation | h | dofs | iterations | energy evals | solve [s] | wall [s] | linear [s] | ratio | peak MB | "
@@ -1234,8 +1172,14 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("Fitted exponent: fewer than two meshes in 1e4..1.2e6 dofs.")
     A("")
+    return L
 
-    # ranks
+
+def report_ranks(rows, ctx):
+    """1 against 2 ranks on the largest mesh."""
+    info = ctx.info
+    L = []
+    A = L.append
     A("## 1 and 2 ranks on the largest mesh (gpts)")
     A("")
     two = [r for r in rows if r["ranks"] == 2]
@@ -1258,8 +1202,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No 2-rank run in this sweep.")
     A("")
+    return L
 
-    # half model
+
+def report_half_model(rows, ctx):
+    """The half model's figures against the full model's."""
+    L = []
+    A = L.append
     A("## Half model (y = 0 symmetry)")
     A("")
     half = default_runs(rows, "hertz-half", formulation=None)
@@ -1282,8 +1231,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No converged half-model run.")
     A("")
+    return L
 
-    # graded
+
+def report_graded(rows, ctx):
+    """The graded meshes against uniform ones."""
+    L = []
+    A = L.append
     A("## Graded meshes")
     A("")
     gr = default_runs(rows, "hertz-graded", formulation=None)
@@ -1306,8 +1260,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No converged graded run.")
     A("")
+    return L
 
-    # strategies at h = 0.06
+
+def report_strategies(rows, ctx):
+    """Every strategy on the reference mesh (hertz, h = 0.06)."""
+    L = []
+    A = L.append
     A("## Strategies on the reference mesh (hertz, h = 0.06)")
     A("")
     A("| formulation | strategy | k_p | gttol | iterations | energy evals | solve [s] | wall [s] | peak MB | l2 err "
@@ -1322,7 +1281,13 @@ def report(rows, args, info, meshes, elapsed, load):
                 "(reference)" if r.get("profile_err") == 0 and on_profile_ref_mesh(r) else pct(r.get("profile_err")),
                 pct(r.get("P_ref_err")), r["reason"]))
     A("")
+    return L
 
+
+def report_failures(rows, ctx):
+    """The runs that failed or did not converge."""
+    L = []
+    A = L.append
     bad = [r for r in rows if not r["converged"]]
     A("## Runs that failed or did not converge (%d of %d)" % (len(bad), len(rows)))
     A("")
@@ -1334,6 +1299,14 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("None.")
     A("")
+    return L
+
+
+def report_meshes(rows, ctx):
+    """Each mesh's generation time and linear baseline."""
+    meshes = ctx.meshes
+    L = []
+    A = L.append
     if meshes:
         A("## Meshes")
         A("")
@@ -1343,12 +1316,223 @@ def report(rows, args, info, meshes, elapsed, load):
             A("| %s | %g | %s | %s | %s | %s |" % (m["scene"], m["h"], m.get("dofs") or "-", fmt(m.get("mesh_time")),
                                                  fmt(m.get("linear")), m.get("note", "")))
         A("")
+    return L
+
+
+def report_files(rows, ctx):
+    """The files of the sweep's directory."""
+    fc = ctx.fc
+    L = []
+    A = L.append
     A("Files: results.csv (one row per configuration), error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png, "
       "bench.log (the run's log), run.json (its settings; `--report-only` rewrites this file and the plots from "
       "them)%s." % (", formulations.md and formulations.csv (`--formulations-cost`)" if fc else ""))
-    with open(os.path.join(out, "RESULTS.md.tmp"), "w") as fh:
+    return L
+
+
+def target_reference_solve(rows, ctx):
+    """Solve time on the reference mesh, h = 0.06 (gpts)."""
+    L = []
+    A = L.append
+    h06 = [r for r in rows if r["scene"] == "hertz" and r["h"] == 0.06 and r["kp"] == REF_KP and r["gttol"] == REF_TOL
+           and r["ranks"] == 1 and r["formulation"] == REF_FORMULATION]
+    d06 = [r for r in h06 if r["strategy"] == REF_STRATEGY]
+    conv06 = [r for r in h06 if r["converged"] and finite(r.get("solve_median"))]
+    if conv06:
+        best = min(conv06, key=lambda r: r["solve_median"])
+        dtxt = ("default (newton) %.3g s" % d06[0]["solve_median"]) if d06 and finite(d06[0].get("solve_median")) else "default: not converged"
+        dok = bool(d06) and d06[0]["converged"] and d06[0]["solve_median"] <= 0.5
+        st = "MET" if dok else ("MET with %s only" % best["strategy"] if best["solve_median"] <= 0.5 else "NOT MET")
+        A("| reference scene, h = 0.06, k_p = 2e6, gttol 1e-8, solve time <= 0.5 s on one core (gpts) | %s; fastest: %s "
+          "%.3g s (%d iterations) | %s |" % (dtxt, best["strategy"], best["solve_median"], best.get("iterations", 0), st))
+    else:
+        A("| reference scene, h = 0.06, solve <= 0.5 s | no converged run | NOT MEASURED |")
+    return L
+
+
+def target_linear_ratio(rows, ctx):
+    """Time-to-solution in linear solves of the same mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    rat = [r for r in ref_sel if finite(r.get("ratio_to_linear"))]
+    big_rat = [r for r in rat if r["dofs"] >= 1e4]
+    if big_rat:
+        worst = max(big_rat, key=lambda r: r["ratio_to_linear"])
+        small = [r for r in rat if r["dofs"] < 1e4 and r["ratio_to_linear"] > 10]
+        A("| time-to-solution <= 10 linear solves of the same mesh (gpts, newton, k_p 2e6, 1e-8, uniform meshes from 1e4 "
+          "dofs; below, a linear solve takes milliseconds and fixed costs dominate) | %s; worst %.1f at %d dofs | %s%s |"
+          % (", ".join("%.1f (%d dofs)" % (r["ratio_to_linear"], r["dofs"]) for r in rat), worst["ratio_to_linear"],
+             worst["dofs"], status(worst["ratio_to_linear"] <= 10),
+             (" (over 10 below 1e4 dofs: %s)" % ", ".join("%d dofs" % r["dofs"] for r in small)) if small else ""))
+    else:
+        A("| time-to-solution <= 10 linear solves | - | NOT MEASURED |")
+    return L
+
+
+def target_exponent(rows, ctx):
+    """The cost exponent from 1e4 to 1e6 dofs."""
+    ref_sel = ctx.ref_sel
+    fit_solve, n_solve, fit_wall, fit_lin, fit_mort, n_mort = (ctx.fit_solve, ctx.n_solve, ctx.fit_wall, ctx.fit_lin,
+                                                                ctx.fit_mort, ctx.n_mort)
+    L = []
+    A = L.append
+    span = [r["dofs"] for r in ref_sel if 1e4 <= r["dofs"] <= 1.2e6]
+    if fit_solve and span and max(span) >= 5e5:
+        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs (solve time, gpts, newton) | %.2f over %d meshes, %d..%d dofs "
+          "(wall time: %.2f; linear solve: %s; mortar's solve time: %s) | %s |"
+          % (fit_solve[0], n_solve, min(span), max(span), fit_wall[0] if fit_wall else float("nan"),
+             fmt(fit_lin[0] if fit_lin else None, "%.2f"),
+             ("%.2f over %d meshes" % (fit_mort[0], n_mort)) if fit_mort else "-", status(fit_solve[0] <= 1.2)))
+    else:
+        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs | %s | NOT MEASURED (needs meshes up to 1e6 dofs: full sweep) |"
+          % ("%.2f over %d..%d dofs only" % (fit_solve[0], min(span), max(span)) if fit_solve and span else "-"))
+    return L
+
+
+def target_fixed_costs(rows, ctx):
+    """Mesh reading, set-up and output against the total at the largest mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    big = ref_sel[-1] if ref_sel else None
+    if big and finite(big.get("time_total")):
+        frac = (big["time_mesh"] + big["time_setup"] + big["time_output"]) / big["time_total"]
+        ok = big["dofs"] >= 5e5
+        A("| mesh reading + set-up + output < 20 %% of the total at 1e6 dofs | %.1f %% at %d dofs (mesh %.2f s, "
+          "set-up %.2f s, output %.2f s of %.2f s; output off: -output none) | %s |"
+          % (100 * frac, big["dofs"], big["time_mesh"], big["time_setup"], big["time_output"], big["time_total"],
+             status(frac < 0.2) if ok else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)"
+             % (big["dofs"], status(frac < 0.2))))
+    return L
+
+
+def target_search(rows, ctx):
+    """The contact search against an energy evaluation at the largest mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    big = ref_sel[-1] if ref_sel else None
+    if big and finite(big.get("search_time_per_call")):
+        f = big["search_time_per_call"] / big["energy_time_per_call"]
+        ok = big["dofs"] >= 5e5
+        A("| contact search a small fraction of an energy evaluation at 1e6 dofs | search %.3g ms per call, "
+          "energy evaluation %.3g ms per call: %.2f %% at %d dofs | %s |"
+          % (1e3 * big["search_time_per_call"], 1e3 * big["energy_time_per_call"], 100 * f, big["dofs"],
+             (status(f < 0.1) + " (taken as < 10 %)") if ok else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < 0.1), big["dofs"])))
+    return L
+
+
+def target_mortar_cost(rows, ctx):
+    """Mortar's solve time against gpts' on the same mesh (this sweep's pairs)."""
+    out, pairs = ctx.out, ctx.pairs
+    L = []
+    A = L.append
+    pairs = formulation_ratio_rows(rows)
+    at06 = [p for p in pairs if p[0] == 0.06]
+    finest = pairs[-1] if pairs else None
+    items = [("h = 0.06", at06[0])] if at06 else []
+    if finest and not (at06 and finest is at06[0]):
+        items.append(("largest mesh of this sweep, h = %g (%d dofs)" % (finest[0], finest[1]["dofs"]), finest))
+    if items:
+        ratios = [p[2]["solve_median"] / p[1]["solve_median"] for _, p in items]
+        ok = all(x <= COST_TARGET for x in ratios)
+        text = "; ".join("%s: %s" % (label, cost_ratio_text(p[1], p[2])) for label, p in items)
+        if finest[1]["dofs"] < 5e5:
+            text += "; h = %g is this sweep's largest mesh" % finest[0]
+        A("| mortar / gpts solve time <= %g (hertz, newton, k_p 2e6, gttol 1e-8, one core; medians of runs made "
+          "interleaved) at h = 0.06 and at the largest mesh | %s | %s |"
+          % (COST_TARGET, text, status(ok) if finest[1]["dofs"] >= 5e5
+             else "%s here; at 1e6 dofs: NOT MEASURED in this sweep%s" % (
+                 status(ok), " (see the next row)" if os.path.exists(os.path.join(out, "formulations.csv")) else "")))
+    else:
+        A("| mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh | no pair of converged runs | "
+          "NOT MEASURED |" % COST_TARGET)
+    return L
+
+
+def target_formulations_cost(rows, ctx):
+    """The same ratio from formulations.csv (--formulations-cost), where it exists."""
+    fc = ctx.fc
+    L = []
+    A = L.append
+    if fc:
+        sizes = sorted({float(r["h"]) for r in fc}, reverse=True)
+        parts, oks = [], []
+        for h in sizes:
+            rr = {r["formulation"]: r for r in fc if float(r["h"]) == h}
+            if "gpts" in rr and "mortar" in rr and rr["mortar"].get("ratio"):
+                ratio = float(rr["mortar"]["ratio"])
+                oks.append(ratio <= COST_TARGET)
+                parts.append("h = %g (%s dofs): %.2f (mortar %.3g s / gpts %.3g s)" % (
+                    h, rr["gpts"]["dofs"], ratio, float(rr["mortar"]["solve_median"]),
+                    float(rr["gpts"]["solve_median"])))
+        A("| the same, from `formulations.md` (`--formulations-cost`, %s, median of %s, interleaved) | %s | %s |"
+          % (fc[0].get("date", "?"), fc[0].get("repeats", "?"), "; ".join(parts) or "-",
+             status(all(oks)) if oks else "NOT MEASURED"))
+    return L
+
+
+def report_targets(rows, ctx):
+    """The targets of the issue "Speed" and of the mortar formulation's cost, each measured, met or
+    not."""
+    L = []
+    A = L.append
+    A("## Targets")
+    A("")
+    A("| target | measured | status |")
+    A("|---|---|---|")
+    for target in TARGETS:
+        L += target(rows, ctx)
+    A("")
+    return L
+
+
+# the rows of the targets' table, in order
+TARGETS = (target_reference_solve, target_linear_ratio, target_exponent, target_fixed_costs, target_search,
+           target_mortar_cost, target_formulations_cost)
+
+
+def report_figures(rows, args, info, meshes, elapsed, load):
+    """What the sections of RESULTS.md share: the references attached to the rows, the reference scene's
+    default runs of each formulation and their fitted cost exponents, the formulations present, the
+    mortar / gpts pairs, formulations.csv's rows, and the sweep's settings."""
+    ctx = types.SimpleNamespace(out=args.out, args=args, info=info, meshes=meshes, elapsed=elapsed, load=load)
+    ctx.refs = attach_references(rows)
+    attach_profile_refs(rows)
+    ctx.ref_sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
+    dofs = [r["dofs"] for r in ctx.ref_sel]
+    ctx.fit_solve, ctx.n_solve = fit_exponent(dofs, [r["solve_median"] for r in ctx.ref_sel])
+    ctx.fit_wall, _ = fit_exponent(dofs, [r["wall_median"] for r in ctx.ref_sel])
+    ctx.fit_lin, _ = fit_exponent(dofs, [r.get("linear_solve_time") for r in ctx.ref_sel])
+    ctx.mort_sel = sorted(default_runs(rows, "hertz", REF_KP, formulation="mortar"), key=lambda r: r["dofs"])
+    ctx.fit_mort, ctx.n_mort = fit_exponent([r["dofs"] for r in ctx.mort_sel], [r["solve_median"] for r in ctx.mort_sel])
+    ctx.forms = [f for f in FORMULATIONS if any(r["formulation"] == f for r in rows)]
+    ctx.pairs = formulation_ratio_rows(rows)
+    ctx.fc = read_formulations_cost(args.out)
+    return ctx
+
+
+# the sections of RESULTS.md, in order
+REPORT_SECTIONS = (report_header, report_machine, report_design, report_definitions, report_targets, report_formulations,
+                   report_cheapest, report_scaling, report_ranks, report_half_model, report_graded, report_strategies,
+                   report_failures, report_meshes, report_files)
+
+
+def report(rows, args, info, meshes, elapsed, load):
+    """RESULTS.md, results.csv and the plots of a sweep, from its rows."""
+    ctx = report_figures(rows, args, info, meshes, elapsed, load)
+    write_csv(rows, os.path.join(args.out, "results.csv"))
+    try:
+        plots(rows, args.out, ctx.fit_solve, ctx.fit_lin)
+    except Exception as e:
+        print("plots failed: %s" % e, file=sys.stderr)
+    L = []
+    for section in REPORT_SECTIONS:
+        L += section(rows, ctx)
+    with open(os.path.join(args.out, "RESULTS.md.tmp"), "w") as fh:
         fh.write("\n".join(L) + "\n")
-    os.replace(os.path.join(out, "RESULTS.md.tmp"), os.path.join(out, "RESULTS.md"))
+    os.replace(os.path.join(args.out, "RESULTS.md.tmp"), os.path.join(args.out, "RESULTS.md"))
 
 
 def status(ok):
