@@ -25,15 +25,13 @@ the sweep measures its runs, against the uniform run at h = 0.0065.
 import argparse
 import json
 import os
-import shutil
-import statistics
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import formulation_study  # noqa: E402
 import profile_metrics as pm  # noqa: E402
+from contactrun import copy_program, median, run_checked  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.join(ROOT, "bin", "contact")  # main() runs a copy: a rebuild meanwhile does not mix versions
@@ -69,11 +67,10 @@ OTHER = """-scene other
 
 
 def run(args, tmp, name, ok=(0,)):
-    """formulation_study.run on the study's copy of the program, -quiet;
+    """contactrun.run_checked on the study's copy of the program, -quiet;
     returns (summary, HDF5 path, wall seconds)."""
-    t0 = time.perf_counter()
-    summ, h5 = formulation_study.run(args + ["-quiet"], tmp, name, ok=ok, binary=BIN)
-    return summ, h5, time.perf_counter() - t0
+    res = run_checked(args + ["-quiet"], tmp, name, ok=ok, binary=BIN)
+    return res.summary, res.h5, res.wall
 
 
 def true_error(h5, ref_h5, summ, ref_summ):
@@ -113,7 +110,7 @@ def study(scene, base, tmp, repeat, maxsteps=9):
             t_alone.append(run(alone, tmp, f"{scene}-alone{tol}")[2])
         rows.append({"tol": tol, "reached": True, "step": k, "dofs": summ["dofs"], "estimate": est[k], "true": err,
                      "true_profile": d, "true_force": f, "ratio": est[k] / err if err > 0 else float("inf"),
-                     "wall_accuracy": statistics.median(t_acc), "wall_alone": statistics.median(t_alone),
+                     "wall_accuracy": median(t_acc), "wall_alone": median(t_alone),
                      "steps_dofs": [s["dofs"] for s in summ["adapt_steps"]], "meshes": meshes})
     return {"scene": scene, "estimates": est, "rows": rows}
 
@@ -148,7 +145,7 @@ def curve(base, tmp, repeat):
         prof = pm.profiles(h5)[0]
         d = [pm.l2_distance(prof[k], rprof[k]) for k in prof if k in rprof]
         pts.append({"tol": tol, "dofs": summ["dofs"], "steps": len(summ["adapt_steps"]), "estimate": summ["error_estimate"],
-                    "wall": statistics.median(walls), "profile_err": sum(d) / len(d),
+                    "wall": median(walls), "profile_err": sum(d) / len(d),
                     "P_err": abs(summ["contact_force"] - ref["contact_force"]) / ref["contact_force"]})
     return {"ref_h": REF_H, "ref_dofs": ref["dofs"], "points": pts}
 
@@ -167,7 +164,7 @@ def warm_start(base, tmp, repeat, tol=0.005):
                          "solve": sum(s["solve_time"] for s in summ["adapt_steps"]), "P": summ["contact_force"],
                          "pmax": summ["fem_pmax"]}
     for warm in ("1", "0"):
-        out[warm]["wall"] = statistics.median(walls[warm])
+        out[warm]["wall"] = median(walls[warm])
     out["tol"] = tol
     out["answer_change"] = max(abs(out["1"]["P"] / out["0"]["P"] - 1), abs(out["1"]["pmax"] / out["0"]["pmax"] - 1))
     return out
@@ -185,7 +182,7 @@ def against_sweep(tmp, repeat):
     for _ in range(repeat):
         ta.append(run(args + ["-accuracy", "0.01"], tmp, "sweep-acc")[2])
         tu.append(run(args + ["-mesh_size", str(best["h"])], tmp, "sweep-uni")[2])
-    best.update({"wall_accuracy": statistics.median(ta), "wall_uniform": statistics.median(tu)})
+    best.update({"wall_accuracy": median(ta), "wall_uniform": median(tu)})
     return best
 
 
@@ -255,8 +252,7 @@ def main():
     t0 = time.time()
     global BIN
     with tempfile.TemporaryDirectory() as tmp:
-        BIN = os.path.join(tmp, "contact")
-        shutil.copy2(os.path.join(ROOT, "bin", "contact"), BIN)
+        BIN = copy_program(tmp)
         other = os.path.join(tmp, "other.opts")
         with open(other, "w") as f:
             f.write(OTHER.format(root=ROOT))

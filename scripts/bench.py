@@ -4,9 +4,10 @@
     python3 scripts/bench.py [--quick] [--repeat N] [--out bench] [--dry-run]
     python3 scripts/bench.py --formulations-cost [--cost-sizes 0.06,0.0065] [--out bench]
 
-Runs bin/contact as a black box (`-summary <json>`) over a sweep of scenes,
-mesh sizes, contact formulations (gpts, mortar), solver strategies, penalties
-and gradient tolerances, and writes <out>/results.csv (one row per
+Runs bin/contact as a black box (`-summary <json>`, through
+scripts/contactrun.py) over a sweep of scenes, mesh sizes, contact
+formulations (gpts, mortar), solver strategies, penalties and gradient
+tolerances, and writes <out>/results.csv (one row per
 configuration), <out>/RESULTS.md (design, machine, targets, tables) and the
 plots <out>/error_vs_time.png, <out>/time_vs_dofs.png and
 <out>/ratio_to_linear.png.
@@ -48,21 +49,21 @@ import hashlib
 import json
 import math
 import os
-import platform
 import re
 import shutil
-import signal
-import statistics
-import subprocess
 import sys
 import tempfile
 import time
+import types
 
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import contactrun  # noqa: E402
 import profile_metrics  # noqa: E402
+from contactrun import (event_totals, finite, git_info, load_average, machine_info, median, mesh_only,  # noqa: E402
+                        nproc, parse_log_view, parse_tao_line)
 
 SCENES = {
     "hertz": "meshes/hertz/hertz.opts",
@@ -166,13 +167,19 @@ def sweep_plan(quick):
 
 # ------------------------------------------------------------------- running
 
-class Runner:
+def scene_args(scene, h):
+    return ["-options_file", SCENES[scene], "-mesh_size", repr(h)]
+
+
+class Sweep:
+    """The sweep's log, its temporary directory and its copy of the program
+    (args.bin): say() prints a line and logs it; mesh() generates a scene's
+    meshes; run() runs the program once."""
+
     def __init__(self, args, tmp, logname="bench.log"):
         self.args = args
         self.tmp = tmp
         self.n = 0
-        self.env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                        OMPI_MCA_rmaps_base_oversubscribe="1")
         self.log = open(os.path.join(args.out, logname), "w")
 
     def say(self, msg):
@@ -181,65 +188,24 @@ class Runner:
         self.log.write(line + "\n")
         self.log.flush()
 
-    def base_cmd(self, scene, h):
-        return [self.args.bin, "-options_file", SCENES[scene], "-mesh_size", repr(h)]
-
     def mesh(self, scene, h):
-        cmd = self.base_cmd(scene, h) + ["-mesh_only"]
-        t = time.perf_counter()
-        p = subprocess.run(cmd, cwd=ROOT, env=self.env, capture_output=True, text=True)
-        if p.returncode != 0:
-            return None, "mesh_only failed (rc %d): %s" % (p.returncode, first_error(p.stdout + p.stderr))
-        return time.perf_counter() - t, None
+        """(seconds, None), or (None, why it failed)."""
+        res = mesh_only(scene_args(scene, h), self.args.bin)
+        if res.returncode != 0:
+            return None, "mesh_only failed (rc %d): %s" % (res.returncode, first_error(res.stdout + res.stderr))
+        return res.wall, None
 
-    def run_once(self, cmd, ranks, timeout, json_path, extra_files=()):
-        """One process; returns (wall, rc, stdout, summary or None, peak_mb)."""
+    def run(self, args, ranks, summary, output="none", log_view=None):
+        """One run under --timeout, its peak memory measured, stderr merged
+        into stdout; returns (wall, rc or "timeout", its output, the summary
+        where rc is 0 or None, peak MB summed over the ranks or NaN)."""
         self.n += 1
-        mem = os.path.join(self.tmp, "mem%d" % self.n)
-        for f in (json_path,) + tuple(extra_files):
-            if f and os.path.exists(f):
-                os.remove(f)
-        if ranks == 1:
-            full = ["/usr/bin/time", "-f", "%M", "-o", mem] + cmd
-        else:
-            full = (["mpiexec", "--allow-run-as-root", "--oversubscribe", "-n", str(ranks), "sh", "-c",
-                     'exec /usr/bin/time -f %M -o "$0.$OMPI_COMM_WORLD_RANK" "$@"', mem] + cmd)
-        t = time.perf_counter()
-        p = subprocess.Popen(full, cwd=ROOT, env=self.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                             text=True, start_new_session=True)
-        try:
-            out, _ = p.communicate(timeout=timeout)
-            rc = p.returncode
-        except subprocess.TimeoutExpired:
-            try:
-                os.killpg(p.pid, signal.SIGTERM)
-                out, _ = p.communicate(timeout=10)
-            except (subprocess.TimeoutExpired, ProcessLookupError):
-                try:
-                    os.killpg(p.pid, signal.SIGKILL)
-                except ProcessLookupError:
-                    pass
-                out, _ = p.communicate()
-            rc = "timeout"
-        wall = time.perf_counter() - t
-        peak = 0.0
-        files = [mem] if ranks == 1 else [mem + ".%d" % r for r in range(ranks)]
-        for f in files:
-            try:
-                with open(f) as fh:
-                    lines = [l for l in fh.read().split("\n") if l.strip()]
-                peak += int(lines[-1]) / 1024.0
-                os.remove(f)
-            except (OSError, ValueError, IndexError):
-                peak = float("nan")
-        summary = None
-        if rc == 0 and os.path.exists(json_path):
-            try:
-                with open(json_path) as fh:
-                    summary = json.load(fh)
-            except (OSError, ValueError):
-                summary = None
-        return wall, rc, out, summary, peak
+        res = contactrun.run(args, ranks, self.args.bin, summary=summary, output=output, log_view=log_view,
+                             peak_memory=os.path.join(self.tmp, "mem%d" % self.n), timeout=self.args.timeout,
+                             merge_stderr=True)
+        peak = sum(res.peaks) if None not in res.peaks else float("nan")
+        return (res.wall, "timeout" if res.timed_out else res.returncode, res.stdout,
+                res.summary if res.returncode == 0 else None, peak)
 
 
 def first_error(text):
@@ -250,19 +216,6 @@ def first_error(text):
     return lines[-1][:200] if lines else "no output"
 
 
-TAO_LINE = re.compile(r"TAO (\S+): (\S+) after (\d+) iterations, (\d+) energy evaluations, (\d+) Hessian")
-
-
-def parse_tao_line(out):
-    m = None
-    for m in TAO_LINE.finditer(out or ""):
-        pass
-    if not m:
-        return None
-    return {"type": m.group(1), "reason": m.group(2), "iterations": int(m.group(3)),
-            "evals": int(m.group(4)), "hessians": int(m.group(5))}
-
-
 # events of the two formulations that play the same part
 EVENT_ROLES = {
     "search": ("ContactSearch", "MortarSearch"),
@@ -270,47 +223,6 @@ EVENT_ROLES = {
     "contact_hessian": ("ContactHessian", "MortarHessian"),
     "segments": ("MortarSegments",),
 }
-
-
-def parse_log_view(path):
-    """From a -log_view file: {"all": {event: (count, max time)} summed over
-    the stages, "Solve": the same in the Solve stage only, "stage": {stage:
-    time}}."""
-    out = {"all": {}, "Solve": {}, "stage": {}}
-    try:
-        with open(path) as fh:
-            text = fh.read()
-    except OSError:
-        return out
-    summary = text.partition("Summary of Stages")[2].partition("Event Stage")[0]
-    for line in summary.split("\n"):
-        m = re.match(r"\s*\d+:\s+(.+?):\s+(\S+)", line)
-        if m:
-            try:
-                out["stage"][m.group(1)] = float(m.group(2))
-            except ValueError:
-                pass
-    # only the first (per-event) table: it ends where the object summary starts
-    text = text.split("Memory usage is given in bytes")[0]
-    stage = None
-    for line in text.split("\n"):
-        m = re.match(r"--- Event Stage \d+: (.+)", line)
-        if m:
-            stage = m.group(1).strip()
-            continue
-        parts = line.split()
-        if stage is None or len(parts) < 5:
-            continue
-        try:
-            count, t = int(parts[1]), float(parts[3])
-        except ValueError:
-            continue
-        for key in ("all", "Solve"):
-            if key == "Solve" and stage != "Solve":
-                continue
-            c0, t0 = out[key].get(parts[0], (0, 0.0))
-            out[key][parts[0]] = (c0 + count, t0 + t)
-    return out
 
 
 def event(ev, role):
@@ -323,15 +235,15 @@ def event(ev, role):
 
 def log_figures(lv):
     """Per-call costs and the contact share of the Solve stage from a parsed
-    -log_view: contact = energy-gradient + Hessian events of the formulation
+    -log_view (contactrun.parse_log_view): contact = energy-gradient + Hessian events of the formulation
     (the search and, for mortar, the segments are inside both)."""
-    ev, sv = lv["all"], lv["Solve"]
+    ev, sv = event_totals(lv), lv["events"].get("Solve", {})
     ns, ts = event(ev, "search")
     nc, tc = event(ev, "contact_energy")
     _, te = ev.get("ElasEnergyGrad", (0, 0.0))
     nh, th = event(ev, "contact_hessian")
     ng, tg = event(ev, "segments")
-    solve = lv["stage"].get("Solve", float("nan"))
+    solve = lv["stages"].get("Solve", float("nan"))
     contact = event(sv, "contact_energy")[1] + event(sv, "contact_hessian")[1]
     t = {k: sum(sv.get(e, (0, 0.0))[1] for e in names) for k, names in (
         ("t_factor_k", ("SchurFactorK",)), ("t_newton_linear", ("KSPSolve", "PCSetUp")),
@@ -356,7 +268,7 @@ class ConfigRun:
     def __init__(self, R, scene, h, cfg, repeat, log_view=None, h5=False):
         strategy, kp, tol, ranks, _, form = cfg
         self.R, self.repeat, self.log_view, self.h5 = R, repeat, log_view, h5
-        self.cmd = (R.base_cmd(scene, h) + ["-contact_formulation", form, "-contact_penalty", "%g" % kp,
+        self.cmd = (scene_args(scene, h) + ["-contact_formulation", form, "-contact_penalty", "%g" % kp,
                                             "-tao_gttol", "%g" % tol] + STRATEGIES[strategy])
         self.ranks = ranks
         self.row = {"scene": scene, "h": h, "formulation": form, "strategy": strategy, "kp": kp, "gttol": tol,
@@ -373,13 +285,10 @@ class ConfigRun:
         R.n += 1
         jp = os.path.join(R.tmp, "run%d.json" % R.n)
         h5 = os.path.join(R.tmp, "run%d.h5" % R.n) if (self.h5 and r == 0) else None
-        extra = ["-summary", jp, "-output", h5 or "none"]
         lv = None
         if self.log_view == "all" or (self.log_view == "first" and r == 0):
             lv = os.path.join(R.tmp, "log%d.txt" % R.n)
-            extra += ["-log_view", ":" + lv]
-        wall, rc, out, summ, peak = R.run_once(self.cmd + extra, self.ranks, R.args.timeout, jp,
-                                               extra_files=tuple(f for f in (lv, h5) if f))
+        wall, rc, out, summ, peak = R.run(self.cmd, self.ranks, jp, h5 or "none", lv)
         self.tao = parse_tao_line(out) or self.tao
         if rc == "timeout":
             row["reason"] = "TIMEOUT after %.0f s" % R.args.timeout
@@ -430,7 +339,7 @@ class ConfigRun:
         row["repeats"] = len(walls)
         row["wall_runs"] = " ".join("%.3f" % w for w in walls)
         row["solve_runs"] = " ".join("%.3f" % s for s in solves)
-        row["wall_median"] = statistics.median(walls) if walls else float("nan")
+        row["wall_median"] = median(walls)
         # the repeats without HDF5 output where there are any
         peaks = self.clean_peaks or self.peaks
         row["peak_mb"] = max(peaks) if peaks else float("nan")
@@ -445,15 +354,15 @@ class ConfigRun:
             s = summaries[0]
             row["converged"] = bool(s.get("converged", False)) and len(summaries) == len(walls)
             row["reason"] = s.get("tao_reason", row["reason"])
-            row["solve_median"] = statistics.median(solves)
+            row["solve_median"] = median(solves)
             row["dofs"] = s["dofs"]
             row["json_iterations"] = s.get("iterations")
             for k in ("mesh", "setup"):
-                row["time_" + k] = statistics.median([x["time"][k] for x in summaries])
+                row["time_" + k] = median([x["time"][k] for x in summaries])
             # output: the repeats with -output none (0 when every repeat wrote HDF5: its
             # Output stage is left out of the wall and total times)
-            row["time_output"] = statistics.median(self.outputs) if self.outputs else 0.0
-            row["time_total"] = statistics.median(self.totals)
+            row["time_output"] = median(self.outputs) if self.outputs else 0.0
+            row["time_total"] = median(self.totals)
             fig = {k: s.get(k) for k in ("contact_force", "hertz_a", "hertz_pmax", "fem_pmax", "fem_a",
                                          "fem_a_moment", "pressure_l2_error")}
             fig["P"] = fig.pop("contact_force")
@@ -467,8 +376,7 @@ class ConfigRun:
             row["l2_err"] = fig["pressure_l2_error"]
         if self.logs:
             for k in self.logs[0]:
-                v = [x[k] for x in self.logs if finite(x[k])]
-                row[k] = statistics.median(v) if v else float("nan")
+                row[k] = median(x[k] for x in self.logs)
         return row
 
 
@@ -501,12 +409,12 @@ def rel(x, ref):
 
 
 def run_linear(R, scene, h, ranks, repeat):
-    cmd = R.base_cmd(scene, h) + ["-contact_disable", "-tao_type", "nls", "-output", "none"]
+    cmd = scene_args(scene, h) + ["-contact_disable", "-tao_type", "nls"]
     solves, walls, dofs, peak, reason = [], [], None, float("nan"), ""
     for _ in range(repeat):
         R.n += 1
         jp = os.path.join(R.tmp, "lin%d.json" % R.n)
-        wall, rc, out, summ, peak = R.run_once(cmd + ["-summary", jp], ranks, R.args.timeout, jp)
+        wall, rc, out, summ, peak = R.run(cmd, ranks, jp)
         if summ is None:
             reason = "linear baseline failed (rc %s): %s" % (rc, first_error(out))
             break
@@ -515,16 +423,11 @@ def run_linear(R, scene, h, ranks, repeat):
         dofs = summ["dofs"]
         reason = summ.get("tao_reason", "")
         os.remove(jp)
-    return {"solve": statistics.median(solves) if solves else float("nan"),
-            "wall": statistics.median(walls) if walls else float("nan"),
+    return {"solve": median(solves), "wall": median(walls),
             "dofs": dofs, "peak_mb": peak, "reason": reason}
 
 
 # ------------------------------------------------------------------ analysis
-
-def finite(x):
-    return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
-
 
 def default_runs(rows, scene, kp=None, h=None, formulation=REF_FORMULATION):
     """The converged one-rank runs of a scene with the default strategy at
@@ -640,48 +543,6 @@ def cheapest(rows, key, thresholds, exclude=None):
     return out
 
 
-def machine_info():
-    info = {}
-    info["nproc"] = subprocess.run(["nproc"], capture_output=True, text=True).stdout.strip()
-    cpu = ""
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    info["cpu"] = cpu
-    try:
-        with open("/proc/meminfo") as fh:
-            info["mem"] = "%.1f GB" % (int(fh.readline().split()[1]) / 1024 ** 2)
-    except (OSError, ValueError, IndexError):
-        info["mem"] = "?"
-    p = subprocess.run(["update-alternatives", "--display", "libblas.so.3-x86_64-linux-gnu"],
-                       capture_output=True, text=True)
-    blas = [l.strip() for l in p.stdout.split("\n") if "currently points" in l]
-    info["blas"] = blas[0] if blas else (p.stdout.strip().split("\n")[0] if p.stdout else "unknown")
-    p = subprocess.run(["pkg-config", "--modversion", "petsc"], capture_output=True, text=True)
-    info["petsc"] = p.stdout.strip() or "?"
-    info["os"] = platform.platform()
-    return info
-
-
-def git_info(out=None):
-    """HEAD and whether the tree differs from it, the output directory (the
-    bench's own files, rewritten by this run) left out."""
-    def g(*a):
-        p = subprocess.run(["git"] + list(a), cwd=ROOT, capture_output=True, text=True)
-        return p.stdout.strip()
-    head = g("rev-parse", "--short", "HEAD")
-    skip = []
-    if out and os.path.abspath(out).startswith(ROOT + os.sep):
-        skip = ["--", ".", ":(exclude)" + os.path.relpath(os.path.abspath(out), ROOT)]
-    dirty = g("status", "--short", "--untracked-files=no", *skip)
-    return head + (" (with uncommitted changes)" if dirty else "")
-
-
 # ------------------------------------------------------------------- plots
 
 def accuracy_curve(rows):
@@ -697,42 +558,44 @@ def accuracy_curve(rows):
     return acc if acc and any(abs(acc["ref_h"] - h) < 1e-12 for h in ref) else None
 
 
-def plots(rows, out, fit_solve, fit_lin):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    colors = {s: c for s, c in zip(ALL_STRATEGIES, ["C0", "C1", "C2", "C9", "C4", "C5"])}  # C3: mortar
-    markers = {"hertz": "o", "hertz-graded": "s", "hertz-half": "^"}
+# the plots' styles: a colour per strategy (C3 is mortar's), a marker per scene, a colour and a line style
+# per formulation
+STRATEGY_COLORS = {s: c for s, c in zip(ALL_STRATEGIES, ["C0", "C1", "C2", "C9", "C4", "C5"])}
+SCENE_MARKERS = {"hertz": "o", "hertz-graded": "s", "hertz-half": "^"}
+FORM_COLORS = {"gpts": "C0", "mortar": "C3"}
+FORM_STYLES = {"gpts": "-", "mortar": "--"}
 
-    fcolors = {"gpts": "C0", "mortar": "C3"}
-    fstyles = {"gpts": "-", "mortar": "--"}
 
-    def front(ax, pts, key, color, ls, label):
-        """Scatter of the runs (marker per scene) and the line of the best error so far."""
-        for sc, mk in markers.items():
-            q = [r for r in pts if r["scene"] == sc]
-            if q:
-                ax.scatter([r["wall_median"] for r in q], [abs(r[key]) for r in q], s=14, marker=mk,
-                           color=color, alpha=0.35)
-        pts = sorted(pts, key=lambda r: r["wall_median"])
-        fx, fy, best = [], [], float("inf")
-        for r in pts:
-            if abs(r[key]) < best:
-                best = abs(r[key])
-                fx.append(r["wall_median"])
-                fy.append(best)
-        if fx:
-            # on to the slowest run, so that a front of one point is a line too
-            fx.append(max(pts[-1]["wall_median"], fx[-1] * 1.15))
-            fy.append(fy[-1])
-            ax.step(fx, fy, where="post", color=color, ls=ls, label=label, lw=1.8)
+def error_front(ax, pts, key, color, ls, label):
+    """Scatter of the runs (marker per scene) and the line of the best error so far."""
+    for sc, mk in SCENE_MARKERS.items():
+        q = [r for r in pts if r["scene"] == sc]
+        if q:
+            ax.scatter([r["wall_median"] for r in q], [abs(r[key]) for r in q], s=14, marker=mk,
+                       color=color, alpha=0.35)
+    pts = sorted(pts, key=lambda r: r["wall_median"])
+    fx, fy, best = [], [], float("inf")
+    for r in pts:
+        if abs(r[key]) < best:
+            best = abs(r[key])
+            fx.append(r["wall_median"])
+            fy.append(best)
+    if fx:
+        # on to the slowest run, so that a front of one point is a line too
+        fx.append(max(pts[-1]["wall_median"], fx[-1] * 1.15))
+        fy.append(fy[-1])
+        ax.step(fx, fy, where="post", color=color, ls=ls, label=label, lw=1.8)
 
-    def usable(r, key):
-        return (r["converged"] and r["ranks"] == 1 and finite(r.get(key)) and finite(r.get("wall_median"))
-                and abs(r[key]) > 0)
 
-    # error against time: per formulation (the profile's distance from the finest run of the same
-    # model, and from Hertz), and per formulation and strategy (P against the finest mesh)
+def plottable(r, key):
+    return (r["converged"] and r["ranks"] == 1 and finite(r.get(key)) and finite(r.get("wall_median"))
+            and abs(r[key]) > 0)
+
+
+def plot_error_vs_time(plt, rows, out):
+    """error_vs_time.png: error against time per formulation (the profile's
+    distance from the finest run of the same model, and from Hertz), and per
+    formulation and strategy (P against the finest mesh)."""
     fig, axes = plt.subplots(1, 3, figsize=(18, 5.4))
     for ax, key, title, excl in (
             (axes[0], "profile_err", "pressure profile: L2 distance from the finest run of the same model\n"
@@ -741,9 +604,9 @@ def plots(rows, out, fit_solve, fit_lin):
             (axes[1], "l2_err", "pressure profile: L2 error against Hertz\n"
                                 "(not exact on the reference scene: a/R = 0.36)", None)):
         for form in FORMULATIONS:
-            pts = [r for r in rows if r["formulation"] == form and usable(r, key) and not (excl and excl(r))
+            pts = [r for r in rows if r["formulation"] == form and plottable(r, key) and not (excl and excl(r))
                    and (key != "profile_err" or r["kp"] == REF_KP)]
-            front(ax, pts, key, fcolors[form], fstyles[form], form)
+            error_front(ax, pts, key, FORM_COLORS[form], FORM_STYLES[form], form)
         ax.set_title(title, fontsize=10)
     acc = accuracy_curve(rows)
     if acc:  # -accuracy TOL on the reference scene (scripts/accuracy_study.py), measured as these runs
@@ -755,11 +618,11 @@ def plots(rows, out, fit_solve, fit_lin):
                              xytext=(4, 4), textcoords="offset points", color="C2")
     for form in FORMULATIONS:
         for s in ALL_STRATEGIES:
-            pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and usable(r, "P_ref_err")
+            pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and plottable(r, "P_ref_err")
                    and not on_ref_mesh(r)]
             # gpts: a colour per strategy; mortar (newton only): its formulation's colour
-            front(axes[2], pts, "P_ref_err", colors[s] if form == REF_FORMULATION else fcolors[form], fstyles[form],
-                  "%s %s" % (form, s))
+            error_front(axes[2], pts, "P_ref_err", STRATEGY_COLORS[s] if form == REF_FORMULATION else FORM_COLORS[form],
+                        FORM_STYLES[form], "%s %s" % (form, s))
     axes[2].set_title("|P - P_ref| / P_ref (finest uniform mesh, same formulation and k_p;\n"
                       "its own runs left out)", fontsize=10)
     for ax in axes:
@@ -780,7 +643,9 @@ def plots(rows, out, fit_solve, fit_lin):
     fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=120)
     plt.close(fig)
 
-    # time against dofs
+
+def plot_time_vs_dofs(plt, rows, out, fit_solve, fit_lin):
+    """time_vs_dofs.png: time against dofs."""
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
     if sel:
@@ -814,7 +679,9 @@ def plots(rows, out, fit_solve, fit_lin):
     fig.savefig(os.path.join(out, "time_vs_dofs.png"), dpi=120)
     plt.close(fig)
 
-    # ratio to one linear solve
+
+def plot_ratio_to_linear(plt, rows, out):
+    """ratio_to_linear.png: the solve time in linear solves."""
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     for form in FORMULATIONS:
         for s in ALL_STRATEGIES:
@@ -822,15 +689,16 @@ def plots(rows, out, fit_solve, fit_lin):
                         and r["gttol"] == REF_TOL and r["ranks"] == 1 and r["converged"] and r["formulation"] == form
                         and finite(r.get("ratio_to_linear"))], key=lambda r: r["dofs"])
             if q:
-                ax.loglog([r["dofs"] for r in q], [r["ratio_to_linear"] for r in q], "o" + fstyles[form],
-                          color=colors[s] if form == REF_FORMULATION else fcolors[form], label="%s %s" % (form, s))
+                ax.loglog([r["dofs"] for r in q], [r["ratio_to_linear"] for r in q], "o" + FORM_STYLES[form],
+                          color=STRATEGY_COLORS[s] if form == REF_FORMULATION else FORM_COLORS[form],
+                          label="%s %s" % (form, s))
     for sc, mk in (("hertz-graded", "s"), ("hertz-half", "^")):
         q = [r for r in rows if r["scene"] == sc and r["kp"] == REF_KP and r["gttol"] == REF_TOL and r["converged"]
              and r["ranks"] == 1 and finite(r.get("ratio_to_linear"))]
         for r in q:
             mortar = r["formulation"] != REF_FORMULATION
-            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=fcolors[r["formulation"]] if mortar
-                      else colors[r["strategy"]], alpha=0.6, mfc="none" if mortar else None)
+            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=FORM_COLORS[r["formulation"]] if mortar
+                      else STRATEGY_COLORS[r["strategy"]], alpha=0.6, mfc="none" if mortar else None)
     ax.axhline(10, color="k", ls="--", lw=1, label="target: 10")
     ax.set_xlabel("dofs")
     ax.set_ylabel("solve time / one linear elastic solve")
@@ -841,6 +709,16 @@ def plots(rows, out, fit_solve, fit_lin):
     fig.tight_layout()
     fig.savefig(os.path.join(out, "ratio_to_linear.png"), dpi=120)
     plt.close(fig)
+
+
+def plots(rows, out, fit_solve, fit_lin):
+    """The sweep's three plots in out."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    plot_error_vs_time(plt, rows, out)
+    plot_time_vs_dofs(plt, rows, out, fit_solve, fit_lin)
+    plot_ratio_to_linear(plt, rows, out)
 
 
 # ------------------------------------------------------------------ report
@@ -910,23 +788,9 @@ def cost_ratio_text(g, m):
         g.get("repeats", "?"))
 
 
-def report(rows, args, info, meshes, elapsed, load):
-    out = args.out
-    refs = attach_references(rows)
-    attach_profile_refs(rows)
-    ref_sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
-    fit_solve, n_solve = fit_exponent([r["dofs"] for r in ref_sel], [r["solve_median"] for r in ref_sel])
-    fit_wall, _ = fit_exponent([r["dofs"] for r in ref_sel], [r["wall_median"] for r in ref_sel])
-    fit_lin, _ = fit_exponent([r["dofs"] for r in ref_sel], [r.get("linear_solve_time") for r in ref_sel])
-    mort_sel = sorted(default_runs(rows, "hertz", REF_KP, formulation="mortar"), key=lambda r: r["dofs"])
-    fit_mort, n_mort = fit_exponent([r["dofs"] for r in mort_sel], [r["solve_median"] for r in mort_sel])
-    write_csv(rows, os.path.join(out, "results.csv"))
-    try:
-        plots(rows, out, fit_solve, fit_lin)
-    except Exception as e:
-        print("plots failed: %s" % e, file=sys.stderr)
-    forms = [f for f in FORMULATIONS if any(r["formulation"] == f for r in rows)]
-
+def report_header(rows, ctx):
+    """The title, and how, when, on which binary and under what load the sweep ran."""
+    out, args, elapsed, load = ctx.out, ctx.args, ctx.elapsed, ctx.load
     L = []
     A = L.append
     A("# Benchmark: error against cost (`scripts/bench.py%s`)" % (" --quick" if args.quick else ""))
@@ -939,6 +803,14 @@ def report(rows, args, info, meshes, elapsed, load):
          len(rows), os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
          git_info(out), args.bin_sha, load[0], load[1]))
     A("")
+    return L
+
+
+def report_machine(rows, ctx):
+    """The machine's table: cores, CPU, memory, BLAS, PETSc, OS."""
+    info = ctx.info
+    L = []
+    A = L.append
     A("## Machine")
     A("")
     A("| | |")
@@ -950,6 +822,14 @@ def report(rows, args, info, meshes, elapsed, load):
     A("| PETSc | %s |" % info["petsc"])
     A("| OS | %s |" % info["os"])
     A("")
+    return L
+
+
+def report_design(rows, ctx):
+    """Which meshes, strategies, penalties and formulations were run, and how often."""
+    args = ctx.args
+    L = []
+    A = L.append
     A("## Design")
     A("")
     if args.quick:
@@ -991,6 +871,14 @@ def report(rows, args, info, meshes, elapsed, load):
     A("Strategies: " + "; ".join("**%s** `%s`" % (s, " ".join(v) or "(defaults: -tao_type nls)")
                                  for s, v in STRATEGIES.items()) + ".")
     A("")
+    return L
+
+
+def report_definitions(rows, ctx):
+    """What each column means, and the references P_ref."""
+    refs = ctx.refs
+    L = []
+    A = L.append
     A("Definitions. *wall*: the process's wall time (start to exit, mesh read included, Gmsh not: meshes "
       "are generated beforehand), median of the repeats. *solve*: the program's Solve stage (JSON time.solve). "
       "*linear*: the Solve stage of `-contact_disable -tao_type nls` on the same mesh, run just before that mesh's "
@@ -1022,102 +910,15 @@ def report(rows, args, info, meshes, elapsed, load):
     A("References P_ref: " + ", ".join("%s k_p = %g: P = %.6g (h = %g)" % (f, k, v[0], v[1])
                                         for (f, k), v in sorted(refs.items())) + ".")
     A("")
+    return L
 
-    # targets
-    A("## Targets")
-    A("")
-    A("| target | measured | status |")
-    A("|---|---|---|")
-    h06 = [r for r in rows if r["scene"] == "hertz" and r["h"] == 0.06 and r["kp"] == REF_KP and r["gttol"] == REF_TOL
-           and r["ranks"] == 1 and r["formulation"] == REF_FORMULATION]
-    d06 = [r for r in h06 if r["strategy"] == REF_STRATEGY]
-    conv06 = [r for r in h06 if r["converged"] and finite(r.get("solve_median"))]
-    if conv06:
-        best = min(conv06, key=lambda r: r["solve_median"])
-        dtxt = ("default (newton) %.3g s" % d06[0]["solve_median"]) if d06 and finite(d06[0].get("solve_median")) else "default: not converged"
-        dok = bool(d06) and d06[0]["converged"] and d06[0]["solve_median"] <= 0.5
-        st = "MET" if dok else ("MET with %s only" % best["strategy"] if best["solve_median"] <= 0.5 else "NOT MET")
-        A("| reference scene, h = 0.06, k_p = 2e6, gttol 1e-8, solve time <= 0.5 s on one core (gpts) | %s; fastest: %s "
-          "%.3g s (%d iterations) | %s |" % (dtxt, best["strategy"], best["solve_median"], best.get("iterations", 0), st))
-    else:
-        A("| reference scene, h = 0.06, solve <= 0.5 s | no converged run | NOT MEASURED |")
-    rat = [r for r in ref_sel if finite(r.get("ratio_to_linear"))]
-    big_rat = [r for r in rat if r["dofs"] >= 1e4]
-    if big_rat:
-        worst = max(big_rat, key=lambda r: r["ratio_to_linear"])
-        small = [r for r in rat if r["dofs"] < 1e4 and r["ratio_to_linear"] > 10]
-        A("| time-to-solution <= 10 linear solves of the same mesh (gpts, newton, k_p 2e6, 1e-8, uniform meshes from 1e4 "
-          "dofs; below, a linear solve takes milliseconds and fixed costs dominate) | %s; worst %.1f at %d dofs | %s%s |"
-          % (", ".join("%.1f (%d dofs)" % (r["ratio_to_linear"], r["dofs"]) for r in rat), worst["ratio_to_linear"],
-             worst["dofs"], status(worst["ratio_to_linear"] <= 10),
-             (" (over 10 below 1e4 dofs: %s)" % ", ".join("%d dofs" % r["dofs"] for r in small)) if small else ""))
-    else:
-        A("| time-to-solution <= 10 linear solves | - | NOT MEASURED |")
-    span = [r["dofs"] for r in ref_sel if 1e4 <= r["dofs"] <= 1.2e6]
-    if fit_solve and span and max(span) >= 5e5:
-        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs (solve time, gpts, newton) | %.2f over %d meshes, %d..%d dofs "
-          "(wall time: %.2f; linear solve: %s; mortar's solve time: %s) | %s |"
-          % (fit_solve[0], n_solve, min(span), max(span), fit_wall[0] if fit_wall else float("nan"),
-             fmt(fit_lin[0] if fit_lin else None, "%.2f"),
-             ("%.2f over %d meshes" % (fit_mort[0], n_mort)) if fit_mort else "-", status(fit_solve[0] <= 1.2)))
-    else:
-        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs | %s | NOT MEASURED (needs meshes up to 1e6 dofs: full sweep) |"
-          % ("%.2f over %d..%d dofs only" % (fit_solve[0], min(span), max(span)) if fit_solve and span else "-"))
-    big = ref_sel[-1] if ref_sel else None
-    if big and finite(big.get("time_total")):
-        frac = (big["time_mesh"] + big["time_setup"] + big["time_output"]) / big["time_total"]
-        ok = big["dofs"] >= 5e5
-        A("| mesh reading + set-up + output < 20 %% of the total at 1e6 dofs | %.1f %% at %d dofs (mesh %.2f s, "
-          "set-up %.2f s, output %.2f s of %.2f s; output off: -output none) | %s |"
-          % (100 * frac, big["dofs"], big["time_mesh"], big["time_setup"], big["time_output"], big["time_total"],
-             status(frac < 0.2) if ok else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)"
-             % (big["dofs"], status(frac < 0.2))))
-    if big and finite(big.get("search_time_per_call")):
-        f = big["search_time_per_call"] / big["energy_time_per_call"]
-        ok = big["dofs"] >= 5e5
-        A("| contact search a small fraction of an energy evaluation at 1e6 dofs | search %.3g ms per call, "
-          "energy evaluation %.3g ms per call: %.2f %% at %d dofs | %s |"
-          % (1e3 * big["search_time_per_call"], 1e3 * big["energy_time_per_call"], 100 * f, big["dofs"],
-             (status(f < 0.1) + " (taken as < 10 %)") if ok else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < 0.1), big["dofs"])))
-    # the cost of the mortar formulation
-    pairs = formulation_ratio_rows(rows)
-    at06 = [p for p in pairs if p[0] == 0.06]
-    finest = pairs[-1] if pairs else None
-    items = [("h = 0.06", at06[0])] if at06 else []
-    if finest and not (at06 and finest is at06[0]):
-        items.append(("largest mesh of this sweep, h = %g (%d dofs)" % (finest[0], finest[1]["dofs"]), finest))
-    if items:
-        ratios = [p[2]["solve_median"] / p[1]["solve_median"] for _, p in items]
-        ok = all(x <= COST_TARGET for x in ratios)
-        text = "; ".join("%s: %s" % (label, cost_ratio_text(p[1], p[2])) for label, p in items)
-        if finest[1]["dofs"] < 5e5:
-            text += "; h = %g is this sweep's largest mesh" % finest[0]
-        A("| mortar / gpts solve time <= %g (hertz, newton, k_p 2e6, gttol 1e-8, one core; medians of runs made "
-          "interleaved) at h = 0.06 and at the largest mesh | %s | %s |"
-          % (COST_TARGET, text, status(ok) if finest[1]["dofs"] >= 5e5
-             else "%s here; at 1e6 dofs: NOT MEASURED in this sweep%s" % (
-                 status(ok), " (see the next row)" if os.path.exists(os.path.join(out, "formulations.csv")) else "")))
-    else:
-        A("| mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh | no pair of converged runs | "
-          "NOT MEASURED |" % COST_TARGET)
-    fc = read_formulations_cost(out)
-    if fc:
-        sizes = sorted({float(r["h"]) for r in fc}, reverse=True)
-        parts, oks = [], []
-        for h in sizes:
-            rr = {r["formulation"]: r for r in fc if float(r["h"]) == h}
-            if "gpts" in rr and "mortar" in rr and rr["mortar"].get("ratio"):
-                ratio = float(rr["mortar"]["ratio"])
-                oks.append(ratio <= COST_TARGET)
-                parts.append("h = %g (%s dofs): %.2f (mortar %.3g s / gpts %.3g s)" % (
-                    h, rr["gpts"]["dofs"], ratio, float(rr["mortar"]["solve_median"]),
-                    float(rr["gpts"]["solve_median"])))
-        A("| the same, from `formulations.md` (`--formulations-cost`, %s, median of %s, interleaved) | %s | %s |"
-          % (fc[0].get("date", "?"), fc[0].get("repeats", "?"), "; ".join(parts) or "-",
-             status(all(oks)) if oks else "NOT MEASURED"))
-    A("")
 
-    # formulations
+def report_formulations(rows, ctx):
+    """Each formulation's default runs against the finest run of the same model, and mortar / gpts
+    on the same mesh."""
+    forms, pairs = ctx.forms, ctx.pairs
+    L = []
+    A = L.append
     A("## Formulations: error against the finest mesh of the same model")
     A("")
     A("Newton, k_p = 2e6, gttol 1e-8, one rank. *profile err*: the L2 distance of the profile from the finest "
@@ -1152,8 +953,14 @@ def report(rows, args, info, meshes, elapsed, load):
                 m.get("energy_evals", "-"), fmt(per_it, "%.2f"), pct(g.get("contact_share")),
                 pct(m.get("contact_share"))))
         A("")
+    return L
 
-    # cheapest
+
+def report_cheapest(rows, ctx):
+    """The cheapest configuration reaching each error level, per error measure and formulation."""
+    forms = ctx.forms
+    L = []
+    A = L.append
     A("## Cheapest configuration reaching an error")
     A("")
     A("Cheapest = smallest median wall time among converged one-rank runs, per formulation. The error against "
@@ -1207,8 +1014,16 @@ def report(rows, args, info, meshes, elapsed, load):
       "out of reach of any configuration of this scene; the distance from the finest mesh of the same model is "
       "the discretisation measure." % (", ".join(fin) or "-"))
     A("")
+    return L
 
-    # scaling table
+
+def report_scaling(rows, ctx):
+    """The default runs of the reference scene by mesh size, and the fitted cost exponents."""
+    ref_sel, mort_sel = ctx.ref_sel, ctx.mort_sel
+    fit_solve, n_solve, fit_wall, fit_lin, fit_mort, n_mort = (ctx.fit_solve, ctx.n_solve, ctx.fit_wall, ctx.fit_lin,
+                                                                ctx.fit_mort, ctx.n_mort)
+    L = []
+    A = L.append
     A("## Scaling: newton, k_p = 2e6, gttol 1e-8, uniform meshes")
     A("")
     A("| formulation | h | dofs | iterations | energy evals | solve [s] | wall [s] | linear [s] | ratio | peak MB | "
@@ -1234,8 +1049,14 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("Fitted exponent: fewer than two meshes in 1e4..1.2e6 dofs.")
     A("")
+    return L
 
-    # ranks
+
+def report_ranks(rows, ctx):
+    """1 against 2 ranks on the largest mesh."""
+    info = ctx.info
+    L = []
+    A = L.append
     A("## 1 and 2 ranks on the largest mesh (gpts)")
     A("")
     two = [r for r in rows if r["ranks"] == 2]
@@ -1258,8 +1079,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No 2-rank run in this sweep.")
     A("")
+    return L
 
-    # half model
+
+def report_half_model(rows, ctx):
+    """The half model's figures against the full model's."""
+    L = []
+    A = L.append
     A("## Half model (y = 0 symmetry)")
     A("")
     half = default_runs(rows, "hertz-half", formulation=None)
@@ -1282,8 +1108,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No converged half-model run.")
     A("")
+    return L
 
-    # graded
+
+def report_graded(rows, ctx):
+    """The graded meshes against uniform ones."""
+    L = []
+    A = L.append
     A("## Graded meshes")
     A("")
     gr = default_runs(rows, "hertz-graded", formulation=None)
@@ -1306,8 +1137,13 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("No converged graded run.")
     A("")
+    return L
 
-    # strategies at h = 0.06
+
+def report_strategies(rows, ctx):
+    """Every strategy on the reference mesh (hertz, h = 0.06)."""
+    L = []
+    A = L.append
     A("## Strategies on the reference mesh (hertz, h = 0.06)")
     A("")
     A("| formulation | strategy | k_p | gttol | iterations | energy evals | solve [s] | wall [s] | peak MB | l2 err "
@@ -1322,7 +1158,13 @@ def report(rows, args, info, meshes, elapsed, load):
                 "(reference)" if r.get("profile_err") == 0 and on_profile_ref_mesh(r) else pct(r.get("profile_err")),
                 pct(r.get("P_ref_err")), r["reason"]))
     A("")
+    return L
 
+
+def report_failures(rows, ctx):
+    """The runs that failed or did not converge."""
+    L = []
+    A = L.append
     bad = [r for r in rows if not r["converged"]]
     A("## Runs that failed or did not converge (%d of %d)" % (len(bad), len(rows)))
     A("")
@@ -1334,6 +1176,14 @@ def report(rows, args, info, meshes, elapsed, load):
     else:
         A("None.")
     A("")
+    return L
+
+
+def report_meshes(rows, ctx):
+    """Each mesh's generation time and linear baseline."""
+    meshes = ctx.meshes
+    L = []
+    A = L.append
     if meshes:
         A("## Meshes")
         A("")
@@ -1343,12 +1193,223 @@ def report(rows, args, info, meshes, elapsed, load):
             A("| %s | %g | %s | %s | %s | %s |" % (m["scene"], m["h"], m.get("dofs") or "-", fmt(m.get("mesh_time")),
                                                  fmt(m.get("linear")), m.get("note", "")))
         A("")
+    return L
+
+
+def report_files(rows, ctx):
+    """The files of the sweep's directory."""
+    fc = ctx.fc
+    L = []
+    A = L.append
     A("Files: results.csv (one row per configuration), error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png, "
       "bench.log (the run's log), run.json (its settings; `--report-only` rewrites this file and the plots from "
       "them)%s." % (", formulations.md and formulations.csv (`--formulations-cost`)" if fc else ""))
-    with open(os.path.join(out, "RESULTS.md.tmp"), "w") as fh:
+    return L
+
+
+def target_reference_solve(rows, ctx):
+    """Solve time on the reference mesh, h = 0.06 (gpts)."""
+    L = []
+    A = L.append
+    h06 = [r for r in rows if r["scene"] == "hertz" and r["h"] == 0.06 and r["kp"] == REF_KP and r["gttol"] == REF_TOL
+           and r["ranks"] == 1 and r["formulation"] == REF_FORMULATION]
+    d06 = [r for r in h06 if r["strategy"] == REF_STRATEGY]
+    conv06 = [r for r in h06 if r["converged"] and finite(r.get("solve_median"))]
+    if conv06:
+        best = min(conv06, key=lambda r: r["solve_median"])
+        dtxt = ("default (newton) %.3g s" % d06[0]["solve_median"]) if d06 and finite(d06[0].get("solve_median")) else "default: not converged"
+        dok = bool(d06) and d06[0]["converged"] and d06[0]["solve_median"] <= 0.5
+        st = "MET" if dok else ("MET with %s only" % best["strategy"] if best["solve_median"] <= 0.5 else "NOT MET")
+        A("| reference scene, h = 0.06, k_p = 2e6, gttol 1e-8, solve time <= 0.5 s on one core (gpts) | %s; fastest: %s "
+          "%.3g s (%d iterations) | %s |" % (dtxt, best["strategy"], best["solve_median"], best.get("iterations", 0), st))
+    else:
+        A("| reference scene, h = 0.06, solve <= 0.5 s | no converged run | NOT MEASURED |")
+    return L
+
+
+def target_linear_ratio(rows, ctx):
+    """Time-to-solution in linear solves of the same mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    rat = [r for r in ref_sel if finite(r.get("ratio_to_linear"))]
+    big_rat = [r for r in rat if r["dofs"] >= 1e4]
+    if big_rat:
+        worst = max(big_rat, key=lambda r: r["ratio_to_linear"])
+        small = [r for r in rat if r["dofs"] < 1e4 and r["ratio_to_linear"] > 10]
+        A("| time-to-solution <= 10 linear solves of the same mesh (gpts, newton, k_p 2e6, 1e-8, uniform meshes from 1e4 "
+          "dofs; below, a linear solve takes milliseconds and fixed costs dominate) | %s; worst %.1f at %d dofs | %s%s |"
+          % (", ".join("%.1f (%d dofs)" % (r["ratio_to_linear"], r["dofs"]) for r in rat), worst["ratio_to_linear"],
+             worst["dofs"], status(worst["ratio_to_linear"] <= 10),
+             (" (over 10 below 1e4 dofs: %s)" % ", ".join("%d dofs" % r["dofs"] for r in small)) if small else ""))
+    else:
+        A("| time-to-solution <= 10 linear solves | - | NOT MEASURED |")
+    return L
+
+
+def target_exponent(rows, ctx):
+    """The cost exponent from 1e4 to 1e6 dofs."""
+    ref_sel = ctx.ref_sel
+    fit_solve, n_solve, fit_wall, fit_lin, fit_mort, n_mort = (ctx.fit_solve, ctx.n_solve, ctx.fit_wall, ctx.fit_lin,
+                                                                ctx.fit_mort, ctx.n_mort)
+    L = []
+    A = L.append
+    span = [r["dofs"] for r in ref_sel if 1e4 <= r["dofs"] <= 1.2e6]
+    if fit_solve and span and max(span) >= 5e5:
+        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs (solve time, gpts, newton) | %.2f over %d meshes, %d..%d dofs "
+          "(wall time: %.2f; linear solve: %s; mortar's solve time: %s) | %s |"
+          % (fit_solve[0], n_solve, min(span), max(span), fit_wall[0] if fit_wall else float("nan"),
+             fmt(fit_lin[0] if fit_lin else None, "%.2f"),
+             ("%.2f over %d meshes" % (fit_mort[0], n_mort)) if fit_mort else "-", status(fit_solve[0] <= 1.2)))
+    else:
+        A("| cost exponent <= 1.2 from 1e4 to 1e6 dofs | %s | NOT MEASURED (needs meshes up to 1e6 dofs: full sweep) |"
+          % ("%.2f over %d..%d dofs only" % (fit_solve[0], min(span), max(span)) if fit_solve and span else "-"))
+    return L
+
+
+def target_fixed_costs(rows, ctx):
+    """Mesh reading, set-up and output against the total at the largest mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    big = ref_sel[-1] if ref_sel else None
+    if big and finite(big.get("time_total")):
+        frac = (big["time_mesh"] + big["time_setup"] + big["time_output"]) / big["time_total"]
+        ok = big["dofs"] >= 5e5
+        A("| mesh reading + set-up + output < 20 %% of the total at 1e6 dofs | %.1f %% at %d dofs (mesh %.2f s, "
+          "set-up %.2f s, output %.2f s of %.2f s; output off: -output none) | %s |"
+          % (100 * frac, big["dofs"], big["time_mesh"], big["time_setup"], big["time_output"], big["time_total"],
+             status(frac < 0.2) if ok else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)"
+             % (big["dofs"], status(frac < 0.2))))
+    return L
+
+
+def target_search(rows, ctx):
+    """The contact search against an energy evaluation at the largest mesh."""
+    ref_sel = ctx.ref_sel
+    L = []
+    A = L.append
+    big = ref_sel[-1] if ref_sel else None
+    if big and finite(big.get("search_time_per_call")):
+        f = big["search_time_per_call"] / big["energy_time_per_call"]
+        ok = big["dofs"] >= 5e5
+        A("| contact search a small fraction of an energy evaluation at 1e6 dofs | search %.3g ms per call, "
+          "energy evaluation %.3g ms per call: %.2f %% at %d dofs | %s |"
+          % (1e3 * big["search_time_per_call"], 1e3 * big["energy_time_per_call"], 100 * f, big["dofs"],
+             (status(f < 0.1) + " (taken as < 10 %)") if ok else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < 0.1), big["dofs"])))
+    return L
+
+
+def target_mortar_cost(rows, ctx):
+    """Mortar's solve time against gpts' on the same mesh (this sweep's pairs)."""
+    out, pairs = ctx.out, ctx.pairs
+    L = []
+    A = L.append
+    pairs = formulation_ratio_rows(rows)
+    at06 = [p for p in pairs if p[0] == 0.06]
+    finest = pairs[-1] if pairs else None
+    items = [("h = 0.06", at06[0])] if at06 else []
+    if finest and not (at06 and finest is at06[0]):
+        items.append(("largest mesh of this sweep, h = %g (%d dofs)" % (finest[0], finest[1]["dofs"]), finest))
+    if items:
+        ratios = [p[2]["solve_median"] / p[1]["solve_median"] for _, p in items]
+        ok = all(x <= COST_TARGET for x in ratios)
+        text = "; ".join("%s: %s" % (label, cost_ratio_text(p[1], p[2])) for label, p in items)
+        if finest[1]["dofs"] < 5e5:
+            text += "; h = %g is this sweep's largest mesh" % finest[0]
+        A("| mortar / gpts solve time <= %g (hertz, newton, k_p 2e6, gttol 1e-8, one core; medians of runs made "
+          "interleaved) at h = 0.06 and at the largest mesh | %s | %s |"
+          % (COST_TARGET, text, status(ok) if finest[1]["dofs"] >= 5e5
+             else "%s here; at 1e6 dofs: NOT MEASURED in this sweep%s" % (
+                 status(ok), " (see the next row)" if os.path.exists(os.path.join(out, "formulations.csv")) else "")))
+    else:
+        A("| mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh | no pair of converged runs | "
+          "NOT MEASURED |" % COST_TARGET)
+    return L
+
+
+def target_formulations_cost(rows, ctx):
+    """The same ratio from formulations.csv (--formulations-cost), where it exists."""
+    fc = ctx.fc
+    L = []
+    A = L.append
+    if fc:
+        sizes = sorted({float(r["h"]) for r in fc}, reverse=True)
+        parts, oks = [], []
+        for h in sizes:
+            rr = {r["formulation"]: r for r in fc if float(r["h"]) == h}
+            if "gpts" in rr and "mortar" in rr and rr["mortar"].get("ratio"):
+                ratio = float(rr["mortar"]["ratio"])
+                oks.append(ratio <= COST_TARGET)
+                parts.append("h = %g (%s dofs): %.2f (mortar %.3g s / gpts %.3g s)" % (
+                    h, rr["gpts"]["dofs"], ratio, float(rr["mortar"]["solve_median"]),
+                    float(rr["gpts"]["solve_median"])))
+        A("| the same, from `formulations.md` (`--formulations-cost`, %s, median of %s, interleaved) | %s | %s |"
+          % (fc[0].get("date", "?"), fc[0].get("repeats", "?"), "; ".join(parts) or "-",
+             status(all(oks)) if oks else "NOT MEASURED"))
+    return L
+
+
+def report_targets(rows, ctx):
+    """The targets of the issue "Speed" and of the mortar formulation's cost, each measured, met or
+    not."""
+    L = []
+    A = L.append
+    A("## Targets")
+    A("")
+    A("| target | measured | status |")
+    A("|---|---|---|")
+    for target in TARGETS:
+        L += target(rows, ctx)
+    A("")
+    return L
+
+
+# the rows of the targets' table, in order
+TARGETS = (target_reference_solve, target_linear_ratio, target_exponent, target_fixed_costs, target_search,
+           target_mortar_cost, target_formulations_cost)
+
+
+def report_figures(rows, args, info, meshes, elapsed, load):
+    """What the sections of RESULTS.md share: the references attached to the rows, the reference scene's
+    default runs of each formulation and their fitted cost exponents, the formulations present, the
+    mortar / gpts pairs, formulations.csv's rows, and the sweep's settings."""
+    ctx = types.SimpleNamespace(out=args.out, args=args, info=info, meshes=meshes, elapsed=elapsed, load=load)
+    ctx.refs = attach_references(rows)
+    attach_profile_refs(rows)
+    ctx.ref_sel = sorted(default_runs(rows, "hertz", REF_KP), key=lambda r: r["dofs"])
+    dofs = [r["dofs"] for r in ctx.ref_sel]
+    ctx.fit_solve, ctx.n_solve = fit_exponent(dofs, [r["solve_median"] for r in ctx.ref_sel])
+    ctx.fit_wall, _ = fit_exponent(dofs, [r["wall_median"] for r in ctx.ref_sel])
+    ctx.fit_lin, _ = fit_exponent(dofs, [r.get("linear_solve_time") for r in ctx.ref_sel])
+    ctx.mort_sel = sorted(default_runs(rows, "hertz", REF_KP, formulation="mortar"), key=lambda r: r["dofs"])
+    ctx.fit_mort, ctx.n_mort = fit_exponent([r["dofs"] for r in ctx.mort_sel], [r["solve_median"] for r in ctx.mort_sel])
+    ctx.forms = [f for f in FORMULATIONS if any(r["formulation"] == f for r in rows)]
+    ctx.pairs = formulation_ratio_rows(rows)
+    ctx.fc = read_formulations_cost(args.out)
+    return ctx
+
+
+# the sections of RESULTS.md, in order
+REPORT_SECTIONS = (report_header, report_machine, report_design, report_definitions, report_targets, report_formulations,
+                   report_cheapest, report_scaling, report_ranks, report_half_model, report_graded, report_strategies,
+                   report_failures, report_meshes, report_files)
+
+
+def report(rows, args, info, meshes, elapsed, load):
+    """RESULTS.md, results.csv and the plots of a sweep, from its rows."""
+    ctx = report_figures(rows, args, info, meshes, elapsed, load)
+    write_csv(rows, os.path.join(args.out, "results.csv"))
+    try:
+        plots(rows, args.out, ctx.fit_solve, ctx.fit_lin)
+    except Exception as e:
+        print("plots failed: %s" % e, file=sys.stderr)
+    L = []
+    for section in REPORT_SECTIONS:
+        L += section(rows, ctx)
+    with open(os.path.join(args.out, "RESULTS.md.tmp"), "w") as fh:
         fh.write("\n".join(L) + "\n")
-    os.replace(os.path.join(out, "RESULTS.md.tmp"), os.path.join(out, "RESULTS.md"))
+    os.replace(os.path.join(args.out, "RESULTS.md.tmp"), os.path.join(args.out, "RESULTS.md"))
 
 
 def status(ok):
@@ -1364,13 +1425,10 @@ COST_FIELDS = ["date", "h", "formulation", "dofs", "repeats", "solve_runs", "wal
                "contact_hessian_time_per_call"]
 
 
-def formulations_cost(args, R):
-    """Both formulations' reference runs on hertz at each size of
-    --cost-sizes, interleaved, --repeat times, -log_view on every run:
-    <out>/formulations.csv and <out>/formulations.md."""
-    sizes = [float(x) for x in args.cost_sizes.split(",")]
-    date = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
-    load0 = "%.2f" % os.getloadavg()[0]
+def measure_formulations_cost(args, R, sizes, date):
+    """Both formulations' reference runs on hertz at each size, interleaved,
+    --repeat times, -log_view on every run: the rows, each with its solve
+    time's ratio to gpts'."""
     rows = []
     for h in sizes:
         mt, err = R.mesh("hertz", h)
@@ -1390,8 +1448,11 @@ def formulations_cost(args, R):
                 row.get("solve_runs", ""), fmt(row.get("ratio"), "%.2f"), pct(row.get("contact_share")),
                 row["reason"]))
         rows += done
-    write_csv(rows, os.path.join(args.out, "formulations.csv"), COST_FIELDS)
+    return rows
 
+
+def cost_header(args, date, load0):
+    """formulations.md's title, provenance and design."""
     L = []
     A = L.append
     A("# Cost of the mortar formulation (`scripts/bench.py --formulations-cost`)")
@@ -1400,8 +1461,7 @@ def formulations_cost(args, R):
       "machine (%s cores; load average %s at the start, %.2f at the end)."
       % (date, " ".join(sys.argv[1:]), time.time() - args.t0,
          os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
-         git_info(args.out), args.bin_sha, subprocess.run(["nproc"], capture_output=True, text=True).stdout.strip(), load0,
-         os.getloadavg()[0]))
+         git_info(args.out), args.bin_sha, nproc(), load0, load_average()))
     A("")
     A("The reference scene (hertz), newton, k_p = 2e6, gttol 1e-8, one rank, `-output none`, each formulation "
       "run %d times, interleaved (gpts, mortar, gpts, mortar, ...), so that both see the same load; every run "
@@ -1409,6 +1469,13 @@ def formulations_cost(args, R):
       "repeats. Target: mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh (issue \"A contact "
       "pressure that converges\", item 7)." % (args.repeat, COST_TARGET))
     A("")
+    return L
+
+
+def cost_ratio_table(rows, sizes):
+    """The mortar / gpts solve time ratio per size, against the target."""
+    L = []
+    A = L.append
     A("| h | dofs | solve gpts [s] | solve mortar [s] | mortar / gpts | status |")
     A("|---|---|---|---|---|---|")
     for h in sizes:
@@ -1422,6 +1489,13 @@ def formulations_cost(args, R):
     A("")
     A("(solve columns: the repeats in the order run; the ratio is that of the medians.)")
     A("")
+    return L
+
+
+def cost_breakdown_table(rows):
+    """Where each formulation's Solve stage goes, per size."""
+    L = []
+    A = L.append
     A("Where the Solve stage goes (medians over the repeats' -log_view, Solve stage only). *factor K*: "
       "SchurFactorK, the sparse factorisation of the elastic stiffness, once per solve; *Newton linear "
       "algebra*: KSPSolve + PCSetUp (per step: the surface block's dense factorisation and the solves through "
@@ -1450,7 +1524,20 @@ def formulations_cost(args, R):
             fmt(1e3 * r["segments_time_per_call"] if finite(r.get("segments_time_per_call")) else None),
             r.get("peak_mb", float("nan")), fmt(r.get("P"), "%.6g"), pct(r.get("l2_err"))))
     A("")
-    A("Files: formulations.csv (one row per size and formulation), formulations.log (the run's log).")
+    return L
+
+
+def formulations_cost(args, R):
+    """Both formulations' reference runs on hertz at each size of
+    --cost-sizes, interleaved, --repeat times, -log_view on every run:
+    <out>/formulations.csv and <out>/formulations.md."""
+    sizes = [float(x) for x in args.cost_sizes.split(",")]
+    date = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    load0 = "%.2f" % load_average()
+    rows = measure_formulations_cost(args, R, sizes, date)
+    write_csv(rows, os.path.join(args.out, "formulations.csv"), COST_FIELDS)
+    L = cost_header(args, date, load0) + cost_ratio_table(rows, sizes) + cost_breakdown_table(rows)
+    L.append("Files: formulations.csv (one row per size and formulation), formulations.log (the run's log).")
     with open(os.path.join(args.out, "formulations.md.tmp"), "w") as fh:
         fh.write("\n".join(L) + "\n")
     os.replace(os.path.join(args.out, "formulations.md.tmp"), os.path.join(args.out, "formulations.md"))
@@ -1459,7 +1546,7 @@ def formulations_cost(args, R):
 
 # -------------------------------------------------------------------- main
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help="the quick variant (target: under 5 minutes on 2 cores)")
     ap.add_argument("--repeat", type=int, default=None, help="runs per configuration (default 3; quick 1)")
@@ -1479,8 +1566,11 @@ def main():
     args.repeat = args.repeat or (1 if args.quick else 3)
     args.timeout = args.timeout or (90.0 if args.quick else 1800.0)
     args.t0 = time.time()
-    os.chdir(ROOT)
+    return args
 
+
+def select_plan(args):
+    """The sweep's plan, kept to --only's entries where given."""
     plan = sweep_plan(args.quick)
     if args.only:
         keep = []
@@ -1491,102 +1581,142 @@ def main():
                     keep.append(e)
                     break
         plan = keep
+    return plan
+
+
+def report_only(args):
+    """RESULTS.md and the plots again from <out>/results.csv and
+    <out>/run.json (the settings and figures of the run that wrote them)."""
+    with open(os.path.join(args.out, "run.json")) as fh:
+        meta = json.load(fh)
+    for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
+        setattr(args, k, meta[k])
+    sys.argv = [sys.argv[0]] + meta["argv"]
+    report(read_csv(os.path.join(args.out, "results.csv")), args, meta["info"], meta["meshes"],
+           meta["elapsed"], meta["load"])
+    print("rewrote %s/RESULTS.md and the plots" % args.out)
+
+
+def linear_baselines(R, e, args):
+    """The linear baseline of a plan entry's mesh at each rank count of its
+    configurations: {ranks: {solve, wall, dofs, peak_mb, reason}}."""
+    scene, h = e["scene"], e["h"]
+    lin = {}
+    for ranks in sorted({c[3] for c in e["configs"]}):
+        # the baseline is cheap beside the contact runs: at least 3 repeats, except on
+        # the meshes whose contact runs are single
+        rep = 1 if all(c[4] == 1 for c in e["configs"] if c[3] == ranks) else max(args.repeat, 3)
+        lin[ranks] = run_linear(R, scene, h, ranks, rep)
+        R.say("%s h=%g: linear baseline, %d rank(s): solve %.3g s, %s dofs %s" % (
+            scene, h, ranks, lin[ranks]["solve"], lin[ranks]["dofs"], lin[ranks]["reason"]))
+    return lin
+
+
+def attach_linear(row, lin):
+    """A row's linear solve time (its rank count's baseline, else one
+    rank's), its ratio to it, and its dofs where the run gave none."""
+    base = lin.get(row["ranks"]) or lin.get(1)
+    if not row.get("dofs") and base and base.get("dofs"):
+        row["dofs"] = base["dofs"]
+    row["linear_solve_time"] = base["solve"] if base else float("nan")
+    if finite(row.get("solve_median")) and base and finite(base["solve"]) and base["solve"] > 0:
+        row["ratio_to_linear"] = row["solve_median"] / base["solve"]
+
+
+def spread_event_costs(rows, scene, h, ev_rows):
+    """The mesh's search/energy costs (from the -log_view of ev_rows, one
+    row per formulation), on every row of that mesh and formulation."""
+    for form, ev_row in ev_rows.items():
+        for r in rows:
+            if (r["scene"] == scene and r["h"] == h and r["formulation"] == form
+                    and not finite(r.get("search_time_per_call"))):
+                for k in ("search_time_per_call", "energy_time_per_call", "contact_hessian_time_per_call",
+                          "segments_time_per_call"):
+                    r[k] = ev_row.get(k)
+
+
+def sweep_mesh(R, e, rows, args):
+    """One entry of the plan: its meshes, its linear baselines, then its
+    configurations in interleaved groups; their rows appended to rows (and
+    written to results.csv); returns the mesh's record."""
+    scene, h = e["scene"], e["h"]
+    m = {"scene": scene, "h": h}
+    mt, err = R.mesh(scene, h)
+    m["mesh_time"] = mt
+    if err:
+        R.say("%s h=%g: %s" % (scene, h, err))
+        m["note"] = err
+        for (s, kp, tol, ranks, rep, form) in e["configs"]:
+            rows.append({"scene": scene, "h": h, "formulation": form, "strategy": s, "kp": kp, "gttol": tol,
+                         "ranks": ranks, "converged": False, "reason": err})
+        return m
+    lin = linear_baselines(R, e, args)
+    m["dofs"], m["linear"] = lin[1]["dofs"] if 1 in lin else None, lin.get(1, {}).get("solve")
+    m["note"] = lin.get(1, {}).get("reason", "")
+    ev_rows = {}
+    for group in interleave_groups(e["configs"]):
+        done = run_interleaved(R, scene, h, group, args.repeat,
+                               lambda c: "first" if c[:3] == (REF_STRATEGY, REF_KP, REF_TOL) else None,
+                               lambda c: c[3] == 1)
+        for row in done:
+            attach_linear(row, lin)
+            if row["ranks"] == 1 and finite(row.get("search_time_per_call")):
+                ev_rows.setdefault(row["formulation"], row)
+            rows.append(row)
+            R.say("%-52s %8s dofs  it %5s  solve %7s s  wall %7s s  %6s MB  l2 %8s  %s" % (
+                config_name(row), row.get("dofs", "-"), row.get("iterations", "-"),
+                fmt(row.get("solve_median")), fmt(row.get("wall_median")), fmt(row.get("peak_mb"), "%.0f"),
+                pct(row.get("l2_err")), row["reason"]))
+    spread_event_costs(rows, scene, h, ev_rows)
+    write_csv(rows, os.path.join(args.out, "results.csv"))
+    return m
+
+
+def run_sweep(args, plan, nconf, tmp):
+    """The plan, mesh by mesh, then run.json and the report."""
+    R = Sweep(args, tmp)
+    info = machine_info()
+    load0 = "%.2f" % load_average()
+    R.say("%d meshes, %d configurations, repeat %d, timeout %g s, out %s" % (len(plan), nconf, args.repeat,
+                                                                              args.timeout, args.out))
+    rows = []
+    meshes = [sweep_mesh(R, e, rows, args) for e in plan]
+    elapsed = time.time() - args.t0
+    load = (load0, "%.2f" % load_average())
+    with open(os.path.join(args.out, "run.json"), "w") as fh:
+        json.dump({"quick": args.quick, "repeat": args.repeat, "timeout": args.timeout, "bin_orig": args.bin_orig,
+                   "bin_sha": args.bin_sha, "argv": sys.argv[1:], "info": info, "meshes": meshes,
+                   "elapsed": elapsed, "load": load}, fh, indent=1)
+    report(rows, args, info, meshes, elapsed, load)
+    R.say("done in %.0f s: %s/results.csv, RESULTS.md, error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png"
+          % (elapsed, args.out))
+
+
+def main():
+    args = parse_args()
+    os.chdir(ROOT)
+    plan = select_plan(args)
     nconf = sum(len(e["configs"]) for e in plan)
     if args.dry_run:
         for e in plan:
             print("%-13s h=%-6g %3d configurations" % (e["scene"], e["h"], len(e["configs"])))
         print("total %d configurations (x repeat %d, plus one linear baseline per mesh)" % (nconf, args.repeat))
         return 0
-
     os.makedirs(args.out, exist_ok=True)
     args.out = os.path.abspath(args.out)
     if args.report_only:
-        with open(os.path.join(args.out, "run.json")) as fh:
-            meta = json.load(fh)
-        for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
-            setattr(args, k, meta[k])
-        sys.argv = [sys.argv[0]] + meta["argv"]
-        report(read_csv(os.path.join(args.out, "results.csv")), args, meta["info"], meta["meshes"],
-               meta["elapsed"], meta["load"])
-        print("rewrote %s/RESULTS.md and the plots" % args.out)
+        report_only(args)
         return 0
     tmp = tempfile.mkdtemp(prefix="bench-")
     try:
         args.bin_orig = os.path.abspath(args.bin)
         with open(args.bin_orig, "rb") as fh:
             args.bin_sha = hashlib.sha256(fh.read()).hexdigest()[:12]
-        args.bin = os.path.join(tmp, "contact")
-        shutil.copy2(args.bin_orig, args.bin)
+        args.bin = contactrun.copy_program(tmp, args.bin_orig)
         if args.formulations_cost:
-            formulations_cost(args, Runner(args, tmp, "formulations.log"))
-            return 0
-        R = Runner(args, tmp)
-        info = machine_info()
-        load0 = "%.2f" % os.getloadavg()[0]
-        R.say("%d meshes, %d configurations, repeat %d, timeout %g s, out %s" % (len(plan), nconf, args.repeat,
-                                                                                  args.timeout, args.out))
-        rows, meshes = [], []
-        for e in plan:
-            scene, h = e["scene"], e["h"]
-            m = {"scene": scene, "h": h}
-            meshes.append(m)
-            mt, err = R.mesh(scene, h)
-            m["mesh_time"] = mt
-            if err:
-                R.say("%s h=%g: %s" % (scene, h, err))
-                m["note"] = err
-                for (s, kp, tol, ranks, rep, form) in e["configs"]:
-                    rows.append({"scene": scene, "h": h, "formulation": form, "strategy": s, "kp": kp, "gttol": tol,
-                                 "ranks": ranks, "converged": False, "reason": err})
-                continue
-            lin = {}
-            for ranks in sorted({c[3] for c in e["configs"]}):
-                # the baseline is cheap beside the contact runs: at least 3 repeats, except on
-                # the meshes whose contact runs are single
-                rep = 1 if all(c[4] == 1 for c in e["configs"] if c[3] == ranks) else max(args.repeat, 3)
-                lin[ranks] = run_linear(R, scene, h, ranks, rep)
-                R.say("%s h=%g: linear baseline, %d rank(s): solve %.3g s, %s dofs %s" % (
-                    scene, h, ranks, lin[ranks]["solve"], lin[ranks]["dofs"], lin[ranks]["reason"]))
-            m["dofs"], m["linear"] = lin[1]["dofs"] if 1 in lin else None, lin.get(1, {}).get("solve")
-            m["note"] = lin.get(1, {}).get("reason", "")
-            ev_rows = {}
-            for group in interleave_groups(e["configs"]):
-                done = run_interleaved(R, scene, h, group, args.repeat,
-                                       lambda c: "first" if c[:3] == (REF_STRATEGY, REF_KP, REF_TOL) else None,
-                                       lambda c: c[3] == 1)
-                for row in done:
-                    ranks = row["ranks"]
-                    L = lin.get(ranks) or lin.get(1)
-                    if not row.get("dofs") and L and L.get("dofs"):
-                        row["dofs"] = L["dofs"]
-                    row["linear_solve_time"] = L["solve"] if L else float("nan")
-                    if finite(row.get("solve_median")) and L and finite(L["solve"]) and L["solve"] > 0:
-                        row["ratio_to_linear"] = row["solve_median"] / L["solve"]
-                    if ranks == 1 and finite(row.get("search_time_per_call")):
-                        ev_rows.setdefault(row["formulation"], row)
-                    rows.append(row)
-                    R.say("%-52s %8s dofs  it %5s  solve %7s s  wall %7s s  %6s MB  l2 %8s  %s" % (
-                        config_name(row), row.get("dofs", "-"), row.get("iterations", "-"),
-                        fmt(row.get("solve_median")), fmt(row.get("wall_median")), fmt(row.get("peak_mb"), "%.0f"),
-                        pct(row.get("l2_err")), row["reason"]))
-            # the mesh's search/energy costs, on every row of that mesh and formulation
-            for form, ev_row in ev_rows.items():
-                for r in rows:
-                    if (r["scene"] == scene and r["h"] == h and r["formulation"] == form
-                            and not finite(r.get("search_time_per_call"))):
-                        for k in ("search_time_per_call", "energy_time_per_call", "contact_hessian_time_per_call",
-                                  "segments_time_per_call"):
-                            r[k] = ev_row.get(k)
-            write_csv(rows, os.path.join(args.out, "results.csv"))
-        elapsed = time.time() - args.t0
-        load = (load0, "%.2f" % os.getloadavg()[0])
-        with open(os.path.join(args.out, "run.json"), "w") as fh:
-            json.dump({"quick": args.quick, "repeat": args.repeat, "timeout": args.timeout, "bin_orig": args.bin_orig,
-                       "bin_sha": args.bin_sha, "argv": sys.argv[1:], "info": info, "meshes": meshes,
-                       "elapsed": elapsed, "load": load}, fh, indent=1)
-        report(rows, args, info, meshes, elapsed, load)
-        R.say("done in %.0f s: %s/results.csv, RESULTS.md, error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png"
-              % (elapsed, args.out))
+            formulations_cost(args, Sweep(args, tmp, "formulations.log"))
+        else:
+            run_sweep(args, plan, nconf, tmp)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return 0

@@ -31,15 +31,14 @@ import argparse
 import csv
 import os
 import shutil
-import statistics
-import subprocess
 import sys
 import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench import git_info, machine_info  # noqa: E402
+from contactrun import (copy_program, event_totals, git_info, load_average, machine_info,  # noqa: E402
+                        median, mesh_only, parse_log_view, run)
 
 SCENE = "meshes/hertz/hertz.opts"
 # configuration name -> (ranks, extra options)
@@ -97,115 +96,68 @@ def children_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def load_average():
-    with open("/proc/loadavg") as fh:
-        return float(fh.read().split()[0])
-
-
-def parse_log_view(path):
-    """Per event: the max time over ranks summed over stages; per stage: its
-    max time over ranks (the Summary of Stages gives the average)."""
-    events, stages, stage = {}, {}, None
-    try:
-        with open(path) as fh:
-            text = fh.read()
-    except OSError:
-        return events, stages
-    text = text.split("Memory usage is given in bytes")[0]
-    for line in text.split("\n"):
-        if line.startswith("--- Event Stage"):
-            stage = line.split(":", 1)[1].strip()
-            continue
-        parts = line.split()
-        if len(parts) > 4 and parts[0] in EVENTS:
-            try:
-                t = float(parts[3])
-            except ValueError:
-                continue
-            events[parts[0]] = events.get(parts[0], 0.0) + t
-    # stage times: max over ranks is not printed per stage; use the
-    # 'Summary of Stages' average, which the ranks share up to the barrier
-    # at the stage's end
-    in_summary = False
-    for line in text.split("\n"):
-        if line.startswith("Summary of Stages"):
-            in_summary = True
-            continue
-        if in_summary:
-            parts = line.split()
-            if len(parts) > 3 and parts[0].rstrip(":").isdigit():
-                name = parts[1].rstrip(":")
-                try:
-                    stages[name] = float(parts[2])
-                except ValueError:
-                    pass
-            elif stages and not line.strip():
-                break
-    return events, stages
-
-
-def run(args, binary, h, name, rep, tmp):
-    ranks, extra = CONFIGS[name]
-    tag = "h%s_%s_r%d" % (h, name.replace(":", "-"), rep)
-    js, lv = os.path.join(tmp, tag + ".json"), os.path.join(tmp, tag + ".log")
-    mem = os.path.join(tmp, tag + ".mem")
-    cmd = [binary, "-options_file", SCENE, "-mesh_size", repr(h), "-output", "none", "-summary", js,
-           "-log_view", ":" + lv] + (["-contact_formulation", args.formulation] if args.formulation else []) + extra
-    # each rank's peak resident memory (GNU time %M, kB) into mem.<rank>
-    cmd = ["sh", "-c", 'exec /usr/bin/time -f %M -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', mem] + cmd
-    if ranks > 1:
-        cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+def run_when_quiet(args, binary, opts, ranks, tmp, tag, label):
+    """One run, started once no other process is running (--quiet-wait),
+    with its JSON summary, -log_view and each rank's peak memory in tmp; run
+    again, at most --retries times, while other processes took more than
+    --foreign-max of a core during it. Returns the last Run and the figures
+    of its load: {load, waited, foreign, attempts}."""
+    files = dict(summary=os.path.join(tmp, tag + ".json"), log_view=os.path.join(tmp, tag + ".log"),
+                 peak_memory=os.path.join(tmp, tag + ".mem"))
     for attempt in range(1, args.retries + 2):
         waited = wait_quiet(args.quiet_wait)
         load = load_average()
         busy, ours = busy_seconds(), children_seconds()
-        t = time.perf_counter()
-        p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=args.timeout)
-        wall = time.perf_counter() - t
+        res = run(opts, ranks, binary, output="none", timeout=args.timeout, **files)
+        if res.timed_out:
+            raise SystemExit("%s: no answer after %g s (--timeout)" % (label, args.timeout))
         # CPU time that other processes took during the run, as a fraction of one
         # core; below 0.15 s in all it is taken for the run's own (a 1-rank run's
         # MPI singleton starts an orted of its own, outside this script's children)
         other = max(0.0, (busy_seconds() - busy) - (children_seconds() - ours))
-        foreign = other / wall
-        if p.returncode or foreign <= args.foreign_max or other <= 0.15 or attempt > args.retries:
+        foreign = other / res.wall
+        if res.returncode or foreign <= args.foreign_max or other <= 0.15 or attempt > args.retries:
             break
-        print("h %-6s %-16s repeat %d: other processes took %.0f %% of a core during the run (%.2f s); again"
-              % (h, name, rep, 100 * foreign, wall), flush=True)
-    row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": load, "waited": waited, "wall": wall,
-           "rc": p.returncode, "foreign": foreign, "attempts": attempt}
-    if p.returncode == 0 and os.path.exists(js):
-        import json
-        with open(js) as fh:
-            s = json.load(fh)
+        print("%s: other processes took %.0f %% of a core during the run (%.2f s); again"
+              % (label, 100 * foreign, res.wall), flush=True)
+    return res, {"load": load, "waited": waited, "foreign": foreign, "attempts": attempt}
+
+
+def run_config(args, binary, h, name, rep, tmp):
+    """One repeat of configuration name at mesh size h: its row (the run's
+    load, wall time and exit status, the summary's figures, peak memory, the
+    -log_view events and stages)."""
+    ranks, extra = CONFIGS[name]
+    tag = "h%s_%s_r%d" % (h, name.replace(":", "-"), rep)
+    opts = (["-options_file", SCENE, "-mesh_size", repr(h)]
+            + (["-contact_formulation", args.formulation] if args.formulation else []) + extra)
+    res, quiet = run_when_quiet(args, binary, opts, ranks, tmp, tag, "h %-6s %-16s repeat %d" % (h, name, rep))
+    row = {"h": h, "config": name, "ranks": ranks, "repeat": rep, "load": quiet["load"], "waited": quiet["waited"],
+           "wall": res.wall, "rc": res.returncode, "foreign": quiet["foreign"], "attempts": quiet["attempts"]}
+    s = res.summary if res.returncode == 0 else None
+    if s:
         row.update(dofs=s["dofs"], iterations=s["iterations"], evaluations=s.get("function_evaluations", ""),
                    P=s["contact_force"], energy=s["energy"],
                    formulation=",".join(sorted({c["formulation"] for c in s.get("contact", {}).values()})))
         for k, v in s["time"].items():
             row["time_" + k] = v
-    peaks = []
-    for q in range(ranks):
-        try:
-            with open("%s.%d" % (mem, q)) as fh:
-                peaks.append(int([l for l in fh.read().split("\n") if l.strip()][-1]) / 1024.0)
-        except (OSError, ValueError, IndexError):
-            pass
-    if len(peaks) == ranks:
-        row["mem_max_rank_mb"] = max(peaks)
-        row["mem_total_mb"] = sum(peaks)
-    events, stages = parse_log_view(lv)
+    if None not in res.peaks:
+        row["mem_max_rank_mb"] = max(res.peaks)
+        row["mem_total_mb"] = sum(res.peaks)
+    lv = parse_log_view(os.path.join(tmp, tag + ".log"))
+    events = event_totals(lv)
     for e in EVENTS:
-        row["ev_" + e] = events.get(e, "")
+        row["ev_" + e] = events[e][1] if e in events else ""
     for st in STAGES:
-        row["stage_" + st] = stages.get(st, "")
+        row["stage_" + st] = lv["stages"].get(st, "")
     if args.keep_logs and rep == 1:
-        shutil.copy(lv, os.path.join(args.out, tag + ".log_view.txt"))
+        shutil.copy(os.path.join(tmp, tag + ".log"), os.path.join(args.out, tag + ".log_view.txt"))
     return row
 
 
 def med(rows, key):
-    v = [r[key] for r in rows if isinstance(r.get(key), (int, float))]
-    return statistics.median(v) if v else float("nan")
+    """The median of a column over rows."""
+    return median(r.get(key) for r in rows)
 
 
 def rank_pairs(rows):
@@ -267,7 +219,7 @@ def report(args, rows, info, elapsed):
     L.append("Machine: %s, %s cores, %s, %s; PETSc %s. Load average before the runs: median %.2f, max %.2f "
              "(the machine is shared; a run's load includes other users' jobs).\n"
              % (info["cpu"], info["nproc"], info["mem"], info["blas"], info["petsc"],
-                statistics.median(r["load"] for r in rows), max(r["load"] for r in rows)))
+                median(r["load"] for r in rows), max(r["load"] for r in rows)))
     forms = sorted({r["formulation"] for r in rows if r.get("formulation")})
     L.append("Reference scene, contact formulation %s (%s), default solver, k_p = 2e6, `-tao_gttol 1e-8`, "
              "`-output none`; configurations interleaved, %d repeats, medians. Speed-up: median over 1 rank "
@@ -277,8 +229,8 @@ def report(args, rows, info, elapsed):
              "median %.1f %%, at most %.0f %% of a core during the kept runs).\n"
              % (", ".join(forms) or "?", "`-contact_formulation %s`" % args.formulation if args.formulation
                 else "the program's default", args.repeat, args.quiet_wait,
-                statistics.median(r["waited"] for r in rows), 100 * args.foreign_max, args.retries,
-                sum(r["attempts"] > 1 for r in rows), len(rows), 100 * statistics.median(r["foreign"] for r in rows),
+                median(r["waited"] for r in rows), 100 * args.foreign_max, args.retries,
+                sum(r["attempts"] > 1 for r in rows), len(rows), 100 * median(r["foreign"] for r in rows),
                 100 * max(r["foreign"] for r in rows)))
     pairs = rank_pairs(rows)
     L += speedup_table(pairs)
@@ -313,7 +265,7 @@ def report(args, rows, info, elapsed):
     print("\n".join(L))
 
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--sizes", default="0.06,0.015,0.01,0.0065")
@@ -338,35 +290,51 @@ def main():
             ap.error("unknown configuration %s (known: %s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(os.path.join(ROOT, args.out), exist_ok=True)
     args.out = os.path.join(ROOT, args.out)
-    sizes = [float(h) for h in args.sizes.split(",")]
-    info = machine_info()
-    t0 = time.time()
+    return args
+
+
+def measure(args, sizes):
+    """Every configuration at every size, interleaved (repeat 1 of each,
+    then repeat 2, ...), on a copy of the program, the meshes generated
+    first: the rows."""
     rows = []
     with tempfile.TemporaryDirectory(prefix="bench-par-") as tmp:
-        binary = os.path.join(tmp, "contact")
-        shutil.copy(os.path.join(ROOT, args.bin), binary)
-        env = dict(os.environ)
+        binary = copy_program(tmp, os.path.join(ROOT, args.bin))
         for h in sizes:
-            subprocess.run([binary, "-options_file", SCENE, "-mesh_size", repr(h), "-mesh_only"], cwd=ROOT, env=env,
-                           check=True, capture_output=True)
+            res = mesh_only(["-options_file", SCENE, "-mesh_size", repr(h)], binary)
+            if res.returncode:
+                raise SystemExit("%s failed:\n%s%s" % (" ".join(res.cmd), res.stdout, res.stderr))
         for h in sizes:
             for rep in range(1, args.repeat + 1):
                 for name in args.configs:
-                    r = run(args, binary, h, name, rep, tmp)
+                    r = run_config(args, binary, h, name, rep, tmp)
                     rows.append(r)
                     print("h %-6s %-16s repeat %d: solve %s s, wall %.2f s, load %.2f" %
                           (h, name, rep, "%.2f" % r["time_solve"] if "time_solve" in r else "FAILED rc %s" % r["rc"],
                            r["wall"], r["load"]), flush=True)
+    return rows
+
+
+def write_rows(rows, path):
+    """results.csv: one row per run, the columns in order of first appearance."""
     keys = []
     for r in rows:
         for k in r:
             if k not in keys:
                 keys.append(k)
-    with open(os.path.join(args.out, "results.csv"), "w", newline="") as fh:
+    with open(path, "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=keys)
         w.writeheader()
         for r in rows:
             w.writerow(r)
+
+
+def main():
+    args = parse_args()
+    info = machine_info()
+    t0 = time.time()
+    rows = measure(args, [float(h) for h in args.sizes.split(",")])
+    write_rows(rows, os.path.join(args.out, "results.csv"))
     report(args, rows, info, time.time() - t0)
 
 

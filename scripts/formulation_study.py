@@ -29,54 +29,20 @@ on 2 cores.
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import profile_metrics as pm  # noqa: E402
+from contactrun import run_checked  # noqa: E402
 
 FORMULATIONS = ["gpts", "mortar"]
 HS = [0.1, 0.06, 0.03, 0.015]
 HREF = 0.005
 AH = [6, 12, 24, 48]
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-
-
-def launch(args, tmp, name, ranks=1, h5=True, binary=None, timeout=None):
-    """Runs bin/contact (or binary) from the repository root, on ranks MPI
-    ranks (mpiexec from 2), with its HDF5 output in tmp (h5=False: -output
-    none) and its JSON summary in tmp; returns (CompletedProcess, summary dict
-    or None where the run wrote none, HDF5 path or None, wall seconds). A run
-    that outlasts timeout seconds is killed (subprocess.TimeoutExpired)."""
-    out = os.path.join(tmp, name + ".h5") if h5 else "none"
-    js = os.path.join(tmp, name + ".json")
-    if os.path.exists(js):
-        os.remove(js)
-    cmd = [binary or os.path.join(ROOT, "bin", "contact")] + args + ["-output", out, "-summary", js]
-    if ranks > 1:
-        cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
-    t0 = time.perf_counter()
-    p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=timeout)
-    wall = time.perf_counter() - t0
-    summ = None
-    if os.path.exists(js):
-        with open(js) as f:
-            summ = json.load(f)
-    return p, summ, (out if h5 else None), wall
-
-
-def run(args, tmp, name, ok=(0,), binary=None):
-    """Runs bin/contact (or binary); returns (summary dict, HDF5 path). An
-    exit status not in ok stops the script."""
-    p, summ, h5, _ = launch(args, tmp, name, binary=binary)
-    if p.returncode not in ok:
-        raise SystemExit(f"{' '.join(p.args)} failed:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
-    return summ, h5
 
 
 def slave_profiles(h5):
@@ -85,12 +51,12 @@ def slave_profiles(h5):
 
 def convergence(form, tmp):
     base = ["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation", form]
-    runs = {h: run(base + ["-mesh_size", str(h)], tmp, f"{form}-h{h}") for h in HS + [HREF]}
-    ref = slave_profiles(runs[HREF][1])
+    runs = {h: run_checked(base + ["-mesh_size", str(h)], tmp, f"{form}-h{h}") for h in HS + [HREF]}
+    ref = slave_profiles(runs[HREF].h5)
     rows = []
     for h in HS:
-        summ, h5 = runs[h]
-        prof = slave_profiles(h5)
+        summ = runs[h].summary
+        prof = slave_profiles(runs[h].h5)
         d, osc, pmax, a = [], [], [], []
         for k, p in prof.items():
             r = ref[k]
@@ -104,25 +70,24 @@ def convergence(form, tmp):
                          hertz_l2=summ["pressure_l2_error"]))
     rate = float(np.polyfit(np.log(HS), np.log([r["l2"] for r in rows]), 1)[0])
     return dict(rows=rows, rate=rate, ref_pmax=float(np.mean([p[1].max() for p in ref.values()])),
-                ref_dofs=runs[HREF][0]["dofs"])
+                ref_dofs=runs[HREF].summary["dofs"])
 
 
 def hertz_small(form, tmp):
     rows = []
     for n in AH:
         geo = f"hc={0.1036 / n:.6g},rc=0.14,dc=0.3"
-        summ, _ = run(["-options_file", "meshes/hertz-small/hertz-small.opts", "-contact_formulation", form,
-                       "-indenter_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5," + geo,
-                       "-block_geo_params", "x0=0,W=1,H=2," + geo], tmp, f"{form}-small{n}")
+        summ = run_checked(["-options_file", "meshes/hertz-small/hertz-small.opts", "-contact_formulation", form,
+                            "-indenter_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5," + geo,
+                            "-block_geo_params", "x0=0,W=1,H=2," + geo], tmp, f"{form}-small{n}").summary
         rows.append(dict(ah=n, dofs=summ["dofs"], l2=summ["pressure_l2_error"],
                          pmax=summ["fem_pmax"] / summ["hertz_pmax"] - 1, a=summ["fem_a"] / summ["hertz_a"] - 1))
     return rows
 
 
 def patch(form, tmp):
-    summ, h5 = run(["-options_file", "meshes/patch/patch.opts", "-contact_formulation", form, "-tao_gttol", "1e-12"],
-                   tmp, f"{form}-patch")
-    prof = slave_profiles(h5)
+    prof = slave_profiles(run_checked(["-options_file", "meshes/patch/patch.opts", "-contact_formulation", form,
+                                       "-tao_gttol", "1e-12"], tmp, f"{form}-patch").h5)
     p = np.concatenate([v[1] for v in prof.values()])
     return dict(pmin=float(p.min()), pmax=float(p.max()), maxrel=float(np.abs(p / 8.0 - 1).max()))
 
@@ -134,24 +99,23 @@ ALTERNATIVES = [("dual", "first", None), ("quadratic", "first", None), ("linear"
 def alternatives(tmp):
     """The mortar design choices at h = 0.06 and 0.03 on the half reference
     scene, against the default's finest run; and the patch test of each."""
-    ref = slave_profiles(run(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation", "mortar",
-                              "-mesh_size", str(HREF)], tmp, "alt-ref")[1])
+    ref = slave_profiles(run_checked(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation",
+                                      "mortar", "-mesh_size", str(HREF)], tmp, "alt-ref").h5)
     rows = []
     for basis, slave, blend in ALTERNATIVES:
         opts = ["-contact_formulation", "mortar", "-contact_mortar_basis", basis, "-contact_mortar_slave", slave]
         opts += ["-contact_blend", str(blend)] if blend is not None else []
         row = dict(basis=basis, slave=slave, blend=blend if blend is not None else 0.0)
         for h in (0.06, 0.03):
-            _, h5 = run(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", str(h)] + opts, tmp,
-                        f"alt-{basis}-{slave}-{blend}-{h}")
-            prof = slave_profiles(h5)
+            prof = slave_profiles(run_checked(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size",
+                                               str(h)] + opts, tmp, f"alt-{basis}-{slave}-{blend}-{h}").h5)
             r = ref["indenter_contact"]
             row[f"osc{h}"] = max(pm.oscillation(*p) for p in prof.values())
             row[f"pmax{h}"] = float(np.mean([p[1].max() for p in prof.values()]))
             if "indenter_contact" in prof:
                 row[f"l2{h}"] = pm.l2_distance(prof["indenter_contact"], r)
-        summ, h5 = run(["-options_file", "meshes/patch/patch.opts", "-tao_gttol", "1e-12"] + opts, tmp,
-                       f"alt-{basis}-{slave}-{blend}-patch")
+        h5 = run_checked(["-options_file", "meshes/patch/patch.opts", "-tao_gttol", "1e-12"] + opts, tmp,
+                         f"alt-{basis}-{slave}-{blend}-patch").h5
         pp = np.concatenate([v[1] for v in slave_profiles(h5).values()])
         row["patch"] = float(np.abs(pp / 8.0 - 1).max())
         rows.append(row)

@@ -36,8 +36,8 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import formulation_study  # noqa: E402
 import profile_metrics as pm  # noqa: E402
+from contactrun import run_checked  # noqa: E402
 
 MEASURED_H = [0.05, 0.055, 0.06, 0.065, 0.07, 0.08, 0.03]
 KINDS = ["point", "dual", "quadratic", "sublinear", "tributary"]
@@ -105,8 +105,8 @@ def main():
             res["floor"].append({"a_over_h": aoh, "kind": kind, "min": min(v), "median": float(np.median(v)), "max": max(v)})
     with tempfile.TemporaryDirectory() as tmp:
         for h in MEASURED_H:
-            _, h5 = formulation_study.run(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation",
-                                           "mortar", "-mesh_size", str(h), "-quiet"], tmp, "h%g" % h)
+            h5 = run_checked(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation", "mortar",
+                              "-mesh_size", str(h), "-quiet"], tmp, "h%g" % h).h5
             for (sv, p, w, g) in pm.profiles(h5)[0].values():
                 a = pm.half_width(sv, p, w, g)
                 res["measured"].append({"h": h, "a_over_h": a / h, "index": pm.oscillation_index(sv, p, a)})

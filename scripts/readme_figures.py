@@ -66,13 +66,13 @@ def load(name):
 
 
 def measure_scenes():
-    from formulation_study import run
+    from contactrun import run_checked
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for form in ("mortar", "gpts"):   # the default first
             for scene, opts, extra, label in SCENES:
                 args = ["-options_file", opts] + extra + SOLVER + ["-contact_formulation", form]
-                s, _ = run(args, tmp, "s")
+                s = run_checked(args, tmp, "s").summary
                 rows.append(dict(scene=label, formulation=form, command="bin/contact " + " ".join(args), dofs=s["dofs"],
                                  P=s["contact_force"], fem_a=s["fem_a"], hertz_a=s["hertz_a"], fem_pmax=s["fem_pmax"],
                                  hertz_pmax=s["hertz_pmax"], l2=s["pressure_l2_error"]))
@@ -116,18 +116,18 @@ STRATEGIES = [("Newton, Schur step (default)", []),
 
 def measure_solver(repeat=3):
     """The strategies at h = 0.06, interleaved, median of repeat solve times."""
-    import statistics
-    from formulation_study import run
+    from contactrun import median, run_checked
     times = {name: [] for name, _ in STRATEGIES}
     its = {}
     with tempfile.TemporaryDirectory() as tmp:
         for _ in range(repeat):
             for name, opts in STRATEGIES:
-                summ, _ = run(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.06"] + opts, tmp, "s")
+                summ = run_checked(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.06"] + opts, tmp,
+                                   "s").summary
                 times[name].append(summ["time"]["solve"])
                 its[name] = summ["iterations"]
     save("solver", [dict(strategy=name, options=" ".join(opts), iterations=its[name],
-                         solve=statistics.median(times[name]), runs=times[name]) for name, opts in STRATEGIES])
+                         solve=median(times[name]), runs=times[name]) for name, opts in STRATEGIES])
 
 
 def render_solver():

@@ -32,14 +32,13 @@ import datetime
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from formulation_study import launch  # noqa: E402
+from contactrun import git, load_average, parse_tao_line, run_case  # noqa: E402
 
 SCENE = "meshes/hertz-half/hertz-half.opts"
 HS = [0.25, 0.1, 0.03, 0.01, 0.005]
@@ -49,12 +48,7 @@ FORMULATIONS = ["gpts", "mortar"]
 RANKS = [1, 2]
 RANK_TOL = 1e-8      # 1 and 2 ranks agree on P to this, relative
 TIMEOUT = 1800       # seconds; the slowest run takes about 200
-TAO_LINE = re.compile(r"TAO \w+: (\w+) after (\d+) iterations, (\d+) energy evaluations")
 CUTBACKS = re.compile(r"the load cut back (\d+) time")
-
-
-def git(*args):
-    return subprocess.run(["git"] + list(args), cwd=ROOT, capture_output=True, text=True).stdout.strip()
 
 
 def key(r):
@@ -85,16 +79,16 @@ def one(h, kp, push, form, ranks, tmp, out):
     args = args_of(h, kp, push, form)
     cmd = "bin/contact " + " ".join(args) + " -output none"
     cmd = (f"mpiexec --oversubscribe -n {ranks} " if ranks > 1 else "") + cmd
-    try:
-        p, s, _, wall = launch(args, tmp, "run", ranks=ranks, h5=False, timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
+    p = run_case(args, tmp, "run", ranks=ranks, h5=False, timeout=TIMEOUT)
+    if p.timed_out:
         return dict(h=h, kp=kp, push=push, formulation=form, ranks=ranks, command=cmd, status=None, wall=TIMEOUT,
                     warnings=[], converged=False, message=f"killed by the sweep after {TIMEOUT} s")
-    r = dict(h=h, kp=kp, push=push, formulation=form, ranks=ranks, command=cmd, status=p.returncode, wall=wall,
+    s = p.summary
+    r = dict(h=h, kp=kp, push=push, formulation=form, ranks=ranks, command=cmd, status=p.returncode, wall=p.wall,
              warnings=[ln.strip() for ln in p.stderr.splitlines() if ln.startswith("contact:")])
-    m = TAO_LINE.search(p.stdout)
-    if m:
-        r.update(reason=m.group(1), iterations=int(m.group(2)), function_evaluations=int(m.group(3)))
+    tao = parse_tao_line(p.stdout)
+    if tao:
+        r.update(reason=tao["reason"], iterations=tao["iterations"], function_evaluations=tao["evals"])
     c = CUTBACKS.search(p.stdout)
     r["cutbacks"] = int(c.group(1)) if c else 0
     if s is not None:
@@ -139,7 +133,7 @@ def sweep(out, hs, ranks, forms, resume):
             os.remove(os.path.join(out, "stopped", name))
     done = {key(r) for r in res["runs"]}
     res.setdefault("started", datetime.datetime.now().isoformat(timespec="seconds"))
-    res.setdefault("load_start", os.getloadavg()[0])
+    res.setdefault("load_start", load_average())
     res.setdefault("nice", os.nice(0))
     res.setdefault("commit", git("rev-parse", "--short", "HEAD")
                    + (" (with changes to src/ or include/)" if git("status", "--porcelain", "src", "include") else ""))
@@ -160,7 +154,7 @@ def sweep(out, hs, ranks, forms, resume):
                             res["sweep_seconds"] = res.get("sweep_seconds", 0.0) + r["wall"]
                             save(path, res)
     res["elapsed_seconds"] = res.get("elapsed_seconds", 0.0) + time.perf_counter() - t0
-    res["load_end"] = os.getloadavg()[0]
+    res["load_end"] = load_average()
     order = {k: i for i, k in enumerate((h, kp, push, f, n) for h in HS for kp in KPS for push in PUSHES
                                         for f in FORMULATIONS for n in RANKS)}
     res["runs"].sort(key=lambda r: order.get(key(r), len(order)))
