@@ -82,9 +82,9 @@ def measure_scenes():
 def measure_picture():
     """The pressure plot of `make run`'s scene, drawn into PICTURE."""
     import subprocess
-    from formulation_study import run
+    from contactrun import run_checked
     with tempfile.TemporaryDirectory() as tmp:
-        _, h5 = run(["-options_file", "meshes/hertz/hertz.opts"], tmp, "hertz")
+        h5 = run_checked(["-options_file", "meshes/hertz/hertz.opts"], tmp, "hertz").h5
         subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "plot_hertz.py"), h5, "-o",
                         os.path.join(ROOT, PICTURE)], cwd=ROOT, check=True)
 
