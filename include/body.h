@@ -13,6 +13,15 @@ typedef struct {
   PetscReal reaction[2];
 } BodyBC;
 
+/* A dead load on a named physical group (loads.c): a traction per unit
+   reference length, or a pressure along the inward reference normal. */
+typedef struct {
+  char      group[CONTACT_NAME_LEN];
+  PetscBool isPressure;
+  PetscReal traction[2], pressure;
+  PetscReal force[2]; /* its resultant at the full load, summed over ranks (BodyLoadsSetUp) */
+} BodyLoad;
+
 /* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
    conditions and the per-cell geometry cache used by the element loops. */
 typedef struct _n_Body *Body;
@@ -28,6 +37,10 @@ struct _n_Body {
   PetscInt  nbc, qdeg;
   void     *bcctx[CONTACT_MAX_BC][2];
   BodyBC    bc[CONTACT_MAX_BC];
+  PetscInt  nload;
+  BodyLoad  load[CONTACT_MAX_BC];
+  Vec       Fl;         /* the loads' consistent nodal forces at the full load (local vector; this rank's edges), or NULL */
+  PetscReal loadFactor; /* load stepping: the fraction of the Dirichlet values and loads applied */
   ExactSolution exact;
   PetscBool hasExact;
 
@@ -73,6 +86,20 @@ PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
 PetscErrorCode BodySetLoadFactor(Body, PetscReal);
+/* Whether the reference edge e (a point of b's DMPlex, on the boundary) has
+   outward normal +(t_y, -t_x) or -(t_y, -t_x), t the chord from its first to
+   its second node: away from the centroid of the cell on it. x: its nodes'
+   coordinates (corner, corner, mid); what: who asks, for the error of an
+   edge that is not on the boundary. */
+PetscErrorCode BodyEdgeOutwardSign(Body, PetscInt e, const PetscReal x[6], const char what[], const char group[], PetscReal *sign);
+/* The nodes of boundary edge e: their points (corner, corner, mid) and coordinates. */
+PetscErrorCode BodyEdgeNodes(Body, PetscInt e, PetscInt pts[3], PetscReal x[6]);
+/* Loads (loads.c): -<body>_load and each group's _traction or _pressure. */
+PetscErrorCode BodyLoadsSetFromOptions(Body, const char prefix[], PetscBool help);
+/* Collective: the consistent nodal forces of the loads, once the mesh is read. */
+PetscErrorCode BodyLoadsSetUp(Body);
+/* Adds -f . u (times the load factor) to *energy and -f to g (local arrays). */
+PetscErrorCode BodyLoadsAddEnergyGradient(Body, const PetscScalar x[], PetscReal *energy, PetscScalar g[]);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);

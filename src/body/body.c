@@ -18,6 +18,7 @@ PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
   b->h  = 0.1;
   b->E  = 1.0;
   b->nu = 0.0;
+  b->loadFactor = 1.0;
   *body = b;
   PetscFunctionReturn(0);
 }
@@ -132,6 +133,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     }
     PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
   }
+  PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
   PetscFunctionReturn(0);
 }
@@ -436,6 +438,52 @@ PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscSc
 }
 
 /* Global node number of a node point (owned or ghost). */
+PetscErrorCode BodyEdgeNodes(Body b, PetscInt e, PetscInt pts[3], PetscReal x[6])
+{
+  const PetscInt *cone;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetCone(b->dm, e, &cone));
+  pts[0] = cone[0];
+  pts[1] = cone[1];
+  pts[2] = e;
+  for (PetscInt j = 0; j < 3; ++j) {
+    x[2 * j]     = b->xpoint[2 * (pts[j] - b->pStart)];
+    x[2 * j + 1] = b->xpoint[2 * (pts[j] - b->pStart) + 1];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyEdgeOutwardSign(Body b, PetscInt e, const PetscReal x[6], const char what[], const char group[], PetscReal *sign)
+{
+  PetscSection    s;
+  const PetscInt *supp;
+  PetscInt        nsupp, *cl = NULL, ncl;
+  PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
+  PetscCall(DMPlexGetSupport(b->dm, e, &supp));
+  PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: an edge of group '%s' of body %s is not on the boundary", what, group, b->name);
+  PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+  for (PetscInt j = 0; j < ncl; ++j) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
+    if (!dof) continue;
+    xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
+    xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
+    cnt += 1;
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
+  t[0]   = x[2] - x[0];
+  t[1]   = x[3] - x[1];
+  nrm[0] = t[1];
+  nrm[1] = -t[0];
+  *sign  = (nrm[0] * (x[4] - xc[0] / cnt) + nrm[1] * (x[5] - xc[1] / cnt)) > 0 ? 1.0 : -1.0;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
 {
   PetscInt off;
@@ -514,14 +562,16 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(VecGetSize(b->Xg, &b->nglobal));
   PetscCall(BodyBuildCellCache(b));
   PetscCall(BodyBuildNodeData(b));
+  PetscCall(BodyLoadsSetUp(b));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
 
-/* Load stepping: the Dirichlet values become f times the scene's. */
+/* Load stepping: the Dirichlet values and the loads become f times the scene's. */
 PetscErrorCode BodySetLoadFactor(Body b, PetscReal f)
 {
   PetscFunctionBeginUser;
+  b->loadFactor = f;
   PetscCall(VecAXPBY(b->bcl, f, 0.0, b->bclFull));
   PetscFunctionReturn(0);
 }
@@ -535,7 +585,8 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
   PetscFunctionReturn(0);
 }
 
-/* Pi_b(u) = int W(grad u) dA - int f . u dA and its gradient, added into Gl. */
+/* Pi_b(u) = int W(grad u) dA - int f . u dA - (the loads' f) . u (loads.c)
+   and its gradient, added into Gl. */
 PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec Gl)
 {
   const PetscScalar *x;
@@ -594,6 +645,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
       g[dof[a] + 1] += ge[a][1];
     }
   }
+  PetscCall(BodyLoadsAddEnergyGradient(b, x, &e, g));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(VecRestoreArray(Gl, &g));
   PetscCall(PetscLogFlops(b->ncells * nq * (nb * 16.0 + 30.0)));
@@ -865,6 +917,7 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(VecDestroy(&b->Gg));
   PetscCall(VecDestroy(&b->Xl));
   PetscCall(VecDestroy(&b->Gl));
+  PetscCall(VecDestroy(&b->Fl));
   PetscCall(VecDestroy(&b->bcl));
   PetscCall(VecDestroy(&b->bclFull));
   PetscCall(PetscFEDestroy(&b->fe));

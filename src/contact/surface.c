@@ -23,37 +23,6 @@ static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
   return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* Whether the edge e's outward normal is +n or -n, n = (t_y, -t_x) for the
-   chord t from its first to its second node: away from the centroid of the
-   cell on the edge. x: the edge's nodes' coordinates (corner, corner, mid). */
-static PetscErrorCode EdgeOutwardSign(Body b, PetscSection s, PetscInt e, const char pair[], const char group[], const PetscReal x[6], PetscReal *sign)
-{
-  const PetscInt *supp;
-  PetscInt        nsupp, *cl = NULL, ncl;
-  PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
-  PetscCall(DMPlexGetSupport(b->dm, e, &supp));
-  PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: an edge of group '%s' of body %s is not on the boundary", pair, group, b->name);
-  PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-  for (PetscInt j = 0; j < ncl; ++j) {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
-    if (!dof) continue;
-    xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
-    xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
-    cnt += 1;
-  }
-  PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-  t[0]   = x[2] - x[0];
-  t[1]   = x[3] - x[1];
-  nrm[0] = t[1];
-  nrm[1] = -t[0];
-  *sign  = (nrm[0] * (x[4] - xc[0] / cnt) + nrm[1] * (x[5] - xc[1] / cnt)) > 0 ? 1.0 : -1.0;
-  PetscFunctionReturn(0);
-}
-
 /* This rank's owned edges of the surface's physical group: *n of them, each
    with its nodes' global numbers (eid, 3 per edge) and, in erl (7 per edge),
    their reference coordinates and the outward normal's sign. */
@@ -61,12 +30,11 @@ static PetscErrorCode ContactSurfaceOwnedEdges(ContactSurface *S, Body b, const 
 {
   DMLabel         faces;
   IS              is = NULL;
-  PetscSection    s;
   PetscInt        np = 0, k = 0;
   const PetscInt *pts = NULL;
+  char            what[2 * CONTACT_NAME_LEN];
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
   PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
   if (faces) PetscCall(DMLabelGetStratumIS(faces, S->tag, &is));
@@ -75,23 +43,16 @@ static PetscErrorCode ContactSurfaceOwnedEdges(ContactSurface *S, Body b, const 
     PetscCall(ISGetIndices(is, &pts));
   }
   PetscCall(PetscMalloc2(3 * np + 1, eid, 7 * np + 1, erl));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "contact pair %s", pair));
   for (PetscInt i = 0; i < np; ++i) {
-    const PetscInt  e = pts[i];
-    const PetscInt *cone;
-    PetscInt        nodes[3];
-    PetscReal      *x = &(*erl)[7 * k];
+    const PetscInt e = pts[i];
+    PetscInt       nodes[3];
+    PetscReal     *x = &(*erl)[7 * k];
 
     if (!b->owned[e - b->pStart]) continue;
-    PetscCall(DMPlexGetCone(b->dm, e, &cone));
-    nodes[0] = cone[0];
-    nodes[1] = cone[1];
-    nodes[2] = e;
-    for (PetscInt j = 0; j < 3; ++j) {
-      PetscCall(BodyGetNodeNumber(b, nodes[j], &(*eid)[3 * k + j]));
-      x[2 * j]     = b->xpoint[2 * (nodes[j] - b->pStart)];
-      x[2 * j + 1] = b->xpoint[2 * (nodes[j] - b->pStart) + 1];
-    }
-    PetscCall(EdgeOutwardSign(b, s, e, pair, S->group, x, &x[6]));
+    PetscCall(BodyEdgeNodes(b, e, nodes, x));
+    for (PetscInt j = 0; j < 3; ++j) PetscCall(BodyGetNodeNumber(b, nodes[j], &(*eid)[3 * k + j]));
+    PetscCall(BodyEdgeOutwardSign(b, e, x, what, S->group, &x[6]));
     k++;
   }
   *n = k;

@@ -160,6 +160,23 @@ static void JSONReactions(FILE *fp, Problem p)
   fprintf(fp, "\n  }");
 }
 
+/* Each load's resultant, at the load factor solved (only with loads). */
+static void JSONLoads(FILE *fp, Problem p)
+{
+  PetscInt n = 0;
+
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
+      const BodyLoad *L = &p->bodies[i]->load[j];
+      fprintf(fp, "%s\n    \"%s:%s\": [", n ? "," : ",\n  \"loads\": {", p->bodies[i]->name, L->group);
+      ContactJSONReal(fp, p->bodies[i]->loadFactor * L->force[0]);
+      fprintf(fp, ", ");
+      ContactJSONReal(fp, p->bodies[i]->loadFactor * L->force[1]);
+      fprintf(fp, "]");
+    }
+  if (n) fprintf(fp, "\n  }");
+}
+
 /* The first pair's figures at top level, then every pair's under "contact". */
 static PetscErrorCode JSONContact(FILE *fp, Problem p)
 {
@@ -279,6 +296,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   fprintf(fp, ",\n  \"displacement_norm\": ");
   ContactJSONReal(fp, PetscSqrtReal(unorm2));
   JSONReactions(fp, p);
+  JSONLoads(fp, p);
   PetscCall(JSONContact(fp, p));
   JSONBodies(fp, p, F);
   JSONAccuracy(fp, rec);

@@ -1,0 +1,203 @@
+/* Dead loads on a body's boundary groups, given per unit reference length:
+
+     -<body>_load top,inner
+     -<body>_load_top_traction tx,ty     a traction t, fixed in direction and size
+     -<body>_load_inner_pressure p       a pressure along the inward reference normal
+
+   The load's potential is linear in u, so the body's energy gains
+
+     -int_Gamma t . u dS            (traction)
+     -int_Gamma (-p n) . u dS       (pressure, n the outward reference normal)
+
+   over the reference boundary. On a quadratic edge with nodes X_a (corner,
+   corner, mid at xi = -1, 1, 0; N_0 = xi (xi - 1)/2, N_1 = xi (xi + 1)/2,
+   N_2 = 1 - xi^2), u = sum_a N_a u_a and dS = |dX/dxi| dxi, so the energy is
+   -f . u with the consistent nodal forces
+
+     f_a = int_{-1}^{1} N_a t |dX/dxi| dxi                          (traction)
+     f_a = -p s int_{-1}^{1} N_a (dY/dxi, -dX/dxi) dxi               (pressure)
+
+   where n |dX/dxi| = s (dY/dxi, -dX/dxi), s = +-1 the edge's outward sign.
+   The pressure's integrand is a polynomial of degree 3, integrated exactly
+   by 3 Gauss points, and its resultant sum_a f_a = -p s (dY, -dX) over the
+   edge is p times the chord turned inward: over a group, p times the chord
+   between its ends, exactly, on straight and curved edges alike. The
+   traction's |dX/dxi| is not polynomial on a curved edge: 6 points. f is
+   assembled once, at the full load, into a local vector from this rank's
+   owned edges (each edge counted once over the ranks, as the cells are);
+   its gradient is -f, its Hessian zero; load stepping scales it with the
+   Dirichlet values. */
+#include "body.h"
+
+static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)
+{
+  char      lprefix[4 * CONTACT_NAME_LEN];
+  PetscInt  nt = 2;
+  PetscBool setT, setP;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(lprefix, sizeof(lprefix), "%sload_%s_", prefix, L->group));
+  PetscOptionsBegin(b->comm, lprefix, "Load on a boundary group", NULL);
+  PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load)", NULL, L->traction, &nt, &setT));
+  PetscCall(PetscOptionsReal("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction)", NULL, L->pressure, &L->pressure, &setP));
+  PetscOptionsEnd();
+  if (help) PetscFunctionReturn(0); /* listed, not required */
+  PetscCheck(setT || setP, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: group %s needs -%straction tx,ty or -%spressure p", prefix, L->group, lprefix, lprefix);
+  PetscCheck(!(setT && setP), b->comm, PETSC_ERR_USER_INPUT, "option -%spressure: group %s has -%straction too; give one of them", lprefix, L->group, lprefix);
+  PetscCheck(!setT || nt == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%straction: give two components tx,ty, got %" PetscInt_FMT, lprefix, nt);
+  for (PetscInt c = 0; c < (setT ? 2 : 1); ++c) {
+    const PetscReal v = setT ? L->traction[c] : L->pressure;
+    PetscCheck(!PetscIsInfOrNanReal(v), b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: must be finite, got %g", lprefix, setT ? "traction" : "pressure", (double)v);
+  }
+  L->isPressure = setP;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyLoadsSetFromOptions(Body b, const char prefix[], PetscBool help)
+{
+  char     *names[CONTACT_MAX_BC];
+  PetscInt  n = CONTACT_MAX_BC;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(b->comm, prefix, "Body loads", NULL);
+  PetscCall(PetscOptionsStringArray("-load", "Loaded physical groups (see -<body>_load_<group>_traction, _pressure)", NULL, names, &n, NULL));
+  PetscOptionsEnd();
+  if (help && !n) { /* a load's options under a placeholder group */
+    PetscCall(PetscStrallocpy("<group>", &names[0]));
+    n = 1;
+  }
+  b->nload = n;
+  for (PetscInt i = 0; i < n; ++i) {
+    for (PetscInt j = 0; j < i; ++j) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(names[i], b->load[j].group, &same));
+      PetscCheck(!same, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: group %s given twice", prefix, names[i]);
+    }
+    PetscCall(PetscStrncpy(b->load[i].group, names[i], sizeof(b->load[i].group)));
+    PetscCall(PetscFree(names[i]));
+    PetscCall(BodyLoadSetFromOptions(b, prefix, help, &b->load[i]));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The consistent nodal forces of load L on edge e with nodes x (corner,
+   corner, mid), into fe[3][2]. */
+static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, const PetscReal x[6], PetscReal fe[3][2])
+{
+  PetscReal gx[6], gw[6], sign = 1.0;
+  PetscInt  nq = L->isPressure ? 3 : 6;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, gx, gw));
+  if (L->isPressure) {
+    char what[2 * CONTACT_NAME_LEN];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "body %s, load", b->name));
+    PetscCall(BodyEdgeOutwardSign(b, e, x, what, L->group, &sign));
+  }
+  for (PetscInt a = 0; a < 3; ++a) fe[a][0] = fe[a][1] = 0.0;
+  for (PetscInt q = 0; q < nq; ++q) {
+    const PetscReal xi = gx[q], N[3] = {0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi};
+    const PetscReal dN[3] = {xi - 0.5, xi + 0.5, -2.0 * xi};
+    PetscReal       dX = 0, dY = 0, t[2];
+
+    for (PetscInt a = 0; a < 3; ++a) {
+      dX += dN[a] * x[2 * a];
+      dY += dN[a] * x[2 * a + 1];
+    }
+    if (L->isPressure) { /* -p n |dX/dxi| */
+      t[0] = -L->pressure * sign * dY;
+      t[1] = L->pressure * sign * dX;
+    } else {
+      const PetscReal J = PetscSqrtReal(dX * dX + dY * dY);
+      t[0] = L->traction[0] * J;
+      t[1] = L->traction[1] * J;
+    }
+    for (PetscInt a = 0; a < 3; ++a) {
+      fe[a][0] += gw[q] * N[a] * t[0];
+      fe[a][1] += gw[q] * N[a] * t[1];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Adds load L's nodal forces on this rank's owned edges of its group into
+   the local array f, and its resultant (this rank's) into r. */
+static PetscErrorCode BodyLoadAssemble(Body b, PetscSection s, const BodyLoad *L, PetscScalar f[], PetscReal r[2])
+{
+  DMLabel         faces;
+  IS              is = NULL;
+  PetscInt        tag, n = 0, gn;
+  const PetscInt *pts = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(BodyGetPhysicalTag(b, L->group, 1, &tag));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  if (faces) PetscCall(DMLabelGetStratumIS(faces, tag, &is));
+  if (is) {
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+  }
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscInt  np[3];
+    PetscReal x[6], fe[3][2];
+
+    if (!b->owned[pts[i] - b->pStart]) continue;
+    PetscCall(BodyEdgeNodes(b, pts[i], np, x));
+    PetscCall(EdgeLoadForces(b, L, pts[i], x, fe));
+    for (PetscInt a = 0; a < 3; ++a) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(s, np[a], &off));
+      f[off] += fe[a][0];
+      f[off + 1] += fe[a][1];
+      r[0] += fe[a][0];
+      r[1] += fe[a][1];
+    }
+  }
+  if (is) {
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
+  PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "option -%s_load: physical group '%s' of mesh %s has no edges", b->name, L->group, b->msh);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyLoadsSetUp(Body b)
+{
+  PetscSection s;
+  PetscScalar *f;
+
+  PetscFunctionBeginUser;
+  if (!b->nload) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  PetscCall(VecDuplicate(b->Xl, &b->Fl));
+  PetscCall(VecSet(b->Fl, 0.0));
+  PetscCall(VecGetArray(b->Fl, &f));
+  for (PetscInt i = 0; i < b->nload; ++i) {
+    PetscReal r[2] = {0, 0};
+    PetscCall(BodyLoadAssemble(b, s, &b->load[i], f, r));
+    PetscCall(MPIU_Allreduce(r, b->load[i].force, 2, MPIU_REAL, MPIU_SUM, b->comm));
+  }
+  PetscCall(VecRestoreArray(b->Fl, &f));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyLoadsAddEnergyGradient(Body b, const PetscScalar x[], PetscReal *energy, PetscScalar g[])
+{
+  const PetscScalar *f;
+  PetscInt           n;
+  PetscReal          e = 0.0;
+
+  PetscFunctionBeginUser;
+  if (!b->Fl) PetscFunctionReturn(0);
+  PetscCall(VecGetLocalSize(b->Fl, &n));
+  PetscCall(VecGetArrayRead(b->Fl, &f));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal fk = b->loadFactor * PetscRealPart(f[k]);
+    e -= fk * PetscRealPart(x[k]);
+    g[k] -= fk;
+  }
+  PetscCall(VecRestoreArrayRead(b->Fl, &f));
+  *energy += e;
+  PetscFunctionReturn(0);
+}
