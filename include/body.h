@@ -2,11 +2,16 @@
 #include "contact.h"
 #include "exact.h"
 
-/* A Dirichlet condition: a named physical group, constrained components and values. */
+/* A Dirichlet condition: a named physical group, constrained components and
+   values. A force-controlled component (-<body>_bc_<group>_control force)
+   moves the group rigidly by values[c], which the solve finds so that the
+   reaction equals force[c] (forcecontrol.c). */
 typedef struct {
   char      group[CONTACT_NAME_LEN];
   PetscInt  ncomp, comps[2];
   PetscReal values[2];
+  PetscBool control[2]; /* component c (of comps) is force-controlled */
+  PetscReal force[2];   /* its force: the reaction it must have */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
   DMLabel   label;   /* faces of the group and their closure */
@@ -86,6 +91,9 @@ PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
 PetscErrorCode BodySetLoadFactor(Body, PetscReal);
+/* Moves Dirichlet condition i's component c (an index into its comps) to
+   the value U (a force-controlled component's displacement). */
+PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 /* Whether the reference edge e (a point of b's DMPlex, on the boundary) has
    outward normal +(t_y, -t_x) or -(t_y, -t_x), t the chord from its first to
    its second node: away from the centroid of the cell on it. x: its nodes'

@@ -10,14 +10,23 @@ typedef struct {
   char      name[CONTACT_NAME_LEN], formulation[CONTACT_NAME_LEN];
   PetscInt  body[2];
   char      group[2][CONTACT_NAME_LEN];
-  PetscReal kp;           /* the scene's penalty k_p */
+  PetscReal kp;           /* the scene's penalty k_p; with kpAuto, set from the mesh in set-up */
+  PetscBool kpAuto;       /* -contact_penalty auto: k_p = CONTACT_PENALTY_AUTO E* / h (ContactTermSetUpSurfaces) */
+  PetscReal kpH;          /* auto: the contact edges' size h it was chosen for */
   PetscInt  nqp;          /* Gauss points per slave edge (-contact_quadrature_points) */
   PetscReal blend;        /* -contact_blend: fraction of a master edge; < 0: the formulation's default */
   PetscBool hertz;        /* compare with Hertz: radii of the two surfaces (0: flat), E*, R* */
-  PetscReal radii[2], Estar, Rstar;
+  PetscReal radii[2], Estar, Rstar; /* Estar: the pair's plane-strain modulus, with or without Hertz */
   PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
   PetscReal mirrorY;
 } ContactPairSpec;
+
+/* The automatic penalty k_p = CONTACT_PENALTY_AUTO E* / h, h the shortest
+   reference edge of the pair's two surfaces (docs/formulations.md, "The
+   penalty"), and the ratio k_p h / E* below which the report warns that the
+   penalty's error is likely as large as the mesh's. */
+#define CONTACT_PENALTY_AUTO 1000.0
+#define CONTACT_PENALTY_SOFT 25.0
 
 typedef PetscErrorCode (*ContactFormulationCreate)(const ContactPairSpec *, EnergyTerm);
 extern PetscFunctionList ContactFormulationList;
@@ -26,8 +35,9 @@ PetscErrorCode ContactFormulationRegisterAll(void);
 PetscErrorCode ContactFormulationFinalize(void);
 
 /* Reads -contact_pairs and each pair's options, and creates each pair's energy
-   term in its formulation (at most maxTerms), Gauss-Newton Hessian to start. */
-PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[]);
+   term in its formulation (at most maxTerms), Gauss-Newton Hessian to start;
+   autoPenalty: whether a pair's penalty is auto. */
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[], PetscBool *autoPenalty);
 
 /* The formulations (one file each). */
 PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *, EnergyTerm);

@@ -2,7 +2,8 @@
 #include "energyterm.h"
 #include "subdomain.h"
 
-#define CONTACT_MAX_TERMS 16
+#define CONTACT_MAX_TERMS    16
+#define CONTACT_MAX_CONTROLS 8
 
 /* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
 typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
@@ -30,12 +31,23 @@ typedef struct {
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
+  PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
+  PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration */
+  PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
   PetscBool   schur;     /* Newton through the contact-surface Schur complement */
   PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
   SchurType   schurType;
   HessianType hessianType;   /* -contact_hessian */
   PetscReal   hessianSwitch; /* auto: exact once ||g|| < hessianSwitch ||g0|| */
 } ProblemOptions;
+
+/* A force-controlled component (forcecontrol.c): body, Dirichlet condition
+   and component (an index into its comps), its force, and the displacement
+   and reaction of the last solve. */
+typedef struct {
+  PetscInt  body, bc, c;
+  PetscReal force, U, R;
+} ForceControl;
 
 /* What a solve and its post-processing found. */
 typedef struct {
@@ -47,6 +59,8 @@ typedef struct {
   PetscReal          bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
   PetscReal          taylorRates[2], taylorRemainders[2][8], taylorEps[8]; /* ProblemTaylorTest */
   PetscInt           taylorN;
+  PetscInt           controlSolves; /* force control: the solves of its outer iteration */
+  char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
@@ -67,6 +81,8 @@ struct _n_Problem {
   Tao            tao;
   PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
   PetscReal      hessianG0;    /* ||g|| at the current TAO solve's first iterate */
+  PetscInt       ncontrols;
+  ForceControl   controls[CONTACT_MAX_CONTROLS];
   ProblemResults res;
 };
 
@@ -81,6 +97,9 @@ PetscErrorCode ProblemSetFromOptions(Problem);
 PetscErrorCode ProblemGenerateMeshes(Problem);
 /* Adds an energy term; the problem takes the reference and destroys it. */
 PetscErrorCode ProblemAddTerm(Problem, EnergyTerm);
+/* Penalty continuation for a term whose penalty the program chose: stages
+   and the first stage's fraction, where the user gave none. */
+PetscErrorCode ProblemSetPenaltyContinuation(Problem, PetscInt stages, PetscReal start);
 /* The first iterate of ProblemSolve (after ProblemSetUp; referenced). */
 PetscErrorCode ProblemSetInitialGuess(Problem, Vec X0);
 PetscErrorCode ProblemSetUp(Problem);
@@ -99,4 +118,14 @@ PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);
 PetscErrorCode ProblemView(Problem);
 PetscErrorCode ProblemCheckUnusedOptions(Problem, PetscBool final);
 PetscErrorCode ProblemTaylorTest(Problem);
+/* Collective: the reaction of every Dirichlet condition at X (each body's bc[].reaction). */
+PetscErrorCode ProblemComputeReactions(Problem, Vec X);
+/* The solve's stages (load steps, penalty continuation, cutbacks) from X0 or
+   rest: its TAO iterations and reason (problem.c). */
+PetscErrorCode ProblemSolveStaged(Problem, PetscInt *its, TaoConvergedReason *reason);
+/* Force control (forcecontrol.c): the controlled components found, each
+   group's reaction equal to its force; a solve of ProblemSolveStaged for
+   each trial. */
+PetscErrorCode ProblemCollectControls(Problem);
+PetscErrorCode ProblemSolveControlled(Problem, PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemDestroy(Problem *);

@@ -27,6 +27,8 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
 - stress: bench/stress/results.json (scripts/stress_sweep.py, run by make stress);
+- penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
+  penalty's error against the mesh's);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -214,9 +216,15 @@ def render_stress():
     return stress_sweep.tables(load("stress"))
 
 
+def render_penalty():
+    import penalty_study
+    return penalty_study.table(load("penalty"))
+
+
 RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
-          "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages}
+          "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
+          "penalty": render_penalty}
 
 
 def pages():

@@ -46,10 +46,18 @@ DOMAINS = {
     "contact_pairs": ("name",), "contact_interface_surfaces": ("name",),
     "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
     "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",), "accuracy_warm_start": ("bool",),
+    "force_control_max_it": ("int", 1, False), "force_control_rtol": ("fraction",),
+    # a list of choices and lists of group names: their own tests (test_force_control.py, test_loads.py)
+    "indenter_bc_clamp_control": ("name",), "block_bc_push_control": ("name",),
+    "indenter_load": ("name",), "block_load": ("name",),
+    # -help's placeholder -<body>_load_<group>_traction, _pressure for a load the scene has not (read up
+    # to the "<"; a real group's values: test_loads.py)
+    "indenter_load_": ("name",), "block_load_": ("name",),
 }
 # the sections of -help that are the program's own
-SECTIONS = ("Program options", "Progress options", "Contact scene options", "Body options", "Dirichlet condition",
-            "Contact options", "Contact pair options", "Mortar contact options", "Accuracy options")
+SECTIONS = ("Program options", "Output options", "Progress options", "Contact scene options", "Body options",
+            "Dirichlet condition", "Body loads", "Load on a boundary group", "Contact options", "Contact pair options",
+            "Mortar contact options", "Accuracy options")
 
 
 def program_options():

@@ -52,14 +52,15 @@ def scene_value(name):
 
 def test_help_required_options(tmp_path):
     """Required options say so and show the scene's value (read here from
-    its options file), not a placeholder or a default; the pair's penalty
-    shows the value it inherits and from where."""
+    its options file), not a placeholder or a default; the penalty (auto by
+    default) shows the scene's value, and the pair's the value it inherits."""
     out = run(["-options_file", HERTZ, "-help"], tmp_path).stdout
-    for name in ("-indenter_E", "-block_nu", "-contact_penalty"):
+    for name in ("-indenter_E", "-block_nu"):
         m = re.match(rf"{name} <(\S+) : required>", option_line(out, name))
         assert m and float(m.group(1)) == scene_value(name), option_line(out, name)
-    m = re.match(r"-contact_interface_penalty <(\S+) : -contact_penalty>", option_line(out, "-contact_interface_penalty"))
-    assert m and float(m.group(1)) == scene_value("-contact_penalty"), option_line(out, "-contact_interface_penalty")
+    for name in ("-contact_penalty", "-contact_interface_penalty"):
+        m = re.match(rf"{name} <now (\S+) : formerly", option_line(out, name))
+        assert m and float(m.group(1)) == scene_value("-contact_penalty"), option_line(out, name)
     assert "(required)" in option_line(out, "-bodies")
     assert "<-1." not in option_line(out, "-contact_penalty")
 
@@ -70,7 +71,7 @@ def test_help_without_scene(tmp_path):
     assert proc.returncode == 0, proc.stderr[-2000:]
     out = proc.stdout
     assert option_line(out, "-<body>_E").startswith("-<body>_E <required>")
-    assert option_line(out, "-contact_penalty").startswith("-contact_penalty <required>")
+    assert option_line(out, "-contact_penalty").startswith("-contact_penalty <now auto : formerly auto>")
     option_line(out, "-<body>_bc_<group>_values")
     option_line(out, "-contact_<pair>_surfaces")
     assert not list(tmp_path.iterdir())

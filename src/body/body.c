@@ -98,9 +98,9 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   b->nbc = nbc;
   for (PetscInt i = 0; i < nbc; ++i) {
     BodyBC   *bc = &b->bc[i];
-    char      bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL};
-    PetscInt  nc = 2, nv = 2;
-    PetscBool setc, setv;
+    char      bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
+    PetscInt  nc = 2, nv = 2, nctl = 2;
+    PetscBool setc, setv, setctl;
 
     PetscCall(PetscStrncpy(bc->group, bcnames[i], sizeof(bc->group)));
     PetscCall(PetscFree(bcnames[i]));
@@ -110,6 +110,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCall(PetscOptionsStringArray("-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
     PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
     PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
+    PetscCall(PetscOptionsStringArray("-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
     PetscOptionsEnd();
     if (!setc) {
       bc->ncomp    = 2;
@@ -132,6 +133,20 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
       PetscCall(CheckFinite(b->comm, opt, bc->values[c]));
     }
     PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
+    PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
+    for (PetscInt c = 0; setctl && c < nctl; ++c) {
+      PetscBool disp, force;
+      PetscCall(PetscStrcmp(control[c], "displacement", &disp));
+      PetscCall(PetscStrcmp(control[c], "force", &force));
+      PetscCheck(disp || force, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: unknown control '%s' (use displacement, force)", bprefix, control[c]);
+      PetscCheck(!force || !bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: a force-controlled component cannot impose the exact solution", bprefix);
+      bc->control[c] = force;
+      if (force) { /* the value is the force; the displacement starts at 0 */
+        bc->force[c]  = bc->values[c];
+        bc->values[c] = 0.0;
+      }
+      PetscCall(PetscFree(control[c]));
+    }
   }
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
@@ -564,6 +579,16 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(BodyBuildNodeData(b));
   PetscCall(BodyLoadsSetUp(b));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodySetBCValue(Body b, PetscInt i, PetscInt c, PetscReal U)
+{
+  PetscFunctionBeginUser;
+  b->bc[i].values[c] = U;
+  PetscCall(VecSet(b->bclFull, 0.0));
+  PetscCall(DMPlexInsertBoundaryValues(b->dm, PETSC_TRUE, b->bclFull, 0.0, NULL, NULL, NULL));
+  PetscCall(VecAXPBY(b->bcl, b->loadFactor, 0.0, b->bclFull));
   PetscFunctionReturn(0);
 }
 

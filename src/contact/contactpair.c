@@ -29,6 +29,22 @@ PetscErrorCode ContactFormulationFinalize(void)
   PetscFunctionReturn(0);
 }
 
+/* A penalty option's value: "auto" or a finite number > 0. */
+static PetscErrorCode ParsePenalty(MPI_Comm comm, const char option[], const char value[], PetscReal *kp, PetscBool *isAuto)
+{
+  char *end;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(value, "auto", isAuto));
+  if (*isAuto) {
+    *kp = -1.0;
+    PetscFunctionReturn(0);
+  }
+  *kp = strtod(value, &end);
+  PetscCheck(end != value && !*end && !PetscIsInfOrNanReal(*kp) && *kp > 0, comm, PETSC_ERR_USER_INPUT, "option %s: must be auto or a finite number > 0, got %s", option, value);
+  PetscFunctionReturn(0);
+}
+
 /* The term of a pair in formulation spec->formulation; an unknown name is an
    error that lists the known ones. */
 static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactPairSpec *spec, const char option[], EnergyTerm *term)
@@ -58,21 +74,22 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[])
+PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Body bodies[], PetscInt maxTerms, PetscInt *nterms, EnergyTerm terms[], PetscBool *autoPenalty)
 {
-  char     *names[64], formulation[CONTACT_NAME_LEN] = "mortar";
+  char     *names[64], formulation[CONTACT_NAME_LEN] = "mortar", penalty[64] = "auto";
   PetscInt  np = 64, nq = 4;
   PetscReal kp = -1.0, blend = 0.05;
-  PetscBool disable = PETSC_FALSE, setkp, setBlend, help;
+  PetscBool disable = PETSC_FALSE, kpAuto, setBlend, help;
 
   PetscFunctionBeginUser;
-  *nterms = 0;
+  *nterms      = 0;
+  *autoPenalty = PETSC_FALSE;
   PetscCall(PetscOptionsHasHelp(NULL, &help)); /* -help: list the options; a penalty or a pair's surfaces are not required */
   PetscCall(ContactFormulationRegisterAll());
   PetscOptionsBegin(comm, NULL, "Contact options", NULL);
   PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces; none: no contact)", NULL, names, &np, NULL));
   PetscCall(PetscOptionsFList("-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-contact_penalty", "Penalty k_p of every pair (required with pairs)", "required", PETSC_FALSE, &kp, &setkp));
+  PetscCall(PetscOptionsString("-contact_penalty", "Penalty k_p of every pair: a number (pressure per unit penetration), or auto: 1000 E*/h, h the contact edges' size", NULL, penalty, penalty, sizeof(penalty), NULL));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge (gpts), per segment (mortar, at least 3)", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners; default 0.05 for gpts, 0 for mortar)", NULL, blend, &blend, &setBlend));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
@@ -83,12 +100,14 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   }
   PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
   PetscCheck(nq >= 1 && nq <= 8, comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
+  PetscCall(ParsePenalty(comm, "-contact_penalty", penalty, &kp, &kpAuto));
   PetscCheck(np <= maxTerms, comm, PETSC_ERR_USER_INPUT, "option -contact_pairs: %" PetscInt_FMT " pairs, at most %" PetscInt_FMT, np, maxTerms);
   for (PetscInt i = 0; i < np; ++i) {
     ContactPairSpec spec;
     char            prefix[2 * CONTACT_NAME_LEN], option[3 * CONTACT_NAME_LEN], *surf[2] = {NULL, NULL};
     PetscInt        ns = 2, nr = 2;
-    PetscBool       setPair, setForm, setPairKp;
+    PetscBool       setPair, setForm;
+    char            pairPenalty[64];
 
     PetscCall(PetscMemzero(&spec, sizeof(spec)));
     PetscCall(PetscStrncpy(spec.name, names[i], sizeof(spec.name)));
@@ -100,13 +119,15 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     }
     PetscCall(PetscStrncpy(spec.formulation, formulation, sizeof(spec.formulation)));
     spec.kp           = kp;
+    spec.kpAuto       = kpAuto;
     spec.nqp          = nq;
     spec.blend        = setBlend ? blend : -1.0;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
+    PetscCall(PetscStrncpy(pairPenalty, penalty, sizeof(pairPenalty)));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
     PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
     PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
-    PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-penalty", "Penalty k_p of this pair (default -contact_penalty)", "-contact_penalty", setkp, &spec.kp, &setPairKp));
+    PetscCall(PetscOptionsString("-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, spec.radii, &nr, &spec.hertz));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
     PetscOptionsEnd();
@@ -116,7 +137,8 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     }
     PetscCheck(setPair && ns == 2, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
     PetscCheck(!spec.hertz || nr == 2, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
-    PetscCheck((help && !setkp && !setPairKp) || (!PetscIsInfOrNanReal(spec.kp) && spec.kp > 0), comm, PETSC_ERR_USER_INPUT, "option -%spenalty (or -contact_penalty): must be a finite number > 0, got %g", prefix, (double)spec.kp);
+    PetscCall(PetscSNPrintf(option, sizeof(option), "-%spenalty", prefix));
+    PetscCall(ParsePenalty(comm, option, pairPenalty, &spec.kp, &spec.kpAuto));
     for (PetscInt s = 0; s < 2; ++s) {
       char *colon = strchr(surf[s], ':');
       PetscCheck(colon, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: '%s' is not body:group", prefix, surf[s]);
@@ -135,10 +157,12 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCheck(!spec.mirror || !PetscIsInfOrNanReal(spec.mirrorY), comm, PETSC_ERR_USER_INPUT, "option -%smirror_y: must be a finite number, got %g", prefix, (double)spec.mirrorY);
     for (PetscInt s = 0; s < 2; ++s) PetscCheck(!spec.hertz || (spec.radii[s] >= 0 && !PetscIsInfOrNanReal(spec.radii[s])), comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)spec.radii[s]);
     PetscCheck(!spec.hertz || spec.radii[0] > 0 || spec.radii[1] > 0, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);
-    if (spec.hertz) {
+    {
       const Body b0 = bodies[spec.body[0]], b1 = bodies[spec.body[1]];
-      PetscReal  iR = 0.0;
       spec.Estar    = 1.0 / ((1.0 - b0->nu * b0->nu) / b0->E + (1.0 - b1->nu * b1->nu) / b1->E);
+    }
+    if (spec.hertz) {
+      PetscReal iR = 0.0;
       for (PetscInt s = 0; s < 2; ++s)
         if (spec.radii[s] > 0) iR += 1.0 / spec.radii[s];
       spec.Rstar = 1.0 / iR;
@@ -146,6 +170,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     if (disable) continue; /* read and checked like the others, then dropped */
     PetscCall(PetscSNPrintf(option, sizeof(option), setForm ? "-%sformulation" : "-contact_formulation", prefix));
     PetscCall(ContactFormulationCreateTerm(comm, &spec, option, &terms[*nterms]));
+    if (spec.kpAuto) *autoPenalty = PETSC_TRUE;
     (*nterms)++;
   }
   PetscFunctionReturn(0);

@@ -145,7 +145,8 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   fm[0] = spec->mirror ? 2.0 * R->force[0] : R->force[0];
   fm[1] = spec->mirror ? 0.0 : R->force[1];
-  PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
+  if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
+  else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   PetscCall(PetscPrintf(comm, "  contact force on %s%s: (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : "", (double)fm[0], (double)fm[1], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   {
@@ -247,6 +248,9 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   }
   fprintf(fp, "{\"formulation\": \"%s\", \"penalty\": ", spec->formulation);
   ContactJSONReal(fp, R->kp);
+  fprintf(fp, ", \"penalty_auto\": %s", spec->kpAuto ? "true" : "false");
+  JKV(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
+  JKV(fp, ", ", "penalty_stiffness", spec->kp * spec->kpH / spec->Estar); /* k_p h / E*: 1000 auto, below 25 soft */
   JVec2(fp, "force", R->force);
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");

@@ -177,6 +177,26 @@ static void JSONLoads(FILE *fp, Problem p)
   if (n) fprintf(fp, "\n  }");
 }
 
+/* Each force-controlled component: its force and the displacement found
+   (with the reaction, which equals the force to -force_control_rtol). */
+static void JSONForceControl(FILE *fp, Problem p)
+{
+  if (!p->ncontrols) return;
+  fprintf(fp, ",\n  \"force_control_solves\": %d,\n  \"force_control\": [", (int)p->res.controlSolves);
+  for (PetscInt k = 0; k < p->ncontrols; ++k) {
+    const ForceControl *fc = &p->controls[k];
+    const BodyBC       *bc = &p->bodies[fc->body]->bc[fc->bc];
+    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"component\": \"%s\", \"force\": ", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->comps[fc->c] ? "y" : "x");
+    ContactJSONReal(fp, fc->force);
+    fprintf(fp, ", \"displacement\": ");
+    ContactJSONReal(fp, fc->U);
+    fprintf(fp, ", \"reaction\": ");
+    ContactJSONReal(fp, fc->R);
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "\n  ]");
+}
+
 /* The first pair's figures at top level, then every pair's under "contact". */
 static PetscErrorCode JSONContact(FILE *fp, Problem p)
 {
@@ -297,6 +317,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   ContactJSONReal(fp, PetscSqrtReal(unorm2));
   JSONReactions(fp, p);
   JSONLoads(fp, p);
+  JSONForceControl(fp, p);
   PetscCall(JSONContact(fp, p));
   JSONBodies(fp, p, F);
   JSONAccuracy(fp, rec);

@@ -37,12 +37,17 @@ PetscErrorCode RunCreateProblem(MPI_Comm comm, Problem *problem)
   Problem    p;
   EnergyTerm terms[CONTACT_MAX_TERMS];
   PetscInt   nterms;
+  PetscBool  autoPenalty;
 
   PetscFunctionBeginUser;
   PetscCall(ProblemCreate(comm, &p));
   PetscCall(ProblemSetFromOptions(p));
-  PetscCall(ContactPairsCreateFromOptions(comm, p->nbodies, p->bodies, CONTACT_MAX_TERMS, &nterms, terms));
+  PetscCall(ContactPairsCreateFromOptions(comm, p->nbodies, p->bodies, CONTACT_MAX_TERMS, &nterms, terms, &autoPenalty));
   for (PetscInt t = 0; t < nterms; ++t) PetscCall(ProblemAddTerm(p, terms[t]));
+  /* the automatic penalty is stiff (1000 E* / h): reached from 30 E* / h in two
+     stages, which takes as many Newton iterations as the soft penalty alone
+     (docs/formulations.md, "The penalty") */
+  if (autoPenalty) PetscCall(ProblemSetPenaltyContinuation(p, 2, 0.03));
   *problem = p;
   PetscFunctionReturn(0);
 }
@@ -97,6 +102,7 @@ static PetscErrorCode RunSayNotConverged(Problem p)
   char why[PETSC_MAX_PATH_LEN] = "", cut[128] = "";
 
   PetscFunctionBeginUser;
+  if (p->res.why[0]) PetscCall(PetscStrncpy(why, p->res.why, sizeof(why)));
   for (PetscInt t = 0; t < p->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(p->terms[t], sizeof(why), why));
   if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));

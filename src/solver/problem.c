@@ -34,6 +34,8 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.penaltyStages = 1;
   p->opt.penaltyStart  = 1e-2;
   p->opt.stageRtol     = 1e-3;
+  p->opt.controlMaxIt  = 40;
+  p->opt.controlRtol   = 1e-9;
   PetscCall(PetscStrncpy(p->opt.scene, "scene", sizeof(p->opt.scene)));
   *problem = p;
   PetscFunctionReturn(0);
@@ -156,10 +158,12 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
   PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
-  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, NULL));
-  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, NULL));
+  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
+  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
+  PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves of its outer iteration on the controlled displacements", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
+  PetscCall(PetscOptionsReal("-force_control_rtol", "Force control: stop when every controlled group's reaction is its force to this relative tolerance", NULL, p->opt.controlRtol, &p->opt.controlRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->opt.hessianSwitch, &p->opt.hessianSwitch, NULL));
   PetscOptionsEnd();
   PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", p->opt.meshDir, sizeof(p->opt.meshDir), NULL, 0)); /* relative to the options file that names it */
@@ -171,6 +175,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->opt.penaltyStages);
   PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
   PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
+  PetscCheck(p->opt.controlMaxIt >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.controlMaxIt);
+  PetscCheck(p->opt.controlRtol > 0 && p->opt.controlRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)p->opt.controlRtol);
   PetscCall(ProblemCheckSolverOptions(p));
   if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
     PetscCall(PetscStrallocpy("<body>", &names[0]));
@@ -216,6 +222,14 @@ PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
   PetscCheck(p->nterms < CONTACT_MAX_TERMS, p->comm, PETSC_ERR_USER_INPUT, "more than %d contact pairs", CONTACT_MAX_TERMS);
   PetscCall(EnergyTermSetHessianExact(t, p->exactHessian));
   p->terms[p->nterms++] = t;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetPenaltyContinuation(Problem p, PetscInt stages, PetscReal start)
+{
+  PetscFunctionBeginUser;
+  if (!p->opt.penaltyStagesSet) p->opt.penaltyStages = stages;
+  if (!p->opt.penaltyStartSet) p->opt.penaltyStart = start;
   PetscFunctionReturn(0);
 }
 
@@ -433,6 +447,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->opt.partitioner, p->opt.partitionView));
   PetscCall(PetscLogStagePush(contactLog.setup));
   PetscCall(ProblemCheckSupports(p));
+  PetscCall(ProblemCollectControls(p));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->offset[i] = nloc;
     nloc += p->bodies[i]->nlocal;
@@ -818,7 +833,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
    where a single solve from rest would, at -tao_gttol times the gradient
    norm of the full problem at rest, which makes the result independent of
    the staging. */
-static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
+static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscReal tol[3], g0 = -1.0, step = 1.0 / p->opt.loadSteps;
   Vec       Xs;
@@ -872,6 +887,20 @@ static PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedR
   PetscFunctionReturn(0);
 }
 
+/* The stages, and TAO's tolerances restored after them (they set each
+   stage's own), so that another solve of the same problem (force control's
+   next trial) stops by the same test. */
+PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal tol[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  PetscCall(ProblemSolveStages(p, its, reason));
+  PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
 {
   TaoConvergedReason reason;
@@ -883,7 +912,8 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(ProblemCreateSolver(p));
   PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
-  PetscCall(ProblemSolveStaged(p, &its, &reason));
+  if (p->ncontrols) PetscCall(ProblemSolveControlled(p, &its, &reason));
+  else PetscCall(ProblemSolveStaged(p, &its, &reason));
   p->res.iterations = its;
   p->res.reason     = reason;
   PetscCall(TaoGetType(p->tao, &type));
@@ -894,7 +924,8 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
     PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
     PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
   }
-  if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
+  if (p->ncontrols) PetscCall(PetscPrintf(p->comm, " (force control: %" PetscInt_FMT " solves)", p->res.controlSolves));
+  else if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   else if (p->opt.loadSteps * p->opt.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->opt.loadSteps * p->opt.penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
@@ -914,6 +945,7 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   PetscCall(PetscLogStagePush(contactLog.postprocess));
   if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->res.reason]));
   PetscCall(ProblemEvaluate(p, X, &p->res.energy, p->G, parts));
+  for (PetscInt k = 0; k < p->ncontrols; ++k) p->res.energy -= p->controls[k].force * p->controls[k].U; /* the forces' potential, as the loads' (forcecontrol.c) */
   PetscCall(VecNorm(p->G, NORM_2, &p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->res.bodyEnergy[i] = parts[i];
@@ -938,6 +970,16 @@ PetscErrorCode ProblemView(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermView(p->terms[t], p->bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemComputeReactions(Problem p, Vec X)
+{
+  PetscReal f;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   PetscFunctionReturn(0);
 }
 
