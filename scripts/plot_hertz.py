@@ -5,7 +5,8 @@ Usage:
     python3 scripts/plot_hertz.py out/hertz.h5 -o out/hertz.png
         contact pressure along each interface (both surfaces' profiles, a
         slave's own and, for mortar, a master's transferred from the slave,
-        plotted against s - s_c) with the Hertz curve when the scene declares one;
+        plotted against s - s_c, or with --axis x|y against the current x or
+        y coordinate) with the Hertz curve when the scene declares one;
         a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
@@ -373,28 +374,49 @@ def pressure_range(g, zoom, hertz_a=0.0):
     return ((lo + hi) / 2 - factor * half, (lo + hi) / 2 + factor * half)
 
 
-def plot_pressure(f, axes, units, zoom=None):
+def abscissa(side, axis):
+    """The samples' abscissa on the pressure plot, and the map from s - s_c
+    (the arc position from the centre) to it: the arc position itself (axis
+    "s"), or the samples' current x or y coordinate (interpolated along s
+    between them)."""
+    s, c = sample(side, "s"), attr(side, "centre", 0.0)
+    if axis == "s":
+        return s - c, lambda t: t
+    x, order = sample(side, "x")[:, "xy".index(axis)], np.argsort(s)
+    return x, lambda t: np.interp(np.asarray(t) + c, s[order], x[order])
+
+
+def plot_pressure(f, axes, units, zoom=None, axis="s"):
+    """Each pair's pressure profiles against the arc position s - s_c (axis
+    "s") or the current x or y coordinate (the Hertz curve then centred at
+    the slave's centre, its half-width along that axis)."""
     for ax, (pair, g) in zip(axes, f["contact"].items()):
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
+        centre = 0.0
         for side in profile_sides(g):
-            s, p = sample(side, "s") - attr(side, "centre", 0.0), sample(side, "pressure")
+            (u, to), p = abscissa(side, axis), sample(side, "pressure")
+            s = sample(side, "s") - attr(side, "centre", 0.0)
             name = f"{attr(side, 'body')}:{attr(side, 'group')}"
+            if is_slave(side):
+                centre = float(to(0.0))
             if is_nodal(side) and is_slave(side):
-                line, = ax.plot(*nodal_curve(s, p), "-", lw=1.2, label=f"{name}, nodal pressure (quadratic interpolant)")
-                ax.plot(s, p, "o", ms=3.5, color=line.get_color())
+                t, q = nodal_curve(s, p)
+                line, = ax.plot(to(t), q, "-", lw=1.2, label=f"{name}, nodal pressure (quadratic interpolant)")
+                ax.plot(u, p, "o", ms=3.5, color=line.get_color())
             elif is_nodal(side):
-                line, = ax.plot(*nodal_curve(s, p), "--", lw=1.2, label=f"{name}, master: slave's nodal forces / A_j")
-                ax.plot(s, p, "s", ms=3.5, mfc="none", color=line.get_color())
+                t, q = nodal_curve(s, p)
+                line, = ax.plot(to(t), q, "--", lw=1.2, label=f"{name}, master: slave's nodal forces / A_j")
+                ax.plot(u, p, "s", ms=3.5, mfc="none", color=line.get_color())
             else:
-                ax.plot(s, p, "o-", ms=3, lw=0.8, label=f"{name} (one-sided, Gauss points)")
+                ax.plot(u, p, "o-", ms=3, lw=0.8, label=f"{name} (one-sided, Gauss points)")
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
         text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force')}"]
-        xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0)
+        xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0) if axis == "s" else None
         if hertz and a > 0:
             pmax = attr(g, "hertz_pmax")
             t = np.linspace(-a, a, 401)
             ends = (min(-a, xr[0]), max(a, xr[1])) if xr else (-1.5 * a, 1.5 * a)
-            ax.plot(np.r_[ends[0], t, ends[1]],
+            ax.plot(centre + np.r_[ends[0], t, ends[1]],
                     np.r_[0, pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None)), 0],
                     "k-", lw=1.5, label="Hertz")
             fa, fp = attr(g, "fem_a"), attr(g, "fem_pmax")
@@ -411,7 +433,7 @@ def plot_pressure(f, axes, units, zoom=None):
                 fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
         ax.legend(loc="upper right", fontsize=8)
         ax.grid(alpha=0.3)
-        ax.set_xlabel(units.label("arc position s - s_c", "length"))
+        ax.set_xlabel(units.label("arc position s - s_c" if axis == "s" else f"current position {axis}", "length"))
         ax.set_ylabel(units.label("pressure p", "stress"))
         ax.set_title(f"contact pressure, pair '{pair}'")
 
@@ -455,6 +477,10 @@ def main():
                         help="frame the loaded contact zone enlarged F times (alone: "
                              "F = 3; the pressure plot's default is 1.5), or the "
                              "window x0,x1,y0,y1 (field plot coordinates)")
+    parser.add_argument("--axis", choices=("s", "x", "y"), default="s",
+                        help="the pressure plot's abscissa: the arc position from the "
+                             "contact centre (s, the default) or the current x or y "
+                             "coordinate (the Hertz curve centred at the slave's centre)")
     parser.add_argument("--units", type=parse_units, default=None, metavar="LENGTH,STRESS",
                         help="unit labels for the axes, e.g. mm,MPa (either may be "
                              "empty), or none; default: /metadata attributes "
@@ -488,7 +514,7 @@ def main():
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,
                                          layout="constrained")
-                plot_pressure(f, axes[:, 0], units, args.zoom)
+                plot_pressure(f, axes[:, 0], units, args.zoom, args.axis)
                 fig.suptitle(label)
         save(fig, args.output)
     except (OSError, KeyError, ValueError, TypeError, PlotError) as err:

@@ -282,3 +282,41 @@ def test_pressure_curves_are_the_hdf5(run, request, tmp_path):
     out = tmp_path / "p.png"
     assert plot(h5, "-o", out).returncode == 0
     assert_png(out)
+
+
+@pytest.mark.parametrize("axis", ["x", "y"])
+def test_pressure_against_coordinate(axis, mortar, tmp_path):
+    """--axis x|y: each surface's markers are the HDF5's current coordinate
+    (node_x's column) and pressure, exactly; the Hertz curve is the HDF5's a
+    and p_max, its peak at the slave's centre carried to that coordinate
+    (its arc position's coordinate interpolated along s from the HDF5):
+    measured 0, bound 100 EPS. Catches samples plotted against another
+    coordinate or the reference one, or a Hertz curve centred elsewhere."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    k = "xy".index(axis)
+    with h5py.File(mortar, "r") as f:
+        fig, ax = plt.subplots()
+        mod.plot_pressure(f, [ax], mod.Units(), None, axis)
+        lines = ax.get_lines()
+        g = f["contact/interface"]
+        for name in ("indenter_contact", "block_contact"):
+            side = g[name]
+            u, p = side["node_x"][()][:, k], side["node_pressure"][()]
+            drawn = [l for l in lines if np.array_equal(l.get_xdata(), u) and np.array_equal(l.get_ydata(), p)]
+            assert len(drawn) == 1, name
+        slave = g["indenter_contact"]
+        s, order = slave["node_s"][()], np.argsort(slave["node_s"][()])
+        centre = np.interp(slave.attrs["centre"], s[order], slave["node_x"][()][order, k])
+        a, pmax = (float(np.ravel(g.attrs[key])[0]) for key in ("hertz_a", "hertz_pmax"))
+        hz, = [l for l in lines if l.get_label() == "Hertz"]
+        t, q = hz.get_xdata(), hz.get_ydata()
+        peak = t[np.argmax(q)]
+        print(f"{axis}: Hertz peak at {peak!r}, slave's centre at {centre!r}")
+        assert abs(peak - centre) <= 100 * EPS * max(1.0, abs(centre))
+        assert np.abs(q - pmax * np.sqrt(np.clip(1 - ((t - centre) / a) ** 2, 0, None))).max() <= 100 * EPS * pmax
+        assert ax.get_xlabel() == f"current position {axis}"
+        plt.close(fig)
+    out = tmp_path / "p.png"
+    assert plot(mortar, "--axis", axis, "-o", out).returncode == 0
+    assert_png(out)
