@@ -15,13 +15,13 @@ import argparse
 import glob
 import json
 import os
-import subprocess
 import sys
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from contactrun import ROOT, run_case  # noqa: E402
+
 SKIP_JSON = ("time", "run_id", "solve_time")
 SKIP_H5 = ("run_id", "options", "time_mesh", "time_setup", "time_solve", "time_output", "time_total")
 
@@ -43,14 +43,10 @@ def cases():
 def run(directory, binary):
     os.makedirs(directory, exist_ok=True)
     for name, opts, ranks in cases():
-        cmd = [binary] + opts + ["-output", os.path.join(directory, name + ".h5"),
-                                 "-summary", os.path.join(directory, name + ".json")]
-        if ranks > 1:
-            cmd = ["mpiexec", "--oversubscribe", "-n", str(ranks)] + cmd
-        p = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True)
+        r = run_case(opts, directory, name, ranks=ranks, binary=binary)
         with open(os.path.join(directory, name + ".log"), "w") as f:
-            f.write(p.stdout + p.stderr)
-        print(f"{name}: exit {p.returncode}", flush=True)
+            f.write(r.stdout + r.stderr)
+        print(f"{name}: exit {r.returncode}", flush=True)
 
 
 def flat(v, key=""):

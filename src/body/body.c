@@ -30,6 +30,61 @@ static PetscErrorCode CheckFinite(MPI_Comm comm, const char opt[], PetscReal v)
   PetscFunctionReturn(0);
 }
 
+/* Dirichlet condition bc (its group name set) from the options under
+   -<body>_bc_<group>_: components, values, the exact solution, controls. */
+static PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
+{
+  char      opt[4 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
+  PetscInt  nc = 2, nv = 2, nctl = 2;
+  PetscBool setc, setv, setctl;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
+  bc->values[0] = bc->values[1] = 0.0;
+  PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
+  PetscCall(PetscOptionsStringArray("-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
+  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
+  PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
+  PetscCall(PetscOptionsStringArray("-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
+  PetscOptionsEnd();
+  if (!setc) {
+    bc->ncomp    = 2;
+    bc->comps[0] = 0;
+    bc->comps[1] = 1;
+  } else {
+    bc->ncomp = nc;
+    for (PetscInt c = 0; c < nc; ++c) {
+      PetscBool isx, isy;
+      PetscCall(PetscStrcmp(comps[c], "x", &isx));
+      PetscCall(PetscStrcmp(comps[c], "y", &isy));
+      PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
+      bc->comps[c] = isx ? 0 : 1;
+      PetscCall(PetscFree(comps[c]));
+    }
+  }
+  PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
+  for (PetscInt c = 0; c < bc->ncomp; ++c) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
+    PetscCall(CheckFinite(b->comm, opt, bc->values[c]));
+  }
+  PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
+  PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
+  for (PetscInt c = 0; setctl && c < nctl; ++c) {
+    PetscBool disp, force;
+    PetscCall(PetscStrcmp(control[c], "displacement", &disp));
+    PetscCall(PetscStrcmp(control[c], "force", &force));
+    PetscCheck(disp || force, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: unknown control '%s' (use displacement, force)", bprefix, control[c]);
+    PetscCheck(!force || !bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: a force-controlled component cannot impose the exact solution", bprefix);
+    bc->control[c] = force;
+    if (force) { /* the value is the force; the displacement starts at 0 */
+      bc->force[c]  = bc->values[c];
+      bc->values[c] = 0.0;
+    }
+    PetscCall(PetscFree(control[c]));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
 {
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
@@ -97,56 +152,9 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   }
   b->nbc = nbc;
   for (PetscInt i = 0; i < nbc; ++i) {
-    BodyBC   *bc = &b->bc[i];
-    char      bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
-    PetscInt  nc = 2, nv = 2, nctl = 2;
-    PetscBool setc, setv, setctl;
-
-    PetscCall(PetscStrncpy(bc->group, bcnames[i], sizeof(bc->group)));
+    PetscCall(PetscStrncpy(b->bc[i].group, bcnames[i], sizeof(b->bc[i].group)));
     PetscCall(PetscFree(bcnames[i]));
-    PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
-    bc->values[0] = bc->values[1] = 0.0;
-    PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
-    PetscCall(PetscOptionsStringArray("-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
-    PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
-    PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
-    PetscCall(PetscOptionsStringArray("-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
-    PetscOptionsEnd();
-    if (!setc) {
-      bc->ncomp    = 2;
-      bc->comps[0] = 0;
-      bc->comps[1] = 1;
-    } else {
-      bc->ncomp = nc;
-      for (PetscInt c = 0; c < nc; ++c) {
-        PetscBool isx, isy;
-        PetscCall(PetscStrcmp(comps[c], "x", &isx));
-        PetscCall(PetscStrcmp(comps[c], "y", &isy));
-        PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
-        bc->comps[c] = isx ? 0 : 1;
-        PetscCall(PetscFree(comps[c]));
-      }
-    }
-    PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
-    for (PetscInt c = 0; c < bc->ncomp; ++c) {
-      PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
-      PetscCall(CheckFinite(b->comm, opt, bc->values[c]));
-    }
-    PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
-    PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
-    for (PetscInt c = 0; setctl && c < nctl; ++c) {
-      PetscBool disp, force;
-      PetscCall(PetscStrcmp(control[c], "displacement", &disp));
-      PetscCall(PetscStrcmp(control[c], "force", &force));
-      PetscCheck(disp || force, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: unknown control '%s' (use displacement, force)", bprefix, control[c]);
-      PetscCheck(!force || !bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: a force-controlled component cannot impose the exact solution", bprefix);
-      bc->control[c] = force;
-      if (force) { /* the value is the force; the displacement starts at 0 */
-        bc->force[c]  = bc->values[c];
-        bc->values[c] = 0.0;
-      }
-      PetscCall(PetscFree(control[c]));
-    }
+    PetscCall(BodyBCSetFromOptions(b, prefix, &b->bc[i]));
   }
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
