@@ -140,7 +140,7 @@ CASES = {
     "options_file_nested_missing": (options_file_nested_missing, None),
     "mesh_size_not_number": (["-mesh_size", "abc"], "option -mesh_size: 'abc' is not a number"),
     "E_not_number": (["-block_E", "1e3.5"], "option -block_E: '1e3.5'"),
-    "kp_not_number": (["-contact_penalty", "2e6x"], "option -contact_penalty: '2e6x'"),
+    "kp_not_number": (["-contact_penalty", "2e6x"], "option -contact_penalty: must be auto or a finite number > 0, got 2e6x"),
     "push_not_number": (["-block_bc_push_values", "-0.15,abc"], "option -block_bc_push_values: 'abc'"),
     "quadrature_not_integer": (["-contact_quadrature_points", "2.5"], "option -contact_quadrature_points: '2.5' is not an integer"),
     "max_it_not_integer": (["-tao_max_it", "many"], "option -tao_max_it: 'many'"),
