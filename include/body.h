@@ -11,6 +11,7 @@ typedef struct {
   PetscInt  ncomp, comps[2];
   PetscReal values[2];
   PetscBool control[2]; /* component c (of comps) is force-controlled */
+  PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
   PetscReal force[2];   /* its force: the reaction it must have */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
@@ -73,6 +74,7 @@ struct _n_Body {
   PetscSection nodeGS;      /* global numbering of the node points */
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
   PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
+  PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
 };
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
@@ -114,6 +116,12 @@ PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
 PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[3]);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
+/* The rank of a rigid-motion constraint Gram matrix (3 x 3: x and y
+   translation, rotation), by elimination with full pivoting. */
+PetscInt       BodyRigidRank(const PetscReal M[9]);
+/* Anchors the rigid motions its Dirichlet conditions leave free (anchors.c;
+   in BodySetUp, before the section is made). */
+PetscErrorCode BodyAddAnchors(Body);
 /* A body's errors against its exact solution, if any (zero without one), with
    the exact solution's norms: L2 of u, energy norm, L2 of the stress. */
 typedef struct {

@@ -47,6 +47,7 @@ typedef struct {
 typedef struct {
   PetscInt  body, bc, c;
   PetscReal force, U, R;
+  PetscReal scale; /* what |R - force| is measured against: |force|, or for an anchor (force 0) the body's loads */
 } ForceControl;
 
 /* What a solve and its post-processing found. */

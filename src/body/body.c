@@ -572,6 +572,18 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
     ctx[1] = bc;
     PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
   }
+  if (b->mayAnchor) { /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
+    const PetscInt first = b->nbc;
+    PetscInt       one   = 1;
+    PetscCall(BodyAddAnchors(b));
+    for (PetscInt i = first; i < b->nbc; ++i) {
+      BodyBC *bc  = &b->bc[i];
+      void  **ctx = b->bcctx[i];
+      ctx[0]      = b;
+      ctx[1]      = bc;
+      PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
+    }
+  }
   PetscCall(DMCreateLocalVector(b->dm, &b->Xl));
   PetscCall(VecDuplicate(b->Xl, &b->Gl));
   PetscCall(VecDuplicate(b->Xl, &b->bcl));
@@ -834,34 +846,38 @@ PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
     PetscCall(ISDestroy(&is));
   }
   PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
-  /* rank by Gaussian elimination with full pivoting, relative tolerance */
-  {
-    PetscReal tol = 1e-10 * (Mg[0] + Mg[4] + Mg[8]);
-    PetscInt  rank = 0;
-    PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-    for (PetscInt step = 0; step < 3; ++step) {
-      PetscInt  pr = -1, pc = -1;
-      PetscReal best = tol;
-      for (PetscInt a = 0; a < 3; ++a)
-        for (PetscInt e = 0; e < 3; ++e)
-          if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
-            best = PetscAbsReal(Mg[3 * a + e]);
-            pr   = a;
-            pc   = e;
-          }
-      if (pr < 0) break;
-      used[pr] = PETSC_TRUE;
-      ++rank;
-      for (PetscInt a = 0; a < 3; ++a) {
-        PetscReal f;
-        if (used[a]) continue;
-        f = Mg[3 * a + pc] / Mg[3 * pr + pc];
-        for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
-      }
-    }
-    *nfree = 3 - rank;
-  }
+  *nfree = 3 - BodyRigidRank(Mg);
   PetscFunctionReturn(0);
+}
+
+PetscInt BodyRigidRank(const PetscReal M[9])
+{
+  PetscReal Mg[9], tol = 1e-10 * (M[0] + M[4] + M[8]);
+  PetscInt  rank = 0;
+  PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+
+  for (PetscInt k = 0; k < 9; ++k) Mg[k] = M[k];
+  for (PetscInt step = 0; step < 3; ++step) {
+    PetscInt  pr = -1, pc = -1;
+    PetscReal best = tol;
+    for (PetscInt a = 0; a < 3; ++a)
+      for (PetscInt e = 0; e < 3; ++e)
+        if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
+          best = PetscAbsReal(Mg[3 * a + e]);
+          pr   = a;
+          pc   = e;
+        }
+    if (pr < 0) break;
+    used[pr] = PETSC_TRUE;
+    ++rank;
+    for (PetscInt a = 0; a < 3; ++a) {
+      PetscReal f;
+      if (used[a]) continue;
+      f = Mg[3 * a + pc] / Mg[3 * pr + pc];
+      for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
+    }
+  }
+  return rank;
 }
 
 /* Errors of u_h against the body's exact solution u, by the cell quadrature

@@ -186,7 +186,7 @@ static void JSONForceControl(FILE *fp, Problem p)
   for (PetscInt k = 0; k < p->ncontrols; ++k) {
     const ForceControl *fc = &p->controls[k];
     const BodyBC       *bc = &p->bodies[fc->body]->bc[fc->bc];
-    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"component\": \"%s\", \"force\": ", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->comps[fc->c] ? "y" : "x");
+    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\", \"force\": ", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->anchor ? "true" : "false", bc->comps[fc->c] ? "y" : "x");
     ContactJSONReal(fp, fc->force);
     fprintf(fp, ", \"displacement\": ");
     ContactJSONReal(fp, fc->U);

@@ -44,6 +44,9 @@ PetscErrorCode ProblemCollectControls(Problem p)
         fc->c     = c;
         fc->force = p->bodies[i]->bc[j].force[c];
         fc->U     = 0.0;
+        fc->scale = PetscAbsReal(fc->force);
+        for (PetscInt l = 0; l < p->bodies[i]->nload; ++l) fc->scale += PetscSqrtReal(PetscSqr(p->bodies[i]->load[l].force[0]) + PetscSqr(p->bodies[i]->load[l].force[1]));
+        if (!(fc->scale > 0)) fc->scale = 1.0;
       }
   PetscFunctionReturn(0);
 }
@@ -106,10 +109,8 @@ static PetscErrorCode ControlSolve(Problem p, const PetscReal U[], Vec X0, Petsc
 /* Whether every reaction is its force to the tolerance. */
 static PetscBool ControlConverged(Problem p, const PetscReal R[])
 {
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    const PetscReal F = p->controls[k].force, scale = PetscMax(PetscAbsReal(F), PETSC_SMALL);
-    if (PetscAbsReal(R[k] - F) > p->opt.controlRtol * scale) return PETSC_FALSE;
-  }
+  for (PetscInt k = 0; k < p->ncontrols; ++k)
+    if (PetscAbsReal(R[k] - p->controls[k].force) > p->opt.controlRtol * p->controls[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 

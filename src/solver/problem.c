@@ -290,7 +290,7 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
     if (!nfree) continue;
     for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
     SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
-            contact ? " (frictionless contact pushes but does not hold it)" : " and it is in no contact pair", b->name);
+            contact ? " (frictionless contact pushes but does not hold it; a load pressing it on, -<body>_load, would)" : " and it is in no contact pair", b->name);
   }
   PetscFunctionReturn(0);
 }
@@ -444,7 +444,11 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetUp(p->bodies[i], p->opt.partitioner, p->opt.partitionView));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a loaded body in a contact may be held by it (anchors.c) */
+    Body b = p->bodies[i];
+    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(b->mayAnchor || (p->terms[t]->couples[i] && b->nload > 0));
+    PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
+  }
   PetscCall(PetscLogStagePush(contactLog.setup));
   PetscCall(ProblemCheckSupports(p));
   PetscCall(ProblemCollectControls(p));

@@ -1,0 +1,230 @@
+/* A body held by contact: one whose Dirichlet conditions leave a rigid
+   motion free, which a load (a traction or a pressure) presses into a
+   contact. Its energy has no minimum without the contact, and the contact
+   holds it only once the bodies touch: from rest the stiffness is singular,
+   and the Newton step's factorisations (of K alone, in the Schur step) need
+   it regular.
+
+   So the free rigid motions are anchored: at most two vertices, A and B,
+   get Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no
+   rigid motion free), each force-controlled with force zero
+   (forcecontrol.c). Every solve of the outer iteration is then regular (the
+   anchors hold the body where the contact does not yet), and at its end each
+   anchor's reaction is zero: the anchors carry nothing, the body is held by
+   the contact alone, and the answer is the free body's. A is the loaded
+   vertex nearest the loaded vertices' centroid (the anchor carries the load
+   until the contact takes it, so it sits where the load is), B the vertex
+   farthest from A (a lever arm against rotation); a component a Dirichlet
+   condition holds at a vertex is not anchored there. */
+#include "body.h"
+
+/* A row of the rigid-motion constraint Gram matrix: a component c fixed at
+   (x, y) (coordinates centred and scaled) removes (e_c, r_c) with r = (-y, x). */
+static void AddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
+{
+  const PetscReal r[3] = {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? -y : x};
+
+  for (PetscInt a = 0; a < 3; ++a)
+    for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
+}
+
+/* The vertices of this rank: their points and coordinates (PetscFree2). */
+static PetscErrorCode Vertices(Body b, PetscInt *n, PetscInt **pts, PetscReal **xy)
+{
+  DM                 cdm;
+  PetscSection       cs;
+  Vec                coords;
+  const PetscScalar *c;
+  PetscInt           vs, ve;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
+  PetscCall(VecGetArrayRead(coords, &c));
+  *n = ve - vs;
+  PetscCall(PetscMalloc2(*n + 1, pts, 2 * (*n) + 2, xy));
+  for (PetscInt v = vs; v < ve; ++v) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    (*pts)[v - vs]           = v;
+    (*xy)[2 * (v - vs)]     = PetscRealPart(c[off]);
+    (*xy)[2 * (v - vs) + 1] = PetscRealPart(c[off + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &c));
+  PetscFunctionReturn(0);
+}
+
+/* Whether component c of vertex v is held by a Dirichlet condition. */
+static PetscErrorCode Constrained(Body b, PetscInt v, PetscInt c, PetscBool *held)
+{
+  PetscFunctionBeginUser;
+  *held = PETSC_FALSE;
+  for (PetscInt i = 0; i < b->nbc && !*held; ++i) {
+    PetscInt val;
+    PetscCall(DMLabelGetValue(b->bc[i].label, v, &val));
+    for (PetscInt j = 0; j < b->bc[i].ncomp && val == 1; ++j)
+      if (b->bc[i].comps[j] == c) *held = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Whether vertex v is on an edge of one of the body's loaded groups. */
+static PetscErrorCode Loaded(Body b, PetscInt v, PetscBool *on)
+{
+  DMLabel         faces;
+  const PetscInt *supp;
+  PetscInt        ns;
+
+  PetscFunctionBeginUser;
+  *on = PETSC_FALSE;
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  if (!faces) PetscFunctionReturn(0);
+  PetscCall(DMPlexGetSupportSize(b->dm, v, &ns));
+  PetscCall(DMPlexGetSupport(b->dm, v, &supp));
+  for (PetscInt k = 0; k < ns && !*on; ++k) {
+    PetscInt val;
+    PetscCall(DMLabelGetValue(faces, supp[k], &val));
+    for (PetscInt l = 0; l < b->nload && val >= 0; ++l) {
+      PetscInt tag;
+      PetscCall(BodyGetPhysicalTag(b, b->load[l].group, 1, &tag));
+      if (val == tag) *on = PETSC_TRUE;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The constraint Gram matrix of the body's Dirichlet conditions (over every
+   rank), in coordinates centred at c and scaled by L. */
+static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], const PetscReal xy[], const PetscReal c[2], PetscReal L, PetscReal M[9])
+{
+  PetscReal Ml[9] = {0};
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k)
+    for (PetscInt i = 0; i < b->nbc; ++i) {
+      PetscInt val;
+      PetscCall(DMLabelGetValue(b->bc[i].label, pts[k], &val));
+      if (val != 1) continue;
+      for (PetscInt j = 0; j < b->bc[i].ncomp; ++j) AddRow(Ml, b->bc[i].comps[j], (xy[2 * k] - c[0]) / L, (xy[2 * k + 1] - c[1]) / L);
+    }
+  PetscCall(MPIU_Allreduce(Ml, M, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscFunctionReturn(0);
+}
+
+/* A Dirichlet condition on the one vertex at (x, y) (on every rank that has
+   it), components comps, force-controlled with force zero. */
+static PetscErrorCode AddAnchor(Body b, const char name[], PetscInt n, const PetscInt pts[], const PetscReal xy[], const PetscReal at[2], PetscInt ncomp, const PetscInt comps[])
+{
+  BodyBC *bc;
+
+  PetscFunctionBeginUser;
+  PetscCheck(b->nbc < CONTACT_MAX_BC, b->comm, PETSC_ERR_USER_INPUT, "body %s: no room for its anchor: at most %d Dirichlet conditions", b->name, CONTACT_MAX_BC);
+  bc = &b->bc[b->nbc++];
+  PetscCall(PetscMemzero(bc, sizeof(*bc)));
+  PetscCall(PetscStrncpy(bc->group, name, sizeof(bc->group)));
+  bc->ncomp  = ncomp;
+  bc->anchor = PETSC_TRUE;
+  for (PetscInt j = 0; j < ncomp; ++j) {
+    bc->comps[j]   = comps[j];
+    bc->control[j] = PETSC_TRUE; /* force 0 */
+  }
+  PetscCall(DMCreateLabel(b->dm, name));
+  PetscCall(DMGetLabel(b->dm, name, &bc->label));
+  for (PetscInt k = 0; k < n; ++k)
+    if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) PetscCall(DMLabelSetValue(bc->label, pts[k], 1));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyAddAnchors(Body b)
+{
+  PetscInt   n = 0, *pts = NULL, rank0, nA = 0, nB = 0, cA[2], cB[2];
+  PetscReal *xy = NULL, lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, c[2], L;
+  PetscReal  M[9], A[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, B[3] = {-1.0, 0.0, 0.0};
+
+  PetscFunctionBeginUser;
+  PetscCall(Vertices(b, &n, &pts, &xy));
+  for (PetscInt k = 0; k < n; ++k)
+    for (PetscInt d = 0; d < 2; ++d) {
+      lo[d] = PetscMin(lo[d], xy[2 * k + d]);
+      hi[d] = PetscMin(hi[d], -xy[2 * k + d]);
+    }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MIN, b->comm));
+  c[0] = 0.5 * (lo[0] - hi[0]);
+  c[1] = 0.5 * (lo[1] - hi[1]);
+  L    = PetscMax(-hi[0] - lo[0], -hi[1] - lo[1]);
+  if (!(L > 0)) L = 1.0;
+  PetscCall(DirichletGram(b, n, pts, xy, c, L, M));
+  rank0 = BodyRigidRank(M);
+  if (rank0 == 3) {
+    PetscCall(PetscFree2(pts, xy));
+    PetscFunctionReturn(0);
+  }
+  { /* A: the loaded vertex nearest the loaded vertices' centroid (least (x, y) on a tie) */
+    PetscReal m[3] = {0, 0, 0}, dbest = PETSC_MAX_REAL, dmin;
+    PetscBool *on;
+    PetscCall(PetscMalloc1(n + 1, &on));
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscCall(Loaded(b, pts[k], &on[k]));
+      if (!on[k]) continue;
+      m[0] += xy[2 * k];
+      m[1] += xy[2 * k + 1];
+      m[2] += 1;
+    }
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 3, MPIU_REAL, MPIU_SUM, b->comm)); /* a vertex shared by ranks counts twice: the centroid moves, not the choice's rule */
+    PetscCheck(m[2] > 0, b->comm, PETSC_ERR_USER_INPUT, "body %s: a rigid motion is free and its loads have no vertex to anchor", b->name);
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscReal d = PetscSqr(xy[2 * k] - m[0] / m[2]) + PetscSqr(xy[2 * k + 1] - m[1] / m[2]);
+      if (!on[k]) continue;
+      if (d < dbest || (d == dbest && (xy[2 * k] < A[0] || (xy[2 * k] == A[0] && xy[2 * k + 1] < A[1])))) {
+        dbest = d;
+        A[0]  = xy[2 * k];
+        A[1]  = xy[2 * k + 1];
+      }
+    }
+    PetscCall(PetscFree(on));
+    PetscCall(MPIU_Allreduce(&dbest, &dmin, 1, MPIU_REAL, MPIU_MIN, b->comm));
+    if (dbest > dmin) A[0] = A[1] = PETSC_MAX_REAL;
+  }
+  PetscCheck(A[0] < PETSC_MAX_REAL, b->comm, PETSC_ERR_USER_INPUT, "body %s: every vertex is in a Dirichlet group, yet a rigid motion is free", b->name);
+  for (PetscInt k = 0; k < n; ++k) { /* B: the vertex farthest from A */
+    const PetscReal d = PetscSqr(xy[2 * k] - A[0]) + PetscSqr(xy[2 * k + 1] - A[1]);
+    if (d > B[0] || (d == B[0] && (xy[2 * k] < B[1] || (xy[2 * k] == B[1] && xy[2 * k + 1] < B[2])))) {
+      B[0] = d;
+      B[1] = xy[2 * k];
+      B[2] = xy[2 * k + 1];
+    }
+  }
+  {
+    PetscReal dmax;
+    PetscCall(MPIU_Allreduce(&B[0], &dmax, 1, MPIU_REAL, MPIU_MAX, b->comm));
+    if (B[0] < dmax) B[1] = B[2] = PETSC_MAX_REAL;
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &B[1], 2, MPIU_REAL, MPIU_MIN, b->comm));
+  }
+  /* the fewest components, A's first, that fix every rigid motion */
+  for (PetscInt j = 0; j < 4 && BodyRigidRank(M) < 3; ++j) {
+    const PetscReal *at = j < 2 ? A : &B[1];
+    PetscReal        T[9], held = 0;
+    for (PetscInt k = 0; k < n; ++k) /* a component a Dirichlet condition holds there is not an anchor's */
+      if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) {
+        PetscBool h;
+        PetscCall(Constrained(b, pts[k], j % 2, &h));
+        if (h) held = 1;
+      }
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &held, 1, MPIU_REAL, MPIU_MAX, b->comm));
+    if (held > 0) continue;
+    PetscCall(PetscArraycpy(T, M, 9));
+    AddRow(T, j % 2, (at[0] - c[0]) / L, (at[1] - c[1]) / L);
+    if (BodyRigidRank(T) == BodyRigidRank(M)) continue;
+    PetscCall(PetscArraycpy(M, T, 9));
+    if (j < 2) cA[nA++] = j % 2;
+    else cB[nB++] = j % 2;
+  }
+  if (nA) PetscCall(AddAnchor(b, "anchor_a", n, pts, xy, A, nA, cA));
+  if (nB) PetscCall(AddAnchor(b, "anchor_b", n, pts, xy, &B[1], nB, cB));
+  PetscCall(PetscInfo(NULL, "body %s: held by contact: %" PetscInt_FMT " rigid motion(s) anchored at (%g, %g)%s\n", b->name, 3 - rank0, (double)A[0], (double)A[1], nB ? " and its farthest vertex" : ""));
+  PetscCall(PetscFree2(pts, xy));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,64 @@
+"""A body held by contact (src/body/anchors.c): the reference scene's block
+with only u_y = 0 on its right edge (x translation and the rotation about
+that edge free) and a pressure on that edge that presses it onto the disc.
+Its free motions are anchored by force-controlled vertices whose force is
+zero at the end, so the answer is the free block's. Checked against what
+must hold whatever the discretisation: the block is free in x, so the
+contact force equals the load (its equilibrium); the anchors carry nothing;
+1 and 2 ranks agree; a body that nothing holds is still refused."""
+import numpy as np
+import pytest
+
+from conftest import run_contact
+
+HELD = ["-options_file", "meshes/hertz/hertz.opts", "-block_bc_push_components", "y", "-block_bc_push_values", "0",
+        "-block_load", "push", "-block_load_push_pressure", "27.5"]
+LOAD = 27.5 * 2.0   # the pressure times the edge's length
+
+
+def test_held_from_rest(tmp_path):
+    """Converges from rest with no option chosen for it (exit 0). The contact
+    force is the load: their difference is the anchors' reactions plus the
+    solve's residual (the block's x-equilibrium), measured 1.5e-10 of the
+    load, 3e-3 of its bound, that sum (the anchors' reactions, 1.4e-9 and
+    8.9e-10, within -force_control_rtol 1e-9 of the load; plus sqrt(n) times
+    the gradient norm). The anchors' reactions are the outer iteration's stop; the JSON
+    lists them as anchors."""
+    s = run_contact(HELD + ["-output", "none"], tmp_path).summary
+    anchors = [c for c in s["force_control"] if c["anchor"]]
+    assert anchors and all(c["body"] == "block" and c["force"] == 0 for c in anchors)
+    residual = sum(abs(c["reaction"]) for c in anchors) + np.sqrt(s["dofs"]) * s["gradient_norm"]
+    print(f"P {s['contact_force']!r} against the load {LOAD}: {abs(s['contact_force'] - LOAD):.2e}, "
+          f"bound {residual:.2e}; anchors {[(c['group'], c['component'], c['reaction']) for c in anchors]}")
+    assert abs(s["contact_force"] - LOAD) <= residual
+    assert all(abs(c["reaction"]) <= 1e-9 * LOAD for c in anchors)
+    assert abs(s["loads"]["block:push"][0] + LOAD) <= 1e-13 * LOAD
+
+
+def test_held_ranks(tmp_path):
+    """1 and 2 ranks: the same contact force and anchor displacements to 1e-8
+    (the anchors are chosen by coordinates, the same on every partition).
+    Both solved to -force_control_rtol 1e-11 and -tao_gttol 1e-12, where the
+    outer and inner stops add nothing (at the defaults the two stop 1.6e-8
+    apart in a displacement): measured 1.6e-13 (P) and 7e-16."""
+    tight = ["-output", "none", "-force_control_rtol", "1e-11", "-tao_gttol", "1e-12"]
+    one = run_contact(HELD + tight, tmp_path, name="np1").summary
+    two = run_contact(HELD + tight, tmp_path, ranks=2, name="np2").summary
+    assert abs(one["contact_force"] - two["contact_force"]) <= 1e-8 * LOAD
+    for a, b in zip(one["force_control"], two["force_control"]):
+        assert (a["group"], a["component"]) == (b["group"], b["component"])
+        assert abs(a["displacement"] - b["displacement"]) <= 1e-8 * max(abs(a["displacement"]), 1e-3), (a, b)
+
+
+@pytest.mark.parametrize("case,extra,cause", [
+    ("no_load", ["-options_file", "meshes/hertz/hertz.opts", "-block_bc_push_components", "y", "-block_bc_push_values", "0"],
+     "body block: its Dirichlet conditions leave 2 rigid motion(s) free"),
+    ("no_contact", HELD + ["-contact_disable"], "and it is in no contact pair"),
+])
+def test_nothing_holds(case, extra, cause, tmp_path):
+    """Without a load pressing it on, or without a contact, the body is still
+    refused in one line."""
+    r = run_contact(extra, tmp_path, check=False)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert r.returncode == 1 and len(lines) == 1 and lines[0].startswith("contact: error: "), r.stderr
+    assert cause in lines[0], lines[0]
