@@ -158,7 +158,7 @@ def test_schur_step(tmp_path):
     assert abs(a["energy"] / b["energy"] - 1) <= 100 * EPS
 
 
-@pytest.mark.parametrize("kernels", ["Nehalem", "Haswell"])
+@pytest.mark.parametrize("kernels", ["Nehalem"])   # Sandybridge and Haswell: the same figures (measured); kept out for make test's time
 def test_blas_kernels(kernels, half, tmp_path):
     """The finest half run (h = 0.005, whose first Newton step from rest pushes
     the disc 0.105 into the block) converges to the same answer with OpenBLAS's
