@@ -9,7 +9,7 @@
 typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
 extern const char *const HessianTypes[];
 
-typedef enum { H0_NONE, H0_ELASTIC } H0Type;
+typedef enum { H0_NONE, H0_ELASTIC, H0_CONTACT } H0Type;
 extern const char *const H0Types[];
 
 /* How the Newton step's Schur complement on the contact surfaces is formed:
@@ -28,6 +28,7 @@ typedef struct {
   PetscBool   partitionView, taylor;
   PetscReal   taylorScale;
   H0Type      h0;
+  PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
@@ -61,6 +62,7 @@ typedef struct {
   PetscReal          taylorRates[2], taylorRemainders[2][8], taylorEps[8]; /* ProblemTaylorTest */
   PetscInt           taylorN;
   PetscInt           controlSolves; /* force control: the solves of its outer iteration */
+  PetscInt           h0Refreshes;   /* -lmvm_h0 contact: the H0 set-ups (the first included) */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 

@@ -111,7 +111,8 @@ STRATEGIES = [("Newton, Schur step (default)", []),
               ("Newton + penalty continuation", ["-penalty_stages", "3"]),
               ("Newton + load stepping", ["-load_steps", "3"]),
               ("Newton, trust region", ["-tao_type", "ntr"]),
-              ("L-BFGS, elastic H0", ["-tao_type", "lmvm"]),
+              ("L-BFGS, H0 the stiffness + contact Hessian, one pair (default)", ["-tao_type", "lmvm"]),
+              ("L-BFGS, elastic H0", ["-tao_type", "lmvm", "-lmvm_h0", "elastic"]),
               ("plain L-BFGS (the original study's method)", ["-tao_type", "lmvm", "-lmvm_h0", "none"]),
               ("Newton, gpts formulation", ["-contact_formulation", "gpts"])]
 

@@ -31,7 +31,7 @@ DOMAINS = {
     "indenter_quadrature_degree": ("int", 1, False), "block_quadrature_degree": ("int", 1, False),
     "indenter_bc_clamp_values": ("reals", None, False), "block_bc_push_values": ("reals", None, False),
     "indenter_exact_params": ("reals", None, False), "block_exact_params": ("reals", None, False),
-    "partitioner": ("choice",), "lmvm_h0": ("choice",), "contact_hessian": ("choice",),
+    "partitioner": ("choice",), "lmvm_h0": ("choice",), "lmvm_h0_refresh": ("int", 1, False), "contact_hessian": ("choice",),
     "contact_formulation": ("choice",), "contact_interface_formulation": ("choice",),
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",),
