@@ -24,7 +24,8 @@
    in the force's direction, doubled. Each trial is solved from the last
    converged state (one stage: the load and penalty stages, if any, are for
    the first solve from rest). It stops when |R - F| <= -force_control_rtol
-   |F| in every component (1e-9), or after -force_control_max_it solves. */
+   (1e-9) times |F| in every component (an anchor's F is 0: times the size
+   of its body's loads, anchors.c), or after -force_control_max_it solves. */
 #include "problem.h"
 #include <petscblaslapack.h>
 
