@@ -22,6 +22,9 @@ PetscErrorCode ContactInitializeLogging(void);
 int ContactMakeDirs(const char dir[]);
 /* A real in JSON: null for NaN and Inf (json.c). */
 void ContactJSONReal(FILE *fp, PetscReal v);
+/* sep "key": v, and sep "key": [v0, v1] (json.c). */
+void ContactJSONKeyReal(FILE *fp, const char sep[], const char key[], PetscReal v);
+void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const PetscReal v[2]);
 
 /* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */
 void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal *W);

@@ -205,36 +205,21 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscFunctionReturn(0);
 }
 
-static void JKV(FILE *fp, const char sep[], const char key[], PetscReal v)
-{
-  fprintf(fp, "%s\"%s\": ", sep, key);
-  ContactJSONReal(fp, v);
-}
-
-static void JVec2(FILE *fp, const char key[], const PetscReal v[2])
-{
-  fprintf(fp, ", \"%s\": [", key);
-  ContactJSONReal(fp, v[0]);
-  fprintf(fp, ", ");
-  ContactJSONReal(fp, v[1]);
-  fprintf(fp, "]");
-}
-
 /* The figures of a pair, each preceded by sep. */
 static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairSpec *spec, const char sep[], const char forceKey[])
 {
-  JKV(fp, sep, forceKey, R->P);
-  JKV(fp, sep, "max_penetration", R->maxPen);
-  JKV(fp, sep, "overlap_edges", R->hEdge > 0 && R->hEdge < PETSC_MAX_REAL ? R->maxPen / R->hEdge : 0.0); /* over 1: the report's warning */
-  JKV(fp, sep, "fem_pmax", R->femPmax);
-  JKV(fp, sep, "fem_a", R->femA);
-  JKV(fp, sep, "fem_a_moment", R->femAm);
+  ContactJSONKeyReal(fp, sep, forceKey, R->P);
+  ContactJSONKeyReal(fp, sep, "max_penetration", R->maxPen);
+  ContactJSONKeyReal(fp, sep, "overlap_edges", R->hEdge > 0 && R->hEdge < PETSC_MAX_REAL ? R->maxPen / R->hEdge : 0.0); /* over 1: the report's warning */
+  ContactJSONKeyReal(fp, sep, "fem_pmax", R->femPmax);
+  ContactJSONKeyReal(fp, sep, "fem_a", R->femA);
+  ContactJSONKeyReal(fp, sep, "fem_a_moment", R->femAm);
   if (!spec->hertz) return;
-  JKV(fp, sep, "E_star", spec->Estar);
-  JKV(fp, sep, "R_star", spec->Rstar);
-  JKV(fp, sep, "hertz_a", R->hertzA);
-  JKV(fp, sep, "hertz_pmax", R->hertzPmax);
-  JKV(fp, sep, "pressure_l2_error", R->l2err);
+  ContactJSONKeyReal(fp, sep, "E_star", spec->Estar);
+  ContactJSONKeyReal(fp, sep, "R_star", spec->Rstar);
+  ContactJSONKeyReal(fp, sep, "hertz_a", R->hertzA);
+  ContactJSONKeyReal(fp, sep, "hertz_pmax", R->hertzPmax);
+  ContactJSONKeyReal(fp, sep, "pressure_l2_error", R->l2err);
 }
 
 /* Rank 0. summary: the figures as top-level members (",\n  key: value" each);
@@ -246,24 +231,24 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
     PairFiguresJSON(fp, R, spec, ",\n  ", "contact_force");
     PetscFunctionReturn(0);
   }
-  fprintf(fp, "{\"formulation\": \"%s\", \"penalty\": ", spec->formulation);
-  ContactJSONReal(fp, R->kp);
+  fprintf(fp, "{\"formulation\": \"%s\"", spec->formulation);
+  ContactJSONKeyReal(fp, ", ", "penalty", R->kp);
   fprintf(fp, ", \"penalty_auto\": %s", spec->kpAuto ? "true" : "false");
-  JKV(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
-  JKV(fp, ", ", "penalty_stiffness", spec->kp * spec->kpH / spec->Estar); /* k_p h / E*: 1000 auto, below 25 soft */
-  JVec2(fp, "force", R->force);
+  ContactJSONKeyReal(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
+  ContactJSONKeyReal(fp, ", ", "penalty_stiffness", spec->kp * spec->kpH / spec->Estar); /* k_p h / E*: 1000 auto, below 25 soft */
+  ContactJSONKeyPair(fp, ", ", "force", R->force);
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S = &R->side[s];
     fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"slave\": %s", s ? ", " : "", bodies[spec->body[s]]->name, spec->group[s], (int)S->nedges, S->slave ? "true" : "false");
-    JKV(fp, ", ", "pmax", S->fig.pmax);
-    JKV(fp, ", ", "a", S->fig.a);
-    JKV(fp, ", ", "a_moment", S->fig.am);
-    JKV(fp, ", ", "centre", S->fig.sc);
-    JKV(fp, ", ", "pressure_integral", S->fig.ptotal);
-    JVec2(fp, "force", S->force);
-    if (spec->hertz) JKV(fp, ", ", "pressure_l2_error", S->fig.l2err);
+    ContactJSONKeyReal(fp, ", ", "pmax", S->fig.pmax);
+    ContactJSONKeyReal(fp, ", ", "a", S->fig.a);
+    ContactJSONKeyReal(fp, ", ", "a_moment", S->fig.am);
+    ContactJSONKeyReal(fp, ", ", "centre", S->fig.sc);
+    ContactJSONKeyReal(fp, ", ", "pressure_integral", S->fig.ptotal);
+    ContactJSONKeyPair(fp, ", ", "force", S->force);
+    if (spec->hertz) ContactJSONKeyReal(fp, ", ", "pressure_l2_error", S->fig.l2err);
     fprintf(fp, "}");
   }
   fprintf(fp, "]}");

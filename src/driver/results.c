@@ -151,11 +151,9 @@ static void JSONReactions(FILE *fp, Problem p)
   fprintf(fp, ",\n  \"reactions\": {");
   for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
-      fprintf(fp, "%s\n    \"%s:%s\": [", first ? "" : ",", p->bodies[i]->name, p->bodies[i]->bc[j].group);
-      ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[0]);
-      fprintf(fp, ", ");
-      ContactJSONReal(fp, p->bodies[i]->bc[j].reaction[1]);
-      fprintf(fp, "]");
+      char key[2 * CONTACT_NAME_LEN + 2];
+      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group);
+      ContactJSONKeyPair(fp, first ? "\n    " : ",\n    ", key, p->bodies[i]->bc[j].reaction);
     }
   fprintf(fp, "\n  }");
 }
@@ -168,11 +166,10 @@ static void JSONLoads(FILE *fp, Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
       const BodyLoad *L = &p->bodies[i]->load[j];
-      fprintf(fp, "%s\n    \"%s:%s\": [", n ? "," : ",\n  \"loads\": {", p->bodies[i]->name, L->group);
-      ContactJSONReal(fp, p->bodies[i]->loadFactor * L->force[0]);
-      fprintf(fp, ", ");
-      ContactJSONReal(fp, p->bodies[i]->loadFactor * L->force[1]);
-      fprintf(fp, "]");
+      const PetscReal f[2] = {p->bodies[i]->loadFactor * L->force[0], p->bodies[i]->loadFactor * L->force[1]};
+      char            key[2 * CONTACT_NAME_LEN + 2];
+      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
+      ContactJSONKeyPair(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, f);
     }
   if (n) fprintf(fp, "\n  }");
 }
@@ -186,12 +183,10 @@ static void JSONForceControl(FILE *fp, Problem p)
   for (PetscInt k = 0; k < p->ncontrols; ++k) {
     const ForceControl *fc = &p->controls[k];
     const BodyBC       *bc = &p->bodies[fc->body]->bc[fc->bc];
-    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\", \"force\": ", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->anchor ? "true" : "false", bc->comps[fc->c] ? "y" : "x");
-    ContactJSONReal(fp, fc->force);
-    fprintf(fp, ", \"displacement\": ");
-    ContactJSONReal(fp, fc->U);
-    fprintf(fp, ", \"reaction\": ");
-    ContactJSONReal(fp, fc->R);
+    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->anchor ? "true" : "false", bc->comps[fc->c] ? "y" : "x");
+    ContactJSONKeyReal(fp, ", ", "force", fc->force);
+    ContactJSONKeyReal(fp, ", ", "displacement", fc->U);
+    ContactJSONKeyReal(fp, ", ", "reaction", fc->R);
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");
@@ -218,20 +213,16 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body              b = p->bodies[i];
     const BodyErrors *e = &F[i].err;
-    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\", \"energy\": ", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
-    ContactJSONReal(fp, p->res.bodyEnergy[i]);
-    fprintf(fp, ", \"max_displacement\": ");
-    ContactJSONReal(fp, F[i].umax);
-    fprintf(fp, ", \"mesh\": \"%s\", \"h\": ", b->msh);
-    ContactJSONReal(fp, b->h);
+    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+    ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
+    ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
+    fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
+    ContactJSONKeyReal(fp, ", ", "h", b->h);
     if (b->hasExact) { /* each error with the exact solution's norm */
       const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
       const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
       fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
-      for (PetscInt k = 0; k < 6; ++k) {
-        fprintf(fp, ", \"%s\": ", keys[k]);
-        ContactJSONReal(fp, vals[k]);
-      }
+      for (PetscInt k = 0; k < 6; ++k) ContactJSONKeyReal(fp, ", ", keys[k], vals[k]);
     }
     fprintf(fp, "}");
   }
@@ -241,21 +232,16 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
 static void JSONAccuracy(FILE *fp, const RunRecord *rec)
 {
   if (!(rec->accuracyTarget > 0)) return;
-  fprintf(fp, "  \"accuracy_target\": ");
-  ContactJSONReal(fp, rec->accuracyTarget);
-  fprintf(fp, ",\n  \"error_estimate\": ");
-  ContactJSONReal(fp, rec->errorEstimate);
+  ContactJSONKeyReal(fp, "  ", "accuracy_target", rec->accuracyTarget);
+  ContactJSONKeyReal(fp, ",\n  ", "error_estimate", rec->errorEstimate);
   fprintf(fp, ",\n  \"adapt_steps\": [");
   for (PetscInt k = 0; k < rec->nsteps; ++k) {
     const AccuracyStep *a = &rec->steps[k];
-    fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d, \"solve_time\": ", k ? "," : "", (int)a->dofs, (int)a->iterations);
-    ContactJSONReal(fp, a->tsolve);
-    fprintf(fp, ", \"error_estimate\": ");
-    ContactJSONReal(fp, a->estimate);
-    fprintf(fp, ", \"profile_estimate\": ");
-    ContactJSONReal(fp, a->profile);
-    fprintf(fp, ", \"force_estimate\": ");
-    ContactJSONReal(fp, a->force);
+    fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d", k ? "," : "", (int)a->dofs, (int)a->iterations);
+    ContactJSONKeyReal(fp, ", ", "solve_time", a->tsolve);
+    ContactJSONKeyReal(fp, ", ", "error_estimate", a->estimate);
+    ContactJSONKeyReal(fp, ", ", "profile_estimate", a->profile);
+    ContactJSONKeyReal(fp, ", ", "force_estimate", a->force);
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ],\n");
@@ -267,10 +253,9 @@ static void JSONTaylor(FILE *fp, Problem p)
   const char      *keys[3] = {"eps", "gradient_remainder", "hessian_relative_remainder"};
 
   if (!p->opt.taylor) return;
-  fprintf(fp, "  \"taylor\": {\"gradient_order\": ");
-  ContactJSONReal(fp, p->res.taylorRates[0]);
-  fprintf(fp, ", \"hessian_order\": ");
-  ContactJSONReal(fp, p->res.taylorRates[1]);
+  fprintf(fp, "  \"taylor\": {");
+  ContactJSONKeyReal(fp, "", "gradient_order", p->res.taylorRates[0]);
+  ContactJSONKeyReal(fp, ", ", "hessian_order", p->res.taylorRates[1]);
   for (PetscInt r = 0; r < 3; ++r) {
     fprintf(fp, ", \"%s\": [", keys[r]);
     for (PetscInt k = 0; k < p->res.taylorN; ++k) fprintf(fp, "%s%.17g", k ? ", " : "", (double)rows[r][k]);
@@ -308,14 +293,10 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
   fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
   if (p->res.h0Refreshes) fprintf(fp, "  \"h0_refreshes\": %d,\n", (int)p->res.h0Refreshes); /* -lmvm_h0 contact */
-  fprintf(fp, "  \"energy\": ");
-  ContactJSONReal(fp, p->res.energy);
-  fprintf(fp, ",\n  \"gradient_norm\": ");
-  ContactJSONReal(fp, p->res.gnorm);
-  fprintf(fp, ",\n  \"max_displacement\": ");
-  ContactJSONReal(fp, umax);
-  fprintf(fp, ",\n  \"displacement_norm\": ");
-  ContactJSONReal(fp, PetscSqrtReal(unorm2));
+  ContactJSONKeyReal(fp, "  ", "energy", p->res.energy);
+  ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
+  ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
+  ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
   JSONReactions(fp, p);
   JSONLoads(fp, p);
   JSONForceControl(fp, p);
@@ -324,10 +305,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   JSONAccuracy(fp, rec);
   JSONTaylor(fp, p);
   fprintf(fp, "  \"time\": {");
-  for (PetscInt k = 0; k < RUN_TIME_N; ++k) {
-    fprintf(fp, "%s\"%s\": ", k ? ", " : "", RunTimeNames[k]);
-    ContactJSONReal(fp, rec->time[k]);
-  }
+  for (PetscInt k = 0; k < RUN_TIME_N; ++k) ContactJSONKeyReal(fp, k ? ", " : "", RunTimeNames[k], rec->time[k]);
   fprintf(fp, "}\n}\n");
   PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
   PetscFunctionReturn(0);
