@@ -18,16 +18,6 @@
    condition holds at a vertex is not anchored there. */
 #include "body.h"
 
-/* A row of the rigid-motion constraint Gram matrix: a component c fixed at
-   (x, y) (coordinates centred and scaled) removes (e_c, r_c) with r = (-y, x). */
-static void AddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
-{
-  const PetscReal r[3] = {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? -y : x};
-
-  for (PetscInt a = 0; a < 3; ++a)
-    for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
-}
-
 /* The vertices of this rank: their points and coordinates (PetscFree2). */
 static PetscErrorCode Vertices(Body b, PetscInt *n, PetscInt **pts, PetscReal **xy)
 {
@@ -70,27 +60,22 @@ static PetscErrorCode Constrained(Body b, PetscInt v, PetscInt c, PetscBool *hel
   PetscFunctionReturn(0);
 }
 
-/* Whether vertex v is on an edge of one of the body's loaded groups. */
-static PetscErrorCode Loaded(Body b, PetscInt v, PetscBool *on)
+/* Whether vertex v is on an edge of a loaded group (faces: the mesh's
+   "Face Sets", tags: the loaded groups' physical tags). */
+static PetscErrorCode Loaded(Body b, DMLabel faces, const PetscInt tags[], PetscInt v, PetscBool *on)
 {
-  DMLabel         faces;
   const PetscInt *supp;
   PetscInt        ns;
 
   PetscFunctionBeginUser;
   *on = PETSC_FALSE;
-  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
-  if (!faces) PetscFunctionReturn(0);
   PetscCall(DMPlexGetSupportSize(b->dm, v, &ns));
   PetscCall(DMPlexGetSupport(b->dm, v, &supp));
   for (PetscInt k = 0; k < ns && !*on; ++k) {
     PetscInt val;
     PetscCall(DMLabelGetValue(faces, supp[k], &val));
-    for (PetscInt l = 0; l < b->nload && val >= 0; ++l) {
-      PetscInt tag;
-      PetscCall(BodyGetPhysicalTag(b, b->load[l].group, 1, &tag));
-      if (val == tag) *on = PETSC_TRUE;
-    }
+    for (PetscInt l = 0; l < b->nload && val >= 0; ++l)
+      if (val == tags[l]) *on = PETSC_TRUE;
   }
   PetscFunctionReturn(0);
 }
@@ -107,7 +92,7 @@ static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], co
       PetscInt val;
       PetscCall(DMLabelGetValue(b->bc[i].label, pts[k], &val));
       if (val != 1) continue;
-      for (PetscInt j = 0; j < b->bc[i].ncomp; ++j) AddRow(Ml, b->bc[i].comps[j], (xy[2 * k] - c[0]) / L, (xy[2 * k + 1] - c[1]) / L);
+      for (PetscInt j = 0; j < b->bc[i].ncomp; ++j) BodyRigidGramAddRow(Ml, b->bc[i].comps[j], (xy[2 * k] - c[0]) / L, (xy[2 * k + 1] - c[1]) / L);
     }
   PetscCall(MPIU_Allreduce(Ml, M, 9, MPIU_REAL, MPIU_SUM, b->comm));
   PetscFunctionReturn(0);
@@ -165,9 +150,13 @@ PetscErrorCode BodyAddAnchors(Body b)
   { /* A: the loaded vertex nearest the loaded vertices' centroid (least (x, y) on a tie) */
     PetscReal m[3] = {0, 0, 0}, dbest = PETSC_MAX_REAL, dmin;
     PetscBool *on;
-    PetscCall(PetscMalloc1(n + 1, &on));
-    for (PetscInt k = 0; k < n; ++k) {
-      PetscCall(Loaded(b, pts[k], &on[k]));
+    PetscInt   tags[CONTACT_MAX_BC];
+    DMLabel    faces;
+    PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+    for (PetscInt l = 0; l < b->nload; ++l) PetscCall(BodyGetPhysicalTag(b, b->load[l].group, 1, &tags[l]));
+    PetscCall(PetscCalloc1(n + 1, &on));
+    for (PetscInt k = 0; k < n && faces; ++k) {
+      PetscCall(Loaded(b, faces, tags, pts[k], &on[k]));
       if (!on[k]) continue;
       m[0] += xy[2 * k];
       m[1] += xy[2 * k + 1];
@@ -216,7 +205,7 @@ PetscErrorCode BodyAddAnchors(Body b)
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &held, 1, MPIU_REAL, MPIU_MAX, b->comm));
     if (held > 0) continue;
     PetscCall(PetscArraycpy(T, M, 9));
-    AddRow(T, j % 2, (at[0] - c[0]) / L, (at[1] - c[1]) / L);
+    BodyRigidGramAddRow(T, j % 2, (at[0] - c[0]) / L, (at[1] - c[1]) / L);
     if (BodyRigidRank(T) == BodyRigidRank(M)) continue;
     PetscCall(PetscArraycpy(M, T, 9));
     if (j < 2) cA[nA++] = j % 2;

@@ -835,11 +835,7 @@ PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
         if (!dof) continue;
         x = (b->xpoint[2 * q] - c[0]) / L;
         y = (b->xpoint[2 * q + 1] - c[1]) / L;
-        for (PetscInt k = 0; k < bc->ncomp; ++k) {
-          const PetscReal r[3] = {bc->comps[k] == 0 ? 1.0 : 0.0, bc->comps[k] == 1 ? 1.0 : 0.0, bc->comps[k] == 0 ? -y : x};
-          for (PetscInt a = 0; a < 3; ++a)
-            for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
-        }
+        for (PetscInt k = 0; k < bc->ncomp; ++k) BodyRigidGramAddRow(M, bc->comps[k], x, y);
       }
       PetscCall(ISRestoreIndices(is, &pts));
     }
@@ -848,6 +844,14 @@ PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
   PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
   *nfree = 3 - BodyRigidRank(Mg);
   PetscFunctionReturn(0);
+}
+
+void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
+{
+  const PetscReal r[3] = {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? -y : x};
+
+  for (PetscInt a = 0; a < 3; ++a)
+    for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
 }
 
 PetscInt BodyRigidRank(const PetscReal M[9])
