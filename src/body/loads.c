@@ -81,14 +81,12 @@ PetscErrorCode BodyLoadsSetFromOptions(Body b, const char prefix[], PetscBool he
 }
 
 /* The consistent nodal forces of load L on edge e with nodes x (corner,
-   corner, mid), into fe[3][2]. */
-static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, const PetscReal x[6], PetscReal fe[3][2])
+   corner, mid), into fe[3][2], by the nq-point Gauss rule gx, gw. */
+static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, const PetscReal x[6], PetscInt nq, const PetscReal gx[], const PetscReal gw[], PetscReal fe[3][2])
 {
-  PetscReal gx[6], gw[6], sign = 1.0;
-  PetscInt  nq = L->isPressure ? 3 : 6;
+  PetscReal sign = 1.0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, gx, gw));
   if (L->isPressure) {
     char what[2 * CONTACT_NAME_LEN];
     PetscCall(PetscSNPrintf(what, sizeof(what), "body %s, load", b->name));
@@ -126,10 +124,12 @@ static PetscErrorCode BodyLoadAssemble(Body b, PetscSection s, const BodyLoad *L
 {
   DMLabel         faces;
   IS              is = NULL;
-  PetscInt        tag, n = 0, gn;
+  PetscInt        tag, n = 0, gn, nq = L->isPressure ? 3 : 6;
   const PetscInt *pts = NULL;
+  PetscReal       gx[6], gw[6];
 
   PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, gx, gw));
   PetscCall(BodyGetPhysicalTag(b, L->group, 1, &tag));
   PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
   if (faces) PetscCall(DMLabelGetStratumIS(faces, tag, &is));
@@ -143,7 +143,7 @@ static PetscErrorCode BodyLoadAssemble(Body b, PetscSection s, const BodyLoad *L
 
     if (!b->owned[pts[i] - b->pStart]) continue;
     PetscCall(BodyEdgeNodes(b, pts[i], np, x));
-    PetscCall(EdgeLoadForces(b, L, pts[i], x, fe));
+    PetscCall(EdgeLoadForces(b, L, pts[i], x, nq, gx, gw, fe));
     for (PetscInt a = 0; a < 3; ++a) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(s, np[a], &off));
