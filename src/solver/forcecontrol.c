@@ -147,7 +147,7 @@ static PetscErrorCode ControlStep(Problem p, const PetscReal J[], const PetscRea
   for (PetscInt k = 0; k < m && ok; ++k)
     if (J[k * m + k] <= 0) ok = PETSC_FALSE;
   if (!ok) {
-    for (PetscInt k = 0; k < m; ++k) s[k] = r[k] < 0 ? 2 * cap / 4 : r[k] > 0 ? -2 * cap / 4 : 0.0;
+    for (PetscInt k = 0; k < m; ++k) s[k] = r[k] < 0 ? cap / 2 : r[k] > 0 ? -cap / 2 : 0.0; /* cap is 4 times the last step */
     PetscFunctionReturn(0);
   }
   for (PetscInt k = 0; k < m; ++k) big = PetscMax(big, PetscAbsReal(s[k]));

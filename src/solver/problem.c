@@ -611,17 +611,25 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   PetscFunctionReturn(0);
 }
 
+/* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
+static PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ProblemScatterToBodies(p, X));
+  PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
 {
   Problem p = (Problem)ctx;
 
   PetscFunctionBeginUser;
   PetscCall(ProblemSelectHessian(p, tao));
-  PetscCall(ProblemScatterToBodies(p, X));
-  PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(ProblemAssembleHessian(p, X, P));
   if (H != P) {
     PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
@@ -654,15 +662,9 @@ static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
 static PetscErrorCode ProblemComputeH0(Problem p, Vec X)
 {
   PetscFunctionBeginUser;
-  PetscCall(ProblemScatterToBodies(p, X));
-  PetscCall(MatCopy(p->K, p->H, SAME_NONZERO_PATTERN));
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscCall(EnergyTermSetHessianExact(p->terms[t], PETSC_FALSE));
-    PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, p->H));
-    PetscCall(EnergyTermSetHessianExact(p->terms[t], p->exactHessian));
-  }
-  PetscCall(MatAssemblyBegin(p->H, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(p->H, MAT_FINAL_ASSEMBLY));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], PETSC_FALSE));
+  PetscCall(ProblemAssembleHessian(p, X, p->H));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], p->exactHessian));
   p->res.h0Refreshes++;
   PetscFunctionReturn(0);
 }
