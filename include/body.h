@@ -12,6 +12,7 @@ typedef struct {
   PetscReal values[2];
   PetscBool control[2]; /* component c (of comps) is force-controlled */
   PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
+  PetscBool axis;       /* u_r = 0 on the axis, in axisymmetry (axis.c) */
   PetscReal force[2];   /* its force: the reaction it must have */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
@@ -74,8 +75,16 @@ struct _n_Body {
   PetscSection nodeGS;      /* global numbering of the node points */
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
   PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
-  PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
+  PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */  PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
+  PetscBool axisym;     /* set before BodySetUp (-axisymmetric): x is the radius r >= 0, y the axis; every volume and surface measure carries 2 pi r (axis.c) */
 };
+
+/* The measure a point at radius x sweeps per unit area or length: 2 pi x in
+   axisymmetry, 1 in plane strain. */
+static inline PetscReal BodyRadialWeight(Body b, PetscReal x)
+{
+  return b->axisym ? 2.0 * PETSC_PI * x : 1.0;
+}
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
 PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride);
@@ -88,6 +97,8 @@ PetscErrorCode BodyGenerateMesh(Body, const char meshDir[], PetscReal *maxDofs, 
 PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
 PetscErrorCode BodyDestroy(Body *);
 PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
+/* This rank's vertices' coordinates, [v - vStart][2] (PetscFree); before the section exists too. */
+PetscErrorCode BodyVertexCoordinates(Body, PetscReal **xy);
 PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[]);
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
@@ -122,6 +133,13 @@ void           BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, Pets
 /* The rank of a rigid-motion constraint Gram matrix (3 x 3: x and y
    translation, rotation), by elimination with full pivoting. */
 PetscInt       BodyRigidRank(const PetscReal M[9]);
+/* Axisymmetry: the radial translation and the rotation marked held in M (body.c). */
+void           BodyRigidGramAxisymmetric(Body, PetscReal M[9]);
+/* Axisymmetry (axis.c): u_r = 0 held on the points on the axis, a Dirichlet
+   condition of its own (in BodySetUp, before the section is made), and
+   the check that no node lies at x < 0 (once the cell cache is built). */
+PetscErrorCode BodyAddAxis(Body);
+PetscErrorCode BodyCheckAxis(Body);
 /* Anchors the rigid motions its Dirichlet conditions leave free (anchors.c;
    in BodySetUp, before the section is made). */
 PetscErrorCode BodyAddAnchors(Body);

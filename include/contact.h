@@ -27,8 +27,11 @@ void ContactJSONKeyReal(FILE *fp, const char sep[], const char key[], PetscReal 
 void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const PetscReal v[2]);
 
 /* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */
-void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal *W);
-void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal sigma[]);
+/* e3: the out-of-plane normal strain, 0 in plane strain, the hoop strain in
+   axisymmetry (elasticity.c) */
+void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal *W);
+void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal sigma[]);
 void ElasticityTangent(const PetscReal params[], PetscReal C[]);
-PetscReal ElasticityStressZZ(const PetscReal params[], const PetscReal gradu[]);
+PetscReal ElasticityStress33(const PetscReal params[], const PetscReal gradu[], PetscReal e3);
+PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r);
 PetscReal ElasticityVonMises(PetscReal sxx, PetscReal syy, PetscReal szz, PetscReal sxy);

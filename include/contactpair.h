@@ -18,6 +18,7 @@ typedef struct {
   PetscBool hertz;        /* compare with Hertz: radii of the two surfaces (0: flat), E*, R* */
   PetscReal radii[2], Estar, Rstar; /* Estar: the pair's plane-strain modulus, with or without Hertz */
   PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
+  PetscBool axisym;       /* the bodies are axisymmetric (-axisymmetric): Hertz's point contact of two spheres, P the force over the whole circle */
   PetscReal mirrorY;
 } ContactPairSpec;
 

@@ -51,7 +51,12 @@ PetscErrorCode ContactReportReset(ContactReport *);
 /* Hertz's line contact (plane strain) from the force per unit thickness P:
    half-width a = sqrt(4 P R* / (pi E*)), peak 2 P / (pi a) (hertz.c). */
 void      HertzLineContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax);
+/* Hertz's point contact of two spheres from the force P over the whole
+   circle: a = (3 P R* / (4 E*))^(1/3), peak 3 P / (2 pi a^2) (hertz.c). */
+void      HertzPointContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax);
 /* Hertz's pressure at distance ds from the centre. */
 PetscReal HertzPressure(PetscReal pmax, PetscReal a, PetscReal ds);
-/* Figures of a profile rows[n] sorted by s (nodal: the samples are nodes); l2err against Hertz if a > 0 (else NaN). */
-void      ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *);
+/* Figures of a profile rows[n] sorted by s (nodal: the samples are nodes;
+   axisym: their coordinate is the radius, the centre the axis); l2err
+   against Hertz if a > 0 (else NaN). */
+void      ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, PetscBool axisym, PetscBool hertz, PetscReal hertzA, PetscReal hertzPmax, ContactProfileFigures *);

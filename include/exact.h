@@ -12,6 +12,7 @@ typedef struct {
   void (*u)(const PetscReal params[], const PetscReal x[], PetscReal u[]);
   void (*du)(const PetscReal params[], const PetscReal x[], PetscReal du[]);
   void (*f)(const PetscReal params[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[]);
+  PetscBool axisymmetric; /* a solution in r-z (-axisymmetric), else in plane strain */
 } ExactSolution;
 
 PetscErrorCode ExactSolutionRegisterAll(void);

@@ -26,6 +26,7 @@ typedef struct {
   PetscReal   maxDofs;  /* refuse a generated mesh above this many dofs (-max_dofs; 0: from memory, set when meshing) */
   PetscInt    partitioner;
   PetscBool   partitionView, taylor;
+  PetscBool   axisymmetric; /* -axisymmetric: every body in r-z (axis.c) */
   PetscReal   taylorScale;
   H0Type      h0;
   PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */

@@ -28,7 +28,19 @@ typedef struct {
   PetscReal  blend;       /* W: width in eta of the blend zone at each end (0: none) */
   PetscInt   nloc, *locNode, *locOff; /* owned node points: surface node, local offset */
   PetscInt   nown, *ownEdges;          /* edges this rank integrates as slave */
+  PetscBool  axisym;      /* the body is axisymmetric: every dS is 2 pi r dS (ContactSurfaceMeasure) */
 } ContactSurface;
+
+/* The surface's measure per unit of the edge parameter at a point of
+   reference position X and reference tangent T = dX/dxi: |T| (the
+   reference length), times 2 pi X_r in axisymmetry (the area the point's
+   ring sweeps). Every weight of the contact terms is this. */
+static inline PetscReal ContactSurfaceMeasure(const ContactSurface *S, const PetscReal X[2], const PetscReal T[2])
+{
+  const PetscReal J = PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+
+  return S->axisym ? 2.0 * PETSC_PI * X[0] * J : J;
+}
 
 /* Collective on the body: extracts the group's edges, replicates them, numbers
    the nodes, walks the arc and sets up the master blend of width blend (in eta). */

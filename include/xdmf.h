@@ -12,6 +12,12 @@
 #define XDMF_BODY_SCALARS    5
 #define XDMF_SURFACE_SCALARS 3
 static const char *const XdmfBodyScalars[XDMF_BODY_SCALARS]       = {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "von_mises"};
+/* in an axisymmetric scene (x = r, y = z): the hoop stress is the third */
+static const char *const XdmfBodyScalarsAxisym[XDMF_BODY_SCALARS] = {"stress_rr", "stress_zz", "stress_hoop", "stress_rz", "von_mises"};
+static inline const char *const *XdmfBodyScalarNames(int axisym)
+{
+  return axisym ? XdmfBodyScalarsAxisym : XdmfBodyScalars;
+}
 static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
 
 /* One node-centred attribute: n tuples of 1 or 3 components in dataset path. */

@@ -21,28 +21,20 @@
 /* The vertices of this rank: their points and coordinates (PetscFree2). */
 static PetscErrorCode Vertices(Body b, PetscInt *n, PetscInt **pts, PetscReal **xy)
 {
-  DM                 cdm;
-  PetscSection       cs;
-  Vec                coords;
-  const PetscScalar *c;
-  PetscInt           vs, ve;
+  PetscInt   vs, ve;
+  PetscReal *x;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
-  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &cs));
-  PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
-  PetscCall(VecGetArrayRead(coords, &c));
+  PetscCall(BodyVertexCoordinates(b, &x));
   *n = ve - vs;
   PetscCall(PetscMalloc2(*n + 1, pts, 2 * (*n) + 2, xy));
   for (PetscInt v = vs; v < ve; ++v) {
-    PetscInt off;
-    PetscCall(PetscSectionGetOffset(cs, v, &off));
-    (*pts)[v - vs]           = v;
-    (*xy)[2 * (v - vs)]     = PetscRealPart(c[off]);
-    (*xy)[2 * (v - vs) + 1] = PetscRealPart(c[off + 1]);
+    (*pts)[v - vs]          = v;
+    (*xy)[2 * (v - vs)]     = x[2 * (v - vs)];
+    (*xy)[2 * (v - vs) + 1] = x[2 * (v - vs) + 1];
   }
-  PetscCall(VecRestoreArrayRead(coords, &c));
+  PetscCall(PetscFree(x));
   PetscFunctionReturn(0);
 }
 
@@ -95,6 +87,7 @@ static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], co
       for (PetscInt j = 0; j < b->bc[i].ncomp; ++j) BodyRigidGramAddRow(Ml, b->bc[i].comps[j], (xy[2 * k] - c[0]) / L, (xy[2 * k + 1] - c[1]) / L);
     }
   PetscCall(MPIU_Allreduce(Ml, M, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  BodyRigidGramAxisymmetric(b, M);
   PetscFunctionReturn(0);
 }
 

@@ -105,7 +105,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
   PetscCall(PetscOptionsStringArray("-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
-  PetscCall(PetscOptionsString("-exact", "Exact solution for verification: none, affine, trig", NULL, exact, exact, sizeof(exact), NULL));
+  PetscCall(PetscOptionsString("-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
   PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
   PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (exact on straight cells from 2)", NULL, qdeg, &qdeg, NULL));
@@ -144,8 +144,9 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   if (strcmp(exact, "none")) {
     PetscErrorCode (*set)(ExactSolution *) = NULL;
     PetscCall(PetscFunctionListFind(ExactSolutionList, exact, &set));
-    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig)", prefix, exact);
+    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
+    PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
     b->hasExact      = PETSC_TRUE;
     b->exact.lambda  = b->param[0];
     b->exact.mu      = b->param[1];
@@ -273,6 +274,72 @@ PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
   PetscFunctionReturn(0);
 }
 
+/* The coordinates of this rank's vertices ([v - vStart][2], PetscFree), by
+   evaluating each cell's coordinate field at the displacement element's
+   reference nodes (continuous Q2 on quads, cellwise P2 on triangles: a
+   vertex need not carry coordinates of its own). Node k of a cell is the
+   k-th point of its closure that carries a displacement node: every vertex
+   and edge, and a quadrilateral itself (the cell cache's order). Usable
+   before the displacement section exists. */
+PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
+{
+  DM              cdm;
+  Vec             coords;
+  PetscFE         cfe;
+  PetscTabulation Tc;
+  PetscInt        vs, ve, cs, ce, nb, ncb;
+  PetscReal       ref[9 * 2];
+  PetscFE         fe;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cs, &ce));
+  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
+  PetscCall(DMGetField(cdm, 0, NULL, (PetscObject *)&cfe));
+  PetscCall(PetscFEGetDimension(cfe, &ncb));
+  PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, b->simplex, 2, PETSC_DETERMINE, &fe));
+  PetscCall(PetscFEGetDimension(fe, &nb));
+  {
+    PetscDualSpace sp;
+    PetscCall(PetscFEGetDualSpace(fe, &sp));
+    for (PetscInt a = 0; a < nb; ++a) {
+      PetscQuadrature  fq;
+      const PetscReal *pts;
+      PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
+      PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
+      ref[2 * a]     = pts[0];
+      ref[2 * a + 1] = pts[1];
+    }
+  }
+  PetscCall(PetscFECreateTabulation(cfe, 1, nb, ref, 0, &Tc));
+  PetscCall(PetscCalloc1(2 * (ve - vs) + 2, xy));
+  for (PetscInt c = cs; c < ce; ++c) {
+    PetscInt    *cl = NULL, ncl, k = 0, ncc;
+    PetscScalar *xc = NULL;
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+    PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &ncc, &xc));
+    for (PetscInt i = 0; i < ncl && k < nb; ++i) {
+      const PetscInt p = cl[2 * i];
+      PetscInt       depth;
+      PetscCall(DMPlexGetPointDepth(b->dm, p, &depth));
+      if (depth == 2 && b->simplex) continue;
+      if (depth == 0)
+        for (PetscInt d = 0; d < 2; ++d) {
+          PetscReal x = 0.0;
+          for (PetscInt f = 0; f < ncb; ++f) x += PetscRealPart(xc[f]) * Tc->T[0][(k * ncb + f) * 2 + d];
+          (*xy)[2 * (p - vs) + d] = x;
+        }
+      k++;
+    }
+    PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
+  }
+  PetscCall(PetscTabulationDestroy(&Tc));
+  PetscCall(PetscFEDestroy(&fe));
+  PetscFunctionReturn(0);
+}
+
 /* At one reference point of an element with nb nodes at x, given the reference
    basis gradients D[a][2]: returns det J and the physical gradients dNdx[a][2]. */
 PetscReal BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[])
@@ -381,7 +448,7 @@ static PetscErrorCode BodyBuildCellCache(Body b)
       }
       for (PetscInt a = 0; a < b->nb; ++a)
         for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
-      b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ);
+      b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ) * BodyRadialWeight(b, xx[0]);
       b->xq[(ci * nq + iq) * 2]     = xx[0];
       b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
     }
@@ -453,8 +520,9 @@ PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscSc
     for (PetscInt d = 0; d < PetscMin(dof, 2); ++d) {
       const PetscInt g = b->l2b[off + d];
       if (g < rstart || g >= rend) continue;
+      if (b->axisym && d == 0) continue; /* in r-z the translation along the axis alone */
       modes[d][g - rstart] += 1.0;
-      modes[2][g - rstart] += d == 0 ? -y : x;
+      if (!b->axisym) modes[2][g - rstart] += d == 0 ? -y : x;
     }
   }
   PetscFunctionReturn(0);
@@ -572,10 +640,11 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
     ctx[1] = bc;
     PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
   }
-  if (b->mayAnchor) { /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
+  {
     const PetscInt first = b->nbc;
     PetscInt       one   = 1;
-    PetscCall(BodyAddAnchors(b));
+    if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
+    if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
     for (PetscInt i = first; i < b->nbc; ++i) {
       BodyBC *bc  = &b->bc[i];
       void  **ctx = b->bcctx[i];
@@ -596,6 +665,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(VecGetLocalSize(b->Xg, &b->nlocal));
   PetscCall(VecGetSize(b->Xg, &b->nglobal));
   PetscCall(BodyBuildCellCache(b));
+  if (b->axisym) PetscCall(BodyCheckAxis(b));
   PetscCall(BodyBuildNodeData(b));
   PetscCall(BodyLoadsSetUp(b));
   PetscCall(PetscLogStagePop());
@@ -655,7 +725,8 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
     for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
       const PetscReal  w  = b->wdetJ[c * nq + iq];
-      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4];
+      const PetscReal *B  = &b->B[iq * nb];
+      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4], e3 = 0.0, s3r = 0.0;
 
       for (PetscInt a = 0; a < nb; ++a) {
         gu[0] += u[a][0] * dN[2 * a];
@@ -663,16 +734,22 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
         gu[2] += u[a][1] * dN[2 * a];
         gu[3] += u[a][1] * dN[2 * a + 1];
       }
-      ElasticityEnergyDensity(b->param, gu, &W);
-      ElasticityStress(b->param, gu, s);
+      if (b->axisym) { /* the hoop strain u_r / r, at a quadrature point (r > 0) */
+        const PetscReal r  = b->xq[(c * nq + iq) * 2];
+        PetscReal       ur = 0.0;
+        for (PetscInt a = 0; a < nb; ++a) ur += B[a] * u[a][0];
+        e3  = ElasticityHoopStrain(ur, gu[0], r);
+        s3r = ElasticityStress33(b->param, gu, e3) / r;
+      }
+      ElasticityEnergyDensity(b->param, gu, e3, &W);
+      ElasticityStress(b->param, gu, e3, s);
       e += w * W;
       for (PetscInt a = 0; a < nb; ++a) {
-        ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1]);
+        ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1] + s3r * B[a]);
         ge[a][1] += w * (s[2] * dN[2 * a] + s[3] * dN[2 * a + 1]);
       }
       if (b->hasExact) {
         PetscReal f[2], uq[2] = {0, 0};
-        const PetscReal *B = &b->B[iq * nb];
         b->exact.f(b->exact.params, b->param[0], b->param[1], &b->xq[(c * nq + iq) * 2], f);
         for (PetscInt a = 0; a < nb; ++a) {
           uq[0] += B[a] * u[a][0];
@@ -740,6 +817,16 @@ PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
         for (PetscInt i = 0; i < 2; ++i)
           for (PetscInt bb = a; bb < nb; ++bb)
             for (PetscInt j = 0; j < 2; ++j) K[(2 * a + i) * n + 2 * bb + j] += G[a][i][j][0] * dN[2 * bb] + G[a][i][j][1] * dN[2 * bb + 1];
+      if (b->axisym) { /* the hoop strain's terms: e3 = N_a / r on u_a,r (elasticity.c) */
+        const PetscReal *B = &b->B[iq * nb], r = b->xq[(c * nq + iq) * 2], lambda = b->param[0], mu = b->param[1];
+        for (PetscInt a = 0; a < nb; ++a)
+          for (PetscInt bb = a; bb < nb; ++bb) {
+            const PetscReal na = B[a] / r, nbb = B[bb] / r;
+            K[(2 * a) * n + 2 * bb] += w * (lambda * (dN[2 * a] * nbb + na * dN[2 * bb]) + (lambda + 2.0 * mu) * na * nbb);
+            K[(2 * a) * n + 2 * bb + 1] += w * lambda * na * dN[2 * bb + 1];
+            K[(2 * a + 1) * n + 2 * bb] += w * lambda * dN[2 * a + 1] * nbb;
+          }
+      }
     }
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt i = 0; i < 2; ++i)
@@ -842,8 +929,19 @@ PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
     PetscCall(ISDestroy(&is));
   }
   PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  BodyRigidGramAxisymmetric(b, Mg);
   *nfree = 3 - BodyRigidRank(Mg);
   PetscFunctionReturn(0);
+}
+
+/* In r-z a body's only rigid motion is the translation along the axis: a
+   radial translation or a rotation strains the hoop. Those two are held, as
+   if by a constraint row each. */
+void BodyRigidGramAxisymmetric(Body b, PetscReal M[9])
+{
+  if (!b->axisym) return;
+  M[0] += 1.0;
+  M[8] += 1.0;
 }
 
 void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
@@ -890,16 +988,17 @@ PetscInt BodyRigidRank(const PetscReal M[9])
      energy norm: ||e||_E^2  = int eps(e) : C : eps(e) dA = 2 int W(grad e) dA   O(h^2),
      stress:      ||sigma(u_h) - sigma(u)||_L2^2 = int |sigma(grad e)|^2 dA     O(h^2),
    sigma linear in grad u, |sigma|^2 = xx^2 + yy^2 + zz^2 + 2 xy^2 (the
-   plane-strain tensor); with the norms ||u||_L2, ||u||_E, ||sigma(u)||_L2.
+   plane-strain tensor; in axisymmetry the hoop component for zz and every
+   dA a 2 pi r dA); with the norms ||u||_L2, ||u||_E, ||sigma(u)||_L2.
    The a priori estimates (Ciarlet, ch. 3-4; isoparametric cells keep the rates)
    give the orders on the right: the energy norm and the stress error are one
    order below the L2 error. */
-static void StressSquared(const PetscReal param[], const PetscReal gu[], PetscReal *s2)
+static void StressSquared(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal *s2)
 {
   PetscReal s[4];
 
-  ElasticityStress(param, gu, s);
-  *s2 = PetscSqr(s[0]) + PetscSqr(s[3]) + PetscSqr(ElasticityStressZZ(param, gu)) + 2.0 * PetscSqr(s[1]);
+  ElasticityStress(param, gu, e3, s);
+  *s2 = PetscSqr(s[0]) + PetscSqr(s[3]) + PetscSqr(ElasticityStress33(param, gu, e3)) + 2.0 * PetscSqr(s[1]);
 }
 
 PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
@@ -916,7 +1015,7 @@ PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
     for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *B = &b->B[iq * nb], *dN = &b->dNdx[(c * nq + iq) * nb * 2], *xq = &b->xq[(c * nq + iq) * 2];
       const PetscReal  w = b->wdetJ[c * nq + iq];
-      PetscReal        uh[2] = {0, 0}, ue[2], gh[4] = {0, 0, 0, 0}, ge[4], de[4], W, s2;
+      PetscReal        uh[2] = {0, 0}, ue[2], gh[4] = {0, 0, 0, 0}, ge[4], de[4], W, s2, e3e = 0.0, e3d = 0.0;
       for (PetscInt a = 0; a < nb; ++a) {
         const PetscReal ux = PetscRealPart(x[b->cdof[c * nb + a]]), uy = PetscRealPart(x[b->cdof[c * nb + a] + 1]);
         uh[0] += B[a] * ux;
@@ -929,15 +1028,19 @@ PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
       b->exact.u(b->exact.params, xq, ue);
       b->exact.du(b->exact.params, xq, ge);
       for (PetscInt j = 0; j < 4; ++j) de[j] = gh[j] - ge[j];
+      if (b->axisym) { /* the hoop strains, at a quadrature point (r > 0) */
+        e3e = ue[0] / xq[0];
+        e3d = uh[0] / xq[0] - e3e;
+      }
       loc[0] += w * (PetscSqr(uh[0] - ue[0]) + PetscSqr(uh[1] - ue[1]));
       loc[1] += w * (PetscSqr(ue[0]) + PetscSqr(ue[1]));
-      ElasticityEnergyDensity(b->param, de, &W);
+      ElasticityEnergyDensity(b->param, de, e3d, &W);
       loc[2] += w * 2.0 * W;
-      ElasticityEnergyDensity(b->param, ge, &W);
+      ElasticityEnergyDensity(b->param, ge, e3e, &W);
       loc[3] += w * 2.0 * W;
-      StressSquared(b->param, de, &s2);
+      StressSquared(b->param, de, e3d, &s2);
       loc[4] += w * s2;
-      StressSquared(b->param, ge, &s2);
+      StressSquared(b->param, ge, e3e, &s2);
       loc[5] += w * s2;
     }
   }

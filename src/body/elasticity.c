@@ -1,29 +1,33 @@
-/* Pointwise kernels of plane-strain linear elasticity.
+/* Pointwise kernels of linear elasticity in plane strain and in axisymmetry.
 
-   Field: displacement u(x) in R^2; gradu[i*2+j] = du_i/dx_j.
-   Strain eps = (gradu + gradu^T)/2; params = {lambda, mu} (Lame constants).
-   Stress (plane strain):  sigma = lambda tr(eps) I + 2 mu eps,
-                           sigma_zz = lambda tr(eps).
-   Energy density:         W = lambda/2 tr(eps)^2 + mu eps:eps,
-   so that Pi(u) = int W dA, dPi/du_a = int sigma : grad N_a dA (gradient) and
-   d2Pi/du_a du_b = int grad N_a : C : grad N_b dA (Hessian) with the tangent
-   C_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk). */
+   Field: displacement u(x) in R^2; gradu[i*2+j] = du_i/dx_j. The strain has
+   the in-plane part (gradu + gradu^T)/2 and one out-of-plane normal
+   component e3: 0 in plane strain (eps_zz), the hoop strain u_r / r in
+   axisymmetry (x = r, y = z: eps_thth; on the axis, where u_r = 0, its limit
+   du_r/dr). params = {lambda, mu} (Lame constants), tr = exx + eyy + e3.
+   Stress:                  sigma = lambda tr I + 2 mu eps   (2 x 2 part),
+                            sigma_33 = lambda tr + 2 mu e3   (sigma_zz, sigma_thth).
+   Energy density:          W = lambda/2 tr^2 + mu (exx^2 + eyy^2 + e3^2 + 2 exy^2),
+   so that Pi(u) = int W dV, dPi/du_a = int (sigma : grad N_a + sigma_33 de3/du_a) dV
+   (gradient) and d2Pi/du_a du_b = int eps_a : C : eps_b dV (Hessian) with the
+   tangent C_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk); dV is dA in
+   plane strain and 2 pi r dA in axisymmetry. */
 #include "contact.h"
 
-void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal *W)
+void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal *W)
 {
   const PetscReal lambda = params[0], mu = params[1];
   const PetscReal exx = gradu[0], eyy = gradu[3], exy = 0.5 * (gradu[1] + gradu[2]);
-  const PetscReal tr = exx + eyy;
+  const PetscReal tr = exx + eyy + e3;
 
-  *W = 0.5 * lambda * tr * tr + mu * (exx * exx + eyy * eyy + 2.0 * exy * exy);
+  *W = 0.5 * lambda * tr * tr + mu * (exx * exx + eyy * eyy + e3 * e3 + 2.0 * exy * exy);
 }
 
-void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal sigma[])
+void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal sigma[])
 {
   const PetscReal lambda = params[0], mu = params[1];
   const PetscReal exx = gradu[0], eyy = gradu[3], exy = 0.5 * (gradu[1] + gradu[2]);
-  const PetscReal tr = exx + eyy;
+  const PetscReal tr = exx + eyy + e3;
 
   sigma[0] = lambda * tr + 2.0 * mu * exx;
   sigma[1] = 2.0 * mu * exy;
@@ -31,9 +35,14 @@ void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscRe
   sigma[3] = lambda * tr + 2.0 * mu * eyy;
 }
 
-PetscReal ElasticityStressZZ(const PetscReal params[], const PetscReal gradu[])
+PetscReal ElasticityStress33(const PetscReal params[], const PetscReal gradu[], PetscReal e3)
 {
-  return params[0] * (gradu[0] + gradu[3]);
+  return params[0] * (gradu[0] + gradu[3] + e3) + 2.0 * params[1] * e3;
+}
+
+PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r)
+{
+  return r > 0 ? ur / r : durdr;
 }
 
 void ElasticityTangent(const PetscReal params[], PetscReal C[])
@@ -46,7 +55,8 @@ void ElasticityTangent(const PetscReal params[], PetscReal C[])
         for (PetscInt l = 0; l < 2; ++l) C[((i * 2 + j) * 2 + k) * 2 + l] = lambda * (i == j) * (k == l) + mu * ((i == k) * (j == l) + (i == l) * (j == k));
 }
 
-/* von Mises equivalent stress of the full (3D) plane-strain stress state. */
+/* von Mises equivalent stress of the full (3D) stress state: in-plane
+   xx, yy, xy and the out-of-plane normal stress s33. */
 PetscReal ElasticityVonMises(PetscReal sxx, PetscReal syy, PetscReal szz, PetscReal sxy)
 {
   const PetscReal d = (sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx);

@@ -13,7 +13,17 @@
              grad u = A k [[ cos kx cos ky, -sin kx sin ky],
                            [-sin kx sin ky,  cos kx cos ky]],
            so eps = grad u (symmetric) and the exact stress is
-           sigma(grad u) (the energy-norm and stress errors of body.c). */
+           sigma(grad u) (the energy-norm and stress errors of body.c).
+   lame:   in axisymmetry (x = r, y = z), u = (A r + B / r, C z), params
+           {A, B, C}: Lame's thick-walled tube (C = 0: no axial strain) and,
+           with B = 0, a cylinder under uniform axial strain C with
+           A = -nu C (a uniaxial stress). eps_rr = A - B/r^2,
+           eps_thth = A + B/r^2, eps_zz = C, so tr eps = 2A + C is uniform and
+           sigma_rr - sigma_thth = -4 mu B / r^2: the radial equilibrium
+           d sigma_rr/dr + (sigma_rr - sigma_thth)/r = 4 mu B/r^3 - 4 mu B/r^3 = 0,
+           and the axial one holds with sigma_zz uniform, so f = 0. A
+           solution in r-z only (-axisymmetric); affine and trig are
+           plane-strain ones. */
 #include "exact.h"
 
 PetscFunctionList ExactSolutionList = NULL;
@@ -68,6 +78,31 @@ static void TrigF(const PetscReal p[], PetscReal lambda, PetscReal mu, const Pet
   f[1] = 2.0 * k * k * (lambda + 2.0 * mu) * u[1];
 }
 
+static void LameU(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  u[0] = p[0] * x[0] + p[1] / x[0];
+  u[1] = p[2] * x[1];
+}
+
+static void LameDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  du[0] = p[0] - p[1] / (x[0] * x[0]);
+  du[1] = 0.0;
+  du[2] = 0.0;
+  du[3] = p[2];
+}
+
+static PetscErrorCode ExactSetLame(ExactSolution *e)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(e->nparams == 3, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution lame needs 3 parameters (A, B, C: u = (A r + B/r, C z)), got %" PetscInt_FMT, e->nparams);
+  e->u            = LameU;
+  e->du           = LameDU;
+  e->f            = ZeroF;
+  e->axisymmetric = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode ExactSetAffine(ExactSolution *e)
 {
   PetscFunctionBeginUser;
@@ -94,6 +129,7 @@ PetscErrorCode ExactSolutionRegisterAll(void)
   if (ExactSolutionList) PetscFunctionReturn(0);
   PetscCall(PetscFunctionListAdd(&ExactSolutionList, "affine", ExactSetAffine));
   PetscCall(PetscFunctionListAdd(&ExactSolutionList, "trig", ExactSetTrig));
+  PetscCall(PetscFunctionListAdd(&ExactSolutionList, "lame", ExactSetLame));
   PetscFunctionReturn(0);
 }
 
@@ -103,7 +139,7 @@ PetscErrorCode ExactSolutionSetType(ExactSolution *e, const char name[])
 
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListFind(ExactSolutionList, name, &set));
-  PetscCheck(set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "unknown exact solution '%s' (known: affine, trig)", name);
+  PetscCheck(set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "unknown exact solution '%s' (known: affine, trig, lame)", name);
   PetscCall(PetscStrncpy(e->name, name, sizeof(e->name)));
   PetscCall((*set)(e));
   PetscFunctionReturn(0);

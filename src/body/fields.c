@@ -1,6 +1,7 @@
 /* Nodal fields of a body for output: the second-order nodal mesh
    (coordinates, Tri6/Quad9 connectivity in XDMF node order), displacement,
-   and the stress (xx, yy, zz, xy) and von Mises stress recovered at the nodes
+   and the stress (xx, yy, zz, xy; in axisymmetry rr, zz, thth, rz: the
+   third the hoop stress) and von Mises stress recovered at the nodes
    by averaging each cell's stress there over the cells around the node. */
 #include <petscsf.h>
 #include "body.h"
@@ -42,7 +43,7 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
       u[k][1] = PetscRealPart(ua[dof[k] + 1]);
     }
     for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4];
+      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], e3 = 0.0;
       PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
       (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
       for (PetscInt q = 0; q < nb; ++q) {
@@ -51,10 +52,11 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
         gu[2] += u[q][1] * dNdx[2 * q];
         gu[3] += u[q][1] * dNdx[2 * q + 1];
       }
-      ElasticityStress(b->param, gu, sig);
+      if (b->axisym) e3 = ElasticityHoopStrain(u[a][0], gu[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
+      ElasticityStress(b->param, gu, e3, sig);
       acc[0] += sig[0];
       acc[1] += sig[3];
-      acc[2] += ElasticityStressZZ(b->param, gu);
+      acc[2] += ElasticityStress33(b->param, gu, e3);
       acc[3] += sig[1];
       acc[4] += 1.0;
     }
@@ -95,8 +97,9 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
     PetscReal       e2 = 0.0;
     for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-      PetscReal        gu[4] = {0, 0, 0, 0}, sig[4], h[4], rec[4] = {0, 0, 0, 0};
+      PetscReal        gu[4] = {0, 0, 0, 0}, sig[4], h[4], rec[4] = {0, 0, 0, 0}, ur = 0.0, e3 = 0.0;
       for (PetscInt a = 0; a < nb; ++a) {
+        ur += B[a] * PetscRealPart(ua[dof[a]]);
         const PetscReal *st = &sr[5 * (pts[a] - b->pStart)];
         gu[0] += PetscRealPart(ua[dof[a]]) * dN[2 * a];
         gu[1] += PetscRealPart(ua[dof[a]]) * dN[2 * a + 1];
@@ -104,10 +107,11 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
         gu[3] += PetscRealPart(ua[dof[a] + 1]) * dN[2 * a + 1];
         for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
       }
-      ElasticityStress(b->param, gu, sig);
+      if (b->axisym) e3 = ElasticityHoopStrain(ur, gu[0], b->xq[(c * nq + iq) * 2]);
+      ElasticityStress(b->param, gu, e3, sig);
       h[0] = sig[0];
       h[1] = sig[3];
-      h[2] = ElasticityStressZZ(b->param, gu);
+      h[2] = ElasticityStress33(b->param, gu, e3);
       h[3] = sig[1];
       e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
     }

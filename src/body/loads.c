@@ -26,7 +26,13 @@
    assembled once, at the full load, into a local vector from this rank's
    owned edges (each edge counted once over the ranks, as the cells are);
    its gradient is -f, its Hessian zero; load stepping scales it with the
-   Dirichlet values. */
+   Dirichlet values.
+
+   In axisymmetry (axis.c) every dS is 2 pi r dS, r = X(xi): a traction or
+   a pressure per unit area of the surface of revolution, and the forces are
+   the whole ring's. The pressure's integrand gains a degree (to 5), still
+   exact with 3 points; its axial resultant is p times the area the group's
+   ends sweep, pi (r_1^2 - r_0^2). */
 #include "body.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)
@@ -96,12 +102,14 @@ static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, cons
   for (PetscInt q = 0; q < nq; ++q) {
     const PetscReal xi = gx[q], N[3] = {0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi};
     const PetscReal dN[3] = {xi - 0.5, xi + 0.5, -2.0 * xi};
-    PetscReal       dX = 0, dY = 0, t[2];
+    PetscReal       dX = 0, dY = 0, X = 0, t[2], rw;
 
     for (PetscInt a = 0; a < 3; ++a) {
       dX += dN[a] * x[2 * a];
       dY += dN[a] * x[2 * a + 1];
+      X += N[a] * x[2 * a];
     }
+    rw = BodyRadialWeight(b, X);
     if (L->isPressure) { /* -p n |dX/dxi| */
       t[0] = -L->pressure * sign * dY;
       t[1] = L->pressure * sign * dX;
@@ -111,8 +119,8 @@ static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, cons
       t[1] = L->traction[1] * J;
     }
     for (PetscInt a = 0; a < 3; ++a) {
-      fe[a][0] += gw[q] * N[a] * t[0];
-      fe[a][1] += gw[q] * N[a] * t[1];
+      fe[a][0] += gw[q] * rw * N[a] * t[0];
+      fe[a][1] += gw[q] * rw * N[a] * t[1];
     }
   }
   PetscFunctionReturn(0);

@@ -128,7 +128,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
     PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
     PetscCall(PetscOptionsString("-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
-    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat)", NULL, spec.radii, &nr, &spec.hertz));
+    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat): cylinders in plane strain, spheres with -axisymmetric", NULL, spec.radii, &nr, &spec.hertz));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
     PetscOptionsEnd();
     if (help && !setPair) { /* -help: a pair without surfaces (the placeholder) is only listed */
@@ -160,7 +160,9 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     {
       const Body b0 = bodies[spec.body[0]], b1 = bodies[spec.body[1]];
       spec.Estar    = 1.0 / ((1.0 - b0->nu * b0->nu) / b0->E + (1.0 - b1->nu * b1->nu) / b1->E);
+      spec.axisym   = b0->axisym;
     }
+    PetscCheck(!spec.axisym || !spec.mirror, comm, PETSC_ERR_USER_INPUT, "option -%smirror_y: an axisymmetric scene is not mirrored (its axis is x = 0)", prefix);
     if (spec.hertz) {
       PetscReal iR = 0.0;
       for (PetscInt s = 0; s < 2; ++s)

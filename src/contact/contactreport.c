@@ -65,7 +65,7 @@ static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *s
     PetscCall(PetscMalloc1(C * m + C, &S->rows));
     for (PetscInt i = 0; i < m; ++i) PetscCall(PetscArraycpy(&S->rows[C * i], &all[C * perm[i]], C));
     S->n = m;
-    ContactProfileCompare(m, S->rows, R->nodal, spec->hertz, R->hertzA, R->hertzPmax, &S->fig);
+    ContactProfileCompare(m, S->rows, R->nodal, spec->axisym, spec->hertz, R->hertzA, R->hertzPmax, &S->fig);
     PetscCall(PetscFree2(perm, sv));
     PetscCall(PetscFree(all));
   }
@@ -86,14 +86,16 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
   }
   R->force[0] = f[0];
   R->force[1] = f[1];
-  /* a mirrored half doubles the force across the line and cancels it along */
-  fm[0] = spec->mirror ? 2.0 * f[0] : f[0];
+  /* a mirrored half doubles the force across the line and cancels it along;
+     in axisymmetry the rings' radial forces cancel over the circle */
+  fm[0] = spec->mirror ? 2.0 * f[0] : (spec->axisym ? 0.0 : f[0]);
   fm[1] = spec->mirror ? 0.0 : f[1];
   R->P  = PetscSqrtReal(fm[0] * fm[0] + fm[1] * fm[1]);
   R->hEdge = PETSC_MAX_REAL;
   for (PetscInt s = 0; s < 2; ++s)
     if (R->side[s].nedges > 0) R->hEdge = PetscMin(R->hEdge, arcLength[s] / R->side[s].nedges);
-  if (spec->hertz) HertzLineContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzPmax);
+  if (spec->hertz && spec->axisym) HertzPointContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzPmax);
+  else if (spec->hertz) HertzLineContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzPmax);
   for (PetscInt s = 0; s < 2; ++s) {
     PetscCall(ContactSideGather(&R->side[s], spec, R, comm, nloc[s], rows[s], arcLength[s]));
     /* every rank holds the figures (HDF5 attributes are written collectively) */
@@ -173,13 +175,13 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
         continue;
       }
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12s %12s %12s %12s\n", "s - s_c", "p", spec->hertz ? "p Hertz" : "", "gap"));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12s %12s %12s %12s\n", spec->axisym ? "r" : "s - s_c", "p", spec->hertz ? "p Hertz" : "", "gap"));
       first = PetscMax(0, first - 1);
       last  = PetscMin(S->n - 1, last + 1);
       step  = PetscMax(1, (last - first + 1) / 21);
       for (PetscInt i = first; i <= last; i += step) {
         const PetscReal *r  = &S->rows[C * i];
-        const PetscReal  ds = r[CONTACT_ROW_S] - S->fig.sc;
+        const PetscReal  ds = spec->axisym ? r[CONTACT_ROW_X] : r[CONTACT_ROW_S] - S->fig.sc;
         if (spec->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12.6g %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0), (double)r[CONTACT_ROW_GAP]));
         else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], "", (double)r[CONTACT_ROW_GAP]));
       }
@@ -191,7 +193,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   }
   if (spec->hertz && !(R->P > 0)) PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
   else if (spec->hertz) {
-    PetscCall(PetscPrintf(comm, "  Hertz (E* = %g, R* = %g): a = %.6g, p_max = %.6g\n", (double)spec->Estar, (double)spec->Rstar, (double)R->hertzA, (double)R->hertzPmax));
+    PetscCall(PetscPrintf(comm, "  Hertz%s (E* = %g, R* = %g): a = %.6g, p_max = %.6g\n", spec->axisym ? ", two spheres" : "", (double)spec->Estar, (double)spec->Rstar, (double)R->hertzA, (double)R->hertzPmax));
     PetscCall(PetscPrintf(comm, "  computed:              a = %.6g (%+.2f %%), p_max = %.6g (%+.2f %%)\n", (double)R->femA, (double)(100 * (R->femA / R->hertzA - 1)), (double)R->femPmax, (double)(100 * (R->femPmax / R->hertzPmax - 1))));
     PetscCall(PetscPrintf(comm, "  half-width from the profile's second moment: a = %.6g (%+.2f %%)\n", (double)R->femAm, (double)(100 * (R->femAm / R->hertzA - 1))));
     if (PetscIsInfOrNanReal(R->l2err)) PetscCall(PetscPrintf(comm, "  relative L2 error of the pressure profile: n/a (a surface has no point inside Hertz's zone)\n"));
@@ -402,7 +404,7 @@ PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairS
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_zero_xyz", h5, spec->name, body, grp));
     XdmfWriteAttribute(fp, "displacement", (int)S->n, 3, path);
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_nan", h5, spec->name, body, grp));
-    for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfBodyScalars[k], (int)S->n, 1, path);
+    for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfBodyScalarNames(spec->axisym)[k], (int)S->n, 1, path);
     fprintf(fp, "   </Grid>\n");
   }
   PetscFunctionReturn(0);

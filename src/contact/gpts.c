@@ -7,7 +7,7 @@
 
    where X runs over the slave surface in the reference configuration (dS is its
    reference length: Gauss points on each curved quadratic edge, weights times
-   |dX/dxi|) and g is the signed normal gap in the current configuration: the
+   |dX/dxi|; in axisymmetry times 2 pi X_r, surface.h) and g is the signed normal gap in the current configuration: the
    slave point x_s = X + u is projected onto the closest point x_m(eta*) of the
    master surface (edge.h: each master edge the quadratic curve through its
    current nodes, blended C1 into its neighbours), and g = (x_s - x_m(eta*)) .
@@ -226,7 +226,7 @@ static PetscErrorCode GPTSSetUp(EnergyTerm t, Body bodies[])
         PetscCall(ContactSurfaceArc(S, se, cp->xi[q], &sp[0]));
         sp[1] = X[0];
         sp[2] = X[1];
-        sp[3] = cp->wxi[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+        sp[3] = cp->wxi[q] * ContactSurfaceMeasure(S, X, T);
       }
     }
   }

@@ -187,7 +187,7 @@ static inline void MortarSlaveEval(const ContactSurface *S, PetscInt se, PetscRe
 
   EdgeEval(S->x, &S->enodes[3 * se], xi, xs, t);
   EdgeEval(S->X, &S->enodes[3 * se], xi, X, T);
-  *dS = PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+  *dS = ContactSurfaceMeasure(S, X, T);
 }
 
 /* The feature of the master surface closest to a slave point: the inside of
@@ -578,7 +578,7 @@ static PetscErrorCode MortarUpdate(Mortar *m, Body bodies[], MPI_Comm comm)
       }
     }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, D->gw, 2 * S->nn, MPIU_REAL, MPIU_SUM, comm));
-    for (PetscInt j = 0; j < S->nn; ++j) D->gj[j] = D->cover[j] > 0.5 * D->A[j] ? D->gw[j] / D->cover[j] : PETSC_INFINITY;
+    for (PetscInt j = 0; j < S->nn; ++j) D->gj[j] = D->A[j] > 0 && D->cover[j] > 0.5 * D->A[j] ? D->gw[j] / D->cover[j] : PETSC_INFINITY;
   }
   PetscCall(PetscLogEventEnd(MORTAR_Segments, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -748,7 +748,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
         PetscCall(SparseAdd(ib[l], -dgb[l], &n, nmax, gidx, gval));
       }
       {
-        const PetscReal c = -L * PetscSqrtReal(Tr[0] * Tr[0] + Tr[1] * Tr[1]) / den;
+        const PetscReal c = -L * ContactSurfaceMeasure(S, Xr, Tr) / den;
         for (PetscInt a = 0; a < n; ++a)
           for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * gval[a] * gval[b];
       }
@@ -914,7 +914,7 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
         PetscReal N[3], dN[3], X[2], T[2], J;
         EdgeShape(gx[q], N, dN);
         EdgeEval(S->X, &S->enodes[3 * e], gx[q], X, T);
-        J = gw[q] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+        J = gw[q] * ContactSurfaceMeasure(S, X, T);
         for (PetscInt i = 0; i < 3; ++i) {
           d[i] += J * N[i];
           for (PetscInt k = 0; k < 3; ++k) M[3 * i + k] += J * N[i] * N[k];
@@ -943,8 +943,8 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
           EdgeShape(xi, N, dN);
           EdgeEval(S->X, en, xi, X, T);
           for (PetscInt i = 0; i < 3; ++i) {
-            D->A[en[i]] += 0.5 * gw[q] * W[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
-            D->AN[en[i]] += 0.5 * gw[q] * N[i] * PetscSqrtReal(T[0] * T[0] + T[1] * T[1]);
+            D->A[en[i]] += 0.5 * gw[q] * W[i] * ContactSurfaceMeasure(S, X, T);
+            D->AN[en[i]] += 0.5 * gw[q] * N[i] * ContactSurfaceMeasure(S, X, T);
           }
         }
       for (PetscInt i = 0; i < 3; ++i) {
@@ -954,6 +954,16 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
       D->s[en[0]] = S->edir[e] > 0 ? S->s0[e] : S->s0[e] + S->elen[e];
       D->s[en[1]] = S->edir[e] > 0 ? S->s0[e] + S->elen[e] : S->s0[e];
       PetscCall(ContactSurfaceArc(S, e, 0.0, &D->s[en[2]]));
+    }
+    { /* a node whose weight vanishes carries no gap: in axisymmetry a
+         corner on the axis, where int N_j 2 pi r dS is 0 (N_j r has zero
+         mean over a straight edge from r = 0), up to round-off */
+      PetscReal Amax = 0.0;
+      for (PetscInt j = 0; j < S->nn; ++j) Amax = PetscMax(Amax, PetscMax(PetscAbsReal(D->A[j]), PetscAbsReal(D->AN[j])));
+      for (PetscInt j = 0; j < S->nn; ++j) {
+        if (PetscAbsReal(D->A[j]) <= 1e-12 * Amax) D->A[j] = 0.0;
+        if (PetscAbsReal(D->AN[j]) <= 1e-12 * Amax) D->AN[j] = 0.0;
+      }
     }
     for (PetscInt j = 0; j < S->nn; ++j) {
       D->nodeEdgeStart[j + 1] += D->nodeEdgeStart[j];

@@ -257,7 +257,8 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
   PetscReal *erl = NULL;
 
   PetscFunctionBeginUser;
-  S->blend = blend;
+  S->blend  = blend;
+  S->axisym = b->axisym;
   PetscCall(ContactSurfaceOwnedEdges(S, b, pair, &n, &eid, &erl));
   PetscCall(ContactSurfaceGatherEdges(S, b, pair, n, eid, erl));
   PetscCall(PetscFree2(eid, erl));

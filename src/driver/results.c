@@ -43,8 +43,9 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
       PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/displacement_xyz", base, g));
       XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
       for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
-        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, XdmfBodyScalars[k]));
-        XdmfWriteAttribute(fp, XdmfBodyScalars[k], (int)N, 1, path);
+        const char *name = XdmfBodyScalarNames(b->axisym)[k];
+        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, name));
+        XdmfWriteAttribute(fp, name, (int)N, 1, path);
       }
       PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
       for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
@@ -58,9 +59,10 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
 }
 
 /* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
-   stress_xx, stress_yy, stress_zz, stress_xy, beside displacement and stress,
+   stress_xx, stress_yy, stress_zz, stress_xy (axisymmetric: stress_rr,
+   stress_zz, stress_hoop, stress_rz), beside displacement and stress,
    and xdmf_nan, NaN at every node, for the contact fields a body has not. */
-static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
+static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, PetscViewer v)
 {
   Vec                d3, c;
   PetscInt           n;
@@ -88,7 +90,7 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscViewer v)
   PetscCall(VecDuplicate(F->vm, &c));
   for (PetscInt k = 0; k < 4; ++k) {
     PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
-    PetscCall(PetscObjectSetName((PetscObject)c, XdmfBodyScalars[k])); /* stress_xx, _yy, _zz, _xy: the XDMF names */
+    PetscCall(PetscObjectSetName((PetscObject)c, XdmfBodyScalarNames(axisym)[k])); /* stress_xx, _yy, _zz, _xy (rr, zz, hoop, rz): the XDMF names */
     PetscCall(VecView(c, v));
   }
   PetscCall(VecSet(c, (PetscScalar)NAN)); /* the contact fields a body has not (xdmf.h) */
@@ -115,7 +117,7 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
     PetscCall(VecView(F[i].disp, v));
     PetscCall(VecView(F[i].stress, v));
     PetscCall(VecView(F[i].vm, v));
-    PetscCall(WriteXDMFFields(&F[i], v));
+    PetscCall(WriteXDMFFields(&F[i], p->bodies[i]->axisym, v));
     PetscCall(ISView(F[i].topo, v));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
@@ -128,6 +130,7 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(PetscViewerHDF5PushGroup(v, "/metadata"));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->opt.scene));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "axisymmetric", PETSC_INT, &(PetscInt){p->opt.axisymmetric ? 1 : 0}));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "run_id", PETSC_STRING, runId));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
   PetscCall(PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
@@ -289,6 +292,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   fp = fopen(path, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
   fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, runId, (int)dofs, (int)size, type);
+  fprintf(fp, "  \"axisymmetric\": %s,\n", p->opt.axisymmetric ? "true" : "false");
   fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
   fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
   fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);

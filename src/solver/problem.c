@@ -144,6 +144,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
   PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
   PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
+  PetscCall(PetscOptionsBool("-axisymmetric", "Axisymmetric scene: x is the radius r >= 0 and x = 0 the axis, each mesh a meridian section (u_r = 0 held on the axis)", NULL, p->opt.axisymmetric, &p->opt.axisymmetric, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->opt.meshSize, &setMeshSize));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->opt.scene));
   PetscCall(PetscStrncpy(p->opt.meshDir, def, sizeof(p->opt.meshDir)));
@@ -199,6 +200,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
       PetscCheck(!same, p->comm, PETSC_ERR_USER_INPUT, "option -bodies: body '%s' given twice", names[i]);
     }
     PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
+    p->bodies[i]->axisym = p->opt.axisymmetric;
     PetscCall(PetscFree(names[i]));
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->opt.meshSize));

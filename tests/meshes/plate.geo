@@ -1,15 +1,17 @@
-// Rectangle [0, L] x [0, H] with each side its own group, counter-clockwise:
+// Rectangle [x0, x0 + L] x [y0, y0 + H] with each side its own group, counter-clockwise:
 // "bottom", "right", "top", "left". Tri6 (quads = 0, unstructured) or Quad9
-// (quads = 1, structured). Parameters: h, L, H, quads.
+// (quads = 1, structured). Parameters: h, x0, y0, L, H, quads.
 If (!Exists(h))     h = 0.1;  EndIf
+If (!Exists(x0))    x0 = 0.0; EndIf
+If (!Exists(y0))    y0 = 0.0; EndIf
 If (!Exists(L))     L = 1.0;  EndIf
 If (!Exists(H))     H = 1.0;  EndIf
 If (!Exists(quads)) quads = 0; EndIf
 
-Point(1) = {0, 0, 0, h};
-Point(2) = {L, 0, 0, h};
-Point(3) = {L, H, 0, h};
-Point(4) = {0, H, 0, h};
+Point(1) = {x0, y0, 0, h};
+Point(2) = {x0 + L, y0, 0, h};
+Point(3) = {x0 + L, y0 + H, 0, h};
+Point(4) = {x0, y0 + H, 0, h};
 Line(1) = {1, 2};
 Line(2) = {2, 3};
 Line(3) = {3, 4};

@@ -1,0 +1,114 @@
+/* Axisymmetric bodies (-axisymmetric): x is the radius r >= 0, y the axis
+   z, and the mesh is a meridian section. Every volume integral carries
+   2 pi r (BodyRadialWeight: the cell quadrature's weights, the loads', the
+   contact's), and the strain gains the hoop component u_r / r
+   (elasticity.c).
+
+   On the axis a point does not move radially: u_r = 0 there, or the hoop
+   strain u_r / r would be infinite. So the points on the axis (the vertices
+   at x = 0, up to 1e-10 of the body's size, and the edges between two of
+   them) get a Dirichlet condition of their own, u_r = 0, named "r=0". A
+   scene need not declare it; where a scene's own condition already holds
+   u_r on the axis, it must hold it at 0, and that point is left to it. A
+   node at x < 0 is not in the meridian half-plane: refused. */
+#include "body.h"
+
+/* The body's size and its vertices' least x (over every rank), from this
+   rank's vertices xy[n][2]. */
+static PetscErrorCode AxisExtent(Body b, PetscInt n, const PetscReal xy[], PetscReal *size, PetscReal *xmin)
+{
+  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+
+  PetscFunctionBeginUser;
+  for (PetscInt v = 0; v < n; ++v)
+    for (PetscInt d = 0; d < 2; ++d) {
+      lo[d] = PetscMin(lo[d], xy[2 * v + d]);
+      hi[d] = PetscMax(hi[d], xy[2 * v + d]);
+    }
+  if (n) lo[2] = -PetscMax(hi[0] - lo[0], hi[1] - lo[1]);
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 3, MPIU_REAL, MPIU_MIN, b->comm));
+  *xmin = lo[0];
+  *size = lo[2] < 0 ? -lo[2] : 1.0;
+  PetscFunctionReturn(0);
+}
+
+/* Whether a scene's Dirichlet condition holds u_r at point p: the
+   condition's index, or -1. */
+static PetscErrorCode AxisHeldBy(Body b, PetscInt p, PetscInt *bc, PetscInt *k)
+{
+  PetscFunctionBeginUser;
+  *bc = *k = -1;
+  for (PetscInt i = 0; i < b->nbc && *bc < 0; ++i) {
+    PetscInt val;
+    PetscCall(DMLabelGetValue(b->bc[i].label, p, &val));
+    for (PetscInt j = 0; j < b->bc[i].ncomp && val == 1; ++j)
+      if (b->bc[i].comps[j] == 0) {
+        *bc = i;
+        *k  = j;
+      }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyAddAxis(Body b)
+{
+  DMLabel   label;
+  PetscInt  vs, ve, es, ee, n = 0, gn;
+  PetscReal size = 1.0, xmin = 0.0, *xy;
+  BodyBC   *bc;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+  PetscCall(BodyVertexCoordinates(b, &xy));
+  PetscCall(AxisExtent(b, ve - vs, xy, &size, &xmin));
+  b->axisTol = 1e-10 * size;
+  PetscCheck(xmin >= -b->axisTol, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has a vertex at x = %g: under -axisymmetric x is the radius, so a body lies in x >= 0 (its axis at x = 0)", b->name, b->msh, (double)xmin);
+  PetscCall(DMPlexGetDepthStratum(b->dm, 1, &es, &ee));
+  PetscCall(DMCreateLabel(b->dm, "r=0"));
+  PetscCall(DMGetLabel(b->dm, "r=0", &label));
+  for (PetscInt p = vs; p < ee; ++p) {
+    PetscBool on = PETSC_TRUE;
+    PetscInt  i, k;
+    if (p < ve) on = (PetscBool)(PetscAbsReal(xy[2 * (p - vs)]) <= b->axisTol);
+    else if (p >= es) {
+      const PetscInt *cone;
+      PetscCall(DMPlexGetCone(b->dm, p, &cone));
+      for (PetscInt j = 0; j < 2; ++j) on = (PetscBool)(on && PetscAbsReal(xy[2 * (cone[j] - vs)]) <= b->axisTol);
+    } else on = PETSC_FALSE;
+    if (!on) continue;
+    PetscCall(AxisHeldBy(b, p, &i, &k));
+    if (i >= 0) { /* the scene's own condition holds u_r here: at 0, and by itself */
+      PetscCheck(!b->bc[i].control[k] && !b->bc[i].exact && b->bc[i].values[k] == 0.0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "body %s: Dirichlet group %s moves points on the axis radially (u_r = %g): on the axis u_r = 0", b->name, b->bc[i].group, (double)b->bc[i].values[k]);
+      continue;
+    }
+    PetscCall(DMLabelSetValue(label, p, 1));
+    n++;
+  }
+  PetscCall(PetscFree(xy));
+  PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
+  if (!gn) { /* no point on the axis (a ring), or the scene holds them all */
+    PetscCall(DMRemoveLabel(b->dm, "r=0", NULL));
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(b->nbc < CONTACT_MAX_BC, b->comm, PETSC_ERR_USER_INPUT, "body %s: no room for its axis condition: at most %d Dirichlet conditions", b->name, CONTACT_MAX_BC);
+  bc = &b->bc[b->nbc++];
+  PetscCall(PetscMemzero(bc, sizeof(*bc)));
+  PetscCall(PetscStrncpy(bc->group, "r=0", sizeof(bc->group)));
+  bc->ncomp    = 1;
+  bc->comps[0] = 0;
+  bc->label    = label;
+  bc->axis     = PETSC_TRUE;
+  PetscCall(PetscInfo(NULL, "body %s: u_r = 0 held on %" PetscInt_FMT " points on the axis\n", b->name, gn));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyCheckAxis(Body b)
+{
+  PetscReal xmin = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < b->ncells * b->nb; ++k) xmin = PetscMin(xmin, b->xnode[2 * k]);
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &xmin, 1, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCheck(xmin >= -b->axisTol, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has a node at x = %g (a curved edge's mid-node): under -axisymmetric a body lies in x >= 0", b->name, b->msh, (double)xmin);
+  PetscFunctionReturn(0);
+}
