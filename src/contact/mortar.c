@@ -955,15 +955,14 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
       D->s[en[1]] = S->edir[e] > 0 ? S->s0[e] + S->elen[e] : S->s0[e];
       PetscCall(ContactSurfaceArc(S, e, 0.0, &D->s[en[2]]));
     }
-    { /* a node whose weight vanishes carries no gap: in axisymmetry a
-         corner on the axis, where int N_j 2 pi r dS is 0 (N_j r has zero
-         mean over a straight edge from r = 0), up to round-off */
-      PetscReal Amax = 0.0;
-      for (PetscInt j = 0; j < S->nn; ++j) Amax = PetscMax(Amax, PetscMax(PetscAbsReal(D->A[j]), PetscAbsReal(D->AN[j])));
-      for (PetscInt j = 0; j < S->nn; ++j) {
-        if (PetscAbsReal(D->A[j]) <= 1e-12 * Amax) D->A[j] = 0.0;
-        if (PetscAbsReal(D->AN[j]) <= 1e-12 * Amax) D->AN[j] = 0.0;
-      }
+    if (S->axisym) { /* a corner on the axis carries no gap: its weight
+                        int N_j 2 pi r dS is 0 on a straight edge from r = 0
+                        (N_j r has zero mean there) and a sliver of its
+                        neighbours' on a curved one, so its weighted gap
+                        would be a ratio of two vanishing integrals */
+      const PetscReal tol = 1e-8 * ContactSurfaceLength(S);
+      for (PetscInt j = 0; j < S->nn; ++j)
+        if (PetscAbsReal(S->X[2 * j]) <= tol) D->A[j] = D->AN[j] = 0.0;
     }
     for (PetscInt j = 0; j < S->nn; ++j) {
       D->nodeEdgeStart[j + 1] += D->nodeEdgeStart[j];
