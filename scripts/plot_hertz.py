@@ -6,7 +6,9 @@ Usage:
         contact pressure along each interface (both surfaces' profiles, a
         slave's own and, for mortar, a master's transferred from the slave,
         plotted against s - s_c, or with --axis x|y against the current x or
-        y coordinate) with the Hertz curve when the scene declares one;
+        y coordinate; an axisymmetric scene's against the radius r, the
+        Hertz curve centred on the axis) with the Hertz curve when the scene
+        declares one;
         a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
@@ -345,8 +347,9 @@ def plot_field(f, scale, ax, label, units, zoom=None):
     if window is not None:
         ax.set_xlim(window[0], window[1])
         ax.set_ylim(window[2], window[3])
-    ax.set_xlabel(units.label("x", "length"))
-    ax.set_ylabel(units.label("y", "length"))
+    axisym = "metadata" in f and bool(attr(f["metadata"], "axisymmetric", 0))
+    ax.set_xlabel(units.label("radius r" if axisym else "x", "length"))
+    ax.set_ylabel(units.label("axis z" if axisym else "y", "length"))
     how = ("" if scale == 1.0 else
            f" (deformation x {scale:g}, rigid motion not magnified)")
     ax.set_title(f"von Mises stress on the deformed bodies{how}\n{label}")
@@ -390,6 +393,9 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
     """Each pair's pressure profiles against the arc position s - s_c (axis
     "s") or the current x or y coordinate (the Hertz curve then centred at
     the slave's centre, its half-width along that axis)."""
+    axisym = "metadata" in f and bool(attr(f["metadata"], "axisymmetric", 0))
+    if axisym:   # a meridian section: against the current radius, Hertz centred on the axis
+        axis = "x"
     for ax, (pair, g) in zip(axes, f["contact"].items()):
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
         centre = 0.0
@@ -397,7 +403,7 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
             (u, to), p = abscissa(side, axis), sample(side, "pressure")
             s = sample(side, "s") - attr(side, "centre", 0.0)
             name = f"{attr(side, 'body')}:{attr(side, 'group')}"
-            if is_slave(side):
+            if is_slave(side) and not axisym:
                 centre = float(to(0.0))
             if is_nodal(side) and is_slave(side):
                 t, q = nodal_curve(s, p)
@@ -427,13 +433,15 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
                      f"relative L2 error of p: {100 * attr(g, 'pressure_l2_error'):.2f} %"]
         if xr is not None:
             ax.set_xlim(*xr)
+        if axisym:
+            ax.set_xlim(0, 1.5 * max(a, attr(g, "fem_a", 0.0)) if a > 0 else None)
         low = min([np.min(sample(v, "pressure"), initial=0.0) for v in profile_sides(g)], default=0.0)
         ax.set_ylim(1.45 * low, 1.45 * ax.get_ylim()[1])   # a master corner node may take a small negative share
         ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",
                 fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
         ax.legend(loc="upper right", fontsize=8)
         ax.grid(alpha=0.3)
-        ax.set_xlabel(units.label("arc position s - s_c" if axis == "s" else f"current position {axis}", "length"))
+        ax.set_xlabel(units.label("radius r (current)" if axisym else "arc position s - s_c" if axis == "s" else f"current position {axis}", "length"))
         ax.set_ylabel(units.label("pressure p", "stress"))
         ax.set_title(f"contact pressure, pair '{pair}'")
 
