@@ -212,6 +212,15 @@ CASES = {
     "output_dir_unwritable": (["-output", "/proc/contact/out.h5"], "/proc/contact"),
     "output_under_file": (output_under_file, None),
     "singular_body": (singular, None),
+    # axisymmetric scenes: a body across the axis, a mirror, an axis point moved radially, a plane-strain exact solution
+    "axisymmetric_negative_x": (["-axisymmetric"], "body indenter: mesh "),
+    "axisymmetric_mirror": (["-options_file", "meshes/sphere/sphere.opts", "-contact_interface_mirror_y", "0"],
+                            "option -contact_interface_mirror_y: an axisymmetric scene is not mirrored"),
+    "axisymmetric_axis_moved": (["-options_file", "meshes/sphere/sphere.opts", "-ball_bc", "equator,axis",
+                                 "-ball_bc_axis_components", "x", "-ball_bc_axis_values", "0.01"],
+                                "body ball: Dirichlet group axis moves points on the axis radially (u_r = 0.01)"),
+    "axisymmetric_exact_plane": (["-block_exact", "lame", "-block_exact_params", "1,0,0"],
+                                 "option -block_exact: 'lame' is a solution in r-z, and the scene is in plane strain"),
     "non_finite_energy": (["-block_bc_push_values", "1e200,0"], "block"),
 }
 
