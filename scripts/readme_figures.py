@@ -6,6 +6,7 @@ results, and the README's picture.
     python3 scripts/readme_figures.py --update     # rewrite the tables from the results
     python3 scripts/readme_figures.py --measure scenes --measure solver [--update]
                                                    # run a table's cases first
+    python3 scripts/readme_figures.py --measure axisymmetric [--update]
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
 
@@ -29,6 +30,9 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - stress: bench/stress/results.json (scripts/stress_sweep.py, run by make stress);
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
+- axisymmetric: bench/axisymmetric/results.json (written by --measure
+  axisymmetric: the sphere and ssnv104 scenes at their defaults and the
+  sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -222,7 +226,50 @@ def render_penalty():
     return penalty_study.table(load("penalty"))
 
 
-RENDER = {"scenes": render_scenes, "formulations": render_formulations, "solver": render_solver,
+AXISYMMETRIC = [("sphere", ["-options_file", "meshes/sphere/sphere.opts"]),
+                ("sphere, -accuracy 0.01", ["-options_file", "meshes/sphere/sphere.opts", "-accuracy", "0.01"]),
+                ("ssnv104", ["-options_file", "meshes/ssnv104/ssnv104.opts"])]
+SSNV104_REF = {"a": 10.0, "p0": 2798.3}   # code_aster V6.04.104: Hertz from the approach 4
+
+
+def measure_axisymmetric(repeat=3):
+    """The axisymmetric scenes at their defaults (meshes generated first, not
+    timed), and the sphere under -accuracy 0.01: median of 3 whole-run times
+    (the JSON's time.total), the figures against Hertz."""
+    from contactrun import median, mesh_only, run_checked
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, args in AXISYMMETRIC:
+            mesh_only(args[:2])
+            runs = [run_checked(args, tmp, "s").summary for _ in range(repeat)]
+            s = runs[-1]
+            rows.append(dict(scene=label, command="bin/contact " + " ".join(args), dofs=s["dofs"],
+                             steps=len(s.get("adapt_steps", [])) or 1, iterations=s["iterations"],
+                             time=median([r["time"]["total"] for r in runs]), P=s["contact_force"],
+                             fem_pmax=s["fem_pmax"], hertz_pmax=s["hertz_pmax"], fem_a=s["fem_a_moment"],
+                             hertz_a=s["hertz_a"], l2=s["pressure_l2_error"]))
+    save("axisymmetric", rows)
+
+
+def render_axisymmetric():
+    rows = load("axisymmetric")
+    out = ["| scene | dofs (last step) | time | P | p_max: FE / Hertz | a (second moment): FE / Hertz | profile L2 |",
+           "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        dp, da = 100 * (r["fem_pmax"] / r["hertz_pmax"] - 1), 100 * (r["fem_a"] / r["hertz_a"] - 1)
+        steps = f", {r['steps']} steps" if r["steps"] > 1 else ""
+        out.append(f"| {r['scene']} | {r['dofs']:,}{steps} | {r['time']:.2f} s | {r['P']:.5g} | {r['fem_pmax']:.5g} / "
+                   f"{r['hertz_pmax']:.5g} ({dp:+.2f} %) | {r['fem_a']:.4g} / {r['hertz_a']:.4g} ({da:+.2f} %) "
+                   f"| {100 * r['l2']:.2f} % |")
+    ss = [r for r in rows if r["scene"] == "ssnv104"][0]
+    out.append("")
+    out.append(f"SSNV104 against code_aster's reference, Hertz from the approach (a = {SSNV104_REF['a']:g}, "
+               f"p0 = {SSNV104_REF['p0']:g}): a {ss['fem_a']:.4g} ({100 * (ss['fem_a'] / SSNV104_REF['a'] - 1):+.1f} %), "
+               f"p_max {ss['fem_pmax']:.5g} ({100 * (ss['fem_pmax'] / SSNV104_REF['p0'] - 1):+.1f} %).")
+    return "\n".join(out) + "\n"
+
+
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations, "solver": render_solver,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty}
@@ -273,7 +320,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "picture"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver", "picture", "axisymmetric"], action="append", default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
@@ -281,6 +328,8 @@ def main():
         measure_solver()
     if "picture" in args.measure:
         measure_picture()
+    if "axisymmetric" in args.measure:
+        measure_axisymmetric()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:
