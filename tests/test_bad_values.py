@@ -36,7 +36,7 @@ DOMAINS = {
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",),
     "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
-    "partition_view": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
+    "partition_view": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
     # names, paths and lists of names: their own tests (test_bad_input.py, test_scene_files.py)
     "scene": ("name",), "bodies": ("name",), "mesh_dir": ("name",), "output": ("name",), "summary": ("name",),

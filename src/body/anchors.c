@@ -169,6 +169,7 @@ PetscErrorCode BodyAddAnchors(Body b)
     PetscCall(PetscFree(on));
     PetscCall(MPIU_Allreduce(&dbest, &dmin, 1, MPIU_REAL, MPIU_MIN, b->comm));
     if (dbest > dmin) A[0] = A[1] = PETSC_MAX_REAL;
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, A, 2, MPIU_REAL, MPIU_MIN, b->comm)); /* every rank: the nearest, wherever it lies */
   }
   PetscCheck(A[0] < PETSC_MAX_REAL, b->comm, PETSC_ERR_USER_INPUT, "body %s: every vertex is in a Dirichlet group, yet a rigid motion is free", b->name);
   for (PetscInt k = 0; k < n; ++k) { /* B: the vertex farthest from A */

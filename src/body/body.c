@@ -326,8 +326,20 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
       if (depth == 2 && b->simplex) continue;
       if (depth == 0)
         for (PetscInt d = 0; d < 2; ++d) {
-          PetscReal x = 0.0;
-          for (PetscInt f = 0; f < ncb; ++f) x += PetscRealPart(xc[f]) * Tc->T[0][(k * ncb + f) * 2 + d];
+          PetscReal x = 0.0, tmax = 0.0;
+          PetscInt  fmax = -1;
+          for (PetscInt f = 0; f < ncb; ++f) {
+            const PetscReal t = Tc->T[0][(k * ncb + f) * 2 + d];
+            x += PetscRealPart(xc[f]) * t;
+            if (PetscAbsReal(t) > tmax) {
+              tmax = PetscAbsReal(t);
+              fmax = f;
+            }
+          }
+          /* a Lagrange coordinate field at its own node: the stored value
+             itself, the same bits from every cell and on every rank (the
+             anchors and the axis compare vertices across ranks) */
+          if (fmax >= 0 && PetscAbsReal(tmax - 1.0) < 1e-10) x = PetscRealPart(xc[fmax]);
           (*xy)[2 * (p - vs) + d] = x;
         }
       k++;
