@@ -63,7 +63,11 @@
    The stopping test: -tao_gttol 1e-10 (Newton's is 1e-8). L-BFGS converges
    linearly, so it stops just below its tolerance, where Newton's last,
    quadratic, step lands far below it: at 1e-8 the contact force P was 2e-7
-   to 2e-6 from Newton's (to 1e-12), at 1e-10 6e-11, for 2 more iterations. */
+   to 2e-6 from Newton's (to 1e-12) at h = 0.03; at 1e-10 6e-11 there, for 2
+   more iterations, and 2.1e-8 at h = 0.015 (1e-11: 8.5e-10, 2 iterations
+   more; but at k_p = 1e10 1e-11 is below the gradient's round-off, where
+   the mortar half scene at h = 0.25 stops and h = 0.1 takes 380 iterations
+   instead of 70). */
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
 #include "schur.h"
