@@ -232,10 +232,12 @@ def tables(res):
     agree = {(a["h"], a["kp"], a["push"], a["formulation"]): a["rel"] for a in res["rank_agreement"]}
     ok = sum(r["converged"] for r in runs)
     dofs = {r["h"]: r["dofs"] for r in runs if "dofs" in r}
-    out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), Newton with "
+    tao = res.get("tao_type", "nls")
+    solver = "Newton" if tao == "nls" else f"TAO {tao}"
+    out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), {solver} with "
            f"the defaults, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
            "2-core machine: "
-           f"{ok} of {len(runs)} runs converged. Iterations: Newton iterations at 1 rank (gpts / mortar); "
+           f"{ok} of {len(runs)} runs converged. Iterations: {solver} iterations at 1 rank (gpts / mortar); "
            "converged: every run of the row at that rank count (both formulations); |dP|/P: the largest relative "
            f"difference of P between 1 and 2 ranks over the two formulations (target {RANK_TOL:g}); solve: the "
            "largest solve time of the row's four runs.", "",
