@@ -30,6 +30,8 @@ typedef struct {
   PetscReal   taylorScale;
   H0Type      h0;
   PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
+  PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
+  PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
@@ -64,6 +66,8 @@ typedef struct {
   PetscInt           taylorN;
   PetscInt           controlSolves; /* force control: the solves of its outer iteration */
   PetscInt           h0Refreshes;   /* -lmvm_h0 contact: the H0 set-ups (the first included) */
+  PetscInt           pairsDropped;  /* -lmvm_pair_ratio: the correction pairs dropped */
+  PetscInt           lmvmRestarts;  /* -lmvm_restarts: the L-BFGS solves restarted */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 
@@ -87,6 +91,9 @@ struct _n_Problem {
   PetscReal      hessianG0;    /* ||g|| at the current TAO solve's first iterate */
   PetscInt       ncontrols;
   ForceControl   controls[CONTACT_MAX_CONTROLS];
+  Vec            lmvmX, lmvmG, lmvmW; /* L-BFGS (lmvm.c): the last iterate and its gradient, work */
+  PetscBool      lmvmHave;            /* lmvmX, lmvmG hold an iterate of the current TAO solve */
+  PetscReal      lmvmF0, lmvmG0;      /* the energy and gradient norm at the first iterate of the last TAO solve */
   ProblemResults res;
 };
 
@@ -109,6 +116,10 @@ PetscErrorCode ProblemSetInitialGuess(Problem, Vec X0);
 PetscErrorCode ProblemSetUp(Problem);
 PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
+/* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
+PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
+/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several or for a matrix that may be indefinite. */
+PetscErrorCode ContactPCSetCholesky(PC, MPI_Comm, PetscBool indefinite);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */
 PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
 /* Creates the TAO solver with the program's defaults and the options (also

@@ -77,9 +77,13 @@ STRATEGIES = {
     "newton+load": ["-load_steps", "3"],
     "ntr": ["-tao_type", "ntr"],
     "lmvm-h0": ["-tao_type", "lmvm"],
+    "blmvm-h0": ["-tao_type", "blmvm"],
     "lmvm": ["-tao_type", "lmvm", "-lmvm_h0", "none", "-tao_max_it", "100000", "-tao_max_funcs", "200000"],
 }
-ALL_STRATEGIES = list(STRATEGIES)
+# the gpts product's strategies; the L-BFGS pair with the mortar formulation (MORTAR_LMVM) runs at
+# the reference k_p and tolerance on the uniform hertz meshes down to h = 0.015
+ALL_STRATEGIES = [s for s in STRATEGIES if s != "blmvm-h0"]
+MORTAR_LMVM = ["lmvm-h0", "blmvm-h0"]
 KPS = [1e4, 1e5, 2e6, 1e8]
 TOLS = [1e-8, 1e-5]
 REF_KP, REF_TOL, REF_STRATEGY = 2e6, 1e-8, "newton"
@@ -123,6 +127,9 @@ def sweep_plan(quick):
     def mortar(tols=(REF_TOL,), rep=None):
         return [(REF_STRATEGY, REF_KP, t, 1, rep, "mortar") for t in tols]
 
+    def mortar_lmvm():
+        return [(s, REF_KP, REF_TOL, 1, None, "mortar") for s in MORTAR_LMVM]
+
     if quick:
         for h in (0.2, 0.1, 0.06):
             strategies = ["newton", "newton+cont", "lmvm-h0"] + (["lmvm"] if h >= 0.2 else [])
@@ -145,19 +152,19 @@ def sweep_plan(quick):
     medium = ([(s, kp, t, 1, None, "gpts") for s in ALL_STRATEGIES if s != "lmvm" for kp in KPS for t in TOLS]
               + mortar(TOLS))
     for h in (0.2, 0.1, 0.06):
-        add("hertz", h, full)
+        add("hertz", h, full + mortar_lmvm())
     add("hertz-half", 0.06, full)
     add("hertz-graded", 0.06, full)
     for h in (0.04, 0.03):
-        add("hertz", h, medium)
+        add("hertz", h, medium + mortar_lmvm())
     add("hertz-half", 0.03, medium)
     add("hertz-graded", 0.03, medium)
     add("hertz-graded", 0.015, medium)
     # C: large meshes, the default strategy at the reference k_p, both
     # tolerances; at the finest (the reference solution of every k_p) all k_p
-    add("hertz", 0.02, [("newton", REF_KP, t, 1, None, f) for t in TOLS for f in FORMULATIONS])
+    add("hertz", 0.02, [("newton", REF_KP, t, 1, None, f) for t in TOLS for f in FORMULATIONS] + mortar_lmvm())
     add("hertz", 0.015, [("newton", REF_KP, t, 1, None, f) for t in TOLS for f in FORMULATIONS]
-        + [("newton", kp, 1e-8, 1, 1, "gpts") for kp in KPS if kp != REF_KP])
+        + [("newton", kp, 1e-8, 1, 1, "gpts") for kp in KPS if kp != REF_KP] + mortar_lmvm())
     # D: scaling past 1e6 dofs; 1 and 2 ranks on the largest (2 ranks: gpts)
     add("hertz", 0.01, [("newton", REF_KP, REF_TOL, 1, None, f) for f in FORMULATIONS])
     add("hertz", 0.0065, [("newton", REF_KP, REF_TOL, 1, None, f) for f in FORMULATIONS]
@@ -560,7 +567,7 @@ def accuracy_curve(rows):
 
 # the plots' styles: a colour per strategy (C3 is mortar's), a marker per scene, a colour and a line style
 # per formulation
-STRATEGY_COLORS = {s: c for s, c in zip(ALL_STRATEGIES, ["C0", "C1", "C2", "C9", "C4", "C5"])}
+STRATEGY_COLORS = {s: c for s, c in zip(STRATEGIES, ["C0", "C1", "C2", "C9", "C4", "C5", "C6"])}
 SCENE_MARKERS = {"hertz": "o", "hertz-graded": "s", "hertz-half": "^"}
 FORM_COLORS = {"gpts": "C0", "mortar": "C3"}
 FORM_STYLES = {"gpts": "-", "mortar": "--"}
@@ -617,12 +624,13 @@ def plot_error_vs_time(plt, rows, out):
             axes[0].annotate("%g %%" % (100 * p["tol"]), (p["wall"], p["profile_err"]), fontsize=7,
                              xytext=(4, 4), textcoords="offset points", color="C2")
     for form in FORMULATIONS:
-        for s in ALL_STRATEGIES:
+        for s in STRATEGIES:
             pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and plottable(r, "P_ref_err")
                    and not on_ref_mesh(r)]
-            # gpts: a colour per strategy; mortar (newton only): its formulation's colour
-            error_front(axes[2], pts, "P_ref_err", STRATEGY_COLORS[s] if form == REF_FORMULATION else FORM_COLORS[form],
-                        FORM_STYLES[form], "%s %s" % (form, s))
+            # a colour per strategy (the formulations told apart by the line style); mortar's newton its
+            # formulation's colour
+            color = FORM_COLORS[form] if (form != REF_FORMULATION and s == REF_STRATEGY) else STRATEGY_COLORS[s]
+            error_front(axes[2], pts, "P_ref_err", color, FORM_STYLES[form], "%s %s" % (form, s))
     axes[2].set_title("|P - P_ref| / P_ref (finest uniform mesh, same formulation and k_p;\n"
                       "its own runs left out)", fontsize=10)
     for ax in axes:
@@ -861,9 +869,11 @@ def report_design(rows, ctx):
     A("Formulations (`-contact_formulation`, column `formulation`): **gpts** (the default: Gauss point to "
       "segment, both surfaces as slave) runs every configuration above; **mortar** (nodal weighted gaps, the "
       "pair's first surface as slave) runs the default strategy (newton) at k_p = 2e6 on every mesh of hertz, "
-      "hertz-half and hertz-graded%s, and not the other strategies, penalties or the 2-rank run: those "
-      "measure the solver and the penalty, which the gpts rows cover, and leaving them out keeps the full "
-      "sweep near an hour. "
+      "hertz-half and hertz-graded%s, and L-BFGS (lmvm-h0 and blmvm-h0, the program's defaults for them) at "
+      "k_p = 2e6, gttol 1e-8 on the uniform hertz meshes down to h = 0.015 (their rows were added to the "
+      "sweep's by `--merge` where the header says so), and not the other strategies, penalties or the "
+      "2-rank run: those measure the solver and the penalty, which the gpts rows cover, and leaving them "
+      "out keeps the full sweep near an hour. "
       "On each mesh the two formulations' runs of a configuration alternate (gpts, mortar, gpts, ...), so "
       "that their time ratio is measured under the same load."
       % ("" if args.quick else " at both tolerances"))
@@ -1555,6 +1565,11 @@ def parse_args():
                     "rebuild during the sweep does not mix versions)")
     ap.add_argument("--timeout", type=float, default=None, help="per-run time limit in s (default 1800; quick 90)")
     ap.add_argument("--only", default=None, help="restrict to scene[:h] entries, comma-separated (e.g. hertz:0.01)")
+    ap.add_argument("--strategies", default=None, help="restrict to these strategies, comma-separated")
+    ap.add_argument("--formulations", default=None, help="restrict to these formulations, comma-separated")
+    ap.add_argument("--merge", action="store_true", help="run the (restricted) plan and merge its rows into "
+                    "<out>/results.csv (a row of the same configuration replaced), then rewrite RESULTS.md and "
+                    "the plots as --report-only does")
     ap.add_argument("--dry-run", action="store_true", help="print the plan and exit")
     ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md and the plots from "
                     "<out>/results.csv and <out>/run.json, running nothing")
@@ -1581,7 +1596,12 @@ def select_plan(args):
                     keep.append(e)
                     break
         plan = keep
-    return plan
+    for opt, i in ((args.strategies, 0), (args.formulations, 5)):
+        if opt:
+            names = opt.split(",")
+            for e in plan:
+                e["configs"] = [c for c in e["configs"] if c[i] in names]
+    return [e for e in plan if e["configs"]]
 
 
 def report_only(args):
@@ -1672,6 +1692,38 @@ def sweep_mesh(R, e, rows, args):
     return m
 
 
+def config_key(r):
+    return (r["scene"], float(r["h"]), r["formulation"], r["strategy"], float(r["kp"]), float(r["gttol"]),
+            int(r["ranks"]))
+
+
+def merge_sweep(args, plan, nconf, tmp):
+    """The (restricted) plan's rows merged into <out>/results.csv, then the
+    report from the merged rows with the settings of the run that wrote the
+    file (run.json; its argv and elapsed time gain this run's)."""
+    R = Sweep(args, tmp, "merge.log")
+    R.say("merge: %d meshes, %d configurations, repeat %d, into %s/results.csv" % (len(plan), nconf, args.repeat,
+                                                                                  args.out))
+    new = []
+    for e in plan:
+        sweep_mesh(R, e, new, argparse.Namespace(**dict(vars(args), out=tmp)))
+    path = os.path.join(args.out, "results.csv")
+    keys = {config_key(r) for r in new}
+    rows = [r for r in read_csv(path) if config_key(r) not in keys] + new
+    with open(os.path.join(args.out, "run.json")) as fh:
+        meta = json.load(fh)
+    meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, git_info(args.out))] \
+        + sys.argv[1:]
+    meta["elapsed"] += time.time() - args.t0
+    with open(os.path.join(args.out, "run.json"), "w") as fh:
+        json.dump(meta, fh, indent=1)
+    for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
+        setattr(args, k, meta[k])
+    sys.argv = [sys.argv[0]] + meta["argv"]
+    report(rows, args, meta["info"], meta["meshes"], meta["elapsed"], meta["load"])
+    R.say("merged %d rows into %s" % (len(new), path))
+
+
 def run_sweep(args, plan, nconf, tmp):
     """The plan, mesh by mesh, then run.json and the report."""
     R = Sweep(args, tmp)
@@ -1715,6 +1767,8 @@ def main():
         args.bin = contactrun.copy_program(tmp, args.bin_orig)
         if args.formulations_cost:
             formulations_cost(args, Sweep(args, tmp, "formulations.log"))
+        elif args.merge:
+            merge_sweep(args, plan, nconf, tmp)
         else:
             run_sweep(args, plan, nconf, tmp)
     finally:

@@ -4,7 +4,7 @@ results, and the README's picture.
 
     python3 scripts/readme_figures.py --check      # exit 1 if a table differs from its results
     python3 scripts/readme_figures.py --update     # rewrite the tables from the results
-    python3 scripts/readme_figures.py --measure scenes --measure solver [--update]
+    python3 scripts/readme_figures.py --measure scenes --measure solver --measure lmvm [--update]
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
     python3 scripts/readme_figures.py --measure picture
@@ -36,7 +36,10 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
-  2 minutes).
+  2 minutes);
+- lmvm: bench/lmvm/results.json (written by --measure lmvm: L-BFGS, lmvm and
+  blmvm at their defaults, against Newton on the reference scene for several h,
+  k_p and rank counts, interleaved, median of 3 solve times; about 5 minutes).
 
 The picture: --measure picture runs the reference scene as `make run` does
 (meshes/hertz/hertz.opts, the program's defaults), its HDF5 output in a
@@ -115,7 +118,10 @@ STRATEGIES = [("Newton, Schur step (default)", []),
               ("Newton + penalty continuation", ["-penalty_stages", "3"]),
               ("Newton + load stepping", ["-load_steps", "3"]),
               ("Newton, trust region", ["-tao_type", "ntr"]),
-              ("L-BFGS, H0 the stiffness + contact Hessian, one pair (default)", ["-tao_type", "lmvm"]),
+              ("L-BFGS, H0 the stiffness + contact Hessian, one pair, continuation (default)", ["-tao_type", "lmvm"]),
+              ("the same, bound-constrained type", ["-tao_type", "blmvm"]),
+              ("L-BFGS without continuation", ["-tao_type", "lmvm", "-penalty_stages", "1"]),
+              ("L-BFGS keeping every pair", ["-tao_type", "lmvm", "-lmvm_pair_ratio", "1e300"]),
               ("L-BFGS, elastic H0", ["-tao_type", "lmvm", "-lmvm_h0", "elastic"]),
               ("plain L-BFGS (the original study's method)", ["-tao_type", "lmvm", "-lmvm_h0", "none"]),
               ("Newton, gpts formulation", ["-contact_formulation", "gpts"])]
@@ -135,6 +141,56 @@ def measure_solver(repeat=3):
                 its[name] = summ["iterations"]
     save("solver", [dict(strategy=name, options=" ".join(opts), iterations=its[name],
                          solve=median(times[name]), runs=times[name]) for name, opts in STRATEGIES])
+
+
+# (h, k_p, ranks) of the L-BFGS table; k_p None: the scene's 2e6
+LMVM_CASES = [(0.06, None, 1), (0.03, None, 1), (0.015, None, 1), (0.015, None, 2), (0.03, 2e7, 1), (0.03, 1e8, 1)]
+LMVM_TYPES = ["nls", "lmvm", "blmvm"]
+
+
+def measure_lmvm(repeat=3):
+    """Newton, lmvm and blmvm on LMVM_CASES, the three interleaved within
+    each case, median of repeat solve times (meshes made first)."""
+    from contactrun import median, mesh_only, run_case
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for h, kp, ranks in LMVM_CASES:
+            args = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", str(h)] + \
+                (["-contact_penalty", f"{kp:g}"] if kp else [])
+            mesh_only(args)
+            runs = {t: [] for t in LMVM_TYPES}
+            for _ in range(repeat):
+                for t in LMVM_TYPES:
+                    r = run_case(args + ["-tao_type", t], tmp, "s", ranks=ranks, h5=False)
+                    if r.returncode != 0:
+                        raise SystemExit(f"{' '.join(r.cmd)} failed:\n{r.stdout[-2000:]}{r.stderr[-2000:]}")
+                    runs[t].append(r.summary)
+            for t in LMVM_TYPES:
+                s = runs[t][-1]
+                rows.append(dict(h=h, kp=kp or 2e6, ranks=ranks, tao=t, dofs=s["dofs"], iterations=s["iterations"],
+                                 evaluations=s["function_evaluations"], stages=s["stages"],
+                                 h0=s.get("h0_refreshes", 0), dropped=s.get("lmvm_pairs_dropped", 0),
+                                 restarts=s.get("lmvm_restarts", 0), P=s["contact_force"],
+                                 solve=median([x["time"]["solve"] for x in runs[t]]),
+                                 runs=[x["time"]["solve"] for x in runs[t]],
+                                 command="bin/contact " + " ".join(args + ["-tao_type", t])))
+    save("lmvm", rows)
+
+
+def render_lmvm():
+    rows = load("lmvm")
+    newton = {(r["h"], r["kp"], r["ranks"]): r for r in rows if r["tao"] == "nls"}
+    out = ["| h | dofs | k_p | ranks | solver | iterations | energy evaluations | H0 set-ups | pairs dropped "
+           "| solve [s] | / Newton | P from Newton's |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        n = newton[(r["h"], r["kp"], r["ranks"])]
+        lm = r["tao"] != "nls"
+        dP = f"{abs(r['P'] / n['P'] - 1):.1e}" if lm else ""
+        kp = f"{r['kp']:.0e}".replace("e+0", "e")
+        out.append(f"| {r['h']:g} | {r['dofs']:,} | {kp} | {r['ranks']} | {r['tao']} | {r['iterations']} "
+                   f"| {r['evaluations']} | {r['h0'] if lm else ''} | {r['dropped'] if lm else ''} "
+                   f"| {r['solve']:.2f} | {r['solve'] / n['solve']:.2f} | {dP} |")
+    return "\n".join(out) + "\n"
 
 
 def render_solver():
@@ -269,7 +325,8 @@ def render_axisymmetric():
     return "\n".join(out) + "\n"
 
 
-RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations, "solver": render_solver,
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations,
+          "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty}
@@ -320,12 +377,14 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "picture", "axisymmetric"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric"], action="append", default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
     if "solver" in args.measure:
         measure_solver()
+    if "lmvm" in args.measure:
+        measure_lmvm()
     if "picture" in args.measure:
         measure_picture()
     if "axisymmetric" in args.measure:

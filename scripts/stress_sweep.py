@@ -5,13 +5,15 @@ with one line naming why.
 
     python3 scripts/stress_sweep.py [--out bench/stress] [--resume]
                                     [--h 0.25 0.1] [--ranks 1] [--formulation mortar]
+                                    [--tao-type lmvm]
 
 The scene is the mirrored half of the reference scene
 (meshes/hertz-half/hertz-half.opts: the same problem as meshes/hertz at half
 the dofs, its contact force that of the whole model), at
 h in {0.25, 0.1, 0.03, 0.01, 0.005} x k_p in {1e3, 1e6, 1e10} x push in
 {0.01, 0.15, 0.3}, gpts and mortar, 1 and 2 ranks: 180 runs, one at a time,
-Newton with the program's defaults, `-tao_monitor`, `-output none`. About
+Newton with the program's defaults (--tao-type: another TAO type, at its
+defaults), `-tao_monitor`, `-output none`. About
 30 minutes on 2 cores, two thirds of it at h = 0.005 (905,296 dofs; the whole
 scene would have 1.8 million, and its slowest case, gpts at k_p = 1e10 and
 push 0.3, took 320 s alone).
@@ -55,9 +57,13 @@ def key(r):
     return (r["h"], r["kp"], r["push"], r["formulation"], r["ranks"])
 
 
+TAO_TYPE = "nls"     # --tao-type
+
+
 def args_of(h, kp, push, form):
     return ["-options_file", SCENE, "-mesh_size", f"{h:g}", "-contact_penalty", f"{kp:g}",
-            "-block_bc_push_values", f"{-push:g},0", "-contact_formulation", form, "-tao_monitor"]
+            "-block_bc_push_values", f"{-push:g},0", "-contact_formulation", form, "-tao_monitor"] \
+        + (["-tao_type", TAO_TYPE] if TAO_TYPE != "nls" else [])
 
 
 def log_name(r):
@@ -133,6 +139,7 @@ def sweep(out, hs, ranks, forms, resume):
             os.remove(os.path.join(out, "stopped", name))
     done = {key(r) for r in res["runs"]}
     res.setdefault("started", datetime.datetime.now().isoformat(timespec="seconds"))
+    res.setdefault("tao_type", TAO_TYPE)
     res.setdefault("load_start", load_average())
     res.setdefault("nice", os.nice(0))
     res.setdefault("commit", git("rev-parse", "--short", "HEAD")
@@ -225,10 +232,12 @@ def tables(res):
     agree = {(a["h"], a["kp"], a["push"], a["formulation"]): a["rel"] for a in res["rank_agreement"]}
     ok = sum(r["converged"] for r in runs)
     dofs = {r["h"]: r["dofs"] for r in runs if "dofs" in r}
-    out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), Newton with "
+    tao = res.get("tao_type", "nls")
+    solver = "Newton" if tao == "nls" else f"TAO {tao}"
+    out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), {solver} with "
            f"the defaults, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
            "2-core machine: "
-           f"{ok} of {len(runs)} runs converged. Iterations: Newton iterations at 1 rank (gpts / mortar); "
+           f"{ok} of {len(runs)} runs converged. Iterations: {solver} iterations at 1 rank (gpts / mortar); "
            "converged: every run of the row at that rank count (both formulations); |dP|/P: the largest relative "
            f"difference of P between 1 and 2 ranks over the two formulations (target {RANK_TOL:g}); solve: the "
            "largest solve time of the row's four runs.", "",
@@ -287,7 +296,10 @@ def main():
     ap.add_argument("--h", type=float, nargs="+", default=HS, help="a subset of the mesh sizes")
     ap.add_argument("--ranks", type=int, nargs="+", default=RANKS, choices=RANKS)
     ap.add_argument("--formulation", nargs="+", default=FORMULATIONS, choices=FORMULATIONS)
+    ap.add_argument("--tao-type", default="nls", help="the TAO type of every run (default nls, the program's)")
     args = ap.parse_args()
+    global TAO_TYPE
+    TAO_TYPE = args.tao_type
     bad = [h for h in args.h if h not in HS]
     if bad:
         raise SystemExit(f"--h: {bad} not among the sweep's sizes {HS}")
@@ -295,7 +307,8 @@ def main():
     res = sweep(args.out, args.h, args.ranks, args.formulation, args.resume)
     text = tables(res)
     with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
-        f.write("# Robustness sweep\n\nWritten by `python3 scripts/stress_sweep.py` (`make stress`), "
+        f.write(f"# Robustness sweep\n\nWritten by `python3 scripts/stress_sweep.py {' '.join(sys.argv[1:])}` "
+                f"(`make stress` runs it with nls), TAO type {TAO_TYPE}, "
                 f"started {res['started']} at commit {res['commit']}; load average {res['load_start']:.2f} at the "
                 f"start, {res['load_end']:.2f} at the end.\n\n" + text + "\nEvery run:\n\n" + every_run(res))
     print(text)

@@ -2,7 +2,17 @@
 default for lmvm and blmvm): it reaches Newton's answer, refreshes H0 as
 often as it says, and the elastic H0 and the refresh period remain options.
 The references are Newton's runs of the same scene, both solved to
--tao_gttol 1e-12 so that neither stop adds to the difference."""
+-tao_gttol 1e-12 so that neither stop adds to the difference.
+
+Then the robustness sweep's cheap cases (those of test_robustness.py: the
+half scene at k_p = 1e10 and 1e3, push 0.3, gpts and mortar) with lmvm and
+blmvm at their defaults, and lmvm on 2 ranks: each converges, its force
+balances the reaction within what its own gradient allows, and its P is
+Newton's to 1e-8, the criterion of "the same answer" that test_robustness
+applies to Newton's 1 and 2 ranks (measured 1.2e-10 to 2.5e-9 here, 1 against
+2 ranks 0 to 1.6e-9)."""
+import math
+
 import numpy as np
 import pytest
 
@@ -19,22 +29,67 @@ def newton(tmp_path_factory):
 
 @pytest.mark.parametrize("tao", ["lmvm", "blmvm"])
 def test_lmvm_reaches_newton(tao, newton, tmp_path):
-    """P and the energy to Newton's: measured 8.3e-13 and 3.3e-16 = 1.5 EPS
-    (lmvm and blmvm alike), bounds 3e-12 and 10 EPS (the quasi-Newton
-    iteration converges linearly, so it stops nearer its tolerance than
-    Newton's last quadratic step);
+    """P and the energy to Newton's: measured 1.85e-12 and 6.7e-16 = 3 EPS
+    (lmvm and blmvm alike, with their default continuation; 8.3e-13 in one
+    stage), bounds 1e-11 = 10 gttol and 10 EPS (the quasi-Newton iteration
+    converges linearly, so it stops just below its tolerance, where Newton's
+    last quadratic step lands far below it);
     H0 set up once and then at every iteration (-lmvm_h0_refresh 1), so
     h0_refreshes equals the iterations."""
     s = run_contact(HERTZ + ["-tao_type", tao], tmp_path).summary
     dP = abs(s["contact_force"] / newton["contact_force"] - 1)
     dE = abs(s["energy"] / newton["energy"] - 1)
     print(f"{tao}: {s['iterations']} iterations, {s['h0_refreshes']} H0 set-ups; P {dP:.2e}, energy {dE:.2e}")
-    assert dP <= 3e-12 and dE <= 10 * EPS
+    assert dP <= 1e-11 and dE <= 10 * EPS
     assert s["h0_refreshes"] == s["iterations"]
 
 
 def test_lmvm_refresh_period(tmp_path):
     """-lmvm_h0_refresh 3: H0 set up once, then at iterations 3, 6, ...:
-    1 + floor((iterations - 1) / 3) set-ups."""
-    s = run_contact(HERTZ + ["-tao_type", "lmvm", "-lmvm_h0_refresh", "3"], tmp_path).summary
+    1 + floor((iterations - 1) / 3) set-ups (one stage: no continuation)."""
+    s = run_contact(HERTZ + ["-tao_type", "lmvm", "-lmvm_h0_refresh", "3", "-penalty_stages", "1"], tmp_path).summary
     assert s["h0_refreshes"] == 1 + (s["iterations"] - 1) // 3, (s["iterations"], s["h0_refreshes"])
+
+
+HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts", "-block_bc_push_values", "-0.3,0", "-output", "none"]
+CASES = [(0.25, 1e10, "gpts"), (0.25, 1e10, "mortar"), (0.1, 1e10, "gpts"), (0.1, 1e10, "mortar"),
+         (0.1, 1e3, "gpts"), (0.1, 1e3, "mortar")]
+
+
+def _case_args(h, kp, formulation):
+    return HALF + ["-mesh_size", h, "-contact_penalty", f"{kp:g}", "-contact_formulation", formulation]
+
+
+@pytest.fixture(scope="module")
+def newton_cases(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("newton-cases")
+    return {c: run_contact(_case_args(*c), tmp, name=f"{c[0]}-{c[1]:g}-{c[2]}").summary for c in CASES}
+
+
+@pytest.mark.parametrize("tao,ranks", [("lmvm", 1), ("blmvm", 1), ("lmvm", 2),
+                                       pytest.param("blmvm", 2, marks=pytest.mark.stress)])
+@pytest.mark.parametrize("case", CASES, ids=[f"h{c[0]}-kp{c[1]:g}-{c[2]}" for c in CASES])
+def test_lmvm_robust(case, tao, ranks, newton_cases, tmp_path):
+    s = run_contact(_case_args(*case) + ["-tao_type", tao], tmp_path, ranks=ranks).summary  # exit 0: converged
+    ref = newton_cases[case]
+    f = s["contact"]["interface"]["force"][0]
+    reaction = s["reactions"]["block:push"][0]
+    bound = math.sqrt(s["dofs"]) * s["gradient_norm"] + 1000 * EPS * abs(reaction)
+    dP = abs(s["contact_force"] / ref["contact_force"] - 1)
+    print(f"{tao} on {ranks}: {s['iterations']} iterations ({s['stages']} stages, {s['h0_refreshes']} H0 set-ups, "
+          f"{s['lmvm_pairs_dropped']} pairs dropped, {s['lmvm_restarts']} restarts; Newton {ref['iterations']}); "
+          f"P {s['contact_force']:.12g}, {dP:.1e} from Newton's; imbalance {abs(abs(f) - abs(reaction)) / bound:.2e} of its bound")
+    assert abs(abs(f) - abs(reaction)) <= bound   # the balance test_robustness asserts, from the run's own gradient
+    assert dP <= 1e-8
+
+
+def test_lmvm_ranks(tmp_path):
+    """The reference scene at h = 0.06 on 1 and 2 ranks: the same P to 1e-8
+    (measured 2e-12 at h = 0.015) and iteration counts within 10 % (the
+    issue's criteria; measured equal)."""
+    args = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", 0.06, "-output", "none", "-tao_type", "lmvm"]
+    s = {n: run_contact(args, tmp_path, ranks=n, name=f"np{n}").summary for n in (1, 2)}
+    dP = abs(s[2]["contact_force"] / s[1]["contact_force"] - 1)
+    print(f"iterations {s[1]['iterations']} and {s[2]['iterations']}; P {dP:.1e} apart")
+    assert dP <= 1e-8
+    assert abs(s[2]["iterations"] - s[1]["iterations"]) <= 0.1 * s[1]["iterations"]

@@ -10,6 +10,7 @@
 #include "options.h"
 #include "substructure.h"
 #include "iterative.h"
+#include "lmvm.h"
 
 const char *const H0Types[] = {"none", "elastic", "contact", "H0Type", "H0_", NULL};
 const char *const SchurTypes[] = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
@@ -26,6 +27,8 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.partitioner = PARTITION_METIS;
   p->opt.h0          = H0_CONTACT;
   p->opt.h0Refresh   = 1;
+  p->opt.pairRatio   = 10.0;
+  p->opt.lmvmRestarts = 50;
   p->opt.taylorScale = 1e-4;
   p->opt.loadSteps     = 1;
   p->opt.maxCutbacks   = 4;
@@ -154,6 +157,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->opt.partitionView, &p->opt.partitionView, NULL));
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->opt.h0, (PetscEnum *)&p->opt.h0, NULL));
   PetscCall(PetscOptionsInt("-lmvm_h0_refresh", "-lmvm_h0 contact: recompute the contact part of H0 every this many iterations", NULL, p->opt.h0Refresh, &p->opt.h0Refresh, NULL));
+  PetscCall(PetscOptionsInt("-lmvm_restarts", "-lmvm_h0 contact: restart an L-BFGS solve whose line search failed after it lowered the energy, with an empty history, at most this many times", NULL, p->opt.lmvmRestarts, &p->opt.lmvmRestarts, NULL));
+  PetscCall(PetscOptionsReal("-lmvm_pair_ratio", "-lmvm_h0 contact: drop an L-BFGS correction pair whose curvature y's/s'H0s is not within this factor of H0's (where contact opened or closed along the step; 1e300: keep every pair)", NULL, p->opt.pairRatio, &p->opt.pairRatio, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->opt.taylor, &p->opt.taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->opt.taylorScale, &p->opt.taylorScale, NULL));
   PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->opt.iterative, &p->opt.iterative, NULL));
@@ -161,8 +166,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
   PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
-  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
-  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
+  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
+  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
   PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves of its outer iteration on the controlled displacements", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
@@ -179,6 +184,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
   PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
   PetscCheck(p->opt.h0Refresh >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, p->opt.h0Refresh);
+  PetscCheck(p->opt.lmvmRestarts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, p->opt.lmvmRestarts);
+  PetscCheck(p->opt.pairRatio >= 1 && !PetscIsInfOrNanReal(p->opt.pairRatio), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_pair_ratio: must be a finite number >= 1, got %g", (double)p->opt.pairRatio);
   PetscCheck(p->opt.controlMaxIt >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.controlMaxIt);
   PetscCheck(p->opt.controlRtol > 0 && p->opt.controlRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)p->opt.controlRtol);
   PetscCall(ProblemCheckSolverOptions(p));
@@ -614,7 +621,7 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
 }
 
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
-static PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
+PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(p, X));
@@ -642,7 +649,7 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
 
 /* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
    MUMPS's LDL^T for a matrix that may be indefinite. */
-static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
+PetscErrorCode ContactPCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
 {
   PetscMPIInt size;
 
@@ -650,73 +657,6 @@ static PetscErrorCode PCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(PCSetType(pc, PCCHOLESKY));
   PetscCall(PCFactorSetMatSolverType(pc, size > 1 || indefinite ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
-  PetscFunctionReturn(0);
-}
-
-/* LMVM with the elastic stiffness of the bodies as initial Hessian H0: each
-   iteration applies H0^-1 (factorised once, -h0_pc_type to change) before the
-   quasi-Newton update, so that L-BFGS only has to learn the contact terms. */
-/* -lmvm_h0 contact: H0 = K + C(X), C the contact's Gauss-Newton Hessian
-   (positive semi-definite, so H0 stays SPD whatever -contact_hessian says),
-   into p->H, whose factorisation the H0 KSP's preconditioner (the Newton
-   step's Schur complement) redoes when the matrix changes: only the dense
-   contact block, K's condensation is kept. */
-static PetscErrorCode ProblemComputeH0(Problem p, Vec X)
-{
-  PetscFunctionBeginUser;
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], PETSC_FALSE));
-  PetscCall(ProblemAssembleHessian(p, X, p->H));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], p->exactHessian));
-  p->res.h0Refreshes++;
-  PetscFunctionReturn(0);
-}
-
-/* TAO's update at each iteration: every -lmvm_h0_refresh iterations, H0 at
-   the current iterate. */
-static PetscErrorCode ProblemRefreshH0(Tao tao, PetscInt it, void *ctx)
-{
-  Problem p = (Problem)ctx;
-  Vec     X;
-
-  PetscFunctionBeginUser;
-  if (it == 0 || it % p->opt.h0Refresh) PetscFunctionReturn(0);
-  PetscCall(TaoGetSolution(tao, &X));
-  PetscCall(ProblemComputeH0(p, X));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
-{
-  PetscBool lmvm, blmvm;
-  KSP       ksp;
-  PC        pc;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
-  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
-  if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
-  if (p->opt.h0 == H0_CONTACT && p->nterms) {
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(p->comm, &size));
-    PetscCall(ProblemComputeH0(p, p->X));
-    PetscCall(TaoLMVMSetH0(p->tao, p->H));
-    PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
-    PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(KSPGetPC(ksp, &pc));
-    if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(p, pc));
-    else PetscCall(ContactSubstructurePCSetUp(p, pc));
-    PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
-    PetscCall(KSPSetFromOptions(ksp));
-    PetscCall(TaoSetUpdate(p->tao, ProblemRefreshH0, p));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(TaoLMVMSetH0(p->tao, p->K));
-  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetCholesky(pc, p->comm, PETSC_FALSE));
-  PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
-  PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
 
@@ -753,7 +693,7 @@ static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
     if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
     else if (p->opt.schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
-  } else PetscCall(PCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscFunctionReturn(0);
 }
 
@@ -783,18 +723,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
     PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
     PetscCall(TaoSetHessian(p->tao, p->H, p->H, ProblemComputeHessian, p));
   }
-  if ((!strcmp(type, TAOLMVM) || !strcmp(type, TAOBLMVM)) && p->opt.h0 == H0_CONTACT && p->nterms) {
-    /* H0 is the Hessian but for the contact's second-order term since the
-       last refresh: one correction pair is what pays (measured at h = 0.03:
-       27 iterations with 1, 42 with 2, 58 with TAO's 5). The default of
-       -tao_lmvm_mat_lmvm_hist_size, which TAO reads (its LMVM matrix has no
-       setter through Tao in 3.18); the user's value wins. */
-    char      name[64];
-    PetscBool given;
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-tao_%s_mat_lmvm_hist_size", type));
-    PetscCall(PetscOptionsHasName(NULL, NULL, name, &given));
-    if (!given) PetscCall(PetscOptionsSetValue(NULL, name, "1"));
-  }
+  PetscCall(ProblemSetLMVMDefaults(p, type));
   PetscCall(TaoSetFromOptions(p->tao));
   if (ContactProgressEnabled()) PetscCall(TaoSetMonitor(p->tao, ContactProgressTaoMonitor, NULL, NULL));
   if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
@@ -885,8 +814,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     PetscCall(ProblemSetStage(p, load, penalty));
     if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
-    PetscCall(TaoSolve(p->tao));
-    PetscCall(TaoGetSolutionStatus(p->tao, &n, NULL, NULL, NULL, NULL, reason));
+    PetscCall(ProblemTaoSolve(p, &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
     *its += n;
     p->res.stagesDone++;
@@ -925,8 +853,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
       PetscCall(VecCopy(p->X0, p->X));
       PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     }
-    PetscCall(TaoSolve(p->tao));
-    PetscCall(TaoGetSolutionStatus(p->tao, its, NULL, NULL, NULL, NULL, reason));
+    PetscCall(ProblemTaoSolve(p, its, reason));
     p->res.stagesDone = 1;
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
@@ -1129,6 +1056,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermDestroy(&p->terms[t]));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
+  PetscCall(ProblemLMVMDestroy(p));
   PetscCall(MatDestroy(&p->H));
   PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(SubdomainDestroy(&p->sub));

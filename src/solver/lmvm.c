@@ -1,0 +1,250 @@
+/* L-BFGS (TAO's lmvm and blmvm): the initial Hessian H0 and the screening of
+   the correction pairs.
+
+   L-BFGS applies to the gradient g the inverse of B, the BFGS update of H0 by
+   its correction pairs (s, y) = (x_k - x_{k-1}, g_k - g_{k-1}):
+       B^-1 = V^T H0^-1 V + s s^T / (y^T s),   V = I - y s^T / (y^T s)
+   (one pair; TAO's two-loop recursion nests more).
+
+   -lmvm_h0 contact (the default): H0 = K + C(x), K the elastic stiffness, C
+   the contact's Gauss-Newton Hessian at the current iterate (positive
+   semi-definite, so H0 stays SPD whatever -contact_hessian says). H0^-1 is
+   the Newton step's Schur-complement solve (schur.c, substructure.c): K is
+   condensed once, each set-up of H0 redoes only the dense contact block.
+   H0 is set up at the first iterate of every TAO solve and then every
+   -lmvm_h0_refresh iterations (the JSON's h0_refreshes counts them). What
+   H0 leaves out is the second-order term of the gap (the tangential,
+   sliding modes) and, between set-ups, the change of C; one pair, the
+   default history, is what learns it (at h = 0.03: 27 iterations with 1,
+   42 with 2, 58 with TAO's 5).
+   -lmvm_h0 elastic: H0 = K, factorised once (-h0_pc_type to change).
+
+   Screening. Along s the energy's mean curvature is y^T s / s^T s; H0's is
+   s^T H0 s / s^T s. Where the active set is the same at both ends of s the
+   two differ by the second-order term and the change of C, and their ratio
+       r = y^T s / s^T H0 s
+   is near 1. Where contact points opened or closed along s, y holds the
+   penalty stiffness k_p of points that H0 (built at x_k) has not, or lacks
+   that of points it has: at k_p / E = 1e7 r reaches 1e4 or 1e-4, and the
+   update then bends B^-1 along s by that factor, a step 1e4 times too long
+   or short, which the line search cannot repair in its 30 evaluations. So
+   a pair with r outside [1/R, R] (R = -lmvm_pair_ratio) is dropped (the
+   LMVM matrix's history reset: the step is then H0's, the Gauss-Newton step
+   at x_k), and the next pair, on one side of the kinks, starts it anew.
+   TAO's own test (y^T s > eps s^T s) only rejects pairs of negative
+   curvature. Measured on the half scene at k_p = 1e10, push 0.3 (gpts and
+   mortar, h = 0.25 and 0.1, no continuation): 67, 56, 127 and 80 iterations
+   with R = 10 (the default), 135, 58, 236 and 215 keeping every pair, 89 to
+   198 with R = 100; at the reference scene (h = 0.03) it drops one pair and
+   costs 4 iterations of 27.
+
+   The line search. Where a step closes contact at a stiff penalty the energy
+   along it rises by the penalty's factor past the kink (f(1) = 1e8 f(0) on the
+   first step from rest at k_p = 1e10); More-Thuente's cubic steps then creep
+   up on the kink from both sides and use TAO's 30 evaluations before they
+   reach it. 100 evaluations (-tao_ls_max_funcs, the default here) let it
+   converge on every case of the robustness sweep where 30 stopped 3 of the 4
+   at k_p = 1e10.
+
+   Restarts. When its line search fails, TAO 3.18's lmvm means to retry along
+   the H0 step with an empty history but passes the wrong vectors to its solve
+   (the iterate as right-hand side, into the gradient), so every failure ends
+   the solve; blmvm's retry is right. A solve that stopped so after lowering
+   the energy is restarted from where it stopped (an empty history, H0 at that
+   iterate, the same stopping test) at most -lmvm_restarts times.
+
+   Continuation. The active set moves the most in the first iterations, where
+   every pair straddles kinks; at a soft penalty those kinks are mild. Where
+   neither the user nor the scene chose a continuation, lmvm and blmvm solve
+   in 3 penalty stages from 1e-3 k_p (a factor of 32 a stage, as the automatic
+   penalty's 2 stages from 0.03): at h = 0.03 and k_p = 2e6 12 iterations
+   against 31 in one stage, at k_p = 1e8 14 against 96.
+
+   The stopping test: -tao_gttol 1e-10 (Newton's is 1e-8). L-BFGS converges
+   linearly, so it stops just below its tolerance, where Newton's last,
+   quadratic, step lands far below it: at 1e-8 the contact force P was 2e-7
+   to 2e-6 from Newton's (to 1e-12) at h = 0.03; at 1e-10 6e-11 there, for 2
+   more iterations, and 2.1e-8 at h = 0.015 (1e-11: 8.5e-10, 2 iterations
+   more; but at k_p = 1e10 1e-11 is below the gradient's round-off, where
+   the mortar half scene at h = 0.25 stops and h = 0.1 takes 380 iterations
+   instead of 70). */
+#include <petsc/private/taoimpl.h>
+#include "lmvm.h"
+#include "schur.h"
+#include "substructure.h"
+
+/* H0 = K + C(X) into p->H, whose factorisation the H0 KSP's preconditioner
+   redoes when the matrix changes. */
+static PetscErrorCode ProblemComputeH0(Problem p, Vec X)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], PETSC_FALSE));
+  PetscCall(ProblemAssembleHessian(p, X, p->H));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetHessianExact(p->terms[t], p->exactHessian));
+  p->res.h0Refreshes++;
+  PetscFunctionReturn(0);
+}
+
+/* The LMVM matrix of TAO's lmvm or blmvm. PETSc 3.18 has no getter for it
+   (TaoGetLMVMMatrix serves the bqnk types only); both TAO_LMVM and TAO_BLMVM
+   hold it as their first member. */
+static PetscErrorCode TaoLMVMGetMatrix(Tao tao, Mat *M)
+{
+  PetscBool lmvm;
+
+  PetscFunctionBeginUser;
+  *M = *(Mat *)tao->data;
+  PetscCall(PetscObjectBaseTypeCompare((PetscObject)*M, MATLMVM, &lmvm));
+  PetscCheck(lmvm, PetscObjectComm((PetscObject)tao), PETSC_ERR_LIB, "TAO %s: its first member is not the LMVM matrix in this PETSc version", ((PetscObject)tao)->type_name);
+  PetscFunctionReturn(0);
+}
+
+/* The pair (s, y) from the last iterate to X, G: dropped (the history reset)
+   if r = y^T s / s^T H0 s is outside [1/R, R]. */
+static PetscErrorCode ProblemScreenPair(Problem p, Tao tao, Vec X, Vec G)
+{
+  PetscScalar ys, sHs;
+  PetscReal   r;
+  Mat         M;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecAYPX(p->lmvmX, -1.0, X)); /* s */
+  PetscCall(VecAYPX(p->lmvmG, -1.0, G)); /* y */
+  PetscCall(MatMult(p->H, p->lmvmX, p->lmvmW));
+  PetscCall(VecDotBegin(p->lmvmG, p->lmvmX, &ys));
+  PetscCall(VecDotBegin(p->lmvmW, p->lmvmX, &sHs));
+  PetscCall(VecDotEnd(p->lmvmG, p->lmvmX, &ys));
+  PetscCall(VecDotEnd(p->lmvmW, p->lmvmX, &sHs));
+  r = PetscRealPart(sHs) > 0 ? PetscRealPart(ys) / PetscRealPart(sHs) : 1.0;
+  PetscCall(PetscInfo(tao, "L-BFGS pair: y^T s / s^T H0 s = %g\n", (double)r));
+  if (r * p->opt.pairRatio >= 1.0 && r <= p->opt.pairRatio) PetscFunctionReturn(0);
+  PetscCall(TaoLMVMGetMatrix(tao, &M));
+  PetscCall(MatLMVMReset(M, PETSC_FALSE));
+  p->res.pairsDropped++;
+  PetscFunctionReturn(0);
+}
+
+/* TAO's update at the start of each iteration, before the LMVM matrix takes
+   its pair: H0 at the current iterate (at the first iterate of a solve, then
+   every -lmvm_h0_refresh iterations), then the pair screened against it. */
+static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
+{
+  Problem p = (Problem)ctx;
+  Vec     X, G;
+
+  PetscFunctionBeginUser;
+  PetscCall(TaoGetSolution(tao, &X));
+  PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
+  if (it % p->opt.h0Refresh == 0) PetscCall(ProblemComputeH0(p, X));
+  if (it == 0) { /* TAO starts the solve with an empty history */
+    p->lmvmHave = PETSC_FALSE;
+    PetscCall(TaoGetSolutionStatus(tao, NULL, &p->lmvmF0, &p->lmvmG0, NULL, NULL, NULL));
+  }
+  if (p->lmvmHave) PetscCall(ProblemScreenPair(p, tao, X, G));
+  PetscCall(VecCopy(X, p->lmvmX));
+  PetscCall(VecCopy(G, p->lmvmG));
+  p->lmvmHave = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal gatol, grtol, gttol, g0 = -1.0, f;
+  PetscInt  maxit, n;
+
+  PetscFunctionBeginUser;
+  PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
+  PetscCall(TaoGetMaximumIterations(p->tao, &maxit));
+  *its = 0;
+  for (PetscInt r = 0;; ++r) {
+    PetscReal f0;
+    PetscCall(TaoSolve(p->tao));
+    PetscCall(TaoGetSolutionStatus(p->tao, &n, &f, NULL, NULL, NULL, reason));
+    *its += n;
+    if (g0 < 0) g0 = p->lmvmG0;
+    f0 = p->lmvmF0;
+    if (!p->lmvmX || *reason != TAO_DIVERGED_LS_FAILURE || r >= p->opt.lmvmRestarts || !(f < f0) || *its >= maxit) break;
+    /* the restart stops where the first solve would have: its gradient tolerances relative to the first iterate's */
+    PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
+    PetscCall(TaoSetMaximumIterations(p->tao, maxit - *its));
+    PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed after %" PetscInt_FMT " iterations (energy %g, was %g): restarted with an empty history\n", n, (double)f, (double)f0));
+    p->res.lmvmRestarts++;
+  }
+  PetscCall(TaoSetTolerances(p->tao, gatol, grtol, gttol));
+  PetscCall(TaoSetMaximumIterations(p->tao, maxit));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
+{
+  char      name[64];
+  PetscBool given;
+
+  PetscFunctionBeginUser;
+  if (!((!strcmp(type, TAOLMVM) || !strcmp(type, TAOBLMVM)) && p->opt.h0 == H0_CONTACT && p->nterms)) PetscFunctionReturn(0);
+  /* -lmvm_h0 contact: one correction pair (see the derivation). The default
+     of -tao_lmvm_mat_lmvm_hist_size, which TAO reads (its LMVM matrix has no
+     setter through Tao in 3.18); the user's value wins. */
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-tao_%s_mat_lmvm_hist_size", type));
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &given));
+  if (!given) PetscCall(PetscOptionsSetValue(NULL, name, "1"));
+  /* a tighter stop than Newton's 1e-8: L-BFGS converges linearly, so it stops
+     near its tolerance, where Newton's last step lands far below it */
+  PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-10));
+  /* penalty continuation where the user and the scene chose none */
+  if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) {
+    p->opt.penaltyStages = 3;
+    p->opt.penaltyStart  = 1e-3;
+  }
+  /* the line search's evaluations: 100, not TAO's 30 (see the derivation) */
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_ls_max_funcs", &given));
+  if (!given) PetscCall(PetscOptionsSetValue(NULL, "-tao_ls_max_funcs", "100"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
+{
+  PetscBool lmvm, blmvm;
+  KSP       ksp;
+  PC        pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
+  if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
+  if (p->opt.h0 == H0_CONTACT && p->nterms) {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(p->comm, &size));
+    PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
+    PetscCall(TaoLMVMSetH0(p->tao, p->H));
+    PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(p, pc));
+    else PetscCall(ContactSubstructurePCSetUp(p, pc));
+    PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
+    PetscCall(KSPSetFromOptions(ksp));
+    PetscCall(VecDuplicate(p->X, &p->lmvmX));
+    PetscCall(VecDuplicate(p->X, &p->lmvmG));
+    PetscCall(VecDuplicate(p->X, &p->lmvmW));
+    PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, p));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(TaoLMVMSetH0(p->tao, p->K));
+  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
+  PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemLMVMDestroy(Problem p)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&p->lmvmX));
+  PetscCall(VecDestroy(&p->lmvmG));
+  PetscCall(VecDestroy(&p->lmvmW));
+  PetscFunctionReturn(0);
+}
