@@ -12,7 +12,6 @@ typedef struct {
   PetscReal values[2];
   PetscBool control[2]; /* component c (of comps) is force-controlled */
   PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
-  PetscBool axis;       /* u_r = 0 on the axis, in axisymmetry (axis.c) */
   PetscReal force[2];   /* its force: the reaction it must have */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
@@ -99,6 +98,11 @@ PetscErrorCode BodyDestroy(Body *);
 PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
 /* This rank's vertices' coordinates, [v - vStart][2] (PetscFree); before the section exists too. */
 PetscErrorCode BodyVertexCoordinates(Body, PetscReal **xy);
+/* Collective: the bounding box lo, hi of every rank's points xy[n][2]. */
+PetscErrorCode BodyPointsBox(Body, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2]);
+/* The first Dirichlet condition whose label holds component c at point p:
+   its index i and the index k of c among its components (-1, -1: none). */
+PetscErrorCode BodyBCHolding(Body, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k);
 PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[]);
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);

@@ -18,40 +18,6 @@
    condition holds at a vertex is not anchored there. */
 #include "body.h"
 
-/* The vertices of this rank: their points and coordinates (PetscFree2). */
-static PetscErrorCode Vertices(Body b, PetscInt *n, PetscInt **pts, PetscReal **xy)
-{
-  PetscInt   vs, ve;
-  PetscReal *x;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
-  PetscCall(BodyVertexCoordinates(b, &x));
-  *n = ve - vs;
-  PetscCall(PetscMalloc2(*n + 1, pts, 2 * (*n) + 2, xy));
-  for (PetscInt v = vs; v < ve; ++v) {
-    (*pts)[v - vs]          = v;
-    (*xy)[2 * (v - vs)]     = x[2 * (v - vs)];
-    (*xy)[2 * (v - vs) + 1] = x[2 * (v - vs) + 1];
-  }
-  PetscCall(PetscFree(x));
-  PetscFunctionReturn(0);
-}
-
-/* Whether component c of vertex v is held by a Dirichlet condition. */
-static PetscErrorCode Constrained(Body b, PetscInt v, PetscInt c, PetscBool *held)
-{
-  PetscFunctionBeginUser;
-  *held = PETSC_FALSE;
-  for (PetscInt i = 0; i < b->nbc && !*held; ++i) {
-    PetscInt val;
-    PetscCall(DMLabelGetValue(b->bc[i].label, v, &val));
-    for (PetscInt j = 0; j < b->bc[i].ncomp && val == 1; ++j)
-      if (b->bc[i].comps[j] == c) *held = PETSC_TRUE;
-  }
-  PetscFunctionReturn(0);
-}
-
 /* Whether vertex v is on an edge of a loaded group (faces: the mesh's
    "Face Sets", tags: the loaded groups' physical tags). */
 static PetscErrorCode Loaded(Body b, DMLabel faces, const PetscInt tags[], PetscInt v, PetscBool *on)
@@ -73,8 +39,9 @@ static PetscErrorCode Loaded(Body b, DMLabel faces, const PetscInt tags[], Petsc
 }
 
 /* The constraint Gram matrix of the body's Dirichlet conditions (over every
-   rank), in coordinates centred at c and scaled by L. */
-static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], const PetscReal xy[], const PetscReal c[2], PetscReal L, PetscReal M[9])
+   rank) at this rank's vertices vs, vs + 1, ... at xy[n][2], in coordinates
+   centred at c and scaled by L. */
+static PetscErrorCode DirichletGram(Body b, PetscInt n, PetscInt vs, const PetscReal xy[], const PetscReal c[2], PetscReal L, PetscReal M[9])
 {
   PetscReal Ml[9] = {0};
 
@@ -82,7 +49,7 @@ static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], co
   for (PetscInt k = 0; k < n; ++k)
     for (PetscInt i = 0; i < b->nbc; ++i) {
       PetscInt val;
-      PetscCall(DMLabelGetValue(b->bc[i].label, pts[k], &val));
+      PetscCall(DMLabelGetValue(b->bc[i].label, vs + k, &val));
       if (val != 1) continue;
       for (PetscInt j = 0; j < b->bc[i].ncomp; ++j) BodyRigidGramAddRow(Ml, b->bc[i].comps[j], (xy[2 * k] - c[0]) / L, (xy[2 * k + 1] - c[1]) / L);
     }
@@ -93,7 +60,7 @@ static PetscErrorCode DirichletGram(Body b, PetscInt n, const PetscInt pts[], co
 
 /* A Dirichlet condition on the one vertex at (x, y) (on every rank that has
    it), components comps, force-controlled with force zero. */
-static PetscErrorCode AddAnchor(Body b, const char name[], PetscInt n, const PetscInt pts[], const PetscReal xy[], const PetscReal at[2], PetscInt ncomp, const PetscInt comps[])
+static PetscErrorCode AddAnchor(Body b, const char name[], PetscInt n, PetscInt vs, const PetscReal xy[], const PetscReal at[2], PetscInt ncomp, const PetscInt comps[])
 {
   BodyBC *bc;
 
@@ -111,33 +78,29 @@ static PetscErrorCode AddAnchor(Body b, const char name[], PetscInt n, const Pet
   PetscCall(DMCreateLabel(b->dm, name));
   PetscCall(DMGetLabel(b->dm, name, &bc->label));
   for (PetscInt k = 0; k < n; ++k)
-    if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) PetscCall(DMLabelSetValue(bc->label, pts[k], 1));
+    if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) PetscCall(DMLabelSetValue(bc->label, vs + k, 1));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BodyAddAnchors(Body b)
 {
-  PetscInt   n = 0, *pts = NULL, rank0, nA = 0, nB = 0, cA[2], cB[2];
-  PetscReal *xy = NULL, lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, c[2], L;
+  PetscInt   n, vs, ve, rank0, nA = 0, nB = 0, cA[2], cB[2];
+  PetscReal *xy = NULL, lo[2], hi[2], c[2], L;
   PetscReal  M[9], A[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, B[3] = {-1.0, 0.0, 0.0};
 
   PetscFunctionBeginUser;
-  PetscCall(Vertices(b, &n, &pts, &xy));
-  for (PetscInt k = 0; k < n; ++k)
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], xy[2 * k + d]);
-      hi[d] = PetscMin(hi[d], -xy[2 * k + d]);
-    }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MIN, b->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MIN, b->comm));
-  c[0] = 0.5 * (lo[0] - hi[0]);
-  c[1] = 0.5 * (lo[1] - hi[1]);
-  L    = PetscMax(-hi[0] - lo[0], -hi[1] - lo[1]);
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+  n = ve - vs;
+  PetscCall(BodyVertexCoordinates(b, &xy));
+  PetscCall(BodyPointsBox(b, n, xy, lo, hi));
+  c[0] = 0.5 * (lo[0] + hi[0]);
+  c[1] = 0.5 * (lo[1] + hi[1]);
+  L    = PetscMax(hi[0] - lo[0], hi[1] - lo[1]);
   if (!(L > 0)) L = 1.0;
-  PetscCall(DirichletGram(b, n, pts, xy, c, L, M));
+  PetscCall(DirichletGram(b, n, vs, xy, c, L, M));
   rank0 = BodyRigidRank(M);
   if (rank0 == 3) {
-    PetscCall(PetscFree2(pts, xy));
+    PetscCall(PetscFree(xy));
     PetscFunctionReturn(0);
   }
   { /* A: the loaded vertex nearest the loaded vertices' centroid (least (x, y) on a tie) */
@@ -149,7 +112,7 @@ PetscErrorCode BodyAddAnchors(Body b)
     for (PetscInt l = 0; l < b->nload; ++l) PetscCall(BodyGetPhysicalTag(b, b->load[l].group, 1, &tags[l]));
     PetscCall(PetscCalloc1(n + 1, &on));
     for (PetscInt k = 0; k < n && faces; ++k) {
-      PetscCall(Loaded(b, faces, tags, pts[k], &on[k]));
+      PetscCall(Loaded(b, faces, tags, vs + k, &on[k]));
       if (!on[k]) continue;
       m[0] += xy[2 * k];
       m[1] += xy[2 * k + 1];
@@ -192,9 +155,9 @@ PetscErrorCode BodyAddAnchors(Body b)
     PetscReal        T[9], held = 0;
     for (PetscInt k = 0; k < n; ++k) /* a component a Dirichlet condition holds there is not an anchor's */
       if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) {
-        PetscBool h;
-        PetscCall(Constrained(b, pts[k], j % 2, &h));
-        if (h) held = 1;
+        PetscInt i, l;
+        PetscCall(BodyBCHolding(b, vs + k, j % 2, &i, &l));
+        if (i >= 0) held = 1;
       }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &held, 1, MPIU_REAL, MPIU_MAX, b->comm));
     if (held > 0) continue;
@@ -205,9 +168,9 @@ PetscErrorCode BodyAddAnchors(Body b)
     if (j < 2) cA[nA++] = j % 2;
     else cB[nB++] = j % 2;
   }
-  if (nA) PetscCall(AddAnchor(b, "anchor_a", n, pts, xy, A, nA, cA));
-  if (nB) PetscCall(AddAnchor(b, "anchor_b", n, pts, xy, &B[1], nB, cB));
+  if (nA) PetscCall(AddAnchor(b, "anchor_a", n, vs, xy, A, nA, cA));
+  if (nB) PetscCall(AddAnchor(b, "anchor_b", n, vs, xy, &B[1], nB, cB));
   PetscCall(PetscInfo(NULL, "body %s: held by contact: %" PetscInt_FMT " rigid motion(s) anchored at (%g, %g)%s\n", b->name, 3 - rank0, (double)A[0], (double)A[1], nB ? " and its farthest vertex" : ""));
-  PetscCall(PetscFree2(pts, xy));
+  PetscCall(PetscFree(xy));
   PetscFunctionReturn(0);
 }

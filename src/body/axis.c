@@ -13,56 +13,20 @@
    node at x < 0 is not in the meridian half-plane: refused. */
 #include "body.h"
 
-/* The body's size and its vertices' least x (over every rank), from this
-   rank's vertices xy[n][2]. */
-static PetscErrorCode AxisExtent(Body b, PetscInt n, const PetscReal xy[], PetscReal *size, PetscReal *xmin)
-{
-  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
-
-  PetscFunctionBeginUser;
-  for (PetscInt v = 0; v < n; ++v)
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], xy[2 * v + d]);
-      hi[d] = PetscMax(hi[d], xy[2 * v + d]);
-    }
-  if (n) lo[2] = -PetscMax(hi[0] - lo[0], hi[1] - lo[1]);
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 3, MPIU_REAL, MPIU_MIN, b->comm));
-  *xmin = lo[0];
-  *size = lo[2] < 0 ? -lo[2] : 1.0;
-  PetscFunctionReturn(0);
-}
-
-/* Whether a scene's Dirichlet condition holds u_r at point p: the
-   condition's index, or -1. */
-static PetscErrorCode AxisHeldBy(Body b, PetscInt p, PetscInt *bc, PetscInt *k)
-{
-  PetscFunctionBeginUser;
-  *bc = *k = -1;
-  for (PetscInt i = 0; i < b->nbc && *bc < 0; ++i) {
-    PetscInt val;
-    PetscCall(DMLabelGetValue(b->bc[i].label, p, &val));
-    for (PetscInt j = 0; j < b->bc[i].ncomp && val == 1; ++j)
-      if (b->bc[i].comps[j] == 0) {
-        *bc = i;
-        *k  = j;
-      }
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode BodyAddAxis(Body b)
 {
   DMLabel   label;
   PetscInt  vs, ve, es, ee, n = 0, gn;
-  PetscReal size = 1.0, xmin = 0.0, *xy;
+  PetscReal lo[2], hi[2], size, *xy;
   BodyBC   *bc;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
   PetscCall(BodyVertexCoordinates(b, &xy));
-  PetscCall(AxisExtent(b, ve - vs, xy, &size, &xmin));
-  b->axisTol = 1e-10 * size;
-  PetscCheck(xmin >= -b->axisTol, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has a vertex at x = %g: under -axisymmetric x is the radius, so a body lies in x >= 0 (its axis at x = 0)", b->name, b->msh, (double)xmin);
+  PetscCall(BodyPointsBox(b, ve - vs, xy, lo, hi));
+  size       = PetscMax(hi[0] - lo[0], hi[1] - lo[1]);
+  b->axisTol = 1e-10 * (size > 0 ? size : 1.0);
+  PetscCheck(lo[0] >= -b->axisTol, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has a vertex at x = %g: under -axisymmetric x is the radius, so a body lies in x >= 0 (its axis at x = 0)", b->name, b->msh, (double)lo[0]);
   PetscCall(DMPlexGetDepthStratum(b->dm, 1, &es, &ee));
   PetscCall(DMCreateLabel(b->dm, "r=0"));
   PetscCall(DMGetLabel(b->dm, "r=0", &label));
@@ -76,7 +40,7 @@ PetscErrorCode BodyAddAxis(Body b)
       for (PetscInt j = 0; j < 2; ++j) on = (PetscBool)(on && PetscAbsReal(xy[2 * (cone[j] - vs)]) <= b->axisTol);
     } else on = PETSC_FALSE;
     if (!on) continue;
-    PetscCall(AxisHeldBy(b, p, &i, &k));
+    PetscCall(BodyBCHolding(b, p, 0, &i, &k));
     if (i >= 0) { /* the scene's own condition holds u_r here: at 0, and by itself */
       PetscCheck(!b->bc[i].control[k] && !b->bc[i].exact && b->bc[i].values[k] == 0.0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "body %s: Dirichlet group %s moves points on the axis radially (u_r = %g): on the axis u_r = 0", b->name, b->bc[i].group, (double)b->bc[i].values[k]);
       continue;
@@ -97,7 +61,6 @@ PetscErrorCode BodyAddAxis(Body b)
   bc->ncomp    = 1;
   bc->comps[0] = 0;
   bc->label    = label;
-  bc->axis     = PETSC_TRUE;
   PetscCall(PetscInfo(NULL, "body %s: u_r = 0 held on %" PetscInt_FMT " points on the axis\n", b->name, gn));
   PetscFunctionReturn(0);
 }

@@ -256,20 +256,66 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
   PetscFunctionReturn(0);
 }
 
-/* Reference coordinates of the nodes of the scalar element, in basis order. */
-PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
+/* Reference coordinates of the nodes of element fe, in basis order, and
+   their number (nb, if not NULL). */
+static PetscErrorCode FEGetReferenceNodes(PetscFE fe, PetscInt *nb, PetscReal ref[])
 {
   PetscDualSpace sp;
+  PetscInt       n;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscFEGetDualSpace(b->feScalar, &sp));
-  for (PetscInt a = 0; a < b->nb; ++a) {
+  PetscCall(PetscFEGetDimension(fe, &n));
+  PetscCall(PetscFEGetDualSpace(fe, &sp));
+  for (PetscInt a = 0; a < n; ++a) {
     PetscQuadrature  fq;
     const PetscReal *pts;
     PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
     PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
     ref[2 * a]     = pts[0];
     ref[2 * a + 1] = pts[1];
+  }
+  if (nb) *nb = n;
+  PetscFunctionReturn(0);
+}
+
+/* Reference coordinates of the nodes of the scalar element, in basis order. */
+PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(FEGetReferenceNodes(b->feScalar, NULL, ref));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyPointsBox(Body b, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2])
+{
+  PetscReal m[4] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}; /* least x, y, -x, -y */
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k)
+    for (PetscInt d = 0; d < 2; ++d) {
+      m[d]     = PetscMin(m[d], xy[2 * k + d]);
+      m[2 + d] = PetscMin(m[2 + d], -xy[2 * k + d]);
+    }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 4, MPIU_REAL, MPIU_MIN, b->comm));
+  for (PetscInt d = 0; d < 2; ++d) {
+    lo[d] = m[d];
+    hi[d] = -m[2 + d];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k)
+{
+  PetscFunctionBeginUser;
+  *i = *k = -1;
+  for (PetscInt j = 0; j < b->nbc && *i < 0; ++j) {
+    PetscInt val;
+    PetscCall(DMLabelGetValue(b->bc[j].label, p, &val));
+    for (PetscInt l = 0; l < b->bc[j].ncomp && val == 1; ++l)
+      if (b->bc[j].comps[l] == c) {
+        *i = j;
+        *k = l;
+      }
   }
   PetscFunctionReturn(0);
 }
@@ -280,7 +326,7 @@ PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
    vertex need not carry coordinates of its own). Node k of a cell is the
    k-th point of its closure that carries a displacement node: every vertex
    and edge, and a quadrilateral itself (the cell cache's order). Usable
-   before the displacement section exists. */
+   once the elements exist, before the displacement section does. */
 PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
 {
   DM              cdm;
@@ -289,7 +335,6 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
   PetscTabulation Tc;
   PetscInt        vs, ve, cs, ce, nb, ncb;
   PetscReal       ref[9 * 2];
-  PetscFE         fe;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
@@ -298,20 +343,7 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
   PetscCall(DMGetField(cdm, 0, NULL, (PetscObject *)&cfe));
   PetscCall(PetscFEGetDimension(cfe, &ncb));
   PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, b->simplex, 2, PETSC_DETERMINE, &fe));
-  PetscCall(PetscFEGetDimension(fe, &nb));
-  {
-    PetscDualSpace sp;
-    PetscCall(PetscFEGetDualSpace(fe, &sp));
-    for (PetscInt a = 0; a < nb; ++a) {
-      PetscQuadrature  fq;
-      const PetscReal *pts;
-      PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
-      PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
-      ref[2 * a]     = pts[0];
-      ref[2 * a + 1] = pts[1];
-    }
-  }
+  PetscCall(FEGetReferenceNodes(b->feScalar, &nb, ref));
   PetscCall(PetscFECreateTabulation(cfe, 1, nb, ref, 0, &Tc));
   PetscCall(PetscCalloc1(2 * (ve - vs) + 2, xy));
   for (PetscInt c = cs; c < ce; ++c) {
@@ -348,7 +380,6 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
     PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
   }
   PetscCall(PetscTabulationDestroy(&Tc));
-  PetscCall(PetscFEDestroy(&fe));
   PetscFunctionReturn(0);
 }
 
