@@ -938,13 +938,14 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
       for (PetscInt h = 0; h < 2; ++h) /* each half of the edge: the sublinear weights have a kink at 0 */
         for (PetscInt q = 0; q < 8; ++q) {
           const PetscReal xi = 0.5 * (gx[q] + 2.0 * h - 1.0);
-          PetscReal       W[3], N[3], dN[3], X[2], T[2];
+          PetscReal       W[3], N[3], dN[3], X[2], T[2], J;
           MortarWeights(m->basis, &D->dual[9 * e], xi, W);
           EdgeShape(xi, N, dN);
           EdgeEval(S->X, en, xi, X, T);
+          J = ContactSurfaceMeasure(S, X, T);
           for (PetscInt i = 0; i < 3; ++i) {
-            D->A[en[i]] += 0.5 * gw[q] * W[i] * ContactSurfaceMeasure(S, X, T);
-            D->AN[en[i]] += 0.5 * gw[q] * N[i] * ContactSurfaceMeasure(S, X, T);
+            D->A[en[i]] += 0.5 * gw[q] * W[i] * J;
+            D->AN[en[i]] += 0.5 * gw[q] * N[i] * J;
           }
         }
       for (PetscInt i = 0; i < 3; ++i) {
