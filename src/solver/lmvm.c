@@ -204,7 +204,7 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
 
 PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
 {
-  PetscBool lmvm, blmvm;
+  PetscBool lmvm, blmvm, contact;
   KSP       ksp;
   PC        pc;
 
@@ -212,31 +212,26 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
   if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
-  if (p->opt.h0 == H0_CONTACT && p->nterms) {
+  contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms);
+  if (contact) PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
+  PetscCall(TaoLMVMSetH0(p->tao, contact ? p->H : p->K));
+  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  if (contact) {
     PetscMPIInt size;
     PetscCallMPI(MPI_Comm_size(p->comm, &size));
-    PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
-    PetscCall(TaoLMVMSetH0(p->tao, p->H));
-    PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
-    PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(KSPGetPC(ksp, &pc));
     if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
-    PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
-    PetscCall(KSPSetFromOptions(ksp));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
+  PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
+  PetscCall(KSPSetFromOptions(ksp));
+  if (contact) {
     PetscCall(VecDuplicate(p->X, &p->lmvmX));
     PetscCall(VecDuplicate(p->X, &p->lmvmG));
     PetscCall(VecDuplicate(p->X, &p->lmvmW));
     PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, p));
-    PetscFunctionReturn(0);
   }
-  PetscCall(TaoLMVMSetH0(p->tao, p->K));
-  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
-  PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
-  PetscCall(KSPSetFromOptions(ksp));
   PetscFunctionReturn(0);
 }
 
