@@ -87,7 +87,9 @@ MORTAR_LMVM = ["lmvm-h0", "blmvm-h0"]
 KPS = [1e4, 1e5, 2e6, 1e8]
 TOLS = [1e-8, 1e-5]
 REF_KP, REF_TOL, REF_STRATEGY = 2e6, 1e-8, "newton"
-# -contact_formulation: the default first; a sweep row's formulation column
+# -contact_formulation, given on every run (a sweep row's formulation column); REF_FORMULATION is the
+# one the strategy and penalty product varies, gpts (the program's default, mortar, runs the reference
+# strategies)
 FORMULATIONS = ["gpts", "mortar"]
 REF_FORMULATION = "gpts"
 COST_TARGET = 1.5     # mortar solve time / gpts solve time, reference configuration
@@ -866,9 +868,9 @@ def report_design(rows, ctx):
         A("Plain lmvm (the original study's method) is limited to tier A because it needs thousands of "
           "iterations. Per-run time limit: %g s (a run over it is a row with reason TIMEOUT)." % args.timeout)
     A("")
-    A("Formulations (`-contact_formulation`, column `formulation`): **gpts** (the default: Gauss point to "
-      "segment, both surfaces as slave) runs every configuration above; **mortar** (nodal weighted gaps, the "
-      "pair's first surface as slave) runs the default strategy (newton) at k_p = 2e6 on every mesh of hertz, "
+    A("Formulations (`-contact_formulation`, given on every run; column `formulation`): **gpts** (Gauss point "
+      "to segment, both surfaces as slave) runs every configuration above; **mortar** (the program's default: "
+      "nodal weighted gaps, the pair's first surface as slave) runs the default strategy (newton) at k_p = 2e6 on every mesh of hertz, "
       "hertz-half and hertz-graded%s, and L-BFGS (lmvm-h0 and blmvm-h0, the program's defaults for them) at "
       "k_p = 2e6, gttol 1e-8 on the uniform hertz meshes down to h = 0.015 (their rows were added to the "
       "sweep's by `--merge` where the header says so), and not the other strategies, penalties or the "

@@ -179,8 +179,25 @@ def save(path, res):
 
 
 def verdict(runs):
+    """yes, no: <the formulations that stopped>, or - where nothing ran."""
     bad = [r for r in runs if not r["converged"]]
+    if not runs:
+        return "-"
     return "yes" if not bad else "no: " + ", ".join(r["formulation"] for r in bad)
+
+
+def iteration_spread(runs):
+    """The largest relative difference of the iteration counts between 1
+    and 2 ranks over the formulations converged on both, marked * where
+    the two took a different number of load cutbacks; - where none."""
+    get = {(r["formulation"], r["ranks"]): r for r in runs if r["converged"]}
+    d = [(abs(get[(f, 2)]["iterations"] - get[(f, 1)]["iterations"]) / get[(f, 1)]["iterations"],
+          get[(f, 2)].get("cutbacks", 0) != get[(f, 1)].get("cutbacks", 0))
+         for f in FORMULATIONS if (f, 1) in get and (f, 2) in get]
+    if not d:
+        return "-"
+    v, cut = max(d)
+    return f"{100 * v:.0f} %" + (" *" if cut else "")
 
 
 def power(x):
@@ -204,7 +221,7 @@ def row_of(h, kp, push, runs, agree, dofs):
     solve = [r["solve"] for r in runs if "solve" in r]
     conv = [verdict([r for r in runs if r["ranks"] == n]) for n in RANKS]
     return (f"| {h:g} | {dofs} | {power(kp)} | {push:g} | {its} | {conv[0]} | {conv[1]} | {P} | {largest(d, '.1e')} "
-            f"| {largest(solve, '.3g')} |")
+            f"| {iteration_spread(runs)} | {largest(solve, '.3g')} |")
 
 
 def stopped_cases(failed):
@@ -239,10 +256,12 @@ def tables(res):
            "2-core machine: "
            f"{ok} of {len(runs)} runs converged. Iterations: {solver} iterations at 1 rank (gpts / mortar); "
            "converged: every run of the row at that rank count (both formulations); |dP|/P: the largest relative "
-           f"difference of P between 1 and 2 ranks over the two formulations (target {RANK_TOL:g}); solve: the "
-           "largest solve time of the row's four runs.", "",
+           f"difference of P between 1 and 2 ranks over the two formulations (target {RANK_TOL:g}); iterations 1 vs 2: "
+           "the largest relative difference of their iteration counts (* where the two rank counts cut the load "
+           "back a different number of times); solve: the largest solve time of the row's four runs; - where "
+           "nothing ran.", "",
            "| h | dofs | k_p | push | iterations gpts / mortar | converged 1 rank | converged 2 ranks | P (mortar) "
-           "| 1 vs 2 ranks \\|dP\\|/P | max solve [s] |", "|---|---|---|---|---|---|---|---|---|---|"]
+           "| 1 vs 2 ranks \\|dP\\|/P | iterations 1 vs 2 | max solve [s] |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for h in HS:
         for kp in KPS:
             for push in PUSHES:
