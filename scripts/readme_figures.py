@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The documentation's tables of measured figures, generated from committed
-results, and the README's picture.
+"""The documentation's tables of measured figures and the README's phrases
+quoting them, generated from committed results, and the README's picture.
 
-    python3 scripts/readme_figures.py --check      # exit 1 if a table differs from its results
-    python3 scripts/readme_figures.py --update     # rewrite the tables from the results
+    python3 scripts/readme_figures.py --check      # exit 1 if a table or phrase differs from its results
+    python3 scripts/readme_figures.py --update     # rewrite the tables and phrases from the results
     python3 scripts/readme_figures.py --measure scenes --measure solver --measure lmvm [--update]
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
@@ -41,6 +41,26 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   blmvm at their defaults, against Newton on the reference scene for several h,
   k_p and rank counts, interleaved, median of 3 solve times; about 5 minutes).
 
+A phrase is figures inside a sentence: its begin marker stands inside a line
+(at a line's start Markdown would take the line for HTML), the phrase follows
+it, and the end marker closes it within the paragraph, as in
+`it takes <!-- figures:solver-speed:begin -->10 iterations<!-- figures:solver-speed:end -->.`
+A phrase is compared word by word, so the page may wrap and indent it as it
+likes; --update writes a stale one on one line. The phrases, all in README.md:
+
+- solver-speed: Newton's and L-BFGS's (-tao_type lmvm) iterations and solve
+  times at h = 0.06, from the solver table (bench/solver/results.json);
+- lmvm-ratio: the least and greatest L-BFGS solve time over Newton's in the
+  lmvm table (bench/lmvm/results.json), up to its largest k_p;
+- parallel-speedup: the parallel table's solve-time speed-ups, its largest
+  mesh's dofs, and the whole run's speed-up where bench_parallel.py sets it a
+  target (bench/parallel/results.csv);
+- speed-targets: "all met", or the targets not met, of scripts/bench.py's
+  targets table of the full sweep (bench/full/results.csv, through bench.py's
+  own functions), then the reference scene's solve time at h = 0.06, the worst
+  time in linear solves of the same mesh and the solve time's exponent in dofs,
+  each with its target.
+
 The picture: --measure picture runs the reference scene as `make run` does
 (meshes/hertz/hertz.opts, the program's defaults), its HDF5 output in a
 temporary directory, and draws its pressure plot with scripts/plot_hertz.py
@@ -49,8 +69,10 @@ into docs/img/hertz-pressure.png, the PNG the README shows (a few seconds).
 import argparse
 import json
 import os
+import re
 import sys
 import tempfile
+import types
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PICTURE = os.path.join("docs", "img", "hertz-pressure.png")
@@ -177,17 +199,25 @@ def measure_lmvm(repeat=3):
     save("lmvm", rows)
 
 
-def render_lmvm():
+def lmvm_pairs():
+    """[(row, Newton's row of the same case)] of bench/lmvm/results.json, in its order."""
     rows = load("lmvm")
     newton = {(r["h"], r["kp"], r["ranks"]): r for r in rows if r["tao"] == "nls"}
+    return [(r, newton[(r["h"], r["kp"], r["ranks"])]) for r in rows]
+
+
+def kp_text(kp):
+    """A penalty as the pages write it: 2e6, 1e8."""
+    return f"{kp:.0e}".replace("e+0", "e")
+
+
+def render_lmvm():
     out = ["| h | dofs | k_p | ranks | solver | iterations | energy evaluations | H0 set-ups | pairs dropped "
            "| solve [s] | / Newton | P from Newton's |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        n = newton[(r["h"], r["kp"], r["ranks"])]
+    for r, n in lmvm_pairs():
         lm = r["tao"] != "nls"
         dP = f"{abs(r['P'] / n['P'] - 1):.1e}" if lm else ""
-        kp = f"{r['kp']:.0e}".replace("e+0", "e")
-        out.append(f"| {r['h']:g} | {r['dofs']:,} | {kp} | {r['ranks']} | {r['tao']} | {r['iterations']} "
+        out.append(f"| {r['h']:g} | {r['dofs']:,} | {kp_text(r['kp'])} | {r['ranks']} | {r['tao']} | {r['iterations']} "
                    f"| {r['evaluations']} | {r['h0'] if lm else ''} | {r['dropped'] if lm else ''} "
                    f"| {r['solve']:.2f} | {r['solve'] / n['solve']:.2f} | {dP} |")
     return "\n".join(out) + "\n"
@@ -230,9 +260,15 @@ def render_speed():
     return "\n".join(out) + "\n"
 
 
+def parallel_rows():
+    """bench/parallel/results.csv's rows (scripts/bench_parallel.py)."""
+    import bench_parallel
+    return bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
+
+
 def render_parallel():
     import bench_parallel
-    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
+    rows = parallel_rows()
     forms = sorted({r["formulation"] for r in rows if r.get("formulation")}) or ["gpts"]
     return ("Contact formulation: %s.\n\n" % ", ".join(forms)
             + "\n".join(bench_parallel.speedup_table(bench_parallel.rank_pairs(rows))) + "\n")
@@ -240,8 +276,7 @@ def render_parallel():
 
 def render_parallel_stages():
     import bench_parallel
-    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "parallel", "results.csv"))
-    pairs = [p for p in bench_parallel.rank_pairs(rows) if p[0] <= 0.015]
+    pairs = [p for p in bench_parallel.rank_pairs(parallel_rows()) if p[0] <= 0.015]
     head, rule = "| stage |", "|---|"
     for h, _, _ in pairs:
         head += f" h = {h:g}, 1 rank [s] | 2 ranks [s] | speed-up |"
@@ -325,15 +360,90 @@ def render_axisymmetric():
     return "\n".join(out) + "\n"
 
 
+def and_list(items):
+    """'a', 'a and b', 'a, b and c'."""
+    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else "".join(items)
+
+
+def render_solver_speed():
+    """Newton's (the default) and L-BFGS's (-tao_type lmvm, its default H0) iterations and solve times in the
+    solver table."""
+    rows = {r["options"]: r for r in load("solver")}
+    n, lb = rows[""], rows["-tao_type lmvm"]
+    return (f"{n['iterations']} iterations and {n['solve']:.2f} s, where L-BFGS (`-tao_type lmvm`, its H0 the "
+            f"stiffness plus the contact's Hessian) takes {lb['iterations']} and {lb['solve']:.2f} s")
+
+
+def render_lmvm_ratio():
+    """The least and the greatest of the lmvm table's L-BFGS solve times over Newton's, and its largest k_p."""
+    pairs = [(r, n) for r, n in lmvm_pairs() if r["tao"] != "nls"]
+    ratios = [r["solve"] / n["solve"] for r, n in pairs]
+    return (f"{min(ratios):.2f} to {max(ratios):.2f} times Newton's time up to "
+            f"k_p = {kp_text(max(r['kp'] for r, _ in pairs))}")
+
+
+def render_parallel_speedup():
+    """The parallel table's solve-time speed-ups and their h, the largest mesh's dofs, and the whole run's
+    speed-up where it has a target (bench_parallel.WALL_TARGETS)."""
+    import bench_parallel
+    pairs = bench_parallel.rank_pairs(parallel_rows())
+
+    def speedup(one, two, key):
+        return f"{bench_parallel.med(one, key) / bench_parallel.med(two, key):.2f}"
+    solve = and_list([speedup(one, two, "time_solve") for _, one, two in pairs])
+    sizes = and_list([f"{h:g}" for h, _, _ in pairs])
+    text = (f"2 ranks solve the reference scene {solve} times faster than one at h = {sizes} "
+            f"({pairs[-1][1][0]['dofs']:,} dofs)")
+    for h, one, two in pairs:
+        if h in bench_parallel.WALL_TARGETS:
+            text += f", the whole run {speedup(one, two, 'wall')} times at h = {h:g}"
+    return text
+
+
+def target_name(target):
+    """A target of bench.py's table without its parentheses."""
+    return re.sub(r" \([^()]*\)", "", target)
+
+
+def render_speed_targets():
+    """Whether the full sweep meets its targets, as scripts/bench.py's table of them says (those not met
+    named), and the three of speed: the reference scene's solve time at h = 0.06, the worst time in
+    linear solves of the same mesh and the exponent of the solve time in dofs."""
+    import bench
+    out = os.path.join(ROOT, "bench", "full")
+    rows = bench.read_csv(os.path.join(out, "results.csv"))
+    ctx = bench.report_figures(rows, types.SimpleNamespace(out=out), None, None, None, None)
+    missed = [f"{target_name(t)} ({st})" for t, _, st in bench.target_rows(rows, ctx) if not bench.met(st)]
+    d06 = [r for r in bench.reference_solve_runs(rows)[0] if r["converged"]]
+    ratios = bench.linear_ratio_runs(ctx.ref_sel)[1]
+    return ("all met" if not missed else "met but for " + "; ".join(missed)) + ": " + ", ".join([
+        (f"the reference scene at h = 0.06 solved in {d06[0]['solve_median']:.3g} s" if d06
+         else "the reference scene at h = 0.06 not solved by the default strategy")
+        + f" (target {bench.REF_SOLVE_TARGET:g} s)",
+        (f"at most {max(r['ratio_to_linear'] for r in ratios):.1f} linear solves of the same mesh up to "
+         f"{max(r['dofs'] for r in ratios):,} dofs" if ratios else "no time in linear solves from 1e4 dofs")
+        + f" (target {bench.LINEAR_RATIO_TARGET:g})",
+        (f"solve time growing like dofs^{ctx.fit_solve[0]:.2f}" if ctx.fit_solve
+         else "no exponent of the solve time in dofs") + f" (target {bench.EXPONENT_TARGET:g})"])
+
+
 RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty}
+# the phrases: figures inside a sentence of the README, each a line of text without its line breaks
+PHRASES = {"solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio,
+           "parallel-speedup": render_parallel_speedup, "speed-targets": render_speed_targets}
+
+
+def kind(name):
+    """What a block is called in messages."""
+    return "table" if name in RENDER else "phrase"
 
 
 def pages():
-    """The pages that may hold tables, relative to ROOT: README.md, every
+    """The pages that may hold tables and phrases, relative to ROOT: README.md, every
     docs/*.md, bench/README.md."""
     docs = os.path.join(ROOT, "docs")
     found = sorted(os.path.join("docs", f) for f in os.listdir(docs) if f.endswith(".md")) if os.path.isdir(docs) else []
@@ -341,36 +451,54 @@ def pages():
 
 
 def blocks(text, page="README.md"):
-    """{name: (start, end)} of the text between each pair of markers; a
-    marker doubled, or a begin without its end, is an error naming page."""
+    """{name: (start, end)} of the text between each pair of markers. A
+    table's begin marker ends its line; a phrase's stands inside a line (at
+    its start Markdown would take the line for HTML) with the phrase after it
+    on that line, and the phrase stays within its paragraph. A marker doubled,
+    a begin without its end, or the other kind's form is an error naming page."""
     out = {}
-    for name in RENDER:
-        b, e = f"<!-- figures:{name}:begin -->\n", f"<!-- figures:{name}:end -->"
+    for name in list(RENDER) + list(PHRASES):
+        b, e = f"<!-- figures:{name}:begin -->", f"<!-- figures:{name}:end -->"
         if text.count(b) > 1 or text.count(e) > 1:
-            raise SystemExit(f"{page}: the markers of table {name} appear more than once")
+            raise SystemExit(f"{page}: the markers of {kind(name)} {name} appear more than once")
         if b in text:
-            i = text.index(b) + len(b)
+            k = text.index(b)
+            i = k + len(b)
+            if name in RENDER and not text.startswith("\n", i):
+                raise SystemExit(f"{page}: table {name}'s begin marker must end its line")
+            if name in PHRASES and (text.startswith("\n", i) or not text[text.rfind("\n", 0, k) + 1:k].strip()):
+                raise SystemExit(f"{page}: phrase {name}'s begin marker must stand inside a line, the phrase after it")
+            if name in RENDER:
+                i += 1
             if e not in text[i:]:
-                raise SystemExit(f"{page}: table {name} has no end marker <!-- figures:{name}:end -->")
+                raise SystemExit(f"{page}: {kind(name)} {name} has no end marker <!-- figures:{name}:end -->")
             out[name] = (i, text.index(e, i))
+            if name in PHRASES and re.search(r"\n\s*\n", text[i:out[name][1]]):
+                raise SystemExit(f"{page}: phrase {name} runs over a paragraph's end")
         elif e in text:
-            raise SystemExit(f"{page}: table {name} has an end marker without its begin marker")
+            raise SystemExit(f"{page}: {kind(name)} {name} has an end marker without its begin marker")
     return out
 
 
 def locate(texts):
-    """{name: page} of every table over the pages {page: text}; a table on
-    two pages, or on none, is an error naming them."""
+    """{name: page} of every table and phrase over the pages {page: text};
+    one on two pages, or on none, is an error naming them."""
     where = {}
     for page, text in texts.items():
         for name in blocks(text, page):
             if name in where:
-                raise SystemExit(f"table {name} has markers on two pages: {where[name]} and {page}")
+                raise SystemExit(f"{kind(name)} {name} has markers on two pages: {where[name]} and {page}")
             where[name] = page
-    missing = sorted(set(RENDER) - set(where))
+    missing = sorted(set(RENDER) - set(where)) + sorted(set(PHRASES) - set(where))
     if missing:
         raise SystemExit(f"no page ({', '.join(texts)}) has markers for: {', '.join(missing)}")
     return where
+
+
+def differs(name, old, new):
+    """Whether a block's text is not its rendering: a table's to the letter, a
+    phrase's word by word (its line breaks and indentation are the page's)."""
+    return old != new if name in RENDER else old.split() != new.split()
 
 
 def main():
@@ -397,8 +525,8 @@ def main():
     stale = []
     for page, text in texts.items():
         for name, (i, j) in sorted(blocks(text, page).items(), key=lambda kv: -kv[1][0]):
-            new = RENDER[name]()
-            if text[i:j] != new:
+            new = (RENDER.get(name) or PHRASES[name])()
+            if differs(name, text[i:j], new):
                 stale.append(f"{name} ({page})")
                 text = text[:i] + new + text[j:]
         if args.update and text != texts[page]:
@@ -407,11 +535,11 @@ def main():
     if args.update:
         print("updated:", ", ".join(stale) if stale else "nothing (all up to date)")
     elif stale:
-        print("tables that differ from their committed results:", ", ".join(stale),
+        print("tables and phrases that differ from their committed results:", ", ".join(stale),
               "(python3 scripts/readme_figures.py --update)")
         sys.exit(1)
     else:
-        print("tables match their results:", ", ".join(f"{n} ({where[n]})" for n in sorted(where)))
+        print("tables and phrases match their results:", ", ".join(f"{n} ({where[n]})" for n in sorted(where)))
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 """The documentation (README.md, docs/*.md, bench/README.md): its tables of
-measured figures are rendered from committed results
-(scripts/readme_figures.py), so that a table typed by hand, or results
-committed without their table, fail here; and every link between its pages
+measured figures, and the phrases of the README's prose quoting them, are
+rendered from committed results (scripts/readme_figures.py), so that a table
+or phrase typed by hand, or results committed without it, fail here; and every link between its pages
 reaches a file and, where it names one, a heading of that file."""
 import re
 import subprocess
@@ -37,6 +37,12 @@ def test_pages_are_the_documentation():
      "table solver has markers on two pages: README.md and docs/solver.md"),
     ("bench/README.md", lambda text: text.replace("<!-- figures:stress:begin -->", "").replace("<!-- figures:stress:end -->", ""),
      "no page (README.md, docs/"),
+    ("README.md", lambda text: text.replace(" <!-- figures:solver-speed:begin -->", "\n<!-- figures:solver-speed:begin -->"),
+     "README.md: phrase solver-speed's begin marker must stand inside a line"),
+    ("README.md", lambda text: text.replace("<!-- figures:lmvm-ratio:end -->", ""),
+     "README.md: phrase lmvm-ratio has no end marker"),
+    ("README.md", lambda text: text.replace("<!-- figures:speed-targets:end -->", "\n\n<!-- figures:speed-targets:end -->"),
+     "README.md: phrase speed-targets runs over a paragraph's end"),
 ])
 def test_marker_errors_name_the_page(page, change, message, tmp_path):
     """A table's markers left unclosed, on two pages or on none stop the
@@ -53,6 +59,16 @@ def test_marker_errors_name_the_page(page, change, message, tmp_path):
                        cwd=tmp_path, capture_output=True, text=True)
     assert p.returncode != 0
     assert message in p.stdout + p.stderr, p.stdout + p.stderr
+
+
+def test_phrases_compare_word_by_word():
+    """A phrase's line breaks and indentation are the page's; its words, and a
+    table's every character, are the results'."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import readme_figures
+    assert not readme_figures.differs("lmvm-ratio", "0.75 to 1.35 times\n  Newton's time", "0.75 to 1.35 times Newton's time")
+    assert readme_figures.differs("lmvm-ratio", "0.75 to 1.34 times Newton's time", "0.75 to 1.35 times Newton's time")
+    assert readme_figures.differs("scenes", "| a |\n| b |\n", "| a | | b |\n")
 
 
 def anchor(heading):
