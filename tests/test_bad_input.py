@@ -260,17 +260,21 @@ def test_bad_input(name, tmp_path):
         assert not (tmp_path / "meshes").exists(), "refused only after meshing"
 
 
-@pytest.mark.parametrize("args", [["-options_file", "nosuch.opts"], SCENE + ["-mesh_size", "abc"]])
-def test_bad_input_two_ranks(args, tmp_path):
-    """On two ranks a bad options file or option value is still reported once."""
+@pytest.mark.parametrize("args, cause, meshed", [
+    (["-options_file", "nosuch.opts"], "nosuch.opts", False),
+    (SCENE + ["-mesh_size", "abc"], "-mesh_size", False),
+    # found while the meshes are read, by the ranks that hold axis points: every rank stops
+    (CASES["axisymmetric_axis_moved"][0], CASES["axisymmetric_axis_moved"][1], True)])
+def test_bad_input_two_ranks(args, cause, meshed, tmp_path):
+    """On two ranks a bad options file, option value or scene is still reported once."""
     cmd = ["mpiexec", "--oversubscribe", "-n", "2", str(BIN)] + args + [
         "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json"), "-mesh_dir", str(tmp_path / "meshes")]
     proc = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
     assert proc.returncode != 0
     errors = [l for l in proc.stderr.splitlines() if l.startswith("contact: error: ")]
-    assert len(errors) == 1 and ("nosuch.opts" in errors[0] or "-mesh_size" in errors[0]), proc.stderr
+    assert len(errors) == 1 and cause in errors[0], proc.stderr
     assert "PETSC ERROR" not in proc.stderr
-    assert not list(tmp_path.iterdir())
+    assert sorted(p.name for p in tmp_path.iterdir()) == (["meshes"] if meshed else [])
 
 
 def test_unconverged_writes_nothing(tmp_path):

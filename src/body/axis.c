@@ -16,7 +16,7 @@
 PetscErrorCode BodyAddAxis(Body b)
 {
   DMLabel   label;
-  PetscInt  vs, ve, es, ee, n = 0, gn;
+  PetscInt  vs, ve, es, ee, n = 0, gn, moves = -1;
   PetscReal lo[2], hi[2], size, *xy;
   BodyBC   *bc;
 
@@ -42,13 +42,15 @@ PetscErrorCode BodyAddAxis(Body b)
     if (!on) continue;
     PetscCall(BodyBCHolding(b, p, 0, &i, &k));
     if (i >= 0) { /* the scene's own condition holds u_r here: at 0, and by itself */
-      PetscCheck(!b->bc[i].control[k] && !b->bc[i].exact && b->bc[i].values[k] == 0.0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "body %s: Dirichlet group %s moves points on the axis radially (u_r = %g): on the axis u_r = 0", b->name, b->bc[i].group, (double)b->bc[i].values[k]);
+      if (b->bc[i].control[k] || b->bc[i].exact || b->bc[i].values[k] != 0.0) moves = PetscMax(moves, 2 * i + k);
       continue;
     }
     PetscCall(DMLabelSetValue(label, p, 1));
     n++;
   }
   PetscCall(PetscFree(xy));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &moves, 1, MPIU_INT, MPI_MAX, b->comm)); /* 2 i + k of a condition i moving component k there: every rank stops */
+  PetscCheck(moves < 0, b->comm, PETSC_ERR_USER_INPUT, "body %s: Dirichlet group %s moves points on the axis radially (u_r = %g): on the axis u_r = 0", b->name, b->bc[moves / 2].group, (double)b->bc[moves / 2].values[moves % 2]);
   PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
   if (!gn) { /* no point on the axis (a ring), or the scene holds them all */
     PetscCall(DMRemoveLabel(b->dm, "r=0", NULL));
