@@ -51,7 +51,7 @@ run: bin/contact meshes
 	echo "Figures:$${figs:- none}; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
 test: bin/contact meshes
-	$(PYTHON) -m pytest -q -m "not stress" tests
+	$(PYTHON) -m pytest -q --durations=10 -m "not stress" tests
 
 # the same sources built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (build/san, bin/contact-sanitize), then a fast subset of the suite run with
