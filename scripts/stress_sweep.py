@@ -58,12 +58,13 @@ def key(r):
 
 
 TAO_TYPE = "nls"     # --tao-type
+OPTIONS = []         # --options: more of the program's options, on every run
 
 
 def args_of(h, kp, push, form):
     return ["-options_file", SCENE, "-mesh_size", f"{h:g}", "-contact_penalty", f"{kp:g}",
             "-block_bc_push_values", f"{-push:g},0", "-contact_formulation", form, "-tao_monitor"] \
-        + (["-tao_type", TAO_TYPE] if TAO_TYPE != "nls" else [])
+        + (["-tao_type", TAO_TYPE] if TAO_TYPE != "nls" else []) + OPTIONS
 
 
 def log_name(r):
@@ -128,7 +129,7 @@ def rank_agreement(runs):
     return out
 
 
-def sweep(out, hs, ranks, forms, resume):
+def sweep(out, hs, kps, ranks, forms, resume):
     path = os.path.join(out, "results.json")
     res = dict(scene=SCENE, runs=[])
     if resume and os.path.exists(path):
@@ -140,6 +141,10 @@ def sweep(out, hs, ranks, forms, resume):
     done = {key(r) for r in res["runs"]}
     res.setdefault("started", datetime.datetime.now().isoformat(timespec="seconds"))
     res.setdefault("tao_type", TAO_TYPE)
+    res.setdefault("options", " ".join(OPTIONS))
+    if (res["tao_type"], res["options"]) != (TAO_TYPE, " ".join(OPTIONS)):
+        raise SystemExit(f"--resume: {path} holds runs of --tao-type {res['tao_type']} --options '{res['options']}', "
+                         f"not of --tao-type {TAO_TYPE} --options '{' '.join(OPTIONS)}'")
     res.setdefault("load_start", load_average())
     res.setdefault("nice", os.nice(0))
     res.setdefault("commit", git("rev-parse", "--short", "HEAD")
@@ -152,7 +157,7 @@ def sweep(out, hs, ranks, forms, resume):
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         for h in hs:
-            for kp in KPS:
+            for kp in kps:
                 for push in PUSHES:
                     for form in forms:
                         for n in ranks:
@@ -259,8 +264,9 @@ def tables(res):
     dofs = {r["h"]: r["dofs"] for r in runs if "dofs" in r}
     tao = res.get("tao_type", "nls")
     solver = "Newton" if tao == "nls" else f"TAO {tao}"
+    opts = f" and `{res['options']}`" if res.get("options") else ""
     out = [f"Scene `{res['scene']}` (the reference scene's mirrored half; P is the whole model's), {solver} with "
-           f"the defaults, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
+           f"the defaults{opts}, `-tao_monitor -output none`, one run at a time (niceness {res['nice']}) on a shared "
            "2-core machine: "
            f"{ok} of {len(runs)} runs converged. Iterations: {solver} iterations at 1 rank (gpts / mortar); "
            "converged: every run of the row at that rank count (both formulations); |dP|/P: the largest relative "
@@ -342,16 +348,23 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "bench", "stress"))
     ap.add_argument("--resume", action="store_true", help="keep the runs already in <out>/results.json")
     ap.add_argument("--h", type=float, nargs="+", default=HS, help="a subset of the mesh sizes")
+    ap.add_argument("--kp", type=float, nargs="+", default=KPS, help="a subset of the penalties")
     ap.add_argument("--ranks", type=int, nargs="+", default=RANKS, choices=RANKS)
     ap.add_argument("--formulation", nargs="+", default=FORMULATIONS, choices=FORMULATIONS)
     ap.add_argument("--tao-type", default="nls", help="the TAO type of every run (default nls, the program's)")
+    ap.add_argument("--options", default="", help="more of the program's options for every run, one string "
+                    "(e.g. '-tao_gttol 1e-11'); a sweep resumed must name the same")
     ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md from <out>/results.json")
     args = ap.parse_args()
-    global TAO_TYPE
+    global TAO_TYPE, OPTIONS
     TAO_TYPE = args.tao_type
+    OPTIONS = args.options.split()
     bad = [h for h in args.h if h not in HS]
     if bad:
         raise SystemExit(f"--h: {bad} not among the sweep's sizes {HS}")
+    bad = [kp for kp in args.kp if kp not in KPS]
+    if bad:
+        raise SystemExit(f"--kp: {bad} not among the sweep's penalties {KPS}")
     os.makedirs(args.out, exist_ok=True)
     if args.report_only:
         if not os.path.exists(os.path.join(args.out, "results.json")):
@@ -359,7 +372,7 @@ def main():
         with open(os.path.join(args.out, "results.json")) as f:
             res = json.load(f)
     else:
-        res = sweep(args.out, args.h, args.ranks, args.formulation, args.resume)
+        res = sweep(args.out, args.h, args.kp, args.ranks, args.formulation, args.resume)
     text = tables(res)
     with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
         f.write("# Robustness sweep\n\n" + provenance(res) + "\n\n" + text + "\nEvery run:\n\n" + every_run(res))
