@@ -801,6 +801,13 @@ def cost_ratio_text(g, m):
         g.get("repeats", "?"))
 
 
+def bin_git(args):
+    """The git state recorded when the program was copied (HEAD then, and
+    whether the tree differed from it); for a sweep that did not record it,
+    HEAD now."""
+    return getattr(args, "bin_git", None) or git_info(args.out) + ", at the report"
+
+
 def report_header(rows, ctx):
     """The title, and how, when, on which binary and under what load the sweep ran."""
     out, args, elapsed, load = ctx.out, ctx.args, ctx.elapsed, ctx.load
@@ -814,7 +821,7 @@ def report_header(rows, ctx):
       "ratios of runs made interleaved are the steadier figures."
       % (datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), " ".join(sys.argv[1:]), elapsed,
          len(rows), os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
-         git_info(out), args.bin_sha, load[0], load[1]))
+         bin_git(args), args.bin_sha, load[0], load[1]))
     A("")
     return L
 
@@ -1474,7 +1481,7 @@ def cost_header(args, date, load0):
       "machine (%s cores; load average %s at the start, %.2f at the end)."
       % (date, " ".join(sys.argv[1:]), time.time() - args.t0,
          os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
-         git_info(args.out), args.bin_sha, nproc(), load0, load_average()))
+         bin_git(args), args.bin_sha, nproc(), load0, load_average()))
     A("")
     A("The reference scene (hertz), newton, k_p = 2e6, gttol 1e-8, one rank, `-output none`, each formulation "
       "run %d times, interleaved (gpts, mortar, gpts, mortar, ...), so that both see the same load; every run "
@@ -1614,6 +1621,7 @@ def report_only(args):
         meta = json.load(fh)
     for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
         setattr(args, k, meta[k])
+    args.bin_git = meta.get("bin_git")
     sys.argv = [sys.argv[0]] + meta["argv"]
     report(read_csv(os.path.join(args.out, "results.csv")), args, meta["info"], meta["meshes"],
            meta["elapsed"], meta["load"])
@@ -1715,13 +1723,14 @@ def merge_sweep(args, plan, nconf, tmp):
     rows = [r for r in read_csv(path) if config_key(r) not in keys] + new
     with open(os.path.join(args.out, "run.json")) as fh:
         meta = json.load(fh)
-    meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, git_info(args.out))] \
+    meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, args.bin_git)] \
         + sys.argv[1:]
     meta["elapsed"] += time.time() - args.t0
     with open(os.path.join(args.out, "run.json"), "w") as fh:
         json.dump(meta, fh, indent=1)
     for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
         setattr(args, k, meta[k])
+    args.bin_git = meta.get("bin_git")
     sys.argv = [sys.argv[0]] + meta["argv"]
     report(rows, args, meta["info"], meta["meshes"], meta["elapsed"], meta["load"])
     R.say("merged %d rows into %s" % (len(new), path))
@@ -1740,7 +1749,7 @@ def run_sweep(args, plan, nconf, tmp):
     load = (load0, "%.2f" % load_average())
     with open(os.path.join(args.out, "run.json"), "w") as fh:
         json.dump({"quick": args.quick, "repeat": args.repeat, "timeout": args.timeout, "bin_orig": args.bin_orig,
-                   "bin_sha": args.bin_sha, "argv": sys.argv[1:], "info": info, "meshes": meshes,
+                   "bin_sha": args.bin_sha, "bin_git": args.bin_git, "argv": sys.argv[1:], "info": info, "meshes": meshes,
                    "elapsed": elapsed, "load": load}, fh, indent=1)
     report(rows, args, info, meshes, elapsed, load)
     R.say("done in %.0f s: %s/results.csv, RESULTS.md, error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png"
@@ -1767,6 +1776,7 @@ def main():
         args.bin_orig = os.path.abspath(args.bin)
         with open(args.bin_orig, "rb") as fh:
             args.bin_sha = hashlib.sha256(fh.read()).hexdigest()[:12]
+        args.bin_git = git_info(args.out)  # the tree when the program was copied
         args.bin = contactrun.copy_program(tmp, args.bin_orig)
         if args.formulations_cost:
             formulations_cost(args, Sweep(args, tmp, "formulations.log"))
