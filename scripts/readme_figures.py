@@ -260,6 +260,14 @@ def render_speed():
     return "\n".join(out) + "\n"
 
 
+def render_stress_solvers():
+    import stress_sweep
+    newton = load("stress")
+    return stress_sweep.solver_table([("Newton", newton), ("lmvm", load("stress-lmvm")),
+                                      ("blmvm", load("stress-blmvm")),
+                                      ("lmvm, -tao_gttol 1e-11", load("stress-lmvm-gttol11"))], newton)
+
+
 def parallel_rows():
     """bench/parallel/results.csv's rows (scripts/bench_parallel.py)."""
     import bench_parallel
@@ -430,7 +438,7 @@ def render_speed_targets():
 RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
-          "stress": render_stress, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
+          "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio,

@@ -214,8 +214,8 @@ def iteration_spread(runs):
 
 
 def power(x):
-    """1e3, 1e6, 1e10."""
-    return f"{x:.0e}".replace("e+0", "e").replace("e+", "e")
+    """1e3, 1e6, 1e10, 1e-8."""
+    return f"{x:.0e}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
 
 
 def largest(xs, fmt):
@@ -324,6 +324,45 @@ def provenance(res):
             f"{c['commit']}" + (f"; load average {c['load_start']:.2f} at the start, {c['load_end']:.2f} at the end"
                                 if "load_end" in c else "") for c in calls)
     return text
+
+
+def solver_rows(label, res, newton):
+    """Per k_p, one line of the comparison of a sweep (res) with Newton's
+    (newton, the same cases at the defaults): runs converged, the stopped
+    ones and whether Newton stops there too, 1 against 2 ranks (largest
+    |dP|/P, pairs above RANK_TOL, pairs whose iteration counts differ by
+    more than 10 %), and the summed solve time over Newton's on the cases
+    both converged."""
+    by = {key(r): r for r in res["runs"]}
+    nby = {key(r): r for r in newton["runs"]} if newton else {}
+    agree = rank_agreement(res["runs"])
+    out = []
+    for kp in KPS:
+        runs = [r for r in res["runs"] if r["kp"] == kp]
+        if not runs:
+            continue
+        stopped = [r for r in runs if not r["converged"]]
+        also = sum(1 for r in stopped if key(r) in nby and not nby[key(r)]["converged"])
+        d = [v for k, v in agree.items() if k[1] == kp]
+        its = [k for k in agree if k[1] == kp
+               and abs(by[k + (2,)]["iterations"] - by[k + (1,)]["iterations"]) > 0.1 * by[k + (1,)]["iterations"]]
+        both = [r for r in runs if r["converged"] and nby.get(key(r), {}).get("converged")]
+        t = sum(r["solve"] for r in both) / sum(nby[key(r)]["solve"] for r in both) if both and newton else None
+        hs = sorted({r["h"] for r in runs}, reverse=True)
+        out.append(f"| {label} | {power(kp)} | {hs[0]:g} to {hs[-1]:g} | {len(runs) - len(stopped)} of {len(runs)} "
+                   f"| {len(stopped)}" + (f" ({also} where Newton stops)" if stopped and newton else "")
+                   + f" | {largest(d, '.1e')} | {sum(v > RANK_TOL for v in d)} of {len(d)} | {len(its)} of {len(d)} "
+                   f"| {'-' if t is None else format(t, '.2f')} |")
+    return out
+
+
+def solver_table(sweeps, newton):
+    """The comparison table of several sweeps [(label, res)] with Newton's."""
+    return "\n".join(["| sweep | k_p | h | converged | stopped | 1 vs 2 ranks \\|dP\\|/P | pairs above "
+                      f"{power(RANK_TOL)} | pairs with iterations > 10 % apart | summed solve / Newton's |",
+                      "|---|---|---|---|---|---|---|---|---|"]
+                     + [line for label, res in sweeps
+                        for line in solver_rows(label, res, None if res is newton else newton)]) + "\n"
 
 
 def every_run(res):
