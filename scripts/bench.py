@@ -96,6 +96,9 @@ COST_TARGET = 1.5     # mortar solve time / gpts solve time, reference configura
 REF_SOLVE_TARGET = 0.5  # s: the reference scene's solve time at h = 0.06 (gpts, newton, k_p 2e6, gttol 1e-8, one core)
 LINEAR_RATIO_TARGET = 10  # time-to-solution in linear solves of the same mesh, on the meshes from 1e4 dofs
 EXPONENT_TARGET = 1.2   # solve time growing like dofs^k from 1e4 to 1e6 dofs: k at most this
+FIXED_COST_TARGET = 0.2  # mesh reading + set-up + output under this share of the whole run at 1e6 dofs
+SEARCH_TARGET = 0.1     # contact search per call under this share of an energy evaluation at 1e6 dofs
+FIT_DOFS = (1e4, 1.2e6)  # the range of dofs over which the cost exponents are fitted
 ERROR_LEVELS = (0.10, 0.03, 0.01)
 
 CSV_FIELDS = [
@@ -508,7 +511,18 @@ def on_profile_ref_mesh(r):
     return r.get("profile_ref_h") == r["h"]
 
 
-def fit_exponent(x, y, lo=1e4, hi=1.2e6):
+def off_profile_model(r):
+    """A run the cheapest configurations by profile distance leave out: one on its reference's own mesh
+    (its distance is the solver's) or at another k_p than the scenes' (another model)."""
+    return on_profile_ref_mesh(r) or r["kp"] != REF_KP
+
+
+def fit_runs(runs):
+    """The runs within FIT_DOFS, over which fit_exponent fits."""
+    return [r for r in runs if FIT_DOFS[0] <= r["dofs"] <= FIT_DOFS[1]]
+
+
+def fit_exponent(x, y, lo=FIT_DOFS[0], hi=FIT_DOFS[1]):
     pts = [(a, b) for a, b in zip(x, y) if finite(a) and finite(b) and lo <= a <= hi and b > 0]
     if len(pts) < 2:
         return None, len(pts)
@@ -997,7 +1011,7 @@ def report_cheapest(rows, ctx):
     for key, title, excl, show_ref in (
             ("profile_err", "pressure profile: L2 distance from the finest run of the same model "
                             "(scene, formulation; k_p = 2e6)",
-             lambda r: on_profile_ref_mesh(r) or r["kp"] != REF_KP, True),
+             off_profile_model, True),
             ("l2_err", "pressure profile: L2 error against Hertz", None, False),
             ("P_ref_err", "contact force P against the finest-mesh reference of the same formulation and k_p "
                           "(runs at the reference's h left out, the half model's too: they share its "
@@ -1053,8 +1067,8 @@ def report_scaling(rows, ctx):
       "| contact share of solve |")
     A("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in ref_sel + mort_sel:
-        frac = ((r["time_mesh"] + r["time_setup"] + r["time_output"]) / r["time_total"]) if finite(r.get("time_total")) else float("nan")
-        sh = (r["search_time_per_call"] / r["energy_time_per_call"]) if finite(r.get("search_time_per_call")) else float("nan")
+        frac = fixed_cost_share(r) if finite(r.get("time_total")) else float("nan")
+        sh = search_share(r) if finite(r.get("search_time_per_call")) else float("nan")
         A("| %s | %g | %d | %s | %s | %.3g | %.3g | %s | %s | %.0f | %s | %s | %s | %s | %s | %s |" % (
             r["formulation"], r["h"], r["dofs"], r.get("iterations", "-"), r.get("energy_evals", "-"), r["solve_median"],
             r["wall_median"], fmt(r.get("linear_solve_time")), fmt(r.get("ratio_to_linear"), "%.1f"), r["peak_mb"],
@@ -1229,6 +1243,33 @@ def report_files(rows, ctx):
     return L
 
 
+def fixed_cost_share(r):
+    """Mesh reading, set-up and output over a run's whole time."""
+    return (r["time_mesh"] + r["time_setup"] + r["time_output"]) / r["time_total"]
+
+
+def search_share(r):
+    """A mesh's contact search per call over its energy evaluation per call."""
+    return r["search_time_per_call"] / r["energy_time_per_call"]
+
+
+def fastest(runs):
+    """The run of least median solve time."""
+    return min(runs, key=lambda r: r["solve_median"])
+
+
+def worst_ratio(runs):
+    """The run of most linear solves of its mesh."""
+    return max(runs, key=lambda r: r["ratio_to_linear"])
+
+
+def cost_ratio_pairs(rows):
+    """The pairs of formulation_ratio_rows the mortar cost target counts: h = 0.06 and the largest mesh
+    (one pair where they are the same)."""
+    pairs = formulation_ratio_rows(rows)
+    return [p for p in pairs if p[0] == 0.06] + [p for p in pairs[-1:] if p[0] != 0.06]
+
+
 def reference_solve_runs(rows):
     """The reference scene's one-rank runs at h = 0.06, k_p 2e6, gttol 1e-8 (gpts): those of the default
     strategy, and the converged ones with a solve time."""
@@ -1250,7 +1291,7 @@ def target_reference_solve(rows, ctx):
     d06, conv06 = reference_solve_runs(rows)
     if not conv06:
         return [("reference scene, h = 0.06, solve <= %g s" % REF_SOLVE_TARGET, "no converged run", "NOT MEASURED")]
-    best = min(conv06, key=lambda r: r["solve_median"])
+    best = fastest(conv06)
     dtxt = ("default (newton) %.3g s" % d06[0]["solve_median"]) if d06 and finite(d06[0].get("solve_median")) else "default: not converged"
     dok = bool(d06) and d06[0]["converged"] and d06[0]["solve_median"] <= REF_SOLVE_TARGET
     st = "MET" if dok else ("MET with %s only" % best["strategy"] if best["solve_median"] <= REF_SOLVE_TARGET
@@ -1266,7 +1307,7 @@ def target_linear_ratio(rows, ctx):
     rat, big_rat = linear_ratio_runs(ctx.ref_sel)
     if not big_rat:
         return [("time-to-solution <= %g linear solves" % LINEAR_RATIO_TARGET, "-", "NOT MEASURED")]
-    worst = max(big_rat, key=lambda r: r["ratio_to_linear"])
+    worst = worst_ratio(big_rat)
     small = [r for r in rat if r not in big_rat and r["ratio_to_linear"] > LINEAR_RATIO_TARGET]
     return [("time-to-solution <= %g linear solves of the same mesh (gpts, newton, k_p 2e6, 1e-8, uniform meshes from "
              "1e4 dofs; below, a linear solve takes milliseconds and fixed costs dominate)" % LINEAR_RATIO_TARGET,
@@ -1283,7 +1324,7 @@ def target_exponent(rows, ctx):
     ref_sel = ctx.ref_sel
     fit_solve, n_solve, fit_wall, fit_lin, fit_mort, n_mort = (ctx.fit_solve, ctx.n_solve, ctx.fit_wall, ctx.fit_lin,
                                                                 ctx.fit_mort, ctx.n_mort)
-    span = [r["dofs"] for r in ref_sel if 1e4 <= r["dofs"] <= 1.2e6]
+    span = [r["dofs"] for r in fit_runs(ref_sel)]
     if fit_solve and span and max(span) >= 5e5:
         return [("cost exponent <= %g from 1e4 to 1e6 dofs (solve time, gpts, newton)" % EXPONENT_TARGET,
                  "%.2f over %d meshes, %d..%d dofs (wall time: %.2f; linear solve: %s; mortar's solve time: %s)"
@@ -1301,13 +1342,14 @@ def target_fixed_costs(rows, ctx):
     big = ctx.ref_sel[-1] if ctx.ref_sel else None
     if not (big and finite(big.get("time_total"))):
         return []
-    frac = (big["time_mesh"] + big["time_setup"] + big["time_output"]) / big["time_total"]
+    frac = fixed_cost_share(big)
     ok = big["dofs"] >= 5e5
-    return [("mesh reading + set-up + output < 20 % of the total at 1e6 dofs",
+    return [("mesh reading + set-up + output < %g %% of the total at 1e6 dofs" % (100 * FIXED_COST_TARGET),
              "%.1f %% at %d dofs (mesh %.2f s, set-up %.2f s, output %.2f s of %.2f s; output off: -output none)"
              % (100 * frac, big["dofs"], big["time_mesh"], big["time_setup"], big["time_output"], big["time_total"]),
-             status(frac < 0.2) if ok else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)"
-             % (big["dofs"], status(frac < 0.2)))]
+             status(frac < FIXED_COST_TARGET) if ok
+             else "NOT MEASURED at 1e6 dofs (largest mesh here %d dofs: %s there)" % (big["dofs"],
+                                                                                    status(frac < FIXED_COST_TARGET)))]
 
 
 def target_search(rows, ctx):
@@ -1315,24 +1357,22 @@ def target_search(rows, ctx):
     big = ctx.ref_sel[-1] if ctx.ref_sel else None
     if not (big and finite(big.get("search_time_per_call"))):
         return []
-    f = big["search_time_per_call"] / big["energy_time_per_call"]
+    f = search_share(big)
     ok = big["dofs"] >= 5e5
     return [("contact search a small fraction of an energy evaluation at 1e6 dofs",
              "search %.3g ms per call, energy evaluation %.3g ms per call: %.2f %% at %d dofs"
              % (1e3 * big["search_time_per_call"], 1e3 * big["energy_time_per_call"], 100 * f, big["dofs"]),
-             (status(f < 0.1) + " (taken as < 10 %)") if ok
-             else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < 0.1), big["dofs"]))]
+             (status(f < SEARCH_TARGET) + " (taken as < %g %%)" % (100 * SEARCH_TARGET)) if ok
+             else "NOT MEASURED at 1e6 dofs (%s at %d dofs)" % (status(f < SEARCH_TARGET), big["dofs"]))]
 
 
 def target_mortar_cost(rows, ctx):
     """Mortar's solve time against gpts' on the same mesh (this sweep's pairs)."""
     out = ctx.out
-    pairs = formulation_ratio_rows(rows)
-    at06 = [p for p in pairs if p[0] == 0.06]
+    pairs = cost_ratio_pairs(rows)
     finest = pairs[-1] if pairs else None
-    items = [("h = 0.06", at06[0])] if at06 else []
-    if finest and not (at06 and finest is at06[0]):
-        items.append(("largest mesh of this sweep, h = %g (%d dofs)" % (finest[0], finest[1]["dofs"]), finest))
+    items = [("h = 0.06" if p[0] == 0.06 else "largest mesh of this sweep, h = %g (%d dofs)" % (p[0], p[1]["dofs"]), p)
+             for p in pairs]
     if not items:
         return [("mortar / gpts solve time <= %g at h = 0.06 and at the largest mesh" % COST_TARGET,
                  "no pair of converged runs", "NOT MEASURED")]
@@ -1614,11 +1654,17 @@ def select_plan(args):
     return [e for e in plan if e["configs"]]
 
 
+def read_run(out):
+    """<out>/run.json: the settings and figures of the sweep that wrote <out>/results.csv (repeat, elapsed,
+    bin_git, ...)."""
+    with open(os.path.join(out, "run.json")) as fh:
+        return json.load(fh)
+
+
 def report_only(args):
     """RESULTS.md and the plots again from <out>/results.csv and
     <out>/run.json (the settings and figures of the run that wrote them)."""
-    with open(os.path.join(args.out, "run.json")) as fh:
-        meta = json.load(fh)
+    meta = read_run(args.out)
     for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
         setattr(args, k, meta[k])
     args.bin_git = meta.get("bin_git")
@@ -1721,8 +1767,7 @@ def merge_sweep(args, plan, nconf, tmp):
     path = os.path.join(args.out, "results.csv")
     keys = {config_key(r) for r in new}
     rows = [r for r in read_csv(path) if config_key(r) not in keys] + new
-    with open(os.path.join(args.out, "run.json")) as fh:
-        meta = json.load(fh)
+    meta = read_run(args.out)
     meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, args.bin_git)] \
         + sys.argv[1:]
     meta["elapsed"] += time.time() - args.t0
