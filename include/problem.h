@@ -32,6 +32,7 @@ typedef struct {
   PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
   PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
   PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
+  PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances) */
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
@@ -68,6 +69,7 @@ typedef struct {
   PetscInt           h0Refreshes;   /* -lmvm_h0 contact: the H0 set-ups (the first included) */
   PetscInt           pairsDropped;  /* -lmvm_pair_ratio: the correction pairs dropped */
   PetscInt           lmvmRestarts;  /* -lmvm_restarts: the L-BFGS solves restarted */
+  PetscInt           decrementSolves; /* -lmvm_decrement_rtol: the H0 solves of the decrement test */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 
@@ -94,6 +96,8 @@ struct _n_Problem {
   Vec            lmvmX, lmvmG, lmvmW; /* L-BFGS (lmvm.c): the last iterate and its gradient, work */
   PetscBool      lmvmHave;            /* lmvmX, lmvmG hold an iterate of the current TAO solve */
   PetscReal      lmvmF0, lmvmG0;      /* the energy and gradient norm at the first iterate of the last TAO solve */
+  PetscReal      lmvmLambda0;         /* -lmvm_decrement_rtol: the decrement at the first iterate of the staged solve (-1: not yet) */
+  PetscBool      lmvmFinal;           /* the current TAO solve is the last stage (the decrement test applies) */
   ProblemResults res;
 };
 
