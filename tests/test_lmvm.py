@@ -93,3 +93,21 @@ def test_lmvm_ranks(tmp_path):
     print(f"iterations {s[1]['iterations']} and {s[2]['iterations']}; P {dP:.1e} apart")
     assert dP <= 1e-8
     assert abs(s[2]["iterations"] - s[1]["iterations"]) <= 0.1 * s[1]["iterations"]
+
+
+@pytest.mark.parametrize("case", ["hertz", "half-kp1e10"])
+def test_lmvm_decrement(case, tmp_path):
+    """-lmvm_decrement_rtol 1e-12 (the last stage stops on the decrement in
+    H0's norm instead of the gradient): P to Newton's within 1e-11 on the
+    reference scene (Newton solved to -tao_gttol 1e-12) and within 1e-8 on
+    the coarse mortar half scene at k_p = 1e10, push 0.3 (Newton at its
+    default stop), where -tao_gttol 1e-11 stops at the gradient's round-off;
+    one decrement solve per iteration after the first of the last stage."""
+    args = HERTZ if case == "hertz" else _case_args(0.25, 1e10, "mortar")
+    ref = run_contact(args, tmp_path, name="newton").summary
+    s = run_contact(args + ["-tao_type", "lmvm", "-lmvm_decrement_rtol", "1e-12"], tmp_path, name="lmvm").summary
+    dP = abs(s["contact_force"] / ref["contact_force"] - 1)
+    print(f"{s['iterations']} iterations ({s['tao_reason']}), {s['lmvm_decrement_solves']} decrement solves; P {dP:.1e}")
+    assert s["tao_reason"] == "CONVERGED_USER"
+    assert dP <= (1e-11 if case == "hertz" else 1e-8)
+    assert 0 < s["lmvm_decrement_solves"] <= s["iterations"] + 1
