@@ -28,6 +28,9 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - accuracy: bench/accuracy/results.json (scripts/accuracy_study.py);
 - oscillation: bench/formulations/oscillation_floor.json (scripts/oscillation_floor.py);
 - stress: bench/stress/results.json (scripts/stress_sweep.py, run by make stress);
+- stress-solvers: the same sweep's comparison with lmvm and blmvm
+  (bench/stress-lmvm, stress-blmvm) and with lmvm's tighter stops at
+  k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
@@ -286,7 +289,8 @@ def render_stress_solvers():
     newton = load("stress")
     return stress_sweep.solver_table([("Newton", newton), ("lmvm", load("stress-lmvm")),
                                       ("blmvm", load("stress-blmvm")),
-                                      ("lmvm, -tao_gttol 1e-11", load("stress-lmvm-gttol11"))], newton)
+                                      ("lmvm, -tao_gttol 1e-11", load("stress-lmvm-gttol11")),
+                                      ("lmvm, -lmvm_decrement_rtol 1e-12", load("stress-lmvm-decrement"))], newton)
 
 
 def parallel_rows():
