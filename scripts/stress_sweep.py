@@ -34,6 +34,7 @@ import datetime
 import json
 import os
 import re
+import shlex
 import sys
 import tempfile
 import time
@@ -150,7 +151,7 @@ def sweep(out, hs, kps, ranks, forms, resume):
     res.setdefault("commit", git("rev-parse", "--short", "HEAD")
                    + (" (with changes to src/ or include/)" if git("status", "--porcelain", "src", "include") else ""))
     # every invocation that adds runs: its command line, commit and start, for RESULTS.md's header
-    invocation = dict(args=" ".join(sys.argv[1:]), started=datetime.datetime.now().isoformat(timespec="seconds"),
+    invocation = dict(args=shlex.join(sys.argv[1:]), started=datetime.datetime.now().isoformat(timespec="seconds"),
                       commit=git("rev-parse", "--short", "HEAD")
                       + (" (with changes to src/ or include/)" if git("status", "--porcelain", "src", "include")
                          else ""), load_start=load_average(), runs=0)
