@@ -31,6 +31,7 @@ bench/README.md from results.json.
 """
 import argparse
 import datetime
+import hashlib
 import json
 import os
 import re
@@ -41,7 +42,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from contactrun import git, load_average, parse_tao_line, run_case  # noqa: E402
+from contactrun import copy_program, git, load_average, parse_tao_line, run_case  # noqa: E402
 
 SCENE = "meshes/hertz-half/hertz-half.opts"
 HS = [0.25, 0.1, 0.03, 0.01, 0.005]
@@ -60,6 +61,7 @@ def key(r):
 
 TAO_TYPE = "nls"     # --tao-type
 OPTIONS = []         # --options: more of the program's options, on every run
+BINARY = None        # --bin, copied once at the start of a sweep (None: bin/contact)
 
 
 def args_of(h, kp, push, form):
@@ -87,7 +89,7 @@ def one(h, kp, push, form, ranks, tmp, out):
     args = args_of(h, kp, push, form)
     cmd = "bin/contact " + " ".join(args) + " -output none"
     cmd = (f"mpiexec --oversubscribe -n {ranks} " if ranks > 1 else "") + cmd
-    p = run_case(args, tmp, "run", ranks=ranks, h5=False, timeout=TIMEOUT)
+    p = run_case(args, tmp, "run", ranks=ranks, h5=False, binary=BINARY, timeout=TIMEOUT)
     if p.timed_out:
         return dict(h=h, kp=kp, push=push, formulation=form, ranks=ranks, command=cmd, status=None, wall=TIMEOUT,
                     warnings=[], converged=False, message=f"killed by the sweep after {TIMEOUT} s")
@@ -157,6 +159,12 @@ def sweep(out, hs, kps, ranks, forms, resume):
                          else ""), load_start=load_average(), runs=0)
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
+        global BINARY
+        source = os.path.abspath(BINARY or os.path.join(ROOT, "bin", "contact"))
+        with open(source, "rb") as f:
+            invocation["binary"] = f"{os.path.relpath(source, ROOT) if source.startswith(ROOT) else source}, sha256 " \
+                                   f"{hashlib.sha256(f.read()).hexdigest()[:12]}"
+        BINARY = copy_program(tmp, source)  # a rebuild during the sweep does not mix versions
         for h in hs:
             for kp in kps:
                 for push in PUSHES:
@@ -322,7 +330,7 @@ def provenance(res):
     if calls:
         text += " Runs added by:\n\n" + "\n".join(
             f"- `python3 scripts/stress_sweep.py {c['args']}`: {c['runs']} runs, started {c['started']} at commit "
-            f"{c['commit']}" + (f"; load average {c['load_start']:.2f} at the start, {c['load_end']:.2f} at the end"
+            f"{c['commit']}" + (f" (program {c['binary']})" if "binary" in c else "") + (f"; load average {c['load_start']:.2f} at the start, {c['load_end']:.2f} at the end"
                                 if "load_end" in c else "") for c in calls)
     return text
 
@@ -394,10 +402,12 @@ def main():
     ap.add_argument("--tao-type", default="nls", help="the TAO type of every run (default nls, the program's)")
     ap.add_argument("--options", default="", help="more of the program's options for every run, one string "
                     "(e.g. '-tao_gttol 1e-11'); a sweep resumed must name the same")
+    ap.add_argument("--bin", default=None, help="the program (default bin/contact), copied once at the start")
     ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md from <out>/results.json")
     args = ap.parse_args()
-    global TAO_TYPE, OPTIONS
+    global TAO_TYPE, OPTIONS, BINARY
     TAO_TYPE = args.tao_type
+    BINARY = args.bin
     OPTIONS = args.options.split()
     bad = [h for h in args.h if h not in HS]
     if bad:
