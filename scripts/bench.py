@@ -45,7 +45,6 @@ reports the full mirrored problem's figures itself (-contact_interface_mirror_y
 import argparse
 import csv
 import datetime
-import hashlib
 import json
 import math
 import os
@@ -824,7 +823,7 @@ def bin_git(args):
 
 def report_header(rows, ctx):
     """The title, and how, when, on which binary and under what load the sweep ran."""
-    out, args, elapsed, load = ctx.out, ctx.args, ctx.elapsed, ctx.load
+    args, elapsed, load = ctx.args, ctx.elapsed, ctx.load
     L = []
     A = L.append
     A("# Benchmark: error against cost (`scripts/bench.py%s`)" % (" --quick" if args.quick else ""))
@@ -1819,8 +1818,7 @@ def main():
     tmp = tempfile.mkdtemp(prefix="bench-")
     try:
         args.bin_orig = os.path.abspath(args.bin)
-        with open(args.bin_orig, "rb") as fh:
-            args.bin_sha = hashlib.sha256(fh.read()).hexdigest()[:12]
+        args.bin_sha = contactrun.program_sha(args.bin_orig)
         args.bin_git = git_info(args.out)  # the tree when the program was copied
         args.bin = contactrun.copy_program(tmp, args.bin_orig)
         if args.formulations_cost:

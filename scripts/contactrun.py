@@ -19,6 +19,7 @@ the tree.
 Used by bench.py, bench_parallel.py, formulation_study.py, accuracy_study.py,
 stress_sweep.py, oscillation_floor.py and readme_figures.py.
 """
+import hashlib
 import json
 import math
 import os
@@ -177,6 +178,18 @@ def copy_program(tmp, binary=None):
     path = os.path.join(tmp, "contact")
     shutil.copy2(binary or BIN, path)
     return path
+
+
+def program_sha(path):
+    """The first 12 hex digits of the program's sha256, naming the build a
+    study ran."""
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()[:12]
+
+
+def power(x):
+    """A power of ten as the pages write it: 1e3, 2e6, 1e10, 1e-8."""
+    return f"{x:.0e}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
 
 
 def parse_log_view(path):

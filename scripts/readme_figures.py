@@ -230,18 +230,14 @@ def lmvm_pairs():
     return [(r, newton[(r["h"], r["kp"], r["ranks"])]) for r in rows]
 
 
-def kp_text(kp):
-    """A penalty as the pages write it: 2e6, 1e8."""
-    return f"{kp:.0e}".replace("e+0", "e")
-
-
 def render_lmvm():
+    from contactrun import power
     out = ["| h | dofs | k_p | ranks | solver | iterations | energy evaluations | H0 set-ups | pairs dropped "
            "| solve [s] | / Newton | P from Newton's |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r, n in lmvm_pairs():
         lm = r["tao"] != "nls"
         dP = f"{abs(r['P'] / n['P'] - 1):.1e}" if lm else ""
-        out.append(f"| {r['h']:g} | {r['dofs']:,} | {kp_text(r['kp'])} | {r['ranks']} | {r['tao']} | {r['iterations']} "
+        out.append(f"| {r['h']:g} | {r['dofs']:,} | {power(r['kp'])} | {r['ranks']} | {r['tao']} | {r['iterations']} "
                    f"| {r['evaluations']} | {r['h0'] if lm else ''} | {r['dropped'] if lm else ''} "
                    f"| {r['solve']:.2f} | {r['solve'] / n['solve']:.2f} | {dP} |")
     return "\n".join(out) + "\n"
@@ -409,10 +405,11 @@ def render_solver_speed():
 
 def render_lmvm_ratio():
     """The least and the greatest of the lmvm table's L-BFGS solve times over Newton's, and its largest k_p."""
+    from contactrun import power
     pairs = [(r, n) for r, n in lmvm_pairs() if r["tao"] != "nls"]
     ratios = [r["solve"] / n["solve"] for r, n in pairs]
     return (f"{min(ratios):.2f} to {max(ratios):.2f} times Newton's time up to "
-            f"k_p = {kp_text(max(r['kp'] for r, _ in pairs))}")
+            f"k_p = {power(max(r['kp'] for r, _ in pairs))}")
 
 
 def render_parallel_speedup():

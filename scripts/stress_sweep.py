@@ -31,7 +31,6 @@ bench/README.md from results.json.
 """
 import argparse
 import datetime
-import hashlib
 import json
 import os
 import re
@@ -42,7 +41,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from contactrun import copy_program, git, load_average, parse_tao_line, run_case  # noqa: E402
+from contactrun import copy_program, git, load_average, parse_tao_line, power, program_sha, run_case  # noqa: E402
 
 SCENE = "meshes/hertz-half/hertz-half.opts"
 HS = [0.25, 0.1, 0.03, 0.01, 0.005]
@@ -61,7 +60,6 @@ def key(r):
 
 TAO_TYPE = "nls"     # --tao-type
 OPTIONS = []         # --options: more of the program's options, on every run
-BINARY = None        # --bin, copied once at the start of a sweep (None: bin/contact)
 
 
 def args_of(h, kp, push, form):
@@ -85,11 +83,11 @@ def why(p):
     return rest[-1] if rest else f"exit status {p.returncode}, no output"
 
 
-def one(h, kp, push, form, ranks, tmp, out):
+def one(h, kp, push, form, ranks, tmp, out, binary):
     args = args_of(h, kp, push, form)
     cmd = "bin/contact " + " ".join(args) + " -output none"
     cmd = (f"mpiexec --oversubscribe -n {ranks} " if ranks > 1 else "") + cmd
-    p = run_case(args, tmp, "run", ranks=ranks, h5=False, binary=BINARY, timeout=TIMEOUT)
+    p = run_case(args, tmp, "run", ranks=ranks, h5=False, binary=binary, timeout=TIMEOUT)
     if p.timed_out:
         return dict(h=h, kp=kp, push=push, formulation=form, ranks=ranks, command=cmd, status=None, wall=TIMEOUT,
                     warnings=[], converged=False, message=f"killed by the sweep after {TIMEOUT} s")
@@ -132,7 +130,10 @@ def rank_agreement(runs):
     return out
 
 
-def sweep(out, hs, kps, ranks, forms, resume):
+def sweep(out, hs, kps, ranks, forms, resume, binary):
+    """The runs of hs x kps x PUSHES x forms x ranks not in <out>/results.json
+    (all, unless resume) with the program binary (None: bin/contact), copied
+    once so that a rebuild during the sweep does not mix versions."""
     path = os.path.join(out, "results.json")
     res = dict(scene=SCENE, runs=[])
     if resume and os.path.exists(path):
@@ -150,21 +151,17 @@ def sweep(out, hs, kps, ranks, forms, resume):
                          f"not of --tao-type {TAO_TYPE} --options '{' '.join(OPTIONS)}'")
     res.setdefault("load_start", load_average())
     res.setdefault("nice", os.nice(0))
-    res.setdefault("commit", git("rev-parse", "--short", "HEAD")
-                   + (" (with changes to src/ or include/)" if git("status", "--porcelain", "src", "include") else ""))
-    # every invocation that adds runs: its command line, commit and start, for RESULTS.md's header
+    head = git("rev-parse", "--short", "HEAD") + (" (with changes to src/ or include/)"
+                                                  if git("status", "--porcelain", "src", "include") else "")
+    res.setdefault("commit", head)
+    source = os.path.abspath(binary or os.path.join(ROOT, "bin", "contact"))
+    # every invocation that adds runs: its command line, commit, program and start, for RESULTS.md's header
     invocation = dict(args=shlex.join(sys.argv[1:]), started=datetime.datetime.now().isoformat(timespec="seconds"),
-                      commit=git("rev-parse", "--short", "HEAD")
-                      + (" (with changes to src/ or include/)" if git("status", "--porcelain", "src", "include")
-                         else ""), load_start=load_average(), runs=0)
+                      commit=head, binary=f"{os.path.relpath(source, ROOT) if source.startswith(ROOT) else source}, "
+                                          f"sha256 {program_sha(source)}", load_start=load_average(), runs=0)
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
-        global BINARY
-        source = os.path.abspath(BINARY or os.path.join(ROOT, "bin", "contact"))
-        with open(source, "rb") as f:
-            invocation["binary"] = f"{os.path.relpath(source, ROOT) if source.startswith(ROOT) else source}, sha256 " \
-                                   f"{hashlib.sha256(f.read()).hexdigest()[:12]}"
-        BINARY = copy_program(tmp, source)  # a rebuild during the sweep does not mix versions
+        program = copy_program(tmp, source)
         for h in hs:
             for kp in kps:
                 for push in PUSHES:
@@ -172,7 +169,7 @@ def sweep(out, hs, kps, ranks, forms, resume):
                         for n in ranks:
                             if (h, kp, push, form, n) in done:
                                 continue
-                            r = one(h, kp, push, form, n, tmp, out)
+                            r = one(h, kp, push, form, n, tmp, out, program)
                             res["runs"].append(r)
                             if not invocation["runs"]:
                                 res.setdefault("invocations", []).append(invocation)
@@ -220,11 +217,6 @@ def iteration_spread(runs):
         return "-"
     v, cut = max(d)
     return f"{100 * v:.0f} %" + (" *" if cut else "")
-
-
-def power(x):
-    """1e3, 1e6, 1e10, 1e-8."""
-    return f"{x:.0e}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
 
 
 def largest(xs, fmt):
@@ -405,9 +397,8 @@ def main():
     ap.add_argument("--bin", default=None, help="the program (default bin/contact), copied once at the start")
     ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md from <out>/results.json")
     args = ap.parse_args()
-    global TAO_TYPE, OPTIONS, BINARY
+    global TAO_TYPE, OPTIONS
     TAO_TYPE = args.tao_type
-    BINARY = args.bin
     OPTIONS = args.options.split()
     bad = [h for h in args.h if h not in HS]
     if bad:
@@ -422,7 +413,7 @@ def main():
         with open(os.path.join(args.out, "results.json")) as f:
             res = json.load(f)
     else:
-        res = sweep(args.out, args.h, args.kp, args.ranks, args.formulation, args.resume)
+        res = sweep(args.out, args.h, args.kp, args.ranks, args.formulation, args.resume, args.bin)
     text = tables(res)
     with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
         f.write("# Robustness sweep\n\n" + provenance(res) + "\n\n" + text + "\nEvery run:\n\n" + every_run(res))
