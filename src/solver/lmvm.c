@@ -197,21 +197,24 @@ static PetscErrorCode ProblemDecrement(Problem p, Tao tao, Vec G, PetscReal *lam
    the last solve's. */
 static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
 {
-  Problem   p = (Problem)ctx;
-  PetscReal gatol = tao->gatol, grtol = tao->grtol, gttol = tao->gttol, lambda;
-  Vec       G;
+  Problem            p = (Problem)ctx;
+  PetscReal          gatol, grtol, gttol, lambda;
+  PetscInt           it;
+  TaoConvergedReason reason;
+  Vec                G;
 
   PetscFunctionBeginUser;
   if (!(p->lmvmFinal && p->opt.decrementRtol > 0 && p->lmvmLambda0 > 0)) {
     PetscCall(TaoDefaultConvergenceTest(tao, NULL));
     PetscFunctionReturn(0);
   }
-  tao->gatol = tao->grtol = tao->gttol = 0.0;
+  PetscCall(TaoGetTolerances(tao, &gatol, &grtol, &gttol));
+  PetscCall(TaoSetTolerances(tao, 0.0, 0.0, 0.0));
   PetscCall(TaoDefaultConvergenceTest(tao, NULL));
-  tao->gatol = gatol;
-  tao->grtol = grtol;
-  tao->gttol = gttol;
-  if (tao->reason != TAO_CONTINUE_ITERATING || tao->niter == 0) PetscFunctionReturn(0);
+  PetscCall(TaoSetTolerances(tao, gatol, grtol, gttol));
+  PetscCall(TaoGetConvergedReason(tao, &reason));
+  PetscCall(TaoGetIterationNumber(tao, &it));
+  if (reason != TAO_CONTINUE_ITERATING || it == 0) PetscFunctionReturn(0);
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
   PetscCall(ProblemDecrement(p, tao, G, &lambda));
   PetscCall(PetscInfo(tao, "L-BFGS: decrement %g, %g of the first iterate's\n", (double)lambda, (double)(lambda / p->lmvmLambda0)));
