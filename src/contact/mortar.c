@@ -36,7 +36,12 @@
    another where their distances tie: the piece is cut at that tie, found by
    bisection on the difference of the squared distances. Every piece is
    checked at its Gauss points, and halved where it is not uniform (to 2^-12
-   of the edge at most), so that each segment's integrand is smooth. Each
+   of the edge at most), so that each segment's integrand is smooth. An end
+   of a piece where two features tie to round-off (a slave node on a half
+   model's mirror line, as close to the master's end edge as to its image)
+   belongs to either and is not cut there: else round-off, choosing one or
+   the other, changes the segments and with them the quadrature error from
+   one state to the next, a jump in the energy (MortarEndTies). Each
    segment takes a Gauss rule of
    -contact_quadrature_points points (4 by default: degree 7).
 
@@ -98,6 +103,7 @@
 
 #define MORTAR_MAX_SEG   64
 #define MORTAR_MAX_DEPTH 12
+#define MORTAR_TIE_RTOL  1e-12 /* two features' squared distances from a point that tie to round-off */
 
 /* A quadrature point of a segment: slave edge, shape functions, weight (with
    the reference length), gap. */
@@ -418,6 +424,22 @@ static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, Pe
   return PETSC_TRUE;
 }
 
+/* Whether the features of regions R and O are at the same distance from
+   point xi of slave edge se, to round-off. A slave node on a half model's
+   mirror line is as close to the master's end edge as to its image, and
+   round-off picks either: taken as a region of its own, the image made
+   MortarSplit halve the edge towards the node to its depth limit, so that
+   the edge's weighted gaps came from 20 pieces at one state and from one
+   at the next, a jump of their quadrature error (a jump of 4.5e-9 in g_j
+   and of 1.4e-9 in the energy at k_p = 1e10, h = 0.25, push 0.01, the
+   line search's failure there). */
+static PetscBool MortarEndTies(const Mortar *m, PetscInt s, PetscInt se, PetscReal xi, MortarRegion R, MortarRegion O)
+{
+  const PetscReal dR = MortarRegionDistance2(m, s, se, R, xi), dO = MortarRegionDistance2(m, s, se, O, xi);
+
+  return (PetscBool)(PetscAbsReal(dR - dO) <= MORTAR_TIE_RTOL * (dR + dO + PetscSqr(m->b.S[s].elen[se])));
+}
+
 /* Splits [a, b] of slave edge se, whose ends lie in regions Ra and Rb,
    until the closest point stays in one region over each piece (checked at
    the pieces' Gauss points and midpoints), so that every piece's integrand
@@ -436,6 +458,9 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
     const ContactSurface *M = &m->b.S[1 - s];
     PetscInt              ea, eb, i, j;
     PetscBool             ma, mb;
+    /* an end where the two features tie belongs to either: no cut where the piece is the other end's region throughout */
+    if (MortarEndTies(m, s, se, a, Ra, Rb) && MortarPieceUniform(m, s, se, a, b, Rb, cache)) return;
+    if (MortarEndTies(m, s, se, b, Rb, Ra) && MortarPieceUniform(m, s, se, a, b, Ra, cache)) return;
     if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && !ContactGapEndBlended(M, Ra.id, i)) {
       /* two edges at a corner: its fan, if the bisector lies in it */
       c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, Ra.mirror);
