@@ -15,6 +15,7 @@ typedef struct {
   PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
   PetscErrorCode (*getdofs)(EnergyTerm, PetscInt *n, PetscInt **idx);
   PetscErrorCode (*setpenaltyfactor)(EnergyTerm, PetscReal);
+  PetscErrorCode (*getpenaltystiffness)(EnergyTerm, PetscReal *);
   PetscErrorCode (*sethessianexact)(EnergyTerm, PetscBool);
   PetscErrorCode (*postprocess)(EnergyTerm, Body[]);
   PetscErrorCode (*view)(EnergyTerm, Body[]);
@@ -47,6 +48,9 @@ PetscErrorCode EnergyTermComputeHessian(EnergyTerm, Body[], Mat H);
 PetscErrorCode EnergyTermGetDofs(EnergyTerm, PetscInt *n, PetscInt **idx);
 /* Continuation: the term's penalty times factor. */
 PetscErrorCode EnergyTermSetPenaltyFactor(EnergyTerm, PetscReal factor);
+/* After the set-up: the penalty's stiffness against the bodies', k_p h / E*
+   (0 for a term without a penalty). */
+PetscErrorCode EnergyTermGetPenaltyStiffness(EnergyTerm, PetscReal *stiffness);
 /* Adds the second-order part to the Hessian (or not). */
 PetscErrorCode EnergyTermSetHessianExact(EnergyTerm, PetscBool);
 /* Collective: the term's results from the state in the bodies' local vectors. */

@@ -32,7 +32,7 @@ typedef struct {
   PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
   PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
   PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
-  PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances) */
+  PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances; -1: not given, chosen with the solver) */
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
@@ -70,6 +70,7 @@ typedef struct {
   PetscInt           pairsDropped;  /* -lmvm_pair_ratio: the correction pairs dropped */
   PetscInt           lmvmRestarts;  /* -lmvm_restarts: the L-BFGS solves restarted */
   PetscInt           decrementSolves; /* -lmvm_decrement_rtol: the H0 solves of the decrement test */
+  PetscInt           decrementFloor;  /* -lmvm_decrement_rtol: last stages ended at the decrement's round-off floor */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 
@@ -97,6 +98,7 @@ struct _n_Problem {
   PetscBool      lmvmHave;            /* lmvmX, lmvmG hold an iterate of the current TAO solve */
   PetscReal      lmvmF0, lmvmG0;      /* the energy and gradient norm at the first iterate of the last TAO solve */
   PetscReal      lmvmLambda0;         /* -lmvm_decrement_rtol: the decrement at the first iterate of the staged solve (-1: not yet) */
+  PetscReal      lmvmLambda;          /* -lmvm_decrement_rtol: the decrement at the current TAO solve's last iterate (-1: none yet) */
   PetscBool      lmvmFinal;           /* the current TAO solve is the last stage (the decrement test applies) */
   ProblemResults res;
 };

@@ -130,10 +130,11 @@ def rank_agreement(runs):
     return out
 
 
-def sweep(out, hs, kps, ranks, forms, resume, binary):
+def sweep(out, hs, kps, ranks, forms, resume, binary, redo=False):
     """The runs of hs x kps x PUSHES x forms x ranks not in <out>/results.json
-    (all, unless resume) with the program binary (None: bin/contact), copied
-    once so that a rebuild during the sweep does not mix versions."""
+    (all, unless resume; with redo, those there too, which they replace) with
+    the program binary (None: bin/contact), copied once so that a rebuild
+    during the sweep does not mix versions."""
     path = os.path.join(out, "results.json")
     res = dict(scene=SCENE, runs=[])
     if resume and os.path.exists(path):
@@ -142,6 +143,12 @@ def sweep(out, hs, kps, ranks, forms, resume, binary):
     elif os.path.isdir(os.path.join(out, "stopped")):
         for name in os.listdir(os.path.join(out, "stopped")):
             os.remove(os.path.join(out, "stopped", name))
+    chosen = {(h, kp, push, f, n) for h in hs for kp in kps for push in PUSHES for f in forms for n in ranks}
+    replaced = [r for r in res["runs"] if redo and key(r) in chosen]
+    res["runs"] = [r for r in res["runs"] if r not in replaced]
+    for r in replaced:  # a replaced stopped run's kept output goes with it
+        if r.get("log") and os.path.exists(os.path.join(out, r["log"])):
+            os.remove(os.path.join(out, r["log"]))
     done = {key(r) for r in res["runs"]}
     res.setdefault("started", datetime.datetime.now().isoformat(timespec="seconds"))
     res.setdefault("tao_type", TAO_TYPE)
@@ -159,6 +166,8 @@ def sweep(out, hs, kps, ranks, forms, resume, binary):
     invocation = dict(args=shlex.join(sys.argv[1:]), started=datetime.datetime.now().isoformat(timespec="seconds"),
                       commit=head, binary=f"{os.path.relpath(source, ROOT) if source.startswith(ROOT) else source}, "
                                           f"sha256 {program_sha(source)}", load_start=load_average(), runs=0)
+    if replaced:
+        invocation["replaced"] = len(replaced)
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         program = copy_program(tmp, source)
@@ -321,7 +330,8 @@ def provenance(res):
     text = " ".join(out)
     if calls:
         text += " Runs added by:\n\n" + "\n".join(
-            f"- `python3 scripts/stress_sweep.py {c['args']}`: {c['runs']} runs, started {c['started']} at commit "
+            f"- `python3 scripts/stress_sweep.py {c['args']}`: {c['runs']} runs"
+            + (f" (replacing {c['replaced']} of an earlier invocation)" if c.get("replaced") else "") + ", started {c['started']} at commit "
             f"{c['commit']}" + (f" (program {c['binary']})" if "binary" in c else "") + (f"; load average {c['load_start']:.2f} at the start, {c['load_end']:.2f} at the end"
                                 if "load_end" in c else "") for c in calls)
     return text
@@ -387,6 +397,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "bench", "stress"))
     ap.add_argument("--resume", action="store_true", help="keep the runs already in <out>/results.json")
+    ap.add_argument("--redo", action="store_true", help="with --resume: run the chosen cases again, replacing their runs "
+                    "in <out>/results.json (a new build's figures for part of a sweep)")
     ap.add_argument("--h", type=float, nargs="+", default=HS, help="a subset of the mesh sizes")
     ap.add_argument("--kp", type=float, nargs="+", default=KPS, help="a subset of the penalties")
     ap.add_argument("--ranks", type=int, nargs="+", default=RANKS, choices=RANKS)
@@ -400,6 +412,8 @@ def main():
     global TAO_TYPE, OPTIONS
     TAO_TYPE = args.tao_type
     OPTIONS = args.options.split()
+    if args.redo and not args.resume:
+        raise SystemExit("--redo: only with --resume (without it every run is new)")
     bad = [h for h in args.h if h not in HS]
     if bad:
         raise SystemExit(f"--h: {bad} not among the sweep's sizes {HS}")
@@ -413,7 +427,7 @@ def main():
         with open(os.path.join(args.out, "results.json")) as f:
             res = json.load(f)
     else:
-        res = sweep(args.out, args.h, args.kp, args.ranks, args.formulation, args.resume, args.bin)
+        res = sweep(args.out, args.h, args.kp, args.ranks, args.formulation, args.resume, args.bin, args.redo)
     text = tables(res)
     with open(os.path.join(args.out, "RESULTS.md"), "w") as f:
         f.write("# Robustness sweep\n\n" + provenance(res) + "\n\n" + text + "\nEvery run:\n\n" + every_run(res))

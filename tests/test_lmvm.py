@@ -111,3 +111,24 @@ def test_lmvm_decrement(case, tmp_path):
     assert s["tao_reason"] == "CONVERGED_USER"
     assert dP <= (1e-11 if case == "hertz" else 1e-8)
     assert 0 < s["lmvm_decrement_solves"] <= s["iterations"] + 1
+
+
+def test_lmvm_decrement_default(tmp_path):
+    """Without -lmvm_decrement_rtol, the last stage stops on the decrement
+    (r = 1e-13) where a pair's k_p h / E* exceeds 1e4 (the coarse mortar half
+    scene at k_p = 1e10: 3.8e6) and no gradient tolerance is given, and on
+    the gradient tolerances otherwise: -tao_gttol given there, or the
+    reference scene's k_p = 2e6 (k_p h / E* = 347 at h = 0.1). At the stiff
+    penalty 1 and 2 ranks give the same P to 1e-8 (measured 1.4e-9)."""
+    stiff = _case_args(0.25, 1e10, "mortar") + ["-tao_type", "lmvm"]
+    s = {n: run_contact(stiff, tmp_path, ranks=n, name=f"np{n}").summary for n in (1, 2)}
+    dP = abs(s[2]["contact_force"] / s[1]["contact_force"] - 1)
+    print(f"stiff: {s[1]['iterations']} and {s[2]['iterations']} iterations ({s[1]['tao_reason']}), P {dP:.1e} apart")
+    for n in (1, 2):
+        assert s[n]["tao_reason"] == "CONVERGED_USER" and s[n]["lmvm_decrement_solves"] > 0
+    assert dP <= 1e-8
+    given = run_contact(stiff + ["-tao_gttol", "1e-10"], tmp_path, name="gttol").summary
+    ref = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", 0.1, "-output", "none",
+                       "-tao_type", "lmvm"], tmp_path, name="ref").summary
+    for r in (given, ref):
+        assert r["tao_reason"] == "CONVERGED_GATOL" and "lmvm_decrement_solves" not in r

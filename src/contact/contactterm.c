@@ -198,6 +198,17 @@ static PetscErrorCode ContactTermDiagnose(EnergyTerm t, size_t n, char why[])
   PetscFunctionReturn(0);
 }
 
+/* k_p h / E*: the penalty's stiffness against the bodies' at the contact
+   (ContactTermSetPenalty's h; 1000 with -contact_penalty auto). */
+static PetscErrorCode ContactTermGetPenaltyStiffness(EnergyTerm t, PetscReal *stiffness)
+{
+  const ContactTerm *b = (const ContactTerm *)t->data;
+
+  PetscFunctionBeginUser;
+  *stiffness = b->spec.kp * b->spec.kpH / b->spec.Estar;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec, EnergyTerm t)
 {
   PetscFunctionBeginUser;
@@ -207,14 +218,15 @@ PetscErrorCode ContactTermInitialize(ContactTerm *b, const ContactPairSpec *spec
     b->S[s].body = spec->body[s];
     PetscCall(PetscStrncpy(b->S[s].group, spec->group[s], sizeof(b->S[s].group)));
   }
-  t->ops.getdofs          = ContactTermGetDofs;
-  t->ops.setpenaltyfactor = ContactTermSetPenaltyFactor;
-  t->ops.sethessianexact  = ContactTermSetHessianExact;
-  t->ops.view             = ContactTermView;
-  t->ops.writejson        = ContactTermWriteJSON;
-  t->ops.writehdf5        = ContactTermWriteHDF5;
-  t->ops.writexdmf        = ContactTermWriteXDMF;
-  t->ops.getprofile       = ContactTermGetProfile;
-  t->ops.diagnose         = ContactTermDiagnose;
+  t->ops.getdofs             = ContactTermGetDofs;
+  t->ops.setpenaltyfactor    = ContactTermSetPenaltyFactor;
+  t->ops.getpenaltystiffness = ContactTermGetPenaltyStiffness;
+  t->ops.sethessianexact     = ContactTermSetHessianExact;
+  t->ops.view                = ContactTermView;
+  t->ops.writejson           = ContactTermWriteJSON;
+  t->ops.writehdf5           = ContactTermWriteHDF5;
+  t->ops.writexdmf           = ContactTermWriteXDMF;
+  t->ops.getprofile          = ContactTermGetProfile;
+  t->ops.diagnose            = ContactTermDiagnose;
   PetscFunctionReturn(0);
 }

@@ -300,6 +300,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_pairs_dropped\": %d,\n", (int)p->res.pairsDropped); /* -lmvm_pair_ratio */
   if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_restarts\": %d,\n", (int)p->res.lmvmRestarts); /* -lmvm_restarts */
   if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_solves\": %d,\n", (int)p->res.decrementSolves); /* -lmvm_decrement_rtol */
+  if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_floor_stops\": %d,\n", (int)p->res.decrementFloor);
   ContactJSONKeyReal(fp, "  ", "energy", p->res.energy);
   ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
   ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);

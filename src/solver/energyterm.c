@@ -113,6 +113,14 @@ PetscErrorCode EnergyTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, Pe
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode EnergyTermGetPenaltyStiffness(EnergyTerm t, PetscReal *stiffness)
+{
+  PetscFunctionBeginUser;
+  *stiffness = 0.0;
+  if (t->ops.getpenaltystiffness) PetscCall(t->ops.getpenaltystiffness(t, stiffness));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode EnergyTermDiagnose(EnergyTerm t, size_t n, char why[])
 {
   PetscFunctionBeginUser;

@@ -60,7 +60,8 @@
    penalty's 2 stages from 0.03): at h = 0.03 and k_p = 2e6 12 iterations
    against 31 in one stage, at k_p = 1e8 14 against 96.
 
-   The stopping test: -tao_gttol 1e-10 (Newton's is 1e-8). L-BFGS converges
+   The stopping test, where the penalty is not stiff (see the decrement
+   test): -tao_gttol 1e-10 (Newton's is 1e-8). L-BFGS converges
    linearly, so it stops just below its tolerance, where Newton's last,
    quadratic, step lands far below it: at 1e-8 the contact force P was 2e-7
    to 2e-6 from Newton's (to 1e-12) at h = 0.03; at 1e-10 6e-11 there, for 2
@@ -69,7 +70,7 @@
    the mortar half scene at h = 0.25 stops and h = 0.1 takes 380 iterations
    instead of 70).
 
-   The decrement test (-lmvm_decrement_rtol rtol, default 0: off). At
+   The decrement test (-lmvm_decrement_rtol rtol). At
    k_p = 1e10 the gradient test leaves P 4.7e-8 apart between 1 and 2 ranks
    at h = 0.01, and its tighter value is below the gradient's round-off on
    coarse meshes. The Newton decrement in H0's norm,
@@ -114,14 +115,33 @@
      17, 4.4e-12; r 1e-12 19, 3.0e-13. The same at k_p = 1e8: default 16,
      6.7e-9; r 1e-12 20, 2.0e-11. At k_p = 1e10: 85 both, the same P.
      2 ranks, mortar, h = 0.1, push 0.3: 70 default, 71 with r 1e-12.
-   So r = 1e-12 meets 1e-8 between ranks on both formulations and converges
-   wherever the default does, for -1 to 3 more iterations at k_p = 1e10; at
-   the normal penalty it is a tighter test than the default, 5 iterations
-   more. */
+   So the test is the default where the penalty is stiff: where a pair's
+   k_p h / E* exceeds LMVM_STIFF_PENALTY = 1e4 (ten times the automatic
+   penalty's 1000; the sweep's k_p = 1e10 is 9.1e4 at h = 0.005 to 3.8e6 at
+   h = 0.25, its 1e6 at most 380, the reference scene 347 at h = 0.1) and no -tao_gatol, -tao_grtol or
+   -tao_gttol is given, with r = 1e-13; elsewhere the gradient test, which at
+   the normal penalty stops 5 iterations sooner (14 against 19 at r = 1e-12
+   on the reference scene) with P within 6e-11 of Newton's. r = 1e-13, not
+   1e-12: at 1e-12 one pair of the k_p = 1e10 sweep's 24 (h = 0.25 to 0.01)
+   stayed 1.3e-8 apart. Its margin to the decrement's round-off floor is
+   smaller: run with r = 1e-16, the half scene at h = 0.25 and 0.1 (gpts and
+   mortar, push 0.15 and 0.3) reaches 7e-15 to 2.5e-14 of lambda_0 before
+   its line search fails. So a last stage whose line search fails within
+   LMVM_DECREMENT_FLOOR = 10 of the tolerance (lambda <= 1e-12 lambda_0)
+   ends converged at that floor, as TAO_CONVERGED_USER, not restarted or cut
+   back (JSON lmvm_decrement_floor_stops). Measured with the default (the
+   k_p = 1e10 part of the sweep, h = 0.25 to 0.01, both formulations, 1 and
+   2 ranks: scripts/stress_sweep.py --kp 1e10 --h 0.25 0.1 0.03 0.01
+   --tao-type lmvm): all 48 converge, P of 1 and 2 ranks within 1.4e-9 in
+   every pair. */
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
 #include "schur.h"
 #include "substructure.h"
+
+#define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
+#define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
+#define LMVM_DECREMENT_FLOOR 10.0  /* a line search failure within this factor of it is the decrement's round-off floor */
 
 /* H0 = K + C(X) into p->H, whose factorisation the H0 KSP's preconditioner
    redoes when the matrix changes. */
@@ -218,8 +238,17 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
   PetscCall(ProblemDecrement(p, tao, G, &lambda));
   PetscCall(PetscInfo(tao, "L-BFGS: decrement %g, %g of the first iterate's\n", (double)lambda, (double)(lambda / p->lmvmLambda0)));
+  p->lmvmLambda = lambda;
   if (lambda <= p->opt.decrementRtol * p->lmvmLambda0) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
   PetscFunctionReturn(0);
+}
+
+/* Whether a last stage whose line search failed is at the decrement's
+   round-off floor: its last decrement within LMVM_DECREMENT_FLOOR of the
+   tolerance. */
+static PetscBool ProblemLMVMAtFloor(Problem p)
+{
+  return (PetscBool)(p->lmvmFinal && p->opt.decrementRtol > 0 && p->lmvmLambda0 > 0 && p->lmvmLambda >= 0 && p->lmvmLambda <= LMVM_DECREMENT_FLOOR * p->opt.decrementRtol * p->lmvmLambda0);
 }
 
 /* TAO's update at the start of each iteration, before the LMVM matrix takes
@@ -235,7 +264,8 @@ static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
   if (it % p->opt.h0Refresh == 0) PetscCall(ProblemComputeH0(p, X));
   if (it == 0) { /* TAO starts the solve with an empty history */
-    p->lmvmHave = PETSC_FALSE;
+    p->lmvmHave   = PETSC_FALSE;
+    p->lmvmLambda = -1.0;
     PetscCall(TaoGetSolutionStatus(tao, NULL, &p->lmvmF0, &p->lmvmG0, NULL, NULL, NULL));
   }
   if (it == 0 && p->opt.decrementRtol > 0 && p->lmvmLambda0 <= 0) PetscCall(ProblemDecrement(p, tao, G, &p->lmvmLambda0));
@@ -262,6 +292,12 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
     *its += n;
     if (g0 < 0) g0 = p->lmvmG0;
     f0 = p->lmvmF0;
+    if (*reason == TAO_DIVERGED_LS_FAILURE && ProblemLMVMAtFloor(p)) {
+      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(p->lmvmLambda / p->lmvmLambda0), (double)LMVM_DECREMENT_FLOOR));
+      *reason = TAO_CONVERGED_USER;
+      p->res.decrementFloor++;
+      break;
+    }
     if (!p->lmvmX || *reason != TAO_DIVERGED_LS_FAILURE || r >= p->opt.lmvmRestarts || !(f < f0) || *its >= maxit) break;
     /* the restart stops where the first solve would have: its gradient tolerances relative to the first iterate's */
     PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
@@ -271,6 +307,29 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
   }
   PetscCall(TaoSetTolerances(p->tao, gatol, grtol, gttol));
   PetscCall(TaoSetMaximumIterations(p->tao, maxit));
+  PetscFunctionReturn(0);
+}
+
+/* -lmvm_decrement_rtol not given: LMVM_DECREMENT_RTOL where a pair's k_p h / E*
+   exceeds LMVM_STIFF_PENALTY, unless the user gave a gradient tolerance; else
+   off. After the terms' set-up (without it, -help, off). */
+static PetscErrorCode ProblemChooseDecrementTest(Problem p)
+{
+  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
+  PetscBool         given  = PETSC_FALSE, flg;
+  PetscReal         stiff  = 0.0, s;
+
+  PetscFunctionBeginUser;
+  for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]); ++i) {
+    PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
+    given = (PetscBool)(given || flg);
+  }
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
+    stiff = PetscMax(stiff, s);
+  }
+  p->opt.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
+  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->opt.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
   PetscFunctionReturn(0);
 }
 
@@ -290,6 +349,8 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
   /* a tighter stop than Newton's 1e-8: L-BFGS converges linearly, so it stops
      near its tolerance, where Newton's last step lands far below it */
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-10));
+  /* the decrement test where the penalty is stiff and the user chose no test */
+  if (p->opt.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p));
   /* penalty continuation where the user and the scene chose none */
   if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) {
     p->opt.penaltyStages = 3;
