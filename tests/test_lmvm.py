@@ -132,3 +132,20 @@ def test_lmvm_decrement_default(tmp_path):
                        "-tao_type", "lmvm"], tmp_path, name="ref").summary
     for r in (given, ref):
         assert r["tao_reason"] == "CONVERGED_GATOL" and "lmvm_decrement_solves" not in r
+
+
+def test_lmvm_decrement_floor(tmp_path):
+    """-lmvm_decrement_rtol 1e-14 asks for less than the decrement's round-off
+    floor allows on the coarse mortar half scene at k_p = 1e10, push 0.3 (7e-15
+    to 2.5e-14 of the first iterate's): the last stage's line search fails
+    within 10 of the tolerance, and the solve ends converged there (one floor
+    stop, TAO reason CONVERGED_USER, no cutback; 46 iterations) with P within
+    1e-8 of Newton's. Below the factor of 10 it is not a floor: 1e-15 cuts the
+    load back 4 times and stops (DIVERGED_LS_FAILURE after 620 iterations)."""
+    args = _case_args(0.25, 1e10, "mortar")
+    ref = run_contact(args, tmp_path, name="newton").summary
+    s = run_contact(args + ["-tao_type", "lmvm", "-lmvm_decrement_rtol", "1e-14"], tmp_path, name="lmvm").summary
+    dP = abs(s["contact_force"] / ref["contact_force"] - 1)
+    print(f"{s['iterations']} iterations ({s['tao_reason']}), {s['lmvm_decrement_floor_stops']} floor stops; P {dP:.1e}")
+    assert s["tao_reason"] == "CONVERGED_USER" and s["lmvm_decrement_floor_stops"] == 1 and s["load_cutbacks"] == 0
+    assert dP <= 1e-8

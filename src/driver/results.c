@@ -281,7 +281,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  PetscCall(TaoGetConvergedReason(p->tao, &reason));
+  reason = p->res.reason; /* the solve's, as printed: TAO's last, or the program's (a decrement floor, force control) */
   PetscCall(TaoGetType(p->tao, &type));
   PetscCall(VecGetSize(p->X, &dofs));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
