@@ -285,8 +285,9 @@ def render_stress_solvers():
     newton = load("stress")
     return stress_sweep.solver_table([("Newton", newton), ("lmvm", load("stress-lmvm")),
                                       ("blmvm", load("stress-blmvm")),
-                                      ("lmvm, -tao_gttol 1e-11", load("stress-lmvm-gttol11")),
-                                      ("lmvm, -lmvm_decrement_rtol 1e-12", load("stress-lmvm-decrement"))], newton)
+                                      ("lmvm, -tao_gttol 1e-11 (an earlier build)", load("stress-lmvm-gttol11"), False),
+                                      ("lmvm, -lmvm_decrement_rtol 1e-12 (an earlier build)", load("stress-lmvm-decrement"),
+                                       False)], newton)
 
 
 def parallel_rows():

@@ -327,11 +327,13 @@ def provenance(res):
     elif not calls:
         out.append(f"Started {res['started']} at commit {res['commit']}; load average {res['load_start']:.2f} at "
                    f"the start, {res['load_end']:.2f} at the end.")
+    elif sum(c["runs"] for c in calls) < len(res["runs"]):  # runs from before invocations were recorded
+        out.append(f"Started {res['started']} at commit {res['commit']} (load average {res['load_start']:.2f}).")
     text = " ".join(out)
     if calls:
         text += " Runs added by:\n\n" + "\n".join(
             f"- `python3 scripts/stress_sweep.py {c['args']}`: {c['runs']} runs"
-            + (f" (replacing {c['replaced']} of an earlier invocation)" if c.get("replaced") else "") + ", started {c['started']} at commit "
+            + (f" (replacing {c['replaced']} earlier runs)" if c.get("replaced") else "") + f", started {c['started']} at commit "
             f"{c['commit']}" + (f" (program {c['binary']})" if "binary" in c else "") + (f"; load average {c['load_start']:.2f} at the start, {c['load_end']:.2f} at the end"
                                 if "load_end" in c else "") for c in calls)
     return text
@@ -368,12 +370,14 @@ def solver_rows(label, res, newton):
 
 
 def solver_table(sweeps, newton):
-    """The comparison table of several sweeps [(label, res)] with Newton's."""
+    """The comparison table of several sweeps [(label, res) or (label, res,
+    False)] with Newton's; False: a sweep of another build than Newton's,
+    whose times and stops are not compared."""
     return "\n".join(["| sweep | k_p | h | converged | stopped | 1 vs 2 ranks \\|dP\\|/P | pairs above "
                       f"{power(RANK_TOL)} | pairs with iterations > 10 % apart | summed solve / Newton's |",
                       "|---|---|---|---|---|---|---|---|---|"]
-                     + [line for label, res in sweeps
-                        for line in solver_rows(label, res, None if res is newton else newton)]) + "\n"
+                     + [line for label, res, *same in sweeps
+                        for line in solver_rows(label, res, None if res is newton or same == [False] else newton)]) + "\n"
 
 
 def every_run(res):
