@@ -77,6 +77,9 @@ that they say what its RESULTS.md says):
   range of linear solves; mesh, set-up and output's share of the largest run;
   the search against an energy evaluation; mortar / gpts at h = 0.06 and on the
   largest mesh, and each formulation's Newton steps);
+- formulations-cost: from bench/formulations.csv (bench.py --formulations-cost,
+  not the full sweep): mortar / gpts, the Newton steps, the cost per step and
+  the shares of the factorisations and the contact terms at each size;
 - sweep-profile: mortar's profile distance from the finest run on every mesh
   of the reference scene, gpts' range from h = 0.06;
 - sweep-cheapest: the cheapest run within each error level of that distance,
@@ -565,6 +568,34 @@ def render_sweep_mortar_cost():
             + f" in the sweep, mortar taking {steps(ctx.mort_sel)} Newton steps per mesh, gpts {steps(ctx.ref_sel)}")
 
 
+def render_formulations_cost():
+    """bench/formulations.csv (scripts/bench.py --formulations-cost) at each size: mortar's solve time over
+    gpts', the two formulations' Newton steps, mortar's cost per step over gpts', and the shares of mortar's
+    solve that the factorisations (SchurFactorK and the Newton linear algebra) and the contact terms take,
+    beside gpts' contact share."""
+    import csv
+    with open(os.path.join(ROOT, "bench", "formulations.csv")) as f:
+        rows = list(csv.DictReader(f))
+    by = {}
+    for r in rows:
+        by.setdefault(float(r["h"]), {})[r["formulation"]] = r
+    pairs = [(by[h]["gpts"], by[h]["mortar"]) for h in sorted(by, reverse=True) if {"gpts", "mortar"} <= set(by[h])]
+    if not pairs:
+        return "(no size with both formulations in bench/formulations.csv)"
+    x = lambda r, k: float(r[k])  # noqa: E731
+    step = lambda r: x(r, "solve_median") / x(r, "iterations")  # noqa: E731
+    where = lambda g: "h = 0.06" if x(g, "h") == 0.06 else f"{int(g['dofs']):,} dofs"  # noqa: E731
+    factor = lambda r: 100 * (x(r, "t_factor_k") + x(r, "t_newton_linear")) / x(r, "solve_stage_time")  # noqa: E731
+    return (and_list([f"{x(m, 'solve_median') / x(g, 'solve_median'):.2f}" for g, m in pairs])
+            + " in `bench/formulations.md` (`make bench-formulations`), which shows where the solve goes: mortar's"
+            " Newton steps there " + ", ".join(f"{m['iterations']} against gpts' {g['iterations']}" for g, m in pairs)
+            + ", at " + and_list([f"{step(m) / step(g):.2f}" for g, m in pairs]) + " times gpts' cost per step;"
+            " the factorisations (the elastic stiffness once, the dense surface block per step) "
+            + and_list([f"{factor(m):.0f} %" for g, m in pairs]) + " of mortar's solve and the contact terms "
+            + and_list([f"{100 * x(m, 'contact_share'):.0f} % (gpts {100 * x(g, 'contact_share'):.0f} %)" for g, m in pairs])
+            + ", at " + and_list([where(g) for g, m in pairs]))
+
+
 def render_sweep_profile():
     """The profile's distance from the finest run of the same model, for mortar on every mesh of the
     reference scene, and its range for gpts from h = 0.06."""
@@ -639,7 +670,7 @@ PHRASES = {"solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio,
            "sweep-exponent": render_sweep_exponent, "sweep-fixed-costs": render_sweep_fixed_costs,
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
-           "sweep-half": render_sweep_half}
+           "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost}
 
 
 def kind(name):
