@@ -118,8 +118,9 @@
    So the test is the default where the penalty is stiff: where a pair's
    k_p h / E* exceeds LMVM_STIFF_PENALTY = 1e4 (ten times the automatic
    penalty's 1000; the sweep's k_p = 1e10 is 9.1e4 at h = 0.005 to 3.8e6 at
-   h = 0.25, its 1e6 at most 380, the reference scene 347 at h = 0.1) and no -tao_gatol, -tao_grtol or
-   -tao_gttol is given, with r = 1e-13; elsewhere the gradient test, which at
+   h = 0.25, its 1e6 at most 380, the reference scene 347 at h = 0.1) and
+   no -tao_gatol, -tao_grtol or -tao_gttol is given, with r = 1e-13;
+   elsewhere the gradient test, which at
    the normal penalty stops 5 iterations sooner (14 against 19 at r = 1e-12
    on the reference scene) with P within 6e-11 of Newton's. r = 1e-13, not
    1e-12: at 1e-12 one pair of the k_p = 1e10 sweep's 24 (h = 0.25 to 0.01)
