@@ -195,8 +195,9 @@ def test_energy_continuous_at_mirror_line(tao_type, tmp_path):
     times (41 iterations). A Taylor test whose steps are 1e-11 to 8e-14 of
     max |u| (-taylor_scale 1e-11) measures that: for a continuous energy the
     remainder is round-off, the eps^2 term far below it (measured 9e-19 to
-    8e-18 against |E| = 4.9e-3; the jump at 3 of 8 steps before, with nls and
-    with lmvm alike). L-BFGS then converges without a cutback (6 iterations)."""
+    8e-18 against |E| = 4.9e-3; before, the jump at 2 of the 8 steps with nls,
+    1 with lmvm, 6 at the iterate where the line search failed). L-BFGS then
+    converges without a cutback (7 iterations)."""
     s = run_contact(HALF + ["-mesh_size", "0.25", "-contact_penalty", "1e10", "-block_bc_push_values", "-0.01,0",
                             "-tao_type", tao_type, "-taylor_test", "-taylor_scale", "1e-11", "-output", "none"], tmp_path).summary
     rem = s["taylor"]["gradient_remainder"]
