@@ -29,6 +29,13 @@ typedef struct {
 #define CONTACT_PENALTY_AUTO 1000.0
 #define CONTACT_PENALTY_SOFT 25.0
 
+/* k_p h / E*: the penalty's stiffness against the bodies' at the contact
+   (after the set-up, which sets kpH; 1000 with -contact_penalty auto). */
+static inline PetscReal ContactPairPenaltyStiffness(const ContactPairSpec *spec)
+{
+  return spec->kp * spec->kpH / spec->Estar;
+}
+
 typedef PetscErrorCode (*ContactFormulationCreate)(const ContactPairSpec *, EnergyTerm);
 extern PetscFunctionList ContactFormulationList;
 PetscErrorCode ContactFormulationRegister(const char name[], ContactFormulationCreate);

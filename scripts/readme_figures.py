@@ -573,11 +573,9 @@ def render_formulations_cost():
     gpts', the two formulations' Newton steps, mortar's cost per step over gpts', and the shares of mortar's
     solve that the factorisations (SchurFactorK and the Newton linear algebra) and the contact terms take,
     beside gpts' contact share."""
-    import csv
-    with open(os.path.join(ROOT, "bench", "formulations.csv")) as f:
-        rows = list(csv.DictReader(f))
+    import bench
     by = {}
-    for r in rows:
+    for r in bench.read_formulations_cost(os.path.join(ROOT, "bench")):
         by.setdefault(float(r["h"]), {})[r["formulation"]] = r
     pairs = [(by[h]["gpts"], by[h]["mortar"]) for h in sorted(by, reverse=True) if {"gpts", "mortar"} <= set(by[h])]
     if not pairs:

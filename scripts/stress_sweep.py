@@ -143,7 +143,7 @@ def sweep(out, hs, kps, ranks, forms, resume, binary, redo=False):
     elif os.path.isdir(os.path.join(out, "stopped")):
         for name in os.listdir(os.path.join(out, "stopped")):
             os.remove(os.path.join(out, "stopped", name))
-    chosen = {(h, kp, push, f, n) for h in hs for kp in kps for push in PUSHES for f in forms for n in ranks}
+    chosen = [(h, kp, push, f, n) for h in hs for kp in kps for push in PUSHES for f in forms for n in ranks]
     replaced = [r for r in res["runs"] if redo and key(r) in chosen]
     res["runs"] = [r for r in res["runs"] if r not in replaced]
     for r in replaced:  # a replaced stopped run's kept output goes with it
@@ -171,23 +171,19 @@ def sweep(out, hs, kps, ranks, forms, resume, binary, redo=False):
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         program = copy_program(tmp, source)
-        for h in hs:
-            for kp in kps:
-                for push in PUSHES:
-                    for form in forms:
-                        for n in ranks:
-                            if (h, kp, push, form, n) in done:
-                                continue
-                            r = one(h, kp, push, form, n, tmp, out, program)
-                            res["runs"].append(r)
-                            if not invocation["runs"]:
-                                res.setdefault("invocations", []).append(invocation)
-                            invocation["runs"] += 1
-                            print(f"h {h:g} k_p {kp:g} push {push:g} {form} {n} rank(s): " + (
-                                f"{r['reason']} in {r['iterations']} iterations, {r['solve']:.3g} s, P {r['P']:.8g}"
-                                if r["converged"] else f"STOPPED: {r['message']}"), flush=True)
-                            res["sweep_seconds"] = res.get("sweep_seconds", 0.0) + r["wall"]
-                            save(path, res)
+        for h, kp, push, form, n in chosen:
+            if (h, kp, push, form, n) in done:
+                continue
+            r = one(h, kp, push, form, n, tmp, out, program)
+            res["runs"].append(r)
+            if not invocation["runs"]:
+                res.setdefault("invocations", []).append(invocation)
+            invocation["runs"] += 1
+            print(f"h {h:g} k_p {kp:g} push {push:g} {form} {n} rank(s): " + (
+                f"{r['reason']} in {r['iterations']} iterations, {r['solve']:.3g} s, P {r['P']:.8g}"
+                if r["converged"] else f"STOPPED: {r['message']}"), flush=True)
+            res["sweep_seconds"] = res.get("sweep_seconds", 0.0) + r["wall"]
+            save(path, res)
     res["elapsed_seconds"] = res.get("elapsed_seconds", 0.0) + time.perf_counter() - t0
     res["load_end"] = invocation["load_end"] = load_average()
     order = {k: i for i, k in enumerate((h, kp, push, f, n) for h in HS for kp in KPS for push in PUSHES

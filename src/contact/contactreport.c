@@ -237,7 +237,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, ", ", "penalty", R->kp);
   fprintf(fp, ", \"penalty_auto\": %s", spec->kpAuto ? "true" : "false");
   ContactJSONKeyReal(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
-  ContactJSONKeyReal(fp, ", ", "penalty_stiffness", spec->kp * spec->kpH / spec->Estar); /* k_p h / E*: 1000 auto, below 25 soft */
+  ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(spec)); /* k_p h / E*: 1000 auto, below 25 soft */
   ContactJSONKeyPair(fp, ", ", "force", R->force);
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");

@@ -42,9 +42,9 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
     PetscCall(ContactSearchCreate(S, &b->search[s]));
   }
   PetscCall(ContactTermSetPenalty(b));
-  if (!b->spec.kpAuto && b->spec.kp * b->spec.kpH / b->spec.Estar < CONTACT_PENALTY_SOFT) {
+  if (!b->spec.kpAuto && ContactPairPenaltyStiffness(&b->spec) < CONTACT_PENALTY_SOFT) {
     const ContactPairSpec *spec = &b->spec;
-    PetscCall(PetscFPrintf(bodies[b->S[0].body]->comm, PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)(spec->kp * spec->kpH / spec->Estar), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));
+    PetscCall(PetscFPrintf(bodies[b->S[0].body]->comm, PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)ContactPairPenaltyStiffness(spec), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));
   }
   PetscFunctionReturn(0);
 }
@@ -198,14 +198,12 @@ static PetscErrorCode ContactTermDiagnose(EnergyTerm t, size_t n, char why[])
   PetscFunctionReturn(0);
 }
 
-/* k_p h / E*: the penalty's stiffness against the bodies' at the contact
-   (ContactTermSetPenalty's h; 1000 with -contact_penalty auto). */
 static PetscErrorCode ContactTermGetPenaltyStiffness(EnergyTerm t, PetscReal *stiffness)
 {
   const ContactTerm *b = (const ContactTerm *)t->data;
 
   PetscFunctionBeginUser;
-  *stiffness = b->spec.kp * b->spec.kpH / b->spec.Estar;
+  *stiffness = ContactPairPenaltyStiffness(&b->spec);
   PetscFunctionReturn(0);
 }
 

@@ -429,12 +429,11 @@ static PetscBool MortarPieceUniform(const Mortar *m, PetscInt s, PetscInt se, Pe
    same distance from point xi of slave edge se, to round-off. A slave node
    on a half model's mirror line is as close to the master's end edge as to
    its image, and round-off picks either: taken as a region of its own, the
-   image made
-   MortarSplit halve the edge towards the node to its depth limit, so that
-   the edge's weighted gaps came from 20 pieces at one state and from one
-   at the next, a jump of their quadrature error (a jump of 4.5e-9 in g_j
-   and of 1.4e-9 in the energy at k_p = 1e10, h = 0.25, push 0.01, the
-   line search's failure there). The crossing between the two is pinned to
+   image made MortarSplit halve the edge towards the node to its depth
+   limit, so that the edge's weighted gaps came from 20 pieces at one state
+   and from one at the next, a jump of their quadrature error (a jump of
+   4.5e-9 in g_j and of 1.4e-9 in the energy at k_p = 1e10, h = 0.25, push
+   0.01, the line search's failure there). The crossing between the two is pinned to
    the node, which the symmetry holds on the line. Ties between different
    features (a slave node facing a master node) keep their cut: the
    crossing there moves with u and carries the Hessian's crossing term
