@@ -144,6 +144,8 @@
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
 #define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
 #define LMVM_DECREMENT_FLOOR 10.0  /* a line search failure within this factor of it is the decrement's round-off floor */
+#define LMVM_START_STIFFNESS 1.0   /* the continuation's first stage no stiffer than this k_p h / E* */
+#define LMVM_STAGE_FACTOR    32.0  /* nor its stages further apart than this factor */
 
 /* H0 = K + C(X) into p->H, whose factorisation the H0 KSP's preconditioner
    redoes when the matrix changes. */
@@ -315,23 +317,47 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
 /* -lmvm_decrement_rtol not given: LMVM_DECREMENT_RTOL where a pair's k_p h / E*
    exceeds LMVM_STIFF_PENALTY, unless the user gave a gradient tolerance; else
    off. After the terms' set-up (without it, -help, off). */
-static PetscErrorCode ProblemChooseDecrementTest(Problem p)
+static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
 {
   const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
   PetscBool         given  = PETSC_FALSE, flg;
-  PetscReal         stiff  = 0.0, s;
 
   PetscFunctionBeginUser;
   for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]); ++i) {
     PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
     given = (PetscBool)(given || flg);
   }
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
-    stiff = PetscMax(stiff, s);
-  }
   p->opt.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
   PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->opt.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
+  PetscFunctionReturn(0);
+}
+
+/* The stiffest pair's k_p h / E*. After the terms' set-up. */
+static PetscErrorCode ProblemGetPenaltyStiffness(Problem p, PetscReal *stiff)
+{
+  PetscReal s;
+
+  PetscFunctionBeginUser;
+  *stiff = 0.0;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
+    *stiff = PetscMax(*stiff, s);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Penalty continuation where the user and the scene chose none: stages a
+   factor of at most LMVM_STAGE_FACTOR apart from 1e-3 k_p, or from where
+   k_p h / E* is LMVM_START_STIFFNESS if that is softer (see the derivation). */
+static PetscErrorCode ProblemChooseContinuation(Problem p, PetscReal stiff)
+{
+  PetscReal start = 1e-3;
+
+  PetscFunctionBeginUser;
+  if (stiff * start > LMVM_START_STIFFNESS) start = LMVM_START_STIFFNESS / stiff;
+  p->opt.penaltyStart  = start;
+  p->opt.penaltyStages = 1 + (PetscInt)PetscCeilReal(PetscLogReal(1.0 / start) / PetscLogReal(LMVM_STAGE_FACTOR) - 1e-6);
+  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: %" PetscInt_FMT " penalty stages from %g k_p\n", (double)stiff, p->opt.penaltyStages, (double)start));
   PetscFunctionReturn(0);
 }
 
@@ -339,9 +365,11 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
 {
   char      name[64];
   PetscBool given;
+  PetscReal stiff;
 
   PetscFunctionBeginUser;
   if (!((!strcmp(type, TAOLMVM) || !strcmp(type, TAOBLMVM)) && p->opt.h0 == H0_CONTACT && p->nterms)) PetscFunctionReturn(0);
+  PetscCall(ProblemGetPenaltyStiffness(p, &stiff));
   /* -lmvm_h0 contact: one correction pair (see the derivation). The default
      of -tao_lmvm_mat_lmvm_hist_size, which TAO reads (its LMVM matrix has no
      setter through Tao in 3.18); the user's value wins. */
@@ -352,12 +380,8 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
      near its tolerance, where Newton's last step lands far below it */
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-10));
   /* the decrement test where the penalty is stiff and the user chose no test */
-  if (p->opt.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p));
-  /* penalty continuation where the user and the scene chose none */
-  if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) {
-    p->opt.penaltyStages = 3;
-    p->opt.penaltyStart  = 1e-3;
-  }
+  if (p->opt.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p, stiff));
+  if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) PetscCall(ProblemChooseContinuation(p, stiff));
   /* the line search's evaluations: 100, not TAO's 30 (see the derivation) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_ls_max_funcs", &given));
   if (!given) PetscCall(PetscOptionsSetValue(NULL, "-tao_ls_max_funcs", "100"));
