@@ -124,14 +124,17 @@ def test_deep_overlap_names_the_stop(tmp_path):
 def test_cutback_recovers(tmp_path):
     """A load whose line search fails is cut back (-load_cutbacks, on by
     default), and the cut-back solve reaches the answer. The case: L-BFGS on
-    2 ranks, the mortar half scene at h = 0.1, k_p = 1e10, push 0.3, whose
-    first stage from rest stops here (DIVERGED_LS_FAILURE after 39
-    iterations, the block pushed deep into the disc) and converges after one
-    cutback (128 iterations in all). (The case this test had before, k_p =
-    3e3 at h = 0.02, stopped from rest only while the mortar energy jumped on
-    the mirror line; at that soft penalty the bodies are 1.6 to 2 edges into
-    each other and the solve from rest and the cut-back one land on different
-    wrinkled states, 0.2 to 0.4 % apart.) Whether the solve from rest stops
+    2 ranks, the mortar half scene at h = 0.1, k_p = 1e10, push 0.3, with the
+    continuation lmvm had by default before it began where k_p h / E* is 1
+    (-penalty_stages 3 -penalty_start 1e-3: the first stage at k_p = 1e7,
+    k_p h / E* = 1.7e3), whose first stage from rest stops here
+    (DIVERGED_LS_FAILURE after 39 iterations, the block pushed deep into the
+    disc) and converges after one cutback (128 iterations in all; the default
+    continuation converges in 21 without). (The case this test had before,
+    k_p = 3e3 at h = 0.02, stopped from rest only while the mortar energy
+    jumped on the mirror line; at that soft penalty the bodies are 1.6 to 2
+    edges into each other and the solve from rest and the cut-back one land
+    on different wrinkled states, 0.2 to 0.4 % apart.) Whether the solve from rest stops
     depends on the machine's rounding, so the test follows what
     -load_cutbacks 0 does here: if it stops, the default must have cut back
     and converged; if it converges, the default must not have cut back and
@@ -139,8 +142,9 @@ def test_cutback_recovers(tmp_path):
     criterion of the same answer (measured 1.9e-9)."""
     args = HALF + ["-mesh_size", 0.1, "-contact_penalty", "1e10", "-block_bc_push_values", "-0.3,0",
                    "-contact_formulation", "mortar"]
-    off = run_contact(args + ["-tao_type", "lmvm", "-load_cutbacks", 0], tmp_path, name="off", ranks=2, check=False)
-    on = run_contact(args + ["-tao_type", "lmvm"], tmp_path, name="on", ranks=2).summary
+    lmvm = args + ["-tao_type", "lmvm", "-penalty_stages", 3, "-penalty_start", "1e-3"]
+    off = run_contact(lmvm + ["-load_cutbacks", 0], tmp_path, name="off", ranks=2, check=False)
+    on = run_contact(lmvm, tmp_path, name="on", ranks=2).summary
     ref = run_contact(args + ["-tao_gttol", "1e-10"], tmp_path, name="ref").summary
     dP = abs(on["contact_force"] / ref["contact_force"] - 1)
     print(f"without cutback: exit {off.returncode}; with: {on['load_cutbacks']} cutback(s), {on['stages']} stages, "
