@@ -56,9 +56,39 @@
    Continuation. The active set moves the most in the first iterations, where
    every pair straddles kinks; at a soft penalty those kinks are mild. Where
    neither the user nor the scene chose a continuation, lmvm and blmvm solve
-   in 3 penalty stages from 1e-3 k_p (a factor of 32 a stage, as the automatic
-   penalty's 2 stages from 0.03): at h = 0.03 and k_p = 2e6 12 iterations
-   against 31 in one stage, at k_p = 1e8 14 against 96.
+   in penalty stages a factor of at most 32 apart (LMVM_STAGE_FACTOR, as the
+   automatic penalty's 2 stages from 0.03), from 1e-3 k_p or, if that is
+   softer, from where the stiffest pair's k_p h / E* is 1
+   (LMVM_START_STIFFNESS): 3 stages up to k_p h / E* = 1000, the automatic
+   penalty's (at h = 0.03 and k_p = 2e6 12 iterations against 31 in one
+   stage); 4 on the reference scene at h = 0.03 and k_p = 1e8 (k_p h / E* =
+   5.4e3: 14 iterations, 16 with 3 stages from 1e-3 k_p, 96 in one); 5 to 6
+   at the robustness sweep's k_p = 1e10 (9.1e4 to 3.8e6). Why the first
+   stage's own stiffness: from 1e-3 k_p alone, k_p = 1e10's first stage is
+   at k_p h / E* = 91 to 3.8e3, and from rest each step of H0 = K + C(x)
+   closes contact that C(x) does not hold; the energy at the full step rises
+   100 to 10,000 times, the line search stops at the first kink (steps of
+   1e-2 to 1e-4), and that stage alone takes 30 to 130 such steps, down which
+   round-off sends 1 and 2 ranks different ways (iterations more than 10 %
+   apart in 7 of the sweep's 30 pairs, a cutback in 6 of its 120 runs, the
+   later stages alike). Measured on the half scene at k_p = 1e10, push p
+   (bin/contact -options_file meshes/hertz-half/hertz-half.opts -mesh_size h
+   -contact_penalty 1e10 -block_bc_push_values -p,0 -contact_formulation F
+   -output none -tao_type lmvm [-penalty_stages n -penalty_start s]; k_p h /
+   E* = 1.7e6 at h = 0.1, 5.4e5 at 0.03), iterations on 1 / 2 ranks:
+       F, h, p            3 from 1e-3  4 from 1e-5  5 from 1e-6  6 from 1e-7  default
+       gpts 0.1 0.3          53/59        32/32        31/31        30/30      30/30
+       mortar 0.1 0.15       39/46        17/17        16/16        19/19      18/18
+       mortar 0.1 0.3        71/128 (a)   22/22        22/22        22/22      21/21
+       mortar 0.03 0.15      65/69        19/19        16/16        18/18      17/17
+       gpts 0.03 0.3         64/59        39/41        37/37        35/35      36/36
+       mortar 0.03 0.3       86/93        30/30        19/19        23/23      25/25
+     (a) after a cutback on 2 ranks; the default is 6 stages at h = 0.1, 5
+     at 0.03. The whole k_p = 1e10 part of the sweep (h = 0.25 to 0.005,
+     both formulations, pushes 0.01 to 0.3; scripts/stress_sweep.py --kp 1e10
+     --tao-type lmvm, and blmvm): 11 to 36 iterations (were 7 to 268, growing
+     with 1/h), 1 and 2 ranks within 5 % in every pair and P within 1.9e-9,
+     no cutback; the slowest run 46 s (was 158).
 
    The stopping test, where the penalty is not stiff (see the decrement
    test): -tao_gttol 1e-10 (Newton's is 1e-8). L-BFGS converges
@@ -135,7 +165,8 @@
    formulations, pushes 0.01 to 0.3, 1 and 2 ranks: scripts/stress_sweep.py
    --kp 1e10 --tao-type lmvm, and blmvm; bench/stress-lmvm, stress-blmvm):
    all 60 converge for each type, P of 1 and 2 ranks within 4.9e-9 in every
-   pair (5.4e-8 with the gradient test). */
+   pair (5.4e-8 with the gradient test), with the continuation then the
+   default, 3 stages from 1e-3 k_p; with the one above, 1.9e-9. */
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
 #include "schur.h"
