@@ -254,8 +254,8 @@ def is_slave(side):
 
 def nodal_curve(s, p, n=12):
     """The pressure's quadratic interpolant along the surface: nodes sorted by
-    s alternate corner, mid-edge, corner (a node on a mirror line appears
-    twice and is taken once); each edge's three nodes give a parabola in s."""
+    s alternate corner, mid-edge, corner (a node listed twice is taken
+    once); each edge's three nodes give a parabola in s."""
     keep = np.r_[True, np.diff(s) > 1e-12 * max(1.0, np.ptp(s))]
     s, p = s[keep], p[keep]
     if len(s) < 3:

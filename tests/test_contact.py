@@ -230,6 +230,38 @@ def test_half_model(tmp_path):
     assert half["dofs"] < 0.55 * full["dofs"]
 
 
+def test_half_model_profile(tmp_path):
+    """The mirrored half's profiles are the whole model's, row for row. The
+    full scene on the exactly mirror-symmetric disc mesh (Gmsh's upper half
+    reflected, tests/symmetric_mesh.py) and the structured block has, as its
+    upper half, the half scene's meshes at the same h, so both surfaces give
+    the same nodal samples: the same count (the node on the mirror line
+    once, with both halves' weight; before, twice with half each: 46 and 42
+    rows against 45 and 41), one sample on the line, s and the weights to
+    1e-10 (measured 1e-14 and 0 on the disc; 3.5e-12 and 9.7e-12 on the
+    block, whose structured grid Gmsh places to round-off differently in the
+    half and the whole) and the pressure to 1e-6 of its peak (measured
+    1.5e-12 on the disc, 1.9e-8 on the block: its 3.5e-12 times k_p = 2e6 is
+    7e-6 of pressure, 7e-8 of the peak), solved to -tao_gttol 1e-12."""
+    msh = tmp_path / "disc.msh"
+    build(msh, 0.1)
+    tight = ["-mesh_size", 0.1, "-tao_gttol", "1e-12"]
+    full = run_contact(HERTZ + ["-indenter_mesh", msh] + tight, tmp_path, name="full")
+    half = run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts"] + NEWTON + tight, tmp_path, name="half")
+    with full.h5() as ff, half.h5() as fh:
+        for k, g in ff["contact/interface"].items():
+            h = fh["contact/interface"][k]
+            sf, sh = g["node_s"][...], h["node_s"][...]
+            assert sf.shape == sh.shape, (k, sf.shape, sh.shape)
+            ds = np.abs((sf - g.attrs["centre"]) - (sh - h.attrs["centre"])).max()
+            dw = np.abs(g["node_weight"][...] - h["node_weight"][...]).max() / g["node_weight"][...].max()
+            pf, ph = g["node_pressure"][...], h["node_pressure"][...]
+            dp = np.abs(pf - ph).max() / pf.max()
+            at_line = int(np.sum(np.abs(h["node_X"][...].reshape(-1, 2)[:, 1]) < 1e-12))
+            print(f"{k}: {sh.size} samples, s {ds:.1e}, weight {dw:.1e}, pressure {dp:.1e}; {at_line} at the line")
+            assert ds <= 1e-10 and dw <= 1e-10 and dp <= 1e-6 and at_line == 1
+
+
 def test_default_formulation_is_mortar(tmp_path):
     """The default contact formulation is mortar (the one that passes the
     contact patch test and converges without oscillation): -help says so, and

@@ -7,6 +7,8 @@
 #include "contactreport.h"
 #include "xdmf.h"
 
+#define CONTACT_MIRROR_ROW_TOL 1e-10 /* a row this close to the line, relative to the arc length, is on it */
+
 PetscErrorCode ContactReportReset(ContactReport *R)
 {
   PetscFunctionBeginUser;
@@ -17,7 +19,9 @@ PetscErrorCode ContactReportReset(ContactReport *R)
 
 /* Gathers one side's rows on rank 0, adds their mirror images for a half
    model (about the end of the arc that lies on the symmetry line: s = 0 or
-   the surface's length L), sorts them by s and computes the figures. */
+   the surface's length L; a row there, a node on the line, is its own image
+   and becomes the whole model's row, its weight and force doubled), sorts
+   them by s and computes the figures. */
 static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *spec, const ContactReport *R, MPI_Comm comm, PetscInt nloc, const PetscReal rows[], PetscReal L)
 {
   const PetscInt C = CONTACT_ROW_COLS;
@@ -45,16 +49,24 @@ static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *s
         if (all[C * i] < all[C * lo]) lo = i;
         if (all[C * i] > all[C * hi]) hi = i;
       }
+      PetscInt  k = m;
       scut = PetscAbsReal(all[C * lo + CONTACT_ROW_Y] - spec->mirrorY) <= PetscAbsReal(all[C * hi + CONTACT_ROW_Y] - spec->mirrorY) ? 0.0 : L;
       for (PetscInt i = 0; i < m; ++i) {
-        PetscReal *r = &all[C * (m + i)];
-        PetscCall(PetscArraycpy(r, &all[C * i], C));
+        PetscReal *o = &all[C * i], *r = &all[C * k];
+        if (PetscAbsReal(o[CONTACT_ROW_S] - scut) <= CONTACT_MIRROR_ROW_TOL * L) { /* a node on the line is its own image: one row, both halves' weight and force */
+          o[CONTACT_ROW_W] *= 2.0;
+          o[CONTACT_ROW_FX] *= 2.0;
+          o[CONTACT_ROW_FY] = 0.0;
+          continue;
+        }
+        PetscCall(PetscArraycpy(r, o, C));
         r[CONTACT_ROW_S]  = 2.0 * scut - r[CONTACT_ROW_S];
         r[CONTACT_ROW_Y]  = 2.0 * spec->mirrorY - r[CONTACT_ROW_Y];
         r[CONTACT_ROW_YC] = 2.0 * spec->mirrorY - r[CONTACT_ROW_YC];
         r[CONTACT_ROW_FY] = -r[CONTACT_ROW_FY];
+        k++;
       }
-      m *= 2;
+      m = k;
     }
     PetscCall(PetscMalloc2(m + 1, &perm, m + 1, &sv));
     for (PetscInt i = 0; i < m; ++i) {
