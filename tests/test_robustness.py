@@ -69,8 +69,12 @@ def _edge_length(h5, pair, surface):
     with h5py.File(h5) as f:
         g = f[f"/contact/{pair}/{surface}"]
         X, cells = g["node_X"][...], g["node_cells"][...]
-    # node_cells joins consecutive nodes along the surface (corner and mid-edge
-    # nodes alike): an edge of the quadratic mesh is two of them
+    # a quadratic edge is one 3-node cell (Edge_3: its ends, then its mid-edge
+    # node), or two 2-node cells (Polyline) where the node count is even;
+    # either way, its length is taken as the two chords through the mid-edge node
+    if cells.shape[1] == 3:
+        chords = np.linalg.norm(X[cells[:, 2]] - X[cells[:, 0]], axis=1) + np.linalg.norm(X[cells[:, 1]] - X[cells[:, 2]], axis=1)
+        return chords.sum() / len(cells)
     return np.linalg.norm(X[cells[:, 1]] - X[cells[:, 0]], axis=1).sum() / (len(cells) // 2)
 
 
