@@ -735,6 +735,31 @@ def differs(name, old, new):
     return old != new if name in RENDER else old.split() != new.split()
 
 
+PROSE_WIDTH = 88   # the pages' prose lines
+
+
+def wrap_phrase(text, i, j, new):
+    """A phrase's new words (text[i:j] replaced) laid out as the page's prose:
+    from where the phrase starts on its line, then on lines indented as the
+    phrase's second line was, or else as the line it starts on continues (a
+    list item's text), each line within PROSE_WIDTH where the words allow."""
+    start = text.rfind("\n", 0, i) + 1
+    old = text[i:j]
+    if "\n" in old:
+        indent = re.match(r"[ \t]*", old.split("\n", 1)[1]).group(0)
+    else:
+        m = re.match(r"([ \t]*)([-*] |\d+\. )?", text[start:i])
+        indent = m.group(1) + " " * len(m.group(2) or "")
+    lines, col = [[]], i - start
+    for w in new.split():
+        if lines[-1] and col + 1 + len(w) > PROSE_WIDTH:
+            lines.append([])
+            col = len(indent)
+        col += len(w) + (1 if lines[-1] else 0)
+        lines[-1].append(w)
+    return ("\n" + indent).join(" ".join(ws) for ws in lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
@@ -762,7 +787,7 @@ def main():
             new = (RENDER.get(name) or PHRASES[name])()
             if differs(name, text[i:j], new):
                 stale.append(f"{name} ({page})")
-                text = text[:i] + new + text[j:]
+                text = text[:i] + (new if name in RENDER else wrap_phrase(text, i, j, new)) + text[j:]
         if args.update and text != texts[page]:
             with open(os.path.join(ROOT, page), "w") as f:
                 f.write(text)

@@ -71,6 +71,25 @@ def test_phrases_compare_word_by_word():
     assert readme_figures.differs("scenes", "| a |\n| b |\n", "| a | | b |\n")
 
 
+def test_phrases_keep_the_page_layout():
+    """--update lays a phrase's new words out as the page's prose: on from its
+    column, then on lines indented as its second line was (or as a list
+    item's text continues), each within the prose width; the words are the
+    rendering's."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import readme_figures
+    words = " ".join(f"w{k}" for k in range(60))
+    for text, indent in [("- L-BFGS: <!-- b -->old<!-- e --> (table); more\n  text\n", "  "),
+                         ("Some prose <!-- b -->old words\n   on two lines<!-- e -->.\n", "   ")]:
+        i, j = text.index("-->") + 3, text.index("<!-- e")
+        out = text[:i] + readme_figures.wrap_phrase(text, i, j, words) + text[j:]
+        phrase = out[i:out.index("<!-- e")]
+        assert phrase.split() == words.split()
+        assert all(len(line) <= readme_figures.PROSE_WIDTH for line in out[:out.index("<!-- e")].splitlines())
+        assert all(line.startswith(indent) and not line.startswith(indent + " ") for line in phrase.splitlines()[1:])
+        assert len(phrase.splitlines()) > 1
+
+
 def anchor(heading):
     """GitHub's anchor of a heading: lower case, punctuation but - and _
     dropped, spaces as hyphens."""
