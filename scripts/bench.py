@@ -1753,10 +1753,45 @@ def config_key(r):
             int(r["ranks"]))
 
 
+def model_key(r):
+    return (r["scene"], r["formulation"], float(r["kp"]))
+
+
+def profile_references(R, new, stored):
+    """The reference of profile_err (attach_profile_refs: the finest converged
+    run of the default strategy at gttol 1e-8 on one rank of the same model)
+    for every model of the merged rows new whose reference the merge did not
+    run: that run of stored (results.csv) run once more, with its output, for
+    its profile, which only a run holds. Its row is not merged."""
+    def is_ref(r):
+        return r["strategy"] == REF_STRATEGY and float(r["gttol"]) == REF_TOL and int(r["ranks"]) == 1 \
+            and r.get("converged")
+    refs = []
+    for model in sorted({model_key(r) for r in new}):
+        cands = [r for r in stored + new if model_key(r) == model and is_ref(r)]
+        if not cands:
+            continue
+        f = min(cands, key=lambda r: float(r["h"]))
+        if any(is_ref(r) and model_key(r) == model and float(r["h"]) == float(f["h"]) and r.get("_profile")
+               for r in new):
+            continue   # the merge ran it
+        scene, form, kp = model
+        _, err = R.mesh(scene, f["h"])
+        if err:
+            continue
+        row = run_interleaved(R, scene, f["h"], [(REF_STRATEGY, kp, REF_TOL, 1, 1, form)], 1,
+                              lambda c: None, lambda c: True)[0]
+        R.say("%-52s profile reference of the merged rows (not merged)" % config_name(row))
+        refs.append(row)
+    return refs
+
+
 def merge_sweep(args, plan, nconf, tmp):
     """The (restricted) plan's rows merged into <out>/results.csv, then the
     report from the merged rows with the settings of the run that wrote the
-    file (run.json; its argv and elapsed time gain this run's)."""
+    file (run.json; its argv and elapsed time gain this run's). The merged
+    rows' profile errors are against their models' references, run again for
+    their profiles where the plan does not hold them (profile_references)."""
     R = Sweep(args, tmp, "merge.log")
     R.say("merge: %d meshes, %d configurations, repeat %d, into %s/results.csv" % (len(plan), nconf, args.repeat,
                                                                                   args.out))
@@ -1764,8 +1799,12 @@ def merge_sweep(args, plan, nconf, tmp):
     for e in plan:
         sweep_mesh(R, e, new, argparse.Namespace(**dict(vars(args), out=tmp)))
     path = os.path.join(args.out, "results.csv")
+    stored = read_csv(path)
+    attach_profile_refs(new + profile_references(R, new, stored))
+    for r in new:   # their figures now stored ones: the report's attach_profile_refs keeps them
+        r.pop("_profile", None)
     keys = {config_key(r) for r in new}
-    rows = [r for r in read_csv(path) if config_key(r) not in keys] + new
+    rows = [r for r in stored if config_key(r) not in keys] + new
     meta = read_run(args.out)
     meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, args.bin_git)] \
         + sys.argv[1:]
