@@ -1768,12 +1768,11 @@ def profile_references(R, new, stored):
             and r.get("converged")
     refs = []
     for model in sorted({model_key(r) for r in new}):
-        cands = [r for r in stored + new if model_key(r) == model and is_ref(r)]
+        cands = [r for r in new + stored if model_key(r) == model and is_ref(r)]   # new first: min keeps it on a tie
         if not cands:
             continue
         f = min(cands, key=lambda r: float(r["h"]))
-        if any(is_ref(r) and model_key(r) == model and float(r["h"]) == float(f["h"]) and r.get("_profile")
-               for r in new):
+        if f.get("_profile"):
             continue   # the merge ran it
         scene, form, kp = model
         _, err = R.mesh(scene, f["h"])

@@ -383,12 +383,13 @@ static PetscErrorCode ProblemGetPenaltyStiffness(Problem p, PetscReal *stiff)
 static PetscErrorCode ProblemChooseContinuation(Problem p, PetscReal stiff)
 {
   PetscReal start = 1e-3;
+  PetscInt  stages;
 
   PetscFunctionBeginUser;
   if (stiff * start > LMVM_START_STIFFNESS) start = LMVM_START_STIFFNESS / stiff;
-  p->opt.penaltyStart  = start;
-  p->opt.penaltyStages = 1 + (PetscInt)PetscCeilReal(PetscLogReal(1.0 / start) / PetscLogReal(LMVM_STAGE_FACTOR) - 1e-6);
-  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: %" PetscInt_FMT " penalty stages from %g k_p\n", (double)stiff, p->opt.penaltyStages, (double)start));
+  stages = 1 + (PetscInt)PetscCeilReal(PetscLogReal(1.0 / start) / PetscLogReal(LMVM_STAGE_FACTOR) - 1e-6);
+  PetscCall(ProblemSetPenaltyContinuation(p, stages, start));
+  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: %" PetscInt_FMT " penalty stages from %g k_p\n", (double)stiff, stages, (double)start));
   PetscFunctionReturn(0);
 }
 
