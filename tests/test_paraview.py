@@ -13,6 +13,8 @@ empty. Every grid carries every field (a body's contact fields NaN, a contact
 line's stress NaN and its displacement zero), and each reader renders the
 bodies coloured by each body field (test_readers_show_colours)."""
 import json
+import os
+import select
 import shutil
 import subprocess
 
@@ -30,8 +32,8 @@ READERS = ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT")
 
 
 def paraview():
-    """(xvfb-run, pvpython); skips only where the project's set-up never ran."""
-    tools = {t: shutil.which(t) for t in ("xvfb-run", "pvpython")}
+    """(Xvfb, pvpython); skips only where the project's set-up never ran."""
+    tools = {t: shutil.which(t) for t in ("Xvfb", "pvpython")}
     missing = [t for t, path in tools.items() if not path]
     if missing:
         if DEPS_STAMP.exists():
@@ -39,7 +41,48 @@ def paraview():
                         f"({DEPS_STAMP.relative_to(ROOT)} exists): it installs paraview, python3-paraview, xvfb")
         pytest.skip(f"{', '.join(missing)} not installed and scripts/install-deps.sh not run "
                     "(make deps installs ParaView and xvfb)")
-    return tools["xvfb-run"], tools["pvpython"]
+    return tools["Xvfb"], tools["pvpython"]
+
+
+@pytest.fixture(scope="session")
+def display(tmp_path_factory):
+    """One virtual X server for every pvpython run of the session, started
+    with -displayfd: the server itself takes the first display whose lock
+    and sockets are all free, and writes its number when it accepts
+    connections. Before, each run had its own `xvfb-run -a`, which picks a
+    number by the lock files alone and, on its way out, kills its server
+    without waiting for it, so a run that followed could be given a display
+    the dying server still answered on: pvpython's window then found no X
+    connection and aborted (SIGABRT in vtkXOpenGLRenderWindow::CreateAWindow,
+    1.3 s in; once in CI, in the run after the probes)."""
+    xvfb, _ = paraview()
+    log = tmp_path_factory.mktemp("xvfb") / "xvfb.log"
+    ready, write = os.pipe()
+    with open(log, "w") as sink:
+        server = subprocess.Popen([xvfb, "-displayfd", str(write), "-screen", "0", "1280x1024x24",
+                                   "-nolisten", "tcp"], pass_fds=(write,), stdout=sink, stderr=subprocess.STDOUT)
+    os.close(write)
+    with os.fdopen(ready) as pipe:
+        shown, _, _ = select.select([pipe], [], [], 60)
+        number = pipe.readline().strip() if shown else ""
+    if not number.isdigit():
+        server.kill()
+        server.wait()
+        pytest.fail(f"Xvfb gave no display within 60 s (exit {server.returncode}): {log.read_text()[-2000:]}")
+    yield dict(ENV, DISPLAY=":" + number)
+    server.terminate()
+    server.wait(timeout=60)
+
+
+def run_pvpython(script, args, cwd, env):
+    """Runs a ParaView script on the session's X server; on failure, shows
+    the first lines of its output (the cause) as well as the last."""
+    _, exe = paraview()
+    proc = subprocess.run([exe, str(script), *map(str, args)], cwd=cwd, env=env, capture_output=True, text=True,
+                          timeout=600)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, f"pvpython {script.name} exited {proc.returncode}:\n{text[:2000]}\n...\n{text[-2000:]}"
+    return text
 
 
 def same(a, b):
@@ -84,19 +127,16 @@ def expected_blocks(h5):
 
 
 @pytest.fixture(scope="module", params=["gpts", "mortar"])
-def probed(request, tmp_path_factory):
-    xvfb, pvpython = paraview()
+def probed(request, tmp_path_factory, display):
     tmp = tmp_path_factory.mktemp(request.param)
     run = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.2",
                        "-contact_formulation", request.param], tmp, name="hertz")
     xdmf = run.output_path.with_suffix(".xdmf")
     out = tmp / "probe.json"
-    proc = subprocess.run([xvfb, "-a", pvpython, str(PROBE), str(xdmf), str(out)], cwd=tmp, env=ENV,
-                          capture_output=True, text=True, timeout=600)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    text = run_pvpython(PROBE, [xdmf, out], tmp, display)
     with run.h5() as h5:
         expected = expected_blocks(h5)
-    return request.param, expected, json.loads(out.read_text()), proc.stdout + proc.stderr, run.summary
+    return request.param, expected, json.loads(out.read_text()), text, run.summary
 
 
 def test_readers_warn_nothing(probed):
@@ -163,7 +203,7 @@ def colours(png):
 
 
 @pytest.mark.parametrize("formulation", ["gpts", "mortar"])
-def test_readers_show_colours(formulation, tmp_path):
+def test_readers_show_colours(formulation, tmp_path, display):
     """What a user sees: each reader ParaView offers for the XDMF file
     (legacy, Xdmf3ReaderS, Xdmf3ReaderT, and what OpenDataFile picks, which
     is Xdmf3ReaderS) renders the bodies coloured by each body field, not in
@@ -175,13 +215,10 @@ def test_readers_show_colours(formulation, tmp_path):
     the same view in one solid colour (measured 4.1 to 5.2 times with every
     reader; the file without the padding measured 1.00 with Xdmf3ReaderS and
     OpenDataFile, 4.1 to 5.1 with the others)."""
-    xvfb, pvpython = paraview()
     run = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1",
                        "-contact_formulation", formulation], tmp_path, name="hertz")
     out = tmp_path / "png"
-    proc = subprocess.run([xvfb, "-a", pvpython, str(RENDER), str(run.output_path.with_suffix(".xdmf")), str(out),
-                           *FIELDS], cwd=tmp_path, env=ENV, capture_output=True, text=True, timeout=600)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    run_pvpython(RENDER, [run.output_path.with_suffix(".xdmf"), out, *FIELDS], tmp_path, display)
     for reader in ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT", "OpenDataFile"):
         solid = colours(out / f"{reader}-solid.png")
         for field in FIELDS:
@@ -193,20 +230,17 @@ def test_readers_show_colours(formulation, tmp_path):
 AXI_FIELDS = ("stress_rr", "stress_zz", "stress_hoop", "stress_rz", "von_mises")
 
 
-def test_axisymmetric_hoop_stress(tmp_path):
+def test_axisymmetric_hoop_stress(tmp_path, display):
     """An axisymmetric scene (sphere, h = 0.02) opens as its meridian section:
     every reader shows each body with the stresses named rr, zz, hoop, rz,
     each the HDF5's `stress` column bit for bit (hoop the third), and the
     contact lines with them as NaN; and the view coloured by stress_hoop has
     at least twice the colours of the solid one (measured 3.28 times with
     every reader)."""
-    xvfb, pvpython = paraview()
     run = run_contact(["-options_file", "meshes/sphere/sphere.opts", "-mesh_size", "0.02"], tmp_path, name="sphere")
     xdmf = run.output_path.with_suffix(".xdmf")
     probe = tmp_path / "probe.json"
-    proc = subprocess.run([xvfb, "-a", pvpython, str(PROBE), str(xdmf), str(probe)], cwd=tmp_path, env=ENV,
-                          capture_output=True, text=True, timeout=600)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    run_pvpython(PROBE, [xdmf, probe], tmp_path, display)
     got = json.loads(probe.read_text())
     with run.h5() as h5:
         want = [(b, h5["bodies"][b]["stress"][...]) for b in ("ball", "flat")]
@@ -220,9 +254,7 @@ def test_axisymmetric_hoop_stress(tmp_path):
         for b in blocks[2:]:
             assert np.all(np.isnan(b["arrays"]["stress_hoop"]["values"]))
     out = tmp_path / "png"
-    proc = subprocess.run([xvfb, "-a", pvpython, str(RENDER), str(xdmf), str(out), "stress_hoop"], cwd=tmp_path,
-                          env=ENV, capture_output=True, text=True, timeout=600)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    run_pvpython(RENDER, [xdmf, out, "stress_hoop"], tmp_path, display)
     for reader in ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT", "OpenDataFile"):
         solid, n = colours(out / f"{reader}-solid.png"), colours(out / f"{reader}-stress_hoop.png")
         print(f"{reader} stress_hoop: {n} colours, solid {solid}: {n / solid:.2f} times")
