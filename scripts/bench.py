@@ -591,6 +591,12 @@ FORM_COLORS = {"gpts": "C0", "mortar": "C3"}
 FORM_STYLES = {"gpts": "-", "mortar": "--"}
 
 
+def series_color(form, strategy):
+    """A colour per strategy, the formulations told apart by the line style; mortar's newton its
+    formulation's colour."""
+    return FORM_COLORS[form] if (form != REF_FORMULATION and strategy == REF_STRATEGY) else STRATEGY_COLORS[strategy]
+
+
 def error_front(ax, pts, key, color, ls, label):
     """Scatter of the runs (marker per scene) and the line of the best error so far."""
     for sc, mk in SCENE_MARKERS.items():
@@ -645,10 +651,7 @@ def plot_error_vs_time(plt, rows, out):
         for s in STRATEGIES:
             pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and plottable(r, "P_ref_err")
                    and not on_ref_mesh(r)]
-            # a colour per strategy (the formulations told apart by the line style); mortar's newton its
-            # formulation's colour
-            color = FORM_COLORS[form] if (form != REF_FORMULATION and s == REF_STRATEGY) else STRATEGY_COLORS[s]
-            error_front(axes[2], pts, "P_ref_err", color, FORM_STYLES[form], "%s %s" % (form, s))
+            error_front(axes[2], pts, "P_ref_err", series_color(form, s), FORM_STYLES[form], "%s %s" % (form, s))
     axes[2].set_title("|P - P_ref| / P_ref (finest uniform mesh, same formulation and k_p;\n"
                       "its own runs left out)", fontsize=10)
     for ax in axes:
@@ -710,26 +713,26 @@ def plot_ratio_to_linear(plt, rows, out):
     """ratio_to_linear.png: the solve time in linear solves."""
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     for form in FORMULATIONS:
-        for s in ALL_STRATEGIES:
+        for s in STRATEGIES:
             q = sorted([r for r in rows if r["scene"] == "hertz" and r["strategy"] == s and r["kp"] == REF_KP
                         and r["gttol"] == REF_TOL and r["ranks"] == 1 and r["converged"] and r["formulation"] == form
                         and finite(r.get("ratio_to_linear"))], key=lambda r: r["dofs"])
             if q:
                 ax.loglog([r["dofs"] for r in q], [r["ratio_to_linear"] for r in q], "o" + FORM_STYLES[form],
-                          color=STRATEGY_COLORS[s] if form == REF_FORMULATION else FORM_COLORS[form],
+                          color=series_color(form, s), mfc="none" if form != REF_FORMULATION else None,
                           label="%s %s" % (form, s))
     for sc, mk in (("hertz-graded", "s"), ("hertz-half", "^")):
         q = [r for r in rows if r["scene"] == sc and r["kp"] == REF_KP and r["gttol"] == REF_TOL and r["converged"]
              and r["ranks"] == 1 and finite(r.get("ratio_to_linear"))]
         for r in q:
             mortar = r["formulation"] != REF_FORMULATION
-            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=FORM_COLORS[r["formulation"]] if mortar
-                      else STRATEGY_COLORS[r["strategy"]], alpha=0.6, mfc="none" if mortar else None)
+            ax.loglog(r["dofs"], r["ratio_to_linear"], mk, color=series_color(r["formulation"], r["strategy"]),
+                      alpha=0.6, mfc="none" if mortar else None)
     ax.axhline(LINEAR_RATIO_TARGET, color="k", ls="--", lw=1, label="target: %g" % LINEAR_RATIO_TARGET)
     ax.set_xlabel("dofs")
     ax.set_ylabel("solve time / one linear elastic solve")
     ax.set_title("time-to-solution in linear solves (k_p = 2e6, gttol 1e-8; s graded, ^ half;\n"
-                 "red, dashed, open: mortar)", fontsize=10)
+                 "dashed, open: mortar, its newton red)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
