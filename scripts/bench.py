@@ -591,6 +591,17 @@ FORM_COLORS = {"gpts": "C0", "mortar": "C3"}
 FORM_STYLES = {"gpts": "-", "mortar": "--"}
 
 
+def seconds_axis(plt, axis):
+    """A logarithmic axis of seconds labelled in plain numbers, the minor ticks at 2 and 5 of each decade
+    too (matplotlib labels every minor tick of an axis spanning about a decade, where 3 x 10^0 and 4 x 10^0
+    run into each other)."""
+    def minor(v, _):
+        lead = v / 10 ** math.floor(math.log10(v))
+        return "%g" % v if abs(lead - 2) < 1e-6 or abs(lead - 5) < 1e-6 else ""
+    axis.set_major_formatter(plt.FuncFormatter(lambda v, _: "%g" % v))
+    axis.set_minor_formatter(plt.FuncFormatter(minor))
+
+
 def series_color(form, strategy):
     """A colour per strategy, the formulations told apart by the line style; mortar's newton its
     formulation's colour."""
@@ -644,9 +655,13 @@ def plot_error_vs_time(plt, rows, out):
         pts = sorted(acc["points"], key=lambda p: p["wall"])
         axes[0].plot([p["wall"] for p in pts], [p["profile_err"] for p in pts], "D-", color="C2", lw=1.8,
                      label="mortar -accuracy TOL")
+        groups = {}  # targets that ended on the same mesh (the same error) share one label
         for p in pts:
-            axes[0].annotate("%g %%" % (100 * p["tol"]), (p["wall"], p["profile_err"]), fontsize=7,
-                             xytext=(4, 4), textcoords="offset points", color="C2")
+            groups.setdefault(p["profile_err"], []).append(p)
+        for same in groups.values():
+            tols = sorted((q["tol"] for q in same), reverse=True)
+            axes[0].annotate("%s %%" % ", ".join("%g" % (100 * t) for t in tols), (same[0]["wall"], same[0]["profile_err"]),
+                             fontsize=7, xytext=(4, 4), textcoords="offset points", color="C2")
     for form in FORMULATIONS:
         for s in STRATEGIES:
             pts = [r for r in rows if r["formulation"] == form and r["strategy"] == s and plottable(r, "P_ref_err")
@@ -659,6 +674,7 @@ def plot_error_vs_time(plt, rows, out):
             ax.axhline(t, color="gray", lw=0.6, ls=":")
         ax.set_xscale("log")
         ax.set_yscale("log")
+        seconds_axis(plt, ax.xaxis)
         ax.set_xlabel("wall time per run, median [s]")
         ax.set_ylabel("relative error")
         ax.grid(True, which="both", alpha=0.3)
