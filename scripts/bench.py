@@ -592,12 +592,13 @@ FORM_STYLES = {"gpts": "-", "mortar": "--"}
 
 
 def seconds_axis(plt, axis):
-    """A logarithmic axis of seconds labelled in plain numbers, the minor ticks at 2 and 5 of each decade
-    too (matplotlib labels every minor tick of an axis spanning about a decade, where 3 x 10^0 and 4 x 10^0
-    run into each other)."""
+    """A logarithmic axis of seconds labelled in plain numbers, the minor ticks at 2, 3 and 5 of each decade
+    too, or all of them on an axis spanning less than a factor of 4 (matplotlib labels every minor tick of
+    an axis spanning about a decade, where 3 x 10^0 and 4 x 10^0 run into each other)."""
     def minor(v, _):
+        lo, hi = sorted(axis.get_view_interval())
         lead = v / 10 ** math.floor(math.log10(v))
-        return "%g" % v if abs(lead - 2) < 1e-6 or abs(lead - 5) < 1e-6 else ""
+        return "%g" % v if hi < 4 * lo or min(abs(lead - d) for d in (2, 3, 5)) < 1e-6 else ""
     axis.set_major_formatter(plt.FuncFormatter(lambda v, _: "%g" % v))
     axis.set_minor_formatter(plt.FuncFormatter(minor))
 
@@ -840,6 +841,10 @@ def bin_git(args):
     return getattr(args, "bin_git", None) or git_info(args.out) + ", at the report"
 
 
+def now_minute():
+    return datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+
+
 def report_header(rows, ctx):
     """The title, and how, when, on which binary and under what load the sweep ran."""
     args, elapsed, load = ctx.args, ctx.elapsed, ctx.load
@@ -851,7 +856,7 @@ def report_header(rows, ctx):
       "(git %s; sha256 %s). Figures are from one shared machine: other work ran beside the sweep "
       "(load average %s at the start, %s at the end), so single timings carry noise of tens of per cent; "
       "ratios of runs made interleaved are the steadier figures."
-      % (datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), " ".join(sys.argv[1:]), elapsed,
+      % (getattr(args, "generated", None) or now_minute(), " ".join(sys.argv[1:]), elapsed,
          len(rows), os.path.relpath(args.bin_orig, ROOT) if args.bin_orig.startswith(ROOT) else args.bin_orig,
          bin_git(args), args.bin_sha, load[0], load[1]))
     A("")
@@ -913,14 +918,14 @@ def report_design(rows, ctx):
     A("Formulations (`-contact_formulation`, given on every run; column `formulation`): **gpts** (Gauss point "
       "to segment, both surfaces as slave) runs every configuration above; **mortar** (the program's default: "
       "nodal weighted gaps, the pair's first surface as slave) runs the default strategy (newton) at k_p = 2e6 on every mesh of hertz, "
-      "hertz-half and hertz-graded%s, and L-BFGS (lmvm-h0 and blmvm-h0, the program's defaults for them) at "
-      "k_p = 2e6, gttol 1e-8 on the uniform hertz meshes down to h = 0.015 (their rows were added to the "
-      "sweep's by `--merge` where the header says so), and not the other strategies, penalties or the "
+      "hertz-half and hertz-graded%s, and not the other strategies, penalties or the "
       "2-rank run: those measure the solver and the penalty, which the gpts rows cover, and leaving them "
       "out keeps the full sweep near an hour. "
       "On each mesh the two formulations' runs of a configuration alternate (gpts, mortar, gpts, ...), so "
       "that their time ratio is measured under the same load."
-      % ("" if args.quick else " at both tolerances"))
+      % ("" if args.quick else " at both tolerances, and L-BFGS (lmvm-h0 and blmvm-h0, the program's defaults "
+         "for them) at k_p = 2e6, gttol 1e-8 on the uniform hertz meshes down to h = 0.015 (rows added to an "
+         "earlier sweep by `--merge`, where the header says so)"))
     A("")
     A("Strategies: " + "; ".join("**%s** `%s`" % (s, " ".join(v) or "(defaults: -tao_type nls)")
                                  for s, v in STRATEGIES.items()) + ".")
@@ -1686,6 +1691,7 @@ def report_only(args):
     for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
         setattr(args, k, meta[k])
     args.bin_git = meta.get("bin_git")
+    args.generated = meta.get("generated")  # the sweep's own date, not the report's (older run.json: none)
     sys.argv = [sys.argv[0]] + meta["argv"]
     report(read_csv(os.path.join(args.out, "results.csv")), args, meta["info"], meta["meshes"],
            meta["elapsed"], meta["load"])
@@ -1827,6 +1833,7 @@ def merge_sweep(args, plan, nconf, tmp):
     meta["argv"] = meta["argv"] + ["+ merged (binary sha256 %s, git %s):" % (args.bin_sha, args.bin_git)] \
         + sys.argv[1:]
     meta["elapsed"] += time.time() - args.t0
+    meta["generated"] = args.generated = now_minute()
     with open(os.path.join(args.out, "run.json"), "w") as fh:
         json.dump(meta, fh, indent=1)
     for k in ("quick", "repeat", "timeout", "bin_orig", "bin_sha"):
@@ -1848,10 +1855,11 @@ def run_sweep(args, plan, nconf, tmp):
     meshes = [sweep_mesh(R, e, rows, args) for e in plan]
     elapsed = time.time() - args.t0
     load = (load0, "%.2f" % load_average())
+    args.generated = now_minute()
     with open(os.path.join(args.out, "run.json"), "w") as fh:
         json.dump({"quick": args.quick, "repeat": args.repeat, "timeout": args.timeout, "bin_orig": args.bin_orig,
                    "bin_sha": args.bin_sha, "bin_git": args.bin_git, "argv": sys.argv[1:], "info": info, "meshes": meshes,
-                   "elapsed": elapsed, "load": load}, fh, indent=1)
+                   "elapsed": elapsed, "load": load, "generated": args.generated}, fh, indent=1)
     report(rows, args, info, meshes, elapsed, load)
     R.say("done in %.0f s: %s/results.csv, RESULTS.md, error_vs_time.png, time_vs_dofs.png, ratio_to_linear.png"
           % (elapsed, args.out))
