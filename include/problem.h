@@ -74,11 +74,22 @@ typedef struct {
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
 } ProblemResults;
 
+/* What the solve runs: the options' load steps, penalty continuation and
+   decrement test, or, where the user gave none, what the program chose
+   (ProblemSetPenaltyContinuation, the L-BFGS defaults of lmvm.c); force
+   control's solves from a converged state run one stage. */
+typedef struct {
+  PetscInt  loadSteps, penaltyStages;
+  PetscReal penaltyStart;  /* the first stage's k_p over the scene's */
+  PetscReal decrementRtol; /* the last stage stops on the decrement (0: on the gradient tolerances; -1: not chosen yet) */
+} ProblemSchedule;
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue. */
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
   MPI_Comm       comm;
   ProblemOptions opt;
+  ProblemSchedule sched;
   PetscInt       nbodies;
   Body           bodies[CONTACT_MAX_BODIES];
   PetscInt       nterms;

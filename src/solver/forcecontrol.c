@@ -76,7 +76,7 @@ static PetscErrorCode ControlBodySize(Problem p, PetscInt k, PetscReal *L)
    scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
 static PetscErrorCode ControlSolve(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt loadSteps = p->opt.loadSteps, stages = p->opt.penaltyStages;
+  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
   PetscInt       n;
 
   PetscFunctionBeginUser;
@@ -88,12 +88,12 @@ static PetscErrorCode ControlSolve(Problem p, const PetscReal U[], Vec X0, Petsc
   PetscCall(VecDestroy(&p->X0));
   if (X0) { /* from the last converged state: one stage */
     PetscCall(ProblemSetInitialGuess(p, X0));
-    p->opt.loadSteps     = 1;
-    p->opt.penaltyStages = 1;
+    p->sched.loadSteps     = 1;
+    p->sched.penaltyStages = 1;
   }
   PetscCall(ProblemSolveStaged(p, &n, reason));
-  p->opt.loadSteps     = loadSteps;
-  p->opt.penaltyStages = stages;
+  p->sched.loadSteps     = loadSteps;
+  p->sched.penaltyStages = stages;
   p->res.controlSolves++;
   *its += n;
   if (*reason <= 0) PetscFunctionReturn(0);

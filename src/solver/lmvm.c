@@ -259,7 +259,7 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
   Vec                G;
 
   PetscFunctionBeginUser;
-  if (!(p->lmvmFinal && p->opt.decrementRtol > 0 && p->lmvmLambda0 > 0)) {
+  if (!(p->lmvmFinal && p->sched.decrementRtol > 0 && p->lmvmLambda0 > 0)) {
     PetscCall(TaoDefaultConvergenceTest(tao, NULL));
     PetscFunctionReturn(0);
   }
@@ -274,7 +274,7 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
   PetscCall(ProblemDecrement(p, tao, G, &lambda));
   PetscCall(PetscInfo(tao, "L-BFGS: decrement %g, %g of the first iterate's\n", (double)lambda, (double)(lambda / p->lmvmLambda0)));
   p->lmvmLambda = lambda;
-  if (lambda <= p->opt.decrementRtol * p->lmvmLambda0) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
+  if (lambda <= p->sched.decrementRtol * p->lmvmLambda0) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
   PetscFunctionReturn(0);
 }
 
@@ -283,7 +283,7 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
    tolerance. */
 static PetscBool ProblemLMVMAtFloor(Problem p)
 {
-  return (PetscBool)(p->lmvmFinal && p->opt.decrementRtol > 0 && p->lmvmLambda0 > 0 && p->lmvmLambda >= 0 && p->lmvmLambda <= LMVM_DECREMENT_FLOOR * p->opt.decrementRtol * p->lmvmLambda0);
+  return (PetscBool)(p->lmvmFinal && p->sched.decrementRtol > 0 && p->lmvmLambda0 > 0 && p->lmvmLambda >= 0 && p->lmvmLambda <= LMVM_DECREMENT_FLOOR * p->sched.decrementRtol * p->lmvmLambda0);
 }
 
 /* TAO's update at the start of each iteration, before the LMVM matrix takes
@@ -303,7 +303,7 @@ static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
     p->lmvmLambda = -1.0;
     PetscCall(TaoGetSolutionStatus(tao, NULL, &p->lmvmF0, &p->lmvmG0, NULL, NULL, NULL));
   }
-  if (it == 0 && p->opt.decrementRtol > 0 && p->lmvmLambda0 <= 0) PetscCall(ProblemDecrement(p, tao, G, &p->lmvmLambda0));
+  if (it == 0 && p->sched.decrementRtol > 0 && p->lmvmLambda0 <= 0) PetscCall(ProblemDecrement(p, tao, G, &p->lmvmLambda0));
   if (p->lmvmHave) PetscCall(ProblemScreenPair(p, tao, X, G));
   PetscCall(VecCopy(X, p->lmvmX));
   PetscCall(VecCopy(G, p->lmvmG));
@@ -358,8 +358,8 @@ static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
     PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
     given = (PetscBool)(given || flg);
   }
-  p->opt.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
-  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->opt.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
+  p->sched.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
+  PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->sched.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
   PetscFunctionReturn(0);
 }
 
@@ -412,7 +412,7 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
      near its tolerance, where Newton's last step lands far below it */
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-10));
   /* the decrement test where the penalty is stiff and the user chose no test */
-  if (p->opt.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p, stiff));
+  if (p->sched.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p, stiff));
   if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) PetscCall(ProblemChooseContinuation(p, stiff));
   /* the line search's evaluations: 100, not TAO's 30 (see the derivation) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_ls_max_funcs", &given));
@@ -449,7 +449,7 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
     PetscCall(VecDuplicate(p->X, &p->lmvmG));
     PetscCall(VecDuplicate(p->X, &p->lmvmW));
     PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, p));
-    if (p->opt.decrementRtol > 0) PetscCall(TaoSetConvergenceTest(p->tao, ProblemLMVMConverged, p));
+    if (p->sched.decrementRtol > 0) PetscCall(TaoSetConvergenceTest(p->tao, ProblemLMVMConverged, p));
   }
   PetscFunctionReturn(0);
 }

@@ -191,6 +191,10 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.pairRatio >= 1 && !PetscIsInfOrNanReal(p->opt.pairRatio), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_pair_ratio: must be a finite number >= 1, got %g", (double)p->opt.pairRatio);
   PetscCheck(p->opt.controlMaxIt >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.controlMaxIt);
   PetscCheck(p->opt.controlRtol > 0 && p->opt.controlRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)p->opt.controlRtol);
+  p->sched.loadSteps     = p->opt.loadSteps;
+  p->sched.penaltyStages = p->opt.penaltyStages;
+  p->sched.penaltyStart  = p->opt.penaltyStart;
+  p->sched.decrementRtol = p->opt.decrementRtol;
   PetscCall(ProblemCheckSolverOptions(p));
   if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
     PetscCall(PetscStrallocpy("<body>", &names[0]));
@@ -243,8 +247,8 @@ PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
 PetscErrorCode ProblemSetPenaltyContinuation(Problem p, PetscInt stages, PetscReal start)
 {
   PetscFunctionBeginUser;
-  if (!p->opt.penaltyStagesSet) p->opt.penaltyStages = stages;
-  if (!p->opt.penaltyStartSet) p->opt.penaltyStart = start;
+  if (!p->opt.penaltyStagesSet) p->sched.penaltyStages = stages;
+  if (!p->opt.penaltyStartSet) p->sched.penaltyStart = start;
   PetscFunctionReturn(0);
 }
 
@@ -815,10 +819,12 @@ static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
    gradient norm has fallen by -stage_rtol. */
 static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
 {
+  const ProblemSchedule *sc = &p->sched;
+
   PetscFunctionBeginUser;
-  for (PetscInt s = 1; s <= p->opt.penaltyStages; ++s) {
-    const PetscBool last    = (PetscBool)(lastLoad && s == p->opt.penaltyStages);
-    const PetscReal penalty = p->opt.penaltyStages > 1 ? PetscPowReal(p->opt.penaltyStart, (PetscReal)(p->opt.penaltyStages - s) / (p->opt.penaltyStages - 1)) : 1.0;
+  for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
+    const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
+    const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
     PetscCall(ProblemSetStage(p, load, penalty));
@@ -847,7 +853,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
    the staging. */
 static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->opt.loadSteps;
+  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
   Vec       Xs;
 
   PetscFunctionBeginUser;
@@ -859,7 +865,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   p->lmvmLambda0 = -1.0; /* -lmvm_decrement_rtol: set at the first iterate */
   p->lmvmFinal   = PETSC_TRUE; /* a single solve is the last stage */
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-  if (p->opt.loadSteps * p->opt.penaltyStages == 1) { /* one solve, from rest or from the given start */
+  if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
     PetscBool cut;
     if (p->X0) {
       PetscCall(ProblemGradientAtRest(p, &g0));
@@ -939,7 +945,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   }
   if (p->ncontrols) PetscCall(PetscPrintf(p->comm, " (force control: %" PetscInt_FMT " solves)", p->res.controlSolves));
   else if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
-  else if (p->opt.loadSteps * p->opt.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->opt.loadSteps * p->opt.penaltyStages));
+  else if (p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->sched.loadSteps * p->sched.penaltyStages));
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
