@@ -412,23 +412,25 @@ def render_solver_speed():
             f"stiffness plus the contact's Hessian) takes {lb['iterations']} and {lb['solve']:.2f} s")
 
 
+def lmvm_ratio_range():
+    """'least to greatest' of the lmvm table's L-BFGS solve times over Newton's in the same case."""
+    ratios = [r["solve"] / n["solve"] for r, n in lmvm_pairs() if r["tao"] != "nls"]
+    return f"{min(ratios):.2f} to {max(ratios):.2f}"
+
+
 def render_lmvm_ratio():
     """The least and the greatest of the lmvm table's L-BFGS solve times over Newton's, and its largest k_p."""
     from contactrun import power
-    pairs = [(r, n) for r, n in lmvm_pairs() if r["tao"] != "nls"]
-    ratios = [r["solve"] / n["solve"] for r, n in pairs]
-    return (f"{min(ratios):.2f} to {max(ratios):.2f} times Newton's time up to "
-            f"k_p = {power(max(r['kp'] for r, _ in pairs))}")
+    kp = max(r["kp"] for r, _ in lmvm_pairs() if r["tao"] != "nls")
+    return f"{lmvm_ratio_range()} times Newton's time up to k_p = {power(kp)}"
 
 
 def render_lmvm_iterations():
     """The lmvm table's range of L-BFGS solve times over Newton's, and the ranges of L-BFGS's and Newton's
     iterations over its cases."""
-    pairs = lmvm_pairs()
-    ratios = [r["solve"] / n["solve"] for r, n in pairs if r["tao"] != "nls"]
-    lm = [r["iterations"] for r, _ in pairs if r["tao"] != "nls"]
-    nl = [r["iterations"] for r, _ in pairs if r["tao"] == "nls"]
-    return (f"{min(ratios):.2f} to {max(ratios):.2f} here: the issue's bound was 3); L-BFGS takes {min(lm)} to "
+    lm = [r["iterations"] for r, _ in lmvm_pairs() if r["tao"] != "nls"]
+    nl = [r["iterations"] for r, _ in lmvm_pairs() if r["tao"] == "nls"]
+    return (f"{lmvm_ratio_range()} here: the issue's bound was 3); L-BFGS takes {min(lm)} to "
             f"{max(lm)} iterations whatever h and k_p, Newton {min(nl)} to {max(nl)}")
 
 
