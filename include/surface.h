@@ -20,6 +20,7 @@ typedef struct {
   PetscReal *X, *x, *g;   /* [nn][2] reference, current coordinates, gradient */
   PetscInt  *big;         /* [nn][2] index in the joined vector, -1 if constrained */
   PetscBool *endNode;     /* [nn] node on a single edge: an end of the surface */
+  PetscReal *endTurn;     /* [nn] at an end: the angle (radians, in (-pi, pi]) from the surface's tangent leaving the end to the body's boundary that continues it there, positive towards the body (a convex corner: pi/2 at a square one; 0 where the boundary goes on smoothly); else 0 (reference configuration) */
   PetscBool  mirror;      /* the surface is half of one symmetric about y = mirrorY (its mirror image continues it) */
   PetscReal  mirrorY, mirrorReach; /* the line; how far the current surface reaches past it (>= 0) */
   PetscReal *cutNode;     /* [nn] at an end of the surface on the mirror line, where its image joins it: the sign (+-1) of the x component of the outward normal there (reference configuration); else 0 */

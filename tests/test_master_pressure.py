@@ -98,7 +98,7 @@ def test_patch_master_exact(tmp_path):
     2.2e-16 = 1 ulp), one sample per node of the upper
     block's interface edge (counted in the mesh's geometry)."""
     s = patch_scene({})
-    r = run_contact(["-options_file", PATCH, "-contact_formulation", "mortar"] + PATCH_SOLVE, tmp_path)
+    r = run_contact(["-options_file", PATCH, "-contact_formulation", "mortar", "-contact_mortar_slave", "first"] + PATCH_SOLVE, tmp_path)
     m = surfaces(r)["upper_contact"]
     with r.h5() as f:
         nodes = int(np.sum(np.abs(f["bodies/upper/geometry"][:, 1]) < 1e-12))  # on the interface y = 0

@@ -19,6 +19,8 @@ To test a new formulation: add its options to FORMULATIONS and a
 pytest.param(name) line to STRICT (or drop the xfail mark of its line)."""
 from functools import lru_cache
 
+import math
+
 import numpy as np
 import pytest
 
@@ -219,10 +221,20 @@ def test_patch_report(variant, formulation, solve):
     print(f"  equilibrium: {abs(fy + R['lower:base'][1]) / F:.1e} {abs(fy - R['upper:push'][1]) / F:.1e} "
           f"{abs(fx + R['lower:symmetry'][0]) / F:.1e} {abs(fx - R['upper:symmetry'][0]) / F:.1e}; lengths "
           f"{[abs(r['length'] - s['W']) for r in e['surfaces'].values()]}; node ratio {(len(e['interface_nodes'][0]) - 1) / (len(e['interface_nodes'][1]) - 1):.3f}")
-    assert abs(fy + R["lower:base"][1]) <= 2000 * EPS * F
-    assert abs(fy - R["upper:push"][1]) <= 2000 * EPS * F
-    assert abs(fx + R["lower:symmetry"][0]) <= 100 * EPS * F
-    assert abs(fx - R["upper:symmetry"][0]) <= 100 * EPS * F
+    # sliding: the lower block's top overhangs the upper's corner by 2.5e-3,
+    # beside it and free (src/contact/gap.c, surfaces that end), and Newton
+    # stops nearer gttol there (residual 3e-10 against 1e-12 flush); the
+    # imbalance is the gradient summed over the block's free y-dofs, so at most
+    # sqrt(n) |g| (measured 1.1e-12 of F)
+    ybound = 2000 * EPS * F + (math.sqrt(sm["dofs"]) * sm["gradient_norm"] if variant == "sliding" else 0.0)
+    assert abs(fy + R["lower:base"][1]) <= ybound
+    assert abs(fy - R["upper:push"][1]) <= ybound
+    # x: the forces are 0 flush; sliding, the overhang's gap turns with the
+    # lift past the corner and the blocks press each other sideways (fx = 7.3e-3),
+    # balanced at the symmetry planes to the solver's residual (measured 1.9e-12 of F)
+    xbound = 100 * EPS * F + (math.sqrt(sm["dofs"]) * sm["gradient_norm"] if variant == "sliding" else 0.0)
+    assert abs(fx + R["lower:symmetry"][0]) <= xbound
+    assert abs(fx - R["upper:symmetry"][0]) <= xbound
     for r in e["surfaces"].values():
         # the weights (Gauss weights, or nodal A_j) sum to the width W = 1 to
         # round-off: measured 1 ulp (SkylakeX) to 2.0e-15 = 9 EPS (Nehalem), bound 100 EPS
@@ -236,8 +248,12 @@ def test_patch_report(variant, formulation, solve):
     assert e["node_distance"][1:-1].min() >= 2e-3
     assert 1.5 <= (len(xl) - 1) / (len(xu) - 1) <= 1.8
     # not exact for a formulation that fails the patch test: measured gpts
-    # -2.6e-6 (flush), -2.1e-5 (sliding); mortar -1.4e-14, -1.7e-5
-    assert abs(e["force_rel"]) <= {"flush": 7e-6, "sliding": 6e-5}[variant]
+    # -2.6e-6 (flush), -2.1e-5 (sliding); mortar -1.4e-14, and sliding -3.7e-4:
+    # the lower's slave edge past the upper's corner (2.5e-3 of W) is beside
+    # the upper block, not under it, and carries no pressure (-1.7e-5 when the
+    # upper's face was continued by its tangent line)
+    assert abs(e["force_rel"]) <= {("flush", "gpts"): 7e-6, ("sliding", "gpts"): 6e-5,
+                                   ("flush", "mortar"): 7e-6, ("sliding", "mortar"): 1e-3}[variant, formulation]
 
 
 @pytest.mark.parametrize("formulation", STRICT)

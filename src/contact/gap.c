@@ -32,8 +32,11 @@
    normal to n (the curvature of the distance to a point).
 
    Ends. Past an end of the master surface the closest point is the end node;
-   there the master is continued by its tangent line (ContactGapExtend), so a
-   deeply penetrated iterate's gap is continuous wherever the point goes.
+   there the gap is the end's tangent-line gap lifted by the overhang past
+   the end, as steeply as the master body's boundary turns there (surface.c's
+   endTurn; ContactGapBeyondEnd): a point is in contact where it lies inside
+   the master body, or past a square corner within its own penetration of
+   it, never for lying below the surface's tangent line beside a corner.
 
    Mirror. In a half model (the pair's -mirror_y y0) the master surface is
    continued across the line by its mirror image R(M), R(x, y) = (x, 2 y0 - y),
@@ -119,33 +122,90 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
   }
 }
 
-/* Beyond end je (+-1) of master edge P->me, which ends the master surface:
-   the gap to the edge's tangent line there, x_m(eta) = x_m(je) + (eta - je)
-   x_m'(je), a straight extension whose shape functions M_j(je) + (eta - je)
-   M_j'(je) are linear in eta. The projection onto it is orthogonal, so dg and
-   d2g keep their form (with x_m'' = 0), and g is C1 across the normal line
-   at the end: a point that an iterate pushes past the end of the master
-   surface keeps its gap, and the energy stays continuous. */
-static void ContactGapExtend(const ContactSurface *M, const PetscReal xs[2], PetscReal je, ContactGap *P)
+/* Beyond end je (+-1) of master edge P->me, which ends the master surface
+   at its node v = x_m(je): the gap
+     g = d . n1 + kappa s(eps),   d = x_s - v,   eps = d . t_out,
+   with t = x_m'(je), tau = t/|t|, t_out = je tau (leaving the surface), n1
+   = esign (tau_y, -tau_x) the outward normal at the end, kappa = tan(phi)
+   for the turn phi of the body's boundary at v (surface.c's endTurn)
+   clipped to [-45, 45] degrees, and s the overhang past the end smoothed
+   over a length h0 (1 % of the end edge): s = 0 for eps <= 0, eps^2 / (2 h0)
+   up to h0, eps - h0/2 beyond. d . n1 is the gap to the end's tangent line;
+   kappa s lifts it along the overhang:
+   - where the boundary goes on smoothly (phi = 0), g is the gap to the
+     tangent line (kappa = 0), as it was;
+   - where it turns by up to 45 degrees (a chamfer), g = 0 along the line on
+     which the body goes on (past h0), so that a point is in contact where it
+     lies inside the master body;
+   - at a sharper corner (a square punch's), a point past the end is in
+     contact only under the corner's 45 degree cone, where its overhang is
+     less than its penetration d . (-n1) (plus h0/2): the penalty's own
+     regularisation, as deep as the penetration p/k_p, never a point below
+     the tangent line farther out (the block's top beside a punch, which
+     followed that line and carried a pressure everywhere). A sharper
+     concave end alike.
+   g is continuous and C1 across the end's normal line (s = s' = 0 there),
+   whatever the turn, so the energy stays smooth wherever the point goes, and
+   a slave surface that ends flush with the master (eps of round-off) keeps
+   its gap to round-off.
+   Derivatives. With theta the angle of t (dtheta = tau_p . dt / |t|,
+   tau_p = (-tau_y, tau_x), dt = sum_j M_j'(je) du_j, d2theta = -2 (tau .
+   dt)(tau_p . dt) / |t|^2), dn1/dtheta = esign tau, dt_out/dtheta = je
+   tau_p, and Delta = du_s - sum_j M_j(je) du_j:
+     dg  = m . Delta + q dtheta,   m = n1 + kappa s' t_out,   q = d . v,
+           v = esign tau + kappa s' je tau_p,
+     d2g = 2 (v . Delta) dtheta - (d . m) dtheta^2 + q d2theta
+           + kappa s'' deps^2,   deps = t_out . Delta + je (d . tau_p) dtheta. */
+static void ContactGapBeyondEnd(const ContactSurface *M, const PetscReal xs[2], PetscReal je, ContactGap *P)
 {
-  PetscReal delta;
+  const PetscReal phi = M->endTurn[M->mnodes[7 * P->me + (je > 0 ? 1 : 0)]], es = M->esign[P->me];
+  const PetscReal kappa = PetscTanReal(PetscMax(-0.25 * PETSC_PI, PetscMin(0.25 * PETSC_PI, phi))), h0 = 0.01 * M->elen[P->me];
+  PetscReal       d[2], tp[2], eps, sv, s1, s2, dn1;
 
   MasterShape(M, P->me, je, P->M7, P->dM7, P->d2M7);
   MasterCombine(M, P->me, P->M7, P->dM7, P->d2M7, P->xm, P->tm, P->xpp);
-  delta = ((xs[0] - P->xm[0]) * P->tm[0] + (xs[1] - P->xm[1]) * P->tm[1]) / (P->tm[0] * P->tm[0] + P->tm[1] * P->tm[1]);
-  if (delta * je < 0) delta = 0.0; /* the clamped projection is at the end itself */
-  for (PetscInt j = 0; j < 7; ++j) {
-    P->M7[j] += delta * P->dM7[j];
-    P->d2M7[j] = 0.0;
+  ContactGapNormal(M, xs, P); /* n1, |t|, d . n1 */
+  dn1      = P->gap;
+  d[0]     = xs[0] - P->xm[0];
+  d[1]     = xs[1] - P->xm[1];
+  P->et[0] = P->tm[0] / P->tn;
+  P->et[1] = P->tm[1] / P->tn;
+  P->en[0] = P->n[0];
+  P->en[1] = P->n[1];
+  tp[0]    = -P->et[1];
+  tp[1]    = P->et[0];
+  eps      = je * (d[0] * P->et[0] + d[1] * P->et[1]);
+  if (eps <= 0) sv = s1 = s2 = 0.0;
+  else if (eps < h0) {
+    sv = 0.5 * eps * eps / h0;
+    s1 = eps / h0;
+    s2 = 1.0 / h0;
+  } else {
+    sv = eps - 0.5 * h0;
+    s1 = 1.0;
+    s2 = 0.0;
   }
-  for (PetscInt d = 0; d < 2; ++d) {
-    P->xm[d] += delta * P->tm[d];
-    P->xpp[d] = 0.0;
+  for (PetscInt c = 0; c < 2; ++c) {
+    P->n[c]   = P->en[c] + kappa * s1 * je * P->et[c];
+    P->ev[c]  = es * P->et[c] + kappa * s1 * je * tp[c];
+    P->xpp[c] = 0.0;
   }
-  P->eta = je + delta;
+  P->gap   = dn1 + kappa * sv;
+  P->eq    = d[0] * P->ev[0] + d[1] * P->ev[1];
+  P->egt   = dn1 + kappa * s1 * eps;
+  P->es2   = kappa * s2;
+  P->edp   = d[0] * tp[0] + d[1] * tp[1];
+  P->je    = je;
+  P->delta = -es * P->eq / P->tn; /* q dtheta = delta sum_j M_j' (n1 . du_j), n1 = -esign tau_p */
+  for (PetscInt j = 0; j < 7; ++j) P->d2M7[j] = 0.0;
+  P->eta = je;
   P->ext = PETSC_TRUE;
   P->fan = PETSC_FALSE;
-  ContactGapNormal(M, xs, P);
+}
+
+void ContactGapMasterWeight(const ContactGap *P, PetscInt j, PetscReal w[2])
+{
+  for (PetscInt c = 0; c < 2; ++c) w[c] = P->M7[j] * P->n[c] - (P->ext ? P->delta * P->dM7[j] * P->en[c] : 0.0);
 }
 
 /* The closest point of the master half itself. */
@@ -162,8 +222,8 @@ static void ContactGapProjectHalf(const ContactSurface *M, ContactSearch search,
      gap there is no contact; a negative one is a point pushed past the end,
      whose energy must not vanish as it crosses the end's normal line. Not at
      the cut of a half model, which the mirror image continues (a corner) */
-  if (P->eta <= -1.0 && M->endNode[mn[0]] && ContactSurfaceCutSide(M, mn[0]) == 0) ContactGapExtend(M, xs, -1.0, P);
-  else if (P->eta >= 1.0 && M->endNode[mn[1]] && ContactSurfaceCutSide(M, mn[1]) == 0) ContactGapExtend(M, xs, 1.0, P);
+  if (P->eta <= -1.0 && M->endNode[mn[0]] && ContactSurfaceCutSide(M, mn[0]) == 0) ContactGapBeyondEnd(M, xs, -1.0, P);
+  else if (P->eta >= 1.0 && M->endNode[mn[1]] && ContactSurfaceCutSide(M, mn[1]) == 0) ContactGapBeyondEnd(M, xs, 1.0, P);
   else ContactGapEvaluate(M, xs, P);
 }
 
@@ -216,7 +276,11 @@ void ContactGapFirst(const ContactGap *P, const PetscReal N[3], PetscReal dg[20]
 {
   for (PetscInt d = 0; d < 2; ++d) {
     for (PetscInt i = 0; i < 3; ++i) dg[2 * i + d] = N[i] * P->ns[d];
-    for (PetscInt j = 0; j < 7; ++j) dg[6 + 2 * j + d] = -P->M7[j] * P->n[d];
+  }
+  for (PetscInt j = 0; j < 7; ++j) {
+    PetscReal w[2];
+    ContactGapMasterWeight(P, j, w);
+    for (PetscInt d = 0; d < 2; ++d) dg[6 + 2 * j + d] = -w[d];
   }
 }
 
@@ -237,7 +301,27 @@ void ContactGapAddSecond(const ContactGap *P, const PetscReal N[3], PetscReal c,
       for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] += c * a[i] * a[j] / P->gap;
     return;
   }
-  if (PetscAbsReal(P->eta) >= 1.0 && !P->ext) return;
+  if (P->ext) { /* past an end: ContactGapBeyondEnd */
+    const PetscReal tp[2] = {-P->et[1], P->et[0]};
+    PetscReal       B[20], C[20], E[20];
+    for (PetscInt d = 0; d < 2; ++d) {
+      for (PetscInt i = 0; i < 3; ++i) {
+        a[2 * i + d] = N[i] * r[d] * P->ev[d];
+        E[2 * i + d] = N[i] * r[d] * P->je * P->et[d];
+        B[2 * i + d] = C[2 * i + d] = 0.0;
+      }
+      for (PetscInt j = 0; j < 7; ++j) {
+        a[6 + 2 * j + d] = -P->M7[j] * P->ev[d];
+        B[6 + 2 * j + d] = P->dM7[j] * tp[d] / P->tn;
+        C[6 + 2 * j + d] = P->dM7[j] * P->et[d] / P->tn;
+        E[6 + 2 * j + d] = -P->M7[j] * P->je * P->et[d] + P->je * P->edp * B[6 + 2 * j + d];
+      }
+    }
+    for (PetscInt i = 0; i < 20; ++i)
+      for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] += c * (a[i] * B[j] + B[i] * a[j] - P->egt * B[i] * B[j] - P->eq * (C[i] * B[j] + B[i] * C[j]) + P->es2 * E[i] * E[j]);
+    return;
+  }
+  if (PetscAbsReal(P->eta) >= 1.0) return;
   for (PetscInt d = 0; d < 2; ++d) {
     for (PetscInt i = 0; i < 3; ++i) {
       a[2 * i + d] = N[i] * r[d] * tau[d];

@@ -77,8 +77,11 @@ static void GPTSSlaveEnergyGradient(GPTS *cp, PetscInt s, PetscReal c, PetscReal
       f = c * cp->b.kp * w * pen;
       for (PetscInt i = 0; i < 3; ++i)
         for (PetscInt d = 0; d < 2; ++d) S->g[2 * sn[i] + d] -= f * P.N[i] * P.G.ns[d];
-      for (PetscInt j = 0; j < 7; ++j)
-        for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.G.me + j] + d] += f * P.G.M7[j] * P.G.n[d];
+      for (PetscInt j = 0; j < 7; ++j) {
+        PetscReal w[2];
+        ContactGapMasterWeight(&P.G, j, w);
+        for (PetscInt d = 0; d < 2; ++d) M->g[2 * M->mnodes[7 * P.G.me + j] + d] += f * w[d];
+      }
     }
   }
   *energy += e;

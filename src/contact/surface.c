@@ -247,6 +247,81 @@ static PetscErrorCode ContactSurfaceWalk(ContactSurface *S, const PetscInt adj[]
   PetscFunctionReturn(0);
 }
 
+/* The turn at end node v of the surface (end j of its edge e) to the body's
+   boundary edge that continues it, whose nodes (eta = -1, +1, 0) are at xf
+   with v at eta = -1 (first) or +1: the angle from the surface's unit
+   tangent leaving the end, t_out, to the continuation's, t_2, positive
+   towards the body (along -n, n the surface's outward normal). */
+static PetscReal ContactSurfaceEndTurn(const ContactSurface *S, PetscInt e, PetscInt j, const PetscReal xf[6], PetscBool first)
+{
+  PetscReal p[2], t[2], N[3], dN[3], t2[2] = {0, 0}, tout[2], nin[2], l;
+
+  EdgeEval(S->X, &S->enodes[3 * e], j ? 1.0 : -1.0, p, t);
+  l       = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  tout[0] = (j ? 1.0 : -1.0) * t[0] / l;
+  tout[1] = (j ? 1.0 : -1.0) * t[1] / l;
+  nin[0]  = -S->esign[e] * t[1] / l; /* -n, n = esign (t_y, -t_x) / |t| */
+  nin[1]  = S->esign[e] * t[0] / l;
+  EdgeShape(first ? -1.0 : 1.0, N, dN);
+  for (PetscInt k = 0; k < 3; ++k)
+    for (PetscInt d = 0; d < 2; ++d) t2[d] += (first ? 1.0 : -1.0) * dN[k] * xf[2 * k + d];
+  return PetscAtan2Real(t2[0] * nin[0] + t2[1] * nin[1], t2[0] * tout[0] + t2[1] * tout[1]);
+}
+
+/* Where the surface ends, how the body goes on (endTurn): at each end node,
+   the boundary edge of the body through it that is not in the surface's
+   group (DMPlexMarkBoundaryFaces: the body's boundary, not the partition's),
+   found by the rank whose cells hold it. A slave point past the end is then
+   judged against that continuation (gap.c), not against the surface's own
+   tangent line, which runs on into the open beside a corner. */
+static PetscErrorCode ContactSurfaceSetUpEnds(ContactSurface *S, Body b, const char pair[])
+{
+  const PetscReal none = -10.0; /* below any angle */
+  DMLabel         bnd, faces;
+  PetscInt        vStart, vEnd;
+  PetscReal      *turn;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(S->nn, &S->endTurn));
+  PetscCall(PetscMalloc1(S->nn, &turn));
+  for (PetscInt v = 0; v < S->nn; ++v) turn[v] = none;
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "boundary", &bnd));
+  PetscCall(DMPlexMarkBoundaryFaces(b->dm, 1, bnd));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vStart, &vEnd));
+  for (PetscInt pt = vStart; pt < vEnd; ++pt) {
+    const PetscInt *supp;
+    PetscInt        id, v, ns;
+    PetscCall(BodyGetNodeNumber(b, pt, &id));
+    PetscCall(PetscFindInt(id, S->nn, S->nodeId, &v));
+    if (v < 0 || !S->endNode[v]) continue;
+    PetscCall(DMPlexGetSupportSize(b->dm, pt, &ns));
+    PetscCall(DMPlexGetSupport(b->dm, pt, &supp));
+    for (PetscInt k = 0; k < ns; ++k) {
+      PetscInt  val, nodes[3];
+      PetscBool in = PETSC_FALSE;
+      PetscReal xf[6];
+      PetscCall(DMLabelGetValue(bnd, supp[k], &val));
+      if (val != 1) continue;
+      if (faces) PetscCall(DMLabelStratumHasPoint(faces, S->tag, supp[k], &in));
+      if (in) continue;
+      PetscCall(BodyEdgeNodes(b, supp[k], nodes, xf));
+      for (PetscInt e = 0; e < S->ne; ++e)
+        for (PetscInt j = 0; j < 2; ++j)
+          if (S->enodes[3 * e + j] == v) turn[v] = ContactSurfaceEndTurn(S, e, j, xf, nodes[0] == pt ? PETSC_TRUE : PETSC_FALSE);
+    }
+  }
+  PetscCall(DMLabelDestroy(&bnd));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, turn, S->nn, MPIU_REAL, MPI_MAX, b->comm));
+  for (PetscInt v = 0; v < S->nn; ++v) {
+    if (!S->endNode[v]) continue;
+    if (turn[v] > none) S->endTurn[v] = turn[v];
+    PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: an end at (%g, %g), the boundary turns there by %g degrees%s\n", pair, S->group, b->name, (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI), turn[v] > none ? "" : " (no boundary edge continues it: taken as straight on)"));
+  }
+  PetscCall(PetscFree(turn));
+  PetscFunctionReturn(0);
+}
+
 /* Builds the whole surface on every rank: the owned edges of the physical
    group with their nodes' global numbers, reference coordinates and outward
    normal sign, gathered from all ranks; the map to the body's and the joined
@@ -266,6 +341,7 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
   PetscCall(ContactSurfaceAdjacency(S, &deg, &adj, &adjStart));
   PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
   PetscCall(ContactSurfaceWalk(S, adj, adjStart));
+  PetscCall(ContactSurfaceSetUpEnds(S, b, pair));
   PetscCall(PetscFree2(deg, adjStart));
   PetscCall(PetscFree(adj));
   PetscFunctionReturn(0);
@@ -440,6 +516,7 @@ PetscErrorCode ContactSurfaceDestroy(ContactSurface *S)
   PetscCall(PetscFree(S->nodeId));
   PetscCall(PetscFree4(S->X, S->x, S->g, S->big));
   PetscCall(PetscFree(S->endNode));
+  PetscCall(PetscFree(S->endTurn));
   PetscCall(PetscFree(S->cutNode));
   PetscCall(PetscFree2(S->mnodes, S->mcorr));
   PetscCall(PetscFree2(S->locNode, S->locOff));
