@@ -85,6 +85,18 @@ static PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyCheckGroupsUnique(Body b, const char opt[], PetscInt n, char *const names[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt j = 0; j < i; ++j) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(names[i], names[j], &same));
+      PetscCheck(!same, b->comm, PETSC_ERR_USER_INPUT, "option %s: group %s given twice", opt, names[i]);
+    }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
 {
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
@@ -151,6 +163,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     b->exact.lambda  = b->param[0];
     b->exact.mu      = b->param[1];
   }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sbc", prefix));
+  PetscCall(BodyCheckGroupsUnique(b, opt, nbc, bcnames));
   b->nbc = nbc;
   for (PetscInt i = 0; i < nbc; ++i) {
     PetscCall(PetscStrncpy(b->bc[i].group, bcnames[i], sizeof(b->bc[i].group)));
@@ -711,6 +725,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   if (b->axisym) PetscCall(BodyCheckAxis(b));
   PetscCall(BodyBuildNodeData(b));
   PetscCall(BodyLoadsSetUp(b));
+  PetscCall(BodyCheckConditions(b));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
