@@ -102,6 +102,8 @@ PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
 PetscErrorCode BodyVertexCoordinates(Body, PetscReal **xy);
 /* Collective: the bounding box lo, hi of every rank's points xy[n][2]. */
 PetscErrorCode BodyPointsBox(Body, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2]);
+/* The index k of component c among bc's components if bc holds c at point p, else -1. */
+PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k);
 /* The first Dirichlet condition whose label holds component c at point p:
    its index i and the index k of c among its components (-1, -1: none). */
 PetscErrorCode BodyBCHolding(Body, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k);

@@ -318,18 +318,25 @@ PetscErrorCode BodyPointsBox(Body b, PetscInt n, const PetscReal xy[], PetscReal
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k)
+{
+  PetscInt val;
+
+  PetscFunctionBeginUser;
+  *k = -1;
+  PetscCall(DMLabelGetValue(bc->label, p, &val));
+  for (PetscInt l = 0; l < bc->ncomp && val == 1; ++l)
+    if (bc->comps[l] == c) *k = l;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k)
 {
   PetscFunctionBeginUser;
   *i = *k = -1;
   for (PetscInt j = 0; j < b->nbc && *i < 0; ++j) {
-    PetscInt val;
-    PetscCall(DMLabelGetValue(b->bc[j].label, p, &val));
-    for (PetscInt l = 0; l < b->bc[j].ncomp && val == 1; ++l)
-      if (b->bc[j].comps[l] == c) {
-        *i = j;
-        *k = l;
-      }
+    PetscCall(BodyBCHolds(&b->bc[j], p, c, k));
+    if (*k >= 0) *i = j;
   }
   PetscFunctionReturn(0);
 }

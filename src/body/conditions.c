@@ -31,19 +31,6 @@
      it, and the run goes on. */
 #include "body.h"
 
-/* The index k of component c among bc's components if bc holds c at point p, else -1. */
-static PetscErrorCode BCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k)
-{
-  PetscInt val;
-
-  PetscFunctionBeginUser;
-  *k = -1;
-  PetscCall(DMLabelGetValue(bc->label, p, &val));
-  for (PetscInt l = 0; l < bc->ncomp && val == 1; ++l)
-    if (bc->comps[l] == c) *k = l;
-  PetscFunctionReturn(0);
-}
-
 /* Collective: whether some rank found a conflict, and the first such rank's
    description info[n] on every rank (so that every rank stops with the same line). */
 static PetscErrorCode ShareFirst(Body b, PetscBool found, PetscInt n, PetscReal info[], PetscBool *any)
@@ -101,7 +88,7 @@ static PetscErrorCode CheckForceControls(Body b)
         for (PetscInt j = 0; j < b->nbc && dof && !found; ++j) {
           PetscInt l;
           if (j == i || b->bc[j].anchor) continue;
-          PetscCall(BCHolds(&b->bc[j], pts[q], G->comps[k], &l));
+          PetscCall(BodyBCHolds(&b->bc[j], pts[q], G->comps[k], &l));
           if (l < 0) continue;
           found   = PETSC_TRUE;
           info[0] = i;
@@ -193,7 +180,7 @@ static PetscErrorCode CheckLoad(Body b, PetscInt l)
         for (PetscInt j = 0; j < b->nbc; ++j) {
           PetscInt k;
           if (b->bc[j].anchor) continue;
-          PetscCall(BCHolds(&b->bc[j], pts[a], c, &k));
+          PetscCall(BodyBCHolds(&b->bc[j], pts[a], c, &k));
           if (k < 0) continue;
           h = PETSC_TRUE;
           held[c] |= (PetscInt)1 << j;
