@@ -87,6 +87,8 @@ static inline PetscReal BodyRadialWeight(Body b, PetscReal x)
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
 PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride);
+/* Refuses a group named twice in the list of option opt (-<body>_bc, -<body>_load). */
+PetscErrorCode BodyCheckGroupsUnique(Body, const char opt[], PetscInt n, char *const names[]);
 /* The Gmsh size field (a .pos file) the body's next mesh follows; "" or NULL: none. */
 PetscErrorCode BodySetSizeField(Body, const char path[]);
 /* Meshes the body's .geo with Gmsh (cached in meshDir), unless the mesh would
@@ -100,6 +102,8 @@ PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
 PetscErrorCode BodyVertexCoordinates(Body, PetscReal **xy);
 /* Collective: the bounding box lo, hi of every rank's points xy[n][2]. */
 PetscErrorCode BodyPointsBox(Body, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2]);
+/* The index k of component c among bc's components if bc holds c at point p, else -1. */
+PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k);
 /* The first Dirichlet condition whose label holds component c at point p:
    its index i and the index k of c among its components (-1, -1: none). */
 PetscErrorCode BodyBCHolding(Body, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k);
@@ -121,6 +125,10 @@ PetscErrorCode BodyEdgeOutwardSign(Body, PetscInt e, const PetscReal x[6], const
 PetscErrorCode BodyEdgeNodes(Body, PetscInt e, PetscInt pts[3], PetscReal x[6]);
 /* Loads (loads.c): -<body>_load and each group's _traction or _pressure. */
 PetscErrorCode BodyLoadsSetFromOptions(Body, const char prefix[], PetscBool help);
+/* This rank's edges of load L's group (all, owned or not): their number and points (is NULL if none; ISDestroy). */
+PetscErrorCode BodyLoadGetEdges(Body, const BodyLoad *L, PetscInt *n, IS *is);
+/* Load L's consistent nodal forces fe[3][2] on boundary edge e, at its nodes pts (corner, corner, mid). */
+PetscErrorCode BodyLoadEdgeForces(Body, const BodyLoad *L, PetscInt e, PetscInt pts[3], PetscReal fe[3][2]);
 /* Collective: the consistent nodal forces of the loads, once the mesh is read. */
 PetscErrorCode BodyLoadsSetUp(Body);
 /* Adds -f . u (times the load factor) to *energy and -f to g (local arrays). */
@@ -144,6 +152,11 @@ void           BodyRigidGramAxisymmetric(Body, PetscReal M[9]);
    the check that no node lies at x < 0 (once the cell cache is built). */
 PetscErrorCode BodyAddAxis(Body);
 PetscErrorCode BodyCheckAxis(Body);
+/* Collective, at the end of BodySetUp (conditions.c): refuses a force-controlled
+   group's node that another condition holds in the controlled component, and a
+   load acting at a node in a component that a force control holds; warns of a
+   load whose part in a component acts only at nodes held in it. */
+PetscErrorCode BodyCheckConditions(Body);
 /* Anchors the rigid motions its Dirichlet conditions leave free (anchors.c;
    in BodySetUp, before the section is made). */
 PetscErrorCode BodyAddAnchors(Body);

@@ -85,6 +85,18 @@ static PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyCheckGroupsUnique(Body b, const char opt[], PetscInt n, char *const names[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt j = 0; j < i; ++j) {
+      PetscBool same;
+      PetscCall(PetscStrcmp(names[i], names[j], &same));
+      PetscCheck(!same, b->comm, PETSC_ERR_USER_INPUT, "option %s: group %s given twice", opt, names[i]);
+    }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
 {
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
@@ -151,6 +163,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     b->exact.lambda  = b->param[0];
     b->exact.mu      = b->param[1];
   }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sbc", prefix));
+  PetscCall(BodyCheckGroupsUnique(b, opt, nbc, bcnames));
   b->nbc = nbc;
   for (PetscInt i = 0; i < nbc; ++i) {
     PetscCall(PetscStrncpy(b->bc[i].group, bcnames[i], sizeof(b->bc[i].group)));
@@ -304,18 +318,25 @@ PetscErrorCode BodyPointsBox(Body b, PetscInt n, const PetscReal xy[], PetscReal
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k)
+{
+  PetscInt val;
+
+  PetscFunctionBeginUser;
+  *k = -1;
+  PetscCall(DMLabelGetValue(bc->label, p, &val));
+  for (PetscInt l = 0; l < bc->ncomp && val == 1; ++l)
+    if (bc->comps[l] == c) *k = l;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k)
 {
   PetscFunctionBeginUser;
   *i = *k = -1;
   for (PetscInt j = 0; j < b->nbc && *i < 0; ++j) {
-    PetscInt val;
-    PetscCall(DMLabelGetValue(b->bc[j].label, p, &val));
-    for (PetscInt l = 0; l < b->bc[j].ncomp && val == 1; ++l)
-      if (b->bc[j].comps[l] == c) {
-        *i = j;
-        *k = l;
-      }
+    PetscCall(BodyBCHolds(&b->bc[j], p, c, k));
+    if (*k >= 0) *i = j;
   }
   PetscFunctionReturn(0);
 }
@@ -711,6 +732,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   if (b->axisym) PetscCall(BodyCheckAxis(b));
   PetscCall(BodyBuildNodeData(b));
   PetscCall(BodyLoadsSetUp(b));
+  PetscCall(BodyCheckConditions(b));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

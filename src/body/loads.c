@@ -61,7 +61,7 @@ static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscB
 
 PetscErrorCode BodyLoadsSetFromOptions(Body b, const char prefix[], PetscBool help)
 {
-  char     *names[CONTACT_MAX_BC];
+  char     *names[CONTACT_MAX_BC], opt[4 * CONTACT_NAME_LEN];
   PetscInt  n = CONTACT_MAX_BC;
 
   PetscFunctionBeginUser;
@@ -72,13 +72,10 @@ PetscErrorCode BodyLoadsSetFromOptions(Body b, const char prefix[], PetscBool he
     PetscCall(PetscStrallocpy("<group>", &names[0]));
     n = 1;
   }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sload", prefix));
+  PetscCall(BodyCheckGroupsUnique(b, opt, n, names));
   b->nload = n;
   for (PetscInt i = 0; i < n; ++i) {
-    for (PetscInt j = 0; j < i; ++j) {
-      PetscBool same;
-      PetscCall(PetscStrcmp(names[i], b->load[j].group, &same));
-      PetscCheck(!same, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: group %s given twice", prefix, names[i]);
-    }
     PetscCall(PetscStrncpy(b->load[i].group, names[i], sizeof(b->load[i].group)));
     PetscCall(PetscFree(names[i]));
     PetscCall(BodyLoadSetFromOptions(b, prefix, help, &b->load[i]));
@@ -126,32 +123,50 @@ static PetscErrorCode EdgeLoadForces(Body b, const BodyLoad *L, PetscInt e, cons
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyLoadGetEdges(Body b, const BodyLoad *L, PetscInt *n, IS *is)
+{
+  DMLabel  faces;
+  PetscInt tag;
+
+  PetscFunctionBeginUser;
+  *n  = 0;
+  *is = NULL;
+  PetscCall(BodyGetPhysicalTag(b, L->group, 1, &tag));
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  if (faces) PetscCall(DMLabelGetStratumIS(faces, tag, is));
+  if (*is) PetscCall(ISGetLocalSize(*is, n));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyLoadEdgeForces(Body b, const BodyLoad *L, PetscInt e, PetscInt pts[3], PetscReal fe[3][2])
+{
+  const PetscInt nq = L->isPressure ? 3 : 6;
+  PetscReal      x[6], gx[6], gw[6];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, gx, gw));
+  PetscCall(BodyEdgeNodes(b, e, pts, x));
+  PetscCall(EdgeLoadForces(b, L, e, x, nq, gx, gw, fe));
+  PetscFunctionReturn(0);
+}
+
 /* Adds load L's nodal forces on this rank's owned edges of its group into
    the local array f, and its resultant (this rank's) into r. */
 static PetscErrorCode BodyLoadAssemble(Body b, PetscSection s, const BodyLoad *L, PetscScalar f[], PetscReal r[2])
 {
-  DMLabel         faces;
-  IS              is = NULL;
-  PetscInt        tag, n = 0, gn, nq = L->isPressure ? 3 : 6;
+  IS              is;
+  PetscInt        n, gn;
   const PetscInt *pts = NULL;
-  PetscReal       gx[6], gw[6];
 
   PetscFunctionBeginUser;
-  PetscCall(PetscDTGaussQuadrature(nq, -1.0, 1.0, gx, gw));
-  PetscCall(BodyGetPhysicalTag(b, L->group, 1, &tag));
-  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
-  if (faces) PetscCall(DMLabelGetStratumIS(faces, tag, &is));
-  if (is) {
-    PetscCall(ISGetLocalSize(is, &n));
-    PetscCall(ISGetIndices(is, &pts));
-  }
+  PetscCall(BodyLoadGetEdges(b, L, &n, &is));
+  if (is) PetscCall(ISGetIndices(is, &pts));
   for (PetscInt i = 0; i < n; ++i) {
     PetscInt  np[3];
-    PetscReal x[6], fe[3][2];
+    PetscReal fe[3][2];
 
     if (!b->owned[pts[i] - b->pStart]) continue;
-    PetscCall(BodyEdgeNodes(b, pts[i], np, x));
-    PetscCall(EdgeLoadForces(b, L, pts[i], x, nq, gx, gw, fe));
+    PetscCall(BodyLoadEdgeForces(b, L, pts[i], np, fe));
     for (PetscInt a = 0; a < 3; ++a) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(s, np[a], &off));

@@ -1,0 +1,216 @@
+/* A body's conditions checked against each other, once its mesh, its
+   Dirichlet conditions and its loads are set up and before anything is
+   solved (the end of BodySetUp). A condition holds component c of a node
+   where its group's label holds the node and c is among its components
+   (the axis's u_r = 0, "r=0", is one; the anchors of a body held by
+   contact, anchors.c, are the program's and placed where nothing else
+   holds, so they are left out).
+
+   A force-controlled component c of group G moves G rigidly by U so that
+   G's reaction in c, the sum of dPi/du_c over G's nodes, is the force
+   (forcecontrol.c). A node of G that another condition H also holds in c
+   belongs to both: its value is one condition's, and the force goes partly
+   into H. The reference scene's push controlled to a force of -55 with its
+   corner shared by a clamped bottom ran to a result: P = 8.07, the bottom
+   took 49.5. So that is refused, naming both groups and the node; a node H
+   holds only in the other component is no conflict.
+
+   A load acts in c at a node where its consistent nodal force from one of
+   its edges (loads.c) has a c-component above round-off, 1e-12 of that
+   edge's largest: a traction (0, t) acts in y only, a pressure on a
+   straight edge along its normal only. Its share at a node held in c goes
+   into the reaction of the condition that holds it, and then:
+   - held by a force control, the controlled group transmits its force
+     plus that share: refused, naming the load's group and the control's;
+   - held by a displacement, the support carries that share: this is how a
+     load that reaches a support is discretised (a tube's bore ending on its
+     symmetry planes, a cantilever's top at its clamp), so it is accepted;
+     but where every node at which the load acts in c is held in c, the
+     load's c-part moves nothing at all (a traction on a clamped group): a
+     warning line naming the group, the component and the groups that hold
+     it, and the run goes on. */
+#include "body.h"
+
+/* Collective: whether some rank found a conflict, and the first such rank's
+   description info[n] on every rank (so that every rank stops with the same line). */
+static PetscErrorCode ShareFirst(Body b, PetscBool found, PetscInt n, PetscReal info[], PetscBool *any)
+{
+  PetscMPIInt rank, size, first;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  first = found ? rank : size;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
+  *any = (PetscBool)(first < size);
+  if (*any) PetscCallMPI(MPI_Bcast(info, (PetscMPIInt)n, MPIU_REAL, first, b->comm));
+  PetscFunctionReturn(0);
+}
+
+static const char *const Component[2] = {"x", "y"};
+
+/* Point p's node coordinates for a message, into xy[2]: the round-off of
+   the cell's coordinate field (1e-17 for a corner at 0) shown as 0. */
+static void NodeShown(Body b, PetscInt p, PetscReal xy[])
+{
+  const PetscReal *x = &b->xpoint[2 * (p - b->pStart)];
+
+  for (PetscInt d = 0; d < 2; ++d) xy[d] = PetscAbsReal(x[d]) <= 1e-12 * PetscAbsReal(x[1 - d]) ? 0.0 : x[d];
+}
+
+/* Refuses a node of a force-controlled group that another condition holds
+   in the controlled component. */
+static PetscErrorCode CheckForceControls(Body b)
+{
+  PetscSection s;
+  PetscReal    info[5] = {0, 0, 0, 0, 0}; /* G, H, c, x, y */
+  PetscBool    found = PETSC_FALSE, any;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt i = 0; i < b->nbc && !found; ++i) {
+    const BodyBC   *G = &b->bc[i];
+    IS              is;
+    PetscInt        n = 0;
+    const PetscInt *pts = NULL;
+
+    if (G->anchor) continue;
+    PetscCall(DMLabelGetStratumIS(G->label, 1, &is));
+    if (is) {
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+    }
+    for (PetscInt k = 0; k < G->ncomp && !found; ++k) {
+      if (!G->control[k]) continue;
+      for (PetscInt q = 0; q < n && !found; ++q) {
+        PetscInt dof;
+        PetscCall(PetscSectionGetDof(s, pts[q], &dof));
+        for (PetscInt j = 0; j < b->nbc && dof && !found; ++j) {
+          PetscInt l;
+          if (j == i || b->bc[j].anchor) continue;
+          PetscCall(BodyBCHolds(&b->bc[j], pts[q], G->comps[k], &l));
+          if (l < 0) continue;
+          found   = PETSC_TRUE;
+          info[0] = i;
+          info[1] = j;
+          info[2] = G->comps[k];
+          NodeShown(b, pts[q], &info[3]);
+        }
+      }
+    }
+    if (is) {
+      PetscCall(ISRestoreIndices(is, &pts));
+      PetscCall(ISDestroy(&is));
+    }
+  }
+  PetscCall(ShareFirst(b, found, 5, info, &any));
+  if (any) {
+    const char *G = b->bc[(PetscInt)info[0]].group, *H = b->bc[(PetscInt)info[1]].group, *c = Component[(PetscInt)info[2]];
+    SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: group %s, force-controlled in %s, shares the node at (%g, %g) with group %s, which holds it in %s too: part of the force would go into %s; let no other condition hold a force-controlled group's nodes in the controlled component", b->name, G, c, (double)info[3], (double)info[4], H, c, H);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The groups of the conditions in the bit set held, as "a", "a and b", "a, b and c". */
+static PetscErrorCode GroupList(Body b, PetscInt held, size_t len, char list[])
+{
+  PetscInt n = 0, m = 0;
+
+  PetscFunctionBeginUser;
+  list[0] = 0;
+  for (PetscInt j = 0; j < b->nbc; ++j) n += (held >> j) & 1;
+  for (PetscInt j = 0; j < b->nbc; ++j) {
+    if (!((held >> j) & 1)) continue;
+    if (m) PetscCall(PetscStrlcat(list, m == n - 1 ? " and " : ", ", len));
+    PetscCall(PetscStrlcat(list, b->bc[j].group, len));
+    ++m;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Collective: warns of load L where, in a component it acts in (acts, over
+   this rank's nodes), no node it acts at is free (loose); held: the
+   conditions (bits) that hold the nodes it acts at, per component. */
+static PetscErrorCode WarnHeldLoad(Body b, const BodyLoad *L, PetscInt acts[2], PetscInt loose[2], PetscInt held[2])
+{
+  PetscBool   x, y, whole;
+  const char *c;
+  char        by[CONTACT_MAX_BC * (CONTACT_NAME_LEN + 8)], part[32] = "the load";
+
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, acts, 2, MPIU_INT, MPI_MAX, b->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, loose, 2, MPIU_INT, MPI_MAX, b->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, held, 2, MPIU_INT, MPI_BOR, b->comm));
+  x     = (PetscBool)(acts[0] && !loose[0]);
+  y     = (PetscBool)(acts[1] && !loose[1]);
+  whole = (PetscBool)(!loose[0] && !loose[1]); /* in every component it acts in */
+  if (!x && !y) PetscFunctionReturn(0);
+  c = x && y ? "x and y" : x ? "x" : "y";
+  PetscCall(GroupList(b, (x ? held[0] : 0) | (y ? held[1] : 0), sizeof(by), by));
+  if (!whole) PetscCall(PetscSNPrintf(part, sizeof(part), "its %s part", c));
+  PetscCall(PetscFPrintf(b->comm, PETSC_STDERR, "contact: warning: body %s: every node where the load on group %s acts in %s is held in %s (by %s): %s moves nothing and goes into the reactions\n", b->name, L->group, c, c, by, part));
+  PetscFunctionReturn(0);
+}
+
+/* Refuses load l where it acts at a node that a force control holds in the
+   same component; warns where its part in a component acts only at held nodes. */
+static PetscErrorCode CheckLoad(Body b, PetscInt l)
+{
+  const BodyLoad *L = &b->load[l];
+  IS              is;
+  PetscInt        n, acts[2] = {0, 0}, loose[2] = {0, 0}, held[2] = {0, 0}; /* per component: acts somewhere, at an unheld node, the conditions (bits) that hold it */
+  const PetscInt *edges = NULL;
+  PetscReal       info[4] = {0, 0, 0, 0}; /* control's condition, c, x, y */
+  PetscBool       found = PETSC_FALSE, any;
+
+  PetscFunctionBeginUser;
+  PetscCall(BodyLoadGetEdges(b, L, &n, &is));
+  if (is) PetscCall(ISGetIndices(is, &edges));
+  for (PetscInt e = 0; e < n; ++e) {
+    PetscInt  pts[3];
+    PetscReal fe[3][2], big = 0;
+
+    PetscCall(BodyLoadEdgeForces(b, L, edges[e], pts, fe));
+    for (PetscInt a = 0; a < 3; ++a) big = PetscMax(big, PetscMax(PetscAbsReal(fe[a][0]), PetscAbsReal(fe[a][1])));
+    for (PetscInt a = 0; a < 3; ++a)
+      for (PetscInt c = 0; c < 2; ++c) {
+        PetscBool h = PETSC_FALSE;
+        if (!(PetscAbsReal(fe[a][c]) > 1e-12 * big)) continue;
+        acts[c] = 1;
+        for (PetscInt j = 0; j < b->nbc; ++j) {
+          PetscInt k;
+          if (b->bc[j].anchor) continue;
+          PetscCall(BodyBCHolds(&b->bc[j], pts[a], c, &k));
+          if (k < 0) continue;
+          h = PETSC_TRUE;
+          held[c] |= (PetscInt)1 << j;
+          if (b->bc[j].control[k] && !found) {
+            found   = PETSC_TRUE;
+            info[0] = j;
+            info[1] = c;
+            NodeShown(b, pts[a], &info[2]);
+          }
+        }
+        if (!h) loose[c] = 1;
+      }
+  }
+  if (is) {
+    PetscCall(ISRestoreIndices(is, &edges));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(ShareFirst(b, found, 4, info, &any));
+  if (any) {
+    const char *G = b->bc[(PetscInt)info[0]].group, *c = Component[(PetscInt)info[1]];
+    SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: the load on group %s acts in %s at the node (%g, %g), which group %s holds by its force control in %s: that part of the load would go into the control's reaction; load no node of a force-controlled group in the controlled component", b->name, L->group, c, (double)info[2], (double)info[3], G, c);
+  }
+  PetscCall(WarnHeldLoad(b, L, acts, loose, held));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyCheckConditions(Body b)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckForceControls(b));
+  for (PetscInt l = 0; l < b->nload; ++l) PetscCall(CheckLoad(b, l));
+  PetscFunctionReturn(0);
+}
