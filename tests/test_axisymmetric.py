@@ -258,3 +258,42 @@ def test_axis_declared_does_no_harm(tmp_path):
     assert own["dofs"] == auto["dofs"]
     assert abs(own["contact_force"] - auto["contact_force"]) <= 1e-12 * auto["contact_force"]
     assert "ball:r=0" not in own["reactions"] and "ball:r=0" in auto["reactions"]
+
+
+@pytest.mark.parametrize("h", [0.02, 0.005], ids=["coarse", "default"])
+def test_sphere_force_axial(h, tmp_path):
+    """In r-z the pair's force is axial: a ring's radial load points along
+    (cos th, sin th) round the circle and has no resultant (the hoop stress
+    carries it). The JSON's pair and surface forces have the radial
+    component exactly 0; the axial one is P, balances the equator's
+    reaction, the ball's only axial support (the axis holds u_r alone):
+    measured 4.4e-10 of P at h = 0.02 and 4.3e-6 at 0.005, the stopping
+    residual (bound 1e-4), and is minus the flat's (100 EPS). The HDF5's
+    nodal forces sum to it but for the force on the ball's node on the axis,
+    which has no row (the profile starts at the next node, its weighted gap
+    being 0 / 0): measured 8.0e-8 of P at h = 0.02, 3.7e-10 at 0.005, bound
+    1e-5. The nodes keep their own radial forces, which sum to the rings'
+    radial load: the flat's face dented to the slope r / 2R (equal materials
+    share Hertz's approach r^2 / 2R), so sum p n_r dA = 3 pi a / (32 R) P
+    against the ball, 3.0 % of P (measured -2.9840 % of P at h = 0.02 against
+    -2.9843 %, and -2.9709 % against -2.9873 % at 0.005; bound 5 % of it):
+    the radial force the report and the JSON gave the pair before,
+    (-0.0227, 0.7645) at the default h. The report prints the axial force alone."""
+    r = run_contact(SPHERE + ["-mesh_size", h], tmp_path)
+    s = r.summary
+    pair, P, a = s["contact"]["interface"], s["contact_force"], s["hertz_a"]
+    with r.h5() as f:
+        F = f["contact/interface/ball_contact/node_force"][...].sum(axis=0)
+    fz = pair["force"][1]
+    print(f"pair force {pair['force']}, P {P!r}, ball's node sum {F}, equator {s['reactions']['ball:equator']}: "
+          f"{abs(fz + s['reactions']['ball:equator'][1]) / P:.1e} of P; node sum {abs(fz - F[1]) / P:.1e} of P; "
+          f"radial / P {F[0] / P:.4e} against -3 pi a / 32 R {-3 * math.pi * a / 32:.4e}")
+    assert pair["force"][0] == 0 and all(x["force"][0] == 0 for x in pair["surfaces"])
+    assert P == pytest.approx(abs(fz), rel=100 * EPS)
+    assert [x["body"] for x in pair["surfaces"]] == ["ball", "flat"]
+    assert pair["surfaces"][0]["force"][1] == fz and abs(pair["surfaces"][1]["force"][1] + fz) <= 100 * EPS * P
+    assert abs(fz + s["reactions"]["ball:equator"][1]) <= 1e-4 * P
+    assert abs(fz - F[1]) <= 1e-5 * P
+    assert abs(F[0] / P / (-3 * math.pi * a / 32) - 1) <= 0.05
+    line = next(ln for ln in r.stdout.splitlines() if "contact force on ball" in ln)
+    assert line.split(":", 1)[1].split(",")[0].strip() == f"axial {fz:.6e}", line
