@@ -313,8 +313,8 @@ static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt
    contact force on each node, in r-z each node's own radial component
    too), and the line cells through them (cells or node_cells,
    ContactSideLineCells); empty datasets and no cells for a surface without
-   a profile; as attributes its body, group, centre, samples and slave.
-   The pair's figures as attributes of /contact/<pair>
+   a profile; as attributes its body, group, centre, samples, slave and
+   surface_index. The pair's figures as attributes of /contact/<pair>
    (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
@@ -391,6 +391,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &s)); /* its place in -contact_<pair>_surfaces (HDF5 lists groups by name) */
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", spec->name));
