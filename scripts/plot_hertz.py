@@ -115,6 +115,16 @@ def outline(topology, cell_type, x, n=12):
 
 
 
+SI_PREFIX = {"G": 9, "M": 6, "k": 3, "": 0, "c": -2, "m": -3, "µ": -6, "u": -6, "n": -9}
+
+
+def si_exponent(unit, base):
+    """The power of ten of an SI unit of base ("MPa": 6, "mm": -3), or None."""
+    if not unit.endswith(base):
+        return None
+    return SI_PREFIX.get(unit[:-len(base)])
+
+
 class Units:
     """Length and stress unit labels ("" when unknown)."""
 
@@ -125,11 +135,24 @@ class Units:
         unit = self.length if kind == "length" else self.stress
         return f"{text} [{unit}]" if unit else text
 
-    def value(self, x, kind):
+    def force(self, axisym):
+        """The unit of P: a force (stress x length^2) in r-z, where P is the
+        whole circle's; a force per unit thickness (stress x length) in plane
+        strain. In newtons where both units are SI (mm, MPa: N and N/mm),
+        else as the product."""
+        if not (self.length and self.stress):
+            return ""
+        es, el = si_exponent(self.stress, "Pa"), si_exponent(self.length, "m")
+        if es is None or el is None:
+            return f"{self.stress}·{self.length}²" if axisym else f"{self.stress}·{self.length}"
+        e = es + 2 * el
+        name = {v: k for k, v in SI_PREFIX.items() if k != "u"}.get(e)
+        newtons = f"{name}N" if name is not None else f"1e{e} N"
+        return newtons if axisym else f"{newtons}/{self.length}"
+
+    def value(self, x, kind, axisym=False):
         """x formatted with its unit, if any."""
-        unit = {"length": self.length, "stress": self.stress,
-                "force": f"{self.stress}·{self.length}"
-                if self.length and self.stress else ""}[kind]
+        unit = self.force(axisym) if kind == "force" else self.length if kind == "length" else self.stress
         return f"{x:.4g} {unit}" if unit else f"{x:.4g}"
 
 
@@ -389,34 +412,73 @@ def abscissa(side, axis):
     return x, lambda t: np.interp(np.asarray(t) + c, s[order], x[order])
 
 
+# Each role's colour, the same in every pair's figure: a slave's own pressure
+# (the pair's first slave; where both surfaces are slaves, as in gpts, the
+# second its own colour) and a mortar master's, transferred from the slave.
+ROLE_COLOURS = {"slave": "C1", "second slave": "C2", "master": "C0"}
+MARKERS_SHOWN = 40   # at most about this many markers per curve across the plot: on a finer mesh every k-th sample
+
+
+def surface_roles(g):
+    """(side, role) of each surface of a pair with a profile, in the pair's
+    order (attribute surface_index, the place in -contact_<pair>_surfaces;
+    by name in a file without it)."""
+    sides = sorted(profile_sides(g), key=lambda v: (attr(v, "surface_index", 0), v.name))
+    roles, slaves = [], 0
+    for side in sides:
+        if is_slave(side):
+            roles.append((side, "slave" if slaves == 0 else "second slave"))
+            slaves += 1
+        else:
+            roles.append((side, "master"))
+    return roles
+
+
+def thin_markers(ax, lines):
+    """Marks every k-th sample of each line, k such that about MARKERS_SHOWN
+    of its samples inside the axes' x range are marked (all of them on a
+    coarse mesh); the line keeps all its samples."""
+    lo, hi = ax.get_xlim()
+    for line in lines:
+        x = np.asarray(line.get_xdata())
+        inside = np.count_nonzero((x >= min(lo, hi)) & (x <= max(lo, hi)))
+        line.set_markevery(max(1, int(np.ceil(inside / MARKERS_SHOWN))))
+
+
 def plot_pressure(f, axes, units, zoom=None, axis="s"):
     """Each pair's pressure profiles against the arc position s - s_c (axis
     "s") or the current x or y coordinate (the Hertz curve then centred at
-    the slave's centre, its half-width along that axis)."""
+    the slave's centre, its half-width along that axis). A master's curve is
+    drawn thinner and behind the slave's, the Hertz curve between them."""
     axisym = "metadata" in f and bool(attr(f["metadata"], "axisymmetric", 0))
     if axisym:   # a meridian section: against the current radius, Hertz centred on the axis
         axis = "x"
     for ax, (pair, g) in zip(axes, f["contact"].items()):
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
-        centre = 0.0
-        for side in profile_sides(g):
+        centre, marked = 0.0, []
+        for side, role in surface_roles(g):
             (u, to), p = abscissa(side, axis), sample(side, "pressure")
             s = sample(side, "s") - attr(side, "centre", 0.0)
-            name = f"{attr(side, 'body')}:{attr(side, 'group')}"
-            if is_slave(side) and not axisym:
+            name, colour = f"{attr(side, 'body')}:{attr(side, 'group')}", ROLE_COLOURS[role]
+            if role == "slave" and not axisym:
                 centre = float(to(0.0))
+            z = 2 if role == "master" else 3
             if is_nodal(side) and is_slave(side):
                 t, q = nodal_curve(s, p)
-                line, = ax.plot(to(t), q, "-", lw=1.2, label=f"{name}, nodal pressure (quadratic interpolant)")
-                ax.plot(u, p, "o", ms=3.5, color=line.get_color())
+                ax.plot(to(t), q, "-", lw=1.4, color=colour, zorder=z,
+                        label=f"{name}, nodal pressure (quadratic interpolant)")
+                marked += ax.plot(u, p, "o", ms=3.5, color=colour, zorder=z)
             elif is_nodal(side):
                 t, q = nodal_curve(s, p)
-                line, = ax.plot(to(t), q, "--", lw=1.2, label=f"{name}, master: slave's nodal forces / A_j")
-                ax.plot(u, p, "s", ms=3.5, mfc="none", color=line.get_color())
+                ax.plot(to(t), q, "--", lw=0.9, color=colour, zorder=z,
+                        label=f"{name}, master: slave's nodal forces / A_j")
+                marked += ax.plot(u, p, "s", ms=3.5, mfc="none", mew=0.8, color=colour, zorder=z)
             else:
-                ax.plot(u, p, "o-", ms=3, lw=0.8, label=f"{name} (one-sided, Gauss points)")
+                marked += ax.plot(u, p, "o-", ms=3, lw=0.8, color=colour, zorder=z,
+                                  label=f"{name} (one-sided, Gauss points)")
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
-        text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force')}"]
+        text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force', axisym)}"
+                + (" (the whole circle)" if axisym else "")]
         xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0) if axis == "s" else None
         if hertz and a > 0:
             pmax = attr(g, "hertz_pmax")
@@ -424,17 +486,19 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
             ends = (min(-a, xr[0]), max(a, xr[1])) if xr else (-1.5 * a, 1.5 * a)
             ax.plot(centre + np.r_[ends[0], t, ends[1]],
                     np.r_[0, pmax * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None)), 0],
-                    "k-", lw=1.5, label="Hertz")
-            fa, fp = attr(g, "fem_a"), attr(g, "fem_pmax")
+                    "k-", lw=1.5, zorder=2.5, label="Hertz")
+            # the half-width the README says to quote: the second moment's, not where the loaded nodes end
+            fa, fp = attr(g, "fem_a_moment"), attr(g, "fem_pmax")
             text += [f"Hertz: a = {units.value(a, 'length')}, "
                      f"p_max = {units.value(pmax, 'stress')}",
-                     f"computed: a = {units.value(fa, 'length')} ({100 * (fa - a) / a:+.1f} %), "
-                     f"p_max = {units.value(fp, 'stress')} ({100 * (fp - pmax) / pmax:+.1f} %)",
+                     f"computed: p_max = {units.value(fp, 'stress')} ({100 * (fp - pmax) / pmax:+.2f} %),",
+                     f"    a = {units.value(fa, 'length')} (second moment, {100 * (fa - a) / a:+.2f} %)",
                      f"relative L2 error of p: {100 * attr(g, 'pressure_l2_error'):.2f} %"]
         if xr is not None:
             ax.set_xlim(*xr)
         if axisym:
             ax.set_xlim(0, 1.5 * max(a, attr(g, "fem_a", 0.0)) if a > 0 else None)
+        thin_markers(ax, marked)
         low = min([np.min(sample(v, "pressure"), initial=0.0) for v in profile_sides(g)], default=0.0)
         ax.set_ylim(1.45 * low, 1.45 * ax.get_ylim()[1])   # a master corner node may take a small negative share
         ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",

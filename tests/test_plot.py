@@ -320,3 +320,158 @@ def test_pressure_against_coordinate(axis, mortar, tmp_path):
     out = tmp_path / "p.png"
     assert plot(mortar, "--axis", axis, "-o", out).returncode == 0
     assert_png(out)
+
+
+SPHERE = ["-options_file", "meshes/sphere/sphere.opts", "-mesh_size", "0.02"]
+
+
+@pytest.fixture(scope="module")
+def sphere(tmp_path_factory):
+    d = tmp_path_factory.mktemp("sphere")
+    return run_contact(SPHERE, d, name="sphere").output_path
+
+
+def box_text(ax):
+    return "\n".join(x.get_text() for x in ax.texts)
+
+
+@pytest.mark.parametrize("units, axisym_unit, plane_unit", [
+    ("mm,MPa", "N", "N/mm"), ("m,Pa", "N", "N/m"), ("m,MPa", "MN", "MN/m"), ("in,psi", "psi·in²", "psi·in")])
+def test_force_unit(units, axisym_unit, plane_unit, sphere, hertz):
+    """P is a force in r-z (the whole circle's: stress x length^2, MPa mm^2 =
+    1e6 Pa 1e-6 m^2 = 1 N) and a force per unit thickness in plane strain
+    (MPa mm = N/mm); units that are not SI stay a product. The box's P is
+    the HDF5's P with that unit (was 'MPa·mm' for the sphere)."""
+    import matplotlib.pyplot as plt
+    for h5, unit in ((sphere, axisym_unit), (hertz, plane_unit)):
+        fig, ax = pressure_axes(h5, units)
+        with h5py.File(h5, "r") as f:
+            P = float(np.ravel(f["contact/interface"].attrs["P"])[0])
+        line = box_text(ax).splitlines()[0]
+        print(units, line)
+        assert line.split(" (")[0] == f"P = {P:.4g} {unit}", line
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("run", ["hertz", "sphere"])
+def test_box_quotes_second_moment(run, request):
+    """The box's computed half-width is the second-moment one the README
+    says to quote: its number is fem_a_moment read from the HDF5 with h5py
+    (to the 4 digits shown), its percentage 100 (fem_a_moment / hertz_a - 1)
+    (to the 2 decimals shown), and not the edge one, fem_a (at h = 0.2 on
+    hertz -23.77 % from Hertz's against the moment's -4.02 %; on the sphere
+    at h = 0.02 -6.30 % against -0.48 %)."""
+    import re
+    import matplotlib.pyplot as plt
+    h5 = request.getfixturevalue(run)
+    with h5py.File(h5, "r") as f:
+        g = f["contact/interface"]
+        am, ae, a = (float(np.ravel(g.attrs[k])[0]) for k in ("fem_a_moment", "fem_a", "hertz_a"))
+    fig, ax = pressure_axes(h5)
+    m = re.search(r"a = (\S+) \(second moment, ([-+]\d+\.\d\d) %\)", box_text(ax))
+    print(box_text(ax), f"\nfem_a_moment {am!r} ({100 * (am / a - 1):+.2f} %), fem_a {ae!r} ({100 * (ae / a - 1):+.2f} %)")
+    assert m, box_text(ax)
+    assert float(m.group(1)) == pytest.approx(am, rel=5e-4)
+    assert float(m.group(2)) == pytest.approx(100 * (am / a - 1), abs=0.005 + 1e-9)
+    assert abs(ae / am - 1) > 1e-3   # the edge half-width would show another number
+    plt.close(fig)
+
+
+@pytest.fixture(scope="module")
+def fine(tmp_path_factory):
+    d = tmp_path_factory.mktemp("fine")
+    return run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.03"], d, name="fine").output_path
+
+
+def visible_markers(line, lo, hi):
+    """How many of a line's markers fall inside [lo, hi]."""
+    x, k = np.asarray(line.get_xdata()), line.get_markevery()
+    k = 1 if k is None else k
+    idx = np.arange(0, len(x), k)
+    return int(np.count_nonzero((x[idx] >= lo) & (x[idx] <= hi)))
+
+
+def test_fine_mesh_master_behind(fine, tmp_path):
+    """On a finer mesh (h = 0.03: 141 and 137 samples, 71 and 73 in the
+    plot's range) the master's curve does not hide the slave's: it is drawn
+    thinner and below it (zorder), the Hertz curve between them, and each
+    curve marks at most about 40 of its samples inside the plot's range
+    (every k-th: measured 35 and 37), its data still all of them
+    (test_pressure_curves_are_the_hdf5). The PNG of h = 0.015 (hertz's
+    master drawn as a ribbon of squares before) was looked at."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    fig, ax = pressure_axes(fine)
+    lo, hi = ax.get_xlim()
+    curves = {l.get_label(): l for l in ax.get_lines() if not l.get_label().startswith("_")}
+    slave, = [l for k, l in curves.items() if "nodal pressure" in k]
+    master, = [l for k, l in curves.items() if "master" in k]
+    assert master.get_zorder() < curves["Hertz"].get_zorder() < slave.get_zorder()
+    assert master.get_linewidth() < slave.get_linewidth()
+    marked = [l for l in ax.get_lines() if l.get_marker() not in ("None", "", None)]
+    assert sorted(l.get_zorder() for l in marked) == sorted((master.get_zorder(), slave.get_zorder()))
+    x = [np.asarray(l.get_xdata()) for l in marked]
+    inside = [int(np.count_nonzero((v >= lo) & (v <= hi))) for v in x]
+    shown = [visible_markers(l, lo, hi) for l in marked]
+    print(f"samples {[len(v) for v in x]}, inside the range {inside}, marked {shown}")
+    assert min(inside) > mod.MARKERS_SHOWN + 1         # a mesh fine enough to need the stride
+    assert all(0 < s <= mod.MARKERS_SHOWN + 1 for s in shown)
+    plt.close(fig)
+    out = tmp_path / "fine.png"
+    assert plot(fine, "-o", out).returncode == 0
+    assert_png(out)
+
+
+def two_pairs(d):
+    """Two copies of the twodiscs scene (discs R = 1 and 2 of
+    meshes/hertz/indenter.geo, the larger pushed), 5 apart, h = 0.2: pair
+    'one' lists the small disc first (the slave), pair 'two' the large one,
+    so that the slave's group name sorts first in one pair and last in the
+    other."""
+    geo = "meshes/hertz/indenter.geo"
+    args = ["-scene", "twopairs", "-bodies", "small1,large1,small2,large2", "-mesh_size", 0.2,
+            "-contact_pairs", "one,two", "-contact_one_surfaces", "small1:contact,large1:contact",
+            "-contact_two_surfaces", "large2:contact,small2:contact",
+            "-contact_one_hertz_radii", "1,2", "-contact_two_hertz_radii", "2,1"]
+    for k, yc in (("1", 0), ("2", 5)):
+        args += [f"-small{k}_geo", geo, f"-small{k}_geo_params", f"R=1,xc=-1,yc={yc},dir=1,xclamp=-1.8,xcontact=-0.5",
+                 f"-small{k}_E", 1000, f"-small{k}_nu", 0.3, f"-small{k}_bc", "clamp",
+                 f"-large{k}_geo", geo, f"-large{k}_geo_params", f"R=2,xc=2,yc={yc},dir=-1,xclamp=3.6,xcontact=1",
+                 f"-large{k}_E", 3000, f"-large{k}_nu", 0.25, f"-large{k}_bc", "clamp",
+                 f"-large{k}_bc_clamp_values", "-0.01,0"]
+    return run_contact(args, d, name="twopairs").output_path
+
+
+def test_role_colours_two_pairs(tmp_path):
+    """A scene with two pairs: each role (the slave's own pressure, the
+    master's transferred one) has one colour in both pairs' plots, its
+    legend entry that colour, the two roles two colours, although HDF5 lists
+    the surfaces by name (the slave first in pair 'two', last in 'one': the
+    colours followed that order before). The surfaces' attribute
+    surface_index is their place in -contact_<pair>_surfaces."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    h5 = two_pairs(tmp_path)
+    colours = {}
+    with h5py.File(h5, "r") as f:
+        for pair, first in (("one", "small1_contact"), ("two", "large2_contact")):
+            g = f[f"contact/{pair}"]
+            assert [int(np.ravel(g[k].attrs["surface_index"])[0]) for k in g] == ([1, 0] if pair == "one" else [0, 1])
+            assert bool(np.ravel(g[first].attrs["slave"])[0])
+        fig, axes = plt.subplots(2, 1, squeeze=False)
+        mod.plot_pressure(f, axes[:, 0], mod.Units())
+        for ax, pair in zip(axes[:, 0], ("one", "two")):
+            leg = ax.get_legend()
+            handles = getattr(leg, "legend_handles", None) or leg.legendHandles   # matplotlib < 3.7: legendHandles
+            legend = {t.get_text(): h.get_color() for t, h in zip(leg.get_texts(), handles)}
+            for l in ax.get_lines():
+                role = "master" if "master" in l.get_label() else "slave" if "nodal pressure" in l.get_label() else None
+                if role:
+                    colours.setdefault(role, set()).add(l.get_color())
+                    assert legend[l.get_label()] == l.get_color()
+        plt.close(fig)
+    print(colours)
+    assert len(colours["slave"]) == 1 and len(colours["master"]) == 1 and colours["slave"] != colours["master"]
+    out = tmp_path / "two.png"
+    assert plot(h5, "-o", out).returncode == 0
+    assert_png(out)

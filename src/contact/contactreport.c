@@ -92,15 +92,23 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
   PetscFunctionBeginUser;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, f, 4, MPIU_REAL, MPIU_SUM, comm));
   PetscCall(MPIU_Allreduce(&maxPen, &R->maxPen, 1, MPIU_REAL, MPIU_MAX, comm));
+  /* In r-z the sums over a surface's nodes have no radial resultant. The
+     radial column is sum_j int p n_r N_j 2 pi r dS, the rings' radial line
+     loads (on the sphere scene p n_r ~ p r / 2R on the flat's dented face:
+     3 pi a / 32 R of P, 3 %), and a ring's radial load points along
+     (cos th, sin th) around the circle, so it integrates to zero there: the
+     hoop stress carries it, not the other body. The force of a surface and
+     of the pair is axial, its radial component 0 by symmetry; the nodes'
+     own forces (node_force) keep theirs. */
+  if (spec->axisym) f[0] = f[2] = 0.0;
   for (PetscInt s = 0; s < 2; ++s) {
     R->side[s].force[0] = f[2 * s];
     R->side[s].force[1] = f[2 * s + 1];
   }
   R->force[0] = f[0];
   R->force[1] = f[1];
-  /* a mirrored half doubles the force across the line and cancels it along;
-     in axisymmetry the rings' radial forces cancel over the circle */
-  fm[0] = spec->mirror ? 2.0 * f[0] : (spec->axisym ? 0.0 : f[0]);
+  /* a mirrored half doubles the force across the line and cancels it along */
+  fm[0] = spec->mirror ? 2.0 * f[0] : f[0];
   fm[1] = spec->mirror ? 0.0 : f[1];
   R->P  = PetscSqrtReal(fm[0] * fm[0] + fm[1] * fm[1]);
   R->hEdge = PETSC_MAX_REAL;
@@ -149,11 +157,22 @@ PetscErrorCode ContactReportDiagnose(const ContactReport *R, const ContactPairSp
   PetscFunctionReturn(0);
 }
 
+/* A force as the report prints it: (x, y) in plane strain, its axial
+   component alone in r-z (the radial one is 0 by symmetry: ContactReportFinish). */
+static PetscErrorCode ContactForceString(const PetscReal f[2], PetscBool axisym, char buf[], size_t n)
+{
+  PetscFunctionBeginUser;
+  if (axisym) PetscCall(PetscSNPrintf(buf, n, "axial %.6e", (double)f[1]));
+  else PetscCall(PetscSNPrintf(buf, n, "(%.6e, %.6e)", (double)f[0], (double)f[1]));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], MPI_Comm comm)
 {
   const PetscInt C = CONTACT_ROW_COLS;
   PetscMPIInt    rank;
   PetscReal      fm[2];
+  char           fs[2][64];
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -161,7 +180,8 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   fm[1] = spec->mirror ? 0.0 : R->force[1];
   if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
-  PetscCall(PetscPrintf(comm, "  contact force on %s%s: (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : "", (double)fm[0], (double)fm[1], (double)R->P));
+  PetscCall(ContactForceString(fm, spec->axisym, fs[0], sizeof(fs[0])));
+  PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   {
     char why[PETSC_MAX_PATH_LEN];
@@ -182,7 +202,10 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
         continue;
       }
       if (S->slave) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
-      else PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's nodal forces over int N_j dS (centre s = %.6g, peak %.6g, force (%.6e, %.6e)):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, (double)S->force[0], (double)S->force[1]));
+      else {
+        PetscCall(ContactForceString(S->force, spec->axisym, fs[0], sizeof(fs[0])));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's nodal forces over int N_j dS (centre s = %.6g, peak %.6g, force %s):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, fs[0]));
+      }
       if (first < 0) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
         continue;
@@ -201,7 +224,9 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   }
   if (R->nodal) {
     const PetscReal *a = R->side[0].force, *b = R->side[1].force, na = PetscSqrtReal(a[0] * a[0] + a[1] * a[1]);
-    PetscCall(PetscPrintf(comm, "  nodal contact forces%s: %s:%s (%.6e, %.6e), %s:%s (%.6e, %.6e); |sum| / |force| = %.1e\n", spec->mirror ? " (the half model)" : "", bodies[spec->body[0]]->name, spec->group[0], (double)a[0], (double)a[1], bodies[spec->body[1]]->name, spec->group[1], (double)b[0], (double)b[1], (double)(na > 0 ? PetscSqrtReal(PetscSqr(a[0] + b[0]) + PetscSqr(a[1] + b[1])) / na : 0.0)));
+    PetscCall(ContactForceString(a, spec->axisym, fs[0], sizeof(fs[0])));
+    PetscCall(ContactForceString(b, spec->axisym, fs[1], sizeof(fs[1])));
+    PetscCall(PetscPrintf(comm, "  nodal contact forces%s: %s:%s %s, %s:%s %s; |sum| / |force| = %.1e\n", spec->mirror ? " (the half model)" : "", bodies[spec->body[0]]->name, spec->group[0], fs[0], bodies[spec->body[1]]->name, spec->group[1], fs[1], (double)(na > 0 ? PetscSqrtReal(PetscSqr(a[0] + b[0]) + PetscSqr(a[1] + b[1])) / na : 0.0)));
   }
   if (spec->hertz && !(R->P > 0)) PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
   else if (spec->hertz) {
@@ -285,10 +310,12 @@ static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt
    when the samples are nodes: for a slave its weighted gap, nodal pressure
    and A_j, for a master its gap weighted over the slave's points, the
    transferred pressure and int N_j dS; then also node_force, the pair's
-   contact force on each node),
-   and the line cells through them (cells or node_cells,
+   contact force on each node, in r-z each node's own radial component
+   too), and the line cells through them (cells or node_cells,
    ContactSideLineCells); empty datasets and no cells for a surface without
-   a profile. The pair's figures as attributes of /contact/<pair> (collective). */
+   a profile; as attributes its body, group, centre, samples, slave and
+   surface_index. The pair's figures as attributes of /contact/<pair>
+   (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
   MPI_Comm    comm;
@@ -364,6 +391,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
     PetscCall(PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &s)); /* its place in -contact_<pair>_surfaces (HDF5 lists groups by name) */
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", spec->name));

@@ -161,7 +161,10 @@ static void JSONReactions(FILE *fp, Problem p)
   fprintf(fp, "\n  }");
 }
 
-/* Each load's resultant, at the load factor solved (only with loads). */
+/* Each load's resultant, at the load factor solved (only with loads). In
+   r-z it is axial: the radial sum of a load's nodal forces is its rings'
+   radial load, which cancels round the circle (as a contact pair's,
+   contactreport.c), so its radial component is written 0. */
 static void JSONLoads(FILE *fp, Problem p)
 {
   PetscInt n = 0;
@@ -169,7 +172,7 @@ static void JSONLoads(FILE *fp, Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
       const BodyLoad *L = &p->bodies[i]->load[j];
-      const PetscReal f[2] = {p->bodies[i]->loadFactor * L->force[0], p->bodies[i]->loadFactor * L->force[1]};
+      const PetscReal f[2] = {p->opt.axisymmetric ? 0.0 : p->bodies[i]->loadFactor * L->force[0], p->bodies[i]->loadFactor * L->force[1]};
       char            key[2 * CONTACT_NAME_LEN + 2];
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
       ContactJSONKeyPair(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, f);
