@@ -295,7 +295,7 @@ def nodal_curve(s, p, n=12):
 
 def profile_sides(g):
     """The surfaces of a pair that carry a profile: the slaves, and (mortar)
-    the master, whose pressure is the slave's nodal forces over int N_j dS."""
+    the master, whose pressure is the slave's at its closest points."""
     return [v for v in g.values() if isinstance(v, h5py.Group) and len(sample(v, "s"))]
 
 
@@ -471,7 +471,7 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
             elif is_nodal(side):
                 t, q = nodal_curve(s, p)
                 ax.plot(to(t), q, "--", lw=0.9, color=colour, zorder=z,
-                        label=f"{name}, master: slave's nodal forces / A_j")
+                        label=f"{name}, master: slave's pressure at closest points")
                 marked += ax.plot(u, p, "s", ms=3.5, mfc="none", mew=0.8, color=colour, zorder=z)
             else:
                 marked += ax.plot(u, p, "o-", ms=3, lw=0.8, color=colour, zorder=z,

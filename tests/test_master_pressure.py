@@ -116,11 +116,11 @@ def test_patch_master_exact(tmp_path):
 
 def test_master_peak_matches_slave(runs):
     """Reference scene, the disc the slave: the block's transferred peak is
-    2.46 % above the disc's at h = 0.1 (2.34 % at 0.06, 2.31 % at 0.03: not a
-    discretisation error). Each pressure is per reference length of its own
-    surface, and at the centre the block's edge is shortened 1.5 %, the disc's
-    arc 3.7 %; per current length the peaks agree to 0.12 % (0.004 % at 0.03).
-    Tolerances 2.5 times those."""
+    2.39 % above the disc's at h = 0.1 (not a discretisation error). Each
+    pressure is per reference length of its own surface, and at the centre
+    the block's edge is shortened 1.5 %, the disc's arc 3.7 %; per current
+    length the peaks agree to 0.043 % (0.12 % when the master's pressure was
+    its nodal forces over int N_j dS). Tolerances 2.5 times those."""
     surf = surfaces(runs("first"))
     peak, peak_cur = {}, {}
     for k, v in surf.items():
@@ -150,8 +150,10 @@ def test_ranks_agree(runs):
 def test_layout_as_slave(runs):
     """The master's node datasets are the slave's (names, shapes, quadratic
     cells through the nodes); profile_metrics reads it with masters=True only,
-    and its transferred force over the weights is the slave's normal force to
-    3e-6 (measured 1.2e-6 relative: the master's weights on its own surface)."""
+    and its pressure over the weights is the slave's normal force to 2e-3
+    (measured 8.9e-4 at h = 0.1: the slave's profile resampled at the master's
+    nodes, not its forces, whose sum is the pair's force to round-off,
+    test_force_balance)."""
     r = runs("first")
     surf = surfaces(r)
     m, s = surf["block_contact"], surf["indenter_contact"]
@@ -166,6 +168,24 @@ def test_layout_as_slave(runs):
     np.testing.assert_array_equal(prof["block_contact"][1], m["node_pressure"])
     pm_, ps = (np.sum(v["node_pressure"] * v["node_weight"]) for v in (m, s))
     print(f"int p dS: master {pm_:.10g}, slave {ps:.10g}")
-    assert abs(pm_ / ps - 1) <= 3e-6
+    assert abs(pm_ / ps - 1) <= 2e-3
     xdmf = r.output_path.with_suffix(".xdmf").read_text()
     assert 'Grid Name="interface:block:contact"' in xdmf and "block_contact/node_cells" in xdmf
+
+
+@pytest.mark.parametrize("scene,extra", [("hertz", ["-mesh_size", "0.03"]), ("hertz", ["-mesh_size", "0.015"]),
+                                         ("hertz-graded", [])])
+def test_master_clean(scene, extra, tmp_path):
+    """The master's pressure is the slave's resampled: never negative (its
+    forces over int N_j dS dipped to -0.38, -2.98 and -1.21 on these runs,
+    the lumping of N_j's negative parts near the zone's ends), and its
+    oscillation index (profile_metrics) at most 0.01 (measured 0.0016,
+    0.0002 and 0.0019; it was 0.0020, 0.0021 and 0.0074), no more than the
+    slave's own plus 0.002 (the slave's: 0.0014, 0.0002, 0.0026)."""
+    r = run_contact(["-options_file", f"meshes/{scene}/{scene}.opts", "-contact_mortar_slave", "first"] + extra, tmp_path)
+    prof, _ = pm.profiles(r.output_path, masters=True)
+    s, p, w, g = prof["block_contact"]
+    osc, osc_slave = pm.oscillation(s, p, w, g), pm.oscillation(*prof["indenter_contact"])
+    print(f"{scene} {extra}: master's min {p.min():.3g}, oscillation {osc:.4f} (slave's {osc_slave:.4f})")
+    assert p.min() >= 0.0
+    assert osc <= 0.01 and osc <= osc_slave + 0.002

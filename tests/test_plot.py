@@ -432,7 +432,8 @@ def two_pairs(d):
     args = ["-scene", "twopairs", "-bodies", "small1,large1,small2,large2", "-mesh_size", 0.2,
             "-contact_pairs", "one,two", "-contact_one_surfaces", "small1:contact,large1:contact",
             "-contact_two_surfaces", "large2:contact,small2:contact",
-            "-contact_one_hertz_radii", "1,2", "-contact_two_hertz_radii", "2,1"]
+            "-contact_one_hertz_radii", "1,2", "-contact_two_hertz_radii", "2,1",
+            "-contact_mortar_slave", "first"]   # the first named is the slave (auto would take the softer small discs)
     for k, yc in (("1", 0), ("2", 5)):
         args += [f"-small{k}_geo", geo, f"-small{k}_geo_params", f"R=1,xc=-1,yc={yc},dir=1,xclamp=-1.8,xcontact=-0.5",
                  f"-small{k}_E", 1000, f"-small{k}_nu", 0.3, f"-small{k}_bc", "clamp",

@@ -204,7 +204,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
       if (S->slave) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
       else {
         PetscCall(ContactForceString(S->force, spec->axisym, fs[0], sizeof(fs[0])));
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's nodal forces over int N_j dS (centre s = %.6g, peak %.6g, force %s):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, fs[0]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's pressure at its closest points (centre s = %.6g, peak %.6g, force %s):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, fs[0]));
       }
       if (first < 0) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
