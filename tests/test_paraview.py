@@ -54,13 +54,17 @@ def display(tmp_path_factory):
     without waiting for it, so a run that followed could be given a display
     the dying server still answered on: pvpython's window then found no X
     connection and aborted (SIGABRT in vtkXOpenGLRenderWindow::CreateAWindow,
-    1.3 s in; once in CI, in the run after the probes)."""
+    1.3 s in; once in CI, in the run after the probes). The server runs with
+    -noreset: without it, an X server resets itself whenever its last client
+    leaves, and a pvpython that connects during that reset aborts the same
+    way (once in CI, between the two colour runs, which follow each other
+    with no client left in between)."""
     xvfb, _ = paraview()
     log = tmp_path_factory.mktemp("xvfb") / "xvfb.log"
     ready, write = os.pipe()
     with open(log, "w") as sink:
         server = subprocess.Popen([xvfb, "-displayfd", str(write), "-screen", "0", "1280x1024x24",
-                                   "-nolisten", "tcp"], pass_fds=(write,), stdout=sink, stderr=subprocess.STDOUT)
+                                   "-nolisten", "tcp", "-noreset"], pass_fds=(write,), stdout=sink, stderr=subprocess.STDOUT)
     os.close(write)
     with os.fdopen(ready) as pipe:
         shown, _, _ = select.select([pipe], [], [], 60)
@@ -122,7 +126,8 @@ def expected_blocks(h5):
                        "arrays": {"pressure": g[pre + "pressure"][...], "gap": g[pre + "gap"][...],
                                   "s": g[pre + "s"][...], "displacement": np.zeros((n, 3)),
                                   "stress_xx": nan, "stress_yy": nan, "stress_zz": nan, "stress_xy": nan,
-                                  "von_mises": nan}, "weight": g[pre + "weight"][...]})
+                                  "von_mises": nan}, "weight": g[pre + "weight"][...],
+                       "slave": bool(g.attrs["slave"])})
     return blocks
 
 
@@ -172,12 +177,18 @@ def test_blocks_match_hdf5(probed, reader):
         if e["kind"] == "surface":
             # the pressure ParaView shows carries the contact force, so that no
             # array compared above is a trivial one (zeros match zeros): int p ds
-            # (the HDF5 weights) is the JSON's P = |int p n ds| to 2.5e-2
-            # (measured at h = 0.2: gpts +9.9e-3 disc, -3.1e-3 block; mortar
-            # +3.5e-3 both; the normal turns along the curved zone)
+            # (the HDF5 weights) is the JSON's P = |int p n ds|. A slave's to
+            # 2.5e-2 (measured at h = 0.2: gpts +9.9e-3 disc, -3.1e-3 block;
+            # mortar's slave +3.5e-3; the normal turns along the curved zone).
+            # Mortar's master carries the slave's pressure moved to its nodes,
+            # a transfer whose error is the coarse mesh's: to 5e-2 (measured
+            # -3.2e-2 at h = 0.2, where 7 of its nodes carry pressure; -4.5e-3,
+            # +9.6e-3, +4.6e-3, +1.3e-2 at h = 0.25, 0.22, 0.18, 0.15; +4.4e-3
+            # at 0.1 and +8.0e-4 at 0.05)
             P = float(np.sum(e["weight"] * np.asarray(b["arrays"]["pressure"]["values"])))
             print(f"{formulation} {reader} {e['name']}: int p ds / P - 1 = {P / summary['contact_force'] - 1:.2e}")
-            assert abs(P / summary["contact_force"] - 1) <= 2.5e-2
+            bound = 2.5e-2 if e["slave"] else 5e-2
+            assert abs(P / summary["contact_force"] - 1) <= bound, (e["name"], bound)
 
 
 @pytest.mark.parametrize("reader", READERS)
