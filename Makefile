@@ -5,7 +5,7 @@ SHELL := /bin/bash
 CC      = mpicc
 # recursive (=) so that pkg-config runs after install-deps has put PETSc in place
 PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
-PETSC_LIBS   = $(shell pkg-config --libs petsc)
+PETSC_LIBS   = $(shell pkg-config --libs petsc hdf5-openmpi)
 CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
 LDLIBS  = $(PETSC_LIBS) -ldmumps -llapack -lblas -lmetis -lm
 SRCS    = $(wildcard src/*.c src/*/*.c)
