@@ -23,7 +23,9 @@ PetscErrorCode ContactOutputTextWrite(MPI_Comm, ContactOutputText *, const char 
    between Begin and End, PETSc's errors return without a traceback and what the
    libraries print on stderr is held back (printed at End if the write
    succeeded, dropped if it failed). End is collective: ierr is this rank's
-   result of the write; if it failed on any rank, End stops with the one line
-   naming name and the cause (tmp: the file being written). */
+   result of the write; close(ctx) closes the file, also after a failure (the
+   file emptied and the set's reserve freed first, so that closing finds
+   room); if the write or the close failed on any rank, End stops with the one
+   line naming name and the cause (tmp: the file being written). */
 PetscErrorCode ContactOutputLibraryWriteBegin(void);
 PetscErrorCode ContactOutputLibraryWriteEnd(MPI_Comm, PetscErrorCode ierr, PetscErrorCode (*close)(void *), void *ctx, const char tmp[], const char name[]);

@@ -17,9 +17,12 @@
    line and PETSc's traceback, then a crash in HDF5's clean-up at
    MPI_Finalize (the file was never closed). So around that write:
    - HDF5's own printing of its error stack is off (H5Eset_auto, results.c);
-   - PETSc's errors return without a traceback (PetscReturnErrorHandler), the
-     caller closes the viewer in any case (so that no HDF5 file stays open
-     until MPI_Finalize) and hands End this rank's result;
+   - PETSc's errors return without a traceback (PetscReturnErrorHandler), and
+     End closes the file in any case, so that no HDF5 file stays open until
+     MPI_Finalize; after a failure it first empties the file and frees the
+     1 MiB the set holds (outputset.c), so that HDF5's last flush of its
+     metadata finds room: if that flush fails too, HDF5 1.10 keeps the
+     file's id over freed memory;
    - stderr is redirected into a memory file, so that what a library prints
      is printed after the write if it succeeded, and dropped if it failed
      (the signal handler's message goes to the real stderr meanwhile:
