@@ -26,6 +26,9 @@ CASES = {
     "tao_integer": (["-tao_max_it", "-quiet"], "option -tao_max_it needs an integer, none given (on the command line, followed by -quiet)", True),
     "tao_choice": (["-tao_type"], "option -tao_type needs a known Tao type (lmvm, nls,", False),
     "tao_linesearch_choice": (["-tao_ls_type", "-quiet"], "option -tao_ls_type needs a known TaoLineSearch type (unit, more-thuente", False),
+    # read inside PetscInitialize(), before the program's error handler was pushed: PETSc's traceback
+    "petsc_initialize_integer": (["-check_pointer_intensity"],
+                                 "option -check_pointer_intensity needs an integer, none given (last on the command line)", True),
     "own_number": (["-mesh_size", "-quiet"], "option -mesh_size needs a number, none given (on the command line, followed by -quiet)", True),
     "own_body_number": (["-block_E"], "option -block_E needs a number, none given (last on the command line)", True),
     "own_numbers": (["-contact_interface_hertz_radii"], "option -contact_interface_hertz_radii needs a number, none given", True),
