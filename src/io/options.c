@@ -702,14 +702,12 @@ static PetscErrorCode CheckGiven(PetscOptionItems *PetscOptionsObject, const cha
 {
   const char *value;
   PetscBool   flg;
-  char        msg[PETSC_MAX_PATH_LEN + 512];
+  char        msg[PETSC_MAX_PATH_LEN + 512] = "";
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsFindPair(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &value, &flg));
-  if (flg && FindMissing(value)) {
-    SayMissing(FindMissing(value), "a value", msg, sizeof(msg));
-    SETERRQ(PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s", msg);
-  }
+  if (flg && FindMissing(value)) SayMissing(FindMissing(value), "a value", msg, sizeof(msg));
+  PetscCheck(!msg[0], PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s", msg);
   PetscFunctionReturn(0);
 }
 
