@@ -3,7 +3,6 @@
    node order), displacement, stress (xx, yy, zz, xy) and von Mises stress
    averaged at the nodes, in one HDF5 file with an XDMF file beside it, and a
    JSON summary of the run; each contact term adds its own. */
-#include <errno.h>
 #include <petscviewerhdf5.h>
 #include "run.h"
 #include "outputset.h"
