@@ -5,7 +5,7 @@ SHELL := /bin/bash
 CC      = mpicc
 # recursive (=) so that pkg-config runs after install-deps has put PETSc in place
 PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
-PETSC_LIBS   = $(shell pkg-config --libs petsc)
+PETSC_LIBS   = $(shell pkg-config --libs petsc hdf5-openmpi)
 CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
 LDLIBS  = $(PETSC_LIBS) -ldmumps -llapack -lblas -lmetis -lm
 SRCS    = $(wildcard src/*.c src/*/*.c)
@@ -67,7 +67,7 @@ bin/contact-sanitize: $(SAN_OBJS)
 	$(CC) $(SAN_FLAGS) -o $@ $(SAN_OBJS) $(LDLIBS)
 SAN_TESTS = tests/test_patch_contact.py tests/test_master_pressure.py tests/test_cases.py tests/test_bad_input.py tests/test_robustness.py \
             tests/test_loads.py tests/test_force_control.py tests/test_held_by_contact.py tests/test_penalty_auto.py \
-            tests/test_axisymmetric.py tests/test_setup_checks.py
+             tests/test_axisymmetric.py tests/test_setup_checks.py tests/test_missing_value.py tests/test_write_faults.py
 check-sanitize: bin/contact-sanitize meshes
 	CONTACT_BIN=$(CURDIR)/bin/contact-sanitize ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  $(PYTHON) -m pytest -q -m "not stress" $(wildcard $(SAN_TESTS))

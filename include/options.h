@@ -38,3 +38,18 @@ PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], 
    "<value : deflt>" if the option is given or has (the value before the call
    means something), else "<deflt>", never the placeholder the code starts from. */
 PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char deflt[], PetscBool has, PetscReal *value, PetscBool *set);
+
+/* An option given without a value (followed by another option, or last on
+   the command line or its line) is an error naming it, for every option that
+   takes one, PETSc's and the program's: ContactOptionsExpandFiles() gives
+   each such option a spelling of true, which a switch reads as given alone
+   and a number or a choice cannot convert (ContactOptionsDescribeValueError
+   then names the option); options whose value PETSc makes optional (viewers,
+   monitors, -help, -info, -log_*) are left as given. The program's names,
+   paths and lists are read with these, which stop at such a value. */
+PetscErrorCode ContactOptionsString(PetscOptionItems *, const char opt[], const char text[], const char man[], const char current[], char value[], size_t len, PetscBool *set);
+PetscErrorCode ContactOptionsStringArray(PetscOptionItems *, const char opt[], const char text[], const char man[], char *value[], PetscInt *n, PetscBool *set);
+PetscErrorCode ContactOptionsFList(PetscOptionItems *, const char opt[], const char text[], const char man[], PetscFunctionList, const char current[], char value[], size_t len, PetscBool *set);
+/* Whether value is the one given to an option given without a value (as
+   -options_left and the unused-option check show it: without a value). */
+PetscBool      ContactOptionsGivenWithoutValue(const char value[]);

@@ -20,3 +20,12 @@ void           ContactOutputDiscard(void);
 /* A child process (Gmsh) and the file it writes: an interrupted run stops it
    and removes the file (pid 0: none). */
 void           ContactOutputSetChild(int pid, const char file[]);
+/* Rank 0's verdict, 0 or an error code with its message (msg:
+   CONTACT_OUTPUT_MSG_LEN characters on every rank), raised on every rank. */
+#define CONTACT_OUTPUT_MSG_LEN (3 * PETSC_MAX_PATH_LEN)
+PetscErrorCode ContactOutputCheckOnRoot(MPI_Comm, int code, char msg[]);
+/* Rank 0: frees the room the set holds for the HDF5 file to close after a
+   failed write (outputset.c, Reserve). */
+void           ContactOutputReleaseReserve(void);
+/* The descriptor the signal handler's message goes to (default stderr). */
+void           ContactOutputSetMessageFd(int fd);

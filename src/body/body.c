@@ -42,10 +42,10 @@ static PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *
   PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
   bc->values[0] = bc->values[1] = 0.0;
   PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
-  PetscCall(PetscOptionsStringArray("-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
   PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
   PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
-  PetscCall(PetscOptionsStringArray("-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
   PetscOptionsEnd();
   if (!setc) {
     bc->ncomp    = 2;
@@ -110,14 +110,14 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
   PetscOptionsBegin(b->comm, prefix, "Body options", NULL);
-  PetscCall(PetscOptionsString("-geo", "Gmsh .geo file of the body (this or -<body>_mesh is required)", NULL, b->geo, b->geo, sizeof(b->geo), &hasGeo));
-  PetscCall(PetscOptionsString("-mesh", "Ready-made second-order Gmsh .msh file (instead of -geo)", NULL, b->msh, b->msh, sizeof(b->msh), &hasMsh));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-geo", "Gmsh .geo file of the body (this or -<body>_mesh is required)", NULL, b->geo, b->geo, sizeof(b->geo), &hasGeo));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-mesh", "Ready-made second-order Gmsh .msh file (instead of -geo)", NULL, b->msh, b->msh, sizeof(b->msh), &hasMsh));
   PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
-  PetscCall(PetscOptionsStringArray("-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
-  PetscCall(PetscOptionsStringArray("-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
-  PetscCall(PetscOptionsString("-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
   PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
   PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (exact on straight cells from 2)", NULL, qdeg, &qdeg, NULL));

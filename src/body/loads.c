@@ -34,6 +34,7 @@
    exact with 3 points; its axial resultant is p times the area the group's
    ends sweep, pi (r_1^2 - r_0^2). */
 #include "body.h"
+#include "options.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)
 {
@@ -66,7 +67,7 @@ PetscErrorCode BodyLoadsSetFromOptions(Body b, const char prefix[], PetscBool he
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(b->comm, prefix, "Body loads", NULL);
-  PetscCall(PetscOptionsStringArray("-load", "Loaded physical groups (see -<body>_load_<group>_traction, _pressure)", NULL, names, &n, NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-load", "Loaded physical groups (see -<body>_load_<group>_traction, _pressure)", NULL, names, &n, NULL));
   PetscOptionsEnd();
   if (help && !n) { /* a load's options under a placeholder group */
     PetscCall(PetscStrallocpy("<group>", &names[0]));

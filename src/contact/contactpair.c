@@ -87,9 +87,9 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   PetscCall(PetscOptionsHasHelp(NULL, &help)); /* -help: list the options; a penalty or a pair's surfaces are not required */
   PetscCall(ContactFormulationRegisterAll());
   PetscOptionsBegin(comm, NULL, "Contact options", NULL);
-  PetscCall(PetscOptionsStringArray("-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces; none: no contact)", NULL, names, &np, NULL));
-  PetscCall(PetscOptionsFList("-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
-  PetscCall(PetscOptionsString("-contact_penalty", "Penalty k_p of every pair: a number (pressure per unit penetration), or auto: 1000 E*/h, h the contact edges' size", NULL, penalty, penalty, sizeof(penalty), NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-contact_pairs", "Contact pair names (see -contact_<pair>_surfaces; none: no contact)", NULL, names, &np, NULL));
+  PetscCall(ContactOptionsFList(PetscOptionsObject, "-contact_formulation", "Formulation of every pair (-contact_<pair>_formulation overrides it per pair)", NULL, ContactFormulationList, formulation, formulation, sizeof(formulation), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-contact_penalty", "Penalty k_p of every pair: a number (pressure per unit penetration), or auto: 1000 E*/h, h the contact edges' size", NULL, penalty, penalty, sizeof(penalty), NULL));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge (gpts), per segment (mortar, at least 3)", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners; default 0.05 for gpts, 0 for mortar)", NULL, blend, &blend, &setBlend));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
@@ -125,9 +125,9 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
     PetscCall(PetscStrncpy(pairPenalty, penalty, sizeof(pairPenalty)));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
-    PetscCall(PetscOptionsStringArray("-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
-    PetscCall(PetscOptionsFList("-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
-    PetscCall(PetscOptionsString("-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
+    PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
+    PetscCall(ContactOptionsFList(PetscOptionsObject, "-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
+    PetscCall(ContactOptionsString(PetscOptionsObject, "-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat): cylinders in plane strain, spheres with -axisymmetric", NULL, spec.radii, &nr, &spec.hertz));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
     PetscOptionsEnd();

@@ -101,6 +101,7 @@
 #include "contactterm.h"
 #include "edge.h"
 #include "gap.h"
+#include "options.h"
 
 #define MORTAR_MAX_SEG   64
 #define MORTAR_MAX_DEPTH 12

@@ -144,8 +144,14 @@ int main(int argc, char **argv)
     MPI_Finalize();
     return 1;
   }
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  /* the handler in place already while PetscInitialize() reads its own options
+     (a number given without its value: options.h) */
   PetscCall(PetscPushErrorHandler(ContactErrorHandler, NULL));
+  if (PetscInitialize(&argc, &argv, NULL, help)) {
+    ContactOptionsFinalize();
+    MPI_Finalize();
+    return 1;
+  }
   PetscCall(ContactOutputInstallSignalHandlers());
   ierr = Run(&status);
   if (ierr) {

@@ -3,10 +3,10 @@
    node order), displacement, stress (xx, yy, zz, xy) and von Mises stress
    averaged at the nodes, in one HDF5 file with an XDMF file beside it, and a
    JSON summary of the run; each contact term adds its own. */
-#include <errno.h>
 #include <petscviewerhdf5.h>
 #include "run.h"
 #include "outputset.h"
+#include "outputwrite.h"
 #include "xdmf.h"
 
 /* The XDMF file: one spatial collection of a grid per body (its second-order
@@ -17,18 +17,20 @@
    plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
    and the readers map the columns of a Tensor6 differently; so the HDF5 file
    holds the displacement with z = 0 and each stress component on its own. */
-static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[], const char h5[], const char runId[])
+static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
 {
-  PetscMPIInt rank;
-  const char *base = strrchr(h5, '/');
+  PetscMPIInt       rank;
+  const char       *base = strrchr(out->h5, '/');
+  ContactOutputText text = {NULL, NULL, 0};
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
-  base = base ? base + 1 : h5;
+  base = base ? base + 1 : out->h5;
   if (rank == 0) {
-    FILE *fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s: %s", path, strerror(errno));
-    fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", runId);
+    FILE *fp;
+    PetscCall(ContactOutputTextOpen(&text));
+    fp = text.fp;
+    fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", out->runId);
     fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       Body        b  = p->bodies[i];
@@ -53,8 +55,8 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const char path[
     }
     for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
     fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
-    PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
   }
+  PetscCall(ContactOutputTextWrite(p->comm, &text, out->xtmp, out->xdmf));
   PetscFunctionReturn(0);
 }
 
@@ -100,15 +102,13 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, Pets
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields F[], const char path[], const char runId[])
+static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNodalFields F[], const char runId[], PetscViewer v)
 {
-  PetscViewer v;
   char       *opts, version[256];
   PetscMPIInt size;
   PetscInt    its;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5Open(p->comm, path, FILE_MODE_WRITE, &v));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     char group[2 * CONTACT_NAME_LEN];
     PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
@@ -145,7 +145,31 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   }
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscCall(PetscFree(opts));
-  PetscCall(PetscViewerDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CloseHDF5(void *ctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerDestroy((PetscViewer *)ctx));
+  PetscFunctionReturn(0);
+}
+
+/* The HDF5 file, a write whose failure is one line naming the file and the
+   cause (outputwrite.h): HDF5 does not print its error stack, and the viewer
+   is closed whether or not the write succeeded, so that no HDF5 file is left
+   open until MPI_Finalize(). */
+static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields F[], const ContactOutputFiles *out)
+{
+  PetscViewer    v = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCheck(H5Eset_auto2(H5E_DEFAULT, NULL, NULL) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "cannot turn off HDF5's error printing");
+  PetscCall(ContactOutputLibraryWriteBegin());
+  ierr = PetscViewerHDF5Open(p->comm, out->htmp, FILE_MODE_WRITE, &v);
+  if (!ierr) ierr = WriteHDF5Contents(p, rec, F, out->runId, v);
+  PetscCall(ContactOutputLibraryWriteEnd(p->comm, ierr, CloseHDF5, &v, out->htmp, out->h5));
   PetscFunctionReturn(0);
 }
 
@@ -272,13 +296,14 @@ static void JSONTaylor(FILE *fp, Problem p)
 
 /* The summary (rank 0): the solve, the reactions, the contact, the bodies,
    -accuracy's steps, the Taylor test, the time slots. */
-static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields F[], const char path[], const char runId[])
+static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields F[], const ContactOutputFiles *out)
 {
   PetscMPIInt        rank, size;
   PetscInt           dofs;
   TaoConvergedReason reason;
   TaoType            type;
   PetscReal          umax = 0, unorm2 = 0;
+  ContactOutputText  text = {NULL, NULL, 0};
   FILE              *fp;
 
   PetscFunctionBeginUser;
@@ -291,34 +316,35 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     umax = PetscMax(umax, F[i].umax);
     unorm2 += F[i].unorm2;
   }
-  if (rank) PetscFunctionReturn(0);
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write summary %s", path);
-  fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, runId, (int)dofs, (int)size, type);
-  fprintf(fp, "  \"axisymmetric\": %s,\n", p->opt.axisymmetric ? "true" : "false");
-  fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
-  fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
-  fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
-  if (p->res.h0Refreshes) fprintf(fp, "  \"h0_refreshes\": %d,\n", (int)p->res.h0Refreshes); /* -lmvm_h0 contact */
-  if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_pairs_dropped\": %d,\n", (int)p->res.pairsDropped); /* -lmvm_pair_ratio */
-  if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_restarts\": %d,\n", (int)p->res.lmvmRestarts); /* -lmvm_restarts */
-  if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_solves\": %d,\n", (int)p->res.decrementSolves); /* -lmvm_decrement_rtol */
-  if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_floor_stops\": %d,\n", (int)p->res.decrementFloor);
-  ContactJSONKeyReal(fp, "  ", "energy", p->res.energy);
-  ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
-  ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
-  ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
-  JSONReactions(fp, p);
-  JSONLoads(fp, p);
-  JSONForceControl(fp, p);
-  PetscCall(JSONContact(fp, p));
-  JSONBodies(fp, p, F);
-  JSONAccuracy(fp, rec);
-  JSONTaylor(fp, p);
-  fprintf(fp, "  \"time\": {");
-  for (PetscInt k = 0; k < RUN_TIME_N; ++k) ContactJSONKeyReal(fp, k ? ", " : "", RunTimeNames[k], rec->time[k]);
-  fprintf(fp, "}\n}\n");
-  PetscCheck(!ferror(fp) && !fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "error writing %s", path);
+  if (!rank) {
+    PetscCall(ContactOutputTextOpen(&text));
+    fp = text.fp;
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, out->runId, (int)dofs, (int)size, type);
+    fprintf(fp, "  \"axisymmetric\": %s,\n", p->opt.axisymmetric ? "true" : "false");
+    fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
+    fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
+    fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
+    if (p->res.h0Refreshes) fprintf(fp, "  \"h0_refreshes\": %d,\n", (int)p->res.h0Refreshes); /* -lmvm_h0 contact */
+    if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_pairs_dropped\": %d,\n", (int)p->res.pairsDropped); /* -lmvm_pair_ratio */
+    if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_restarts\": %d,\n", (int)p->res.lmvmRestarts); /* -lmvm_restarts */
+    if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_solves\": %d,\n", (int)p->res.decrementSolves); /* -lmvm_decrement_rtol */
+    if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_floor_stops\": %d,\n", (int)p->res.decrementFloor);
+    ContactJSONKeyReal(fp, "  ", "energy", p->res.energy);
+    ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
+    ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
+    ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
+    JSONReactions(fp, p);
+    JSONLoads(fp, p);
+    JSONForceControl(fp, p);
+    PetscCall(JSONContact(fp, p));
+    JSONBodies(fp, p, F);
+    JSONAccuracy(fp, rec);
+    JSONTaylor(fp, p);
+    fprintf(fp, "  \"time\": {");
+    for (PetscInt k = 0; k < RUN_TIME_N; ++k) ContactJSONKeyReal(fp, k ? ", " : "", RunTimeNames[k], rec->time[k]);
+    fprintf(fp, "}\n}\n");
+  }
+  PetscCall(ContactOutputTextWrite(p->comm, &text, out->jtmp, out->json));
   PetscFunctionReturn(0);
 }
 
@@ -337,13 +363,13 @@ PetscErrorCode RunWriteResults(Problem p, RunRecord *rec)
   PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
   if (out.h5[0]) {
-    PetscCall(WriteHDF5(p, rec, F, out.htmp, out.runId));
-    PetscCall(WriteXDMF(p, F, out.xtmp, out.h5, out.runId));
+    PetscCall(WriteHDF5(p, rec, F, &out));
+    PetscCall(WriteXDMF(p, F, &out));
   }
   PetscCall(PetscTime(&t1));
   rec->time[RUN_TIME_OUTPUT] = t1 - t0;
   rec->time[RUN_TIME_TOTAL]  = t1 - rec->start;
-  if (out.json[0]) PetscCall(WriteJSON(p, rec, F, out.jtmp, out.runId));
+  if (out.json[0]) PetscCall(WriteJSON(p, rec, F, &out));
   PetscCall(ContactOutputCommit(p->comm));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyNodalFieldsDestroy(&F[i]));
   PetscCall(PetscLogEventEnd(contactLog.writeOutput, 0, 0, 0, 0));

@@ -18,8 +18,8 @@ PetscErrorCode RunOptionsSetFromOptions(MPI_Comm comm, const char scene[], RunOp
   PetscCall(PetscSNPrintf(o->summary, sizeof(o->summary), "out/%s.json", scene));
   PetscOptionsBegin(comm, NULL, "Output options", NULL);
   PetscCall(PetscOptionsBool("-mesh_only", "Generate the scene's meshes and stop", NULL, o->meshOnly, &o->meshOnly, NULL));
-  PetscCall(PetscOptionsString("-output", "HDF5 output file, an XDMF file beside it (none: no output)", NULL, o->output, o->output, sizeof(o->output), NULL));
-  PetscCall(PetscOptionsString("-summary", "JSON summary file (none: no summary)", NULL, o->summary, o->summary, sizeof(o->summary), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-output", "HDF5 output file, an XDMF file beside it (none: no output)", NULL, o->output, o->output, sizeof(o->output), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-summary", "JSON summary file (none: no summary)", NULL, o->summary, o->summary, sizeof(o->summary), NULL));
   PetscCall(PetscOptionsBool("-output_wait", "Wait for another run writing the same output files (else stop at once)", NULL, o->outputWait, &o->outputWait, NULL));
   PetscOptionsEnd();
   for (PetscInt k = 0; k < 2; ++k) { /* relative to the options file that names them */

@@ -19,6 +19,12 @@
    options are resolved with ContactOptionsResolvePath() (nested -options_file
    lines here, while reading).
 
+   An option that takes a value but is given without one (followed by another
+   option, or last) is given a spelling of true here (FillMissingValues), so
+   that PETSc's conversion of a number or a choice fails and names it, where
+   PETSc would read the option as not given (a number) or as empty (a name);
+   see options.h.
+
    This runs before PETSc exists, so it is plain C (malloc, stdio) and reports
    an error as a message for main() to print. */
 #include <ctype.h>
@@ -327,6 +333,108 @@ static int Unpack(StrList *l, const char *b, int bytes)
   return 0;
 }
 
+/* PETSc's options whose value may be left out, meaning something of their
+   own: viewers and monitors (-tao_view, -ksp_monitor [file], -log_view
+   [:file]), -help [intro], -info [file], the debugger's and the memory
+   checker's, -prefix_pop. Given alone, they are left alone. */
+static int ValueOptional(const char *key)
+{
+  const char *const within[] = {"view", "monitor", "converged_reason", "draw", "debugger", "malloc", "history"};
+  const char *const start[]  = {"help", "h", "info", "log", "prefix_pop", "version", "options_"};
+  const char       *name     = key + (key[1] == '-' ? 2 : 1);
+
+  for (size_t i = 0; i < sizeof(within) / sizeof(within[0]); ++i)
+    if (strstr(name, within[i])) return 1;
+  for (size_t i = 0; i < sizeof(start) / sizeof(start[0]); ++i) {
+    const size_t n = strlen(start[i]);
+    if (!strncasecmp(name, start[i], n) && (!name[n] || name[n] == '_' || start[i][n - 1] == '_')) return 1;
+  }
+  return 0;
+}
+
+/* The k-th spelling of true that PETSc's PetscOptionsStringToBool() takes
+   (case-insensitive "true", "yes", "on": 28 spellings), each option given
+   without a value its own, so that a failed conversion names its option.
+   Past 28 options given alone the spellings repeat, and such an error may
+   name an earlier one; past MAX_MISSING, the last record is reused. */
+static void Sentinel(int k, char out[8])
+{
+  const char *const words[] = {"true", "yes", "on"};
+
+  k %= 28;
+  for (int w = 0; w < 3; ++w) {
+    const int n = (int)strlen(words[w]);
+    if (k < (1 << n)) {
+      for (int c = 0; c <= n; ++c) out[c] = (char)(c < n && (k >> c & 1) ? toupper((unsigned char)words[w][c]) : words[w][c]);
+      return;
+    }
+    k -= 1 << n;
+  }
+}
+
+#define MAX_MISSING 64
+typedef struct {
+  char name[128], value[8], next[128];
+  int  src;
+} Missing;
+static Missing missing[MAX_MISSING];
+static int     nmissing;
+
+/* Every option given without a value (followed by another option, or last)
+   gets one: a spelling of true (Sentinel), what PETSc makes of a switch given
+   alone, so that a switch reads as before, while a number or a choice fails
+   PETSc's conversion (reported by ContactOptionsDescribeValueError) and a
+   name or path of the program's fails ContactOptionsString(). Options whose
+   value is optional (ValueOptional) are left alone. The same on every rank. */
+static int FillMissingValues(Args *a)
+{
+  Args b = {{0, 0, NULL}, NULL, a->files};
+  char err[64];
+
+  for (int i = 0; i < a->tok.n; ++i) {
+    const char *t = a->tok.s[i], *next = i + 1 < a->tok.n ? a->tok.s[i + 1] : NULL;
+    if (ArgsPush(&b, t, a->src[i], err, sizeof(err))) return 1;
+    if (i && ValidKey(t) && (!next || ValidKey(next)) && !ValueOptional(t)) {
+      Missing *m = &missing[nmissing < MAX_MISSING ? nmissing : MAX_MISSING - 1];
+      snprintf(m->name, sizeof(m->name), "%s", t);
+      snprintf(m->next, sizeof(m->next), "%s", next ? next : "");
+      Sentinel(nmissing, m->value);
+      m->src = a->src[i];
+      if (nmissing < MAX_MISSING) nmissing++;
+      if (ArgsPush(&b, m->value, a->src[i], err, sizeof(err))) return 1;
+    }
+  }
+  ListFree(&a->tok);
+  free(a->src);
+  a->tok = b.tok;
+  a->src = b.src;
+  return 0;
+}
+
+/* The option given without the value `value` (a sentinel), or NULL. */
+static const Missing *FindMissing(const char *value)
+{
+  for (int i = 0; value && i < nmissing; ++i)
+    if (!strcmp(missing[i].value, value)) return &missing[i];
+  return NULL;
+}
+
+/* "option -x needs <what>, none given (where)" */
+static void SayMissing(const Missing *m, const char what[], char buf[], size_t len)
+{
+  char where[PETSC_MAX_PATH_LEN + 160];
+
+  if (m->src >= 0) snprintf(where, sizeof(where), "in options file %s", expanded.files.s[m->src]);
+  else if (m->next[0]) snprintf(where, sizeof(where), "on the command line, followed by %s", m->next);
+  else snprintf(where, sizeof(where), "last on the command line");
+  snprintf(buf, len, "option %s needs %s, none given (%s)", m->name, what, where);
+}
+
+PetscBool ContactOptionsGivenWithoutValue(const char value[])
+{
+  return FindMissing(value) ? PETSC_TRUE : PETSC_FALSE;
+}
+
 int ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[], size_t len)
 {
   int   rank, info[4] = {0, 0, 0, 0}; /* error, tokens, bytes of the packed tokens, of the packed files */
@@ -359,6 +467,7 @@ int ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[]
     a.src        = NULL;
     if (Unpack(&expanded.tok, ptok, info[2]) || Unpack(&expanded.files, pfiles, info[3])) info[0] = 2;
   }
+  if (!info[0] && FillMissingValues(&expanded)) info[0] = 2;
   if (info[0] == 2) snprintf(err, len, "out of memory reading options");
   free(ptok);
   free(pfiles);
@@ -515,13 +624,40 @@ static int HasEntry(const char *v, const char *value)
   }
 }
 
+/* PetscOptionsGetEList()'s message of an enumerated option given without its
+   value, "Unknown option V for -NAME. Available options: A B C" (V a
+   sentinel), as "option -NAME needs one of A, B, C, none given (...)". */
+static PetscBool DescribeMissingChoice(const char mess[], char buf[], size_t len)
+{
+  const char *v = mess + 15, *end = strstr(v, " for -"), *avail = strstr(mess, "Available options: ");
+  char        value[16], expected[1200], *c;
+
+  if (!end || (size_t)(end - v) >= sizeof(value)) return PETSC_FALSE;
+  memcpy(value, v, (size_t)(end - v));
+  value[end - v] = 0;
+  if (!FindMissing(value)) return PETSC_FALSE;
+  snprintf(expected, sizeof(expected), "one of %s", avail ? avail + 19 : "its choices");
+  for (size_t l = strlen(expected); l && expected[l - 1] == ' ';) expected[--l] = 0;
+  for (c = strchr(expected + 7, ' '); c && strlen(expected) + 2 < sizeof(expected); c = strchr(c + 2, ' ')) { /* "a b c" as "a, b, c" */
+    memmove(c + 1, c, strlen(c) + 1);
+    *c = ',';
+  }
+  SayMissing(FindMissing(value), expected, buf, len);
+  return PETSC_TRUE;
+}
+
 PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], char buf[], size_t len)
 {
   char        value[256], names[512] = "", *all = NULL, *tok, *save = NULL, expected[1200];
   const char *name = NULL, *val = NULL;
   int         found = 0;
 
+  if (mess && !strncmp(mess, "Unknown option ", 15)) return DescribeMissingChoice(mess, buf, len);
   if (!ParseValueError(fun, mess, value, sizeof(value), expected, sizeof(expected))) return PETSC_FALSE;
+  if (FindMissing(value)) { /* an option given without its value */
+    SayMissing(FindMissing(value), expected, buf, len);
+    return PETSC_TRUE;
+  }
   /* the database as "-name value -name value ..."; the option being converted
      has just been looked up, so it is marked used */
   if (PetscOptionsGetAll(NULL, &all) || !all) return PETSC_FALSE;
@@ -557,5 +693,44 @@ PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject,
     else PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  -%s%s <%s>: %s\n", pre, opt + 1, deflt, text));
   }
   if (set) *set = flg;
+  PetscFunctionReturn(0);
+}
+
+/* The program's names, paths and lists: given without a value they hold a
+   sentinel (FillMissingValues), which no check of a name would catch. */
+static PetscErrorCode CheckGiven(PetscOptionItems *PetscOptionsObject, const char opt[])
+{
+  const char *value;
+  PetscBool   flg;
+  char        msg[PETSC_MAX_PATH_LEN + 512] = "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsFindPair(PetscOptionsObject->options, PetscOptionsObject->prefix, opt, &value, &flg));
+  if (flg && FindMissing(value)) SayMissing(FindMissing(value), "a value", msg, sizeof(msg));
+  PetscCheck(!msg[0], PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s", msg);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactOptionsString(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char man[], const char current[], char value[], size_t len, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsString_Private(PetscOptionsObject, opt, text, man, current, value, len, set));
+  PetscCall(CheckGiven(PetscOptionsObject, opt));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactOptionsStringArray(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char man[], char *value[], PetscInt *n, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckGiven(PetscOptionsObject, opt)); /* before: the array would hold the sentinel, for the caller to free */
+  PetscCall(PetscOptionsStringArray_Private(PetscOptionsObject, opt, text, man, value, n, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactOptionsFList(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char man[], PetscFunctionList list, const char current[], char value[], size_t len, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsFList_Private(PetscOptionsObject, opt, text, man, list, current, value, len, set));
+  PetscCall(CheckGiven(PetscOptionsObject, opt));
   PetscFunctionReturn(0);
 }

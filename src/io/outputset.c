@@ -11,12 +11,16 @@
      kernel drops a flock with its process, also on SIGKILL, and does not
      mistake a reused pid) is taken over. Then the temporaries <name>.tmp are
      created: a path that cannot be written fails before meshing. Of the
-     missing directories only the default out/ is created.
+     missing directories only the default out/ is created. The XDMF file's
+     temporary holds 1 MiB until it is written, room for a failed HDF5 write
+     to close its file (outputwrite.c); a disk without it fails here too.
    - the files are written under the temporary names, carry the run id
      (/metadata:run_id, "run_id", an XML comment) and are renamed at the end,
      the XDMF file last (it names the HDF5 file), with the signals held so that
      a Ctrl-C renames all or none; then the lock is removed.
    - a failed or interrupted run removes its temporaries and its lock. */
+#include "outputset.h"
+#include "progress.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -24,13 +28,12 @@
 #include <unistd.h>
 #include <sys/file.h>
 #include <sys/stat.h>
-#include "outputset.h"
-#include "progress.h"
 
 #define MAX_PENDING  3
 #define MAX_LOCKS    2
 #define OUT_PATH_LEN (PETSC_MAX_PATH_LEN + 16)
-#define OUT_MSG_LEN  (3 * PETSC_MAX_PATH_LEN)
+#define OUT_MSG_LEN  CONTACT_OUTPUT_MSG_LEN
+#define OUTPUT_RESERVE (1 << 20) /* bytes; HDF5's metadata of a scene is 100 to 200 kB */
 
 /* The set of the run: final names ("" when not written), temporaries, run id. */
 typedef struct {
@@ -64,9 +67,18 @@ void ContactOutputSetChild(int pid, const char file[])
   childPid = pid;
 }
 
+/* Where the signal handler writes: stderr, or the real stderr while a
+   library's output is held back (outputwrite.c). */
+static volatile sig_atomic_t messageFd = STDERR_FILENO;
+
+void ContactOutputSetMessageFd(int fd)
+{
+  messageFd = fd;
+}
+
 static void Say(const char *s)
 {
-  ssize_t r = write(STDERR_FILENO, s, strlen(s));
+  ssize_t r = write(messageFd, s, strlen(s));
   (void)r;
 }
 
@@ -135,8 +147,7 @@ void ContactOutputDiscard(void)
   set.open = PETSC_FALSE;
 }
 
-/* Rank 0's verdict (0 or an error code with its message) on every rank. */
-static PetscErrorCode CheckOnRoot(MPI_Comm comm, int code, char msg[])
+PetscErrorCode ContactOutputCheckOnRoot(MPI_Comm comm, int code, char msg[])
 {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, comm));
@@ -203,6 +214,30 @@ static int CreateTemporary(const char opt[], const char path[], char msg[])
   }
   close(fd);
   return 0;
+}
+
+/* Rank 0: room for the HDF5 file to close after a failed write, held in the
+   XDMF file's temporary until that file is written (outputwrite.c): HDF5
+   1.10 flushes its metadata when it closes a file, and if that flush fails
+   too, it keeps the file's id over freed memory and crashes in MPI_Finalize().
+   A disk without this room fails here, before meshing. */
+static int Reserve(const char opt[], const char path[], const char name[], char msg[])
+{
+  int fd = open(path, O_WRONLY | O_CLOEXEC), e;
+
+  if (fd < 0) e = errno;
+  else {
+    e = posix_fallocate(fd, 0, OUTPUT_RESERVE);
+    close(fd);
+  }
+  if (!e) return 0;
+  snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: %s", opt, name, strerror(e));
+  return PETSC_ERR_FILE_WRITE;
+}
+
+void ContactOutputReleaseReserve(void)
+{
+  if (set.open && set.xtmp[0]) (void)!truncate(set.xtmp, 0);
 }
 
 /* Rank 0, one attempt at the lock file path: 0 with *fd when taken (created,
@@ -386,14 +421,15 @@ PetscErrorCode ContactOutputOpen(MPI_Comm comm, const char h5[], const char json
     if (!noh5) code = CheckOutputPath("-output", set.h5, msg);
     if (!code && !nojs) code = CheckOutputPath("-summary", set.json, msg);
   }
-  PetscCall(CheckOnRoot(comm, code, msg));
+  PetscCall(ContactOutputCheckOnRoot(comm, code, msg));
   PetscCall(OutputLock(comm, nwant, want, what, wait));
   if (!rank) {
     if (!noh5) code = CreateTemporary("-output", set.htmp, msg);
     if (!code && !noh5) code = CreateTemporary("-output", set.xtmp, msg);
     if (!code && !nojs) code = CreateTemporary("-summary", set.jtmp, msg);
+    if (!code && !noh5) code = Reserve("-output", set.xtmp, set.h5, msg);
   }
-  PetscCall(CheckOnRoot(comm, code, msg));
+  PetscCall(ContactOutputCheckOnRoot(comm, code, msg));
   set.open = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -425,7 +461,7 @@ PetscErrorCode ContactOutputCommit(MPI_Comm comm)
     }
     sigprocmask(SIG_SETMASK, &old, NULL);
   }
-  PetscCall(CheckOnRoot(comm, code, msg));
+  PetscCall(ContactOutputCheckOnRoot(comm, code, msg));
   npending = 0;
   set.open = PETSC_FALSE;
   PetscFunctionReturn(0);

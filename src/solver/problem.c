@@ -146,14 +146,14 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
-  PetscCall(PetscOptionsString("-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
-  PetscCall(PetscOptionsStringArray("-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
   PetscCall(PetscOptionsBool("-axisymmetric", "Axisymmetric scene: x is the radius r >= 0 and x = 0 the axis, each mesh a meridian section (u_r = 0 held on the axis)", NULL, p->opt.axisymmetric, &p->opt.axisymmetric, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->opt.meshSize, &setMeshSize));
   PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->opt.scene));
   PetscCall(PetscStrncpy(p->opt.meshDir, def, sizeof(p->opt.meshDir)));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &p->opt.maxDofs, &setMaxDofs));
-  PetscCall(PetscOptionsString("-mesh_dir", "Directory of the generated meshes", NULL, p->opt.meshDir, p->opt.meshDir, sizeof(p->opt.meshDir), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-mesh_dir", "Directory of the generated meshes", NULL, p->opt.meshDir, p->opt.meshDir, sizeof(p->opt.meshDir), NULL));
   PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->opt.partitioner, (PetscEnum *)&p->opt.partitioner, NULL));
   PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->opt.partitionView, &p->opt.partitionView, NULL));
   PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->opt.h0, (PetscEnum *)&p->opt.h0, NULL));
@@ -761,7 +761,8 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
   for (PetscInt i = 0; i < n && !bad[0]; ++i) {
-    if (final || !OptionReadLazily(names[i])) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+    const char *v = values[i] && !ContactOptionsGivenWithoutValue(values[i]) ? values[i] : NULL; /* as given */
+    if (final || !OptionReadLazily(names[i])) PetscCall(PetscSNPrintf(bad, sizeof(bad), "-%s%s%s", names[i], v ? " " : "", v ? v : ""));
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   /* KSPSetFromOptions() reads no tolerance of a preonly KSP, the direct Newton step */
