@@ -56,6 +56,7 @@
 #define PROBE_NODES   8000.0 /* nodes a probe aims at: about 0.3 s of Gmsh (Tri6) */
 #define PROBE_SECONDS 2      /* CPU a probe may take: Gmsh makes 3.6e4 (Tri6) to 1.5e5 (structured Quad9) nodes a second here */
 #define PROBE_BYTES   1e9    /* address space a probe may take: Gmsh starts at 0.12 GB, and takes 0.35 kB a node */
+#define PROBE_FLOOR   5e4    /* nodes a tripped probe had at least: PROBE_SECONDS at the slowest rate measured, less a third */
 #define PROBE_RUNS    8      /* 2D probes at the most */
 #define SURFACE_PER_CURVE 0.1 /* a surface's nodes over the square of its curves': 0.06 (a square) to 0.3 (measured) */
 #define CURVE_NODES   200.0  /* curve nodes past which a count that does not grow under a finer scale is taken as fixed */
@@ -218,10 +219,10 @@ static PetscBool MeshCoarsens(char *const argv[], const char geo[], double s, co
    none was had (every probe tripped or failed). */
 static int MeshProbeLadder(char *const argv[], const char geo[], double s, const char out[], const char log[], const char msh[], MeshSize *size)
 {
-  double nodes = 0, elements = 0;
+  double nodes = 0, elements = 0, tripped = 0;
 
   for (int k = 0; k < PROBE_RUNS; ++k) {
-    const int r = MeshProbe(argv, geo, 2, s, out, log, msh, (PetscBool)(s == 1), size, &nodes, &elements);
+    int r = MeshProbe(argv, geo, 2, s, out, log, msh, (PetscBool)(s == 1), size, &nodes, &elements);
 
     if ((r < 0 && s == 1) || (r == 1 && !size->coarsens)) break; /* Gmsh's own error, or no coarser probe to try */
     if (r < 0) { /* at a coarse scale, a full-quad recombination can fail on an odd count of boundary edges */
@@ -229,10 +230,11 @@ static int MeshProbeLadder(char *const argv[], const char geo[], double s, const
       continue;
     }
     if (r == 1) {
+      tripped = s;
       s *= 4;
       continue;
     }
-    if (s == 1 || nodes >= PROBE_NODES / 4 || k == PROBE_RUNS - 1) {
+    if (s == 1 || nodes >= PROBE_NODES / 4 || k == PROBE_RUNS - 1 || s <= 2 * tripped) { /* no finer probe that would not trip again */
       double n2, e2;
       size->nodes    = nodes * s * s;
       size->elements = elements * s * s;
@@ -242,9 +244,15 @@ static int MeshProbeLadder(char *const argv[], const char geo[], double s, const
         size->elements = 2 * s * s * e2;
         size->scale    = s * M_SQRT2;
       }
+      if (s > 1 && (r = MeshProbe(argv, geo, 2, s / M_SQRT2, out, log, msh, PETSC_FALSE, size, &n2, &e2)) == 1) n2 = e2 = PROBE_FLOOR; /* tripped: it had more than that */
+      if (s > 1 && r >= 0 && s * s * n2 / 2 > size->nodes) { /* and a finer one: a full-quad recombination can miss the size field at a coarse scale */
+        size->nodes    = s * s * n2 / 2;
+        size->elements = s * s * e2 / 2;
+        size->scale    = s / M_SQRT2;
+      }
       return 0;
     }
-    s = PetscMax(1.0, PetscMax(s / 16, s * sqrt(nodes / PROBE_NODES)));
+    s = PetscMax(1.0, PetscMax(PetscMax(s / 16, 2 * tripped), s * sqrt(nodes / PROBE_NODES)));
   }
   return -1;
 }
