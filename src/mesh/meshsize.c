@@ -12,7 +12,11 @@
    as 1/s, so the scaled count is a little high, the safe side. A probe is
    Gmsh's own mesh (the .geo's element order) at the s that should give about
    PROBE_NODES nodes, its count times s^2; one of PROBE_NODES / 4 or more
-   (about 7 % high at most, measured) is taken.
+   (about 7 % high at most, measured) is taken, with two second opinions at
+   s sqrt(2) and s / sqrt(2), the largest of the three kept: a full-quad
+   recombination can miss its size field at a coarse s (the graded block at
+   s = 2 and 4: 0.63 and 0.11 of its count). The first guess of a coarsening
+   mesh's s comes from its curves: SURFACE_PER_CURVE times their count squared.
 
    The first s. The geometry's extent gives E = 4.5 second-order nodes per
    h^2 of its points' bounding box (measured 4.5 to 4.8 on the scenes'
@@ -27,8 +31,8 @@
 
    Structured meshes. A transfinite curve keeps its node count whatever s is,
    so a structured mesh does not coarsen and a probe would be the whole mesh,
-   not 1/s^2 of it. The curves alone (gmsh -1, cheap) are meshed at s0,
-   s0 / 2, s0 / 4, ...: a coarsening curve's nodes about double from one to
+   not 1/s^2 of it. The curves alone (gmsh -1, cheap) are meshed at s0 / 4
+   (at least 2), then each half of the last: a coarsening curve's nodes about double from one to
    the next (measured 1.9 to 2.1 from s = 64 to 1 on ball, flat, the hertz
    indenter and the graded block, once each curve has more than one
    element), a structured block's stay at 1,200. Where they grow by half,
