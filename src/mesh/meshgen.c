@@ -1,8 +1,5 @@
 /* Mesh generation with Gmsh and the physical names of a Gmsh file. */
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <unistd.h>
 #include <errno.h>
 #include <ctype.h>
@@ -10,6 +7,8 @@
 #include "contact.h"
 #include "meshgen.h"
 #include "outputset.h"
+#include "gmshrun.h"
+#include "meshsize.h"
 
 /* mkdir -p: creates dir and its parents; returns 0 or the errno of the failure. */
 int ContactMakeDirs(const char dir[])
@@ -110,30 +109,6 @@ static PetscBool GeoUsesName(const char geo[], const char name[])
   return uses;
 }
 
-/* Runs argv[0] (looked up in PATH) with stdout and stderr into log and waits
-   for it: 0 on success. Not system(), which ignores SIGINT while it waits, so
-   that Ctrl-C during meshing would be lost; the child is in the same process
-   group, so a terminal's Ctrl-C stops it too. */
-static int RunLogged(char *const argv[], const char log[], const char out[])
-{
-  extern char              **environ;
-  posix_spawn_file_actions_t fa;
-  pid_t                      pid;
-  int                        st = 0, r;
-
-  if (posix_spawn_file_actions_init(&fa)) return -1;
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-  r = posix_spawnp(&pid, argv[0], &fa, NULL, argv, environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (r) return -1;
-  ContactOutputSetChild((int)pid, out); /* an interrupted run stops it and removes its file */
-  while (waitpid(pid, &st, 0) < 0)
-    if (errno != EINTR) break;
-  ContactOutputSetChild(0, NULL);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
 /* Gmsh's first error in its log (lines "Error   : ..."), in msg (empty if
    none): a parse error reads "'<file>', line N: text", given here as
    "line N: text" (the file named only if it is another one, an Include). A
@@ -189,7 +164,7 @@ static PetscErrorCode GeoCheckParse(char *argv[], PetscInt argc, const char geo[
   argv[1]        = (char *)"-parse_and_exit"; /* in place of -2 */
   argv[argc]     = (char *)geo;
   argv[argc + 1] = NULL;
-  r              = RunLogged(argv, log, log);
+  r              = GmshRun(argv, log, log, NULL, NULL);
   argv[1]        = mode;
   if (r != 0) {
     PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
@@ -198,47 +173,6 @@ static PetscErrorCode GeoCheckParse(char *argv[], PetscInt argc, const char geo[
   }
   (void)unlink(log);
   PetscFunctionReturn(0);
-}
-
-/* About how many nodes Gmsh would make of geo at size h: the extent of the
-   geometry's points, unrolled by Gmsh without meshing (gmsh -0), times
-   4.5 / h^2 (second-order nodes per h^2 of area, measured 4.5 to 4.8 on the
-   scenes' Tri6 and Quad9 meshes). A refinement the .geo grades by its own
-   parameters is not seen: the estimate is a floor there. Returns -1 if the
-   geometry cannot be unrolled. */
-static double MeshEstimateNodes(char *argv[], PetscInt argc, const char geo[], double h, const char out[])
-{
-  char   line[1024];
-  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-  FILE  *fp;
-  int    n = 0;
-
-  argv[0]        = (char *)"gmsh";
-  argv[1]        = (char *)"-0"; /* in place of -2: unroll, do not mesh */
-  argv[argc]     = (char *)geo;
-  argv[argc + 1] = (char *)"-o";
-  argv[argc + 2] = (char *)out;
-  argv[argc + 3] = NULL;
-  if (RunLogged(argv, "/dev/null", out) != 0 || !(fp = fopen(out, "r"))) {
-    (void)unlink(out);
-    argv[1] = (char *)"-2";
-    return -1;
-  }
-  while (fgets(line, sizeof(line), fp)) {
-    double x, y;
-    if (!strncmp(line, "Point(", 6) && sscanf(strchr(line, '{') ? strchr(line, '{') + 1 : line, "%lf , %lf", &x, &y) == 2) {
-      lo[0] = fmin(lo[0], x);
-      lo[1] = fmin(lo[1], y);
-      hi[0] = fmax(hi[0], x);
-      hi[1] = fmax(hi[1], y);
-      n++;
-    }
-  }
-  fclose(fp);
-  (void)unlink(out);
-  argv[1] = (char *)"-2";
-  if (n < 2) return -1;
-  return 4.5 * fmax(hi[0] - lo[0], h) * fmax(hi[1] - lo[1], h) / (h * h);
 }
 
 /* A tag of the contents of a file (64-bit FNV-1a), for cached mesh names. */
@@ -339,14 +273,17 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       PetscCall(PetscStrlcat(cmd, "' 2>&1", sizeof(cmd)));
       PetscCall(PetscInfo(NULL, "Meshing: %s\n", cmd));
       if (estimateOnly && *maxDofs > 0 && !bgmTag[0]) { /* refused before meshing if it would not fit (a size field's mesh: by its caller) */
-        char   est[PETSC_MAX_PATH_LEN + 32];
-        double nodes;
-        PetscCall(PetscSNPrintf(est, sizeof(est), "%s.size%d.geo_unrolled", msh, (int)getpid()));
-        nodes = MeshEstimateNodes(argv, argc, geo, (double)h, est);
-        if (nodes > 0 && 2.0 * nodes > *maxDofs) {
+        MeshSize size;
+        char     source[128];
+        argv[argc] = NULL;
+        PetscCall(MeshEstimateSize(argv, geo, (double)h, msh, &size));
+        PetscCall(PetscInfo(NULL, "Size of %s: about %g nodes, %g surface elements (clscale %g), %d Gmsh runs, %.2f s%s\n", geo, size.nodes, size.elements, size.scale, size.probes, size.seconds, size.kept ? ", kept as the mesh" : ""));
+        if (size.nodes > 0 && 2.0 * size.nodes > *maxDofs) {
           err = 1;
-          PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "mesh size h = %g for %s would give about %.2g elements, %.2g dofs and %.2g GB (from the geometry's extent), more than the %.3g dofs left of the limit (%s); use a larger mesh size", (double)h, geo, nodes / 4.0, 2.0 * nodes, 2.0 * nodes * CONTACT_BYTES_PER_DOF / 1e9, (double)*maxDofs, limit));
-        } else if (nodes > 0) *maxDofs -= 2.0 * nodes; /* what is left for the other bodies */
+          PetscCall(MeshSizeSource(&size, source, sizeof(source)));
+          PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "mesh size h = %g for %s would give about %.2g elements, %.3g dofs and %.2g GB (%s), more than the %.3g dofs left of the limit (%s); use a larger mesh size", (double)h, geo, size.elements, 2.0 * size.nodes, 2.0 * size.nodes * CONTACT_BYTES_PER_DOF / 1e9, source, (double)*maxDofs, limit));
+          if (size.kept) (void)unlink(msh);
+        } else if (size.nodes > 0) *maxDofs -= 2.0 * size.nodes; /* what is left for the other bodies */
       }
     }
     if (!err && !estimateOnly && (stat(msh, &sm) || sm.st_mtime < sg.st_mtime)) {
@@ -354,7 +291,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
       argv[argc + 1] = (char *)"-o";
       argv[argc + 2] = tmp;
       argv[argc + 3] = NULL;
-      if (RunLogged(argv, log, tmp) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
+      if (GmshRun(argv, log, tmp, NULL, NULL) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
         char gmsh[1024];
         err = 1;
         (void)unlink(tmp);
