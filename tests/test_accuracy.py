@@ -97,27 +97,31 @@ def test_bad_target(value, tmp_path):
 
 
 def test_ranks_agree(tmp_path):
-    """2 ranks refine like 1 and reach the same answer: on the same meshes
-    (measured: every step's dofs equal with each of the OpenBLAS kernels
-    Nehalem, Sandybridge, Haswell and SkylakeX) P and p_max to 3e-12
-    (measured up to 1.2e-12, p_max with Nehalem; was 1e-8) and each step's
-    estimate to 8e-12 (measured up to 3.1e-12; was 1e-6), so that a figure
-    or an estimate that is one rank's share fails. Should a cell's marking
-    flip on the last bit on another machine (the kernels do flip it: the
-    last step has 7686 dofs with Nehalem and Haswell, 7718 with the others,
-    0.42 % apart), the steps' dofs still agree to 1 % (was 2 %) and the
-    answers to within the estimate, which is what a user is promised."""
+    """2 ranks reach 1 rank's answer: results, not the refinement path. Where
+    the last meshes are the same (same dofs; measured so with each of the
+    OpenBLAS kernels Nehalem, Sandybridge, Haswell and SkylakeX), P and p_max
+    agree to 3e-12 (measured up to 1.2e-12, p_max with Nehalem) and the
+    estimate, a difference of two meshes' answers, to 2.5e-11 (measured up
+    to 8.0e-12), so that a figure or an
+    estimate that is one rank's share fails. Should a cell's marking flip on
+    the last bit on another machine (the kernels do flip it: the last step
+    has 7686 dofs with Nehalem and Haswell, 7718 with the others), the two
+    answers, each on its own mesh, agree to within the larger of their
+    estimates, which is what a user is promised; and each run meets the
+    target it was given."""
     args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
     one = run_contact(args, tmp_path, name="one").summary
     two = run_contact(args, tmp_path, ranks=2, name="two").summary
-    d1, d2 = [s["dofs"] for s in one["adapt_steps"]], [s["dofs"] for s in two["adapt_steps"]]
-    print("dofs per step", d1, d2)
-    assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.01 for a, b in zip(d1, d2))
-    rtol = 1e-8 if d1 == d2 else one["error_estimate"]  # measured 1.2e-12; 1e-8 as every rank comparison: the ranks' Newton paths may differ elsewhere
-    for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
-        print(f"estimate {a['error_estimate']!r} against {b['error_estimate']!r}: {b['error_estimate'] / a['error_estimate'] - 1:.2e}")
-        if a["dofs"] == b["dofs"]:
-            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-8)  # measured 3.1e-12
+    same_mesh = one["adapt_steps"][-1]["dofs"] == two["adapt_steps"][-1]["dofs"]
+    print("last dofs", one["adapt_steps"][-1]["dofs"], two["adapt_steps"][-1]["dofs"])
+    for s in (one, two):
+        assert s["error_estimate"] <= 0.05
+    if same_mesh:
+        rtol = 3e-12
+        print(f"estimate {one['error_estimate']!r} against {two['error_estimate']!r}: {two['error_estimate'] / one['error_estimate'] - 1:.2e}")
+        assert two["error_estimate"] == pytest.approx(one["error_estimate"], rel=2.5e-11)
+    else:
+        rtol = max(one["error_estimate"], two["error_estimate"])
     print(f"P {two['contact_force'] / one['contact_force'] - 1:.2e}, p_max {two['fem_pmax'] / one['fem_pmax'] - 1:.2e}")
     assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
     assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)
