@@ -105,7 +105,8 @@ def test_lmvm_ranks_stiff(formulation, tmp_path):
     k_p h / E* = 1.7e6) the default continuation starts where k_p h / E* is
     1 and climbs by at most 32 a stage: 1 + ceil(log_32(k_p h / E*)) stages
     (6), from the JSON's penalty_stiffness. 1 and 2 ranks reach the same P to
-    1e-8, the default stop's share (measured 5.4e-10 and 1.0e-9; the
+    3e-9, the default stop's share (measured 5.4e-10 to 7.4e-10 with gpts,
+    1.0e-10 to 1.0e-9 with mortar; the
     iterations, a path, are printed and not compared: measured equal, gpts
     30 and mortar 21). With
     the first stage at 1e-3 k_p, as before (k_p h / E* = 1.7e3 there), they
@@ -119,16 +120,16 @@ def test_lmvm_ranks_stiff(formulation, tmp_path):
           f"{s[2]['iterations']}; P {dP:.1e} apart")
     assert s[1]["stages"] == 1 + math.ceil(math.log(stiff) / math.log(32)) and s[1]["load_cutbacks"] == 0
     assert s[2]["converged"]
-    assert dP <= 1e-8
+    assert dP <= 3e-9
 
 
 @pytest.mark.parametrize("case", ["hertz", "half-kp1e10"])
 def test_lmvm_decrement(case, tmp_path):
     """-lmvm_decrement_rtol 1e-12 (the last stage stops on the decrement in
     H0's norm instead of the gradient): P to Newton's within 1e-11 on the
-    reference scene (Newton solved to -tao_gttol 1e-12) and within 1e-8 on
-    the coarse mortar half scene at k_p = 1e10, push 0.3 (Newton at its
-    default stop), where -tao_gttol 1e-11 stops at the gradient's round-off;
+    reference scene (Newton solved to -tao_gttol 1e-12; measured 1.9e-12)
+    and within 5e-9 on the coarse mortar half scene at k_p = 1e10, push 0.3
+    (Newton at its default stop; measured 1.6e-9), where -tao_gttol 1e-11 stops at the gradient's round-off;
     one decrement solve per iteration after the first of the last stage."""
     args = HERTZ if case == "hertz" else _case_args(0.25, 1e10, "mortar")
     ref = run_contact(args, tmp_path, name="newton").summary
@@ -136,7 +137,7 @@ def test_lmvm_decrement(case, tmp_path):
     dP = abs(s["contact_force"] / ref["contact_force"] - 1)
     print(f"{s['iterations']} iterations ({s['tao_reason']}), {s['lmvm_decrement_solves']} decrement solves; P {dP:.1e}")
     assert s["tao_reason"] == "CONVERGED_USER"
-    assert dP <= (1e-11 if case == "hertz" else 1e-8)
+    assert dP <= (1e-11 if case == "hertz" else 5e-9)
     assert 0 < s["lmvm_decrement_solves"] <= s["iterations"] + 1
 
 
