@@ -39,7 +39,7 @@ sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import profile_metrics as pm  # noqa: E402
 from contactrun import run_checked  # noqa: E402
 
-MEASURED_H = [0.05, 0.055, 0.06, 0.065, 0.07, 0.08, 0.03]
+MEASURED_H = [0.05, 0.055, 0.06, 0.065, 0.07, 0.075, 0.08, 0.03]
 KINDS = ["point", "dual", "quadratic", "sublinear", "tributary"]
 
 
