@@ -140,20 +140,23 @@ def test_curved_traction_resultant(quads, tmp_path):
 
 def test_load_steps_and_ranks(tmp_path):
     """Load stepping scales the loads with the Dirichlet values, so two load
-    steps end at the same state (every JSON figure to 1e-10: the problem is
-    linear, each step solved to gttol); 2 ranks give the 1-rank answer to 1e-8
-    (the loads counted once over the ranks' edges)."""
+    steps end at the same state, and 2 ranks give the 1-rank answer (the
+    loads counted once over the ranks' edges): the energy, the largest
+    displacement and the reactions (relative to the load's p) to 1e-13 (the
+    problem is linear: measured at most 2.5e-14 for the steps, 6.9e-15 for
+    the ranks). The number of stages, -load_steps as given, is not asserted."""
     args = tube(1, 0.1, ["-tube_load_inner_pressure", P])
     one = run_contact(args, tmp_path, name="one").summary
     steps = run_contact(args + ["-load_steps", 2], tmp_path, name="steps").summary
     two = run_contact(args, tmp_path, ranks=2, name="np2").summary
-    for other, tol in ((steps, 1e-10), (two, 1e-8)):
+    for other, tol, label in ((steps, 1e-13, "2 load steps"), (two, 1e-13, "2 ranks")):
         for key in ("energy", "max_displacement"):
+            print(label, key, f"{abs(other[key] / one[key] - 1):.1e}")
             assert abs(other[key] / one[key] - 1) < tol, (key, one[key], other[key])
         for g in ("tube:xaxis", "tube:yaxis"):
             a, b = one["reactions"][g], other["reactions"][g]
+            print(label, g, f"{max(abs(x - y) for x, y in zip(a, b)) / P:.1e}")
             assert max(abs(x - y) for x, y in zip(a, b)) < tol * P, (g, a, b)
-    assert steps["stages"] == 2
 
 
 BAD = {
