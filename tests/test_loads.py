@@ -71,6 +71,33 @@ def test_plate_uniform_pressure_exact(quads, load, tmp_path):
     assert abs(s["reactions"]["plate:left"][0]) < 100 * EPS * PL
 
 
+@pytest.mark.parametrize("load", [["-plate_load_top_pressure", P], ["-plate_load_top_traction", f"0,{-P}"]],
+                         ids=["pressure", "traction"])
+@pytest.mark.parametrize("quads", [0, 1], ids=["tri6", "quad9"])
+def test_cylinder_uniform_pressure_rz(quads, load, tmp_path):
+    """The same plate in r-z (-axisymmetric: x is r, the left edge the axis):
+    a solid cylinder of radius R = 2 and height 1 on rollers, pressed by p on
+    its top face. The uniform state sigma_zz = -p, sigma_rr = sigma_hoop = 0
+    has u_r = nu p r / E and u_z = -p z / E, linear, which P2 and Q2 hold
+    exactly: every nodal displacement to round-off (bound 1e-12 of max |u|,
+    as in plane strain; measured 7.1e-15 to 9.4e-15). The load's resultant
+    is axial, -p pi R^2, and the bottom's reaction p pi R^2 (the rings'
+    areas 2 pi r dr, integrated by the loads' quadrature), to 100 EPS
+    (measured at most 6.7e-16 and 2.4e-15)."""
+    r = run_contact(plate(quads, load) + ["-axisymmetric"], tmp_path)
+    s = r.summary
+    with r.h5() as f:
+        X, u = f["bodies/plate/geometry"][...], f["bodies/plate/displacement"][...]
+    exact = np.stack([NU * P / E * X[:, 0], -P / E * X[:, 1]], 1)
+    err = np.max(np.abs(u - exact)) / np.max(np.abs(exact))
+    F, PA = s["loads"]["plate:top"], P * math.pi * 2.0 ** 2
+    print(f"nodal error {err:.2e}; load {F} ({F[1] / PA + 1:.1e} off), reactions {s['reactions']} "
+          f"({s['reactions']['plate:bottom'][1] / PA - 1:.1e} off)")
+    assert err < 1e-12
+    assert F[0] == 0 and abs(F[1] + PA) < 100 * EPS * PA
+    assert abs(s["reactions"]["plate:bottom"][1] - PA) < 100 * EPS * PA
+
+
 @pytest.mark.parametrize("quads", [0, 1], ids=["tri6", "quad9"])
 def test_tube_lame(quads, tmp_path):
     """The largest nodal error of u against Lame's, relative to max u_r, at
