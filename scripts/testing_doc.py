@@ -376,17 +376,19 @@ def split(text):
 
 
 def first_difference(old, new):
-    """The first test file (in the page's order) whose section differs, or
-    None if the pages are the same."""
+    """The first test file, in the order of their names, whose section
+    differs, is missing or names no test file; the header; or None if the
+    pages are the same."""
     if old == new:
         return None
-    a, b = dict(split(old)), split(new)
-    for name, text in b[1:]:
-        if a.get(name, "").rstrip("\n") != text.rstrip("\n"):
-            return f"tests/{name}" if name in a else f"tests/{name} (missing from {PAGE})"
-    for name in a:
-        if name is not None and name not in dict(b):
+    a, b = dict(split(old)), dict(split(new))
+    for name in sorted(n for n in set(a) | set(b) if n is not None):
+        if name not in a:
+            return f"tests/{name} (missing from {PAGE})"
+        if name not in b:
             return f"tests/{name} (in {PAGE}, but no such test file)"
+        if a[name].rstrip("\n") != b[name].rstrip("\n"):
+            return f"tests/{name}"
     return f"the header of {PAGE}"
 
 
