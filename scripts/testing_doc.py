@@ -33,10 +33,13 @@ import os
 import re
 import sys
 import textwrap
+import tomllib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PAGE = os.path.join("docs", "tests.md")
 TESTS = "tests"
+CASES = "cases"
+HARNESS = "test_cases.py"
 HEADER = (
     "# The tests, one by one\n"
     "\n"
@@ -338,6 +341,70 @@ def prose(doc):
     return "\n".join(out)
 
 
+def number(x):
+    """A TOML value as the file writes it, near enough: numbers in Python's
+    shortest form, strings quoted, lists bracketed."""
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, str):
+        return f'"{x}"'
+    if isinstance(x, list):
+        return "[" + ", ".join(number(v) for v in x) + "]"
+    text = repr(x)
+    if isinstance(x, float) and "e" not in text and len(text) > 8:
+        p = next(p for p in range(17) if float(f"{x:.{p}e}") == x)
+        text = f"{x:.{p}e}"
+    return re.sub(r"e([+-])0*(\d)", lambda m: "e" + ("-" if m.group(1) == "-" else "") + m.group(2), text)
+
+
+def tolerance(e):
+    parts = [f"{k} {number(e[k])}" for k in ("rtol", "atol") if k in e]
+    if "reduce" in e:
+        parts.append(f"of the {e['reduce']}")
+    return ", ".join(parts)
+
+
+def case_section(path):
+    """The Markdown of one regression case (tests/cases/*.toml, read by
+    test_cases.py): its description, scene and options, and each expected
+    figure with its tolerance and source."""
+    with open(path, "rb") as f:
+        case = tomllib.load(f)
+    name = os.path.basename(path)
+    parts = [f"#### `{CASES}/{name}`", ""]
+    if "description" in case:
+        parts += [prose(textwrap.dedent(str(case["description"]))), ""]
+    run = [f"- scene {code(str(case.get('options_file', '')))}"]
+    if case.get("args"):
+        run[0] += ", options " + code(" ".join(str(a) for a in case["args"]))
+    run.append("- ranks " + ", ".join(str(n) for n in case.get("ranks", [1])))
+    parts += run
+    for e in case.get("expect", []):
+        what = code(str(e.get("key", e.get("dataset", "?"))))
+        where = "" if "key" in e else " (HDF5)"
+        line = f"- {what}{where} = {code(number(e.get('value')))}, {tolerance(e)}: " + prose_inline(str(e.get("source", "")))
+        parts.append(line)
+    conv = case.get("convergence")
+    if conv:
+        parts.append(f"- convergence in {code(str(conv.get('option', '')))} over "
+                     + ", ".join(number(v) for v in conv.get("values", [])))
+        for r in conv.get("rate", []):
+            parts.append(f"  - {code(str(r.get('key', '')))}: observed order at least {number(r.get('min_rate'))}: "
+                         + prose_inline(str(r.get("source", ""))))
+    cmp = case.get("compare_ranks")
+    if cmp:
+        parts.append("- the rank counts agree in " + ", ".join(code(str(k)) for k in cmp.get("keys", []))
+                     + f" to rtol {number(cmp.get('rtol'))}")
+    return "\n".join(parts + [""])
+
+
+def case_files(root):
+    folder = os.path.join(root, TESTS, CASES)
+    if not os.path.isdir(folder):
+        return []
+    return [os.path.join(folder, f) for f in sorted(os.listdir(folder)) if f.endswith(".toml")]
+
+
 def section(root, name):
     """The Markdown of one test file."""
     src = Source(os.path.join(root, TESTS, name))
@@ -353,6 +420,11 @@ def section(root, name):
             parts += deco + [""]
         doc = ast.get_docstring(func)
         parts += [prose(doc) if doc else "(no docstring)", ""]
+    if name == HARNESS:
+        cases = case_files(root)
+        if cases:
+            parts += [f"The cases, one per file of `{TESTS}/{CASES}/`:", ""]
+            parts += [case_section(c) for c in cases]
     return "\n".join(parts)
 
 
@@ -375,10 +447,30 @@ def split(text):
     return parts
 
 
+SUBSECTION = re.compile(r"^#{3,4} `([^`]*)`", re.M)
+
+
+def first_block(old, new):
+    """The heading of the first test or case whose block differs between two
+    versions of a file's section, or None."""
+    def blocks(text):
+        starts = [(m.start(), m.group(1)) for m in SUBSECTION.finditer(text)]
+        out = [(None, text[:starts[0][0]] if starts else text)]
+        for (i, name), (j, _) in zip(starts, starts[1:] + [(len(text), None)]):
+            out.append((name, text[i:j].rstrip("\n")))
+        return out
+    a, b = blocks(old), blocks(new)
+    for (na, ta), (nb, tb) in zip(a, b):
+        if na != nb or ta.rstrip("\n") != tb.rstrip("\n"):
+            return nb or na
+    longer = a if len(a) > len(b) else b
+    return longer[min(len(a), len(b))][0] if len(a) != len(b) else None
+
+
 def first_difference(old, new):
     """The first test file, in the order of their names, whose section
-    differs, is missing or names no test file; the header; or None if the
-    pages are the same."""
+    differs, is missing or names no test file (with the first test or case
+    that differs in it); the header; or None if the pages are the same."""
     if old == new:
         return None
     a, b = dict(split(old)), dict(split(new))
@@ -388,7 +480,8 @@ def first_difference(old, new):
         if name not in b:
             return f"tests/{name} (in {PAGE}, but no such test file)"
         if a[name].rstrip("\n") != b[name].rstrip("\n"):
-            return f"tests/{name}"
+            block = first_block(a[name], b[name])
+            return f"tests/{name}" + (f", {block}" if block else "")
     return f"the header of {PAGE}"
 
 
