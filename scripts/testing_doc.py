@@ -310,7 +310,10 @@ def as_code(lines):
 
 
 def prose(doc):
-    """A docstring (dedented) as Markdown, block by block."""
+    """A docstring (dedented) as Markdown, block by block. A list is items at
+    the block's indentation, starting a block or after a line that ends with
+    ":", each continued by the lines indented under it; the next line at the
+    block's indentation that is no item ends it (a new paragraph)."""
     out = []
     for block in paragraphs(textwrap.dedent(doc.expandtabs())):
         if out:
@@ -319,23 +322,32 @@ def prose(doc):
             out.extend(as_code(block))
             continue
         escaped = escape("\n".join(block)).split("\n")
-        listed = ITEM.match(escaped[0]) is not None
-        code_lines = []
+        listed, code_lines = False, []
         for k, line in enumerate(escaped):
             ind, text = indent_of(line), line.lstrip(" ")
-            if not listed and ind >= 4:
+            item = ind == 0 and ITEM.match(text) is not None and (listed or k == 0 or block[k - 1].endswith(":"))
+            if not listed and not item and ind >= 4:
                 code_lines.append(block[k])
                 continue
             if code_lines:
                 out.extend([""] + as_code(code_lines) + [""])
                 code_lines = []
-            if ITEM.match(text) and not (listed and ind == 0):
+            if item:
+                if not listed and out and out[-1] != "":
+                    out.append("")
+                listed = True
+                if text.startswith("\\*"):
+                    text = text[1:]
+                out.append(text)
+                continue
+            if listed and ind == 0:
+                out.append("")
+                listed = False
+            if ITEM.match(text):
                 text = "\\" + text if not text[0].isdigit() else re.sub(r"^(\d+)([.)])", r"\1\\\2", text)
-            elif listed and ind == 0 and ITEM.match(text) and text.startswith("\\*"):
-                text = text[1:]
             if re.match(r"#|>|=+ *$|-+ *$|\|", text):
                 text = "\\" + text
-            out.append("  " + text if listed and ind > 0 else text)
+            out.append("  " + text if listed else text)
         if code_lines:
             out.extend([""] + as_code(code_lines))
     return "\n".join(out)

@@ -94,6 +94,13 @@ def test_page_records_decorators(tmp_path):
 
   key   value
         more
+
+Refused:
+- one
+  more
+- two
+After, a value
+- 1 and no list.
 """
 import pytest
 
@@ -131,6 +138,7 @@ def helper():
     assert "Module: -\\<body>\\_load, E\\* and R\\*." in text
     assert "- an item\n  \\- 1 / 2, a continuation\n- another item\n" in text
     assert "\n    key   value\n          more\n" in text
+    assert "Refused:\n\n- one\n  more\n- two\n\nAfter, a value\n\\- 1 and no list.\n" in text
     assert ('- `h, name` (from `CASES`): `(0.1, "a")`, `(0.2, "b")` (marked `stress`)\n'
             '- `q`: `0` (`tri6`), `1` (`quad9`)\n') in text
     assert "\\# not a heading\n\\> not a quote\nsee [a]\\(b) and `k_p*2`\n" in text
