@@ -381,7 +381,11 @@ def case_section(path):
     test_cases.py): its description, scene and options, and each expected
     figure with its tolerance and source."""
     with open(path, "rb") as f:
-        case = tomllib.load(f)
+        try:
+            case = tomllib.load(f)
+        except tomllib.TOMLDecodeError as e:
+            e.filename = path
+            raise
     name = os.path.basename(path)
     parts = [f"#### `{CASES}/{name}`", ""]
     if "description" in case:
@@ -503,7 +507,12 @@ def main():
     group.add_argument("--check", action="store_true", help="exit 1 if docs/tests.md differs from the tests")
     group.add_argument("--update", action="store_true", help="rewrite docs/tests.md from the tests")
     args = ap.parse_args()
-    new = join(render())
+    try:
+        new = join(render())
+    except (SyntaxError, tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
+        where = getattr(e, "filename", None)
+        print(f"cannot read {os.path.relpath(where, ROOT) if where else 'a test file'}: {e}")
+        sys.exit(1)
     path = os.path.join(ROOT, PAGE)
     try:
         with open(path, encoding="utf-8") as f:
