@@ -195,7 +195,7 @@ def test_ranks(tmp_path):
                 continue
             b = got[k]
             if isinstance(a, (int, float)) and not isinstance(a, bool) and a is not None:
-                # a force or reaction component that cancels (y, 2e-5 of P) to 1e-11 of the pair's force
+                # a force or reaction component that cancels (y, 4.5e-7 of P) to 1e-11 of the pair's force
                 floor = 1e-11 * scale if ".force." in f".{k}." or k.startswith("reactions.") else 0.0
                 worst = max(worst, (abs(a - b) / (max(abs(a), abs(b)) + floor / 1e-11 or 1.0), k))
                 assert abs(a - b) <= 1e-11 * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
