@@ -810,7 +810,9 @@ static void MortarGapAlong(const ContactGap *G, const MortarAlong *A, PetscReal 
    at c, their gradients, d(g_a - g_b)/dxi (den, so that dc/du = -(dg_a -
    dg_b) / den), and for each node i of the edge q_i = dQ_i/dc and k_i =
    dC_i/dc (Q_i = int W_i (g - g_i) dS by the Gauss rule of the two pieces,
-   g_i held, C_i = int W_i dS) and s = sum_i Lambda_i q_i = dE/dc. */
+   g_i held, C_i = int W_i dS) and s = sum_i Lambda_i q_i = dE/dc. False
+   where none of the edge's nodes is active (nothing depends on c then) or
+   where the two gaps' slopes meet (a blended node: no crossing term). */
 typedef struct {
   ContactGap  Ga, Gb;
   MortarAlong A;
@@ -826,12 +828,11 @@ typedef struct {
    sum_q w_q ((gamma_l - gamma_r) F'/2 + h gamma_l gamma_r F''). The piece
    left of crossing X (side 0) ends at c (sigma = +1), the right one (side 1)
    begins there (sigma = -1). */
-static inline void MortarPieceOf(const Mortar *m, const MortarCut *X, PetscInt side, PetscInt *p0, PetscReal *h, PetscReal *sigma)
+static inline void MortarPieceOf(const MortarCut *X, PetscInt side, PetscInt *p0, PetscReal *h, PetscReal *sigma)
 {
   *p0    = side ? X->pr : X->pl;
   *h     = side ? 0.5 * (X->xr - X->xi) : 0.5 * (X->xi - X->xl);
   *sigma = side ? -1.0 : 1.0;
-  (void)m;
 }
 
 static PetscBool MortarCrossFirst(const Mortar *m, PetscInt s, const MortarCut *X, const MortarPoint *pts, MortarCross *C)
@@ -840,6 +841,8 @@ static PetscBool MortarCrossFirst(const Mortar *m, PetscInt s, const MortarCut *
   const PetscInt       *sn = &S->enodes[3 * X->se];
   PetscReal             xs[2], dS;
 
+  MortarEdgeLambda(m, &m->side[s], sn, C->Lam, C->g);
+  if (C->Lam[0] == 0 && C->Lam[1] == 0 && C->Lam[2] == 0) return PETSC_FALSE; /* no active node on the edge: nothing moves the energy here */
   MortarAlongEval(m, s, X->se, X->xi, &C->A);
   MortarSlaveEval(S, X->se, X->xi, xs, &dS);
   ContactGapOnEdge(M, X->ea, X->ma, xs, &C->Ga);
@@ -850,12 +853,11 @@ static PetscBool MortarCrossFirst(const Mortar *m, PetscInt s, const MortarCut *
   if (PetscAbsReal(C->den) <= 1e-12 * PetscSqrtReal(C->A.x1[0] * C->A.x1[0] + C->A.x1[1] * C->A.x1[1])) return PETSC_FALSE;
   ContactGapIndices(S, sn, M, &C->Ga, C->ia);
   ContactGapIndices(S, sn, M, &C->Gb, C->ib);
-  MortarEdgeLambda(m, &m->side[s], sn, C->Lam, C->g);
   for (PetscInt i = 0; i < 3; ++i) C->q[i] = C->k[i] = 0.0;
   for (PetscInt side = 0; side < 2; ++side) {
     PetscInt  p0;
     PetscReal h, sg;
-    MortarPieceOf(m, X, side, &p0, &h, &sg);
+    MortarPieceOf(X, side, &p0, &h, &sg);
     for (PetscInt q = 0; p0 >= 0 && q < m->nq; ++q) {
       const MortarPoint *P  = &pts[p0 + q];
       const PetscReal    ga = 0.5 * (1.0 + sg * m->xq[q]);
@@ -928,7 +930,6 @@ static PetscErrorCode MortarCrossHessian(const Mortar *m, PetscInt s, const Mort
 
   PetscFunctionBeginUser;
   if (!MortarCrossFirst(m, s, X, pts, &C)) PetscFunctionReturn(0);
-  if (C.Lam[0] == 0 && C.Lam[1] == 0 && C.Lam[2] == 0) PetscFunctionReturn(0);
   MortarGapAlong(&C.Ga, &C.A, C.dga, &C.ga1, Ka, &ga2, dg1a);
   MortarGapAlong(&C.Gb, &C.A, C.dgb, &C.gb1, Kb, &gb2, dg1b);
   PetscCall(MortarCrossAddDc(&C, 1.0, &n, nmax, idx, 3, val, 0, sa, sb));
@@ -939,7 +940,7 @@ static PetscErrorCode MortarCrossHessian(const Mortar *m, PetscInt s, const Mort
   for (PetscInt side = 0; side < 2; ++side) {
     PetscInt  p0;
     PetscReal h, sg;
-    MortarPieceOf(m, X, side, &p0, &h, &sg);
+    MortarPieceOf(X, side, &p0, &h, &sg);
     for (PetscInt q = 0; p0 >= 0 && q < m->nq; ++q) {
       const MortarPoint *P  = &pts[p0 + q];
       const PetscReal    ga = 0.5 * (1.0 + sg * m->xq[q]);
@@ -1080,22 +1081,6 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
   PetscCall(MortarAccumulateGradient(m, energy));
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-/* Adds v to the entry of index i of a sparse vector (idx, val, n). */
-static inline PetscErrorCode SparseAdd(PetscInt i, PetscReal v, PetscInt *n, PetscInt nmax, PetscInt idx[], PetscReal val[])
-{
-  PetscFunctionBeginUser;
-  if (i < 0) PetscFunctionReturn(0);
-  for (PetscInt k = 0; k < *n; ++k)
-    if (idx[k] == i) {
-      val[k] += v;
-      PetscFunctionReturn(0);
-    }
-  PetscCheck(*n < nmax, PETSC_COMM_SELF, PETSC_ERR_PLIB, "mortar: node support larger than %" PetscInt_FMT " dofs", nmax);
-  idx[*n]   = i;
-  val[(*n)++] = v;
   PetscFunctionReturn(0);
 }
 
