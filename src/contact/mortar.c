@@ -1100,7 +1100,7 @@ static PetscErrorCode MortarNodeGradient(Mortar *m, PetscInt s, PetscInt j, Pets
   for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
     const PetscInt     e  = D->nodeEdge[k];
     const MortarPoint *P0 = D->pbeg[e] >= 0 ? &D->pts[D->pbeg[e]] : NULL;
-    const MortarCut   *X0 = D->pbeg[e] >= 0 ? &D->cross.c[D->cbeg[e]] : NULL;
+    const MortarCut   *X0 = D->pbeg[e] >= 0 && D->cend[e] > D->cbeg[e] ? &D->cross.c[D->cbeg[e]] : NULL;
     PetscInt           n0 = D->pbeg[e] >= 0 ? D->pend[e] - D->pbeg[e] : 0, nx = D->pbeg[e] >= 0 ? D->cend[e] - D->cbeg[e] : 0, i0 = -1, slot;
     const PetscInt    *sn = &S->enodes[3 * e];
     for (PetscInt i = 0; i < 3; ++i)
