@@ -29,9 +29,10 @@ def newton(tmp_path_factory):
 
 @pytest.mark.parametrize("tao", ["lmvm", "blmvm"])
 def test_lmvm_reaches_newton(tao, newton, tmp_path):
-    """P and the energy to Newton's: measured 1.85e-12 and 6.7e-16 = 3 EPS
-    (lmvm and blmvm alike, with their default continuation; 8.3e-13 in one
-    stage), bounds 1e-11 = 10 gttol and 10 EPS (the quasi-Newton iteration
+    """P and the energy to Newton's: measured 1.97e-12 and 2.44e-15 = 11 EPS
+    (lmvm and blmvm alike, with their default continuation; 1.85e-12 and 3
+    EPS before mortar's gradient followed its Gauss points' motion with the
+    crossings), bounds 1e-11 = 10 gttol and 32 EPS (the quasi-Newton iteration
     converges linearly, so it stops just below its tolerance, where Newton's
     last quadratic step lands far below it);
     H0 set up once and then at every iteration (-lmvm_h0_refresh 1), so
@@ -40,7 +41,7 @@ def test_lmvm_reaches_newton(tao, newton, tmp_path):
     dP = abs(s["contact_force"] / newton["contact_force"] - 1)
     dE = abs(s["energy"] / newton["energy"] - 1)
     print(f"{tao}: {s['iterations']} iterations, {s['h0_refreshes']} H0 set-ups; P {dP:.2e}, energy {dE:.2e}")
-    assert dP <= 1e-11 and dE <= 10 * EPS
+    assert dP <= 1e-11 and dE <= 32 * EPS
     assert s["h0_refreshes"] == s["iterations"]
 
 
