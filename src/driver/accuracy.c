@@ -613,7 +613,7 @@ static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, 
   PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see docs/scenes.md, Geometry files)", n, nprev);
   if (acc->warm) { /* from the last step's answer */
     Vec X0;
-    PetscCall(VecDuplicate(cur->X, &X0));
+    PetscCall(VecDuplicate(cur->Xb, &X0));
     PetscCall(AccuracyInterpolate(prev, cur, X0));
     PetscCall(ProblemSetInitialGuess(cur, X0));
     PetscCall(VecDestroy(&X0));
