@@ -1,6 +1,8 @@
-"""Force control (src/solver/forcecontrol.c): -<body>_bc_<group>_control
-force turns a component's value into a force; the group moves rigidly in it
-by the displacement that makes its reaction that force.
+"""Force control (src/solver/forcecontrol.c, forceborder.c, forceouter.c):
+-<body>_bc_<group>_control force turns a component's value into a force; the
+group moves rigidly in it by the displacement that makes its reaction that
+force, an unknown of the one minimisation (coupled, the default) or of an
+outer iteration (-force_control_type outer).
 
 The reference is the displacement-driven run: the reference scene pushed by
 0.15 has a reaction F at its pushed edge; driven by F, it must find the push
@@ -70,10 +72,71 @@ def test_force_control_ranks(by_displacement, tmp_path):
     assert abs(one["contact_force"] - two["contact_force"]) <= 1e-8 * one["contact_force"]
 
 
+FINE = ["-disc_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0007,dc=1",
+        "-slab_geo_params", "x0=0,W=1,H=2,hc=0.0007,dc=1"]
+# name: (options, [(body, group, components, the controlled one's index, the imposed displacement)])
+SCENES = {
+    "softdisc-fine": (["-options_file", "meshes/softdisc/softdisc.opts"] + FINE, [("disc", "clamp", "xy", 0, 0.02)]),
+    "sphere": (["-options_file", "meshes/sphere/sphere.opts"], [("ball", "equator", "y", 0, -0.01)]),
+    "pinch": (["-options_file", "meshes/pinch/pinch.opts"], [("left", "clamp", "xy", 0, 0.02),
+                                                              ("right", "clamp", "xy", 0, -0.03)]),
+}
+
+
+@pytest.mark.parametrize("ranks", [1, 2])
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_coupled_finds_the_displacement(scene, ranks, tmp_path):
+    """The coupled type (the default) on a soft disc pressed onto a stiff slab
+    on its fine mesh (hc = 0.0007), the axisymmetric ball on a flat, and a
+    block pinched by two discs driven by two forces at once, each force the
+    reaction of the displacement-controlled run (its gradient tolerance
+    -tao_gttol 1e-12, so that its reaction is the force of its displacement
+    to round-off): the displacements found are the imposed ones, and the
+    energy is the displacement run's minus F . U to second order in their
+    difference. Measured over 1 and 2 ranks: displacements within 2.5e-12
+    (pinch; 1.9e-14 softdisc, 1.2e-13 sphere; bound 1e-11), energies within
+    4.2e-15 relative (bound 2e-14, five times: round-off)."""
+    args, controls = SCENES[scene]
+    d = run_contact(args + ["-output", "none", "-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name="disp").summary
+    opts, work = [], 0.0
+    for body, group, comps, k, U in controls:
+        F = d["reactions"][f"{body}:{group}"]["xy".index(comps[k])]
+        work += F * U
+        opts += [f"-{body}_bc_{group}_control", ",".join("force" if i == k else "displacement" for i in range(len(comps))),
+                 f"-{body}_bc_{group}_values", ",".join(repr(F) if i == k else "0" for i in range(len(comps)))]
+    f = run_contact(args + opts + ["-output", "none", "-force_control_rtol", "1e-11"], tmp_path, ranks=ranks,
+                    name="force").summary
+    found = {(c["body"], c["group"]): c for c in f["force_control"]}
+    for body, group, comps, k, U in controls:
+        c = found[(body, group)]
+        print(f"{scene} np{ranks} {body}:{group}: U {c['displacement']!r} against {U}: "
+              f"{abs(c['displacement'] - U) / abs(U):.1e}; reaction {c['reaction']!r}, force {c['force']!r}")
+        assert abs(c["displacement"] - U) <= 1e-11 * abs(U)
+        assert abs(c["reaction"] - c["force"]) <= 1e-11 * abs(c["force"])
+    de = f["energy"] - (d["energy"] - work)
+    print(f"energy {f['energy']!r} against {d['energy'] - work!r}: {de / abs(f['energy']):.1e}; "
+          f"iterations {f['iterations']} against {d['iterations']}")
+    assert abs(de) <= 2e-14 * abs(f["energy"])
+
+
+def test_coupled_lbfgs(by_displacement, tmp_path):
+    """L-BFGS (-tao_type lmvm, its H0 bordered by the control as Newton's
+    Hessian is) finds the reference scene's push too: measured 1.5e-13 from
+    0.15 (bound 5e-13), in 25 iterations (the displacement run's 15)."""
+    F = by_displacement["reactions"]["block:push"][0]
+    s = run_contact(HERTZ + ["-block_bc_push_control", "force,displacement", "-block_bc_push_values", f"{F!r},0",
+                             "-output", "none", "-tao_type", "lmvm"], tmp_path).summary
+    (fc,) = s["force_control"]
+    print(f"lmvm: U = {fc['displacement']!r}, {abs(fc['displacement'] + PUSH) / PUSH:.1e} from 0.15, {s['iterations']} iterations")
+    assert abs(fc["displacement"] + PUSH) <= 5e-13 * PUSH
+
+
 BAD = {
     "count": (["-block_bc_push_control", "force"], "option -block_bc_push_control: 1 entries for 2 components"),
     "unknown": (["-block_bc_push_control", "force,pressure"], "unknown control 'pressure'"),
     "max_it": (["-force_control_max_it", "0"], "option -force_control_max_it: must be >= 1"),
+    "type": (["-force_control_type", "broyden"], "option -force_control_type: unknown type 'broyden' (known: coupled, outer)"),
+    "step": (["-force_control_step", "0"], "option -force_control_step: must be a finite number > 0, got 0"),
 }
 
 
@@ -86,12 +149,16 @@ def test_bad_control(case, tmp_path):
     assert cause in lines[0], lines[0]
 
 
-def test_force_control_gives_up_in_one_line(tmp_path):
-    """A limit too small for the outer iteration: the solve stops, says why in
-    one line naming the option and the group, writes nothing, exit 2."""
+@pytest.mark.parametrize("kind", ["outer", "coupled"])
+def test_force_control_gives_up_in_one_line(kind, tmp_path):
+    """A limit too small: the solve stops, says why in one line naming the
+    option and the group, writes nothing, exit 2. The outer iteration with 2
+    solves; the coupled type with 1 solve and a tolerance below round-off
+    (-force_control_rtol 1e-15), which only a second solve could try."""
+    extra = ["-force_control_max_it", "2"] if kind == "outer" else ["-force_control_max_it", "1", "-force_control_rtol", "1e-15"]
     r = run_contact(HERTZ + ["-block_bc_push_control", "force,displacement", "-block_bc_push_values", "-55,0",
-                             "-force_control_max_it", "2"], tmp_path, check=False)
+                             "-force_control_type", kind] + extra, tmp_path, check=False)
     lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
     assert r.returncode == 2, r.stderr
-    assert len(lines) == 1 and "-force_control_max_it 2" in lines[0] and "push" in lines[0], lines
+    assert len(lines) == 1 and f"-force_control_max_it {extra[1]}" in lines[0] and "push" in lines[0], lines
     assert not (tmp_path / "run.json").exists()

@@ -294,7 +294,12 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
     PetscInt       n;
     Vec            X0;
 
-    PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U and R at X */
+    PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U (ProblemScatterToBodies) and R at X */
+    for (PetscInt k = 0; k < p->ncontrols; ++k) {
+      ForceControl *fc = &p->controls[k];
+      const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
+      fc->R            = bc->reaction[bc->comps[fc->c]];
+    }
     if (ControlsConverged(p)) break;
     if (p->res.controlSolves >= p->opt.controlMaxIt) {
       *reason = TAO_DIVERGED_MAXITS;
