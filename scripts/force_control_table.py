@@ -2,8 +2,8 @@
 scene: each scene is first run displacement-controlled; the reaction of the
 pushed group there is the force of the force-controlled runs (the coupled
 type, the default, and the outer iteration, -force_control_type outer), which
-must find the same displacement. Writes results/force_control.json (and a
-markdown table to stdout) with, per scene and rank count: the command lines,
+must find the same displacement. Writes results/force_control.json (and the
+markdown table results/force_control.md) with, per scene and rank count: the command lines,
 the displacement run's iterations, each force type's iterations, solves,
 reason, the displacement found and its relative distance from the imposed
 one, and whether the coupled run is within the target, 1.5 times the
@@ -25,9 +25,13 @@ FINE = ["-disc_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0007,
 # name: (options, [(controlled group "body:group", its components, the controlled one's index in them, the imposed displacement)])
 SCENES = {
     "hertz": (["-options_file", "meshes/hertz/hertz.opts"], [("block:push", ["x", "y"], 0, -0.15)]),
+    "hertz-stiff": (["-options_file", "meshes/hertz/hertz.opts", "-contact_penalty", "1e8"], [("block:push", ["x", "y"], 0, -0.15)]),
+    "hertz-fine": (["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.03"], [("block:push", ["x", "y"], 0, -0.15)]),
     "softdisc": (["-options_file", "meshes/softdisc/softdisc.opts"], [("disc:clamp", ["x", "y"], 0, 0.02)]),
     "softdisc-fine": (["-options_file", "meshes/softdisc/softdisc.opts"] + FINE, [("disc:clamp", ["x", "y"], 0, 0.02)]),
     "sphere": (["-options_file", "meshes/sphere/sphere.opts"], [("ball:equator", ["y"], 0, -0.01)]),
+    "sphere-deep": (["-options_file", "meshes/sphere/sphere.opts", "-ball_bc_equator_values", "-0.05"],
+                    [("ball:equator", ["y"], 0, -0.05)]),
     "pinch": (["-options_file", "meshes/pinch/pinch.opts"], [("left:clamp", ["x", "y"], 0, 0.02),
                                                               ("right:clamp", ["x", "y"], 0, -0.03)]),
 }
@@ -91,13 +95,21 @@ def main():
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
     with open(a.out, "w") as fp:
         json.dump(res, fp, indent=1)
-    print("\n| scene | ranks | dofs | displacement | coupled | target 1.5 d + 2 | outer (solves) | U found (coupled), largest rel. error |")
-    print("|---|---|---|---|---|---|---|---|")
+    lines = ["Newton iterations of force control against displacement control (scripts/force_control_table.py; "
+             f"{res['git']}). Each force is the displacement run's reaction; *coupled* is the default "
+             "(-force_control_type coupled), *outer* the outer iteration.", "",
+             "| scene | ranks | dofs | displacement | coupled | target 1.5 d + 2 | outer (solves) | U found (coupled), largest rel. error |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         c, o = r["coupled"], r.get("outer", {})
-        print(f"| {r['scene']} | {r['ranks']} | {r['dofs']} | {r['displacement_run']['iterations']} | {c['iterations']} "
-              f"| {r['target']:g} | {o.get('iterations')} ({o.get('solves')}) | {', '.join(f'{u:.6g}' for u in c['displacements_found'])}, {c['relative_error']:.1e} |")
-    print(f"Wrote {a.out}")
+        lines.append(f"| {r['scene']} | {r['ranks']} | {r['dofs']} | {r['displacement_run']['iterations']} | {c['iterations']} "
+                     f"| {r['target']:g} | {o.get('iterations')} ({o.get('solves')}) | "
+                     f"{', '.join(f'{u:.6g}' for u in c['displacements_found'])}, {c['relative_error']:.1e} |")
+    md = os.path.splitext(a.out)[0] + ".md"
+    with open(md, "w") as fp:
+        fp.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    print(f"Wrote {a.out} and {md}")
 
 
 if __name__ == "__main__":

@@ -131,6 +131,24 @@ def test_coupled_lbfgs(by_displacement, tmp_path):
     assert abs(fc["displacement"] + PUSH) <= 5e-13 * PUSH
 
 
+def test_committed_table():
+    """results/force_control.json (scripts/force_control_table.py), which the
+    docs quote: on every scene and rank count the coupled type converged,
+    found the imposed displacements (within 1e-8; the displacement run's own
+    stop at -tao_gttol 1e-8 is the reference's error) and took at most 1.5
+    times the displacement run's Newton iterations plus 2."""
+    import json
+    import pathlib
+    res = json.loads((pathlib.Path(__file__).parent.parent / "results" / "force_control.json").read_text())
+    rows = res["rows"]
+    assert {(r["scene"], r["ranks"]) for r in rows} >= {(s, n) for s in ("hertz", "softdisc-fine", "sphere", "pinch")
+                                                       for n in (1, 2)}
+    for r in rows:
+        c = r["coupled"]
+        assert c["status"] == 0 and c["relative_error"] <= 1e-8, (r["scene"], r["ranks"], c)
+        assert c["iterations"] <= 1.5 * r["displacement_run"]["iterations"] + 2, (r["scene"], r["ranks"], c["iterations"])
+
+
 BAD = {
     "count": (["-block_bc_push_control", "force"], "option -block_bc_push_control: 1 entries for 2 components"),
     "unknown": (["-block_bc_push_control", "force,pressure"], "unknown control 'pressure'"),

@@ -243,7 +243,8 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
    20 iterations in one stage, 12 in 2 from 1e-2, 13 in 3 from 2.7e-3 or in
    2 from 1e-3 (8); softdisc at hc = 0.0007 19 in the automatic penalty's 2
    stages from 0.03, 13 in 2 from 1e-2, 10 in 2 from 1e-3, 11 in 3 from
-   1e-3 (7); sphere 12 in 3 stages from 1e-3, 11 in 2 (6). So one jump, of
+   1e-3 (7); sphere 12 in 3 stages from 1e-3, 11 in 2 (6); all at
+   -force_control_step 0.1. So one jump, of
    at most 1000. */
 #define CONTROL_START_STIFFNESS 1.0
 #define CONTROL_STAGE_FACTOR    1000.0

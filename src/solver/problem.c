@@ -42,7 +42,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.stageRtol     = 1e-3;
   p->opt.controlMaxIt  = 40;
   p->opt.controlRtol   = 1e-9;
-  p->opt.controlStep   = 0.1;
+  p->opt.controlStep   = 0.3;
   PetscCall(PetscStrncpy(p->opt.controlType, "coupled", sizeof(p->opt.controlType)));
   PetscCall(PetscStrncpy(p->opt.scene, "scene", sizeof(p->opt.scene)));
   *problem = p;
@@ -276,9 +276,9 @@ PetscErrorCode ProblemSetInitialGuess(Problem p, Vec X0)
     const PetscScalar *a;
     PetscScalar       *b;
     PetscInt           nb, nl;
+    Vec                Y;
     PetscCall(VecGetLocalSize(X0, &nb));
     PetscCall(VecGetLocalSize(p->X, &nl));
-    Vec                Y;
     PetscCall(VecDuplicate(p->X, &Y));
     PetscCall(VecGetArrayRead(X0, &a));
     PetscCall(VecGetArray(Y, &b));
