@@ -191,7 +191,7 @@ PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs
   if (!b->generate) PetscFunctionReturn(0);
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(contactLog.mesh));
-  PetscCall(MeshGenerate(b->comm, b->geo, b->h, b->ngeoparams, b->geoparams, b->bgm, meshDir, maxDofs, limit, estimateOnly, b->msh, sizeof(b->msh)));
+  PetscCall(MeshGenerate(b->comm, b->name, b->geo, b->h, b->ngeoparams, b->geoparams, b->bgm, meshDir, maxDofs, limit, estimateOnly, b->msh, sizeof(b->msh)));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&t1));
   b->tmesh += t1 - t0;
