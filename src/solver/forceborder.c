@@ -1,7 +1,9 @@
-/* The Newton system of coupled force control (forcecontrol.c): the unknowns
-   are the bodies' dofs u (Xb's layout) and the m controlled displacements U
-   (the last entries of rank 0's part of X), and the Hessian of
-   Pi(u, U) - F . U is H bordered by the controls,
+/* The Newton system of coupled force control (forcecontrol.c), the bodies'
+   Hessian bordered by the controlled displacements, and its solve by
+   eliminating them. The unknowns are the bodies' dofs u (Xb's layout) and
+   the m controlled displacements U (the last entries of rank 0's part of
+   X), and the Hessian of the energy Pi(u, U) - F U is H bordered by the
+   controls,
 
        [ H    B ] [ du ]   [ r_u ]
        [ B^T  D ] [ dU ] = [ r_U ],     B = K_fc 1,  D = 1^T K_cc 1,
