@@ -10,6 +10,7 @@ one, and whether the coupled run is within the target, 1.5 times the
 displacement run's iterations plus 2.
 
     python3 scripts/force_control_table.py [--ranks 1,2] [--scenes hertz,...] [--out results/force_control.json]
+    python3 scripts/force_control_table.py --types coupled --extra "-tao_type lmvm" --both --out results/force_control_lmvm.json
 """
 import argparse
 import json
@@ -45,9 +46,10 @@ def control_options(group, comps, k, F):
     return [f"-{body}_bc_{name}_control", ctl, f"-{body}_bc_{name}_values", vals]
 
 
-def measure(name, ranks, tmp, types, extra):
+def measure(name, ranks, tmp, types, extra, both=False):
     args, controls = SCENES[name]
-    args = args + ["-output", "none", "-force_control_rtol", "1e-9"]
+    args = args + ["-output", "none", "-force_control_rtol", "1e-9"] + (extra if both else [])
+    extra = [] if both else extra
     disp = contactrun.run_case(args, tmp, f"{name}-d{ranks}", ranks=ranks, h5=False)
     tao = contactrun.parse_tao_line(disp.stdout)
     if disp.returncode != 0 or not disp.summary:
@@ -79,25 +81,27 @@ def main():
     ap.add_argument("--out", default=os.path.join(contactrun.ROOT, "results", "force_control.json"))
     ap.add_argument("--types", default=",".join(TYPES), help="force control types to run (the outer iteration is slow)")
     ap.add_argument("--extra", default="", help="more options for the force-controlled runs (space-separated)")
+    ap.add_argument("--both", action="store_true", help="--extra for the displacement runs too (another solver on both)")
     a = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for name in a.scenes.split(","):
             for ranks in [int(x) for x in a.ranks.split(",")]:
-                rows.append(measure(name, ranks, tmp, a.types.split(","), a.extra.split()))
+                rows.append(measure(name, ranks, tmp, a.types.split(","), a.extra.split(), a.both))
                 r = rows[-1]
                 print(f"{name} np{ranks}: displacement {r['displacement_run']['iterations']}, coupled "
                       f"{r['coupled']['iterations']} ({r['coupled']['reason']}, U {r['coupled']['displacements_found']})"
                       + (f", outer {r['outer']['iterations']} ({r['outer']['reason']}, {r['outer']['solves']} solves)" if "outer" in r else ""),
                       flush=True)
     res = {"what": "Newton iterations, force control against displacement control (scripts/force_control_table.py)",
+           "options": a.extra + (" (both runs)" if a.both else " (force-controlled runs)") if a.extra else "",
            "git": contactrun.git_info(os.path.dirname(a.out)), "machine": contactrun.machine_info(), "rows": rows}
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
     with open(a.out, "w") as fp:
         json.dump(res, fp, indent=1)
-    lines = ["Newton iterations of force control against displacement control (scripts/force_control_table.py; "
-             f"{res['git']}). Each force is the displacement run's reaction; *coupled* is the default "
-             "(-force_control_type coupled), *outer* the outer iteration.", "",
+    lines = ["Iterations of force control against displacement control (scripts/force_control_table.py; "
+             f"{res['git']}{'; options ' + res['options'] if res['options'] else ''}). Each force is the displacement "
+             "run's reaction; *coupled* is the default (-force_control_type coupled), *outer* the outer iteration.", "",
              "| scene | ranks | dofs | displacement | coupled | target 1.5 d + 2 | outer (solves) | U found (coupled), largest rel. error |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:

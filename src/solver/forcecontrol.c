@@ -230,8 +230,8 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
 
 /* Coupled force control's penalty continuation, where the user chose none:
    from where the stiffest pair's k_p h / E* is CONTROL_START_STIFFNESS, in
-   stages at most CONTROL_STAGE_FACTOR apart (or from the softer start
-   already chosen). From rest nothing holds a force-controlled body but the contact,
+   stages at most CONTROL_STAGE_FACTOR apart, unless the schedule already
+   chosen starts as soft (L-BFGS's, lmvm.c). From rest nothing holds a force-controlled body but the contact,
    whose Hessian holds only the points already in contact: a Newton step
    towards the force closes points beyond them, and at a stiff penalty the
    line search cuts the step to the first of them, so that the contact zone
@@ -262,7 +262,7 @@ PetscErrorCode ProblemSetControlContinuation(Problem p)
   }
   if (!(stiff > CONTROL_START_STIFFNESS)) PetscFunctionReturn(0);
   start = CONTROL_START_STIFFNESS / stiff;
-  if (p->sched.penaltyStages > 1) start = PetscMin(start, p->sched.penaltyStart);
+  if (p->sched.penaltyStages > 1 && p->sched.penaltyStart <= start) PetscFunctionReturn(0); /* a schedule as soft already (L-BFGS's) */
   stages = 1 + (PetscInt)PetscCeilReal(PetscLogReal(1.0 / start) / PetscLogReal(CONTROL_STAGE_FACTOR) - 1e-6);
   PetscCall(ProblemSetPenaltyContinuation(p, stages, start));
   PetscCall(PetscInfo(NULL, "force control: k_p h / E* = %g: %" PetscInt_FMT " penalty stages from %g k_p\n", (double)stiff, stages, (double)start));
