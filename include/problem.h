@@ -40,6 +40,7 @@ typedef struct {
   char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
   PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration (outer), of the solve and its refinements (coupled) */
   PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
+  PetscBool   controlRtolSet; /* given (coupled force control checks it only then) */
   PetscReal   controlStep;   /* coupled force control: the most a Newton step moves a controlled group, times its body's size */
   PetscBool   schur;     /* Newton through the contact-surface Schur complement */
   PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */

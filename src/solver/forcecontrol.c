@@ -24,10 +24,12 @@
      With load stepping (load factor lambda) the group moves by U, and the
      force is lambda F: the group's Dirichlet value is set to U / lambda,
      which the body scales by lambda.
-     It ends where the solve's gradient test ends it; if a reaction is then
-     further from its force than -force_control_rtol, the solve goes on from
-     there with the gradient tolerance -force_control_rtol times the least
-     |F| (one more solve, counted in force_control_solves).
+     It ends where the solve's gradient test ends it (its last stage
+     relative to the gradient at rest of the displacement run of the U
+     found, problem.c); where -force_control_rtol is given and a reaction is
+     then further from its force than it, the solve goes on from there with
+     the gradient tolerance -force_control_rtol times the least |F| (one
+     more solve, counted in force_control_solves).
    - outer: an outer iteration on U around displacement-controlled solves
      (forceouter.c). The anchors of a body held by contact (anchors.c)
      always take it: an anchor's force is zero and its body, before the
@@ -301,7 +303,7 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
       const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
       fc->R            = bc->reaction[bc->comps[fc->c]];
     }
-    if (ControlsConverged(p)) break;
+    if (!p->opt.controlRtolSet || ControlsConverged(p)) break;
     if (p->res.controlSolves >= p->opt.controlMaxIt) {
       *reason = TAO_DIVERGED_MAXITS;
       PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->controls[0].body]->bc[p->controls[0].bc].group, (double)p->controls[0].R, (double)p->controls[0].force));
