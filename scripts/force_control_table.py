@@ -48,7 +48,7 @@ def control_options(group, comps, k, F):
 
 def measure(name, ranks, tmp, types, extra, both=False):
     args, controls = SCENES[name]
-    args = args + ["-output", "none", "-force_control_rtol", "1e-9"] + (extra if both else [])
+    args = args + ["-output", "none"] + (extra if both else [])
     extra = [] if both else extra
     disp = contactrun.run_case(args, tmp, f"{name}-d{ranks}", ranks=ranks, h5=False)
     tao = contactrun.parse_tao_line(disp.stdout)
