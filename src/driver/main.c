@@ -113,7 +113,7 @@ static PetscErrorCode Run(int *status)
       PetscCall(RunMesh(problem, NULL));
       PetscCall(ContactProgressPhase("set-up", "set-up: reading and distributing the meshes, the stiffness"));
       PetscCall(RunSetUp(problem, &rec));
-      PetscCall(VecGetSize(problem->X, &n));
+      PetscCall(VecGetSize(problem->Xb, &n));
       PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
       PetscCall(RunSolve(problem, &rec, &rec.converged));
       PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
