@@ -52,7 +52,7 @@ typedef struct {
 typedef struct {
   PetscInt  body, bc, c;
   PetscReal force, U, R;
-  PetscReal scale; /* what |R - force| is measured against: |force|, or for an anchor (force 0) the body's loads */
+  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads (an anchor: at least the scene's largest force, held.c) */
 } ForceControl;
 
 /* What a solve and its post-processing found. */
@@ -160,4 +160,10 @@ PetscErrorCode ProblemSolveStaged(Problem, PetscInt *its, TaoConvergedReason *re
    each trial. */
 PetscErrorCode ProblemCollectControls(Problem);
 PetscErrorCode ProblemSolveControlled(Problem, PetscInt *its, TaoConvergedReason *reason);
+/* Bodies held by contact (held.c): whether a body has anchors (anchors.c),
+   and the outer iteration on the anchors and force controls that finds each
+   anchor's reaction zero (within what the contact can hold) and each force
+   control's reaction its force. */
+PetscBool      ProblemHasAnchors(Problem);
+PetscErrorCode ProblemSolveHeld(Problem, PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemDestroy(Problem *);

@@ -13,9 +13,11 @@
    anchor's reaction is zero: the anchors carry nothing, the body is held by
    the contact alone, and the answer is the free body's. A is the loaded
    vertex nearest the loaded vertices' centroid (the anchor carries the load
-   until the contact takes it, so it sits where the load is), B the vertex
-   farthest from A (a lever arm against rotation); a component a Dirichlet
-   condition holds at a vertex is not anchored there. */
+   until the contact takes it, so it sits where the load is), or for a body
+   with no load of its own (a roller between two races, loaded through them)
+   the vertex nearest the centre of its bounding box; B the vertex farthest
+   from A (a lever arm against rotation); a component a Dirichlet condition
+   holds at a vertex is not anchored there. */
 #include "body.h"
 
 /* Whether vertex v is on an edge of a loaded group (faces: the mesh's
@@ -119,7 +121,12 @@ PetscErrorCode BodyAddAnchors(Body b)
       m[2] += 1;
     }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 3, MPIU_REAL, MPIU_SUM, b->comm)); /* a vertex shared by ranks counts twice: the centroid moves, not the choice's rule */
-    PetscCheck(m[2] > 0, b->comm, PETSC_ERR_USER_INPUT, "body %s: a rigid motion is free and its loads have no vertex to anchor", b->name);
+    if (!(m[2] > 0)) { /* no load of its own: the vertex nearest its box's centre (the same on every partition) */
+      m[0] = c[0];
+      m[1] = c[1];
+      m[2] = 1;
+      for (PetscInt k = 0; k < n; ++k) on[k] = PETSC_TRUE;
+    }
     for (PetscInt k = 0; k < n; ++k) {
       const PetscReal d = PetscSqr(xy[2 * k] - m[0] / m[2]) + PetscSqr(xy[2 * k + 1] - m[1] / m[2]);
       if (!on[k]) continue;

@@ -1,0 +1,343 @@
+/* Bodies held by contact: the outer iteration on the anchors (anchors.c)
+   and, in the same scene, the force controls (forcecontrol.c's problem).
+
+   A body held by contact gets at most three Dirichlet components at two of
+   its vertices, the anchors, each with force zero: the solve finds their
+   displacements U such that every anchor's reaction R(U) = d Pi*(U) / dU vanishes
+   (Pi*(U) the energy minimised over u with the anchors at U), and the answer
+   is then the free body's. Force-controlled components join the same
+   iteration with R(U) = F. Unlike force control's Broyden iteration, this
+   one allows for motions that the contact does not hold. A roller between
+   two flat races slides along them and rotates about its centre without
+   changing the energy: the reaction of those anchors is the discretisation's
+   (an unsymmetric mesh's tangential force, 9e-7 of the load on the roller
+   scene at h = 0.02) and does not change with U. A Broyden step then divides
+   that force by a stiffness of zero and throws the roller away, and the
+   anchors' probes of 1e-2 of the body's size inflate a disc whose rotation
+   is linearised, so that the probe measures the inflation and not the
+   stiffness (measured: 40 solves, DIVERGED_MAXITS).
+
+   The iteration here, from U = 0 (the first solve from rest, with the
+   scene's stages; each later one from the last converged state, one stage):
+
+   1. The test. Component k has converged when |R_k - F_k| <= rtol s_k, with
+      rtol = -force_control_rtol. For a force control s_k is |F_k| plus its
+      body's loads (force control's own scale). For an anchor, s_k scales
+      with the forces that pass through its body: the largest force of the
+      scene, over every load's resultant, every force control's force and
+      every other Dirichlet group's reaction (a roller carries the load its
+      races pass on; its own load is zero). An anchor whose motion the
+      contact does not hold (step 2) has converged when its reaction is
+      within HELD_NEUTRAL of that scale.
+   2. The Jacobian J = dR/dU, column by column, by probes of HELD_PROBE times
+      the body's size from the current state. A component whose stiffness
+      |J_kk| is below HELD_STIFF times its body's E (times its size in r-z,
+      where forces are over the whole circle) is not held by the contact:
+      its body is not yet in contact in that direction, or the contact
+      cannot hold that motion.
+   3. The step. On the held components, Newton's s = -J^-1 r; an unheld
+      component whose reaction is above the neutral allowance (a body not
+      yet in contact) moves by half the step limit towards its force; an
+      unheld anchor within it stays. The step is limited to c times each
+      body's size, c = 1e-2 at first and then 4 times the last step (the
+      stiffness of a contact that has just closed grows with the load); a
+      solve that fails is retried with half the step, up to HELD_HALVINGS
+      times.
+
+   It stops after -force_control_max_it solves (probes included). */
+#include "problem.h"
+#include <petscblaslapack.h>
+
+#define HELD_PROBE     1e-4 /* a probe: this times the body's size */
+#define HELD_STIFF     1e-4 /* held: |dR/dU| at least this times E (E L in r-z) */
+#define HELD_NEUTRAL   1e-5 /* an unheld anchor's reaction allowed, relative to the scene's largest force */
+#define HELD_FIRST     1e-2 /* the first step's limit, relative to the body's size */
+#define HELD_HALVINGS  4
+
+typedef struct {
+  PetscInt  m;
+  PetscReal U[CONTACT_MAX_CONTROLS], R[CONTACT_MAX_CONTROLS];
+  PetscReal L[CONTACT_MAX_CONTROLS];    /* the size of each component's body */
+  PetscReal kref[CONTACT_MAX_CONTROLS]; /* the stiffness below which a component's motion is not held */
+  PetscBool anchor[CONTACT_MAX_CONTROLS];
+  PetscReal S;     /* the scene's largest force at the last solve */
+  PetscReal floor; /* what the last solve resolves in a reaction: sqrt(n) times its gradient norm */
+  PetscBool haveJ;                                          /* the directions below are known */
+  PetscReal w[CONTACT_MAX_CONTROLS];                        /* the stiffness of each direction */
+  PetscReal V[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* the directions (columns, orthonormal) */
+  PetscBool held[CONTACT_MAX_CONTROLS];                     /* direction i is held by the contact */
+} HeldState;
+
+/* The diagonal of body b's reference bounding box (over every rank). */
+static PetscErrorCode HeldBodySize(Body b, PetscReal *L)
+{
+  PetscReal m[4] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}; /* least x, y, -x, -y */
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
+    for (PetscInt d = 0; d < 2; ++d) {
+      m[d]     = PetscMin(m[d], b->xnode[2 * k + d]);
+      m[2 + d] = PetscMin(m[2 + d], -b->xnode[2 * k + d]);
+    }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 4, MPIU_REAL, MPIU_MIN, b->comm));
+  *L = PetscSqrtReal(PetscSqr(m[0] + m[2]) + PetscSqr(m[1] + m[3]));
+  if (!(*L > 0)) *L = 1.0;
+  PetscFunctionReturn(0);
+}
+
+/* The largest force of the scene: every load's resultant, every force
+   control's force, every Dirichlet group's reaction but the anchors'. */
+static PetscReal HeldSceneForce(Problem p)
+{
+  PetscReal S = 0;
+
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    const Body b = p->bodies[i];
+    for (PetscInt l = 0; l < b->nload; ++l) S = PetscMax(S, PetscSqrtReal(PetscSqr(b->load[l].force[0]) + PetscSqr(b->load[l].force[1])));
+    for (PetscInt j = 0; j < b->nbc; ++j) {
+      if (b->bc[j].anchor) continue;
+      S = PetscMax(S, PetscSqrtReal(PetscSqr(b->bc[j].reaction[0]) + PetscSqr(b->bc[j].reaction[1])));
+      for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
+        if (b->bc[j].control[c]) S = PetscMax(S, PetscAbsReal(b->bc[j].force[c]));
+    }
+  }
+  return S;
+}
+
+/* Sets the displacements U and solves, from X0 (one stage) or from rest
+   (X0 NULL, the scene's stages); then the reactions R and the scene's force. */
+static PetscErrorCode HeldSolve(Problem p, HeldState *st, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
+{
+  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
+  PetscInt       n;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < st->m; ++k) {
+    ForceControl *fc = &p->controls[k];
+    fc->U            = U[k];
+    PetscCall(BodySetBCValue(p->bodies[fc->body], fc->bc, fc->c, U[k]));
+  }
+  PetscCall(VecDestroy(&p->X0));
+  if (X0) {
+    PetscCall(ProblemSetInitialGuess(p, X0));
+    p->sched.loadSteps     = 1;
+    p->sched.penaltyStages = 1;
+  }
+  PetscCall(ProblemSolveStaged(p, &n, reason));
+  p->sched.loadSteps     = loadSteps;
+  p->sched.penaltyStages = stages;
+  p->res.controlSolves++;
+  *its += n;
+  if (*reason <= 0) PetscFunctionReturn(0);
+  PetscCall(ProblemComputeReactions(p, p->X));
+  for (PetscInt k = 0; k < st->m; ++k) {
+    ForceControl *fc = &p->controls[k];
+    const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
+    fc->R            = bc->reaction[bc->comps[fc->c]];
+    R[k]             = fc->R;
+  }
+  st->S = HeldSceneForce(p);
+  {
+    PetscReal gnorm;
+    PetscInt  N;
+    PetscCall(TaoGetSolutionStatus(p->tao, NULL, NULL, &gnorm, NULL, NULL, NULL));
+    PetscCall(VecGetSize(p->X, &N));
+    st->floor = PetscSqrtReal((PetscReal)N) * gnorm;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The tolerance of component k (step 1). */
+static PetscReal HeldTolerance(Problem p, const HeldState *st, PetscInt k)
+{
+  const ForceControl *fc = &p->controls[k];
+
+  return PetscMax(p->opt.controlRtol * (st->anchor[k] ? PetscMax(st->S, fc->scale) : fc->scale), st->floor);
+}
+
+/* The residual r = R - F split into its parts along the held directions
+   (rh) and the others (rn = r - rh). */
+static void HeldSplit(Problem p, const HeldState *st, PetscReal r[], PetscReal rh[], PetscReal rn[])
+{
+  const PetscInt m = st->m;
+
+  for (PetscInt k = 0; k < m; ++k) {
+    r[k]  = st->R[k] - p->controls[k].force;
+    rh[k] = 0;
+  }
+  for (PetscInt i = 0; i < m && st->haveJ; ++i) {
+    PetscReal d = 0;
+    if (!st->held[i]) continue;
+    for (PetscInt k = 0; k < m; ++k) d += st->V[i * m + k] * r[k];
+    for (PetscInt k = 0; k < m; ++k) rh[k] += d * st->V[i * m + k];
+  }
+  for (PetscInt k = 0; k < m; ++k) rn[k] = st->haveJ ? r[k] - rh[k] : 0.0;
+  if (!st->haveJ)
+    for (PetscInt k = 0; k < m; ++k) rh[k] = r[k];
+}
+
+/* What a component's residual may be in directions the contact does not
+   hold: an anchor's the neutral allowance, a force control's its tolerance. */
+static PetscReal HeldAllowance(Problem p, const HeldState *st, PetscInt k)
+{
+  return st->anchor[k] ? PetscMax(HELD_NEUTRAL * st->S, HeldTolerance(p, st, k)) : HeldTolerance(p, st, k);
+}
+
+/* Step 1: every component within its tolerance along the held directions
+   and within its allowance along the others. */
+static PetscBool HeldConverged(Problem p, const HeldState *st)
+{
+  PetscReal r[CONTACT_MAX_CONTROLS], rh[CONTACT_MAX_CONTROLS], rn[CONTACT_MAX_CONTROLS];
+
+  HeldSplit(p, st, r, rh, rn);
+  for (PetscInt k = 0; k < st->m; ++k)
+    if (PetscAbsReal(rh[k]) > HeldTolerance(p, st, k) || PetscAbsReal(rn[k]) > HeldAllowance(p, st, k)) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+/* Step 2: J by probes from Xs; its symmetric part's eigenvectors are the
+   directions, held where the stiffness is at least the components' kref
+   (weighted by the direction). */
+static PetscErrorCode HeldJacobian(Problem p, HeldState *st, Vec Xs, PetscInt *its, TaoConvergedReason *reason)
+{
+  const PetscInt m = st->m;
+  PetscReal      J[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS];
+  PetscScalar    A[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS], work[16 * CONTACT_MAX_CONTROLS];
+  PetscBLASInt   n, lwork = 16 * CONTACT_MAX_CONTROLS, info = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < m; ++k) {
+    PetscReal U1[CONTACT_MAX_CONTROLS], R1[CONTACT_MAX_CONTROLS], rho = HELD_PROBE * st->L[k];
+    if (st->R[k] > p->controls[k].force) rho = -rho; /* towards the force */
+    PetscCall(PetscArraycpy(U1, st->U, m));
+    U1[k] += rho;
+    PetscCall(HeldSolve(p, st, U1, Xs, R1, its, reason));
+    if (*reason <= 0) PetscFunctionReturn(0);
+    for (PetscInt i = 0; i < m; ++i) J[k * m + i] = (R1[i] - st->R[i]) / rho; /* column-major */
+  }
+  for (PetscInt k = 0; k < m; ++k)
+    for (PetscInt i = 0; i < m; ++i) A[k * m + i] = 0.5 * (J[k * m + i] + J[i * m + k]);
+  PetscCall(PetscBLASIntCast(m, &n));
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("V", "U", &n, A, &n, st->w, work, &lwork, &info));
+  PetscCheck(info == 0, p->comm, PETSC_ERR_LIB, "held by contact: LAPACK syev failed with info %d", (int)info);
+  for (PetscInt i = 0; i < m; ++i) {
+    PetscReal kref = 0;
+    for (PetscInt k = 0; k < m; ++k) {
+      st->V[i * m + k] = PetscRealPart(A[i * m + k]);
+      kref += PetscSqr(st->V[i * m + k]) * st->kref[k];
+    }
+    st->held[i] = (PetscBool)(st->w[i] >= kref);
+    PetscCall(PetscInfo(p->tao, "held by contact: direction %" PetscInt_FMT ": stiffness %g (held from %g): %s\n", i, (double)st->w[i], (double)kref, st->held[i] ? "held" : "not held"));
+  }
+  st->haveJ = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+/* Step 3: Newton's step along the held directions; along another, where a
+   component's residual is above its allowance (a body not yet in contact),
+   half the step limit towards the forces; limited to c times each body's size. */
+static void HeldStep(Problem p, const HeldState *st, PetscReal c, PetscReal s[])
+{
+  const PetscInt m = st->m;
+  PetscReal      r[CONTACT_MAX_CONTROLS], rh[CONTACT_MAX_CONTROLS], rn[CONTACT_MAX_CONTROLS], big = 0;
+
+  HeldSplit(p, st, r, rh, rn);
+  for (PetscInt k = 0; k < m; ++k) s[k] = 0;
+  for (PetscInt i = 0; i < m; ++i) {
+    PetscReal d = 0, len = 0;
+    PetscBool far = PETSC_FALSE;
+    for (PetscInt k = 0; k < m; ++k) d += st->V[i * m + k] * r[k];
+    if (st->held[i]) {
+      for (PetscInt k = 0; k < m; ++k) s[k] -= d / st->w[i] * st->V[i * m + k];
+      continue;
+    }
+    for (PetscInt k = 0; k < m; ++k) {
+      far = (PetscBool)(far || PetscAbsReal(d * st->V[i * m + k]) > HeldAllowance(p, st, k));
+      len += PetscAbsReal(st->V[i * m + k]) * st->L[k];
+    }
+    if (!far) continue;
+    for (PetscInt k = 0; k < m; ++k) s[k] += (d > 0 ? -0.5 : 0.5) * c * len * st->V[i * m + k];
+  }
+  for (PetscInt k = 0; k < m; ++k) big = PetscMax(big, PetscAbsReal(s[k]) / st->L[k]);
+  if (big > c)
+    for (PetscInt k = 0; k < m; ++k) s[k] *= c / big;
+}
+
+/* The state st at Xs (its reactions), after probes moved away from it. */
+static PetscErrorCode HeldRestore(Problem p, HeldState *st, Vec Xs)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < st->m; ++k) {
+    ForceControl *fc = &p->controls[k];
+    fc->U            = st->U[k];
+    fc->R            = st->R[k];
+    PetscCall(BodySetBCValue(p->bodies[fc->body], fc->bc, fc->c, st->U[k]));
+  }
+  PetscCall(VecCopy(Xs, p->X));
+  PetscCall(ProblemComputeReactions(p, p->X));
+  st->S = HeldSceneForce(p);
+  PetscFunctionReturn(0);
+}
+
+PetscBool ProblemHasAnchors(Problem p)
+{
+  for (PetscInt k = 0; k < p->ncontrols; ++k)
+    if (p->bodies[p->controls[k].body]->bc[p->controls[k].bc].anchor) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+PetscErrorCode ProblemSolveHeld(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  HeldState st;
+  PetscReal c = HELD_FIRST;
+  Vec       Xs;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&st, sizeof(st)));
+  st.m                 = p->ncontrols;
+  *its                 = 0;
+  p->res.controlSolves = 0;
+  p->res.why[0]        = 0;
+  for (PetscInt k = 0; k < st.m; ++k) {
+    const Body b = p->bodies[p->controls[k].body];
+    PetscCall(HeldBodySize(b, &st.L[k]));
+    st.anchor[k] = b->bc[p->controls[k].bc].anchor;
+    st.kref[k]   = HELD_STIFF * b->E * (b->axisym ? st.L[k] : 1.0);
+  }
+  PetscCall(HeldSolve(p, &st, st.U, NULL, st.R, its, reason)); /* from rest */
+  if (*reason <= 0) PetscFunctionReturn(0);
+  PetscCall(VecDuplicate(p->X, &Xs));
+  PetscCall(VecCopy(p->X, Xs));
+  while (!HeldConverged(p, &st)) {
+    PetscReal s[CONTACT_MAX_CONTROLS], U1[CONTACT_MAX_CONTROLS], R1[CONTACT_MAX_CONTROLS], big = 0;
+    if (p->res.controlSolves + st.m >= p->opt.controlMaxIt) {
+      *reason = TAO_DIVERGED_MAXITS;
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "held by contact: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->controls[0].body]->bc[p->controls[0].bc].group, (double)st.R[0], (double)p->controls[0].force));
+      break;
+    }
+    PetscCall(HeldJacobian(p, &st, Xs, its, reason));
+    if (*reason <= 0) break;
+    PetscCall(HeldRestore(p, &st, Xs));
+    if (HeldConverged(p, &st)) break; /* within the allowance where the contact does not hold */
+    HeldStep(p, &st, c, s);
+    for (PetscInt h = 0; h <= HELD_HALVINGS; ++h) {
+      for (PetscInt k = 0; k < st.m; ++k) U1[k] = st.U[k] + s[k];
+      PetscCall(HeldSolve(p, &st, U1, Xs, R1, its, reason));
+      if (*reason > 0 || h == HELD_HALVINGS) break;
+      PetscCall(PetscInfo(p->tao, "held by contact: a step's solve stopped (%s): half the step\n", TaoConvergedReasons[*reason]));
+      for (PetscInt k = 0; k < st.m; ++k) s[k] *= 0.5;
+    }
+    if (*reason <= 0) break;
+    for (PetscInt k = 0; k < st.m; ++k) {
+      const BodyBC *bc = &p->bodies[p->controls[k].body]->bc[p->controls[k].bc];
+      st.U[k]          = U1[k];
+      st.R[k]          = R1[k];
+      big              = PetscMax(big, PetscAbsReal(s[k]) / st.L[k]);
+      PetscCall(PetscInfo(p->tao, "held by contact: solve %" PetscInt_FMT ", %s %s: U = %g, reaction %g, force %g\n", p->res.controlSolves, bc->group, bc->comps[p->controls[k].c] ? "y" : "x", (double)st.U[k], (double)st.R[k], (double)p->controls[k].force));
+    }
+    c = PetscMax(4 * big, HELD_PROBE);
+    PetscCall(VecCopy(p->X, Xs));
+  }
+  PetscCall(VecDestroy(&Xs));
+  PetscFunctionReturn(0);
+}
