@@ -318,7 +318,8 @@ PetscBool ProblemHasAnchors(Problem p)
    and controls at their trial U, whose energy at u = 0 (a vertex moved alone)
    is far from the problem's: measured on the roller with a pressure, its
    solves stopped at a gradient norm of 7.6e-5 and the contacts 1.9e-8 of
-   the load from balance. */
+   the load from balance. Where nothing is loaded at U = 0 (every load a
+   force control), the largest force stands for that gradient norm. */
 static PetscErrorCode HeldFixTolerance(Problem p, PetscReal tol[3])
 {
   PetscReal f, g0;
@@ -331,7 +332,8 @@ static PetscErrorCode HeldFixTolerance(Problem p, PetscReal tol[3])
   p->res.nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, &g0));
   PetscCall(VecDestroy(&X));
-  if (g0 > 0) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0)); /* else every load is a force control: its own rest, as force control measures it */
+  for (PetscInt k = 0; k < p->ncontrols && !(g0 > 0); ++k) g0 = PetscMax(g0, PetscAbsReal(p->controls[k].force)); /* nothing loaded at U = 0 (every load a force control): the largest force */
+  if (g0 > 0) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
   PetscFunctionReturn(0);
 }
 
