@@ -93,6 +93,7 @@ PetscErrorCode BodyAddAnchors(Body b)
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
   n = ve - vs;
+  PetscCall(BodyCheckSecondOrder(b));
   PetscCall(BodyVertexCoordinates(b, &xy));
   PetscCall(BodyPointsBox(b, n, xy, lo, hi));
   c[0] = 0.5 * (lo[0] + hi[0]);

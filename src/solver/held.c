@@ -3,19 +3,19 @@
 
    A body held by contact gets at most three Dirichlet components at two of
    its vertices, the anchors, each with force zero: the solve finds their
-   displacements U such that every anchor's reaction R(U) = d Pi*(U) / dU vanishes
-   (Pi*(U) the energy minimised over u with the anchors at U), and the answer
-   is then the free body's. Force-controlled components join the same
-   iteration with R(U) = F. Unlike force control's Broyden iteration, this
-   one allows for motions that the contact does not hold. A roller between
-   two flat races slides along them and rotates about its centre without
-   changing the energy: the reaction of those anchors is the discretisation's
-   (an unsymmetric mesh's tangential force: 7e-7 of the load on the roller
-   scene at h = 0.02, 1.9e-5 at h = 0.03) and does not change with U. A Broyden step then divides
-   that force by a stiffness of zero and throws the roller away, and the
-   anchors' probes of 1e-2 of the body's size inflate a disc whose rotation
-   is linearised, so that the probe measures the inflation and not the
-   stiffness (measured: 40 solves, DIVERGED_MAXITS).
+   displacements U such that every anchor's reaction R(U) = d Pi*(U) / dU
+   vanishes (Pi*(U) the energy minimised over u with the anchors at U), and
+   the answer is then the free body's. Force-controlled components join the
+   same iteration with R(U) = F. Unlike force control's Broyden iteration,
+   this one allows for motions that the contact does not hold. A roller
+   between two flat races slides along them without changing the energy:
+   the reaction of those anchors is the discretisation's (an unsymmetric
+   mesh's tangential force: 7e-7 of the load on the roller scene at
+   h = 0.02, 1.9e-5 at h = 0.03) and hardly changes with U. A Broyden step
+   divides that force by a stiffness of about zero and throws the roller
+   away, and probes of 1e-2 of the body's size turn a disc so far that its
+   linearised rotation inflates it, so that they measure the inflation and
+   not the stiffness (measured: 40 solves, DIVERGED_MAXITS).
 
    The iteration here, from U = 0 (the first solve from rest, with the
    scene's stages; each later one from the last converged state, one stage):
@@ -33,35 +33,35 @@
       the body's size from the current state, and the eigenvectors of its
       symmetric part, the directions. A direction whose stiffness is below
       HELD_STIFF times its bodies' E (times their size in r-z, where forces
-      are over the whole circle) is not held by the contact:
-      its body is not yet in contact in that direction, or the contact
-      cannot hold that motion.
-   3. The step. Along the held directions (the eigenvectors of J's
-      symmetric part whose stiffness is held), Newton's s = -J^-1 r; along
-      an unheld one, where a force control's residual is above its tolerance
-      or an anchor's above HELD_PUSH of the scene's largest force (a body not
+      are over the whole circle) is not held by the contact: its body is not
+      yet in contact in that direction, or the contact cannot hold that
+      motion.
+   3. The step. Along the held directions, Newton's s = -J^-1 r; along an
+      unheld one, where a force control's residual is above its tolerance or
+      an anchor's above HELD_PUSH of the scene's largest force (a body not
       yet in contact), half the step limit towards the forces; else no step
       (a roller's sliding, whose reaction falls as the held directions
-      converge). The step is limited to c times each
-      body's size, c = 1e-2 at first and then 4 times the last step (the
-      stiffness of a contact that has just closed grows with the load); a
-      solve that fails is retried with half the step, up to HELD_HALVINGS
-      times. Where the step was Newton's alone and divided the misfit (the
-      largest residual over its tolerance) by 1 / HELD_KEEP, J gets
-      Broyden's update instead of new probes.
+      converge). The step is limited to c times each body's size, c = 1e-2
+      at first and then 4 times the last step (the stiffness of a contact
+      that has just closed grows with the load); a solve that fails is
+      retried with half the step, up to HELD_HALVINGS times. Where the step
+      was Newton's alone and divided the misfit (the largest residual over
+      its tolerance) by 1 / HELD_KEEP, J gets Broyden's update instead of
+      new probes.
 
    The reactions are only as exact as the solves: a point anchor's reaction
    moves by about the solve's gradient norm from one solve to the next, and
-   a soft direction (a roller's rotation, 1e3 times softer than its
+   a soft direction (a roller's rotation, 1e2 times softer than its
    squeeze) shows it most (measured 1e-4 on the roller pressed by 1000 with
-   -tao_gttol 1e-8). So the tolerance is at least the last solve's gradient
-   norm times HELD_FLOOR (on the roller at h = 0.03, residuals stalled at 1.7
-   times it), and where a Newton step without a push fails to halve the misfit while every anchor's residual is within the
-   allowance HELD_NEUTRAL and every force control's within HELD_STALL times
-   its tolerance, the iteration ends there: the stiff directions, which
-   carry the load, have converged by then (the roller's contacts balance to
-   1e-10 of the load). It stops unconverged after -force_control_max_it
-   solves (probes included). */
+   -tao_gttol 1e-8). So the tolerance is at least HELD_FLOOR times the last
+   solve's gradient norm (on the roller at h = 0.03, residuals stalled at
+   1.7 times it), and where a Newton step without a push fails to halve the
+   misfit while every anchor's residual is within the allowance
+   HELD_NEUTRAL and every force control's within HELD_STALL times its
+   tolerance, the iteration ends there: the stiff directions, which carry
+   the load, have converged by then (the roller's contacts balance to 3e-9
+   of the load at h = 0.02, 3e-8 at 0.03). It stops unconverged after
+   -force_control_max_it solves (probes included). */
 #include "problem.h"
 #include <petscblaslapack.h>
 
