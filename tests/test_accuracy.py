@@ -156,3 +156,50 @@ def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
           f"profile {d:.3g} and force {dP:.2g} from the uniform h = 0.005")
     assert d <= tol + 0.003
     assert dP <= tol / 4
+
+
+@pytest.fixture(scope="module")
+def half_default(tmp_path_factory):
+    """-accuracy 0.05 on the half scene with its defaults (bulk 0.5, grading
+    0.3, warm start): measured steps of 2454, 4308 and 7718 dofs."""
+    tmp = tmp_path_factory.mktemp("acc-default")
+    return summary(run_contact(scene_args("hertz-half", tmp) + MORTAR + ["-accuracy", 0.05], tmp))
+
+
+@pytest.mark.parametrize("option,value", [("-accuracy_bulk", 0.8), ("-accuracy_grading", 0.1)])
+def test_marking_options(option, value, half_default, tmp_path):
+    """-accuracy_bulk 0.8 marks the cells making up 80 % of the indicators'
+    total instead of 50 %, and -accuracy_grading 0.1 lets the mesh size grow
+    0.1 per unit distance from the contact instead of 0.3: from the same
+    first solve (its mesh and dofs equal), each refines more, so the second
+    step has more dofs (measured 4416 and 4810 against 4308). Each meets the
+    target, and the two answers, on their own meshes, agree within the
+    larger of their estimates (measured P 7.2e-5 and 2.8e-4 apart, estimates
+    0.0087 and 0.0124)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, option, value], tmp_path))
+    d0, d = [x["dofs"] for x in half_default["adapt_steps"]], [x["dofs"] for x in s["adapt_steps"]]
+    print(f"{option} {value}: dofs {d} against {d0}; estimate {s['error_estimate']:.4g}; "
+          f"P {s['contact_force'] / half_default['contact_force'] - 1:.2e} from the default's")
+    assert d[0] == d0[0] and d[1] > d0[1]
+    assert s["error_estimate"] <= 0.05
+    tol = max(s["error_estimate"], half_default["error_estimate"])
+    for key in ("contact_force", "fem_pmax"):
+        assert abs(s[key] / half_default[key] - 1) <= tol, key
+
+
+def test_cold_start(half_default, tmp_path):
+    """-accuracy_warm_start 0 solves each step from rest instead of from the
+    last step's answer interpolated onto the new mesh: the same answer (P
+    and p_max to 1e-6, what the solver's stop leaves between two solves;
+    measured 3.8e-7 and 6e-9) in more Newton iterations (measured 11 a step
+    against 11, 3 and 2: 33 against 16)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, "-accuracy_warm_start", 0],
+                            tmp_path))
+    warm = sum(x["iterations"] for x in half_default["adapt_steps"])
+    cold = sum(x["iterations"] for x in s["adapt_steps"])
+    print(f"iterations {cold} cold against {warm} warm; P {s['contact_force'] / half_default['contact_force'] - 1:.2e}, "
+          f"p_max {s['fem_pmax'] / half_default['fem_pmax'] - 1:.2e}")
+    assert s["error_estimate"] <= 0.05
+    for key in ("contact_force", "fem_pmax"):
+        assert abs(s[key] / half_default[key] - 1) <= 1e-6, key
+    assert cold > warm

@@ -120,7 +120,8 @@ def test_master_peak_matches_slave(runs):
     pressure is per reference length of its own surface, and at the centre
     the block's edge is shortened 1.5 %, the disc's arc 3.7 %; per current
     length the peaks agree to 0.043 % (0.12 % when the master's pressure was
-    its nodal forces over int N_j dS). Tolerances 2.5 times those."""
+    its nodal forces over int N_j dS). Tolerances 2.5 times those: 6 % and
+    0.11 %."""
     surf = surfaces(runs("first"))
     peak, peak_cur = {}, {}
     for k, v in surf.items():
@@ -131,7 +132,7 @@ def test_master_peak_matches_slave(runs):
     print(f"peaks: block (master) {peak['block_contact']:.6g}, disc (slave) {peak['indenter_contact']:.6g}: {ref:+.2%}; "
           f"per current length {peak_cur['block_contact']:.6g}, {peak_cur['indenter_contact']:.6g}: {cur:+.3%}")
     assert 0 < ref <= 0.06
-    assert abs(cur) <= 0.003
+    assert abs(cur) <= 0.0011
 
 
 def test_ranks_agree(runs):
