@@ -64,7 +64,7 @@ def by_force(tmp_path_factory):
 
 def test_force_both_contacts_carry_it(by_force):
     """Pushed by a force of 1000 from rest: each contact carries it to 1e-8
-    (measured 2.8e-9 and 3.0e-10 on 1 rank, in 20 solves and 116 Newton
+    (measured 3.2e-9 and 1.2e-9 on 1 rank, in 20 solves and 116 Newton
     iterations), and each matches Hertz within 0.2 % (measured p_max
     +0.040 %, second-moment a -0.054 %; the issue asks 1 %). The roller's
     anchors end with a y reaction of 2.6e-6 (bound 1e-5: the solves'
@@ -122,16 +122,15 @@ def test_pressure_both_contacts_carry_it(tmp_path):
 
 
 def test_roller_ranks(by_force, tmp_path):
-    """2 ranks against 1: the contact forces to 1e-9 of the load (measured
-    2.5e-10 and 4.4e-10, each run balancing to its solves' resolution), the
-    race's displacement to 1e-12 (measured 1e-14 on an earlier build of
-    held.c) and the Hertz figures to 1e-6 (measured p_max 2.3e-9 and
-    3.6e-9)."""
+    """2 ranks against 1: the contact forces to 3e-9 of the load (measured
+    1.6e-10 and 1.1e-9, each run balancing to its solves' resolution: 3.2e-9
+    and 1.2e-9 of the load on 1 rank), the race's displacement to 1e-12
+    and the Hertz figures to 1e-6 (measured p_max 3.1e-9 and 4.3e-9)."""
     two = run_contact(ROLLER, tmp_path, ranks=2).summary
     for name, c in contacts(two).items():
         c1 = contacts(by_force)[name]
         print(name, repr(c["P"]), repr(c1["P"]), c["fem_pmax"] / c1["fem_pmax"] - 1)
-        assert abs(c["P"] - c1["P"]) <= 1e-9 * LOAD
+        assert abs(c["P"] - c1["P"]) <= 3e-9 * LOAD
         assert abs(c["fem_pmax"] / c1["fem_pmax"] - 1) <= 1e-6
         assert abs(c["fem_a_moment"] / c1["fem_a_moment"] - 1) <= 1e-6
     (u1,) = [c["displacement"] for c in by_force["force_control"] if not c["anchor"]]
