@@ -1,16 +1,18 @@
 /* A body held by contact: one whose Dirichlet conditions leave a rigid
-   motion free, which a load (a traction or a pressure) presses into a
-   contact. Its energy has no minimum without the contact, and the contact
+   motion free, in a contact pair of a scene that something loads (its own
+   traction or pressure, or another body's load, displacement or force
+   passed on through a contact: a roller between two races). Its energy has no minimum without the contact, and the contact
    holds it only once the bodies touch: from rest the stiffness is singular,
    and the Newton step's factorisations (of K alone, in the Schur step) need
    it regular.
 
    So the free rigid motions are anchored: at most two vertices, A and B,
    get Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no
-   rigid motion free), each force-controlled with force zero
-   (forcecontrol.c). Every solve of the outer iteration is then regular (the
-   anchors hold the body where the contact does not yet), and at its end each
-   anchor's reaction is zero: the anchors carry nothing, the body is held by
+   rigid motion free), each force-controlled with force zero, found by the
+   outer iteration of held.c. Every solve of it is then regular (the anchors
+   hold the body where the contact does not yet), and at its end each
+   anchor's reaction is zero (within what held.c allows where the contact
+   cannot hold the motion, a roller's sliding): the anchors carry nothing, the body is held by
    the contact alone, and the answer is the free body's. A is the loaded
    vertex nearest the loaded vertices' centroid (the anchor carries the load
    until the contact takes it, so it sits where the load is), or for a body
