@@ -1,25 +1,25 @@
-/* A body held by contact: one whose Dirichlet conditions leave a rigid
-   motion free, in a contact pair of a scene that something loads (its own
-   traction or pressure, or another body's load, displacement or force
-   passed on through a contact: a roller between two races). Its energy has no minimum without the contact, and the contact
-   holds it only once the bodies touch: from rest the stiffness is singular,
-   and the Newton step's factorisations (of K alone, in the Schur step) need
-   it regular.
+/* A body held by contact: one whose Dirichlet conditions leave a rigid motion
+   free, in a contact pair of a scene that something loads (its own traction
+   or pressure, or another body's load, displacement or force passed on
+   through a contact: a roller between two races). Its energy has no minimum
+   without the contact, and the contact holds it only once the bodies touch:
+   from rest the stiffness is singular, and the Newton step's factorisations
+   (of K alone, in the Schur step) need it regular.
 
-   So the free rigid motions are anchored: at most two vertices, A and B,
-   get Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no
-   rigid motion free), each force-controlled with force zero, found by the
-   outer iteration of held.c. Every solve of it is then regular (the anchors
-   hold the body where the contact does not yet), and at its end each
-   anchor's reaction is zero (within what held.c allows where the contact
-   cannot hold the motion, a roller's sliding): the anchors carry nothing, the body is held by
-   the contact alone, and the answer is the free body's. A is the loaded
-   vertex nearest the loaded vertices' centroid (the anchor carries the load
-   until the contact takes it, so it sits where the load is), or for a body
-   with no load of its own (a roller between two races, loaded through them)
-   the vertex nearest the centre of its bounding box; B the vertex farthest
-   from A (a lever arm against rotation); a component a Dirichlet condition
-   holds at a vertex is not anchored there. */
+   So the free rigid motions are anchored: at most two vertices, A and B, get
+   Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no rigid
+   motion free), each force-controlled with force zero, found by the outer
+   iteration of held.c. Every solve of it is then regular (the anchors hold
+   the body where the contact does not yet), and at its end each anchor's
+   reaction is zero (within what held.c allows where the contact cannot hold
+   the motion, a roller's sliding): the anchors carry nothing, the body is
+   held by the contact alone, and the answer is the free body's. A is the
+   loaded vertex nearest the loaded vertices' centroid (the anchor carries the
+   load until the contact takes it, so it sits where the load is), or for a
+   body with no load of its own (a roller between two races, loaded through
+   them) the vertex nearest the centre of its bounding box; B the vertex
+   farthest from A (a lever arm against rotation); a component a Dirichlet
+   condition holds at a vertex is not anchored there. */
 #include "body.h"
 
 /* Whether vertex v is on an edge of a loaded group (faces: the mesh's
