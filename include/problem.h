@@ -56,7 +56,7 @@ typedef struct {
   PetscInt  body, bc, c;
   PetscReal force, U, R;
   PetscReal L;     /* the body's size: its reference bounding box's diagonal */
-  PetscReal scale; /* what |R - force| is measured against: |force|, or for an anchor (force 0) the body's loads */
+  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads (an anchor: at least the scene's largest force, held.c) */
 } ForceControl;
 
 /* What a solve and its post-processing found. */
@@ -185,4 +185,10 @@ PetscErrorCode ProblemSetControlContinuation(Problem);
 /* The force control types by name (-force_control_type): coupled, outer. */
 extern PetscFunctionList ForceControlList;
 PetscErrorCode           ForceControlRegisterAll(void);
+/* Bodies held by contact (held.c): whether a body has anchors (anchors.c),
+   and the outer iteration on the anchors and force controls that finds each
+   anchor's reaction zero (within what the contact can hold) and each force
+   control's reaction its force. */
+PetscBool      ProblemHasAnchors(Problem);
+PetscErrorCode ProblemSolveHeld(Problem, PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemDestroy(Problem *);

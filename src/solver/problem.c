@@ -489,15 +489,39 @@ static PetscErrorCode ProblemGetSurfaceDofs(Problem p, IS *is)
   PetscFunctionReturn(0);
 }
 
+/* Whether anything in the scene can push a body into a contact: a load, a
+   nonzero Dirichlet value, a force control or an exact solution imposed. A
+   body held by contact is anchored only then (anchors.c); in a scene that
+   loads nothing its free motions have no contact to hold them, and it is
+   refused (ProblemCheckSupports). */
+static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
+{
+  PetscFunctionBeginUser;
+  *loaded = PETSC_FALSE;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    const Body b = p->bodies[i];
+    for (PetscInt l = 0; l < b->nload; ++l)
+      if (b->load[l].isPressure ? b->load[l].pressure != 0 : b->load[l].traction[0] != 0 || b->load[l].traction[1] != 0) *loaded = PETSC_TRUE;
+    for (PetscInt j = 0; j < b->nbc; ++j) {
+      if (b->bc[j].exact) *loaded = PETSC_TRUE;
+      for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
+        if (b->bc[j].control[c] ? b->bc[j].force[c] != 0 : b->bc[j].values[c] != 0) *loaded = PETSC_TRUE;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
   PetscInt    nloc = 0;
   PetscMPIInt size;
+  PetscBool   loaded;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a loaded body in a contact may be held by it (anchors.c) */
+  PetscCall(ProblemIsLoaded(p, &loaded));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body in a contact of a loaded scene may be held by it (anchors.c) */
     Body b = p->bodies[i];
-    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(b->mayAnchor || (p->terms[t]->couples[i] && b->nload > 0));
+    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(b->mayAnchor || (p->terms[t]->couples[i] && loaded));
     PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
   }
   PetscCall(PetscLogStagePush(contactLog.setup));
@@ -1045,7 +1069,8 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(ProblemCreateSolver(p));
   PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
   PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
-  if (p->ncontrols) PetscCall(ProblemSolveControlled(p, &its, &reason));
+  if (ProblemHasAnchors(p)) PetscCall(ProblemSolveHeld(p, &its, &reason));
+  else if (p->ncontrols) PetscCall(ProblemSolveControlled(p, &its, &reason));
   else PetscCall(ProblemSolveStaged(p, &its, &reason));
   p->res.iterations = its;
   p->res.reason     = reason;
