@@ -50,10 +50,12 @@ run: bin/contact meshes
 	@figs=""; for f in $(FIGURES); do if [ -f "$$f" ]; then figs="$$figs $$f"; fi; done; \
 	echo "Figures:$${figs:- none}; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
-# the suite runs on TEST_JOBS workers (pytest-xdist); --dist loadgroup keeps
-# the tests that share a module- or session-scoped fixture on one worker
-# (tests/conftest.py), so each shared run is made once
-TEST_JOBS ?= 2
+# the suite runs on TEST_JOBS workers (pytest-xdist; TEST_JOBS=0: serially).
+# 3 on 2 cores: a worker waits about half its time (MPI start-up, Gmsh,
+# pvpython), and a third fills the cores (docs/testing.md). --dist loadgroup
+# keeps the tests that share a module- or session-scoped fixture on one worker
+# (tests/conftest.py), so each shared run is made once.
+TEST_JOBS ?= 3
 PYTEST_PARALLEL = -n $(TEST_JOBS) --dist loadgroup
 test: bin/contact meshes
 	$(PYTHON) -m pytest -q --durations=10 -m "not stress" $(PYTEST_PARALLEL) tests
