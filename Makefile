@@ -50,8 +50,15 @@ run: bin/contact meshes
 	@figs=""; for f in $(FIGURES); do if [ -f "$$f" ]; then figs="$$figs $$f"; fi; done; \
 	echo "Figures:$${figs:- none}; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
+# the suite runs on TEST_JOBS workers (pytest-xdist; TEST_JOBS=0: serially).
+# 3 on 2 cores: a worker waits about half its time (MPI start-up, Gmsh,
+# pvpython), and a third fills the cores (docs/testing.md). --dist loadgroup
+# keeps the tests that share a module- or session-scoped fixture on one worker
+# (tests/conftest.py), so each shared run is made once.
+TEST_JOBS ?= 3
+PYTEST_PARALLEL = -n $(TEST_JOBS) --dist loadgroup
 test: bin/contact meshes
-	$(PYTHON) -m pytest -q --durations=10 -m "not stress" tests
+	$(PYTHON) -m pytest -q --durations=10 -m "not stress" $(PYTEST_PARALLEL) tests
 
 # the same sources built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (build/san, bin/contact-sanitize), then a fast subset of the suite run with
@@ -70,7 +77,7 @@ SAN_TESTS = tests/test_patch_contact.py tests/test_master_pressure.py tests/test
              tests/test_axisymmetric.py tests/test_setup_checks.py tests/test_missing_value.py tests/test_write_faults.py
 check-sanitize: bin/contact-sanitize meshes
 	CONTACT_BIN=$(CURDIR)/bin/contact-sanitize ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
-	  $(PYTHON) -m pytest -q -m "not stress" $(wildcard $(SAN_TESTS))
+	  $(PYTHON) -m pytest -q -m "not stress" $(PYTEST_PARALLEL) $(wildcard $(SAN_TESTS))
 
 # the long extremes (k_p up to 1e12 without continuation, h = 0.01), 500
 # mutated meshes through the mesh reader, and the robustness sweep (h x k_p x

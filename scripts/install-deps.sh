@@ -2,7 +2,8 @@
 # Install what `contact` needs on Debian 12, skipping what is already there.
 # Debian: PETSc (with TAO, HDF5, MUMPS), METIS, Gmsh, Open MPI, HDF5, pkg-config,
 # ParaView, xvfb.
-# Python: h5py, numpy, matplotlib, pytest (pip, or Debian packages as a fallback).
+# Python: h5py, numpy, matplotlib, pytest, pytest-xdist (pip, or Debian packages as
+# a fallback).
 set -eu
 
 # libopenblas0-serial replaces the reference BLAS under PETSc's factorisations
@@ -13,7 +14,10 @@ set -eu
 # libmumps-dev, liblapack-dev, libblas-dev: the substructured Newton step calls MUMPS
 # (condensation and expansion, which PETSc does not expose) and LAPACK directly.
 DEB_PKGS="petsc-dev libmetis-dev libmumps-dev liblapack-dev libblas-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth"
-PY_MODS="h5py numpy matplotlib pytest"
+# Each Python module as module:pip-name where the names differ (pytest-xdist,
+# which runs `make test` on every core, is imported as xdist; Debian ships it as
+# python3-pytest-xdist).
+PY_MODS="h5py numpy matplotlib pytest xdist:pytest-xdist"
 
 missing=""
 for p in $DEB_PKGS; do
@@ -32,8 +36,8 @@ fi
 
 PY="${PYTHON:-python3}"
 pymissing=""
-for m in $PY_MODS; do
-  if ! "$PY" -c "import $m" >/dev/null 2>&1; then pymissing="$pymissing $m"; fi
+for spec in $PY_MODS; do
+  if ! "$PY" -c "import ${spec%%:*}" >/dev/null 2>&1; then pymissing="$pymissing ${spec#*:}"; fi
 done
 if [ -n "$pymissing" ]; then
   echo "install-deps: installing Python modules:$pymissing"
@@ -47,6 +51,6 @@ if [ -n "$pymissing" ]; then
     fi
   fi
 fi
-for m in $PY_MODS; do
-  "$PY" -c "import $m" || { echo "install-deps: Python module $m still missing" >&2; exit 1; }
+for spec in $PY_MODS; do
+  "$PY" -c "import ${spec%%:*}" || { echo "install-deps: Python module ${spec%%:*} (${spec#*:}) still missing" >&2; exit 1; }
 done

@@ -1,5 +1,6 @@
 """Helpers shared by the tests: run bin/contact on a scene and read its JSON
 summary and HDF5 output."""
+import inspect
 import json
 import os
 import subprocess
@@ -80,3 +81,117 @@ def half_mortar_runs(tmp_path_factory):
     return {h: run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-contact_formulation", "mortar",
                             "-mesh_size", str(h), "-tao_gttol", "1e-12"], tmp, name=f"h{h}", timeout=900, check=False)
             for h in HALF_MORTAR_H}
+
+
+
+# `make test` runs the suite on both cores (pytest-xdist, -n 2 --dist
+# loadgroup). A test that uses a module- or session-scoped fixture of this
+# directory (the runs a module shares, half_mortar_runs shared by two modules,
+# the X server of test_paraview) runs on the worker that runs every other test
+# using that fixture, so that each is computed once, as in a serial run; the
+# other tests are handed out one by one. Each worker has its own basetemp, so
+# tmp_path and tmp_path_factory never meet across workers.
+#
+# The groups are worked out where the tests are collected, in the workers,
+# and reach the scheduler in the controller through a file named in each
+# worker's workerinput: xdist's own loadgroup passes its xdist_group marks as
+# a suffix of the test's node id, which pytest 9.2's node ids no longer take
+# (pytest-xdist issue 1386: every test is then scheduled alone). The
+# scheduler below is loadgroup's (xdist's LoadScopeScheduling with a scope
+# per group), fed from that file; explicit xdist_group marks are kept.
+GROUPS_INPUT = "contact_groups_file"
+
+
+def _shared_fixtures(item):
+    """Group keys of the module- and session-scoped fixtures of tests/ that
+    item uses: its module's name for a module scope, the fixture's name for a
+    session scope."""
+    here = Path(__file__).resolve().parent
+    keys = set()
+    for name in item.fixturenames:
+        for fdef in item._fixtureinfo.name2fixturedefs.get(name, ()):
+            scope = getattr(fdef.scope, "value", fdef.scope)
+            try:
+                src = Path(inspect.getsourcefile(fdef.func)).resolve()
+            except TypeError:
+                continue
+            if src.parent == here and scope in ("module", "session"):
+                keys.add(item.module.__name__ if scope == "module" else name)
+    return keys
+
+
+def xdist_groups(items):
+    """{node id: group} of the tests that share a fixture (above) or carry
+    an xdist_group mark; keys met in one test are merged (union-find), so a
+    test using two shared fixtures joins every test that uses either."""
+    parent = {}
+
+    def find(k):
+        while parent.setdefault(k, k) != k:
+            k = parent[k]
+        return k
+
+    keyed = []
+    for item in items:
+        keys = sorted(_shared_fixtures(item) | {"mark:" + str(m.args[0] if m.args else m.kwargs.get("name", "default"))
+                                                 for m in item.iter_markers("xdist_group")})
+        for k in keys[1:]:
+            parent[find(k)] = find(keys[0])
+        keyed.append((item.nodeid, keys))
+    return {nodeid: find(keys[0]) for nodeid, keys in keyed if keys}
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(config, items):
+    """In a worker of a loadgroup run: writes the groups for the scheduler
+    (every worker collects the same tests and writes the same file)."""
+    path = getattr(config, "workerinput", {}).get(GROUPS_INPUT)
+    if path:
+        tmp = Path(f"{path}.{os.getpid()}")
+        tmp.write_text(json.dumps(xdist_groups(items)))
+        tmp.replace(path)
+
+
+def pytest_configure(config):
+    if not hasattr(config, "workerinput") and config.pluginmanager.hasplugin("xdist") \
+            and config.getoption("dist", "no") == "loadgroup" and config.getoption("numprocesses"):
+        import tempfile
+        config.contact_groups_dir = Path(tempfile.mkdtemp(prefix="contact-xdist-"))
+
+
+def pytest_unconfigure(config):
+    d = getattr(config, "contact_groups_dir", None)
+    if d:
+        import shutil
+        shutil.rmtree(d, ignore_errors=True)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_configure_node(node):
+    d = getattr(node.config, "contact_groups_dir", None)
+    if d:
+        node.workerinput[GROUPS_INPUT] = str(d / "groups.json")
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    d = getattr(config, "contact_groups_dir", None)
+    if not d:
+        return None
+    from xdist.scheduler import LoadScopeScheduling
+
+    class SharedFixtureScheduling(LoadScopeScheduling):
+        """One work unit per group of the workers' file, one per test
+        elsewhere. Called once every worker has collected (schedule()), so
+        the file is complete; without it every test is its own unit."""
+        groups = None
+
+        def _split_scope(self, nodeid):
+            if self.groups is None:
+                try:
+                    self.groups = json.loads((d / "groups.json").read_text())
+                except (OSError, ValueError):
+                    self.groups = {}
+            return self.groups.get(nodeid, nodeid)
+
+    return SharedFixtureScheduling(config, log)
