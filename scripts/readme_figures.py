@@ -232,6 +232,98 @@ def measure_lmvm(repeat=3):
     save("lmvm", rows)
 
 
+# The scenes the README's solver claims range over (issue 34, "claims measured where
+# users run"): (label, arguments); a scene whose folder is missing is left out.
+CLAIM_SCENES = [
+    ("reference, h = 0.03", ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.03"]),
+    ("reference", ["-options_file", "meshes/hertz/hertz.opts"]),
+    ("half model", ["-options_file", "meshes/hertz-half/hertz-half.opts"]),
+    ("sphere (r-z)", ["-options_file", "meshes/sphere/sphere.opts"]),
+    ("reference by force", ["-options_file", "meshes/hertz/hertz.opts",
+                            "-block_bc_push_control", "force,displacement", "-block_bc_push_values", "-55,0"]),
+    ("punch", ["-options_file", "meshes/punch/punch.opts"]),
+    ("roller", ["-options_file", "meshes/roller/roller.opts"]),
+]
+# (solver, ranks) of each scene, interleaved
+CLAIM_RUNS = [("nls", 1), ("lmvm", 1), ("nls", 2)]
+
+
+def claim_scenes():
+    return [(label, args) for label, args in CLAIM_SCENES if os.path.exists(os.path.join(ROOT, args[1]))]
+
+
+def measure_claims(repeat=3):
+    """Newton on 1 and 2 ranks and L-BFGS on 1 rank on each of CLAIM_SCENES,
+    interleaved, median of repeat solve times (meshes made first). A run that
+    fails is recorded as such (its exit status and last line), not dropped."""
+    from contactrun import median, mesh_only, run_case
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, args in claim_scenes():
+            mesh_only(args)
+            runs = {k: [] for k in CLAIM_RUNS}
+            for _ in range(repeat):
+                for tao, ranks in CLAIM_RUNS:
+                    runs[tao, ranks].append(run_case(args + ["-tao_type", tao], tmp, "s", ranks=ranks, h5=False))
+            for (tao, ranks), rs in runs.items():
+                ok = [r for r in rs if r.returncode == 0]
+                row = dict(scene=label, tao=tao, ranks=ranks, converged=len(ok) == len(rs),
+                           command=("mpiexec -n 2 " if ranks > 1 else "") + "bin/contact " + " ".join(args + ["-tao_type", tao]))
+                if ok:
+                    s = ok[-1].summary
+                    row.update(dofs=s["dofs"], iterations=s["iterations"], P=s["contact_force"],
+                               solve=median([r.summary["time"]["solve"] for r in ok]),
+                               runs=[r.summary["time"]["solve"] for r in ok])
+                if len(ok) < len(rs):
+                    bad = next(r for r in rs if r.returncode != 0)
+                    lines = [ln for ln in (bad.stderr or "").splitlines() if ln.startswith("contact:")]
+                    row.update(status=bad.returncode, why=lines[-1] if lines else "")
+                rows.append(row)
+    save("claims", rows)
+
+
+def claim_table():
+    """{scene: {(tao, ranks): row}} of bench/claims/results.json, in its order."""
+    out = {}
+    for r in load("claims"):
+        out.setdefault(r["scene"], {})[r["tao"], r["ranks"]] = r
+    return out
+
+
+def render_claims():
+    out = ["| scene | dofs | Newton: iterations, solve [s] | L-BFGS: iterations, solve [s] | L-BFGS / Newton "
+           "| 2 ranks: solve [s] | speed-up |", "|---|---|---|---|---|---|---|"]
+    for scene, t in claim_table().items():
+        n, lb, two = t["nls", 1], t["lmvm", 1], t["nls", 2]
+
+        def cell(r):
+            return f"{r['iterations']}, {r['solve']:.2f}" if r["converged"] else f"fails: {r.get('why') or r.get('status')}"
+        ratio = f"{lb['solve'] / n['solve']:.2f}" if lb["converged"] and n["converged"] else ""
+        speed = f"{n['solve'] / two['solve']:.2f}" if two["converged"] and n["converged"] else ""
+        out.append(f"| {scene} | {n.get('dofs', 0):,} | {cell(n)} | {cell(lb)} | {ratio} | {cell(two)} | {speed} |")
+    return "\n".join(out) + "\n"
+
+
+def render_claims_lmvm():
+    """L-BFGS's solve time over Newton's, least to greatest, over the claims' scenes, and where it fails."""
+    t = claim_table()
+    ratios = [(v["lmvm", 1]["solve"] / v["nls", 1]["solve"], k) for k, v in t.items()
+              if v["lmvm", 1]["converged"] and v["nls", 1]["converged"]]
+    failed = [k for k, v in t.items() if not v["lmvm", 1]["converged"]]
+    lo, hi = min(ratios), max(ratios)
+    text = f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times Newton's solve time over {len(t)} scenes"
+    return text + (f"; it does not converge on {', '.join(failed)}" if failed else "")
+
+
+def render_claims_parallel():
+    """2 ranks' speed-up of Newton's solve, least to greatest, over the claims' scenes."""
+    t = claim_table()
+    sp = [(v["nls", 1]["solve"] / v["nls", 2]["solve"], k) for k, v in t.items()
+          if v["nls", 2]["converged"] and v["nls", 1]["converged"]]
+    lo, hi = min(sp), max(sp)
+    return f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times faster over the same scenes"
+
+
 def lmvm_pairs():
     """[(row, Newton's row of the same case)] of bench/lmvm/results.json, in its order."""
     rows = load("lmvm")
@@ -696,9 +788,10 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formula
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
-          "penalty": render_penalty}
+          "penalty": render_penalty, "claims": render_claims}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
-PHRASES = {"solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
+PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
+           "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
            "parallel-speedup": render_parallel_speedup, "speed-targets": render_speed_targets,
            "sweep-run": render_sweep_run, "sweep-targets": targets_met,
            "sweep-reference-solve": render_sweep_reference_solve, "sweep-linear-ratio": render_sweep_linear_ratio,
@@ -801,7 +894,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "claims"], action="append",
+                    default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
@@ -813,6 +907,8 @@ def main():
         measure_picture()
     if "axisymmetric" in args.measure:
         measure_axisymmetric()
+    if "claims" in args.measure:
+        measure_claims()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:
