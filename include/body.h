@@ -160,6 +160,8 @@ PetscErrorCode BodyCheckConditions(Body);
 /* Anchors the rigid motions its Dirichlet conditions leave free (anchors.c;
    in BodySetUp, before the section is made). */
 PetscErrorCode BodyAddAnchors(Body);
+/* Collective: refuses a first-order mesh (affine coordinates) in one line. */
+PetscErrorCode BodyCheckSecondOrder(Body);
 /* A body's errors against its exact solution, if any (zero without one), with
    the exact solution's norms: L2 of u, energy norm, L2 of the stress. */
 typedef struct {

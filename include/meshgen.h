@@ -13,6 +13,6 @@
    A .geo that Gmsh cannot read is one line naming it with Gmsh's first
    error and line, before any "parameter never used" (a syntax error can
    hide a use). */
-PetscErrorCode MeshGenerate(MPI_Comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len);
+PetscErrorCode MeshGenerate(MPI_Comm, const char body[], const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len);
 /* Reads the $PhysicalNames of a Gmsh file on rank 0 and broadcasts them. */
 PetscErrorCode MeshReadPhysicalNames(MPI_Comm, const char msh[], PetscInt *n, char ***names, PetscInt **dims, PetscInt **tags);

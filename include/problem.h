@@ -37,8 +37,11 @@ typedef struct {
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
   PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
-  PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration */
+  char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
+  PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration (outer), of the solve and its refinements (coupled) */
   PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
+  PetscBool   controlRtolSet; /* given (coupled force control checks it only then) */
+  PetscReal   controlStep;   /* coupled force control: the most a Newton step moves a controlled group, times its body's size */
   PetscBool   schur;     /* Newton through the contact-surface Schur complement */
   PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
   SchurType   schurType;
@@ -52,7 +55,8 @@ typedef struct {
 typedef struct {
   PetscInt  body, bc, c;
   PetscReal force, U, R;
-  PetscReal scale; /* what |R - force| is measured against: |force|, or for an anchor (force 0) the body's loads */
+  PetscReal L;     /* the body's size: its reference bounding box's diagonal */
+  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads (an anchor: at least the scene's largest force, held.c) */
 } ForceControl;
 
 /* What a solve and its post-processing found. */
@@ -95,7 +99,8 @@ struct _n_Problem {
   PetscInt       nterms;
   EnergyTerm     terms[CONTACT_MAX_TERMS];
   PetscInt       offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
-  Vec            X, G;
+  Vec            X, G; /* TAO's unknowns and gradient: the bodies' dofs, then (coupled force control, rank 0) the controlled displacements */
+  Vec            Xb;   /* the bodies' dofs alone, the layout of K and H (X itself without coupled controls) */
   Vec            X0;   /* the first iterate (NULL: rest; ignored with load or penalty stages) */
   Mat            H, K; /* Hessian, elastic stiffness of the bodies */
   IS             surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
@@ -105,6 +110,12 @@ struct _n_Problem {
   PetscReal      hessianG0;    /* ||g|| at the current TAO solve's first iterate */
   PetscInt       ncontrols;
   ForceControl   controls[CONTACT_MAX_CONTROLS];
+  PetscBool      coupled;   /* the controls' displacements are the last entries of X (forcecontrol.c) */
+  Vec            ctrlB[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout) */
+  PetscReal      ctrlD[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls */
+  Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
+  Mat            H0tao;     /* L-BFGS's H0 as TAO sees it: H or K, or either bordered */
+  KSP            ctrlKsp, ctrlKsp0; /* coupled: the solves of H (Newton) and of H0 (L-BFGS) inside the bordered ones */
   Vec            lmvmX, lmvmG, lmvmW; /* L-BFGS (lmvm.c): the last iterate and its gradient, work */
   PetscBool      lmvmHave;            /* lmvmX, lmvmG hold an iterate of the current TAO solve */
   PetscReal      lmvmF0, lmvmG0;      /* the energy and gradient norm at the first iterate of the last TAO solve */
@@ -156,8 +167,28 @@ PetscErrorCode ProblemComputeReactions(Problem, Vec X);
    rest: its TAO iterations and reason (problem.c). */
 PetscErrorCode ProblemSolveStaged(Problem, PetscInt *its, TaoConvergedReason *reason);
 /* Force control (forcecontrol.c): the controlled components found, each
-   group's reaction equal to its force; a solve of ProblemSolveStaged for
-   each trial. */
+   group's reaction equal to its force, by the type -force_control_type
+   names. */
 PetscErrorCode ProblemCollectControls(Problem);
 PetscErrorCode ProblemSolveControlled(Problem, PetscInt *its, TaoConvergedReason *reason);
+/* -force_control_type outer (forceouter.c): a solve of ProblemSolveStaged for each trial. */
+PetscErrorCode ProblemSolveControlledOuter(Problem, PetscInt *its, TaoConvergedReason *reason);
+/* Coupled force control (forcecontrol.c): the border of the Hessian (after
+   the stiffness's assembly); the controls' displacements from X into the
+   bodies' conditions (in ProblemScatterToBodies); their work -F U and
+   gradient R - F added to an evaluation of X (after ProblemEvaluate). */
+PetscErrorCode ProblemSetUpControlBorder(Problem);
+PetscErrorCode ProblemSetControlDisplacements(Problem, Vec X);
+PetscErrorCode ProblemAddControlWork(Problem, PetscReal *f, Vec G);
+/* Coupled force control: penalty continuation where the user chose none (after the terms' set-up). */
+PetscErrorCode ProblemSetControlContinuation(Problem);
+/* The force control types by name (-force_control_type): coupled, outer. */
+extern PetscFunctionList ForceControlList;
+PetscErrorCode           ForceControlRegisterAll(void);
+/* Bodies held by contact (held.c): whether a body has anchors (anchors.c),
+   and the outer iteration on the anchors and force controls that finds each
+   anchor's reaction zero (within what the contact can hold) and each force
+   control's reaction its force. */
+PetscBool      ProblemHasAnchors(Problem);
+PetscErrorCode ProblemSolveHeld(Problem, PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemDestroy(Problem *);

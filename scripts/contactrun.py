@@ -16,8 +16,9 @@ the tree.
     median(values)                    the median of the finite numbers
     machine_info(), nproc(), load_average(), git(...), git_info(out)
 
-Used by bench.py, bench_parallel.py, formulation_study.py, accuracy_study.py,
-stress_sweep.py, oscillation_floor.py and readme_figures.py.
+Used by bench.py and its modules (bench_run.py, bench_analysis.py, ...),
+bench_parallel.py, formulation_study.py, accuracy_study.py, stress_sweep.py,
+oscillation_floor.py and readme_figures.py.
 """
 import hashlib
 import json

@@ -60,13 +60,14 @@ likes; --update writes a stale one on one line. The phrases of README.md:
   target (bench/parallel/results.csv);
 - speed-targets: "all met", or the targets not met, of scripts/bench.py's
   targets table of the full sweep (bench/full/results.csv, through bench.py's
-  own functions), then the reference scene's solve time at h = 0.06, the worst
+  own modules' functions), then the reference scene's solve time at h = 0.06, the worst
   time in linear solves of the same mesh and the solve time's exponent in dofs,
   each with its target.
 
 The phrases of bench/README.md's speed section, all from the full sweep
-(bench/full/results.csv and run.json, through bench.py's own functions, so
-that they say what its RESULTS.md says):
+(bench/full/results.csv and run.json, through bench.py's own modules'
+functions: bench_results, bench_analysis, bench_targets; so that they say
+what its RESULTS.md says):
 
 - sweep-run: its configurations, program (git), repeats and wall time;
 - sweep-targets: "all met", or the targets not met (as in speed-targets);
@@ -231,6 +232,98 @@ def measure_lmvm(repeat=3):
     save("lmvm", rows)
 
 
+# The scenes the README's solver claims range over (issue 34, "claims measured where
+# users run"): (label, arguments); a scene whose folder is missing is left out.
+CLAIM_SCENES = [
+    ("reference, h = 0.03", ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.03"]),
+    ("reference", ["-options_file", "meshes/hertz/hertz.opts"]),
+    ("half model", ["-options_file", "meshes/hertz-half/hertz-half.opts"]),
+    ("sphere (r-z)", ["-options_file", "meshes/sphere/sphere.opts"]),
+    ("reference by force", ["-options_file", "meshes/hertz/hertz.opts",
+                            "-block_bc_push_control", "force,displacement", "-block_bc_push_values", "-55,0"]),
+    ("punch", ["-options_file", "meshes/punch/punch.opts"]),
+    ("roller", ["-options_file", "meshes/roller/roller.opts"]),
+]
+# (solver, ranks) of each scene, interleaved
+CLAIM_RUNS = [("nls", 1), ("lmvm", 1), ("nls", 2)]
+
+
+def claim_scenes():
+    return [(label, args) for label, args in CLAIM_SCENES if os.path.exists(os.path.join(ROOT, args[1]))]
+
+
+def measure_claims(repeat=3):
+    """Newton on 1 and 2 ranks and L-BFGS on 1 rank on each of CLAIM_SCENES,
+    interleaved, median of repeat solve times (meshes made first). A run that
+    fails is recorded as such (its exit status and last line), not dropped."""
+    from contactrun import median, mesh_only, run_case
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, args in claim_scenes():
+            mesh_only(args)
+            runs = {k: [] for k in CLAIM_RUNS}
+            for _ in range(repeat):
+                for tao, ranks in CLAIM_RUNS:
+                    runs[tao, ranks].append(run_case(args + ["-tao_type", tao], tmp, "s", ranks=ranks, h5=False))
+            for (tao, ranks), rs in runs.items():
+                ok = [r for r in rs if r.returncode == 0]
+                row = dict(scene=label, tao=tao, ranks=ranks, converged=len(ok) == len(rs),
+                           command=("mpiexec -n 2 " if ranks > 1 else "") + "bin/contact " + " ".join(args + ["-tao_type", tao]))
+                if ok:
+                    s = ok[-1].summary
+                    row.update(dofs=s["dofs"], iterations=s["iterations"], P=s["contact_force"],
+                               solve=median([r.summary["time"]["solve"] for r in ok]),
+                               runs=[r.summary["time"]["solve"] for r in ok])
+                if len(ok) < len(rs):
+                    bad = next(r for r in rs if r.returncode != 0)
+                    lines = [ln for ln in (bad.stderr or "").splitlines() if ln.startswith("contact:")]
+                    row.update(status=bad.returncode, why=lines[-1] if lines else "")
+                rows.append(row)
+    save("claims", rows)
+
+
+def claim_table():
+    """{scene: {(tao, ranks): row}} of bench/claims/results.json, in its order."""
+    out = {}
+    for r in load("claims"):
+        out.setdefault(r["scene"], {})[r["tao"], r["ranks"]] = r
+    return out
+
+
+def render_claims():
+    out = ["| scene | dofs | Newton: iterations, solve [s] | L-BFGS: iterations, solve [s] | L-BFGS / Newton "
+           "| 2 ranks: solve [s] | speed-up |", "|---|---|---|---|---|---|---|"]
+    for scene, t in claim_table().items():
+        n, lb, two = t["nls", 1], t["lmvm", 1], t["nls", 2]
+
+        def cell(r):
+            return f"{r['iterations']}, {r['solve']:.2f}" if r["converged"] else f"fails: {r.get('why') or r.get('status')}"
+        ratio = f"{lb['solve'] / n['solve']:.2f}" if lb["converged"] and n["converged"] else ""
+        speed = f"{n['solve'] / two['solve']:.2f}" if two["converged"] and n["converged"] else ""
+        out.append(f"| {scene} | {n.get('dofs', 0):,} | {cell(n)} | {cell(lb)} | {ratio} | {cell(two)} | {speed} |")
+    return "\n".join(out) + "\n"
+
+
+def render_claims_lmvm():
+    """L-BFGS's solve time over Newton's, least to greatest, over the claims' scenes, and where it fails."""
+    t = claim_table()
+    ratios = [(v["lmvm", 1]["solve"] / v["nls", 1]["solve"], k) for k, v in t.items()
+              if v["lmvm", 1]["converged"] and v["nls", 1]["converged"]]
+    failed = [k for k, v in t.items() if not v["lmvm", 1]["converged"]]
+    lo, hi = min(ratios), max(ratios)
+    text = f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times Newton's solve time over {len(t)} scenes"
+    return text + (f"; it does not converge on {', '.join(failed)}" if failed else "")
+
+
+def render_claims_parallel():
+    """2 ranks' speed-up of Newton's solve, least to greatest, over the claims' scenes."""
+    t = claim_table()
+    sp = [(v["nls", 1]["solve"] / v["nls", 2]["solve"], k) for k, v in t.items()
+          if v["nls", 2]["converged"] and v["nls", 1]["converged"]]
+    lo, hi = min(sp), max(sp)
+    return f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times faster over the same scenes"
+
+
 def lmvm_pairs():
     """[(row, Newton's row of the same case)] of bench/lmvm/results.json, in its order."""
     rows = load("lmvm")
@@ -263,28 +356,30 @@ def render_solver():
 @functools.lru_cache(maxsize=None)
 def full_sweep():
     """bench/full (scripts/bench.py's whole sweep): its rows, the figures its RESULTS.md is made of
-    (bench.report_figures) and its run.json."""
-    import bench
+    (bench_analysis.report_figures) and its run.json."""
+    import bench_analysis
+    import bench_results
     out = os.path.join(ROOT, "bench", "full")
-    rows = bench.read_csv(os.path.join(out, "results.csv"))
-    return rows, bench.report_figures(rows, types.SimpleNamespace(out=out), None, None, None, None), bench.read_run(out)
+    rows = bench_results.read_csv(os.path.join(out, "results.csv"))
+    return (rows, bench_analysis.report_figures(rows, types.SimpleNamespace(out=out), None, None, None, None),
+            bench_results.read_run(out))
 
 
 def render_speed():
     """The reference scene's scaling rows of the full sweep: mortar (the
     default) and gpts, newton, k_p = 2e6, gttol 1e-8, one rank, from h = 0.06
     down; the linear solve, ratio, fixed costs and memory are mortar's."""
-    import bench
+    import bench_analysis
     out = ["| h | dofs | iterations mortar / gpts | solve mortar / gpts [s] | one linear solve [s] | ratio "
            "| mesh + set-up + output | peak memory |", "|---|---|---|---|---|---|---|---|"]
-    for h, g, m in bench.formulation_ratio_rows(full_sweep()[0]):
+    for h, g, m in bench_analysis.formulation_ratio_rows(full_sweep()[0]):
         if h > 0.06:
             continue
         mb = m["peak_mb"]
         mem = f"{mb / 1024:.1f} GB" if mb >= 1024 else f"{mb:.0f} MB"
         out.append(f"| {h:g} | {m['dofs']:,} | {m['iterations']} / {g['iterations']} | {m['solve_median']:.3g} / "
                    f"{g['solve_median']:.3g} | {m['linear_solve_time']:.3g} | {m['ratio_to_linear']:.1f} "
-                   f"| {100 * bench.fixed_cost_share(m):.0f} % | {mem} |")
+                   f"| {100 * bench_analysis.fixed_cost_share(m):.0f} % | {mem} |")
     return "\n".join(out) + "\n"
 
 
@@ -460,41 +555,43 @@ def target_name(target):
 def targets_met():
     """'all met', or 'met but for' the full sweep's targets not met with their status, as scripts/bench.py's
     table of them says."""
-    import bench
+    import bench_targets
     rows, ctx, _ = full_sweep()
-    missed = [f"{target_name(t)} ({st})" for t, _, st in bench.target_rows(rows, ctx) if not bench.met(st)]
+    missed = [f"{target_name(t)} ({st})" for t, _, st in bench_targets.target_rows(rows, ctx)
+              if not bench_targets.met(st)]
     return "all met" if not missed else "met but for " + "; ".join(missed)
 
 
 def reference_default():
     """The full sweep's converged run of the default strategy on the reference scene at h = 0.06 (gpts), or
     None."""
-    import bench
-    d06 = [r for r in bench.reference_solve_runs(full_sweep()[0])[0] if r["converged"]]
+    import bench_analysis
+    d06 = [r for r in bench_analysis.reference_solve_runs(full_sweep()[0])[0] if r["converged"]]
     return d06[0] if d06 else None
 
 
 def ratio_runs():
     """The full sweep's reference runs with a time in linear solves, and those the target counts (from 1e4 dofs)."""
-    import bench
-    return bench.linear_ratio_runs(full_sweep()[1].ref_sel)
+    import bench_analysis
+    return bench_analysis.linear_ratio_runs(full_sweep()[1].ref_sel)
 
 
 def render_speed_targets():
     """Whether the full sweep meets its targets, as scripts/bench.py's table of them says (those not met
     named), and the three of speed: the reference scene's solve time at h = 0.06, the worst time in
     linear solves of the same mesh and the exponent of the solve time in dofs."""
-    import bench
+    import bench_analysis
+    import bench_targets
     ctx, d06, ratios = full_sweep()[1], reference_default(), ratio_runs()[1]
     return targets_met() + ": " + ", ".join([
         (f"the reference scene at h = 0.06 solved in {d06['solve_median']:.3g} s" if d06
          else "the reference scene at h = 0.06 not solved by the default strategy")
-        + f" (target {bench.REF_SOLVE_TARGET:g} s)",
-        (f"at most {bench.worst_ratio(ratios)['ratio_to_linear']:.1f} linear solves of the same mesh up to "
+        + f" (target {bench_targets.REF_SOLVE_TARGET:g} s)",
+        (f"at most {bench_analysis.worst_ratio(ratios)['ratio_to_linear']:.1f} linear solves of the same mesh up to "
          f"{max(r['dofs'] for r in ratios):,} dofs" if ratios else "no time in linear solves from 1e4 dofs")
-        + f" (target {bench.LINEAR_RATIO_TARGET:g})",
+        + f" (target {bench_targets.LINEAR_RATIO_TARGET:g})",
         (f"solve time growing like dofs^{ctx.fit_solve[0]:.2f}" if ctx.fit_solve
-         else "no exponent of the solve time in dofs") + f" (target {bench.EXPONENT_TARGET:g})"])
+         else "no exponent of the solve time in dofs") + f" (target {bench_targets.EXPONENT_TARGET:g})"])
 
 
 def render_sweep_run():
@@ -507,13 +604,15 @@ def render_sweep_run():
 def render_sweep_reference_solve():
     """The reference scene's solve time at h = 0.06 by the default strategy (gpts) against its target, and
     the fastest strategy's where it is another."""
-    import bench
+    import bench_analysis
+    import bench_sweep
+    import bench_targets
     rows = full_sweep()[0]
-    d06, conv = reference_default(), bench.reference_solve_runs(rows)[1]
+    d06, conv = reference_default(), bench_analysis.reference_solve_runs(rows)[1]
     text = (f"h = 0.06 solved to `-tao_gttol 1e-8` in {d06['solve_median']:.3g} s" if d06
             else "h = 0.06 not solved by the default strategy")
-    text += f" (<= {bench.REF_SOLVE_TARGET:g} s; {bench.REF_FORMULATION}, {bench.REF_STRATEGY}"
-    best = bench.fastest(conv) if conv else None
+    text += f" (<= {bench_targets.REF_SOLVE_TARGET:g} s; {bench_sweep.REF_FORMULATION}, {bench_sweep.REF_STRATEGY}"
+    best = bench_analysis.fastest(conv) if conv else None
     if best and best is not d06:
         text += f"; the fastest strategy, {best['strategy']}, {best['solve_median']:.3g} s"
     return text + ")"
@@ -522,13 +621,15 @@ def render_sweep_reference_solve():
 def render_sweep_linear_ratio():
     """The worst time in linear solves of the same mesh from 1e4 dofs, its span and target, and the
     ratios on the smaller meshes."""
-    import bench
+    import bench_analysis
+    import bench_targets
     rat, big = ratio_runs()
     if not big:
         return "no time-to-solution in linear solves from 1e4 dofs"
     small = [r for r in rat if r not in big]
-    text = (f"time-to-solution at most {bench.worst_ratio(big)['ratio_to_linear']:.1f} linear solves of the same "
-            f"mesh from {big[0]['dofs']:,} to {big[-1]['dofs']:,} dofs (<= {bench.LINEAR_RATIO_TARGET:g}")
+    text = (f"time-to-solution at most {bench_analysis.worst_ratio(big)['ratio_to_linear']:.1f} linear solves "
+            f"of the same mesh from {big[0]['dofs']:,} to {big[-1]['dofs']:,} dofs "
+            f"(<= {bench_targets.LINEAR_RATIO_TARGET:g}")
     if small:
         ratios = and_list([f"{r['ratio_to_linear']:.1f}" for r in small])
         dofs = and_list([f"{r['dofs']:,}" for r in small])
@@ -539,15 +640,17 @@ def render_sweep_linear_ratio():
 def render_sweep_exponent():
     """The fitted exponents in dofs of the solve time (gpts, mortar), the wall time and one linear solve,
     and the range of the solve time in linear solves over the fit's meshes."""
-    import bench
+    import bench_analysis
+    import bench_targets
     _, ctx, run = full_sweep()
     if not ctx.fit_solve:
         return "no exponent of the solve time in dofs"
-    span = bench.fit_runs(ctx.ref_sel)
+    span = bench_analysis.fit_runs(ctx.ref_sel)
     ratios = [r["ratio_to_linear"] for r in ratio_runs()[1]]
     exp = lambda fit: f"{fit[0]:.2f}" if fit else "-"  # noqa: E731
     return (f"solve time growing like dofs^{ctx.fit_solve[0]:.2f} from {span[0]['dofs']:,} to {span[-1]['dofs']:,} "
-            f"dofs (<= {bench.EXPONENT_TARGET:g}; a fit over {ctx.n_solve} meshes, median of {run['repeat']} each; "
+            f"dofs (<= {bench_targets.EXPONENT_TARGET:g}; a fit over {ctx.n_solve} meshes, "
+            f"median of {run['repeat']} each; "
             f"mortar's {exp(ctx.fit_mort)}; wall time {exp(ctx.fit_wall)}, its fixed start-up costs weighing on small "
             f"meshes). One sparse direct linear solve of the same meshes grows like dofs^{exp(ctx.fit_lin)} (MUMPS and "
             f"CHOLMOD factorisations), and the contact solve costs {min(ratios):.1f} to {max(ratios):.1f} of them "
@@ -556,27 +659,31 @@ def render_sweep_exponent():
 
 def render_sweep_fixed_costs():
     """Mesh reading, set-up and output against the whole run on the largest mesh (gpts), and the target."""
-    import bench
+    import bench_analysis
+    import bench_targets
     big = full_sweep()[1].ref_sel[-1]
-    return (f"mesh reading, set-up and output {100 * bench.fixed_cost_share(big):.1f} % of the run at "
-            f"{big['dofs']:,} dofs (< {100 * bench.FIXED_COST_TARGET:g} %)")
+    return (f"mesh reading, set-up and output {100 * bench_analysis.fixed_cost_share(big):.1f} % of the run at "
+            f"{big['dofs']:,} dofs (< {100 * bench_targets.FIXED_COST_TARGET:g} %)")
 
 
 def render_sweep_search():
     """The contact search against an energy evaluation per call on the largest mesh (gpts)."""
-    import bench
+    import bench_analysis
+    import bench_sweep
+    import bench_targets
     big = full_sweep()[1].ref_sel[-1]
     return (f"contact search {1e3 * big['search_time_per_call']:.3g} ms against "
-            f"{1e3 * big['energy_time_per_call']:.3g} ms per energy evaluation at {big['dofs']:,} dofs ({bench.pct(bench.search_share(big))}; "
-            f"< {100 * bench.SEARCH_TARGET:g} %)")
+            f"{1e3 * big['energy_time_per_call']:.3g} ms per energy evaluation at {big['dofs']:,} dofs "
+            f"({bench_sweep.pct(bench_analysis.search_share(big))}; "
+            f"< {100 * bench_targets.SEARCH_TARGET:g} %)")
 
 
 def render_sweep_mortar_cost():
     """Mortar's solve time over gpts' at h = 0.06 and on the largest mesh, and the two formulations' Newton
     steps over the reference scene's meshes."""
-    import bench
+    import bench_analysis
     rows, ctx, _ = full_sweep()
-    pairs = bench.cost_ratio_pairs(rows)
+    pairs = bench_analysis.cost_ratio_pairs(rows)
     if not pairs:
         return "no pair of converged mortar and gpts runs in the sweep"
     where = lambda h, g: "h = 0.06" if h == 0.06 else f"{g['dofs']:,} dofs"  # noqa: E731
@@ -591,9 +698,9 @@ def render_formulations_cost():
     gpts', the two formulations' Newton steps, mortar's cost per step over gpts', and the shares of mortar's
     solve that the factorisations (SchurFactorK and the Newton linear algebra) and the contact terms take,
     beside gpts' contact share."""
-    import bench
+    import bench_results
     by = {}
-    for r in bench.read_formulations_cost(os.path.join(ROOT, "bench")):
+    for r in bench_results.read_formulations_cost(os.path.join(ROOT, "bench")):
         by.setdefault(float(r["h"]), {})[r["formulation"]] = r
     pairs = [(by[h]["gpts"], by[h]["mortar"]) for h in sorted(by, reverse=True) if {"gpts", "mortar"} <= set(by[h])]
     if not pairs:
@@ -615,9 +722,10 @@ def render_formulations_cost():
 def render_sweep_profile():
     """The profile's distance from the finest run of the same model, for mortar on every mesh of the
     reference scene, and its range for gpts from h = 0.06."""
-    import bench
+    import bench_analysis
     _, ctx, _ = full_sweep()
-    measured = [r for r in ctx.ref_sel + ctx.mort_sel if "profile_err" in r and not bench.on_profile_ref_mesh(r)]
+    measured = [r for r in ctx.ref_sel + ctx.mort_sel
+                if "profile_err" in r and not bench_analysis.on_profile_ref_mesh(r)]
     mort = sorted((r for r in measured if r["formulation"] == "mortar"), key=lambda r: -r["h"])
     gpts = [100 * r["profile_err"] for r in measured if r["formulation"] == "gpts" and r["h"] <= 0.06]
     if not (mort and gpts):
@@ -631,12 +739,13 @@ def render_sweep_cheapest():
     """The cheapest configuration within each error level of the profile's distance from its scene's finest
     run (k_p = 2e6), per formulation, as bench/full/RESULTS.md's table; and, for a cheapest run of a scene
     other than the uniform one, the uniform run that is as fine as its scene's reference and its distance."""
-    import bench
+    import bench_analysis
+    import bench_sweep
     rows = full_sweep()[0]
     parts, other = [], {}
     for form in ("mortar", "gpts"):
-        best = bench.cheapest([r for r in rows if r["formulation"] == form], "profile_err", bench.ERROR_LEVELS,
-                              bench.off_profile_model)
+        best = bench_analysis.cheapest([r for r in rows if r["formulation"] == form], "profile_err",
+                                       bench_analysis.ERROR_LEVELS, bench_analysis.off_profile_model)
         groups = []   # [[levels], run], levels of the same run joined
         for t, r in best:
             if groups and groups[-1][1] is r:
@@ -646,7 +755,8 @@ def render_sweep_cheapest():
         text = []
         for levels, r in groups:
             run = "none" if r is None else (
-                f"{r['scene']} h = {r['h']:g}" + (f" {r['strategy']}" if r["strategy"] != bench.REF_STRATEGY else "")
+                f"{r['scene']} h = {r['h']:g}"
+                + (f" {r['strategy']}" if r["strategy"] != bench_sweep.REF_STRATEGY else "")
                 + f" ({r['wall_median']:.3g} s)")
             text.append("within " + and_list([f"{100 * t:g}" for t in levels]) + f" % {run}")
             if r is not None and r["scene"] != "hertz":
@@ -654,8 +764,8 @@ def render_sweep_cheapest():
         parts.append(f"{form} " + ", ".join(text))
     notes = []
     for (scene, ref_h), forms in sorted(other.items()):
-        uni = [f"{bench.pct(u[0]['profile_err'])} ({f})" for f in ("mortar", "gpts") if f in forms
-               for u in [bench.default_runs(rows, "hertz", bench.REF_KP, ref_h, f)] if u]
+        uni = [f"{bench_sweep.pct(u[0]['profile_err'])} ({f})" for f in ("mortar", "gpts") if f in forms
+               for u in [bench_analysis.default_runs(rows, "hertz", bench_sweep.REF_KP, ref_h, f)] if u]
         notes.append(f"a {scene} run is measured against that scene's finest, h = {ref_h:g}, no finer than the "
                      f"uniform h = {ref_h:g} run, which is {and_list(uni)} from the uniform finest")
     return "; ".join(parts + notes)
@@ -663,13 +773,14 @@ def render_sweep_cheapest():
 
 def render_sweep_half():
     """The half model's contact force and solve time against the full model's at h = 0.06 (gpts)."""
-    import bench
+    import bench_analysis
+    import bench_sweep
     rows = full_sweep()[0]
-    half = bench.default_runs(rows, "hertz-half", bench.REF_KP, 0.06)
-    full = bench.default_runs(rows, "hertz", bench.REF_KP, 0.06)
+    half = bench_analysis.default_runs(rows, "hertz-half", bench_sweep.REF_KP, 0.06)
+    full = bench_analysis.default_runs(rows, "hertz", bench_sweep.REF_KP, 0.06)
     if not (half and full):
         return "at h = 0.06 (no pair of converged runs in the sweep)"
-    return (f"at h = 0.06 ({bench.REF_FORMULATION}) P = {half[0]['P']:.6g} against {full[0]['P']:.6g}, solved in "
+    return (f"at h = 0.06 ({bench_sweep.REF_FORMULATION}) P = {half[0]['P']:.6g} against {full[0]['P']:.6g}, solved in "
             f"{half[0]['solve_median']:.3g} s against {full[0]['solve_median']:.3g} s")
 
 
@@ -677,9 +788,10 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formula
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
-          "penalty": render_penalty}
+          "penalty": render_penalty, "claims": render_claims}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
-PHRASES = {"solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
+PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
+           "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
            "parallel-speedup": render_parallel_speedup, "speed-targets": render_speed_targets,
            "sweep-run": render_sweep_run, "sweep-targets": targets_met,
            "sweep-reference-solve": render_sweep_reference_solve, "sweep-linear-ratio": render_sweep_linear_ratio,
@@ -782,7 +894,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric"], action="append", default=[])
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "claims"], action="append",
+                    default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
         measure_scenes()
@@ -794,6 +907,8 @@ def main():
         measure_picture()
     if "axisymmetric" in args.measure:
         measure_axisymmetric()
+    if "claims" in args.measure:
+        measure_claims()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:

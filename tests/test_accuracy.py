@@ -97,27 +97,31 @@ def test_bad_target(value, tmp_path):
 
 
 def test_ranks_agree(tmp_path):
-    """2 ranks refine like 1 and reach the same answer: on the same meshes
-    (measured: every step's dofs equal with each of the OpenBLAS kernels
-    Nehalem, Sandybridge, Haswell and SkylakeX) P and p_max to 3e-12
-    (measured up to 1.2e-12, p_max with Nehalem; was 1e-8) and each step's
-    estimate to 8e-12 (measured up to 3.1e-12; was 1e-6), so that a figure
-    or an estimate that is one rank's share fails. Should a cell's marking
-    flip on the last bit on another machine (the kernels do flip it: the
-    last step has 7686 dofs with Nehalem and Haswell, 7718 with the others,
-    0.42 % apart), the steps' dofs still agree to 1 % (was 2 %) and the
-    answers to within the estimate, which is what a user is promised."""
+    """2 ranks reach 1 rank's answer: results, not the refinement path. Where
+    the last meshes are the same (same dofs; measured so with each of the
+    OpenBLAS kernels Nehalem, Sandybridge, Haswell and SkylakeX), P and p_max
+    agree to 3e-12 (measured up to 1.2e-12, p_max with Nehalem) and the
+    estimate, a difference of two meshes' answers, to 2.5e-11 (measured up
+    to 8.0e-12), so that a figure or an
+    estimate that is one rank's share fails. Should a cell's marking flip on
+    the last bit on another machine (the kernels do flip it: the last step
+    has 7686 dofs with Nehalem and Haswell, 7718 with the others), the two
+    answers, each on its own mesh, agree to within the larger of their
+    estimates, which is what a user is promised; and each run meets the
+    target it was given."""
     args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
     one = run_contact(args, tmp_path, name="one").summary
     two = run_contact(args, tmp_path, ranks=2, name="two").summary
-    d1, d2 = [s["dofs"] for s in one["adapt_steps"]], [s["dofs"] for s in two["adapt_steps"]]
-    print("dofs per step", d1, d2)
-    assert len(d1) == len(d2) and all(abs(a / b - 1) <= 0.01 for a, b in zip(d1, d2))
-    rtol = 1e-8 if d1 == d2 else one["error_estimate"]  # measured 1.2e-12; 1e-8 as every rank comparison: the ranks' Newton paths may differ elsewhere
-    for a, b in zip(one["adapt_steps"][1:], two["adapt_steps"][1:]):
-        print(f"estimate {a['error_estimate']!r} against {b['error_estimate']!r}: {b['error_estimate'] / a['error_estimate'] - 1:.2e}")
-        if a["dofs"] == b["dofs"]:
-            assert b["error_estimate"] == pytest.approx(a["error_estimate"], rel=1e-8)  # measured 3.1e-12
+    same_mesh = one["adapt_steps"][-1]["dofs"] == two["adapt_steps"][-1]["dofs"]
+    print("last dofs", one["adapt_steps"][-1]["dofs"], two["adapt_steps"][-1]["dofs"])
+    for s in (one, two):
+        assert s["error_estimate"] <= 0.05
+    if same_mesh:
+        rtol = 3e-12
+        print(f"estimate {one['error_estimate']!r} against {two['error_estimate']!r}: {two['error_estimate'] / one['error_estimate'] - 1:.2e}")
+        assert two["error_estimate"] == pytest.approx(one["error_estimate"], rel=2.5e-11)
+    else:
+        rtol = max(one["error_estimate"], two["error_estimate"])
     print(f"P {two['contact_force'] / one['contact_force'] - 1:.2e}, p_max {two['fem_pmax'] / one['fem_pmax'] - 1:.2e}")
     assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
     assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)
@@ -152,3 +156,50 @@ def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
           f"profile {d:.3g} and force {dP:.2g} from the uniform h = 0.005")
     assert d <= tol + 0.003
     assert dP <= tol / 4
+
+
+@pytest.fixture(scope="module")
+def half_default(tmp_path_factory):
+    """-accuracy 0.05 on the half scene with its defaults (bulk 0.5, grading
+    0.3, warm start): measured steps of 2454, 4308 and 7718 dofs."""
+    tmp = tmp_path_factory.mktemp("acc-default")
+    return summary(run_contact(scene_args("hertz-half", tmp) + MORTAR + ["-accuracy", 0.05], tmp))
+
+
+@pytest.mark.parametrize("option,value", [("-accuracy_bulk", 0.8), ("-accuracy_grading", 0.1)])
+def test_marking_options(option, value, half_default, tmp_path):
+    """-accuracy_bulk 0.8 marks the cells making up 80 % of the indicators'
+    total instead of 50 %, and -accuracy_grading 0.1 lets the mesh size grow
+    0.1 per unit distance from the contact instead of 0.3: from the same
+    first solve (its mesh and dofs equal), each refines more, so the second
+    step has more dofs (measured 4416 and 4810 against 4308). Each meets the
+    target, and the two answers, on their own meshes, agree within the
+    larger of their estimates (measured P 7.2e-5 and 2.8e-4 apart, estimates
+    0.0087 and 0.0124)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, option, value], tmp_path))
+    d0, d = [x["dofs"] for x in half_default["adapt_steps"]], [x["dofs"] for x in s["adapt_steps"]]
+    print(f"{option} {value}: dofs {d} against {d0}; estimate {s['error_estimate']:.4g}; "
+          f"P {s['contact_force'] / half_default['contact_force'] - 1:.2e} from the default's")
+    assert d[0] == d0[0] and d[1] > d0[1]
+    assert s["error_estimate"] <= 0.05
+    tol = max(s["error_estimate"], half_default["error_estimate"])
+    for key in ("contact_force", "fem_pmax"):
+        assert abs(s[key] / half_default[key] - 1) <= tol, key
+
+
+def test_cold_start(half_default, tmp_path):
+    """-accuracy_warm_start 0 solves each step from rest instead of from the
+    last step's answer interpolated onto the new mesh: the same answer (P
+    and p_max to 1e-6, what the solver's stop leaves between two solves;
+    measured 3.8e-7 and 6e-9) in more Newton iterations (measured 11 a step
+    against 11, 3 and 2: 33 against 16)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, "-accuracy_warm_start", 0],
+                            tmp_path))
+    warm = sum(x["iterations"] for x in half_default["adapt_steps"])
+    cold = sum(x["iterations"] for x in s["adapt_steps"])
+    print(f"iterations {cold} cold against {warm} warm; P {s['contact_force'] / half_default['contact_force'] - 1:.2e}, "
+          f"p_max {s['fem_pmax'] / half_default['fem_pmax'] - 1:.2e}")
+    assert s["error_estimate"] <= 0.05
+    for key in ("contact_force", "fem_pmax"):
+        assert abs(s[key] / half_default[key] - 1) <= 1e-6, key
+    assert cold > warm

@@ -211,13 +211,19 @@ def test_sphere_hertz(h, tmp_path):
 
 
 def test_sphere_ranks(tmp_path):
-    """1 and 2 ranks give the same answer to 1e-8 (measured 2.5e-14 in P,
-    2.4e-12 in p_max, 1.9e-13 in a, 1.8e-10 in the profile's L2)."""
+    """1 and 2 ranks give the same answer: P, p_max, a (edge and second
+    moment) and the energy to 1e-11 relative (measured 7.7e-14, 2.4e-12 to
+    3.7e-12, 1.4e-16, 2.9e-13, 5.7e-16), and the profile's relative L2 error
+    against Hertz, itself a relative figure, to 4e-12 (measured 1.3e-13 to
+    1.4e-12)."""
     one = run_contact(SPHERE, tmp_path, name="one").summary
     two = run_contact(SPHERE, tmp_path, ranks=2, name="two").summary
     for k in ("contact_force", "fem_pmax", "fem_a", "fem_a_moment", "pressure_l2_error", "energy"):
-        print(k, one[k], two[k])
-        assert abs(one[k] - two[k]) <= 1e-8 * abs(one[k])
+        print(k, one[k], two[k], f"{abs(one[k] - two[k]) / abs(one[k]):.2e}")
+        if k == "pressure_l2_error":
+            assert abs(one[k] - two[k]) <= 4e-12
+        else:
+            assert abs(one[k] - two[k]) <= 1e-11 * abs(one[k])
 
 
 def test_sphere_accuracy(tmp_path):

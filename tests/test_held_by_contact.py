@@ -19,11 +19,11 @@ LOAD = 27.5 * 2.0   # the pressure times the edge's length
 def test_held_from_rest(tmp_path):
     """Converges from rest with no option chosen for it (exit 0). The contact
     force is the load: their difference is the anchors' reactions plus the
-    solve's residual (the block's x-equilibrium), measured 1.5e-10 of the
-    load, 3e-3 of its bound, that sum (the anchors' reactions, 1.4e-9 and
-    8.9e-10, within -force_control_rtol 1e-9 of the load; plus sqrt(n) times
-    the gradient norm). The anchors' reactions are the outer iteration's stop; the JSON
-    lists them as anchors. Nothing on stderr: the pressure acts in x only, on
+    solve's residual (the block's x-equilibrium), measured 3.4e-10 of the
+    load, 6.9e-3 of its bound, that sum (the anchors' reactions, 5.4e-9 and
+    6.8e-9, within -force_control_rtol 1e-9 of the load; plus sqrt(n) times
+    the gradient norm). The anchors' reactions are the outer iteration's
+    stop (src/solver/held.c); the JSON lists them as anchors. Nothing on stderr: the pressure acts in x only, on
     an edge held in y only, so no set-up check speaks (conditions.c)."""
     r = run_contact(HELD + ["-output", "none"], tmp_path)
     s = r.summary

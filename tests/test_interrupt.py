@@ -1,7 +1,8 @@
 """Interrupted runs: a run killed part-way (while it meshes, solves, or writes
 its files) leaves the earlier results intact and no temporary file behind, and
 says in one line in which phase it was interrupted (status 130 for SIGINT, 143
-for SIGTERM).
+for SIGTERM, 129 for SIGHUP), also on 2 ranks; output piped into a reader that
+stops (SIGPIPE) ends the run quietly, as Unix tools do.
 
 No clock: each signal is sent on an event of the run, never after a wait. The
 solve and the output phases are caught by the run's own -progress lines (the
@@ -57,8 +58,8 @@ def check_outcome(proc, tmp_path, phase=r"[\w -]+"):
         return False
     err = proc.stderr.read()
     lines = [l for l in err.splitlines() if l.strip() and not l.startswith("contact: [")]
-    # SIGINT: 130, SIGTERM: 143, and one line naming the phase, no PETSc dump
-    assert rc in (130, 143), f"exit {rc}: {err[-2000:]}"
+    # SIGINT: 130, SIGTERM: 143, SIGHUP: 129, and one line naming the phase, no PETSc dump
+    assert rc in (129, 130, 143), f"exit {rc}: {err[-2000:]}"
     assert len(lines) == 1 and re.fullmatch(rf"contact: interrupted during {phase}; no output written", lines[0]), err
     for f in NAMES:
         assert (tmp_path / f).read_text() == SENTINEL, f"{f} changed by a killed run"
@@ -85,14 +86,72 @@ def test_killed_while_writing(sig, tmp_path):
     assert hit, "the write was never interrupted in 5 attempts"
 
 
-def test_killed_while_solving(tmp_path):
-    """SIGTERM once the run reports its first Newton iteration (-progress; the
-    solve at h = 0.02 takes 8 or more): no waiting on the clock, so a faster
-    or slower machine signals in the same phase, which the line must name."""
+@pytest.mark.parametrize("sig,status", [(signal.SIGTERM, 143), (signal.SIGHUP, 129)])
+def test_killed_while_solving(sig, status, tmp_path):
+    """SIGTERM, or SIGHUP (the terminal closed), once the run reports its
+    first Newton iteration (-progress; the solve at h = 0.02 takes 8 or
+    more): no waiting on the clock, so a faster or slower machine signals in
+    the same phase, which the line must name; status 128 + the signal."""
     proc = start(tmp_path, 0.02, "-progress")
-    if not signal_on(proc, "solve: iteration   1,", signal.SIGTERM):
+    if not signal_on(proc, "solve: iteration   1,", sig):
         pytest.fail("the run ended without reporting its first Newton iteration")
     assert check_outcome(proc, tmp_path, "the solve")
+    assert proc.returncode == status
+
+
+def test_two_ranks_killed_while_solving(tmp_path):
+    """A 2-rank run: SIGTERM to mpiexec, which passes it to both ranks, once
+    the run reports its first Newton iteration. The earlier results are
+    kept, no temporary or lock is left, and the program's one line names the
+    phase (rank 0's; mpiexec's own status is 1)."""
+    for f in NAMES:
+        (tmp_path / f).write_text(SENTINEL)
+    cmd = ["mpiexec", "--oversubscribe", "-n", "2", str(BIN), "-options_file", "meshes/hertz/hertz.opts",
+           "-mesh_size", "0.02", "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json"),
+           "-progress"]
+    proc = subprocess.Popen(cmd, cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if not signal_on(proc, "solve: iteration   1,", signal.SIGTERM):
+        pytest.fail("the run ended without reporting its first Newton iteration")
+    rc = proc.wait(timeout=300)
+    err = proc.stderr.read()
+    lines = [ln for ln in err.splitlines() if ln.startswith("contact: ") and not ln.startswith("contact: [")]
+    assert rc != 0, err
+    assert lines == ["contact: interrupted during the solve; no output written"], err[-2000:]
+    assert "PETSC ERROR" not in err
+    assert sorted(os.listdir(tmp_path)) == sorted(NAMES), os.listdir(tmp_path)
+    for f in NAMES:
+        assert (tmp_path / f).read_text() == SENTINEL, f"{f} changed by a killed run"
+
+
+def test_output_piped_into_head(tmp_path):
+    """The report piped into a reader that stops reading (`contact ... | head
+    -1`): the run's next write to its standard output raises SIGPIPE, and
+    the run dies of it quietly, as Unix tools do (killed by SIGPIPE, nothing
+    on stderr), removing its temporaries and its lock; its set is then the
+    earlier one, or the new one whole if the last write came after the set
+    was in place. The reader closes after the first line of -tao_monitor
+    (the solve at h = 0.02 prints 8 or more, then the report)."""
+    for f in NAMES:
+        (tmp_path / f).write_text(SENTINEL)
+    cmd = [str(BIN), "-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.02",
+           "-output", str(tmp_path / "out.h5"), "-summary", str(tmp_path / "out.json"), "-tao_monitor"]
+    proc = subprocess.Popen(cmd, cwd=ROOT, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    first = proc.stdout.readline()
+    assert first, "no output at all"
+    proc.stdout.close()
+    rc = proc.wait(timeout=300)
+    err = proc.stderr.read().decode()
+    assert rc == -signal.SIGPIPE, f"exit {rc}: {err[-2000:]}"
+    assert err.strip() == "", err[-2000:]
+    assert sorted(os.listdir(tmp_path)) == sorted(NAMES), os.listdir(tmp_path)
+    texts = {f: (tmp_path / f).read_bytes() for f in NAMES}
+    old = [t == SENTINEL.encode() for t in texts.values()]
+    assert all(old) or not any(old), "a set of mixed runs"
+    if not any(old):
+        import h5py
+        with h5py.File(tmp_path / "out.h5", "r") as f:
+            assert "bodies" in f
+        json.loads(texts["out.json"])
 
 
 # A stand-in for Gmsh: the unrolling of the geometry (gmsh -0) by the real one;

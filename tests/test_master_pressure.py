@@ -120,7 +120,8 @@ def test_master_peak_matches_slave(runs):
     pressure is per reference length of its own surface, and at the centre
     the block's edge is shortened 1.5 %, the disc's arc 3.7 %; per current
     length the peaks agree to 0.043 % (0.12 % when the master's pressure was
-    its nodal forces over int N_j dS). Tolerances 2.5 times those."""
+    its nodal forces over int N_j dS). Tolerances 2.5 times those: 6 % and
+    0.11 %."""
     surf = surfaces(runs("first"))
     peak, peak_cur = {}, {}
     for k, v in surf.items():
@@ -131,20 +132,24 @@ def test_master_peak_matches_slave(runs):
     print(f"peaks: block (master) {peak['block_contact']:.6g}, disc (slave) {peak['indenter_contact']:.6g}: {ref:+.2%}; "
           f"per current length {peak_cur['block_contact']:.6g}, {peak_cur['indenter_contact']:.6g}: {cur:+.3%}")
     assert 0 < ref <= 0.06
-    assert abs(cur) <= 0.003
+    assert abs(cur) <= 0.0011
 
 
 def test_ranks_agree(runs):
-    """1 and 2 ranks: the master's node datasets agree to 1e-8 (measured at
-    most 9.0e-13, the pressure): a transfer that misses the slave edges of the
+    """1 and 2 ranks: the master's node datasets agree to 3e-12 of each one's
+    largest value (measured 5.7e-13 to 9.0e-13 in the pressure, 4.5e-13 in
+    the force, 2.2e-16 or less in the positions, the arc and the weights,
+    the gaps equal): a transfer that misses the slave edges of the
     other rank shows."""
     a, b = surfaces(runs("first", 1))["block_contact"], surfaces(runs("first", 2))["block_contact"]
     for n in ("node_s", "node_x", "node_pressure", "node_force", "node_weight"):
         scale = np.abs(a[n]).max()
-        assert np.abs(a[n] - b[n]).max() <= 1e-8 * scale, n
+        print(n, f"{np.abs(a[n] - b[n]).max() / scale:.2e}")
+        assert np.abs(a[n] - b[n]).max() <= 3e-12 * scale, n
     finite = np.isfinite(a["node_gap"])
     assert np.array_equal(finite, np.isfinite(b["node_gap"]))
-    assert np.abs(a["node_gap"][finite] - b["node_gap"][finite]).max() <= 1e-8 * np.abs(a["node_gap"][finite]).max()
+    print("node_gap", f'{np.abs(a["node_gap"][finite] - b["node_gap"][finite]).max() / np.abs(a["node_gap"][finite]).max():.2e}')
+    assert np.abs(a["node_gap"][finite] - b["node_gap"][finite]).max() <= 3e-12 * np.abs(a["node_gap"][finite]).max()
 
 
 def test_layout_as_slave(runs):

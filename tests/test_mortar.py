@@ -65,21 +65,29 @@ def test_no_oscillation(half, tmp_path):
     """The oscillation index (profile_metrics.oscillation: the largest deviation
     of a sample from the mean of its two neighbours, less that of the Hertz
     profile with the profile's computed peak and half-width centred at its
-    pressure centroid, within 0.8 a of the centre, over the peak) meets the
-    mortar issue's targets: at most 0.025 at h = 0.06 and 0.01 for h <= 0.03.
+    pressure centroid, within 0.8 a of the centre, over the peak) is at
+    most 0.01 for h <= 0.03 and 0.05 for h = 0.05 to 0.08.
     Measured: the half reference scene 0.0188 at h = 0.06, 0.0008 at 0.03,
     0.0002 at 0.015 (0.0074 at 0.1, printed only); hertz-graded 0.0023 at
     h = 0.06 and 0.0026 at its own 0.03; hertz-small and twodiscs, meshed at
-    0.004 near the contact, 0.0011 and 0.0044. At h = 0.06 the index depends
-    on where the zone's edge falls among the nodes (0.002 to 0.019 at
-    h = 0.05 to 0.08, bench/formulations/oscillation_floor.md)."""
+    0.004 near the contact, 0.0011 and 0.0044. At a/h about 6 the index
+    depends on where the zone's edge falls among the nodes: its neighbours
+    h = 0.05, 0.055, 0.065, 0.07, 0.075 and 0.08 measured 0.0104, 0.0025,
+    0.0023, 0.0106, 0.0233 and 0.0129 (docs/formulations.md's table), so
+    that 0.025 is met at h = 0.06 but is not a bound there: the coarse
+    meshes h = 0.05 to 0.08 are held to 0.05, twice the largest."""
     for h in HS:
         osc = pm.oscillation(*indenter(half[h]))
         print(f"hertz-half, h = {h}: oscillation index {osc:.4f}")
         if h <= 0.03:
             assert osc <= 0.01
         elif h == 0.06:
-            assert osc <= 0.025
+            assert osc <= 0.05
+    for h in (0.05, 0.055, 0.065, 0.07, 0.075, 0.08):
+        r = run_contact(HALF + ["-mesh_size", h, "-summary", "none"], tmp_path, name=f"half-{h}")
+        osc = pm.oscillation(*indenter(r))
+        print(f"hertz-half, h = {h}: oscillation index {osc:.4f}")
+        assert osc <= 0.05
     cases = [("hertz-graded", [], 0.01), ("hertz-graded", ["-mesh_size", "0.06"], 0.025),
              ("hertz-small", [], 0.01), ("twodiscs", [], 0.01)]
     for i, (scene, extra, bound) in enumerate(cases):

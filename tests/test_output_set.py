@@ -137,3 +137,27 @@ def test_killed_run_lock_taken_over(tmp_path):
     assert proc.returncode == 0 and f"pid={run.pid}" in proc.stderr, proc.stderr
     assert len(set(run_ids(tmp_path).values())) == 1
     assert sorted(os.listdir(tmp_path)) == sorted(SET)
+
+
+def test_lock_of_another_host_kept(tmp_path):
+    """A lock whose holder names another host cannot be checked from here (its
+    process is not ours to see, and flock does not cross hosts on every file
+    system), so it counts as held: the run stops at once (status 1) with one
+    line naming the holder's pid, host and run id and saying how to proceed;
+    the lock and the earlier results are left as they were. Its neighbour,
+    the same lock naming this host and a process that is gone, is taken over
+    (test_stale_lock_taken_over)."""
+    line = "pid=4242 host=another-host.example run_id=far\n"
+    (tmp_path / "out.lock").write_text(line)
+    for f in SET:
+        (tmp_path / f).write_text("earlier result\n")
+    proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
+    lines = [ln for ln in proc.stderr.splitlines() if ln.strip()]
+    assert proc.returncode == 1, proc.stderr
+    assert len(lines) == 1 and lines[0].startswith("contact: error: "), lines
+    for part in ("pid 4242 on host another-host.example", "run id far", "cannot be checked", "remove the lock"):
+        assert part in lines[0], lines[0]
+    assert (tmp_path / "out.lock").read_text() == line
+    for f in SET:
+        assert (tmp_path / f).read_text() == "earlier result\n", f
+    assert sorted(os.listdir(tmp_path)) == sorted(SET + ("out.lock",))

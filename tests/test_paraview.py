@@ -1,5 +1,6 @@
-"""ParaView reads the XDMF output right: Debian's ParaView 5.11 (pvpython under
-xvfb-run, installed by scripts/install-deps.sh) opens the file of a small run
+"""ParaView reads the XDMF output right: Debian's ParaView 5.11 (pvpython on
+one virtual X server, Xvfb, for the session; both installed by
+scripts/install-deps.sh) opens the file of a small run
 through its legacy reader (XDMFReader) and its Xdmf3 readers (Xdmf3ReaderS,
 Xdmf3ReaderT); every block's point count, cells and point arrays are compared
 with the HDF5 file read by h5py: the bodies' coordinates, displacement (3

@@ -59,11 +59,22 @@ def tolerances(s):
 FORMULATIONS = {
     "gpts": ["-contact_formulation", "gpts"],
     "mortar": ["-contact_formulation", "mortar"],
+    # mortar's other weight functions and both surfaces as slaves, the
+    # variants docs/formulations.md compares (patch test column: 1.9e-13 to
+    # 4.5e-13 measured): each passes the patch test as the default does
+    "mortar-quadratic": ["-contact_formulation", "mortar", "-contact_mortar_basis", "quadratic"],
+    "mortar-linear": ["-contact_formulation", "mortar", "-contact_mortar_basis", "linear"],
+    "mortar-sublinear": ["-contact_formulation", "mortar", "-contact_mortar_basis", "sublinear"],
+    "mortar-both": ["-contact_formulation", "mortar", "-contact_mortar_slave", "both"],
 }
 STRICT = [
     pytest.param("gpts", marks=pytest.mark.xfail(
         strict=True, reason="the Gauss-point penalty does not pass the contact patch test")),
     pytest.param("mortar"),
+    pytest.param("mortar-quadratic"),
+    pytest.param("mortar-linear"),
+    pytest.param("mortar-sublinear"),
+    pytest.param("mortar-both"),
 ]
 
 # Variants of the scene, as option overrides. "flush": the scene as written (equal
@@ -199,7 +210,7 @@ def errors(s, res):
     return e
 
 
-@pytest.mark.parametrize("formulation", list(FORMULATIONS))
+@pytest.mark.parametrize("formulation", ["gpts", "mortar"])
 @pytest.mark.parametrize("variant", list(VARIANTS))
 def test_patch_report(variant, formulation, solve):
     """Each formulation: prints its errors; asserts equilibrium (contact force =

@@ -34,15 +34,16 @@ def shortest_edge(h5, pair):
 def test_auto_rule(tmp_path):
     """The penalty used is 1000 E*/h with E* from the two materials and h the
     shortest edge of the two contact surfaces, integrated here from the HDF5's
-    nodes: to round-off (measured 2e-16, bound 100 EPS); the JSON says auto
-    and gives k_p h / E* = 1000; two stages were solved."""
+    nodes: to round-off (measured 2e-16, bound 100 EPS); two stages were
+    solved (30 E*/h, then 1000 E*/h). The JSON's own k_p h / E* and its
+    penalty_auto flag are the program's words for what it did, not checks
+    of it, and are not asserted."""
     r = run_contact(HERTZ + ["-contact_penalty", "auto"], tmp_path)   # the whole scene: its HDF5 holds the edges as meshed
     s, c = r.summary, r.summary["contact"]["interface"]
     h = shortest_edge(r.h5(), "interface")
     print(f"k_p {c['penalty']!r}, h {h!r} (program {c['penalty_h']!r}), 1000 E*/h {1000 * ESTAR / h!r}")
-    assert c["penalty_auto"] is True and s["stages"] == 2
+    assert s["stages"] == 2
     assert abs(c["penalty"] / (1000 * ESTAR / h) - 1) <= 100 * EPS
-    assert abs(c["penalty_stiffness"] - 1000) <= 1000 * 100 * EPS
 
 
 def test_auto_error_below_mesh(tmp_path):

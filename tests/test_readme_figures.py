@@ -165,3 +165,19 @@ def test_readme_is_a_guide():
     commands = [l.split()[:2] for l in text.splitlines()[:6] if l.startswith("    make ")]
     assert commands == [["make", "run"], ["make", "test"]]
     assert f"]({readme_figures.PICTURE})" in text
+
+
+def test_files_page_names_every_file(tmp_path):
+    """docs/files.md, the list of the repository's files (the README points to
+    it), is what scripts/files_doc.py makes of the files' own headers: a file
+    added, removed or re-described without it fails here. And it names every
+    C source, script and test helper module (against the file system, not
+    the script's own list)."""
+    script = ROOT / "scripts" / "files_doc.py"
+    p = subprocess.run([sys.executable, str(script), "--check"], cwd=ROOT, capture_output=True, text=True)
+    assert p.returncode == 0, p.stdout + p.stderr
+    text = (ROOT / "docs" / "files.md").read_text()
+    wanted = sorted(ROOT.glob("src/*/*.c")) + sorted(ROOT.glob("scripts/*.py")) + sorted(ROOT.glob("scripts/*.sh"))
+    wanted += [f for f in sorted(ROOT.glob("tests/*.py")) if not f.name.startswith(("test_", "conftest"))]
+    missing = [str(f.relative_to(ROOT)) for f in wanted if f"| `{f.name}` |" not in text]
+    assert not missing, missing

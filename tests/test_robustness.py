@@ -2,8 +2,8 @@
 `make stress`): the mirrored half of the reference scene at the sweep's
 hardest penalty and push (k_p = 1e10, push 0.3) at h = 0.25 and 0.1, and at
 its softest penalty (k_p = 1e3, push 0.3: the bodies 0.1 into each other) at
-h = 0.1, the finest mesh where that case converges; with both formulations,
-on 1 and 2 ranks (about 10 s in all).
+h = 0.1 and its neighbour 0.05 (where the bodies overlap by two edges:
+test_deep_overlap_named); with both formulations, on 1 and 2 ranks.
 
 Each run converges, and its answer is checked against what it must satisfy
 whatever the discretisation: the contact pair's force on the indenter equals
@@ -19,10 +19,10 @@ machine's rounding). Measured 5e-4 to 6.0e-2 of that bound over these
 kernels and cases (was a fixed 1e-6). Catches a reaction summed over the
 wrong dofs or ranks, a force reported from another state, a gradient norm
 that is not the gradient's. 1 and 2 ranks give the same P (measured 0 to
-2.1e-9, bound 1e-8: catches a rank's share reported as the whole) although at k_p = 1e10 they
-may take different Newton paths (62 against 49 iterations for gpts at
-h = 0.25), and the half model's P is twice its pair's force (measured
-exactly, bound 100 EPS: catches a mirror that does not double it)."""
+2.1e-9, bound 6e-9: catches a rank's share reported as the whole) although
+at k_p = 1e10 they may take different Newton paths (62 against 49
+iterations for gpts at h = 0.25). (That the half model's P is twice its
+pair's force is how the program defines it, and not asserted.)"""
 import math
 
 import numpy as np
@@ -32,7 +32,7 @@ from conftest import run_contact
 
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"]
 EPS = np.finfo(float).eps
-CASES = [(0.25, 1e10, 0.3), (0.1, 1e10, 0.3), (0.1, 1e3, 0.3)]
+CASES = [(0.25, 1e10, 0.3), (0.1, 1e10, 0.3), (0.1, 1e3, 0.3), (0.05, 1e3, 0.3)]
 
 
 @pytest.mark.parametrize("formulation", ["gpts", "mortar"])
@@ -48,17 +48,14 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
         f = s["contact"]["interface"]["force"][0]
         reaction = s["reactions"]["block:push"][0]
         print(f"{n} rank(s): {s['iterations']} iterations, P {s['contact_force']:.10g}, force {f:.10g}, "
-              f"reaction {reaction:.10g}: balance {abs(abs(f) - abs(reaction)) / abs(reaction):.2e}, "
-              f"P - 2|f| {abs(s['contact_force'] - 2 * abs(f)) / s['contact_force']:.2e}")
+              f"reaction {reaction:.10g}: balance {abs(abs(f) - abs(reaction)) / abs(reaction):.2e}")
         assert f < 0 < s["contact_force"], "the block pushes the indenter away (-x)"
         bound = math.sqrt(s["dofs"]) * s["gradient_norm"] + 1000 * EPS * abs(reaction)
         print(f"    imbalance {abs(abs(f) - abs(reaction)):.3e}, {abs(abs(f) - abs(reaction)) / bound:.2e} of sqrt(n) ||g||")
         assert abs(abs(f) - abs(reaction)) <= bound, (f, reaction, bound)
-        # the half model's P is that of the whole: twice the half's force
-        assert abs(s["contact_force"] - 2 * abs(f)) <= 100 * EPS * s["contact_force"]
         P[n] = s["contact_force"]
     print(f"1 against 2 ranks: P {abs(P[2] - P[1]) / abs(P[1]):.2e}")
-    assert abs(P[2] - P[1]) <= 1e-8 * abs(P[1]), P
+    assert abs(P[2] - P[1]) <= 6e-9 * abs(P[1]), P
 
 
 def _edge_length(h5, pair, surface):
@@ -125,43 +122,36 @@ def test_deep_overlap_names_the_stop(tmp_path):
     assert "raise -contact_interface_penalty" in lines[0] and lines[0].endswith("no output written")
 
 
-def test_cutback_recovers(tmp_path):
+@pytest.mark.parametrize("ls_funcs", [2, 4])
+def test_cutback_recovers(ls_funcs, tmp_path):
     """A load whose line search fails is cut back (-load_cutbacks, on by
-    default), and the cut-back solve reaches the answer. The case: L-BFGS on
-    2 ranks, the mortar half scene at h = 0.1, k_p = 1e10, push 0.3, with the
-    continuation lmvm had by default before it began where k_p h / E* is 1
-    (-penalty_stages 3 -penalty_start 1e-3: the first stage at k_p = 1e7,
-    k_p h / E* = 1.7e3), whose first stage from rest stops here
-    (DIVERGED_LS_FAILURE after 39 iterations, the block pushed deep into the
-    disc) and converges after one cutback (128 iterations in all; the default
-    continuation converges in 21 without). (The case this test had before,
-    k_p = 3e3 at h = 0.02, stopped from rest only while the mortar energy
-    jumped on the mirror line; at that soft penalty the bodies are 1.6 to 2
-    edges into each other and the solve from rest and the cut-back one land
-    on different wrinkled states, 0.2 to 0.4 % apart.) Whether the solve from rest stops
-    depends on the machine's rounding, so the test follows what
-    -load_cutbacks 0 does here: if it stops, the default must have cut back
-    and converged; if it converges, the default must not have cut back and
-    must give the same P. Either way P must be Newton's to 1e-8, the
-    criterion of the same answer (measured 1.9e-9)."""
-    args = HALF + ["-mesh_size", 0.1, "-contact_penalty", "1e10", "-block_bc_push_values", "-0.3,0",
-                   "-contact_formulation", "mortar"]
-    lmvm = args + ["-tao_type", "lmvm", "-penalty_stages", 3, "-penalty_start", "1e-3"]
-    off = run_contact(lmvm + ["-load_cutbacks", 0], tmp_path, name="off", ranks=2, check=False)
-    on = run_contact(lmvm, tmp_path, name="on", ranks=2).summary
+    default), and the cut-back solve reaches the answer. The case: the
+    reference scene at h = 0.2 on 2 ranks with each line search allowed 2
+    energy evaluations (-tao_ls_max_funcs 2): the first Newton step from rest
+    needs at least 4 there (3 fail as 2 do; measured), so the solve of the
+    whole load stops on every machine (-load_cutbacks 0: DIVERGED_LS_FAILURE,
+    status 2), and the default cuts it back once and converges (3 stages:
+    the failed one, loads 1/2 and 1; 15 iterations). Its neighbour, 4
+    evaluations, converges without a cutback (11 iterations). Either way P
+    is a tight Newton run's (-tao_gttol 1e-10, the line search free) to 1e-10
+    (measured 3.0e-11 and 3.4e-11)."""
+    args = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", 0.2]
+    limited = args + ["-tao_ls_max_funcs", ls_funcs]
+    on = run_contact(limited, tmp_path, name="on", ranks=2).summary
     ref = run_contact(args + ["-tao_gttol", "1e-10"], tmp_path, name="ref").summary
     dP = abs(on["contact_force"] / ref["contact_force"] - 1)
-    print(f"without cutback: exit {off.returncode}; with: {on['load_cutbacks']} cutback(s), {on['stages']} stages, "
+    print(f"ls_max_funcs {ls_funcs}: {on['load_cutbacks']} cutback(s), {on['stages']} stages, "
           f"{on['iterations']} iterations, P {on['contact_force']:.12g}; Newton: P {ref['contact_force']:.12g}, {dP:.1e} apart")
-    if off.returncode == 0:
-        assert on["load_cutbacks"] == 0
-        assert abs(on["contact_force"] - off.summary["contact_force"]) <= 1e-12 * on["contact_force"]
-    else:
+    if ls_funcs == 2:
+        off = run_contact(limited + ["-load_cutbacks", 0], tmp_path, name="off", ranks=2, check=False)
         assert off.returncode == 2 and "(DIVERGED_LS_FAILURE)" in off.stderr, off.stderr
-        assert on["load_cutbacks"] >= 1 and on["stages"] >= 3   # the failed stage from rest, then loads 1/2 and 1
-    assert dP <= 1e-8
+        assert on["load_cutbacks"] == 1 and on["stages"] == 3   # the failed stage from rest, then loads 1/2 and 1
+    else:
+        assert on["load_cutbacks"] == 0 and on["stages"] == 1
+    assert dP <= 1e-10
     f, reaction = on["contact"]["interface"]["force"][0], on["reactions"]["block:push"][0]
-    assert abs(abs(f) - abs(reaction)) <= 1e-6 * abs(reaction)
+    bound = math.sqrt(on["dofs"]) * on["gradient_norm"] + 1000 * EPS * abs(reaction)
+    assert abs(abs(f) - abs(reaction)) <= bound
 
 
 def test_cutback_names_the_load(tmp_path):

@@ -9,7 +9,8 @@ that must come out unchanged, and nothing else may appear beside them):
 - a load acting at a node in a component that a force control holds;
 - a group named twice in -<body>_bc, before anything is meshed.
 Warned, one line `contact: warning: ...`, and the run goes on: a load whose
-part in a component acts only at nodes held in that component.
+part in a component acts only at nodes held in that component; bodies that
+overlap before any load (the reference scene's disc moved into the block).
 
 Beside each check, its valid neighbour runs with nothing on stderr, and its
 answer is checked against a solution that does not come from the program:
@@ -233,3 +234,43 @@ def test_load_on_group_held_in_other_component(held, tmp_path):
     assert abs(r.summary["reactions"]["plate:bottom"][1] - P * L) < 1e-12 * P * L
     if held == "none":
         assert nodal_error(r, 0.0, -P) < 1e-12
+
+
+def hertz_moved(xc, *extra):
+    """The reference scene (h = 0.1) with the disc's centre at (xc, 0): its
+    arc reaches x = xc + 1, past the block's face x = 0 by 1 + xc."""
+    return ["-options_file", "meshes/hertz/hertz.opts",
+            "-indenter_geo_params", f"R=1,xc={xc},yc=0,xclamp=-1.8,xcontact=-0.5", *extra]
+
+
+@pytest.mark.parametrize("xc,order", [(-0.99, "indenter"), (-0.9, "indenter"), (-0.9, "block")])
+def test_overlap_at_start_warns(xc, order, tmp_path):
+    """Bodies that overlap before any load: the disc moved into the block by
+    d = 1 + xc (0.01 and 0.1, about 0.1 and 1 times the contact edges' mean
+    length 0.096). One warning line names the pair, the surface, both
+    bodies and the depth, which is the geometry's: the disc's nodes lie on
+    its circle, the deepest at the angle of the node nearest the axis, so
+    the depth printed is d to 3 digits (measured 0.01 and 0.1); the run goes
+    on and solves the interference fit (status 0). Either surface order
+    (the block's surface named first) gives the line."""
+    pairs = [] if order == "indenter" else ["-contact_interface_surfaces", "block:contact,indenter:contact"]
+    r = run_contact(hertz_moved(xc, *pairs), tmp_path)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("contact: warning: pair interface: before any load, surface "), lines
+    line = lines[0]
+    for name in ("indenter", "block"):
+        assert f"body {name}" in line, line
+    depth = float(line.split("by up to ")[1].split(",")[0])
+    print(line)
+    assert abs(depth - (1 + xc)) <= 5e-3 * (1 + xc), (depth, 1 + xc)
+    assert r.summary["contact_force"] > 0
+
+
+@pytest.mark.parametrize("xc", [-1.0, -0.999])
+def test_touching_or_shallow_fit_is_quiet(xc, tmp_path):
+    """Its neighbours: the disc touching the block (the shipped scene, largest
+    overlap measured 8e-17) and moved in by 1e-3, 0.01 of the edges' mean
+    length (below the warning's 0.05): nothing on stderr, status 0."""
+    r = run_contact(hertz_moved(xc), tmp_path)
+    assert r.stderr.strip() == "", r.stderr[-2000:]
+    assert r.summary["contact_force"] > 0

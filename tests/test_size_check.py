@@ -56,7 +56,8 @@ def test_graded_too_large_refused(tmp_path):
     seconds, the estimate over the limit (far past the probes' guard it is a
     lower bound: 6.5e7 measured)."""
     line, elapsed = refused(SPHERE + ["-ball_mesh_size", "1e-5", "-max_dofs", "2e6"], tmp_path)
-    assert "ball.geo" in line and "would give about" in line and "(-max_dofs)" in line, line
+    assert "body ball: " in line and "ball.geo" in line and "would give about" in line and "(-max_dofs)" in line, line
+    assert line.endswith("use a larger -ball_mesh_size"), line
     dofs = float(line.split(" dofs and ")[0].split()[-1])
     assert 2e6 < dofs <= 5.7e9 * 1.2, line
     assert elapsed < 30, elapsed
@@ -69,7 +70,8 @@ def test_refined_below_h_refused(tmp_path):
     4.5 * 2 * (pi 0.05^2 / 2) / 1e-10 = 3.5e8 dofs. Refused in seconds under
     -max_dofs 2e6 (the estimate a lower bound: 8.2e6 measured)."""
     line, elapsed = refused(SMALL + ["-block_geo_params", "x0=0,W=1,H=2,hc=1e-5,rc=0.05,dc=1", "-max_dofs", "2e6"], tmp_path)
-    assert "block.geo" in line and "would give about" in line and "(-max_dofs)" in line, line
+    assert "body block: " in line and "block.geo" in line and "would give about" in line and "(-max_dofs)" in line, line
+    assert line.endswith("use a larger -block_mesh_size"), line
     dofs = float(line.split(" dofs and ")[0].split()[-1])
     assert 2e6 < dofs <= 3.5e8 * 1.5, line
     assert elapsed < 30, elapsed

@@ -1,19 +1,23 @@
-/* A body held by contact: one whose Dirichlet conditions leave a rigid
-   motion free, which a load (a traction or a pressure) presses into a
-   contact. Its energy has no minimum without the contact, and the contact
-   holds it only once the bodies touch: from rest the stiffness is singular,
-   and the Newton step's factorisations (of K alone, in the Schur step) need
-   it regular.
+/* A body held by contact: one whose Dirichlet conditions leave a rigid motion
+   free, in a contact pair of a scene that something loads (its own traction
+   or pressure, or another body's load, displacement or force passed on
+   through a contact: a roller between two races). Its energy has no minimum
+   without the contact, and the contact holds it only once the bodies touch:
+   from rest the stiffness is singular, and the Newton step's factorisations
+   (of K alone, in the Schur step) need it regular.
 
-   So the free rigid motions are anchored: at most two vertices, A and B,
-   get Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no
-   rigid motion free), each force-controlled with force zero
-   (forcecontrol.c). Every solve of the outer iteration is then regular (the
-   anchors hold the body where the contact does not yet), and at its end each
-   anchor's reaction is zero: the anchors carry nothing, the body is held by
-   the contact alone, and the answer is the free body's. A is the loaded
-   vertex nearest the loaded vertices' centroid (the anchor carries the load
-   until the contact takes it, so it sits where the load is), B the vertex
+   So the free rigid motions are anchored: at most two vertices, A and B, get
+   Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no rigid
+   motion free), each force-controlled with force zero, found by the outer
+   iteration of held.c. Every solve of it is then regular (the anchors hold
+   the body where the contact does not yet), and at its end each anchor's
+   reaction is zero (within what held.c allows where the contact cannot hold
+   the motion, a roller's sliding): the anchors carry nothing, the body is
+   held by the contact alone, and the answer is the free body's. A is the
+   loaded vertex nearest the loaded vertices' centroid (the anchor carries the
+   load until the contact takes it, so it sits where the load is), or for a
+   body with no load of its own (a roller between two races, loaded through
+   them) the vertex nearest the centre of its bounding box; B the vertex
    farthest from A (a lever arm against rotation); a component a Dirichlet
    condition holds at a vertex is not anchored there. */
 #include "body.h"
@@ -91,6 +95,7 @@ PetscErrorCode BodyAddAnchors(Body b)
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
   n = ve - vs;
+  PetscCall(BodyCheckSecondOrder(b));
   PetscCall(BodyVertexCoordinates(b, &xy));
   PetscCall(BodyPointsBox(b, n, xy, lo, hi));
   c[0] = 0.5 * (lo[0] + hi[0]);
@@ -119,7 +124,12 @@ PetscErrorCode BodyAddAnchors(Body b)
       m[2] += 1;
     }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 3, MPIU_REAL, MPIU_SUM, b->comm)); /* a vertex shared by ranks counts twice: the centroid moves, not the choice's rule */
-    PetscCheck(m[2] > 0, b->comm, PETSC_ERR_USER_INPUT, "body %s: a rigid motion is free and its loads have no vertex to anchor", b->name);
+    if (!(m[2] > 0)) { /* no load of its own: the vertex nearest its box's centre (the same on every partition) */
+      m[0] = c[0];
+      m[1] = c[1];
+      m[2] = 1;
+      for (PetscInt k = 0; k < n; ++k) on[k] = PETSC_TRUE;
+    }
     for (PetscInt k = 0; k < n; ++k) {
       const PetscReal d = PetscSqr(xy[2 * k] - m[0] / m[2]) + PetscSqr(xy[2 * k + 1] - m[1] / m[2]);
       if (!on[k]) continue;

@@ -191,7 +191,7 @@ PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs
   if (!b->generate) PetscFunctionReturn(0);
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(contactLog.mesh));
-  PetscCall(MeshGenerate(b->comm, b->geo, b->h, b->ngeoparams, b->geoparams, b->bgm, meshDir, maxDofs, limit, estimateOnly, b->msh, sizeof(b->msh)));
+  PetscCall(MeshGenerate(b->comm, b->name, b->geo, b->h, b->ngeoparams, b->geoparams, b->bgm, meshDir, maxDofs, limit, estimateOnly, b->msh, sizeof(b->msh)));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&t1));
   b->tmesh += t1 - t0;
@@ -341,6 +341,24 @@ PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscI
   PetscFunctionReturn(0);
 }
 
+/* A first-order mesh has affine coordinates, not a P2/Q2 coordinate field:
+   refused in one line, before anything reads the coordinate field. */
+PetscErrorCode BodyCheckSecondOrder(Body b)
+{
+  DM           cdm;
+  PetscInt     nf;
+  PetscObject  obj = NULL;
+  PetscClassId cid = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
+  PetscCall(DMGetNumFields(cdm, &nf));
+  if (nf == 1) PetscCall(DMGetField(cdm, 0, NULL, &obj));
+  if (obj) PetscCall(PetscObjectGetClassId(obj, &cid));
+  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
+  PetscFunctionReturn(0);
+}
+
 /* The coordinates of this rank's vertices ([v - vStart][2], PetscFree), by
    evaluating each cell's coordinate field at the displacement element's
    reference nodes (continuous Q2 on quads, cellwise P2 on triangles: a
@@ -437,11 +455,10 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   Vec                coords;
   PetscTabulation    T, Tc;
   PetscQuadrature    q;
-  PetscInt           cStart, cEnd, nq, nf, ncb, ncc;
+  PetscInt           cStart, cEnd, nq, ncb, ncc;
   const PetscReal   *qw;
   PetscReal          ref[9 * 2];
   PetscObject        obj;
-  PetscClassId       cid = 0;
   PetscFE            cfe;
   PetscReal          bad[5] = {0, 0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J, det J at its first point */
   PetscMPIInt        rank, size, first;
@@ -449,12 +466,8 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(DMGetCoordinateDM(b->dm, &cdm));
-  PetscCall(DMGetNumFields(cdm, &nf));
-  obj = NULL;
-  if (nf == 1) PetscCall(DMGetField(cdm, 0, NULL, &obj));
-  if (obj) PetscCall(PetscObjectGetClassId(obj, &cid));
-  /* a first-order mesh has affine coordinates, not a P2/Q2 coordinate field */
-  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
+  PetscCall(BodyCheckSecondOrder(b));
+  PetscCall(DMGetField(cdm, 0, NULL, &obj));
   cfe = (PetscFE)obj;
   PetscCall(PetscFEGetDimension(cfe, &ncb));
   PetscCall(DMGetCoordinatesLocal(b->dm, &coords));

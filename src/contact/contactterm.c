@@ -1,6 +1,7 @@
 /* The part of a contact pair's energy term that every formulation shares:
    its surfaces and searches, and the operations that touch nothing else. */
 #include "contactterm.h"
+#include "gap.h"
 
 /* The penalty against the mesh. The penalty adds a compliance 1/k_p per unit
    area to the contact: the bodies overlap by d = p/k_p where an element of
@@ -30,6 +31,46 @@ static PetscErrorCode ContactTermSetPenalty(ContactTerm *b)
   PetscFunctionReturn(0);
 }
 
+/* Bodies that overlap before any load: each surface's nodes against the
+   other surface, where their closest point lies on it (not past its ends),
+   in the reference configuration. An overlap deeper than
+   CONTACT_OVERLAP_WARN of the contact edges' mean length (the shorter of
+   the two surfaces' means) is worth a line: an interference fit is legal
+   and goes on, but a body put inside another by accident (a sign, a
+   misplaced centre) should be visible before it is solved. The nodes of a
+   curved surface lie on its geometry and its edges within O(h^3 / R^2) of
+   it, far below the fraction on any mesh that resolves the contact. */
+#define CONTACT_OVERLAP_WARN 0.05
+static PetscErrorCode ContactTermCheckOverlap(ContactTerm *b, Body bodies[])
+{
+  PetscReal depth = 0.0, hmean = PETSC_MAX_REAL;
+  PetscInt  deepest = -1;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    if (b->S[s].ne > 0) hmean = PetscMin(hmean, ContactSurfaceLength(&b->S[s]) / b->S[s].ne);
+    PetscCall(ContactSearchBuild(b->search[s]));
+  }
+  b->built = PETSC_TRUE;
+  for (PetscInt s = 0; s < 2; ++s) {
+    const ContactSurface *S = &b->S[s], *M = &b->S[1 - s];
+    if (M->ne == 0) continue;
+    for (PetscInt n = 0; n < S->nn; ++n) {
+      ContactGap P;
+      ContactGapProject(M, b->search[1 - s], &S->X[2 * n], &P);
+      if (P.me < 0 || P.ext || !(-P.gap > depth)) continue;
+      depth   = -P.gap;
+      deepest = s;
+    }
+  }
+  if (deepest >= 0 && depth > CONTACT_OVERLAP_WARN * hmean) {
+    const ContactSurface *S = &b->S[deepest], *M = &b->S[1 - deepest];
+    PetscCall(PetscFPrintf(bodies[S->body]->comm, PETSC_STDERR, "contact: warning: pair %s: before any load, surface %s of body %s lies inside body %s by up to %.3g, %.3g times the contact edges' mean length %.3g: an interference fit is solved as given; if it is not one, check the bodies' geometry\n", b->spec.name, S->group, bodies[S->body]->name, bodies[M->body]->name, (double)depth, (double)(depth / hmean), (double)hmean));
+  }
+  PetscCall(PetscInfo(NULL, "pair %s: largest overlap before any load %g (edges' mean length %g)\n", b->spec.name, (double)depth, (double)hmean));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal defaultBlend)
 {
   const PetscReal blend = b->spec.blend < 0 ? defaultBlend : b->spec.blend;
@@ -42,6 +83,7 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
     PetscCall(ContactSearchCreate(S, &b->search[s]));
   }
   PetscCall(ContactTermSetPenalty(b));
+  PetscCall(ContactTermCheckOverlap(b, bodies));
   if (!b->spec.kpAuto && ContactPairPenaltyStiffness(&b->spec) < CONTACT_PENALTY_SOFT) {
     const ContactPairSpec *spec = &b->spec;
     PetscCall(PetscFPrintf(bodies[b->S[0].body]->comm, PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)ContactPairPenaltyStiffness(spec), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));

@@ -608,12 +608,12 @@ static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, 
   PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
   PetscCall(RunSetUp(cur, rec));
   if (!prev) PetscFunctionReturn(0);
-  PetscCall(VecGetSize(cur->X, &n));
-  PetscCall(VecGetSize(prev->X, &nprev));
+  PetscCall(VecGetSize(cur->Xb, &n));
+  PetscCall(VecGetSize(prev->Xb, &nprev));
   PetscCheck(n > nprev, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the refined meshes have %" PetscInt_FMT " dofs, no more than the last step's %" PetscInt_FMT ": a .geo ignores the size field (a transfinite mesh without the adapt parameter? see docs/scenes.md, Geometry files)", n, nprev);
   if (acc->warm) { /* from the last step's answer */
     Vec X0;
-    PetscCall(VecDuplicate(cur->X, &X0));
+    PetscCall(VecDuplicate(cur->Xb, &X0));
     PetscCall(AccuracyInterpolate(prev, cur, X0));
     PetscCall(ProblemSetInitialGuess(cur, X0));
     PetscCall(VecDestroy(&X0));
@@ -687,7 +687,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
       PetscCall(RunCreateProblem(acc->comm, &cur));
     }
     PetscCall(AccuracyStepSetUp(acc, k, prev, cur, fields, rec));
-    PetscCall(VecGetSize(cur->X, &st->dofs));
+    PetscCall(VecGetSize(cur->Xb, &st->dofs));
     PetscCall(ContactProgressPhase("the solve", "accuracy step %" PetscInt_FMT ": solve, %" PetscInt_FMT " dofs", k, st->dofs));
     PetscCall(RunSolve(cur, rec, &converged));
     st->tsolve = rec->time[RUN_TIME_SOLVE] - t0;

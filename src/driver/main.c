@@ -1,3 +1,5 @@
+/* The program: PETSc's start and end, the error handler, the log events and
+   stages, and the pipeline (run.c) run once or under -accuracy (accuracy.c). */
 static const char help[] = "Frictionless contact between 2D linear-elastic bodies by the penalty method,\n"
                            "minimised with TAO. A scene is an options file: see meshes/hertz/hertz.opts.\n"
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
@@ -111,7 +113,7 @@ static PetscErrorCode Run(int *status)
       PetscCall(RunMesh(problem, NULL));
       PetscCall(ContactProgressPhase("set-up", "set-up: reading and distributing the meshes, the stiffness"));
       PetscCall(RunSetUp(problem, &rec));
-      PetscCall(VecGetSize(problem->X, &n));
+      PetscCall(VecGetSize(problem->Xb, &n));
       PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
       PetscCall(RunSolve(problem, &rec, &rec.converged));
       PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));

@@ -311,7 +311,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   reason = p->res.reason; /* the solve's, as printed: TAO's last, or the program's (a decrement floor, force control) */
   PetscCall(TaoGetType(p->tao, &type));
-  PetscCall(VecGetSize(p->X, &dofs));
+  PetscCall(VecGetSize(p->Xb, &dofs));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     umax = PetscMax(umax, F[i].umax);
     unorm2 += F[i].unorm2;

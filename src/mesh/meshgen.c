@@ -189,7 +189,7 @@ static int FileTag(const char path[], char tag[], size_t len)
   return 0;
 }
 
-PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len)
+PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len)
 {
   PetscMPIInt rank;
   int         err = 0;
@@ -281,7 +281,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char geo[], PetscReal h, PetscI
         if (size.nodes > 0 && 2.0 * size.nodes > *maxDofs) {
           err = 1;
           PetscCall(MeshSizeSource(&size, source, sizeof(source)));
-          PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "mesh size h = %g for %s would give about %.2g elements, %.3g dofs and %.2g GB (%s), more than the %.3g dofs left of the limit (%s); use a larger mesh size", (double)h, geo, size.elements, 2.0 * size.nodes, 2.0 * size.nodes * CONTACT_BYTES_PER_DOF / 1e9, source, (double)*maxDofs, limit));
+          PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "body %s: mesh size h = %g for %s would give about %.2g elements, %.3g dofs and %.2g GB (%s), more than the %.3g dofs left of the limit (%s); use a larger -%s_mesh_size", body, (double)h, geo, size.elements, 2.0 * size.nodes, 2.0 * size.nodes * CONTACT_BYTES_PER_DOF / 1e9, source, (double)*maxDofs, limit, body));
           if (size.kept) (void)unlink(msh);
         } else if (size.nodes > 0) *maxDofs -= 2.0 * size.nodes; /* what is left for the other bodies */
       }

@@ -4,33 +4,84 @@
 
      minimise over (u, U)   Pi(u; U) - F . U,
 
-   Pi(u; U) the energy with the controlled groups displaced by U. Minimising
-   over u first leaves Pi*(U) = min_u Pi(u; U), whose derivative is the
-   reaction R(U) = dPi/dU (the envelope theorem: the sum of dPi/du over the
-   group's constrained dofs, what BodyComputeReactions computes), so the
-   stationary point is R(U) = F: the group's reaction equals the force. The
-   minimisation is done in that order: an outer iteration on U (one unknown
-   per controlled component) around the usual solve of u, which keeps every
-   inner problem displacement-controlled, so that a body whose only support
-   in that direction is the contact stays supported by the imposed U.
+   Pi(u; U) the energy with the controlled groups displaced by U. Its
+   derivative in U_k is the reaction of group k, R_k = dPi/dU_k (the sum of
+   dPi/du over the group's dofs in that component, what BodyComputeReactions
+   computes), so at the minimum R = F: the group's reaction is the force.
 
-   The outer iteration is Broyden's method on r(U) = R(U) - F: a first solve
-   at U = 0, then a probe of each component by delta = rho sign(F - R) (rho =
-   1e-2 of the body's size) that gives the initial Jacobian's columns, then
-   quasi-Newton steps U <- U - J^-1 r with Broyden's update. A step is capped
-   at 4 times the last (the reaction of a contact that has just closed is
-   flat, so a first secant can overshoot), and where the secant says the
-   reaction does not grow with U (a body not yet in contact) the step goes on
-   in the force's direction, doubled. Each trial is solved from the last
-   converged state (one stage: the load and penalty stages, if any, are for
-   the first solve from rest). It stops when |R - F| <= -force_control_rtol
-   (1e-9) times |F| in every component (an anchor's F is 0: times the size
-   of its body's loads, anchors.c), or after -force_control_max_it solves. */
+   Two types, by name (-force_control_type, ForceControlList):
+   - coupled (the default): the U are unknowns of the one minimisation, the
+     last m entries of rank 0's part of X; the gradient in U_k is R_k - F_k,
+     the energy has -F . U, and the Hessian is bordered by
+       K_fU = K_fc 1 (column k: the force on the free dofs when group k moves
+       by 1, ctrlB[k]) and K_UU = 1^T K_cc 1 (ctrlD),
+     which the Newton step eliminates (forceborder.c) with the solve it
+     already has. One solve, as a displacement run's; measured in
+     results/force_control.json. Assumption: the border is the elastic
+     stiffness's alone, so a controlled group on a contact surface (whose
+     nodes the contact would couple to U) gets a Newton step without that
+     coupling: still a descent direction, no longer Newton's.
+     With load stepping (load factor lambda) the group moves by U, and the
+     force is lambda F: the group's Dirichlet value is set to U / lambda,
+     which the body scales by lambda.
+     It ends where the solve's gradient test ends it (its last stage
+     relative to the gradient at rest of the displacement run of the U
+     found, problem.c); where -force_control_rtol is given and a reaction is
+     then further from its force than it, the solve goes on from there with
+     the gradient tolerance -force_control_rtol times the least |F| (one
+     more solve, counted in force_control_solves).
+   - outer: an outer iteration on U around displacement-controlled solves
+     (forceouter.c). The anchors of a body held by contact (anchors.c)
+     always take it: an anchor's force is zero and its body, before the
+     contact holds it, has no stiffness in U, which every inner solve of the
+     outer iteration needs. */
 #include "problem.h"
-#include <petscblaslapack.h>
+
+PetscFunctionList ForceControlList = NULL;
+
+static PetscErrorCode ProblemSolveControlledCoupled(Problem, PetscInt *, TaoConvergedReason *);
+
+static PetscErrorCode ForceControlFinalize(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&ForceControlList));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ForceControlRegisterAll(void)
+{
+  PetscFunctionBeginUser;
+  if (ForceControlList) PetscFunctionReturn(0);
+  PetscCall(PetscFunctionListAdd(&ForceControlList, "coupled", ProblemSolveControlledCoupled));
+  PetscCall(PetscFunctionListAdd(&ForceControlList, "outer", ProblemSolveControlledOuter));
+  PetscCall(PetscRegisterFinalize(ForceControlFinalize));
+  PetscFunctionReturn(0);
+}
+
+/* The size of body b: its reference bounding box's diagonal. */
+static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
+{
+  Body      b = p->bodies[body];
+  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < b->ncells * b->nb; ++k) /* every node of this rank's cells */
+    for (PetscInt d = 0; d < 2; ++d) {
+      lo[d] = PetscMin(lo[d], b->xnode[2 * k + d]);
+      hi[d] = PetscMax(hi[d], b->xnode[2 * k + d]);
+    }
+  lo[0] = -lo[0];
+  lo[1] = -lo[1];
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MAX, p->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MAX, p->comm));
+  *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ProblemCollectControls(Problem p)
 {
+  PetscBool anchors = PETSC_FALSE, coupled;
+
   PetscFunctionBeginUser;
   p->ncontrols = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
@@ -48,172 +99,243 @@ PetscErrorCode ProblemCollectControls(Problem p)
         fc->scale = PetscAbsReal(fc->force);
         for (PetscInt l = 0; l < p->bodies[i]->nload; ++l) fc->scale += PetscSqrtReal(PetscSqr(p->bodies[i]->load[l].force[0]) + PetscSqr(p->bodies[i]->load[l].force[1]));
         if (!(fc->scale > 0)) fc->scale = 1.0;
+        PetscCall(ControlBodySize(p, i, &fc->L));
+        anchors = (PetscBool)(anchors || p->bodies[i]->bc[j].anchor);
       }
+  PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &coupled));
+  p->coupled = (PetscBool)(p->ncontrols > 0 && coupled && !anchors);
+  if (p->ncontrols && coupled && anchors) PetscCall(PetscInfo(NULL, "force control: a body held by contact is anchored: the outer iteration\n"));
   PetscFunctionReturn(0);
 }
 
-/* The size of the body of control k: its reference bounding box's diagonal. */
-static PetscErrorCode ControlBodySize(Problem p, PetscInt k, PetscReal *L)
+/* Column k of the border and the controls' own stiffness: the gradient of
+   the elastic energy at the local vector e_k (1 on group k's nodes in its
+   component, 0 elsewhere) minus the gradient at 0, K e_k (the energy is
+   quadratic), summed to the free dofs (B_k) and over each control's group
+   (D_lk, as a reaction). */
+static PetscErrorCode ProblemControlColumn(Problem p, PetscInt k)
 {
-  Body      b = p->bodies[p->controls[k].body];
-  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+  const ForceControl *fc = &p->controls[k];
+  Body                b  = p->bodies[fc->body];
+  const PetscReal     v0 = b->bc[fc->bc].values[fc->c];
+  Vec                 e, z, g0;
+  PetscScalar        *a;
+  PetscReal           en;
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < b->ncells * b->nb; ++k) /* every node of this rank's cells */
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], b->xnode[2 * k + d]);
-      hi[d] = PetscMax(hi[d], b->xnode[2 * k + d]);
-    }
-  lo[0] = -lo[0];
-  lo[1] = -lo[1];
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MAX, p->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MAX, p->comm));
-  *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]));
+  PetscCall(VecDuplicate(b->Xl, &e));
+  PetscCall(VecDuplicate(b->Xl, &z));
+  PetscCall(VecDuplicate(b->Xl, &g0));
+  PetscCall(BodySetBCValue(b, fc->bc, fc->c, 1.0));
+  PetscCall(VecCopy(b->bclFull, e));
+  PetscCall(BodySetBCValue(b, fc->bc, fc->c, 0.0));
+  PetscCall(VecAXPY(e, -1.0, b->bclFull));
+  PetscCall(BodySetBCValue(b, fc->bc, fc->c, v0));
+  PetscCall(VecZeroEntries(z));
+  PetscCall(VecZeroEntries(g0));
+  PetscCall(BodyComputeEnergyGradient(b, z, &en, g0));
+  PetscCall(VecZeroEntries(b->Gl));
+  PetscCall(BodyComputeEnergyGradient(b, e, &en, b->Gl));
+  PetscCall(VecAXPY(b->Gl, -1.0, g0));
+  PetscCall(BodyComputeReactions(b, b->Gl));
+  for (PetscInt l = 0; l < p->ncontrols; ++l) {
+    const ForceControl *fl = &p->controls[l];
+    const BodyBC       *bc = &p->bodies[fl->body]->bc[fl->bc];
+    p->ctrlD[l * p->ncontrols + k] = fl->body == fc->body ? bc->reaction[bc->comps[fl->c]] : 0.0;
+  }
+  PetscCall(VecDuplicate(p->Xb, &p->ctrlB[k]));
+  PetscCall(VecZeroEntries(p->ctrlB[k]));
+  PetscCall(VecGetArray(p->ctrlB[k], &a));
+  PetscCall(VecPlaceArray(b->Gg, a + p->offset[fc->body]));
+  PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
+  PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
+  PetscCall(VecResetArray(b->Gg));
+  PetscCall(VecRestoreArray(p->ctrlB[k], &a));
+  PetscCall(VecDestroy(&e));
+  PetscCall(VecDestroy(&z));
+  PetscCall(VecDestroy(&g0));
   PetscFunctionReturn(0);
 }
 
-/* Sets the controls' displacements U and solves, from X0 (or rest, with the
-   scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
-static PetscErrorCode ControlSolve(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
+PetscErrorCode ProblemSetUpControlBorder(Problem p)
 {
-  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-  PetscInt       n;
+  const PetscInt m = p->ncontrols;
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    ForceControl *fc = &p->controls[k];
-    fc->U            = U[k];
-    PetscCall(BodySetBCValue(p->bodies[fc->body], fc->bc, fc->c, U[k]));
-  }
-  PetscCall(VecDestroy(&p->X0));
-  if (X0) { /* from the last converged state: one stage */
-    PetscCall(ProblemSetInitialGuess(p, X0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
-  }
-  PetscCall(ProblemSolveStaged(p, &n, reason));
-  p->sched.loadSteps     = loadSteps;
-  p->sched.penaltyStages = stages;
-  p->res.controlSolves++;
-  *its += n;
-  if (*reason <= 0) PetscFunctionReturn(0);
-  PetscCall(ProblemComputeReactions(p, p->X));
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    ForceControl *fc = &p->controls[k];
-    const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
-    fc->R            = bc->reaction[bc->comps[fc->c]];
-    R[k]             = fc->R;
+  if (!p->coupled) PetscFunctionReturn(0);
+  for (PetscInt k = 0; k < m; ++k) PetscCall(ProblemControlColumn(p, k));
+  for (PetscInt k = 0; k < m; ++k) {
+    PetscCheck(p->ctrlD[k * m + k] > 0, p->comm, PETSC_ERR_USER_INPUT, "body %s: force-controlled group %s has no stiffness of its own (no cell touches it on any rank)", p->bodies[p->controls[k].body]->name, p->bodies[p->controls[k].body]->bc[p->controls[k].bc].group);
+    for (PetscInt l = 0; l < k; ++l) p->ctrlD[k * m + l] = p->ctrlD[l * m + k] = 0.5 * (p->ctrlD[k * m + l] + p->ctrlD[l * m + k]);
   }
   PetscFunctionReturn(0);
 }
 
-/* Whether every reaction is its force to the tolerance. */
-static PetscBool ControlConverged(Problem p, const PetscReal R[])
+PetscErrorCode ProblemSetControlDisplacements(Problem p, Vec X)
+{
+  PetscReal          U[CONTACT_MAX_CONTROLS];
+  PetscInt           n, nb;
+  PetscMPIInt        rank, m;
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  if (!p->coupled) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscCall(VecGetLocalSize(p->Xb, &nb));
+  if (!rank) {
+    PetscCheck(n == nb + p->ncontrols, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "force control: a vector without the controlled displacements");
+    PetscCall(VecGetArrayRead(X, &x));
+    for (PetscInt k = 0; k < p->ncontrols; ++k) U[k] = PetscRealPart(x[nb + k]);
+    PetscCall(VecRestoreArrayRead(X, &x));
+  }
+  PetscCall(PetscMPIIntCast(p->ncontrols, &m));
+  PetscCallMPI(MPI_Bcast(U, m, MPIU_REAL, 0, p->comm));
+  for (PetscInt k = 0; k < p->ncontrols; ++k) {
+    ForceControl   *fc = &p->controls[k];
+    Body            b  = p->bodies[fc->body];
+    const PetscReal v  = b->loadFactor > 0 ? U[k] / b->loadFactor : 0.0;
+    fc->U              = U[k];
+    if (b->bc[fc->bc].values[fc->c] != v) PetscCall(BodySetBCValue(b, fc->bc, fc->c, v));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
+{
+  PetscBool   done[CONTACT_MAX_BODIES] = {PETSC_FALSE};
+  PetscMPIInt rank;
+  PetscInt    nb;
+
+  PetscFunctionBeginUser;
+  if (!p->coupled) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCall(VecGetLocalSize(p->Xb, &nb));
+  for (PetscInt k = 0; k < p->ncontrols; ++k) {
+    ForceControl *fc = &p->controls[k];
+    Body          b  = p->bodies[fc->body];
+    const BodyBC *bc = &b->bc[fc->bc];
+    if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
+    done[fc->body] = PETSC_TRUE;
+    fc->R          = bc->reaction[bc->comps[fc->c]];
+    *f -= b->loadFactor * fc->force * fc->U;
+  }
+  PetscCall(PetscInfo(NULL, "force control: U_0 = %.10g, reaction %.10g, energy %.10g\n", (double)p->controls[0].U, (double)p->controls[0].R, (double)*f));
+  if (!rank) {
+    PetscScalar *g;
+    PetscCall(VecGetArray(G, &g));
+    for (PetscInt k = 0; k < p->ncontrols; ++k) g[nb + k] = p->controls[k].R - p->bodies[p->controls[k].body]->loadFactor * p->controls[k].force;
+    PetscCall(VecRestoreArray(G, &g));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Coupled force control's penalty continuation, where the user chose none:
+   from where the stiffest pair's k_p h / E* is CONTROL_START_STIFFNESS, in
+   stages at most CONTROL_STAGE_FACTOR apart, unless the schedule already
+   chosen starts as soft (L-BFGS's, lmvm.c). From rest nothing holds a force-controlled body but the contact,
+   whose Hessian holds only the points already in contact: a Newton step
+   towards the force closes points beyond them, and at a stiff penalty the
+   line search cuts the step to the first of them, so that the contact zone
+   grows by a few points a step. At k_p h / E* about 1 the contact is as
+   soft as the bodies and full steps hold; the stiffer stage starts from the
+   softer one's wider zone, which it only shrinks, as a displacement run's
+   steps do. Measured (scripts/force_control_table.py, 1 rank; in brackets
+   the displacement run's): the hertz scene at k_p = 2e6 (k_p h / E* = 364)
+   20 iterations in one stage, 12 in 2 from 1e-2, 13 in 3 from 2.7e-3 or in
+   2 from 1e-3 (8); softdisc at hc = 0.0007 19 in the automatic penalty's 2
+   stages from 0.03, 13 in 2 from 1e-2, 10 in 2 from 1e-3, 11 in 3 from
+   1e-3 (7); sphere 12 in 3 stages from 1e-3, 11 in 2 (6); all at
+   -force_control_step 0.1. So one jump, of
+   at most 1000. */
+#define CONTROL_START_STIFFNESS 1.0
+#define CONTROL_STAGE_FACTOR    1000.0
+
+PetscErrorCode ProblemSetControlContinuation(Problem p)
+{
+  PetscReal stiff = 0.0, s, start;
+  PetscInt  stages;
+
+  PetscFunctionBeginUser;
+  if (!p->coupled || p->opt.penaltyStagesSet || p->opt.penaltyStartSet) PetscFunctionReturn(0);
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
+    stiff = PetscMax(stiff, s);
+  }
+  if (!(stiff > CONTROL_START_STIFFNESS)) PetscFunctionReturn(0);
+  start = CONTROL_START_STIFFNESS / stiff;
+  if (p->sched.penaltyStages > 1 && p->sched.penaltyStart <= start) PetscFunctionReturn(0); /* a schedule as soft already (L-BFGS's) */
+  stages = 1 + (PetscInt)PetscCeilReal(PetscLogReal(1.0 / start) / PetscLogReal(CONTROL_STAGE_FACTOR) - 1e-6);
+  PetscCall(ProblemSetPenaltyContinuation(p, stages, start));
+  PetscCall(PetscInfo(NULL, "force control: k_p h / E* = %g: %" PetscInt_FMT " penalty stages from %g k_p\n", (double)stiff, stages, (double)start));
+  PetscFunctionReturn(0);
+}
+
+/* Whether every reaction is its force to -force_control_rtol. */
+static PetscBool ControlsConverged(Problem p)
 {
   for (PetscInt k = 0; k < p->ncontrols; ++k)
-    if (PetscAbsReal(R[k] - p->controls[k].force) > p->opt.controlRtol * p->controls[k].scale) return PETSC_FALSE;
+    if (PetscAbsReal(p->controls[k].R - p->controls[k].force) > p->opt.controlRtol * p->controls[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
-/* s = -J^-1 r (m small; LAPACK's LU on a copy); *ok false where J is singular. */
-static PetscErrorCode ControlNewtonStep(PetscInt m, const PetscReal J[], const PetscReal r[], PetscReal s[], PetscBool *ok)
+/* The coupled type: the staged solve of (u, U), then, while a reaction is
+   further from its force than -force_control_rtol, the solve on from there
+   with the gradient tolerance -force_control_rtol times the least scale. */
+static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscScalar  A[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS], b[CONTACT_MAX_CONTROLS];
-  PetscBLASInt n, one = 1, ipiv[CONTACT_MAX_CONTROLS], info;
+  PetscReal smin = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscBLASIntCast(m, &n));
-  for (PetscInt i = 0; i < m * m; ++i) A[i] = J[i]; /* column-major */
-  for (PetscInt i = 0; i < m; ++i) b[i] = -r[i];
-  PetscCallBLAS("LAPACKgesv", LAPACKgesv_(&n, &one, A, &n, ipiv, b, &n, &info));
-  *ok = (PetscBool)(info == 0);
-  for (PetscInt i = 0; i < m; ++i) s[i] = PetscRealPart(b[i]);
-  for (PetscInt i = 0; i < m && *ok; ++i)
-    if (PetscIsInfOrNanReal(s[i])) *ok = PETSC_FALSE;
-  PetscFunctionReturn(0);
-}
+  p->res.why[0]        = 0;
+  p->res.controlSolves = 1;
+  PetscCall(ProblemSolveStaged(p, its, reason));
+  for (PetscInt k = 0; k < p->ncontrols; ++k) smin = PetscMin(smin, p->controls[k].scale);
+  while (*reason > 0) {
+    const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
+    PetscReal      tol[3];
+    PetscInt       n;
+    Vec            X0;
 
-/* The step from U: Broyden's, capped at 4 times the last step (cap); where
-   J says the reaction does not grow towards the force (a flat or falling
-   reaction: no contact yet), the last step doubled, towards the force. */
-static PetscErrorCode ControlStep(Problem p, const PetscReal J[], const PetscReal r[], PetscReal cap, PetscReal s[])
-{
-  const PetscInt m = p->ncontrols;
-  PetscBool      ok;
-  PetscReal      big = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(ControlNewtonStep(m, J, r, s, &ok));
-  for (PetscInt k = 0; k < m && ok; ++k)
-    if (J[k * m + k] <= 0) ok = PETSC_FALSE;
-  if (!ok) {
-    for (PetscInt k = 0; k < m; ++k) s[k] = r[k] < 0 ? cap / 2 : r[k] > 0 ? -cap / 2 : 0.0; /* cap is 4 times the last step */
-    PetscFunctionReturn(0);
+    PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U (ProblemScatterToBodies) and R at X */
+    for (PetscInt k = 0; k < p->ncontrols; ++k) {
+      ForceControl *fc = &p->controls[k];
+      const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
+      fc->R            = bc->reaction[bc->comps[fc->c]];
+    }
+    if (!p->opt.controlRtolSet || ControlsConverged(p)) break;
+    if (p->res.controlSolves >= p->opt.controlMaxIt) {
+      *reason = TAO_DIVERGED_MAXITS;
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->controls[0].body]->bc[p->controls[0].bc].group, (double)p->controls[0].R, (double)p->controls[0].force));
+      break;
+    }
+    PetscCall(PetscInfo(p->tao, "force control: reaction %g, force %g: the solve goes on to the gradient %g\n", (double)p->controls[0].R, (double)p->controls[0].force, (double)(p->opt.controlRtol * smin)));
+    PetscCall(VecDuplicate(p->X, &X0));
+    PetscCall(VecCopy(p->X, X0));
+    PetscCall(ProblemSetInitialGuess(p, X0));
+    PetscCall(VecDestroy(&X0));
+    PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+    PetscCall(TaoSetTolerances(p->tao, p->opt.controlRtol * smin, tol[1], 0.0));
+    p->sched.loadSteps     = 1;
+    p->sched.penaltyStages = 1;
+    PetscCall(ProblemSolveStaged(p, &n, reason));
+    p->sched.loadSteps     = loadSteps;
+    p->sched.penaltyStages = stages;
+    PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
+    PetscCall(VecDestroy(&p->X0));
+    p->res.controlSolves++;
+    *its += n;
   }
-  for (PetscInt k = 0; k < m; ++k) big = PetscMax(big, PetscAbsReal(s[k]));
-  if (big > cap)
-    for (PetscInt k = 0; k < m; ++k) s[k] *= cap / big;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ProblemSolveControlled(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt m = p->ncontrols;
-  PetscReal      U[CONTACT_MAX_CONTROLS] = {0}, R[CONTACT_MAX_CONTROLS], r[CONTACT_MAX_CONTROLS], s[CONTACT_MAX_CONTROLS];
-  PetscReal      J[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS] = {0}, last = 0;
-  Vec            Xs;
+  PetscErrorCode (*solve)(Problem, PetscInt *, TaoConvergedReason *) = NULL;
 
   PetscFunctionBeginUser;
-  *its                   = 0;
-  p->res.controlSolves   = 0;
-  p->res.why[0]          = 0;
-  PetscCall(ControlSolve(p, U, NULL, R, its, reason)); /* from rest */
-  if (*reason <= 0) PetscFunctionReturn(0);
-  PetscCall(VecDuplicate(p->X, &Xs));
-  PetscCall(VecCopy(p->X, Xs));
-  for (PetscInt k = 0; k < m && !ControlConverged(p, R); ++k) { /* the initial Jacobian, column by column */
-    PetscReal rho = 0, R1[CONTACT_MAX_CONTROLS];
-    PetscCall(ControlBodySize(p, k, &rho));
-    rho *= 1e-2;
-    if (R[k] > p->controls[k].force) rho = -rho;
-    U[k] += rho;
-    PetscCall(ControlSolve(p, U, Xs, R1, its, reason));
-    if (*reason <= 0) break;
-    for (PetscInt i = 0; i < m; ++i) {
-      J[k * m + i] = (R1[i] - R[i]) / rho;
-      R[i]         = R1[i];
-    }
-    last = PetscMax(last, PetscAbsReal(rho));
-    PetscCall(VecCopy(p->X, Xs));
-  }
-  while (*reason > 0 && !ControlConverged(p, R)) {
-    PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
-    if (p->res.controlSolves >= p->opt.controlMaxIt) {
-      *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->controls[0].body]->bc[p->controls[0].bc].group, (double)R[0], (double)p->controls[0].force));
-      break;
-    }
-    for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->controls[k].force;
-    PetscCall(ControlStep(p, J, r, 4 * last, s));
-    for (PetscInt k = 0; k < m; ++k) U[k] += s[k];
-    PetscCall(ControlSolve(p, U, Xs, R1, its, reason));
-    if (*reason <= 0) break;
-    /* Broyden: J += (dR - J s) s^T / (s^T s) */
-    for (PetscInt k = 0; k < m; ++k) ss += s[k] * s[k];
-    for (PetscInt i = 0; i < m; ++i) {
-      Js[i] = 0;
-      for (PetscInt k = 0; k < m; ++k) Js[i] += J[k * m + i] * s[k];
-    }
-    for (PetscInt i = 0; i < m; ++i)
-      for (PetscInt k = 0; k < m; ++k) J[k * m + i] += (R1[i] - R[i] - Js[i]) * s[k] / ss;
-    last = 0;
-    for (PetscInt k = 0; k < m; ++k) {
-      R[k] = R1[k];
-      last = PetscMax(last, PetscAbsReal(s[k]));
-    }
-    PetscCall(VecCopy(p->X, Xs));
-    PetscCall(PetscInfo(p->tao, "force control: solve %" PetscInt_FMT ", U[0] = %g, reaction %g, force %g\n", p->res.controlSolves, (double)U[0], (double)R[0], (double)p->controls[0].force));
-  }
-  PetscCall(VecDestroy(&Xs));
+  PetscCall(PetscFunctionListFind(ForceControlList, p->coupled ? "coupled" : "outer", &solve));
+  PetscCheck(solve, p->comm, PETSC_ERR_PLIB, "force control: type not registered");
+  PetscCall((*solve)(p, its, reason));
   PetscFunctionReturn(0);
 }

@@ -25,14 +25,14 @@ PetscErrorCode ContactIterativeKSPSetUp(Problem p, KSP ksp)
   PC           pc;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetOwnershipRange(p->X, &rstart, &rend));
+  PetscCall(VecGetOwnershipRange(p->Xb, &rstart, &rend));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Vec          v[3];
     PetscScalar *a[3];
     PetscInt     first = n;
 
     for (PetscInt k = 0; k < 3; ++k) {
-      PetscCall(VecDuplicate(p->X, &v[k]));
+      PetscCall(VecDuplicate(p->Xb, &v[k]));
       PetscCall(VecZeroEntries(v[k]));
       PetscCall(VecGetArray(v[k], &a[k]));
     }

@@ -171,6 +171,7 @@
 #include "lmvm.h"
 #include "schur.h"
 #include "substructure.h"
+#include "forceborder.h"
 
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
 #define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
@@ -215,7 +216,7 @@ static PetscErrorCode ProblemScreenPair(Problem p, Tao tao, Vec X, Vec G)
   PetscFunctionBeginUser;
   PetscCall(VecAYPX(p->lmvmX, -1.0, X)); /* s */
   PetscCall(VecAYPX(p->lmvmG, -1.0, G)); /* y */
-  PetscCall(MatMult(p->H, p->lmvmX, p->lmvmW));
+  PetscCall(MatMult(p->H0tao, p->lmvmX, p->lmvmW));
   PetscCall(VecDotBegin(p->lmvmG, p->lmvmX, &ys));
   PetscCall(VecDotBegin(p->lmvmW, p->lmvmX, &sHs));
   PetscCall(VecDotEnd(p->lmvmG, p->lmvmX, &ys));
@@ -423,8 +424,9 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
 PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
 {
   PetscBool lmvm, blmvm, contact;
-  KSP       ksp;
+  KSP       ksp, kin;
   PC        pc;
+  Mat       H0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
@@ -432,8 +434,18 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
   contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms);
   if (contact) PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
-  PetscCall(TaoLMVMSetH0(p->tao, contact ? p->H : p->K));
-  PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+  H0 = contact ? p->H : p->K;
+  if (p->coupled) { /* H0 bordered by the controls (forceborder.c), around a KSP of H0 set up as below */
+    PetscCall(KSPCreate(p->comm, &p->ctrlKsp0));
+    PetscCall(KSPSetOperators(p->ctrlKsp0, H0, H0));
+    kin = p->ctrlKsp0;
+  } else {
+    PetscCall(PetscObjectReference((PetscObject)H0));
+    p->H0tao = H0;
+    PetscCall(TaoLMVMSetH0(p->tao, H0));
+    PetscCall(TaoLMVMGetH0KSP(p->tao, &kin));
+  }
+  ksp = kin;
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   if (contact) {
@@ -442,6 +454,14 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
     if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(p, pc));
     else PetscCall(ContactSubstructurePCSetUp(p, pc));
   } else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
+  if (p->coupled) {
+    PetscCall(ForceBorderMatCreate(p, H0, kin, &p->H0tao));
+    PetscCall(TaoLMVMSetH0(p->tao, p->H0tao));
+    PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(ForceBorderPCSetUp(p->H0tao, pc));
+  }
   PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
   PetscCall(KSPSetFromOptions(ksp));
   if (contact) {

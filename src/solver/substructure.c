@@ -122,7 +122,7 @@ static PetscErrorCode SubSetUpBodies(Problem p, SubCtx *ctx, const PetscInt G[],
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
-  PetscCall(VecGetOwnershipRanges(p->X, &ranges));
+  PetscCall(VecGetOwnershipRanges(p->Xb, &ranges));
   PetscCall(PetscMalloc1(size * nb, &offs));
   PetscCallMPI(MPI_Allgather(p->offset, (PetscMPIInt)nb, MPIU_INT, offs, (PetscMPIInt)nb, MPIU_INT, ctx->comm));
   ctx->nbodies = nb;
@@ -180,13 +180,13 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
     PetscCall(PetscMalloc1(n + 1, &ctx->D));
     PetscCall(PetscArraycpy(ctx->D, p->sub->dofs, n));
   } else { /* one rank: the whole joined vector */
-    PetscCall(VecGetSize(p->X, &n));
+    PetscCall(VecGetSize(p->Xb, &n));
     PetscCall(PetscMalloc1(n + 1, &ctx->D));
     for (PetscInt k = 0; k < n; ++k) ctx->D[k] = k;
   }
   ctx->nD = n;
 
-  PetscCall(VecDuplicate(p->X, &count));
+  PetscCall(VecDuplicate(p->Xb, &count));
   PetscCall(VecZeroEntries(count));
   PetscCall(PetscMalloc1(n + 1, &ones));
   for (PetscInt k = 0; k < n; ++k) ones[k] = 1.0;
@@ -194,7 +194,7 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
   PetscCall(PetscFree(ones));
   PetscCall(VecAssemblyBegin(count));
   PetscCall(VecAssemblyEnd(count));
-  PetscCall(VecGetOwnershipRange(p->X, &ctx->rstart, &rend));
+  PetscCall(VecGetOwnershipRange(p->Xb, &ctx->rstart, &rend));
   PetscCall(ISGetLocalSize(ctx->isc, &nsurf));
   surf = ctx->surf;
   PetscCall(PetscMalloc2(n + 1, &onB, n + 1, &gown));
