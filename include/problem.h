@@ -172,6 +172,10 @@ PetscErrorCode ProblemSolveStaged(Problem, PetscInt *its, TaoConvergedReason *re
 PetscErrorCode ProblemCollectControls(Problem);
 PetscErrorCode ProblemSolveControlled(Problem, PetscInt *its, TaoConvergedReason *reason);
 /* -force_control_type outer (forceouter.c): a solve of ProblemSolveStaged for each trial. */
+/* One trial of an outer iteration (forceouter.c): the controls' displacements
+   U set and solved from X0 (NULL: from rest, the scene's stages); R the
+   controlled groups' reactions. */
+PetscErrorCode ProblemSolveAtControls(Problem, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemSolveControlledOuter(Problem, PetscInt *its, TaoConvergedReason *reason);
 /* Coupled force control (forcecontrol.c): the border of the Hessian (after
    the stiffness's assembly); the controls' displacements from X into the

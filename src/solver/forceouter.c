@@ -26,8 +26,9 @@
 #include <petscblaslapack.h>
 
 /* Sets the controls' displacements U and solves, from X0 (or rest, with the
-   scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
-static PetscErrorCode ControlSolve(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
+   scene's stages, when X0 is NULL); R: the controlled groups' reactions
+   (problem.h; the outer iterations here and in held.c). */
+PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
   const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
   PetscInt       n;
@@ -120,7 +121,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
   *its                   = 0;
   p->res.controlSolves   = 0;
   p->res.why[0]          = 0;
-  PetscCall(ControlSolve(p, U, NULL, R, its, reason)); /* from rest */
+  PetscCall(ProblemSolveAtControls(p, U, NULL, R, its, reason)); /* from rest */
   if (*reason <= 0) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(p->X, &Xs));
   PetscCall(VecCopy(p->X, Xs));
@@ -128,7 +129,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
     PetscReal rho = 1e-2 * p->controls[k].L, R1[CONTACT_MAX_CONTROLS];
     if (R[k] > p->controls[k].force) rho = -rho;
     U[k] += rho;
-    PetscCall(ControlSolve(p, U, Xs, R1, its, reason));
+    PetscCall(ProblemSolveAtControls(p, U, Xs, R1, its, reason));
     if (*reason <= 0) break;
     for (PetscInt i = 0; i < m; ++i) {
       J[k * m + i] = (R1[i] - R[i]) / rho;
@@ -147,7 +148,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
     for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->controls[k].force;
     PetscCall(ControlStep(p, J, r, 4 * last, s));
     for (PetscInt k = 0; k < m; ++k) U[k] += s[k];
-    PetscCall(ControlSolve(p, U, Xs, R1, its, reason));
+    PetscCall(ProblemSolveAtControls(p, U, Xs, R1, its, reason));
     if (*reason <= 0) break;
     /* Broyden: J += (dR - J s) s^T / (s^T s) */
     for (PetscInt k = 0; k < m; ++k) ss += s[k] * s[k];

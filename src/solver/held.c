@@ -132,34 +132,9 @@ static PetscReal HeldSceneForce(Problem p)
    (X0 NULL, the scene's stages); then the reactions R and the scene's force. */
 static PetscErrorCode HeldSolve(Problem p, HeldState *st, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-  PetscInt       n;
-
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < st->m; ++k) {
-    ForceControl *fc = &p->controls[k];
-    fc->U            = U[k];
-    PetscCall(BodySetBCValue(p->bodies[fc->body], fc->bc, fc->c, U[k]));
-  }
-  PetscCall(VecDestroy(&p->X0));
-  if (X0) {
-    PetscCall(ProblemSetInitialGuess(p, X0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
-  }
-  PetscCall(ProblemSolveStaged(p, &n, reason));
-  p->sched.loadSteps     = loadSteps;
-  p->sched.penaltyStages = stages;
-  p->res.controlSolves++;
-  *its += n;
+  PetscCall(ProblemSolveAtControls(p, U, X0, R, its, reason));
   if (*reason <= 0) PetscFunctionReturn(0);
-  PetscCall(ProblemComputeReactions(p, p->X));
-  for (PetscInt k = 0; k < st->m; ++k) {
-    ForceControl *fc = &p->controls[k];
-    const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
-    fc->R            = bc->reaction[bc->comps[fc->c]];
-    R[k]             = fc->R;
-  }
   st->S = HeldSceneForce(p);
   PetscCall(TaoGetSolutionStatus(p->tao, NULL, NULL, &st->floor, NULL, NULL, NULL));
   st->floor *= HELD_FLOOR;
