@@ -1,9 +1,9 @@
 #pragma once
 #include "energyterm.h"
 #include "subdomain.h"
+#include "unheld.h"
 
 #define CONTACT_MAX_TERMS    16
-#define CONTACT_MAX_CONTROLS 8
 
 /* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
 typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
@@ -56,7 +56,9 @@ typedef struct {
   PetscInt  body, bc, c;
   PetscReal force, U, R;
   PetscReal L;     /* the body's size: its reference bounding box's diagonal */
-  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads (an anchor: at least the scene's largest force, held.c) */
+  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads */
+  PetscBool anchor; /* the anchor of a body held by contact (anchors.c): force 0 */
+  PetscReal kref;   /* an anchor: a motion stiffer than this is held by the contact (forceborder.c) */
 } ForceControl;
 
 /* What a solve and its post-processing found. */
@@ -113,6 +115,7 @@ struct _n_Problem {
   PetscBool      coupled;   /* the controls' displacements are the last entries of X (forcecontrol.c) */
   Vec            ctrlB[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout) */
   PetscReal      ctrlD[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls */
+  Unheld         unheld; /* coupled: the anchors' directions the contact does not hold (unheld.c) */
   Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
   Mat            H0tao;     /* L-BFGS's H0 as TAO sees it: H or K, or either bordered */
   KSP            ctrlKsp, ctrlKsp0; /* coupled: the solves of H (Newton) and of H0 (L-BFGS) inside the bordered ones */
@@ -172,10 +175,6 @@ PetscErrorCode ProblemSolveStaged(Problem, PetscInt *its, TaoConvergedReason *re
 PetscErrorCode ProblemCollectControls(Problem);
 PetscErrorCode ProblemSolveControlled(Problem, PetscInt *its, TaoConvergedReason *reason);
 /* -force_control_type outer (forceouter.c): a solve of ProblemSolveStaged for each trial. */
-/* One trial of an outer iteration (forceouter.c): the controls' displacements
-   U set and solved from X0 (NULL: from rest, the scene's stages); R the
-   controlled groups' reactions. */
-PetscErrorCode ProblemSolveAtControls(Problem, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemSolveControlledOuter(Problem, PetscInt *its, TaoConvergedReason *reason);
 /* Coupled force control (forcecontrol.c): the border of the Hessian (after
    the stiffness's assembly); the controls' displacements from X into the
@@ -184,15 +183,11 @@ PetscErrorCode ProblemSolveControlledOuter(Problem, PetscInt *its, TaoConvergedR
 PetscErrorCode ProblemSetUpControlBorder(Problem);
 PetscErrorCode ProblemSetControlDisplacements(Problem, Vec X);
 PetscErrorCode ProblemAddControlWork(Problem, PetscReal *f, Vec G);
+/* The scene's largest force at the last evaluation (every load's resultant, force control's force, Dirichlet group's reaction). */
+PetscErrorCode ProblemControlSceneForce(Problem, PetscReal *S);
 /* Coupled force control: penalty continuation where the user chose none (after the terms' set-up). */
 PetscErrorCode ProblemSetControlContinuation(Problem);
 /* The force control types by name (-force_control_type): coupled, outer. */
 extern PetscFunctionList ForceControlList;
 PetscErrorCode           ForceControlRegisterAll(void);
-/* Bodies held by contact (held.c): whether a body has anchors (anchors.c),
-   and the outer iteration on the anchors and force controls that finds each
-   anchor's reaction zero (within what the contact can hold) and each force
-   control's reaction its force. */
-PetscBool      ProblemHasAnchors(Problem);
-PetscErrorCode ProblemSolveHeld(Problem, PetscInt *its, TaoConvergedReason *reason);
 PetscErrorCode ProblemDestroy(Problem *);

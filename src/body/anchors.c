@@ -8,11 +8,12 @@
 
    So the free rigid motions are anchored: at most two vertices, A and B, get
    Dirichlet components (the fewest of A_x, A_y, B_x, B_y that leave no rigid
-   motion free), each force-controlled with force zero, found by the outer
-   iteration of held.c. Every solve of it is then regular (the anchors hold
+   motion free), each force-controlled with force zero: their displacements
+   are unknowns of coupled force control's one minimisation
+   (forcecontrol.c). Every Newton step is then regular (the anchors hold
    the body where the contact does not yet), and at its end each anchor's
-   reaction is zero (within what held.c allows where the contact cannot hold
-   the motion, a roller's sliding): the anchors carry nothing, the body is
+   reaction is zero (within what unheld.c allows where the contact cannot
+   hold the motion, a roller's sliding): the anchors carry nothing, the body is
    held by the contact alone, and the answer is the free body's. A is the
    loaded vertex nearest the loaded vertices' centroid (the anchor carries the
    load until the contact takes it, so it sits where the load is), or for a

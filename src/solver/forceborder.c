@@ -54,6 +54,7 @@ typedef struct {
   PetscObjectState state; /* Hin's when Z and S were made */
   PetscBool        haveZ;
   Vec              wx, wy; /* views of Xb's layout on X's arrays */
+  Unheld          *unheld; /* the problem's: the anchors' frozen directions (unheld.c) */
 } BorderCtx;
 
 static PetscLogEvent BorderSetUp = 0, BorderSolve = 0;
@@ -121,18 +122,20 @@ static PetscErrorCode BorderSetUpSchur(BorderCtx *c)
     for (PetscInt l = 0; l < k; ++l) c->S[k * c->m + l] = c->S[l * c->m + k] = 0.5 * (c->S[k * c->m + l] + c->S[l * c->m + k]);
   c->state = st;
   c->haveZ = PETSC_TRUE;
+  if (UnheldAny(c->unheld)) PetscCall(UnheldUpdate(c->unheld, c->S));
   PetscCall(PetscInfo(NULL, "force control: the controls' stiffness through the scene S_00 = %g (own D_00 = %g)\n", (double)c->S[0], (double)c->D[0]));
   PetscCall(PetscLogEventEnd(BorderSetUp, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 /* (S + mu diag(D)) dU = r, mu the least of 0, 1e-12, 4e-12, ... that keeps
-   the matrix positive definite and every |dU_k| within cap_k. */
+   the matrix positive definite and every |dU_k| within cap_k; with no part
+   along an anchor's frozen direction (unheld.c). */
 static PetscErrorCode BorderSolveControls(BorderCtx *c, const PetscReal r[], PetscReal dU[])
 {
   const PetscInt m = c->m;
   PetscScalar    A[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS], y[CONTACT_MAX_CONTROLS];
-  PetscReal      s[CONTACT_MAX_CONTROLS], mu = 0.0;
+  PetscReal      Au[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS], ru[CONTACT_MAX_CONTROLS], s[CONTACT_MAX_CONTROLS], mu = 0.0;
   PetscBLASInt   bm, one = 1, info;
 
   PetscFunctionBeginUser;
@@ -140,13 +143,18 @@ static PetscErrorCode BorderSolveControls(BorderCtx *c, const PetscReal r[], Pet
   for (PetscInt k = 0; k < m; ++k) s[k] = PetscSqrtReal(c->D[k * m + k]);
   for (PetscInt it = 0; it < 200; ++it, mu = mu > 0 ? 4 * mu : 1e-12) {
     PetscBool ok = PETSC_TRUE;
+    for (PetscInt k = 0; k < m; ++k) {
+      ru[k] = r[k];
+      for (PetscInt l = 0; l < m; ++l) Au[k * m + l] = c->S[k * m + l] + (k == l ? mu * c->D[k * m + k] : 0.0);
+    }
+    UnheldConstrain(c->unheld, Au, ru);
     for (PetscInt k = 0; k < m; ++k)
-      for (PetscInt l = 0; l < m; ++l) A[k * m + l] = c->S[k * m + l] / (s[k] * s[l]) + (k == l ? mu : 0.0);
+      for (PetscInt l = 0; l < m; ++l) A[k * m + l] = Au[k * m + l] / (s[k] * s[l]);
     PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bm, A, &bm, &info));
     if (info) continue;
     for (PetscInt k = 0; k < m; ++k) ok = (PetscBool)(ok && PetscSqr(PetscRealPart(A[k * m + k])) > 1e-9);
     if (!ok) continue;
-    for (PetscInt k = 0; k < m; ++k) y[k] = r[k] / s[k];
+    for (PetscInt k = 0; k < m; ++k) y[k] = ru[k] / s[k];
     PetscCallBLAS("LAPACKpotrs", LAPACKpotrs_("L", &bm, &one, A, &bm, y, &bm, &info));
     PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "force control: potrs info %d", (int)info);
     for (PetscInt k = 0; k < m; ++k) {
@@ -236,6 +244,7 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
     PetscCall(VecDuplicate(p->Xb, &c->Z[k]));
   }
   PetscCall(PetscArraycpy(c->D, p->ctrlD, c->m * c->m));
+  c->unheld = &p->unheld;
   PetscCall(PetscObjectReference((PetscObject)Hin));
   c->Hin = Hin;
   if (kin) PetscCall(PetscObjectReference((PetscObject)kin));

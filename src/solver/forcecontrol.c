@@ -31,10 +31,10 @@
      the gradient tolerance -force_control_rtol times the least |F| (one
      more solve, counted in force_control_solves).
    - outer: an outer iteration on U around displacement-controlled solves
-     (forceouter.c). The anchors of a body held by contact (anchors.c)
-     always take it: an anchor's force is zero and its body, before the
-     contact holds it, has no stiffness in U, which every inner solve of the
-     outer iteration needs. */
+     (forceouter.c). A scene with a body held by contact (anchors.c) is
+     always coupled: its anchors are controls of force zero, and the motions
+     the contact does not hold are frozen where the anchors' residual is
+     small (unheld.c). */
 #include "problem.h"
 
 PetscFunctionList ForceControlList = NULL;
@@ -80,31 +80,61 @@ static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
 
 PetscErrorCode ProblemCollectControls(Problem p)
 {
-  PetscBool anchors = PETSC_FALSE, coupled;
+  PetscBool anchor[CONTACT_MAX_CONTROLS];
+  PetscInt  body[CONTACT_MAX_CONTROLS];
+  PetscReal kref[CONTACT_MAX_CONTROLS];
 
   PetscFunctionBeginUser;
   p->ncontrols = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j)
       for (PetscInt c = 0; c < p->bodies[i]->bc[j].ncomp; ++c) {
+        const Body    b = p->bodies[i];
         ForceControl *fc;
-        if (!p->bodies[i]->bc[j].control[c]) continue;
+        if (!b->bc[j].control[c]) continue;
         PetscCheck(p->ncontrols < CONTACT_MAX_CONTROLS, p->comm, PETSC_ERR_USER_INPUT, "more than %d force-controlled components", CONTACT_MAX_CONTROLS);
-        fc        = &p->controls[p->ncontrols++];
-        fc->body  = i;
-        fc->bc    = j;
-        fc->c     = c;
-        fc->force = p->bodies[i]->bc[j].force[c];
-        fc->U     = 0.0;
-        fc->scale = PetscAbsReal(fc->force);
-        for (PetscInt l = 0; l < p->bodies[i]->nload; ++l) fc->scale += PetscSqrtReal(PetscSqr(p->bodies[i]->load[l].force[0]) + PetscSqr(p->bodies[i]->load[l].force[1]));
+        fc         = &p->controls[p->ncontrols++];
+        fc->body   = i;
+        fc->bc     = j;
+        fc->c      = c;
+        fc->force  = b->bc[j].force[c];
+        fc->U      = 0.0;
+        fc->anchor = b->bc[j].anchor;
+        fc->scale  = PetscAbsReal(fc->force);
+        for (PetscInt l = 0; l < b->nload; ++l) fc->scale += PetscSqrtReal(PetscSqr(b->load[l].force[0]) + PetscSqr(b->load[l].force[1]));
         if (!(fc->scale > 0)) fc->scale = 1.0;
         PetscCall(ControlBodySize(p, i, &fc->L));
-        anchors = (PetscBool)(anchors || p->bodies[i]->bc[j].anchor);
+        fc->kref = b->E * (b->axisym ? fc->L : 1.0); /* a stiffness (force per length per unit thickness; r-z: over the whole circle) */
       }
-  PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &coupled));
-  p->coupled = (PetscBool)(p->ncontrols > 0 && coupled && !anchors);
-  if (p->ncontrols && coupled && anchors) PetscCall(PetscInfo(NULL, "force control: a body held by contact is anchored: the outer iteration\n"));
+  for (PetscInt k = 0; k < p->ncontrols; ++k) {
+    anchor[k] = p->controls[k].anchor;
+    body[k]   = p->controls[k].body;
+    kref[k]   = p->controls[k].kref;
+  }
+  PetscCall(UnheldSetUp(&p->unheld, p->ncontrols, anchor, body, kref));
+  PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &p->coupled));
+  if (p->ncontrols && !p->coupled && UnheldAny(&p->unheld)) PetscCall(PetscInfo(NULL, "force control: a body held by contact: coupled, whatever -force_control_type\n"));
+  p->coupled = (PetscBool)(p->ncontrols > 0 && (p->coupled || UnheldAny(&p->unheld)));
+  PetscFunctionReturn(0);
+}
+
+/* The largest force of the scene at the evaluation whose local gradients
+   the bodies hold: every load's resultant, every force control's force,
+   every Dirichlet group's reaction (anchors' included). */
+PetscErrorCode ProblemControlSceneForce(Problem p, PetscReal *S)
+{
+  PetscFunctionBeginUser;
+  *S = 0;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    const Body b = p->bodies[i];
+    PetscCall(BodyComputeReactions(b, b->Gl));
+    for (PetscInt l = 0; l < b->nload; ++l) *S = PetscMax(*S, PetscSqrtReal(PetscSqr(b->load[l].force[0]) + PetscSqr(b->load[l].force[1])));
+    for (PetscInt j = 0; j < b->nbc; ++j) {
+      *S = PetscMax(*S, PetscSqrtReal(PetscSqr(b->bc[j].reaction[0]) + PetscSqr(b->bc[j].reaction[1])));
+      for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
+        if (b->bc[j].control[c]) *S = PetscMax(*S, PetscAbsReal(b->loadFactor * b->bc[j].force[c]));
+    }
+  }
   PetscFunctionReturn(0);
 }
 
@@ -206,25 +236,29 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
   PetscBool   done[CONTACT_MAX_BODIES] = {PETSC_FALSE};
   PetscMPIInt rank;
   PetscInt    nb;
+  PetscReal   gU[CONTACT_MAX_CONTROLS], S = 0;
 
   PetscFunctionBeginUser;
   if (!p->coupled) PetscFunctionReturn(0);
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   PetscCall(VecGetLocalSize(p->Xb, &nb));
+  if (UnheldAny(&p->unheld)) PetscCall(ProblemControlSceneForce(p, &S)); /* every body's reactions */
   for (PetscInt k = 0; k < p->ncontrols; ++k) {
     ForceControl *fc = &p->controls[k];
     Body          b  = p->bodies[fc->body];
     const BodyBC *bc = &b->bc[fc->bc];
-    if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
+    if (!done[fc->body] && !UnheldAny(&p->unheld)) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
     fc->R          = bc->reaction[bc->comps[fc->c]];
+    gU[k]          = fc->R - b->loadFactor * fc->force;
     *f -= b->loadFactor * fc->force * fc->U;
   }
   PetscCall(PetscInfo(NULL, "force control: U_0 = %.10g, reaction %.10g, energy %.10g\n", (double)p->controls[0].U, (double)p->controls[0].R, (double)*f));
+  if (UnheldAny(&p->unheld)) PetscCall(UnheldSetGradient(&p->unheld, S, gU)); /* the directions the contact does not hold, projected out */
   if (!rank) {
     PetscScalar *g;
     PetscCall(VecGetArray(G, &g));
-    for (PetscInt k = 0; k < p->ncontrols; ++k) g[nb + k] = p->controls[k].R - p->bodies[p->controls[k].body]->loadFactor * p->controls[k].force;
+    for (PetscInt k = 0; k < p->ncontrols; ++k) g[nb + k] = gU[k];
     PetscCall(VecRestoreArray(G, &g));
   }
   PetscFunctionReturn(0);

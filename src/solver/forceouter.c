@@ -1,5 +1,6 @@
-/* Force control by an outer iteration (-force_control_type outer; anchors,
-   anchors.c, always): each controlled displacement U is found by an
+/* Force control by an outer iteration (-force_control_type outer; not for
+   a scene with a body held by contact, whose anchors are always coupled):
+   each controlled displacement U is found by an
    iteration around the usual solve of u, which keeps every inner problem
    displacement-controlled, so that a body whose only support in that
    direction is the contact stays supported by the imposed U. Minimising
@@ -17,8 +18,7 @@
    in the force's direction, doubled. Each trial is solved from the last
    converged state (one stage: the load and penalty stages, if any, are for
    the first solve from rest). It stops when |R - F| <= -force_control_rtol
-   (1e-9) times |F| in every component (an anchor's F is 0: times the size
-   of its body's loads, anchors.c), or after -force_control_max_it solves.
+   (1e-9) times |F| in every component, or after -force_control_max_it solves.
    Each solve costs Newton's iterations anew: 16 against the displacement
    run's 5 on a soft disc pressed on a stiff slab; forcecontrol.c's coupled
    type solves once. */
@@ -26,9 +26,8 @@
 #include <petscblaslapack.h>
 
 /* Sets the controls' displacements U and solves, from X0 (or rest, with the
-   scene's stages, when X0 is NULL); R: the controlled groups' reactions
-   (problem.h; the outer iterations here and in held.c). */
-PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
+   scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
+static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
   const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
   PetscInt       n;
