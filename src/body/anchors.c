@@ -21,7 +21,9 @@
    them) the vertex nearest the centre of its bounding box; B the vertex
    farthest from A (a lever arm against rotation); a component a Dirichlet
    condition holds at a vertex is not anchored there. */
-#include "body.h"
+#include "anchors.h"
+#include "conditions.h"
+#include "rigid.h"
 
 /* Whether vertex v is on an edge of a loaded group (faces: the mesh's
    "Face Sets", tags: the loaded groups' physical tags). */
@@ -67,23 +69,19 @@ static PetscErrorCode DirichletGram(Body b, PetscInt n, PetscInt vs, const Petsc
    it), components comps, force-controlled with force zero. */
 static PetscErrorCode AddAnchor(Body b, const char name[], PetscInt n, PetscInt vs, const PetscReal xy[], const PetscReal at[2], PetscInt ncomp, const PetscInt comps[])
 {
-  BodyBC *bc;
+  BodyBC bc = {.ncomp = ncomp, .anchor = PETSC_TRUE};
 
   PetscFunctionBeginUser;
-  PetscCheck(b->nbc < CONTACT_MAX_BC, b->comm, PETSC_ERR_USER_INPUT, "body %s: no room for its anchor: at most %d Dirichlet conditions", b->name, CONTACT_MAX_BC);
-  bc = &b->bc[b->nbc++];
-  PetscCall(PetscMemzero(bc, sizeof(*bc)));
-  PetscCall(PetscStrncpy(bc->group, name, sizeof(bc->group)));
-  bc->ncomp  = ncomp;
-  bc->anchor = PETSC_TRUE;
+  PetscCall(PetscStrncpy(bc.group, name, sizeof(bc.group)));
   for (PetscInt j = 0; j < ncomp; ++j) {
-    bc->comps[j]   = comps[j];
-    bc->control[j] = PETSC_TRUE; /* force 0 */
+    bc.comps[j]   = comps[j];
+    bc.control[j] = PETSC_TRUE; /* force 0 */
   }
   PetscCall(DMCreateLabel(b->dm, name));
-  PetscCall(DMGetLabel(b->dm, name, &bc->label));
+  PetscCall(DMGetLabel(b->dm, name, &bc.label));
   for (PetscInt k = 0; k < n; ++k)
-    if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) PetscCall(DMLabelSetValue(bc->label, vs + k, 1));
+    if (xy[2 * k] == at[0] && xy[2 * k + 1] == at[1]) PetscCall(DMLabelSetValue(bc.label, vs + k, 1));
+  PetscCall(BodyAddDirichlet(b, &bc));
   PetscFunctionReturn(0);
 }
 

@@ -11,14 +11,14 @@
    scene need not declare it; where a scene's own condition already holds
    u_r on the axis, it must hold it at 0, and that point is left to it. A
    node at x < 0 is not in the meridian half-plane: refused. */
-#include "body.h"
+#include "axis.h"
+#include "conditions.h"
 
 PetscErrorCode BodyAddAxis(Body b)
 {
   DMLabel   label;
   PetscInt  vs, ve, es, ee, n = 0, gn, moves = -1;
   PetscReal lo[2], hi[2], size, *xy;
-  BodyBC   *bc;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
@@ -56,13 +56,10 @@ PetscErrorCode BodyAddAxis(Body b)
     PetscCall(DMRemoveLabel(b->dm, "r=0", NULL));
     PetscFunctionReturn(0);
   }
-  PetscCheck(b->nbc < CONTACT_MAX_BC, b->comm, PETSC_ERR_USER_INPUT, "body %s: no room for its axis condition: at most %d Dirichlet conditions", b->name, CONTACT_MAX_BC);
-  bc = &b->bc[b->nbc++];
-  PetscCall(PetscMemzero(bc, sizeof(*bc)));
-  PetscCall(PetscStrncpy(bc->group, "r=0", sizeof(bc->group)));
-  bc->ncomp    = 1;
-  bc->comps[0] = 0;
-  bc->label    = label;
+  {
+    const BodyBC axis = {.group = "r=0", .ncomp = 1, .comps = {0}, .label = label};
+    PetscCall(BodyAddDirichlet(b, &axis));
+  }
   PetscCall(PetscInfo(NULL, "body %s: u_r = 0 held on %" PetscInt_FMT " points on the axis\n", b->name, gn));
   PetscFunctionReturn(0);
 }

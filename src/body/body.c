@@ -1,7 +1,11 @@
 /* An elastic body: options, mesh (Gmsh -> DMPlex), P2/Q2 displacement with
    Dirichlet constraints, the per-cell geometry cache and the element loops that
-   evaluate the pointwise kernels of elasticity.c. */
+   evaluate the pointwise kernels of elasticity.c. It orchestrates the body's
+   files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
+   take what they share from bodycore.c and rigid.c, below them all. */
 #include "body.h"
+#include "anchors.h"
+#include "axis.h"
 #include "meshgen.h"
 #include "mshcheck.h"
 #include "partition.h"
@@ -27,73 +31,6 @@ static PetscErrorCode CheckFinite(MPI_Comm comm, const char opt[], PetscReal v)
 {
   PetscFunctionBeginUser;
   PetscCheck(!PetscIsInfOrNanReal(v), comm, PETSC_ERR_USER_INPUT, "option %s: value %g is not a finite number", opt, (double)v);
-  PetscFunctionReturn(0);
-}
-
-/* Dirichlet condition bc (its group name set) from the options under
-   -<body>_bc_<group>_: components, values, the exact solution, controls. */
-static PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
-{
-  char      opt[4 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
-  PetscInt  nc = 2, nv = 2, nctl = 2;
-  PetscBool setc, setv, setctl;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
-  bc->values[0] = bc->values[1] = 0.0;
-  PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
-  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
-  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
-  PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
-  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
-  PetscOptionsEnd();
-  if (!setc) {
-    bc->ncomp    = 2;
-    bc->comps[0] = 0;
-    bc->comps[1] = 1;
-  } else {
-    bc->ncomp = nc;
-    for (PetscInt c = 0; c < nc; ++c) {
-      PetscBool isx, isy;
-      PetscCall(PetscStrcmp(comps[c], "x", &isx));
-      PetscCall(PetscStrcmp(comps[c], "y", &isy));
-      PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
-      bc->comps[c] = isx ? 0 : 1;
-      PetscCall(PetscFree(comps[c]));
-    }
-  }
-  PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
-  for (PetscInt c = 0; c < bc->ncomp; ++c) {
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
-    PetscCall(CheckFinite(b->comm, opt, bc->values[c]));
-  }
-  PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
-  PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
-  for (PetscInt c = 0; setctl && c < nctl; ++c) {
-    PetscBool disp, force;
-    PetscCall(PetscStrcmp(control[c], "displacement", &disp));
-    PetscCall(PetscStrcmp(control[c], "force", &force));
-    PetscCheck(disp || force, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: unknown control '%s' (use displacement, force)", bprefix, control[c]);
-    PetscCheck(!force || !bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: a force-controlled component cannot impose the exact solution", bprefix);
-    bc->control[c] = force;
-    if (force) { /* the value is the force; the displacement starts at 0 */
-      bc->force[c]  = bc->values[c];
-      bc->values[c] = 0.0;
-    }
-    PetscCall(PetscFree(control[c]));
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyCheckGroupsUnique(Body b, const char opt[], PetscInt n, char *const names[])
-{
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < n; ++i)
-    for (PetscInt j = 0; j < i; ++j) {
-      PetscBool same;
-      PetscCall(PetscStrcmp(names[i], names[j], &same));
-      PetscCheck(!same, b->comm, PETSC_ERR_USER_INPUT, "option %s: group %s given twice", opt, names[i]);
-    }
   PetscFunctionReturn(0);
 }
 
@@ -198,44 +135,6 @@ PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodyGetPhysicalTag(Body b, const char group[], PetscInt dim, PetscInt *tag)
-{
-  char known[1024] = "";
-
-  PetscFunctionBeginUser;
-  *tag = -1;
-  for (PetscInt i = 0; i < b->nphys; ++i) {
-    PetscBool same;
-    PetscCall(PetscStrcmp(b->physNames[i], group, &same));
-    if (same && b->physDims[i] == dim) {
-      *tag = b->physTags[i];
-      PetscFunctionReturn(0);
-    }
-    if (b->physDims[i] == dim) {
-      PetscCall(PetscStrlcat(known, " ", sizeof(known)));
-      PetscCall(PetscStrlcat(known, b->physNames[i], sizeof(known)));
-    }
-  }
-  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has no physical curve '%s' (it has:%s)", b->name, b->msh, group, known);
-}
-
-static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
-{
-  void  **c  = (void **)ctx;
-  Body    b  = (Body)c[0];
-  BodyBC *bc = (BodyBC *)c[1];
-
-  (void)dim; (void)t;
-  for (PetscInt i = 0; i < Nc; ++i) u[i] = 0.0;
-  if (bc->exact) {
-    PetscReal ue[2];
-    b->exact.u(b->exact.params, x, ue);
-    for (PetscInt i = 0; i < Nc && i < 2; ++i) u[i] = ue[i];
-  } else
-    for (PetscInt i = 0; i < bc->ncomp; ++i) u[bc->comps[i]] = bc->values[i];
-  return 0;
-}
-
 /* Reads the mesh, checks it is second order and of one cell type. */
 static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 {
@@ -267,158 +166,6 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
   b->ncellsGlobal = gTypes[0] + gTypes[1];
   PetscCall(DMPlexDistributeWith(&b->dm, (PartitionType)partitioner, view, b->name));
   PetscCall(DMViewFromOptions(b->dm, NULL, "-dm_view"));
-  PetscFunctionReturn(0);
-}
-
-/* Reference coordinates of the nodes of element fe, in basis order, and
-   their number (nb, if not NULL). */
-static PetscErrorCode FEGetReferenceNodes(PetscFE fe, PetscInt *nb, PetscReal ref[])
-{
-  PetscDualSpace sp;
-  PetscInt       n;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscFEGetDimension(fe, &n));
-  PetscCall(PetscFEGetDualSpace(fe, &sp));
-  for (PetscInt a = 0; a < n; ++a) {
-    PetscQuadrature  fq;
-    const PetscReal *pts;
-    PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
-    PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
-    ref[2 * a]     = pts[0];
-    ref[2 * a + 1] = pts[1];
-  }
-  if (nb) *nb = n;
-  PetscFunctionReturn(0);
-}
-
-/* Reference coordinates of the nodes of the scalar element, in basis order. */
-PetscErrorCode BodyGetReferenceNodes(Body b, PetscReal ref[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(FEGetReferenceNodes(b->feScalar, NULL, ref));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyPointsBox(Body b, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2])
-{
-  PetscReal m[4] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}; /* least x, y, -x, -y */
-
-  PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < n; ++k)
-    for (PetscInt d = 0; d < 2; ++d) {
-      m[d]     = PetscMin(m[d], xy[2 * k + d]);
-      m[2 + d] = PetscMin(m[2 + d], -xy[2 * k + d]);
-    }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, m, 4, MPIU_REAL, MPIU_MIN, b->comm));
-  for (PetscInt d = 0; d < 2; ++d) {
-    lo[d] = m[d];
-    hi[d] = -m[2 + d];
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k)
-{
-  PetscInt val;
-
-  PetscFunctionBeginUser;
-  *k = -1;
-  PetscCall(DMLabelGetValue(bc->label, p, &val));
-  for (PetscInt l = 0; l < bc->ncomp && val == 1; ++l)
-    if (bc->comps[l] == c) *k = l;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k)
-{
-  PetscFunctionBeginUser;
-  *i = *k = -1;
-  for (PetscInt j = 0; j < b->nbc && *i < 0; ++j) {
-    PetscCall(BodyBCHolds(&b->bc[j], p, c, k));
-    if (*k >= 0) *i = j;
-  }
-  PetscFunctionReturn(0);
-}
-
-/* A first-order mesh has affine coordinates, not a P2/Q2 coordinate field:
-   refused in one line, before anything reads the coordinate field. */
-PetscErrorCode BodyCheckSecondOrder(Body b)
-{
-  DM           cdm;
-  PetscInt     nf;
-  PetscObject  obj = NULL;
-  PetscClassId cid = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
-  PetscCall(DMGetNumFields(cdm, &nf));
-  if (nf == 1) PetscCall(DMGetField(cdm, 0, NULL, &obj));
-  if (obj) PetscCall(PetscObjectGetClassId(obj, &cid));
-  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
-  PetscFunctionReturn(0);
-}
-
-/* The coordinates of this rank's vertices ([v - vStart][2], PetscFree), by
-   evaluating each cell's coordinate field at the displacement element's
-   reference nodes (continuous Q2 on quads, cellwise P2 on triangles: a
-   vertex need not carry coordinates of its own). Node k of a cell is the
-   k-th point of its closure that carries a displacement node: every vertex
-   and edge, and a quadrilateral itself (the cell cache's order). Usable
-   once the elements exist, before the displacement section does. */
-PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
-{
-  DM              cdm;
-  Vec             coords;
-  PetscFE         cfe;
-  PetscTabulation Tc;
-  PetscInt        vs, ve, cs, ce, nb, ncb;
-  PetscReal       ref[9 * 2];
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
-  PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cs, &ce));
-  PetscCall(DMGetCoordinateDM(b->dm, &cdm));
-  PetscCall(DMGetField(cdm, 0, NULL, (PetscObject *)&cfe));
-  PetscCall(PetscFEGetDimension(cfe, &ncb));
-  PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
-  PetscCall(FEGetReferenceNodes(b->feScalar, &nb, ref));
-  PetscCall(PetscFECreateTabulation(cfe, 1, nb, ref, 0, &Tc));
-  PetscCall(PetscCalloc1(2 * (ve - vs) + 2, xy));
-  for (PetscInt c = cs; c < ce; ++c) {
-    PetscInt    *cl = NULL, ncl, k = 0, ncc;
-    PetscScalar *xc = NULL;
-    PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-    PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &ncc, &xc));
-    for (PetscInt i = 0; i < ncl && k < nb; ++i) {
-      const PetscInt p = cl[2 * i];
-      PetscInt       depth;
-      PetscCall(DMPlexGetPointDepth(b->dm, p, &depth));
-      if (depth == 2 && b->simplex) continue;
-      if (depth == 0)
-        for (PetscInt d = 0; d < 2; ++d) {
-          PetscReal x = 0.0, tmax = 0.0;
-          PetscInt  fmax = -1;
-          for (PetscInt f = 0; f < ncb; ++f) {
-            const PetscReal t = Tc->T[0][(k * ncb + f) * 2 + d];
-            x += PetscRealPart(xc[f]) * t;
-            if (PetscAbsReal(t) > tmax) {
-              tmax = PetscAbsReal(t);
-              fmax = f;
-            }
-          }
-          /* a Lagrange coordinate field at its own node: the stored value
-             itself, the same bits from every cell and on every rank (the
-             anchors and the axis compare vertices across ranks) */
-          if (fmax >= 0 && PetscAbsReal(tmax - 1.0) < 1e-10) x = PetscRealPart(xc[fmax]);
-          (*xy)[2 * (p - vs) + d] = x;
-        }
-      k++;
-    }
-    PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
-    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
-  }
-  PetscCall(PetscTabulationDestroy(&Tc));
   PetscFunctionReturn(0);
 }
 
@@ -578,80 +325,7 @@ static PetscErrorCode BodyBuildNodeData(Body b)
   PetscFunctionReturn(0);
 }
 
-/* The body's rigid motions (translations in x and y, the rotation about the
-   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
-   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
-   local parts of three joined vectors. */
-PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
-{
-  PetscSection s;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
-    PetscInt        dof, off;
-    const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
-
-    PetscCall(PetscSectionGetDof(s, p, &dof));
-    PetscCall(PetscSectionGetOffset(s, p, &off));
-    for (PetscInt d = 0; d < PetscMin(dof, 2); ++d) {
-      const PetscInt g = b->l2b[off + d];
-      if (g < rstart || g >= rend) continue;
-      if (b->axisym && d == 0) continue; /* in r-z the translation along the axis alone */
-      modes[d][g - rstart] += 1.0;
-      if (!b->axisym) modes[2][g - rstart] += d == 0 ? -y : x;
-    }
-  }
-  PetscFunctionReturn(0);
-}
-
 /* Global node number of a node point (owned or ghost). */
-PetscErrorCode BodyEdgeNodes(Body b, PetscInt e, PetscInt pts[3], PetscReal x[6])
-{
-  const PetscInt *cone;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMPlexGetCone(b->dm, e, &cone));
-  pts[0] = cone[0];
-  pts[1] = cone[1];
-  pts[2] = e;
-  for (PetscInt j = 0; j < 3; ++j) {
-    x[2 * j]     = b->xpoint[2 * (pts[j] - b->pStart)];
-    x[2 * j + 1] = b->xpoint[2 * (pts[j] - b->pStart) + 1];
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyEdgeOutwardSign(Body b, PetscInt e, const PetscReal x[6], const char what[], const char group[], PetscReal *sign)
-{
-  PetscSection    s;
-  const PetscInt *supp;
-  PetscInt        nsupp, *cl = NULL, ncl;
-  PetscReal       xc[2] = {0, 0}, t[2], nrm[2], cnt = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(DMPlexGetSupportSize(b->dm, e, &nsupp));
-  PetscCall(DMPlexGetSupport(b->dm, e, &supp));
-  PetscCheck(nsupp == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: an edge of group '%s' of body %s is not on the boundary", what, group, b->name);
-  PetscCall(DMPlexGetTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-  for (PetscInt j = 0; j < ncl; ++j) {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(s, cl[2 * j], &dof));
-    if (!dof) continue;
-    xc[0] += b->xpoint[2 * (cl[2 * j] - b->pStart)];
-    xc[1] += b->xpoint[2 * (cl[2 * j] - b->pStart) + 1];
-    cnt += 1;
-  }
-  PetscCall(DMPlexRestoreTransitiveClosure(b->dm, supp[0], PETSC_TRUE, &ncl, &cl));
-  t[0]   = x[2] - x[0];
-  t[1]   = x[3] - x[1];
-  nrm[0] = t[1];
-  nrm[1] = -t[0];
-  *sign  = (nrm[0] * (x[4] - xc[0] / cnt) + nrm[1] * (x[5] - xc[1] / cnt)) > 0 ? 1.0 : -1.0;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
 {
   PetscInt off;
@@ -666,7 +340,6 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
 {
   PetscQuadrature q;
   PetscDS         ds;
-  DMLabel         faces;
   PetscInt        qdeg = b->qdeg;
   PetscLogDouble  t0, t1;
 
@@ -689,47 +362,9 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(DMSetField(b->dm, 0, NULL, (PetscObject)b->fe));
   PetscCall(DMCreateDS(b->dm));
   PetscCall(DMGetDS(b->dm, &ds));
-  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
-  for (PetscInt i = 0; i < b->nbc; ++i) {
-    BodyBC  *bc = &b->bc[i];
-    char     lname[2 * CONTACT_NAME_LEN];
-    IS       is = NULL;
-    PetscInt n = 0, gn, one = 1;
-    void   **ctx = b->bcctx[i];
-
-    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &bc->tag));
-    PetscCall(PetscSNPrintf(lname, sizeof(lname), "bc_%s", bc->group));
-    PetscCall(DMCreateLabel(b->dm, lname));
-    PetscCall(DMGetLabel(b->dm, lname, &bc->label));
-    if (faces) PetscCall(DMLabelGetStratumIS(faces, bc->tag, &is));
-    if (is) {
-      const PetscInt *pts;
-      PetscCall(ISGetLocalSize(is, &n));
-      PetscCall(ISGetIndices(is, &pts));
-      for (PetscInt j = 0; j < n; ++j) PetscCall(DMLabelSetValue(bc->label, pts[j], 1));
-      PetscCall(ISRestoreIndices(is, &pts));
-      PetscCall(ISDestroy(&is));
-    }
-    PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
-    PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: physical group '%s' of mesh %s has no edges", b->name, bc->group, b->msh);
-    PetscCall(DMPlexLabelComplete(b->dm, bc->label));
-    ctx[0] = b;
-    ctx[1] = bc;
-    PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
-  }
-  {
-    const PetscInt first = b->nbc;
-    PetscInt       one   = 1;
-    if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
-    if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
-    for (PetscInt i = first; i < b->nbc; ++i) {
-      BodyBC *bc  = &b->bc[i];
-      void  **ctx = b->bcctx[i];
-      ctx[0]      = b;
-      ctx[1]      = bc;
-      PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
-    }
-  }
+  PetscCall(BodyConditionsSetUp(b));              /* the scene's Dirichlet conditions */
+  if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
+  if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
   PetscCall(DMCreateLocalVector(b->dm, &b->Xl));
   PetscCall(VecDuplicate(b->Xl, &b->Gl));
   PetscCall(VecDuplicate(b->Xl, &b->bcl));
@@ -952,112 +587,6 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
   }
   PetscCall(VecRestoreArrayRead(Gl, &g));
   PetscFunctionReturn(0);
-}
-
-/* Number of rigid motions (x and y translation, rotation) that the Dirichlet
-   conditions leave free. A constrained component c at node x removes the part
-   of the rigid motion r(x) = (t_x - w y, t_y + w x) in that component, i.e. the
-   row e_c . dr/d(t_x, t_y, w); the free motions are the null space of the sum
-   of the rows' outer products (coordinates centred and scaled for conditioning). */
-PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
-{
-  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[2], ghi[2], c[2], L;
-  PetscReal M[9] = {0}, Mg[9];
-  PetscSection s;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
-    if (!dof) continue;
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], b->xpoint[2 * p + d]);
-      hi[d] = PetscMax(hi[d], b->xpoint[2 * p + d]);
-    }
-  }
-  PetscCall(MPIU_Allreduce(lo, glo, 2, MPIU_REAL, MPIU_MIN, b->comm));
-  PetscCall(MPIU_Allreduce(hi, ghi, 2, MPIU_REAL, MPIU_MAX, b->comm));
-  c[0] = 0.5 * (glo[0] + ghi[0]);
-  c[1] = 0.5 * (glo[1] + ghi[1]);
-  L    = PetscMax(ghi[0] - glo[0], ghi[1] - glo[1]);
-  if (!(L > 0)) L = 1.0;
-  for (PetscInt i = 0; i < b->nbc; ++i) {
-    BodyBC *bc = &b->bc[i];
-    IS      is;
-
-    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
-    if (!is) continue;
-    {
-      const PetscInt *pts;
-      PetscInt        n;
-      PetscCall(ISGetLocalSize(is, &n));
-      PetscCall(ISGetIndices(is, &pts));
-      for (PetscInt j = 0; j < n; ++j) {
-        PetscInt  dof, q = pts[j] - b->pStart;
-        PetscReal x, y;
-        PetscCall(PetscSectionGetDof(s, pts[j], &dof));
-        if (!dof) continue;
-        x = (b->xpoint[2 * q] - c[0]) / L;
-        y = (b->xpoint[2 * q + 1] - c[1]) / L;
-        for (PetscInt k = 0; k < bc->ncomp; ++k) BodyRigidGramAddRow(M, bc->comps[k], x, y);
-      }
-      PetscCall(ISRestoreIndices(is, &pts));
-    }
-    PetscCall(ISDestroy(&is));
-  }
-  PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
-  BodyRigidGramAxisymmetric(b, Mg);
-  *nfree = 3 - BodyRigidRank(Mg);
-  PetscFunctionReturn(0);
-}
-
-/* In r-z a body's only rigid motion is the translation along the axis: a
-   radial translation or a rotation strains the hoop. Those two are held, as
-   if by a constraint row each. */
-void BodyRigidGramAxisymmetric(Body b, PetscReal M[9])
-{
-  if (!b->axisym) return;
-  M[0] += 1.0;
-  M[8] += 1.0;
-}
-
-void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
-{
-  const PetscReal r[3] = {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? -y : x};
-
-  for (PetscInt a = 0; a < 3; ++a)
-    for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
-}
-
-PetscInt BodyRigidRank(const PetscReal M[9])
-{
-  PetscReal Mg[9], tol = 1e-10 * (M[0] + M[4] + M[8]);
-  PetscInt  rank = 0;
-  PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-
-  for (PetscInt k = 0; k < 9; ++k) Mg[k] = M[k];
-  for (PetscInt step = 0; step < 3; ++step) {
-    PetscInt  pr = -1, pc = -1;
-    PetscReal best = tol;
-    for (PetscInt a = 0; a < 3; ++a)
-      for (PetscInt e = 0; e < 3; ++e)
-        if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
-          best = PetscAbsReal(Mg[3 * a + e]);
-          pr   = a;
-          pc   = e;
-        }
-    if (pr < 0) break;
-    used[pr] = PETSC_TRUE;
-    ++rank;
-    for (PetscInt a = 0; a < 3; ++a) {
-      PetscReal f;
-      if (used[a]) continue;
-      f = Mg[3 * a + pc] / Mg[3 * pr + pc];
-      for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
-    }
-  }
-  return rank;
 }
 
 /* Errors of u_h against the body's exact solution u, by the cell quadrature

@@ -1,6 +1,12 @@
-/* A body's conditions checked against each other, once its mesh, its
-   Dirichlet conditions and its loads are set up and before anything is
-   solved (the end of BodySetUp). A condition holds component c of a node
+/* A body's Dirichlet conditions: the scene's, each a physical group read
+   from the options (-<body>_bc, -<body>_bc_<group>_components, _values,
+   _exact, _control) and labelled on the mesh in BodySetUp; the program's own
+   (the axis's u_r = 0, axis.c; the anchors of a body held by contact,
+   anchors.c), added through BodyAddDirichlet; and the check of them all
+   against each other and the loads.
+
+   The check comes once the mesh, the conditions and the loads are set up,
+   before anything is solved (the end of BodySetUp). A condition holds component c of a node
    where its group's label holds the node and c is among its components
    (the axis's u_r = 0, "r=0", is one; the anchors of a body held by
    contact, anchors.c, are the program's and placed where nothing else
@@ -29,7 +35,161 @@
      load's c-part moves nothing at all (a traction on a clamped group): a
      warning line naming the group, the component and the groups that hold
      it, and the run goes on. */
-#include "body.h"
+#include "conditions.h"
+#include "loads.h"
+#include "options.h"
+
+PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
+{
+  char      opt[4 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
+  PetscInt  nc = 2, nv = 2, nctl = 2;
+  PetscBool setc, setv, setctl;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
+  bc->values[0] = bc->values[1] = 0.0;
+  PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
+  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
+  PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
+  PetscOptionsEnd();
+  if (!setc) {
+    bc->ncomp    = 2;
+    bc->comps[0] = 0;
+    bc->comps[1] = 1;
+  } else {
+    bc->ncomp = nc;
+    for (PetscInt c = 0; c < nc; ++c) {
+      PetscBool isx, isy;
+      PetscCall(PetscStrcmp(comps[c], "x", &isx));
+      PetscCall(PetscStrcmp(comps[c], "y", &isy));
+      PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
+      bc->comps[c] = isx ? 0 : 1;
+      PetscCall(PetscFree(comps[c]));
+    }
+  }
+  PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
+  for (PetscInt c = 0; c < bc->ncomp; ++c) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
+    PetscCheck(!PetscIsInfOrNanReal(bc->values[c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: value %g is not a finite number", opt, (double)bc->values[c]);
+  }
+  PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
+  PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
+  for (PetscInt c = 0; setctl && c < nctl; ++c) {
+    PetscBool disp, force;
+    PetscCall(PetscStrcmp(control[c], "displacement", &disp));
+    PetscCall(PetscStrcmp(control[c], "force", &force));
+    PetscCheck(disp || force, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: unknown control '%s' (use displacement, force)", bprefix, control[c]);
+    PetscCheck(!force || !bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: a force-controlled component cannot impose the exact solution", bprefix);
+    bc->control[c] = force;
+    if (force) { /* the value is the force; the displacement starts at 0 */
+      bc->force[c]  = bc->values[c];
+      bc->values[c] = 0.0;
+    }
+    PetscCall(PetscFree(control[c]));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The displacement condition ctx = {b, bc} imposes at x (DMAddBoundary's
+   function): bc's values in its components, or the exact solution. */
+static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  void  **c  = (void **)ctx;
+  Body    b  = (Body)c[0];
+  BodyBC *bc = (BodyBC *)c[1];
+
+  (void)dim; (void)t;
+  for (PetscInt i = 0; i < Nc; ++i) u[i] = 0.0;
+  if (bc->exact) {
+    PetscReal ue[2];
+    b->exact.u(b->exact.params, x, ue);
+    for (PetscInt i = 0; i < Nc && i < 2; ++i) u[i] = ue[i];
+  } else
+    for (PetscInt i = 0; i < bc->ncomp; ++i) u[bc->comps[i]] = bc->values[i];
+  return 0;
+}
+
+/* Imposes condition i on the displacement field: its components, at the
+   points where its label is 1, take BCValue's values. */
+static PetscErrorCode BodyBCImpose(Body b, PetscInt i)
+{
+  BodyBC   *bc  = &b->bc[i];
+  void    **ctx = b->bcctx[i];
+  PetscInt  one = 1;
+
+  PetscFunctionBeginUser;
+  ctx[0] = b;
+  ctx[1] = bc;
+  PetscCall(DMAddBoundary(b->dm, DM_BC_ESSENTIAL, bc->group, bc->label, 1, &one, 0, bc->ncomp, bc->comps, (void (*)(void))BCValue, NULL, ctx, NULL));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyConditionsSetUp(Body b)
+{
+  DMLabel faces;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC  *bc = &b->bc[i];
+    char     lname[2 * CONTACT_NAME_LEN];
+    IS       is = NULL;
+    PetscInt n = 0, gn;
+
+    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &bc->tag));
+    PetscCall(PetscSNPrintf(lname, sizeof(lname), "bc_%s", bc->group));
+    PetscCall(DMCreateLabel(b->dm, lname));
+    PetscCall(DMGetLabel(b->dm, lname, &bc->label));
+    if (faces) PetscCall(DMLabelGetStratumIS(faces, bc->tag, &is));
+    if (is) {
+      const PetscInt *pts;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+      for (PetscInt j = 0; j < n; ++j) PetscCall(DMLabelSetValue(bc->label, pts[j], 1));
+      PetscCall(ISRestoreIndices(is, &pts));
+      PetscCall(ISDestroy(&is));
+    }
+    PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
+    PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: physical group '%s' of mesh %s has no edges", b->name, bc->group, b->msh);
+    PetscCall(DMPlexLabelComplete(b->dm, bc->label));
+    PetscCall(BodyBCImpose(b, i));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyAddDirichlet(Body b, const BodyBC *bc)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(b->nbc < CONTACT_MAX_BC, b->comm, PETSC_ERR_USER_INPUT, "body %s: no room for its condition %s: at most %d Dirichlet conditions", b->name, bc->group, CONTACT_MAX_BC);
+  b->bc[b->nbc] = *bc;
+  PetscCall(BodyBCImpose(b, b->nbc++));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyBCHolds(const BodyBC *bc, PetscInt p, PetscInt c, PetscInt *k)
+{
+  PetscInt val;
+
+  PetscFunctionBeginUser;
+  *k = -1;
+  PetscCall(DMLabelGetValue(bc->label, p, &val));
+  for (PetscInt l = 0; l < bc->ncomp && val == 1; ++l)
+    if (bc->comps[l] == c) *k = l;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyBCHolding(Body b, PetscInt p, PetscInt c, PetscInt *i, PetscInt *k)
+{
+  PetscFunctionBeginUser;
+  *i = *k = -1;
+  for (PetscInt j = 0; j < b->nbc && *i < 0; ++j) {
+    PetscCall(BodyBCHolds(&b->bc[j], p, c, k));
+    if (*k >= 0) *i = j;
+  }
+  PetscFunctionReturn(0);
+}
 
 /* Collective: whether some rank found a conflict, and the first such rank's
    description info[n] on every rank (so that every rank stops with the same line). */

@@ -33,7 +33,7 @@
    the whole ring's. The pressure's integrand gains a degree (to 5), still
    exact with 3 points; its axial resultant is p times the area the group's
    ends sweep, pi (r_1^2 - r_0^2). */
-#include "body.h"
+#include "loads.h"
 #include "options.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)

@@ -41,6 +41,8 @@
 #include "options.h"
 #include "progress.h"
 #include "outputset.h"
+#include "gather.h"
+#include "transfer.h"
 
 struct _n_Accuracy {
   MPI_Comm  comm;
@@ -158,34 +160,6 @@ static void AccuracyEstimate(const AccuracyProfiles *prev, const AccuracyProfile
   }
 }
 
-/* Collective: every rank's n reals gathered on rank 0, or on every rank
-   (everyone): *all and *ntot there (PetscFree), NULL and 0 elsewhere. */
-static PetscErrorCode GatherReals(MPI_Comm comm, PetscBool everyone, PetscInt n, const PetscReal loc[], PetscInt *ntot, PetscReal **all)
-{
-  PetscMPIInt rank, size, nl = (PetscMPIInt)n, *cnt = NULL, *disp = NULL;
-  PetscBool   here;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  here  = (PetscBool)(everyone || !rank);
-  *ntot = 0;
-  *all  = NULL;
-  if (here) PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  if (everyone) PetscCallMPI(MPI_Allgather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, comm));
-  else PetscCallMPI(MPI_Gather(&nl, 1, MPI_INT, cnt, 1, MPI_INT, 0, comm));
-  if (here) {
-    disp[0] = 0;
-    for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
-    PetscCall(PetscMalloc1(disp[size] + 1, all));
-    *ntot = disp[size];
-  }
-  if (everyone) PetscCallMPI(MPI_Allgatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, comm));
-  else PetscCallMPI(MPI_Gatherv(loc, nl, MPIU_REAL, *all, cnt, disp, MPIU_REAL, 0, comm));
-  if (here) PetscCall(PetscFree2(cnt, disp));
-  PetscFunctionReturn(0);
-}
-
 /* Every rank: the reference coordinates of the nodes of body b on which a
    contact term exerts a force at the state in the bodies' local vectors
    (the terms' gradient, evaluated by the caller into b->Gl). */
@@ -218,35 +192,9 @@ static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
     ++m;
   }
   PetscCall(VecRestoreArrayRead(b->Gl, &g));
-  PetscCall(GatherReals(b->comm, PETSC_TRUE, 2 * m, loc, nz, z));
+  PetscCall(ContactGatherReals(b->comm, PETSC_TRUE, 2 * m, loc, nz, z));
   *nz /= 2;
   PetscCall(PetscFree(loc));
-  PetscFunctionReturn(0);
-}
-
-/* A body's cell vertices among its nb nodes (basis order), in cyclic order
-   (quadrilaterals: reference (-1,-1), (1,-1), (1,1), (-1,1)), and the
-   reference coordinates of every node, ref[2 nb]. */
-static PetscErrorCode BodyCorners(Body b, PetscReal ref[], PetscInt corner[4], PetscInt *nv)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(b->nb <= 64, b->comm, PETSC_ERR_SUP, "body %s: %" PetscInt_FMT " nodes per cell", b->name, b->nb);
-  PetscCall(BodyGetReferenceNodes(b, ref));
-  *nv = 0;
-  for (PetscInt a = 0; a < b->nb && *nv < 4; ++a) {
-    const PetscReal x = ref[2 * a], y = ref[2 * a + 1];
-    const PetscBool c = b->simplex ? (PetscBool)(PetscAbsReal(x + y) < 1e-12 || (x < -1 + 1e-12 && y < -1 + 1e-12)) : (PetscBool)(PetscAbsReal(PetscAbsReal(x) - 1) < 1e-12 && PetscAbsReal(PetscAbsReal(y) - 1) < 1e-12);
-    if (c && (!b->simplex || PetscAbsReal(PetscAbsReal(x) - 1) < 1e-12)) corner[(*nv)++] = a;
-  }
-  PetscCheck(*nv == (b->simplex ? 3 : 4), b->comm, PETSC_ERR_PLIB, "body %s: %" PetscInt_FMT " vertices found in a cell", b->name, *nv);
-  if (!b->simplex) {
-    PetscInt  o[4] = {0, 0, 0, 0};
-    PetscReal want[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (PetscInt k = 0; k < 4; ++k)
-      for (PetscInt v = 0; v < 4; ++v)
-        if (ref[2 * corner[v]] == want[k][0] && ref[2 * corner[v] + 1] == want[k][1]) o[k] = corner[v];
-    for (PetscInt k = 0; k < 4; ++k) corner[k] = o[k];
-  }
   PetscFunctionReturn(0);
 }
 
@@ -280,7 +228,7 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  PetscCall(BodyCorners(b, ref, corner, &nv));
+  PetscCall(BodyGetCellCorners(b, ref, corner, &nv));
   PetscCall(PetscMalloc1(FIELD_REC * b->ncells + 1, &rec));
   for (PetscInt c = 0; c < b->ncells; ++c) { /* first each cell's size, its vertices and their distances from the zone; h_z */
     const PetscReal *x = &b->xnode[2 * b->nb * c];
@@ -313,7 +261,7 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
       } else r[3 + 3 * v] = h;
     }
   }
-  PetscCall(GatherReals(b->comm, PETSC_FALSE, FIELD_REC * b->ncells, rec, &ntot, &all));
+  PetscCall(ContactGatherReals(b->comm, PETSC_FALSE, FIELD_REC * b->ncells, rec, &ntot, &all));
   if (!rank) {
     const PetscInt n  = ntot / FIELD_REC;
     FILE          *fp = fopen(path, "w");
@@ -358,7 +306,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   n = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt c = 0; c < p->bodies[i]->ncells; ++c) e2[n++] = PetscSqr(eta[i][c]);
-  PetscCall(GatherReals(p->comm, PETSC_FALSE, n, e2, &ntot, &all));
+  PetscCall(ContactGatherReals(p->comm, PETSC_FALSE, n, e2, &ntot, &all));
   if (!rank) {
     PetscReal total = 0.0, sum = 0.0;
     PetscCall(PetscSortReal(ntot, all));
@@ -390,184 +338,15 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   PetscFunctionReturn(0);
 }
 
-/* Reference coordinates in an old cell of the point X, from the cell's
-   straight-sided shape through its vertices v (affine triangle, bilinear
-   quadrilateral); returns how far outside the cell the point lies (0 inside),
-   the coordinates clamped into the cell. */
-static PetscReal CellLocate(PetscBool simplex, const PetscReal v[][2], const PetscReal R[][2], const PetscReal X[2], PetscReal xi[2])
-{
-  if (simplex) {
-    const PetscReal a = v[1][0] - v[0][0], b = v[2][0] - v[0][0], c = v[1][1] - v[0][1], d = v[2][1] - v[0][1], det = a * d - b * c;
-    const PetscReal rx = X[0] - v[0][0], ry = X[1] - v[0][1];
-    PetscReal       l1 = (d * rx - b * ry) / det, l2 = (-c * rx + a * ry) / det, out, sum;
-    out = PetscMax(PetscMax(-l1, -l2), l1 + l2 - 1.0);
-    l1  = PetscMax(l1, 0.0);
-    l2  = PetscMax(l2, 0.0);
-    sum = l1 + l2;
-    if (sum > 1.0) {
-      l1 /= sum;
-      l2 /= sum;
-    }
-    for (PetscInt k = 0; k < 2; ++k) xi[k] = R[0][k] + l1 * (R[1][k] - R[0][k]) + l2 * (R[2][k] - R[0][k]);
-    return PetscMax(out, 0.0);
-  } else {
-    PetscReal s = 0.0, t = 0.0, out;
-    for (PetscInt it = 0; it < 20; ++it) { /* Newton on x(s, t) = X */
-      const PetscReal N[4] = {(1 - s) * (1 - t) / 4, (1 + s) * (1 - t) / 4, (1 + s) * (1 + t) / 4, (1 - s) * (1 + t) / 4};
-      const PetscReal Ns[4] = {-(1 - t) / 4, (1 - t) / 4, (1 + t) / 4, -(1 + t) / 4}, Nt[4] = {-(1 - s) / 4, -(1 + s) / 4, (1 + s) / 4, (1 - s) / 4};
-      PetscReal       r[2] = {-X[0], -X[1]}, J[4] = {0, 0, 0, 0}, det, ds, dt;
-      for (PetscInt k = 0; k < 4; ++k) {
-        r[0] += N[k] * v[k][0];
-        r[1] += N[k] * v[k][1];
-        J[0] += Ns[k] * v[k][0];
-        J[1] += Nt[k] * v[k][0];
-        J[2] += Ns[k] * v[k][1];
-        J[3] += Nt[k] * v[k][1];
-      }
-      det = J[0] * J[3] - J[1] * J[2];
-      if (det == 0) break;
-      ds = (J[3] * r[0] - J[1] * r[1]) / det;
-      dt = (-J[2] * r[0] + J[0] * r[1]) / det;
-      s -= ds;
-      t -= dt;
-      if (PetscAbsReal(ds) + PetscAbsReal(dt) < 1e-13) break;
-    }
-    out   = PetscMax(PetscAbsReal(s), PetscAbsReal(t)) - 1.0;
-    xi[0] = PetscMax(-1.0, PetscMin(1.0, s));
-    xi[1] = PetscMax(-1.0, PetscMin(1.0, t));
-    return PetscMax(out, 0.0);
-  }
-}
-
 /* Collective: the last step's displacement at the new meshes' nodes (X0, the
-   first iterate of the next solve). Per body, every rank gets every old cell
-   (its vertices and the nodal displacements) and locates its new nodes in
-   them through a bucket grid; a node outside every cell (on a curved
-   boundary, between the two meshes' polygons) takes the nearest cell's
-   closest point. The old P2/Q2 displacement is evaluated there. */
+   first iterate of the next solve), each body's carried onto its new mesh
+   (transfer.c). */
 static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
 {
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(prev, prev->X));
   PetscCall(VecZeroEntries(X0));
-  PetscCall(VecSetOption(X0, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE));
-  for (PetscInt i = 0; i < cur->nbodies; ++i) {
-    Body            ob = prev->bodies[i], nbd = cur->bodies[i];
-    const PetscInt  nb = ob->nb, R = 8 + 2 * nb; /* a record: 4 vertices, nb displacements */
-    PetscReal       ref[2 * 64], *rec, *all = NULL, lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, hsum = 0, bw;
-    PetscInt        corner[4], nv, ncell, nbx, nby, *bstart, *bcell, *bfill, npt = 0, *idx;
-    PetscReal      *pref, *pu, Rc[4][2];
-    PetscInt       *pcell;
-    const PetscScalar *ua;
-    PetscSection    sec;
-    PetscTabulation T;
-
-    PetscCall(BodyCorners(ob, ref, corner, &nv));
-    for (PetscInt k = 0; k < nv; ++k)
-      for (PetscInt d = 0; d < 2; ++d) Rc[k][d] = ref[2 * corner[k] + d];
-    PetscCall(VecGetArrayRead(ob->Xl, &ua));
-    PetscCall(PetscMalloc1(R * ob->ncells + 1, &rec));
-    for (PetscInt c = 0; c < ob->ncells; ++c) {
-      PetscReal *r = &rec[R * c];
-      for (PetscInt k = 0; k < 4; ++k) {
-        const PetscInt a = corner[PetscMin(k, nv - 1)];
-        r[2 * k]         = ob->xnode[2 * (nb * c + a)];
-        r[2 * k + 1]     = ob->xnode[2 * (nb * c + a) + 1];
-      }
-      for (PetscInt a = 0; a < nb; ++a) {
-        r[8 + 2 * a]     = PetscRealPart(ua[ob->cdof[nb * c + a]]);
-        r[8 + 2 * a + 1] = PetscRealPart(ua[ob->cdof[nb * c + a] + 1]);
-      }
-    }
-    PetscCall(VecRestoreArrayRead(ob->Xl, &ua));
-    PetscCall(GatherReals(cur->comm, PETSC_TRUE, R * ob->ncells, rec, &ncell, &all));
-    ncell /= R;
-    PetscCall(PetscFree(rec));
-    /* bucket grid over the cells' boxes, buckets about two cells wide */
-    for (PetscInt c = 0; c < ncell; ++c)
-      for (PetscInt k = 0; k < nv; ++k)
-        for (PetscInt d = 0; d < 2; ++d) {
-          lo[d] = PetscMin(lo[d], all[R * c + 2 * k + d]);
-          hi[d] = PetscMax(hi[d], all[R * c + 2 * k + d]);
-        }
-    for (PetscInt c = 0; c < ncell; ++c) hsum += PetscAbsReal(all[R * c] - all[R * c + 2]) + PetscAbsReal(all[R * c + 1] - all[R * c + 3]);
-    bw  = PetscMax(2.0 * hsum / PetscMax(ncell, 1), 1e-12);
-    nbx = PetscMin(2048, (PetscInt)((hi[0] - lo[0]) / bw) + 1);
-    nby = PetscMin(2048, (PetscInt)((hi[1] - lo[1]) / bw) + 1);
-    PetscCall(PetscCalloc2(nbx * nby + 1, &bstart, nbx * nby + 1, &bfill));
-    for (PetscInt pass = 0; pass < 2; ++pass) {
-      if (pass) {
-        for (PetscInt k = 0; k < nbx * nby; ++k) bstart[k + 1] += bstart[k];
-        PetscCall(PetscMalloc1(bstart[nbx * nby] + 1, &bcell));
-      }
-      for (PetscInt c = 0; c < ncell; ++c) {
-        PetscReal cl[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, ch[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
-        for (PetscInt k = 0; k < nv; ++k)
-          for (PetscInt d = 0; d < 2; ++d) {
-            cl[d] = PetscMin(cl[d], all[R * c + 2 * k + d]);
-            ch[d] = PetscMax(ch[d], all[R * c + 2 * k + d]);
-          }
-        for (PetscInt bx = (PetscInt)((cl[0] - lo[0]) / bw); bx <= PetscMin(nbx - 1, (PetscInt)((ch[0] - lo[0]) / bw)); ++bx)
-          for (PetscInt by = (PetscInt)((cl[1] - lo[1]) / bw); by <= PetscMin(nby - 1, (PetscInt)((ch[1] - lo[1]) / bw)); ++by) {
-            if (!pass) bstart[bx * nby + by + 1]++;
-            else bcell[bstart[bx * nby + by] + bfill[bx * nby + by]++] = c;
-          }
-      }
-    }
-    /* the new nodes this rank owns and solves for */
-    PetscCall(DMGetLocalSection(nbd->dm, &sec));
-    PetscCall(PetscMalloc4(2 * (nbd->pEnd - nbd->pStart) + 1, &pref, nbd->pEnd - nbd->pStart + 1, &pcell, 2 * (nbd->pEnd - nbd->pStart) + 1, &pu, 2 * (nbd->pEnd - nbd->pStart) + 1, &idx));
-    for (PetscInt p = nbd->pStart; p < nbd->pEnd; ++p) {
-      const PetscReal *X = &nbd->xpoint[2 * (p - nbd->pStart)];
-      PetscInt         dof, off, best = -1, bx, by;
-      PetscReal        bestOut = PETSC_MAX_REAL, xi[2] = {0, 0}, v[4][2];
-      PetscCall(PetscSectionGetDof(sec, p, &dof));
-      if (dof != 2 || !nbd->owned[p - nbd->pStart]) continue;
-      PetscCall(PetscSectionGetOffset(sec, p, &off));
-      if (nbd->l2b[off] < 0 && nbd->l2b[off + 1] < 0) continue;
-      bx = PetscMax(0, PetscMin(nbx - 1, (PetscInt)((X[0] - lo[0]) / bw)));
-      by = PetscMax(0, PetscMin(nby - 1, (PetscInt)((X[1] - lo[1]) / bw)));
-      for (PetscInt sweep = 0; sweep < 2 && best < 0; ++sweep) { /* the node's bucket, else every cell */
-        const PetscInt k0 = sweep ? 0 : bstart[bx * nby + by], k1 = sweep ? ncell : bstart[bx * nby + by + 1];
-        for (PetscInt k = k0; k < k1 && bestOut > 0; ++k) {
-          const PetscInt c = sweep ? k : bcell[k];
-          PetscReal      x2[2], o;
-          for (PetscInt j = 0; j < nv; ++j) {
-            v[j][0] = all[R * c + 2 * j];
-            v[j][1] = all[R * c + 2 * j + 1];
-          }
-          o = CellLocate(ob->simplex, (const PetscReal(*)[2])v, (const PetscReal(*)[2])Rc, X, x2);
-          if (o < bestOut) {
-            bestOut = o;
-            best    = c;
-            xi[0]   = x2[0];
-            xi[1]   = x2[1];
-          }
-        }
-      }
-      pcell[npt]        = best;
-      pref[2 * npt]     = xi[0];
-      pref[2 * npt + 1] = xi[1];
-      idx[2 * npt]      = nbd->l2b[off];
-      idx[2 * npt + 1]  = nbd->l2b[off + 1];
-      ++npt;
-    }
-    PetscCall(PetscFECreateTabulation(ob->feScalar, 1, npt ? npt : 1, pref, 0, &T));
-    for (PetscInt k = 0; k < npt; ++k) {
-      const PetscReal *r = &all[R * pcell[k]];
-      pu[2 * k] = pu[2 * k + 1] = 0.0;
-      for (PetscInt a = 0; a < nb; ++a) {
-        pu[2 * k] += T->T[0][k * nb + a] * r[8 + 2 * a];
-        pu[2 * k + 1] += T->T[0][k * nb + a] * r[8 + 2 * a + 1];
-      }
-    }
-    PetscCall(PetscTabulationDestroy(&T));
-    PetscCall(VecSetValues(X0, 2 * npt, idx, pu, INSERT_VALUES)); /* negative indices (constrained) are skipped */
-    PetscCall(PetscFree4(pref, pcell, pu, idx));
-    PetscCall(PetscFree2(bstart, bfill));
-    PetscCall(PetscFree(bcell));
-    PetscCall(PetscFree(all));
-  }
+  for (PetscInt i = 0; i < cur->nbodies; ++i) PetscCall(BodyTransferDisplacement(prev->bodies[i], prev->bodies[i]->Xl, cur->bodies[i], X0));
   PetscCall(VecAssemblyBegin(X0));
   PetscCall(VecAssemblyEnd(X0));
   PetscFunctionReturn(0);

@@ -1,0 +1,115 @@
+#pragma once
+/* A body's data (bodycore.c): the Body struct, its Dirichlet conditions and
+   loads as data, and the queries of its mesh that the body's files share
+   (body.c, conditions.c, loads.c, axis.c, anchors.c, rigid.c, transfer.c).
+   It calls none of them. */
+#include "contact.h"
+#include "exact.h"
+
+/* A Dirichlet condition: a named physical group (or the program's own
+   points: the axis's, an anchor's), constrained components and values. A force-controlled component (-<body>_bc_<group>_control force)
+   moves the group rigidly by values[c], which the solve finds so that the
+   reaction equals force[c] (forcecontrol.c). */
+typedef struct {
+  char      group[CONTACT_NAME_LEN];
+  PetscInt  ncomp, comps[2];
+  PetscReal values[2];
+  PetscBool control[2]; /* component c (of comps) is force-controlled */
+  PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
+  PetscReal force[2];   /* its force: the reaction it must have */
+  PetscBool exact;   /* values from the body's exact solution */
+  PetscInt  tag;     /* Gmsh physical tag */
+  DMLabel   label;   /* faces of the group and their closure */
+  PetscReal reaction[2];
+} BodyBC;
+
+/* A dead load on a named physical group (loads.c): a traction per unit
+   reference length, or a pressure along the inward reference normal. */
+typedef struct {
+  char      group[CONTACT_NAME_LEN];
+  PetscBool isPressure;
+  PetscReal traction[2], pressure;
+  PetscReal force[2]; /* its resultant at the full load, summed over ranks (BodyLoadsSetUp) */
+} BodyLoad;
+
+/* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
+   conditions and the per-cell geometry cache used by the element loops. */
+typedef struct _n_Body *Body;
+struct _n_Body {
+  char      name[CONTACT_NAME_LEN];
+  MPI_Comm  comm;
+  char      geo[PETSC_MAX_PATH_LEN], msh[PETSC_MAX_PATH_LEN];
+  PetscReal h;
+  PetscInt  ngeoparams;
+  char     *geoparams[16];
+  char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement, BodySetSizeField), or empty */
+  PetscReal E, nu, param[2]; /* param = {lambda, mu} */
+  PetscInt  nbc, qdeg;
+  void     *bcctx[CONTACT_MAX_BC][2];
+  BodyBC    bc[CONTACT_MAX_BC];
+  PetscInt  nload;
+  BodyLoad  load[CONTACT_MAX_BC];
+  Vec       Fl;         /* the loads' consistent nodal forces at the full load (local vector; this rank's edges), or NULL */
+  PetscReal loadFactor; /* load stepping: the fraction of the Dirichlet values and loads applied */
+  ExactSolution exact;
+  PetscBool hasExact;
+
+  PetscInt  nphys;
+  char    **physNames;
+  PetscInt *physDims, *physTags;
+
+  DM        dm;
+  PetscFE   fe, feScalar;
+  PetscBool simplex;
+  PetscInt  dim, ncells, nb, nq, ncellsGlobal;
+  PetscInt *cpts;  /* [ncells][nb]: node points of each cell, in basis order */
+  PetscInt *cdof;  /* [ncells][nb]: local offset of the first component of each node */
+  PetscReal *dNdx; /* [ncells][nq][nb][2] */
+  PetscReal *wdetJ;/* [ncells][nq] */
+  PetscReal *xq;   /* [ncells][nq][2] */
+  PetscReal *xnode;/* [ncells][nb][2] node coordinates */
+  const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
+  Vec       Xg, Gg, Xl, Gl, bcl, bclFull; /* bcl: Dirichlet values of the load step, bclFull: the scene's */
+  PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
+  PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
+  PetscInt  pStart, pEnd;   /* chart */
+  PetscReal *xpoint;        /* [chart][2] reference coordinates of node points */
+  PetscBool *owned;         /* [chart] point owned by this rank */
+  PetscSection nodeGS;      /* global numbering of the node points */
+  PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
+  PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
+  PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
+  PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
+  PetscBool axisym;     /* set before BodySetUp (-axisymmetric): x is the radius r >= 0, y the axis; every volume and surface measure carries 2 pi r (axis.c) */
+};
+
+/* The measure a point at radius x sweeps per unit area or length: 2 pi x in
+   axisymmetry, 1 in plane strain. */
+static inline PetscReal BodyRadialWeight(Body b, PetscReal x)
+{
+  return b->axisym ? 2.0 * PETSC_PI * x : 1.0;
+}
+
+/* Refuses a group named twice in the list of option opt (-<body>_bc, -<body>_load). */
+PetscErrorCode BodyCheckGroupsUnique(Body, const char opt[], PetscInt n, char *const names[]);
+PetscErrorCode BodyGetPhysicalTag(Body, const char group[], PetscInt dim, PetscInt *tag);
+/* Reference coordinates of the nodes of the scalar element, in basis order. */
+PetscErrorCode BodyGetReferenceNodes(Body, PetscReal ref[]);
+/* The cell vertices among the element's nb nodes (basis order), in cyclic
+   order (quadrilaterals: reference (-1,-1), (1,-1), (1,1), (-1,1)), their
+   number nv, and the reference coordinates of every node, ref[2 nb] (nb <= 64). */
+PetscErrorCode BodyGetCellCorners(Body, PetscReal ref[], PetscInt corner[4], PetscInt *nv);
+/* Collective: refuses a first-order mesh (affine coordinates) in one line. */
+PetscErrorCode BodyCheckSecondOrder(Body);
+/* This rank's vertices' coordinates, [v - vStart][2] (PetscFree); before the section exists too. */
+PetscErrorCode BodyVertexCoordinates(Body, PetscReal **xy);
+/* Collective: the bounding box lo, hi of every rank's points xy[n][2]. */
+PetscErrorCode BodyPointsBox(Body, PetscInt n, const PetscReal xy[], PetscReal lo[2], PetscReal hi[2]);
+/* The nodes of boundary edge e: their points (corner, corner, mid) and coordinates. */
+PetscErrorCode BodyEdgeNodes(Body, PetscInt e, PetscInt pts[3], PetscReal x[6]);
+/* Whether the reference edge e (a point of b's DMPlex, on the boundary) has
+   outward normal +(t_y, -t_x) or -(t_y, -t_x), t the chord from its first to
+   its second node: away from the centroid of the cell on it. x: its nodes'
+   coordinates (corner, corner, mid); what: who asks, for the error of an
+   edge that is not on the boundary. */
+PetscErrorCode BodyEdgeOutwardSign(Body, PetscInt e, const PetscReal x[6], const char what[], const char group[], PetscReal *sign);

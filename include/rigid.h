@@ -1,0 +1,15 @@
+#pragma once
+/* A body's rigid motions (rigid.c): the modes themselves, and the algebra
+   that counts how many of them its Dirichlet conditions leave free. */
+#include "bodycore.h"
+
+PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[3]);
+PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
+/* Adds to the rigid-motion constraint Gram matrix M the row of component c
+   fixed at (x, y) (coordinates centred and scaled): (e_c, r_c), r = (-y, x). */
+void           BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y);
+/* The rank of a rigid-motion constraint Gram matrix (3 x 3: x and y
+   translation, rotation), by elimination with full pivoting. */
+PetscInt       BodyRigidRank(const PetscReal M[9]);
+/* Axisymmetry: the radial translation and the rotation marked held in M. */
+void           BodyRigidGramAxisymmetric(Body, PetscReal M[9]);

@@ -1,0 +1,142 @@
+/* A body's rigid motions r(x) = (t_x - w y, t_y + w x): the three modes
+   (translations in x and y, the rotation w) as vectors, and the algebra that
+   counts how many of them its Dirichlet conditions leave free. A
+   constrained component c at node x removes the row e_c . dr/d(t_x, t_y, w);
+   the constraint Gram matrix M, the sum of the rows' outer products (3 x 3,
+   coordinates centred and scaled for conditioning), has the free motions
+   as its null space, so 3 - rank M of them are free. anchors.c adds rows to
+   it until none is. */
+#include "rigid.h"
+
+/* The body's rigid motions (translations in x and y, the rotation about the
+   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
+   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
+   local parts of three joined vectors. */
+PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
+{
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt        dof, off;
+    const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
+
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    for (PetscInt d = 0; d < PetscMin(dof, 2); ++d) {
+      const PetscInt g = b->l2b[off + d];
+      if (g < rstart || g >= rend) continue;
+      if (b->axisym && d == 0) continue; /* in r-z the translation along the axis alone */
+      modes[d][g - rstart] += 1.0;
+      if (!b->axisym) modes[2][g - rstart] += d == 0 ? -y : x;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Number of rigid motions (x and y translation, rotation) that the Dirichlet
+   conditions leave free. A constrained component c at node x removes the part
+   of the rigid motion r(x) = (t_x - w y, t_y + w x) in that component, i.e. the
+   row e_c . dr/d(t_x, t_y, w); the free motions are the null space of the sum
+   of the rows' outer products (coordinates centred and scaled for conditioning). */
+PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
+{
+  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[2], ghi[2], c[2], L;
+  PetscReal M[9] = {0}, Mg[9];
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
+    if (!dof) continue;
+    for (PetscInt d = 0; d < 2; ++d) {
+      lo[d] = PetscMin(lo[d], b->xpoint[2 * p + d]);
+      hi[d] = PetscMax(hi[d], b->xpoint[2 * p + d]);
+    }
+  }
+  PetscCall(MPIU_Allreduce(lo, glo, 2, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCall(MPIU_Allreduce(hi, ghi, 2, MPIU_REAL, MPIU_MAX, b->comm));
+  c[0] = 0.5 * (glo[0] + ghi[0]);
+  c[1] = 0.5 * (glo[1] + ghi[1]);
+  L    = PetscMax(ghi[0] - glo[0], ghi[1] - glo[1]);
+  if (!(L > 0)) L = 1.0;
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC *bc = &b->bc[i];
+    IS      is;
+
+    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
+    if (!is) continue;
+    {
+      const PetscInt *pts;
+      PetscInt        n;
+      PetscCall(ISGetLocalSize(is, &n));
+      PetscCall(ISGetIndices(is, &pts));
+      for (PetscInt j = 0; j < n; ++j) {
+        PetscInt  dof, q = pts[j] - b->pStart;
+        PetscReal x, y;
+        PetscCall(PetscSectionGetDof(s, pts[j], &dof));
+        if (!dof) continue;
+        x = (b->xpoint[2 * q] - c[0]) / L;
+        y = (b->xpoint[2 * q + 1] - c[1]) / L;
+        for (PetscInt k = 0; k < bc->ncomp; ++k) BodyRigidGramAddRow(M, bc->comps[k], x, y);
+      }
+      PetscCall(ISRestoreIndices(is, &pts));
+    }
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  BodyRigidGramAxisymmetric(b, Mg);
+  *nfree = 3 - BodyRigidRank(Mg);
+  PetscFunctionReturn(0);
+}
+
+/* In r-z a body's only rigid motion is the translation along the axis: a
+   radial translation or a rotation strains the hoop. Those two are held, as
+   if by a constraint row each. */
+void BodyRigidGramAxisymmetric(Body b, PetscReal M[9])
+{
+  if (!b->axisym) return;
+  M[0] += 1.0;
+  M[8] += 1.0;
+}
+
+void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
+{
+  const PetscReal r[3] = {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? -y : x};
+
+  for (PetscInt a = 0; a < 3; ++a)
+    for (PetscInt e = 0; e < 3; ++e) M[3 * a + e] += r[a] * r[e];
+}
+
+PetscInt BodyRigidRank(const PetscReal M[9])
+{
+  PetscReal Mg[9], tol = 1e-10 * (M[0] + M[4] + M[8]);
+  PetscInt  rank = 0;
+  PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+
+  for (PetscInt k = 0; k < 9; ++k) Mg[k] = M[k];
+  for (PetscInt step = 0; step < 3; ++step) {
+    PetscInt  pr = -1, pc = -1;
+    PetscReal best = tol;
+    for (PetscInt a = 0; a < 3; ++a)
+      for (PetscInt e = 0; e < 3; ++e)
+        if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
+          best = PetscAbsReal(Mg[3 * a + e]);
+          pr   = a;
+          pc   = e;
+        }
+    if (pr < 0) break;
+    used[pr] = PETSC_TRUE;
+    ++rank;
+    for (PetscInt a = 0; a < 3; ++a) {
+      PetscReal f;
+      if (used[a]) continue;
+      f = Mg[3 * a + pc] / Mg[3 * pr + pc];
+      for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
+    }
+  }
+  return rank;
+}
