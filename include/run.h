@@ -20,9 +20,9 @@ typedef enum { RUN_TIME_MESH, RUN_TIME_SETUP, RUN_TIME_SOLVE, RUN_TIME_OUTPUT, R
 extern const char *const RunTimeNames[];
 
 /* -accuracy's estimates of one step (relative; Inf at the first step): the
-   pressure profiles', the contact forces' (Inf where every force is given by
-   force controls: forceGiven), the force-controlled displacements' (0 where
-   there are none), and the largest of them. */
+   step's, the largest of the others; the pressure profiles'; the contact
+   forces' (Inf where every force is given by force controls: forceGiven);
+   the force-controlled displacements' (0 where there are none). */
 typedef enum { ACCURACY_ESTIMATE, ACCURACY_PROFILE, ACCURACY_FORCE, ACCURACY_DISPLACEMENT, ACCURACY_N } AccuracyEstimateKind;
 
 /* One step of -accuracy's refinement: its dofs, solve time, error estimates,
