@@ -3,8 +3,9 @@
 
 /* -accuracy TOL (accuracy.c): the pipeline of run.h in a loop, on a sequence
    of meshes, each refined around the contact zones of the last, until the
-   estimated relative error of the contact pressure profiles and forces is
-   below TOL. */
+   estimated relative error of the contact pressure profiles, the contact
+   forces computed (not given by force controls) and the displacements of
+   the force-controlled groups is below TOL. */
 typedef struct _n_Accuracy *Accuracy;
 
 PetscErrorCode AccuracyCreate(MPI_Comm, Accuracy *);

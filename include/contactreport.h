@@ -29,6 +29,7 @@ typedef struct {
 typedef struct {
   ContactSide side[2];
   PetscReal   kp, force[2], P, maxPen, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
+  PetscReal   resultant[2]; /* the pair's force: force doubled across a mirror line and cancelled along it; P is its norm */
   PetscReal   hEdge; /* the shorter of the two surfaces' mean reference edge lengths */
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
   PetscBool   done;

@@ -22,7 +22,7 @@ typedef struct {
   PetscErrorCode (*writejson)(EnergyTerm, Body[], FILE *, PetscBool summary);
   PetscErrorCode (*writehdf5)(EnergyTerm, Body[], PetscViewer);
   PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
-  PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);
+  PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
   PetscErrorCode (*diagnose)(EnergyTerm, size_t, char[]);
   PetscErrorCode (*destroy)(EnergyTerm);
 } EnergyTermOps;
@@ -68,7 +68,7 @@ PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
    one-sided surface side (0 or 1), n samples sorted by arc position s with
    their pressure p and weight w (PetscFree each; n = 0 where the surface is
    not a slave, whose profile is transferred, or the term is no contact), and
-   the contact force it transmits. */
-PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force);
+   the contact force it transmits (x and y; its norm is the force P). */
+PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
 /* After the post-processing: why the term may have kept the solve from converging, or an empty string. */
 PetscErrorCode EnergyTermDiagnose(EnergyTerm, size_t n, char why[]);

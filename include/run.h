@@ -19,12 +19,19 @@
 typedef enum { RUN_TIME_MESH, RUN_TIME_SETUP, RUN_TIME_SOLVE, RUN_TIME_OUTPUT, RUN_TIME_TOTAL, RUN_TIME_N } RunTime;
 extern const char *const RunTimeNames[];
 
-/* One step of -accuracy's refinement: its dofs, solve time and error
-   estimates (relative: the pressure profiles', the contact force's, and the
-   larger of the two; Inf at the first step). */
+/* -accuracy's estimates of one step (relative; Inf at the first step): the
+   step's, the largest of the others; the pressure profiles'; the contact
+   forces' (Inf where every force is given by force controls: forceGiven);
+   the force-controlled displacements' (0 where there are none). */
+typedef enum { ACCURACY_ESTIMATE, ACCURACY_PROFILE, ACCURACY_FORCE, ACCURACY_DISPLACEMENT, ACCURACY_N } AccuracyEstimateKind;
+
+/* One step of -accuracy's refinement: its dofs, solve time, error estimates,
+   and the displacements of its force controls (anchors aside). */
 typedef struct {
-  PetscInt  dofs, iterations;
-  PetscReal tsolve, estimate, profile, force;
+  PetscInt  dofs, iterations, ncontrols;
+  PetscReal tsolve, est[ACCURACY_N];
+  PetscBool forceGiven;
+  PetscReal U[CONTACT_MAX_CONTROLS];
 } AccuracyStep;
 
 /* The program's own options: its output set, and meshing alone. */

@@ -87,7 +87,7 @@ static PetscErrorCode ContactSideGather(ContactSide *S, const ContactPairSpec *s
 
 PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec, MPI_Comm comm, const PetscInt nloc[2], PetscReal *const rows[2], const PetscReal force[2][2], PetscReal maxPen, const PetscReal arcLength[2])
 {
-  PetscReal f[4] = {force[0][0], force[0][1], force[1][0], force[1][1]}, fm[2];
+  PetscReal f[4] = {force[0][0], force[0][1], force[1][0], force[1][1]};
 
   PetscFunctionBeginUser;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, f, 4, MPIU_REAL, MPIU_SUM, comm));
@@ -108,9 +108,9 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
   R->force[0] = f[0];
   R->force[1] = f[1];
   /* a mirrored half doubles the force across the line and cancels it along */
-  fm[0] = spec->mirror ? 2.0 * f[0] : f[0];
-  fm[1] = spec->mirror ? 0.0 : f[1];
-  R->P  = PetscSqrtReal(fm[0] * fm[0] + fm[1] * fm[1]);
+  R->resultant[0] = spec->mirror ? 2.0 * f[0] : f[0];
+  R->resultant[1] = spec->mirror ? 0.0 : f[1];
+  R->P            = PetscSqrtReal(PetscSqr(R->resultant[0]) + PetscSqr(R->resultant[1]));
   R->hEdge = PETSC_MAX_REAL;
   for (PetscInt s = 0; s < 2; ++s)
     if (R->side[s].nedges > 0) R->hEdge = PetscMin(R->hEdge, arcLength[s] / R->side[s].nedges);
@@ -171,16 +171,13 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
 {
   const PetscInt C = CONTACT_ROW_COLS;
   PetscMPIInt    rank;
-  PetscReal      fm[2];
   char           fs[2][64];
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  fm[0] = spec->mirror ? 2.0 * R->force[0] : R->force[0];
-  fm[1] = spec->mirror ? 0.0 : R->force[1];
   if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
-  PetscCall(ContactForceString(fm, spec->axisym, fs[0], sizeof(fs[0])));
+  PetscCall(ContactForceString(R->resultant, spec->axisym, fs[0], sizeof(fs[0])));
   PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   {

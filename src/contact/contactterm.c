@@ -211,13 +211,14 @@ static PetscErrorCode ContactTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ContactTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force)
+static PetscErrorCode ContactTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2])
 {
   const ContactTerm *b = (const ContactTerm *)t->data;
   const ContactSide *S = &b->report.side[side];
 
   PetscFunctionBeginUser;
-  *force = b->report.P;
+  force[0] = b->report.resultant[0];
+  force[1] = b->report.resultant[1];
   if (!b->report.done || !S->slave || S->n == 0) PetscFunctionReturn(0);
   PetscCall(PetscMalloc1(S->n, s));
   PetscCall(PetscMalloc1(S->n, p));

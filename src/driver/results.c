@@ -259,8 +259,13 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
   fprintf(fp, "\n  },\n");
 }
 
+/* -accuracy's steps: each one's estimates (null where there is none: the
+   first step's, a force estimate where every force is given), and under force
+   control the displacements found and their estimate. */
 static void JSONAccuracy(FILE *fp, const RunRecord *rec)
 {
+  const char *keys[ACCURACY_N] = {"error_estimate", "profile_estimate", "force_estimate", "displacement_estimate"};
+
   if (!(rec->accuracyTarget > 0)) return;
   ContactJSONKeyReal(fp, "  ", "accuracy_target", rec->accuracyTarget);
   ContactJSONKeyReal(fp, ",\n  ", "error_estimate", rec->errorEstimate);
@@ -269,9 +274,17 @@ static void JSONAccuracy(FILE *fp, const RunRecord *rec)
     const AccuracyStep *a = &rec->steps[k];
     fprintf(fp, "%s\n    {\"dofs\": %d, \"iterations\": %d", k ? "," : "", (int)a->dofs, (int)a->iterations);
     ContactJSONKeyReal(fp, ", ", "solve_time", a->tsolve);
-    ContactJSONKeyReal(fp, ", ", "error_estimate", a->estimate);
-    ContactJSONKeyReal(fp, ", ", "profile_estimate", a->profile);
-    ContactJSONKeyReal(fp, ", ", "force_estimate", a->force);
+    for (PetscInt e = 0; e < ACCURACY_N; ++e)
+      if (e != ACCURACY_DISPLACEMENT || a->ncontrols) ContactJSONKeyReal(fp, ", ", keys[e], a->est[e]);
+    fprintf(fp, ", \"force_given\": %s", a->forceGiven ? "true" : "false");
+    if (a->ncontrols) {
+      fprintf(fp, ", \"displacements\": [");
+      for (PetscInt c = 0; c < a->ncontrols; ++c) {
+        if (c) fprintf(fp, ", ");
+        ContactJSONReal(fp, a->U[c]);
+      }
+      fprintf(fp, "]");
+    }
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ],\n");

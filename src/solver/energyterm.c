@@ -103,12 +103,12 @@ PetscErrorCode EnergyTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode EnergyTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal *force)
+PetscErrorCode EnergyTermGetProfile(EnergyTerm t, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2])
 {
   PetscFunctionBeginUser;
-  *n     = 0;
-  *s     = *p = *w = NULL;
-  *force = 0.0;
+  *n       = 0;
+  *s       = *p = *w = NULL;
+  force[0] = force[1] = 0.0;
   if (t->ops.getprofile) PetscCall(t->ops.getprofile(t, side, n, s, p, w, force));
   PetscFunctionReturn(0);
 }
