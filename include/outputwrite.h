@@ -1,4 +1,5 @@
 #pragma once
+#include <petscviewer.h>
 /* Writing the files of the output set (outputwrite.c) so that a failed write
    (a full disk, a quota, an I/O error) stops the run with one line naming the
    file and the cause, "cannot write out/hertz.h5: No space left on device",
@@ -28,4 +29,16 @@ PetscErrorCode ContactOutputTextWrite(MPI_Comm, ContactOutputText *, const char 
    room); if the write or the close failed on any rank, End stops with the one
    line naming name and the cause (tmp: the file being written). */
 PetscErrorCode ContactOutputLibraryWriteBegin(void);
+/* Between Begin and End, each collective call of the write (a VecView, an
+   attribute) through ContactOutputCall(v, call): where it failed on one rank,
+   it fails on every rank of v's communicator, which would otherwise go on to
+   the next collective call and wait there for the rank that failed. */
+PetscErrorCode ContactOutputCollective(PetscViewer, PetscErrorCode ierr);
+/* Before a library's write on several ranks: whether the disk has room for
+   bytes in tmp (rank 0 allocates them and frees them again); if not, the one
+   line naming name and the cause, on every rank. Parallel HDF5 fails inside a
+   collective call on the rank whose write found no room, and the others wait
+   in it: this check is what keeps a full disk from hanging such a run. */
+PetscErrorCode ContactOutputCheckRoom(MPI_Comm, size_t bytes, const char tmp[], const char name[]);
+#define ContactOutputCall(v, call) PetscCall(ContactOutputCollective((v), (call)))
 PetscErrorCode ContactOutputLibraryWriteEnd(MPI_Comm, PetscErrorCode ierr, PetscErrorCode (*close)(void *), void *ctx, const char tmp[], const char name[]);

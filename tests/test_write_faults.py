@@ -90,6 +90,27 @@ def test_full_disk_one_line(case, small_disk):
         assert "Wrote" not in second.stdout and "TAO" not in second.stdout, "solved before finding the disk full"
 
 
+def test_full_disk_two_ranks(small_disk):
+    """On 2 ranks, parallel HDF5 fails inside a collective call on the rank
+    whose write found no room while the other waits in it (measured: a hang).
+    The room the HDF5 file needs is checked before it is written (its
+    bodies' datasets and 1 MiB, src/driver/results.c): the disk that makes
+    the HDF5 write fail on 1 rank gives the one line on 2 ranks, within the
+    timeout, status nonzero, the earlier set unchanged, nothing left."""
+    d = small_disk
+    first = run(d)
+    assert first.returncode == 0, first.stderr
+    before = digests(d)
+    fill(d, 1 + RESERVE_PAGES)
+    cmd = ["mpiexec", "-n", "2", str(BIN)] + HERTZ + ["-output", str(d / "h.h5"), "-summary", str(d / "h.json")]
+    second = subprocess.run(cmd, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=120)
+    ours = [l for l in second.stderr.splitlines() if l.startswith("contact")]
+    assert second.returncode != 0, second.stderr[-3000:]
+    assert ours == [f"contact: error: cannot write {d / 'h.h5'}: No space left on device"], second.stderr[-3000:]
+    assert digests(d) == before
+    assert sorted(os.listdir(d)) == sorted(SET + ("filler",))
+
+
 def test_room_enough_writes(small_disk):
     """The control: with the reserve and the pages the whole set takes (and
     the lock's), the second run writes its set over the first (so the count

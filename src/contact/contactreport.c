@@ -5,6 +5,7 @@
    ranks; the console report, the JSON members and the HDF5 group. */
 #include <petscviewerhdf5.h>
 #include "contactreport.h"
+#include "outputwrite.h"
 #include "xdmf.h"
 
 #define CONTACT_MIRROR_ROW_TOL 1e-10 /* a row this close to the line, relative to the arc length, is on it */
@@ -343,7 +344,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
       for (PetscInt i = 0; i < n; ++i)
         for (PetscInt j = 0; j < bs[k]; ++j) a[i * bs[k] + j] = S->rows[CONTACT_ROW_COLS * i + cols[k] + j];
       PetscCall(VecRestoreArray(vec, &a));
-      PetscCall(VecView(vec, v));
+      ContactOutputCall(v, VecView(vec, v));
       PetscCall(VecDestroy(&vec));
     }
     for (PetscInt k = 0; k < 2; ++k) { /* the XDMF grid's stand-ins for the bodies' fields (xdmf.h) */
@@ -354,7 +355,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
       PetscCall(VecSetType(vec, VECSTANDARD));
       PetscCall(PetscObjectSetName((PetscObject)vec, k ? "xdmf_zero_xyz" : "xdmf_nan"));
       PetscCall(VecSet(vec, k ? 0.0 : (PetscScalar)NAN));
-      PetscCall(VecView(vec, v));
+      ContactOutputCall(v, VecView(vec, v));
       PetscCall(VecDestroy(&vec));
     }
     { /* the line cells, decided on rank 0 (it holds the samples) */
@@ -378,34 +379,34 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
         PetscCall(ISCreateGeneral(comm, m * lc[1], idx, PETSC_OWN_POINTER, &is));
         PetscCall(ISSetBlockSize(is, lc[1]));
         PetscCall(PetscObjectSetName((PetscObject)is, R->nodal ? "node_cells" : "cells"));
-        PetscCall(ISView(is, v));
+        ContactOutputCall(v, ISView(is, v));
         PetscCall(ISDestroy(&is));
-        PetscCall(PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, lc[1] == 3 ? "Edge_3" : "Polyline"));
+        ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, lc[1] == 3 ? "Edge_3" : "Polyline"));
       }
     }
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &s)); /* its place in -contact_<pair>_surfaces (HDF5 lists groups by name) */
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &s)); /* its place in -contact_<pair>_surfaces (HDF5 lists groups by name) */
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", spec->name));
   PetscCall(PetscViewerHDF5PushGroup(v, group));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, spec->formulation));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &R->kp));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &R->P));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &R->maxPen));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &R->femPmax));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &R->femA));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, group, "fem_a_moment", PETSC_REAL, &R->femAm));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, spec->formulation));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &R->kp));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &R->P));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &R->maxPen));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &R->femPmax));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &R->femA));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_a_moment", PETSC_REAL, &R->femAm));
   if (spec->hertz) {
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &spec->Estar));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &spec->Rstar));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_a", PETSC_REAL, &R->hertzA));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "hertz_pmax", PETSC_REAL, &R->hertzPmax));
-    PetscCall(PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &R->l2err));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &spec->Estar));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &spec->Rstar));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "hertz_a", PETSC_REAL, &R->hertzA));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "hertz_pmax", PETSC_REAL, &R->hertzPmax));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &R->l2err));
   }
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
