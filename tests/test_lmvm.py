@@ -206,3 +206,27 @@ def test_lmvm_decrement_floor(rtol, tmp_path):
     assert s["lmvm_decrement_floor_stops"] == (0 if rtol == "1e-13" else s["lmvm_decrement_floor_stops"])
     assert s["lmvm_decrement_floor_stops"] <= 1
     assert dP <= 1e-8
+
+
+@pytest.mark.parametrize("funcs", ["3", "4"])
+def test_lmvm_restarts(funcs, tmp_path):
+    """-lmvm_restarts: a line search held to a strict curvature condition
+    (-tao_ls_gtol 1e-3) with few evaluations (-tao_ls_max_funcs 3, and the
+    neighbour 4) fails in L-BFGS's first stage on the reference scene. At
+    the default (50 restarts) the solve restarts from where it stopped
+    (measured: 1 restart, no load cutback, 17 iterations); with
+    -lmvm_restarts 0 the failure goes to the load cutback instead (3
+    cutbacks, 68 iterations). Both end at Newton's P within 1e-8, the
+    criterion of test_robustness (measured 1.1e-11 and 4.9e-11 at either
+    funcs), so the restart changes the path and not the answer."""
+    opts = ["-options_file", "meshes/hertz/hertz.opts", "-output", "none"]
+    ls = ["-tao_type", "lmvm", "-tao_ls_gtol", "1e-3", "-tao_ls_max_funcs", funcs]
+    ref = run_contact(opts, tmp_path, name="newton").summary
+    on = run_contact(opts + ls, tmp_path, name="restarts").summary
+    off = run_contact(opts + ls + ["-lmvm_restarts", "0"], tmp_path, name="norestart").summary
+    print({k: (s["lmvm_restarts"], s["load_cutbacks"], s["iterations"], abs(s["contact_force"] / ref["contact_force"] - 1))
+           for k, s in (("on", on), ("off", off))})
+    assert on["lmvm_restarts"] >= 1 and on["load_cutbacks"] == 0
+    assert off["lmvm_restarts"] == 0 and off["load_cutbacks"] >= 1
+    for s in (on, off):
+        assert abs(s["contact_force"] / ref["contact_force"] - 1) <= 1e-8
