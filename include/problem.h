@@ -27,6 +27,9 @@ PetscErrorCode ProblemSetUp(Problem);
 PetscErrorCode ProblemEvaluate(Problem, Vec X, PetscReal *f, Vec G, PetscReal parts[]);
 PetscErrorCode ProblemComputeObjectiveGradient(Tao, Vec, PetscReal *, Vec, void *);
 PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
+/* -contact_hessian auto: the gradient norm the switch to the exact Hessian
+   is relative to (-1: the first Hessian's of each TAO solve). */
+PetscErrorCode ProblemSetHessianSwitchReference(Problem, PetscReal g0);
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */

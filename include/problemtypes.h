@@ -133,7 +133,7 @@ struct _n_Problem {
   Subdomain      sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
   Tao            tao;
   PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
-  PetscReal      hessianG0;    /* ||g|| at the current TAO solve's first iterate */
+  PetscReal      hessianG0;    /* -contact_hessian auto: the ||g|| its switch is relative to (ProblemSetHessianSwitchReference) */
   ForceControls  fc;        /* force control (forcecontrol.c) */
   Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
   ProblemResults res;

@@ -688,6 +688,13 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ProblemSetHessianSwitchReference(Problem p, PetscReal g0)
+{
+  PetscFunctionBeginUser;
+  p->hessianG0 = g0;
+  PetscFunctionReturn(0);
+}
+
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {

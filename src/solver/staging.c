@@ -145,7 +145,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   p->res.stagesDone = 0;
   p->res.cutbacks   = 0;
   p->res.loadDone   = 0.0;
-  p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
+  PetscCall(ProblemSetHessianSwitchReference(p, -1.0)); /* -contact_hessian auto: the first Hessian's */
   PetscCall(ProblemLMVMBeginStaged(p)); /* a single solve is the last stage */
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
   if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
@@ -167,7 +167,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     step        = 0.5;
   }
   if (g0 < 0) PetscCall(ProblemGradientAtRest(p, &g0));
-  p->hessianG0 = g0; /* every stage switches where a single solve would */
+  PetscCall(ProblemSetHessianSwitchReference(p, g0)); /* every stage switches where a single solve would */
   PetscCall(VecZeroEntries(p->X));
   PetscCall(VecDuplicate(p->X, &Xs));
   PetscCall(VecCopy(p->X, Xs));
