@@ -13,6 +13,7 @@
    The run's own figures (its time slots, whether it converged, -accuracy's
    steps) live in a RunRecord, which the writer takes beside the problem. */
 #include "problem.h"
+#include "solve.h"
 
 /* Where the run's time went, in the JSON's "time" and the HDF5's time_*
    attributes. Under -accuracy each slot sums over the steps. */

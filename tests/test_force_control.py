@@ -1,4 +1,4 @@
-"""Force control (src/solver/forcecontrol.c, forceborder.c, forceouter.c):
+"""Force control (src/solver/forcecontrol.c, forcesolve.c, forceborder.c, forceouter.c):
 -<body>_bc_<group>_control force turns a component's value into a force; the
 group moves rigidly in it by the displacement that makes its reaction that
 force, an unknown of the one minimisation (coupled, the default) or of an

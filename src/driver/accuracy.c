@@ -173,8 +173,8 @@ static PetscErrorCode AccuracyProfilesGet(Problem p, AccuracyProfiles *P)
       if (!P->given[t][d]) P->forceGiven = PETSC_FALSE;
     }
   }
-  for (PetscInt k = 0; k < p->ncontrols; ++k)
-    if (!p->bodies[p->controls[k].body]->bc[p->controls[k].bc].anchor) P->U[P->ncontrols++] = p->controls[k].U;
+  for (PetscInt k = 0; k < p->fc.n; ++k)
+    if (!p->bodies[p->fc.c[k].body]->bc[p->fc.c[k].bc].anchor) P->U[P->ncontrols++] = p->fc.c[k].U;
   PetscFunctionReturn(0);
 }
 

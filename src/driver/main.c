@@ -9,6 +9,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
 #include "contactpair.h"
 #include "options.h"
 #include "outputset.h"
+#include "forcesolve.h"
 
 ContactLog contactLog;
 
@@ -94,6 +95,7 @@ static PetscErrorCode Run(int *status)
   rec.mark = rec.start;
   PetscCall(ContactInitializeLogging());
   PetscCall(ExactSolutionRegisterAll());
+  PetscCall(ForceControlRegisterAll());
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
   PetscCall(AccuracyCreate(PETSC_COMM_WORLD, &acc));

@@ -239,10 +239,10 @@ static void JSONLoads(FILE *fp, Problem p)
    (with the reaction, which equals the force to -force_control_rtol). */
 static void JSONForceControl(FILE *fp, Problem p)
 {
-  if (!p->ncontrols) return;
+  if (!p->fc.n) return;
   fprintf(fp, ",\n  \"force_control_solves\": %d,\n  \"force_control\": [", (int)p->res.controlSolves);
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    const ForceControl *fc = &p->controls[k];
+  for (PetscInt k = 0; k < p->fc.n; ++k) {
+    const ForceControl *fc = &p->fc.c[k];
     const BodyBC       *bc = &p->bodies[fc->body]->bc[fc->bc];
     fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->anchor ? "true" : "false", bc->comps[fc->c] ? "y" : "x");
     ContactJSONKeyReal(fp, ", ", "force", fc->force);

@@ -235,16 +235,16 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
   PetscCall(PetscNew(&c));
   c->comm = p->comm;
   PetscCallMPI(MPI_Comm_rank(p->comm, &c->rank));
-  c->m = p->ncontrols;
+  c->m = p->fc.n;
   PetscCall(VecGetLocalSize(p->Xb, &c->nloc));
   for (PetscInt k = 0; k < c->m; ++k) {
-    PetscCall(PetscObjectReference((PetscObject)p->ctrlB[k]));
-    c->B[k]   = p->ctrlB[k];
-    c->cap[k] = p->opt.controlStep * p->controls[k].L;
+    PetscCall(PetscObjectReference((PetscObject)p->fc.B[k]));
+    c->B[k]   = p->fc.B[k];
+    c->cap[k] = p->opt.controlStep * p->fc.c[k].L;
     PetscCall(VecDuplicate(p->Xb, &c->Z[k]));
   }
-  PetscCall(PetscArraycpy(c->D, p->ctrlD, c->m * c->m));
-  c->unheld = &p->unheld;
+  PetscCall(PetscArraycpy(c->D, p->fc.D, c->m * c->m));
+  c->unheld = &p->fc.unheld;
   PetscCall(PetscObjectReference((PetscObject)Hin));
   c->Hin = Hin;
   if (kin) PetscCall(PetscObjectReference((PetscObject)kin));

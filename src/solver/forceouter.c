@@ -22,6 +22,8 @@
    Each solve costs Newton's iterations anew: 16 against the displacement
    run's 5 on a soft disc pressed on a stiff slab; forcecontrol.c's coupled
    type solves once. */
+#include "forceouter.h"
+#include "staging.h"
 #include "problem.h"
 #include <petscblaslapack.h>
 
@@ -33,8 +35,8 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   PetscInt       n;
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    ForceControl *fc = &p->controls[k];
+  for (PetscInt k = 0; k < p->fc.n; ++k) {
+    ForceControl *fc = &p->fc.c[k];
     fc->U            = U[k];
     PetscCall(BodySetBCValue(p->bodies[fc->body], fc->bc, fc->c, U[k]));
   }
@@ -51,8 +53,8 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   *its += n;
   if (*reason <= 0) PetscFunctionReturn(0);
   PetscCall(ProblemComputeReactions(p, p->X));
-  for (PetscInt k = 0; k < p->ncontrols; ++k) {
-    ForceControl *fc = &p->controls[k];
+  for (PetscInt k = 0; k < p->fc.n; ++k) {
+    ForceControl *fc = &p->fc.c[k];
     const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
     fc->R            = bc->reaction[bc->comps[fc->c]];
     R[k]             = fc->R;
@@ -63,8 +65,8 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
 /* Whether every reaction is its force to the tolerance. */
 static PetscBool ControlConverged(Problem p, const PetscReal R[])
 {
-  for (PetscInt k = 0; k < p->ncontrols; ++k)
-    if (PetscAbsReal(R[k] - p->controls[k].force) > p->opt.controlRtol * p->controls[k].scale) return PETSC_FALSE;
+  for (PetscInt k = 0; k < p->fc.n; ++k)
+    if (PetscAbsReal(R[k] - p->fc.c[k].force) > p->opt.controlRtol * p->fc.c[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
@@ -91,7 +93,7 @@ static PetscErrorCode ControlNewtonStep(PetscInt m, const PetscReal J[], const P
    reaction: no contact yet), the last step doubled, towards the force. */
 static PetscErrorCode ControlStep(Problem p, const PetscReal J[], const PetscReal r[], PetscReal cap, PetscReal s[])
 {
-  const PetscInt m = p->ncontrols;
+  const PetscInt m = p->fc.n;
   PetscBool      ok;
   PetscReal      big = 0;
 
@@ -111,7 +113,7 @@ static PetscErrorCode ControlStep(Problem p, const PetscReal J[], const PetscRea
 
 PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt m = p->ncontrols;
+  const PetscInt m = p->fc.n;
   PetscReal      U[CONTACT_MAX_CONTROLS] = {0}, R[CONTACT_MAX_CONTROLS], r[CONTACT_MAX_CONTROLS], s[CONTACT_MAX_CONTROLS];
   PetscReal      J[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS] = {0}, last = 0;
   Vec            Xs;
@@ -125,8 +127,8 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
   PetscCall(VecDuplicate(p->X, &Xs));
   PetscCall(VecCopy(p->X, Xs));
   for (PetscInt k = 0; k < m && !ControlConverged(p, R); ++k) { /* the initial Jacobian, column by column */
-    PetscReal rho = 1e-2 * p->controls[k].L, R1[CONTACT_MAX_CONTROLS];
-    if (R[k] > p->controls[k].force) rho = -rho;
+    PetscReal rho = 1e-2 * p->fc.c[k].L, R1[CONTACT_MAX_CONTROLS];
+    if (R[k] > p->fc.c[k].force) rho = -rho;
     U[k] += rho;
     PetscCall(ProblemSolveAtControls(p, U, Xs, R1, its, reason));
     if (*reason <= 0) break;
@@ -141,10 +143,10 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
     PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
     if (p->res.controlSolves >= p->opt.controlMaxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->controls[0].body]->bc[p->controls[0].bc].group, (double)R[0], (double)p->controls[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
       break;
     }
-    for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->controls[k].force;
+    for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->fc.c[k].force;
     PetscCall(ControlStep(p, J, r, 4 * last, s));
     for (PetscInt k = 0; k < m; ++k) U[k] += s[k];
     PetscCall(ProblemSolveAtControls(p, U, Xs, R1, its, reason));
@@ -163,7 +165,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
       last = PetscMax(last, PetscAbsReal(s[k]));
     }
     PetscCall(VecCopy(p->X, Xs));
-    PetscCall(PetscInfo(p->tao, "force control: solve %" PetscInt_FMT ", U[0] = %g, reaction %g, force %g\n", p->res.controlSolves, (double)U[0], (double)R[0], (double)p->controls[0].force));
+    PetscCall(PetscInfo(p->tao, "force control: solve %" PetscInt_FMT ", U[0] = %g, reaction %g, force %g\n", p->res.controlSolves, (double)U[0], (double)R[0], (double)p->fc.c[0].force));
   }
   PetscCall(VecDestroy(&Xs));
   PetscFunctionReturn(0);

@@ -17,7 +17,7 @@
    adds only once the gradient is small, leaves H positive definite there. */
 #include "iterative.h"
 
-PetscErrorCode ContactIterativeKSPSetUp(Problem p, KSP ksp)
+PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[])
 {
   Vec          modes[3 * CONTACT_MAX_BODIES];
   PetscInt     n = 0, rstart, rend;
@@ -25,18 +25,18 @@ PetscErrorCode ContactIterativeKSPSetUp(Problem p, KSP ksp)
   PC           pc;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetOwnershipRange(p->Xb, &rstart, &rend));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  for (PetscInt i = 0; i < nbodies; ++i) {
     Vec          v[3];
     PetscScalar *a[3];
     PetscInt     first = n;
 
     for (PetscInt k = 0; k < 3; ++k) {
-      PetscCall(VecDuplicate(p->Xb, &v[k]));
+      PetscCall(MatCreateVecs(H, &v[k], NULL));
       PetscCall(VecZeroEntries(v[k]));
       PetscCall(VecGetArray(v[k], &a[k]));
     }
-    PetscCall(BodyAddRigidModes(p->bodies[i], rstart, rend, a));
+    PetscCall(BodyAddRigidModes(bodies[i], rstart, rend, a));
     for (PetscInt k = 0; k < 3; ++k) PetscCall(VecRestoreArray(v[k], &a[k]));
     for (PetscInt k = 0; k < 3; ++k) { /* Gram-Schmidt within the body (bodies' modes are disjoint) */
       PetscReal norm;
@@ -54,8 +54,8 @@ PetscErrorCode ContactIterativeKSPSetUp(Problem p, KSP ksp)
       modes[n++] = v[k];
     }
   }
-  PetscCall(MatNullSpaceCreate(p->comm, PETSC_FALSE, n, modes, &nsp));
-  PetscCall(MatSetNearNullSpace(p->H, nsp));
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)H), PETSC_FALSE, n, modes, &nsp));
+  PetscCall(MatSetNearNullSpace(H, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
   for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
   PetscCall(KSPSetType(ksp, KSPCG));

@@ -169,8 +169,8 @@
    default, 3 stages from 1e-3 k_p; with the one above, 1.9e-9. */
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
-#include "schur.h"
-#include "substructure.h"
+#include "problem.h"
+#include "newtonstep.h"
 #include "forceborder.h"
 
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
@@ -178,6 +178,84 @@
 #define LMVM_DECREMENT_FLOOR 10.0  /* a line search failure within this factor of it is the decrement's round-off floor */
 #define LMVM_START_STIFFNESS 1.0   /* the continuation's first stage no stiffer than this k_p h / E* */
 #define LMVM_STAGE_FACTOR    32.0  /* nor its stages further apart than this factor */
+
+/* L-BFGS's state for one TAO solver: composed with it (LMVM_CONTEXT), made
+   where H0 is set up and freed with the solver. */
+#define LMVM_CONTEXT "contact_lmvm"
+typedef struct {
+  Problem   p;
+  Mat       H0;      /* H0 as TAO sees it: H or K, or either bordered by the controls (forceborder.c) */
+  KSP       kin;     /* coupled force control: the solve of H0 inside the bordered one */
+  Vec       X, G, W; /* -lmvm_h0 contact: the last iterate and its gradient, work (else NULL) */
+  PetscBool have;    /* X, G hold an iterate of the current TAO solve */
+  PetscReal F0, G0;  /* the energy and gradient norm at the first iterate of the last TAO solve */
+  PetscReal lambda0; /* -lmvm_decrement_rtol: the decrement at the first iterate of the staged solve (-1: not yet) */
+  PetscReal lambda;  /* -lmvm_decrement_rtol: the decrement at the current TAO solve's last iterate (-1: none yet) */
+  PetscBool last;    /* the current TAO solve is the last stage (the decrement test applies) */
+} LMVMCtx;
+
+static PetscErrorCode LMVMCtxDestroy(void *ctx)
+{
+  LMVMCtx *l = (LMVMCtx *)ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&l->H0));
+  PetscCall(KSPDestroy(&l->kin));
+  PetscCall(VecDestroy(&l->X));
+  PetscCall(VecDestroy(&l->G));
+  PetscCall(VecDestroy(&l->W));
+  PetscCall(PetscFree(l));
+  PetscFunctionReturn(0);
+}
+
+/* The context composed with the problem's solver, or NULL where L-BFGS has no H0 of the program's. */
+static PetscErrorCode ProblemGetLMVM(Problem p, LMVMCtx **l)
+{
+  PetscObject c = NULL;
+
+  PetscFunctionBeginUser;
+  *l = NULL;
+  if (p->tao) PetscCall(PetscObjectQuery((PetscObject)p->tao, LMVM_CONTEXT, &c));
+  if (c) PetscCall(PetscContainerGetPointer((PetscContainer)c, (void **)l));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ProblemCreateLMVM(Problem p, LMVMCtx **l)
+{
+  PetscContainer c;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(l));
+  (*l)->p = p;
+  PetscCall(PetscContainerCreate(p->comm, &c));
+  PetscCall(PetscContainerSetPointer(c, *l));
+  PetscCall(PetscContainerSetUserDestroy(c, LMVMCtxDestroy));
+  PetscCall(PetscObjectCompose((PetscObject)p->tao, LMVM_CONTEXT, (PetscObject)c));
+  PetscCall(PetscContainerDestroy(&c));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemLMVMBeginStaged(Problem p)
+{
+  LMVMCtx *l;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemGetLMVM(p, &l));
+  if (!l) PetscFunctionReturn(0);
+  l->lambda0 = -1.0; /* set at the first iterate */
+  l->last    = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemLMVMSetLastStage(Problem p, PetscBool last)
+{
+  LMVMCtx *l;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemGetLMVM(p, &l));
+  if (l) l->last = last;
+  PetscFunctionReturn(0);
+}
 
 /* H0 = K + C(X) into p->H, whose factorisation the H0 KSP's preconditioner
    redoes when the matrix changes. */
@@ -207,20 +285,21 @@ static PetscErrorCode TaoLMVMGetMatrix(Tao tao, Mat *M)
 
 /* The pair (s, y) from the last iterate to X, G: dropped (the history reset)
    if r = y^T s / s^T H0 s is outside [1/R, R]. */
-static PetscErrorCode ProblemScreenPair(Problem p, Tao tao, Vec X, Vec G)
+static PetscErrorCode ProblemScreenPair(LMVMCtx *l, Tao tao, Vec X, Vec G)
 {
+  Problem     p = l->p;
   PetscScalar ys, sHs;
   PetscReal   r;
   Mat         M;
 
   PetscFunctionBeginUser;
-  PetscCall(VecAYPX(p->lmvmX, -1.0, X)); /* s */
-  PetscCall(VecAYPX(p->lmvmG, -1.0, G)); /* y */
-  PetscCall(MatMult(p->H0tao, p->lmvmX, p->lmvmW));
-  PetscCall(VecDotBegin(p->lmvmG, p->lmvmX, &ys));
-  PetscCall(VecDotBegin(p->lmvmW, p->lmvmX, &sHs));
-  PetscCall(VecDotEnd(p->lmvmG, p->lmvmX, &ys));
-  PetscCall(VecDotEnd(p->lmvmW, p->lmvmX, &sHs));
+  PetscCall(VecAYPX(l->X, -1.0, X)); /* s */
+  PetscCall(VecAYPX(l->G, -1.0, G)); /* y */
+  PetscCall(MatMult(l->H0, l->X, l->W));
+  PetscCall(VecDotBegin(l->G, l->X, &ys));
+  PetscCall(VecDotBegin(l->W, l->X, &sHs));
+  PetscCall(VecDotEnd(l->G, l->X, &ys));
+  PetscCall(VecDotEnd(l->W, l->X, &sHs));
   r = PetscRealPart(sHs) > 0 ? PetscRealPart(ys) / PetscRealPart(sHs) : 1.0;
   PetscCall(PetscInfo(tao, "L-BFGS pair: y^T s / s^T H0 s = %g\n", (double)r));
   if (r * p->opt.pairRatio >= 1.0 && r <= p->opt.pairRatio) PetscFunctionReturn(0);
@@ -232,17 +311,17 @@ static PetscErrorCode ProblemScreenPair(Problem p, Tao tao, Vec X, Vec G)
 
 /* The Newton decrement in H0's norm, lambda = sqrt(g^T H0^-1 g), through
    the H0 KSP (the solve TAO's L-BFGS applies), with H0 as last set up. */
-static PetscErrorCode ProblemDecrement(Problem p, Tao tao, Vec G, PetscReal *lambda)
+static PetscErrorCode ProblemDecrement(LMVMCtx *l, Tao tao, Vec G, PetscReal *lambda)
 {
   KSP         ksp;
   PetscScalar gHg;
 
   PetscFunctionBeginUser;
   PetscCall(TaoLMVMGetH0KSP(tao, &ksp));
-  PetscCall(KSPSolve(ksp, G, p->lmvmW));
-  PetscCall(VecDot(G, p->lmvmW, &gHg));
+  PetscCall(KSPSolve(ksp, G, l->W));
+  PetscCall(VecDot(G, l->W, &gHg));
   *lambda = PetscSqrtReal(PetscMax(PetscRealPart(gHg), 0.0));
-  p->res.decrementSolves++;
+  l->p->res.decrementSolves++;
   PetscFunctionReturn(0);
 }
 
@@ -253,14 +332,15 @@ static PetscErrorCode ProblemDecrement(Problem p, Tao tao, Vec G, PetscReal *lam
    the last solve's. */
 static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
 {
-  Problem            p = (Problem)ctx;
+  LMVMCtx           *l = (LMVMCtx *)ctx;
+  Problem            p = l->p;
   PetscReal          gatol, grtol, gttol, lambda;
   PetscInt           it;
   TaoConvergedReason reason;
   Vec                G;
 
   PetscFunctionBeginUser;
-  if (!(p->lmvmFinal && p->sched.decrementRtol > 0 && p->lmvmLambda0 > 0)) {
+  if (!(l->last && p->sched.decrementRtol > 0 && l->lambda0 > 0)) {
     PetscCall(TaoDefaultConvergenceTest(tao, NULL));
     PetscFunctionReturn(0);
   }
@@ -272,19 +352,21 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
   PetscCall(TaoGetIterationNumber(tao, &it));
   if (reason != TAO_CONTINUE_ITERATING || it == 0) PetscFunctionReturn(0);
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
-  PetscCall(ProblemDecrement(p, tao, G, &lambda));
-  PetscCall(PetscInfo(tao, "L-BFGS: decrement %g, %g of the first iterate's\n", (double)lambda, (double)(lambda / p->lmvmLambda0)));
-  p->lmvmLambda = lambda;
-  if (lambda <= p->sched.decrementRtol * p->lmvmLambda0) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
+  PetscCall(ProblemDecrement(l, tao, G, &lambda));
+  PetscCall(PetscInfo(tao, "L-BFGS: decrement %g, %g of the first iterate's\n", (double)lambda, (double)(lambda / l->lambda0)));
+  l->lambda = lambda;
+  if (lambda <= p->sched.decrementRtol * l->lambda0) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
   PetscFunctionReturn(0);
 }
 
 /* Whether a last stage whose line search failed is at the decrement's
    round-off floor: its last decrement within LMVM_DECREMENT_FLOOR of the
    tolerance. */
-static PetscBool ProblemLMVMAtFloor(Problem p)
+static PetscBool ProblemLMVMAtFloor(const LMVMCtx *l)
 {
-  return (PetscBool)(p->lmvmFinal && p->sched.decrementRtol > 0 && p->lmvmLambda0 > 0 && p->lmvmLambda >= 0 && p->lmvmLambda <= LMVM_DECREMENT_FLOOR * p->sched.decrementRtol * p->lmvmLambda0);
+  const PetscReal rtol = l->p->sched.decrementRtol;
+
+  return (PetscBool)(l->last && rtol > 0 && l->lambda0 > 0 && l->lambda >= 0 && l->lambda <= LMVM_DECREMENT_FLOOR * rtol * l->lambda0);
 }
 
 /* TAO's update at the start of each iteration, before the LMVM matrix takes
@@ -292,23 +374,24 @@ static PetscBool ProblemLMVMAtFloor(Problem p)
    every -lmvm_h0_refresh iterations), then the pair screened against it. */
 static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
 {
-  Problem p = (Problem)ctx;
-  Vec     X, G;
+  LMVMCtx *l = (LMVMCtx *)ctx;
+  Problem  p = l->p;
+  Vec      X, G;
 
   PetscFunctionBeginUser;
   PetscCall(TaoGetSolution(tao, &X));
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
   if (it % p->opt.h0Refresh == 0) PetscCall(ProblemComputeH0(p, X));
   if (it == 0) { /* TAO starts the solve with an empty history */
-    p->lmvmHave   = PETSC_FALSE;
-    p->lmvmLambda = -1.0;
-    PetscCall(TaoGetSolutionStatus(tao, NULL, &p->lmvmF0, &p->lmvmG0, NULL, NULL, NULL));
+    l->have   = PETSC_FALSE;
+    l->lambda = -1.0;
+    PetscCall(TaoGetSolutionStatus(tao, NULL, &l->F0, &l->G0, NULL, NULL, NULL));
   }
-  if (it == 0 && p->sched.decrementRtol > 0 && p->lmvmLambda0 <= 0) PetscCall(ProblemDecrement(p, tao, G, &p->lmvmLambda0));
-  if (p->lmvmHave) PetscCall(ProblemScreenPair(p, tao, X, G));
-  PetscCall(VecCopy(X, p->lmvmX));
-  PetscCall(VecCopy(G, p->lmvmG));
-  p->lmvmHave = PETSC_TRUE;
+  if (it == 0 && p->sched.decrementRtol > 0 && l->lambda0 <= 0) PetscCall(ProblemDecrement(l, tao, G, &l->lambda0));
+  if (l->have) PetscCall(ProblemScreenPair(l, tao, X, G));
+  PetscCall(VecCopy(X, l->X));
+  PetscCall(VecCopy(G, l->G));
+  l->have = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -316,8 +399,10 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
 {
   PetscReal gatol, grtol, gttol, g0 = -1.0, f;
   PetscInt  maxit, n;
+  LMVMCtx  *l;
 
   PetscFunctionBeginUser;
+  PetscCall(ProblemGetLMVM(p, &l));
   PetscCall(TaoGetTolerances(p->tao, &gatol, &grtol, &gttol));
   PetscCall(TaoGetMaximumIterations(p->tao, &maxit));
   *its = 0;
@@ -326,15 +411,16 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, &n, &f, NULL, NULL, NULL, reason));
     *its += n;
-    if (g0 < 0) g0 = p->lmvmG0;
-    f0 = p->lmvmF0;
-    if (*reason == TAO_DIVERGED_LS_FAILURE && ProblemLMVMAtFloor(p)) {
-      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(p->lmvmLambda / p->lmvmLambda0), (double)LMVM_DECREMENT_FLOOR));
+    if (!l || !l->X) break; /* no restart without the iterates of the program's H0 */
+    if (g0 < 0) g0 = l->G0;
+    f0 = l->F0;
+    if (*reason == TAO_DIVERGED_LS_FAILURE && ProblemLMVMAtFloor(l)) {
+      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(l->lambda / l->lambda0), (double)LMVM_DECREMENT_FLOOR));
       *reason = TAO_CONVERGED_USER;
       p->res.decrementFloor++;
       break;
     }
-    if (!p->lmvmX || *reason != TAO_DIVERGED_LS_FAILURE || r >= p->opt.lmvmRestarts || !(f < f0) || *its >= maxit) break;
+    if (*reason != TAO_DIVERGED_LS_FAILURE || r >= p->opt.lmvmRestarts || !(f < f0) || *its >= maxit) break;
     /* the restart stops where the first solve would have: its gradient tolerances relative to the first iterate's */
     PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
     PetscCall(TaoSetMaximumIterations(p->tao, maxit - *its));
@@ -427,58 +513,47 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   KSP       ksp, kin;
   PC        pc;
   Mat       H0;
+  LMVMCtx  *l;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
   if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
   contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms);
+  PetscCall(ProblemCreateLMVM(p, &l));
   if (contact) PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
   H0 = contact ? p->H : p->K;
-  if (p->coupled) { /* H0 bordered by the controls (forceborder.c), around a KSP of H0 set up as below */
-    PetscCall(KSPCreate(p->comm, &p->ctrlKsp0));
-    PetscCall(KSPSetOperators(p->ctrlKsp0, H0, H0));
-    kin = p->ctrlKsp0;
+  if (p->fc.coupled) { /* H0 bordered by the controls (forceborder.c), around a KSP of H0 set up as below */
+    PetscCall(KSPCreate(p->comm, &l->kin));
+    PetscCall(KSPSetOperators(l->kin, H0, H0));
+    kin = l->kin;
   } else {
     PetscCall(PetscObjectReference((PetscObject)H0));
-    p->H0tao = H0;
+    l->H0 = H0;
     PetscCall(TaoLMVMSetH0(p->tao, H0));
     PetscCall(TaoLMVMGetH0KSP(p->tao, &kin));
   }
   ksp = kin;
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (contact) {
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(p->comm, &size));
-    if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(p, pc));
-    else PetscCall(ContactSubstructurePCSetUp(p, pc));
-  } else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
-  if (p->coupled) {
-    PetscCall(ForceBorderMatCreate(p, H0, kin, &p->H0tao));
-    PetscCall(TaoLMVMSetH0(p->tao, p->H0tao));
+  if (contact) PetscCall(ProblemSchurPCSetUp(p, pc));
+  else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
+  if (p->fc.coupled) {
+    PetscCall(ForceBorderMatCreate(p, H0, kin, &l->H0));
+    PetscCall(TaoLMVMSetH0(p->tao, l->H0));
     PetscCall(TaoLMVMGetH0KSP(p->tao, &ksp));
     PetscCall(KSPSetType(ksp, KSPPREONLY));
     PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(ForceBorderPCSetUp(p->H0tao, pc));
+    PetscCall(ForceBorderPCSetUp(l->H0, pc));
   }
   PetscCall(KSPSetOptionsPrefix(ksp, "h0_"));
   PetscCall(KSPSetFromOptions(ksp));
   if (contact) {
-    PetscCall(VecDuplicate(p->X, &p->lmvmX));
-    PetscCall(VecDuplicate(p->X, &p->lmvmG));
-    PetscCall(VecDuplicate(p->X, &p->lmvmW));
-    PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, p));
-    if (p->sched.decrementRtol > 0) PetscCall(TaoSetConvergenceTest(p->tao, ProblemLMVMConverged, p));
+    PetscCall(VecDuplicate(p->X, &l->X));
+    PetscCall(VecDuplicate(p->X, &l->G));
+    PetscCall(VecDuplicate(p->X, &l->W));
+    PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, l));
+    if (p->sched.decrementRtol > 0) PetscCall(TaoSetConvergenceTest(p->tao, ProblemLMVMConverged, l));
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ProblemLMVMDestroy(Problem p)
-{
-  PetscFunctionBeginUser;
-  PetscCall(VecDestroy(&p->lmvmX));
-  PetscCall(VecDestroy(&p->lmvmG));
-  PetscCall(VecDestroy(&p->lmvmW));
   PetscFunctionReturn(0);
 }

@@ -1,21 +1,15 @@
-/* The scene as one minimisation problem: the bodies' unconstrained dofs joined
-   into one vector X (on each rank: body 0's owned dofs, then body 1's, ...), the
-   total energy Pi(X) = sum_b Pi_b + sum_terms E_t, its gradient and Hessian, and
-   the TAO solve. Energy terms (contact pairs) work on the bodies' local vectors
-   and are added beside the bodies' elastic terms without touching them. */
+/* The scene as one minimisation problem, assembled: the bodies' unconstrained
+   dofs joined into one vector X (on each rank: body 0's owned dofs, then body
+   1's, ...), the total energy Pi(X) = sum_b Pi_b + sum_terms E_t, its gradient
+   and Hessian, the reactions, and the results at the solution. Energy terms
+   (contact pairs) work on the bodies' local vectors and are added beside the
+   bodies' elastic terms without touching them. The solve that minimises Pi
+   (solve.c, and its stages, L-BFGS and force control) sits above this file;
+   force control's part of the system (forcecontrol.c) below it. */
 #include "problem.h"
 #include "partition.h"
-#include "schur.h"
-#include "progress.h"
 #include "options.h"
-#include "substructure.h"
-#include "iterative.h"
-#include "lmvm.h"
-#include "forceborder.h"
-
-const char *const H0Types[] = {"none", "elastic", "contact", "H0Type", "H0_", NULL};
-const char *const SchurTypes[] = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
-const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
+#include "forcecontrol.h"
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 {
@@ -148,7 +142,6 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(NULL, &help));
-  PetscCall(ForceControlRegisterAll());
   PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
   PetscCall(ContactOptionsString(PetscOptionsObject, "-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
@@ -283,7 +276,7 @@ PetscErrorCode ProblemSetInitialGuess(Problem p, Vec X0)
     PetscCall(VecGetArrayRead(X0, &a));
     PetscCall(VecGetArray(Y, &b));
     PetscCall(PetscArraycpy(b, a, nb));
-    for (PetscInt k = 0; k < nl - nb; ++k) b[nb + k] = p->controls[k].U;
+    for (PetscInt k = 0; k < nl - nb; ++k) b[nb + k] = p->fc.c[k].U;
     PetscCall(VecRestoreArray(Y, &b));
     PetscCall(VecRestoreArrayRead(X0, &a));
     X0 = Y;
@@ -534,10 +527,10 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(VecCreateMPI(p->comm, nloc, PETSC_DETERMINE, &p->Xb));
   PetscCall(PetscObjectSetName((PetscObject)p->Xb, "u"));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  if (p->coupled) { /* the controlled displacements: the last entries of rank 0's part */
+  if (p->fc.coupled) { /* the controlled displacements: the last entries of rank 0's part */
     PetscMPIInt rank;
     PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
-    PetscCall(VecCreateMPI(p->comm, nloc + (rank ? 0 : p->ncontrols), PETSC_DETERMINE, &p->X));
+    PetscCall(VecCreateMPI(p->comm, nloc + (rank ? 0 : p->fc.n), PETSC_DETERMINE, &p->X));
     PetscCall(PetscObjectSetName((PetscObject)p->X, "u"));
   } else {
     PetscCall(PetscObjectReference((PetscObject)p->Xb));
@@ -603,7 +596,7 @@ static PetscErrorCode VecHasNonFinite(Vec v, PetscReal *bad)
    summed over ranks. Each part is checked for NaN and Inf, in its energy and
    in the gradient it adds, so that a non-finite value stops the solve naming
    its source; the flags travel in the energy's sum. */
-static PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal parts[])
+PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal parts[])
 {
   const PetscInt nparts = p->nbodies + p->nterms;
   PetscReal      sum[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)] = {0}, all[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)], eb, et;
@@ -695,6 +688,13 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ProblemSetHessianSwitchReference(Problem p, PetscReal g0)
+{
+  PetscFunctionBeginUser;
+  p->hessianG0 = g0;
+  PetscFunctionReturn(0);
+}
+
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
@@ -721,116 +721,6 @@ PetscErrorCode ProblemComputeHessian(Tao tao, Vec X, Mat H, Mat P, void *ctx)
     PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
   }
   p->res.nHessianEvals++;
-  PetscFunctionReturn(0);
-}
-
-/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
-   MUMPS's LDL^T for a matrix that may be indefinite. */
-PetscErrorCode ContactPCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
-{
-  PetscMPIInt size;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size > 1 || indefinite ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
-  PetscFunctionReturn(0);
-}
-
-/* Newton types (nls, ntr): the Hessian changes only in the contact-surface
-   block, so the step goes through the Schur complement on that block, K
-   condensed once: by substructuring on any number of ranks
-   (substructure.c), or on one rank by MUMPS's Schur complement of K
-   (schur.c, -newton_schur_type mumps). Without contact, or with
-   -newton_schur 0, a Cholesky factorisation per step (CHOLMOD on one rank,
-   MUMPS on several); -newton_iterative: CG with GAMG (iterative.c). nls takes
-   the factored step directly (preonly); at most 500 iterations (TAO's 50 are
-   too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
-   -tao_max_it, -newton_schur 0, -tao_nls_ksp_type, -tao_nls_pc_type, ...
-   override them and -help shows them. Without a set-up problem (-help) the
-   Schur preconditioner is only named. */
-static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
-{
-  PC          pc;
-  PetscMPIInt size;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  if (p->opt.iterative) {
-    if (p->K) PetscCall(ContactIterativeKSPSetUp(p, ksp));
-  } else if (p->opt.schur && p->nterms > 0) {
-    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
-    if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
-    else if (p->opt.schurType == SCHUR_MUMPS) PetscCall(ContactSchurPCSetUp(p, pc));
-    else PetscCall(ContactSubstructurePCSetUp(p, pc));
-  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
-  PetscFunctionReturn(0);
-}
-
-/* The Newton KSP as above; with coupled force control the Hessian TAO sees
-   is H bordered by the controls, and its step eliminates them around a KSP
-   of H set up as above (forceborder.c). */
-static PetscErrorCode ProblemSetNewtonDefaults(Problem p)
-{
-  PetscBool nls;
-  KSP       ksp;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONLS, &nls));
-  PetscCall(TaoSetMaximumIterations(p->tao, 500));
-  PetscCall(TaoGetKSP(p->tao, &ksp));
-  if (p->coupled && p->K) {
-    PC pc;
-    PetscCall(KSPCreate(p->comm, &p->ctrlKsp));
-    PetscCall(KSPSetOperators(p->ctrlKsp, p->H, p->H));
-    PetscCall(ProblemSetUpStepKSP(p, p->ctrlKsp, PETSC_TRUE));
-    PetscCall(MatDestroy(&p->Htao));
-    PetscCall(ForceBorderMatCreate(p, p->H, p->ctrlKsp, &p->Htao));
-    if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(ForceBorderPCSetUp(p->Htao, pc));
-  } else PetscCall(ProblemSetUpStepKSP(p, ksp, nls));
-  PetscFunctionReturn(0);
-}
-
-/* The TAO solver with the program's defaults, then the options. The type is
-   looked up first (TaoSetFromOptions() lists and checks it) because the
-   defaults depend on it. Without a set-up problem (-help) the solver is only
-   configured, so that -help lists the TAO options with the defaults a solve
-   would use. */
-PetscErrorCode ProblemCreateSolver(Problem p)
-{
-  char      type[256] = TAONLS;
-  PetscBool newton;
-
-  PetscFunctionBeginUser;
-  PetscCall(TaoCreate(p->comm, &p->tao));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-tao_type", type, sizeof(type), NULL));
-  newton = (PetscBool)(!strcmp(type, TAONLS) || !strcmp(type, TAONTR));
-  /* Newton with the Cholesky-factored Gauss-Newton Hessian: the fastest type
-     that converges on every scene and extreme of the tests (docs/solver.md, "The solver") */
-  PetscCall(TaoSetType(p->tao, newton ? type : TAONLS));
-  /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
-  PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
-  if (newton) PetscCall(ProblemSetNewtonDefaults(p));
-  if (p->X) {
-    if (!p->Htao && p->coupled) PetscCall(ForceBorderMatCreate(p, p->H, NULL, &p->Htao));
-    else if (!p->Htao) {
-      PetscCall(PetscObjectReference((PetscObject)p->H));
-      p->Htao = p->H;
-    }
-    PetscCall(VecZeroEntries(p->X));
-    PetscCall(TaoSetSolution(p->tao, p->X));
-    PetscCall(TaoSetObjectiveAndGradient(p->tao, NULL, ProblemComputeObjectiveGradient, p));
-    PetscCall(TaoSetHessian(p->tao, p->Htao, p->Htao, ProblemComputeHessian, p));
-  }
-  PetscCall(ProblemSetLMVMDefaults(p, type));
-  if (p->K) PetscCall(ProblemSetControlContinuation(p));
-  PetscCall(TaoSetFromOptions(p->tao));
-  if (ContactProgressEnabled()) PetscCall(TaoSetMonitor(p->tao, ContactProgressTaoMonitor, NULL, NULL));
-  if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
   PetscFunctionReturn(0);
 }
 
@@ -868,241 +758,6 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
-{
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoadFactor(p->bodies[i], load));
-  for (PetscInt t = 0; t < p->nterms; ++t)
-    PetscCall(EnergyTermSetPenaltyFactor(p->terms[t], penalty));
-  PetscFunctionReturn(0);
-}
-
-/* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
-   rest, where a solve from rest starts and the last stage stops relative to;
-   the energy evaluation is not counted. */
-static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
-{
-  PetscReal f;
-  Vec       X;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(p->X, &X));
-  PetscCall(ProblemSetStage(p, 1.0, 1.0));
-  PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
-  p->res.nEnergyEvals--;
-  PetscCall(VecNorm(p->G, NORM_2, g0));
-  PetscCall(VecDestroy(&X));
-  PetscFunctionReturn(0);
-}
-
-/* Whether a stopped solve is retried with a smaller load increment: its line
-   search failed (or met a NaN), which is what an iterate thrown far from the
-   solution by a large step of the load meets (the contact's kinks, a
-   non-convex energy at deep overlap); not a limit the user set. TAO's own
-   budget of energy evaluations runs out the same way, where line searches
-   keep failing and L-BFGS restarts after each (lmvm.c: measured on the half
-   scene at h = 0.01, k_p = 1e10, push 0.3, mortar, where the load's half
-   then converges); -tao_max_funcs given is the user's limit. */
-static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
-{
-  PetscBool userLimit = PETSC_FALSE;
-
-  if (r == TAO_DIVERGED_MAXFCN && PetscOptionsHasName(NULL, NULL, "-tao_max_funcs", &userLimit)) return PETSC_FALSE;
-  return (PetscBool)(r == TAO_DIVERGED_LS_FAILURE || r == TAO_DIVERGED_NAN || r == TAO_DIVERGED_TR_REDUCTION || (r == TAO_DIVERGED_MAXFCN && !userLimit));
-}
-
-/* Coupled force control: the gradient norm at rest of the displacement run
-   that imposes the controls' displacements as X now holds them (the bodies'
-   dofs at 0; the controls' own entries left out, as that run has none),
-   counted as no energy evaluation. A displacement run's last stage stops
-   relative to its gradient at rest, K_fc 1 U and the loads; a force
-   control's at rest is F alone, far smaller where the group's own stiffness
-   is large (the reference scene pushed by 0.01: 2.25 against 577), so that
-   its solve would be held to a tighter stop than the displacement run's.
-   A body held by contact keeps its anchors at 0 there: one vertex moved
-   alone would give a gradient of its own stiffness times U. And in a scene
-   with a body held by contact the scale is at most the scene's largest
-   force (at the state the last stage starts from): a displacement pushed
-   into a penalty contact from rest gives a gradient far above the forces
-   it makes, and a body held by contact balances its contacts only to the
-   stop (measured on the roller pushed by 1000: a scale of 116079 stopped
-   at a gradient norm of 8.3e-5 with the contacts 4e-7 of the load apart).
-   Once an earlier stage has found U, its last stage stops relative to the
-   larger of the two. */
-static PetscErrorCode ProblemControlGradientScale(Problem p, PetscReal g0, PetscReal *g)
-{
-  const PetscScalar *x;
-  PetscScalar       *y;
-  PetscInt           nb, n;
-  PetscReal          f, S = 0;
-  Vec                Y;
-
-  PetscFunctionBeginUser;
-  if (UnheldAny(&p->unheld)) { /* the scene's largest force, at the state the last stage starts from */
-    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
-    PetscCall(ProblemControlSceneForce(p, &S));
-  }
-  PetscCall(VecDuplicate(p->X, &Y));
-  PetscCall(VecZeroEntries(Y));
-  PetscCall(VecGetLocalSize(p->Xb, &nb));
-  PetscCall(VecGetLocalSize(p->X, &n));
-  PetscCall(VecGetArrayRead(p->X, &x));
-  PetscCall(VecGetArray(Y, &y));
-  for (PetscInt k = nb; k < n; ++k) y[k] = p->controls[k - nb].anchor ? 0.0 : x[k]; /* an anchor's vertex moved alone is no displacement run's rest */
-  PetscCall(VecRestoreArray(Y, &y));
-  PetscCall(VecRestoreArrayRead(p->X, &x));
-  PetscCall(ProblemEvaluate(p, Y, &f, p->G, NULL)); /* G: the bodies' part alone */
-  PetscCall(VecNorm(p->G, NORM_2, g));
-  PetscCall(VecDestroy(&Y));
-  *g = PetscMax(g0, *g);
-  if (S > 0) *g = PetscMin(*g, S);
-  PetscFunctionReturn(0);
-}
-
-/* The penalty stages at load factor load, each a TAO solve from the last;
-   the last stage of the last load stops at the final tolerance, gttol times
-   the gradient norm g0 of the full problem at rest, the others when their
-   gradient norm has fallen by -stage_rtol. */
-static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
-{
-  const ProblemSchedule *sc = &p->sched;
-
-  PetscFunctionBeginUser;
-  for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
-    const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
-    const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
-    PetscInt        n;
-
-    PetscCall(ProblemSetStage(p, load, penalty));
-    p->lmvmFinal = last;
-    if (last && p->coupled && p->res.stagesDone > 0) { /* force control: as the displacement run of the U found */
-      PetscReal gd;
-      PetscCall(ProblemControlGradientScale(p, g0, &gd));
-      PetscCall(PetscInfo(p->tao, "force control: the last stage stops relative to %g (at rest: %g)\n", (double)gd, (double)g0));
-      g0 = gd;
-    }
-    if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
-    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
-    PetscCall(ProblemTaoSolve(p, &n, reason));
-    PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
-    *its += n;
-    p->res.stagesDone++;
-    if (*reason <= 0) PetscFunctionReturn(0);
-  }
-  PetscFunctionReturn(0);
-}
-
-/* Load stepping (outer), penalty continuation (inner) and automatic cutback.
-   The load factor walks from 0 to 1 in steps of 1/-load_steps; each load is
-   solved from the last converged state. Where a load's solve stops with a
-   failed line search the state goes back to the last converged one and the
-   step is halved (at most -load_cutbacks times in all): a smaller step of the
-   load starts Newton closer to the solution it tracks, as an implicit
-   analysis cuts back its increment. A single solve from rest (the default)
-   that fails starts this walk with a step of 1/2. The last stage stops
-   where a single solve from rest would, at -tao_gttol times the gradient
-   norm of the full problem at rest, which makes the result independent of
-   the staging. */
-static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
-{
-  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
-  Vec       Xs;
-
-  PetscFunctionBeginUser;
-  *its = 0;
-  p->res.stagesDone = 0;
-  p->res.cutbacks   = 0;
-  p->res.loadDone   = 0.0;
-  p->hessianG0  = -1.0; /* -contact_hessian auto: set by the first Hessian */
-  p->lmvmLambda0 = -1.0; /* -lmvm_decrement_rtol: set at the first iterate */
-  p->lmvmFinal   = PETSC_TRUE; /* a single solve is the last stage */
-  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-  if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
-    PetscBool cut;
-    if (p->X0) {
-      PetscCall(ProblemGradientAtRest(p, &g0));
-      PetscCall(VecCopy(p->X0, p->X));
-      PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
-    }
-    PetscCall(ProblemTaoSolve(p, its, reason));
-    p->res.stagesDone = 1;
-    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
-    if (!cut) {
-      if (*reason > 0) p->res.loadDone = 1.0;
-      PetscFunctionReturn(0);
-    }
-    PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
-    p->res.cutbacks = 1;
-    step        = 0.5;
-  }
-  if (g0 < 0) PetscCall(ProblemGradientAtRest(p, &g0));
-  p->hessianG0 = g0; /* every stage switches where a single solve would */
-  PetscCall(VecZeroEntries(p->X));
-  PetscCall(VecDuplicate(p->X, &Xs));
-  PetscCall(VecCopy(p->X, Xs));
-  while (p->res.loadDone < 1.0) {
-    const PetscReal next = p->res.loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
-    PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
-    if (*reason > 0) {
-      p->res.loadDone = load;
-      PetscCall(VecCopy(p->X, Xs));
-      continue;
-    }
-    if (!ProblemCutbackApplies(*reason) || p->res.cutbacks >= p->opt.maxCutbacks) break;
-    PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->res.loadDone, (double)(0.5 * step)));
-    p->res.cutbacks++;
-    step *= 0.5;
-    PetscCall(VecCopy(Xs, p->X));
-  }
-  PetscCall(VecDestroy(&Xs));
-  PetscFunctionReturn(0);
-}
-
-/* The stages, and TAO's tolerances restored after them (they set each
-   stage's own), so that another solve of the same problem (force control's
-   next trial) stops by the same test. */
-PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
-{
-  PetscReal tol[3];
-
-  PetscFunctionBeginUser;
-  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-  PetscCall(ProblemSolveStages(p, its, reason));
-  PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
-{
-  TaoConvergedReason reason;
-  PetscInt           its;
-  TaoType            type;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogStagePush(contactLog.solve));
-  PetscCall(ProblemCreateSolver(p));
-  PetscCall(SubdomainDestroy(&p->sub)); /* the substructured step has consumed it, if it is the step */
-  PetscCall(ProblemCheckUnusedOptions(p, PETSC_FALSE));
-  if (p->ncontrols) PetscCall(ProblemSolveControlled(p, &its, &reason));
-  else PetscCall(ProblemSolveStaged(p, &its, &reason));
-  p->res.iterations = its;
-  p->res.reason     = reason;
-  PetscCall(TaoGetType(p->tao, &type));
-  *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->res.nEnergyEvals, p->res.nHessianEvals));
-  if (p->opt.iterative) {
-    PetscInt lits;
-    PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
-    PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
-  }
-  if (p->ncontrols) PetscCall(PetscPrintf(p->comm, " (force control: %" PetscInt_FMT " solves)", p->res.controlSolves));
-  else if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
-  else if (p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->sched.loadSteps * p->sched.penaltyStages));
-  PetscCall(PetscPrintf(p->comm, "\n"));
-  PetscCall(PetscLogStagePop());
-  PetscFunctionReturn(0);
-}
-
 /* After TAO has returned: the energy and gradient at X (the reactions are the
    gradient's components on the constrained dofs), each body's energy, and each
    term's results from X, computed here, with every sum over ranks taken where
@@ -1116,7 +771,7 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   PetscCall(PetscLogStagePush(contactLog.postprocess));
   if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->res.reason]));
   PetscCall(ProblemEvaluate(p, X, &p->res.energy, p->G, parts));
-  for (PetscInt k = 0; k < p->ncontrols; ++k) p->res.energy -= p->controls[k].force * p->controls[k].U; /* the forces' potential, as the loads' (forcecontrol.c) */
+  for (PetscInt k = 0; k < p->fc.n; ++k) p->res.energy -= p->fc.c[k].force * p->fc.c[k].U; /* the forces' potential, as the loads' (forcecontrol.c) */
   PetscCall(VecNorm(p->G, NORM_2, &p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->res.bodyEnergy[i] = parts[i];
@@ -1227,12 +882,8 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermDestroy(&p->terms[t]));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
-  PetscCall(ProblemLMVMDestroy(p));
   PetscCall(MatDestroy(&p->Htao));
-  PetscCall(MatDestroy(&p->H0tao));
-  PetscCall(KSPDestroy(&p->ctrlKsp));
-  PetscCall(KSPDestroy(&p->ctrlKsp0));
-  for (PetscInt k = 0; k < p->ncontrols; ++k) PetscCall(VecDestroy(&p->ctrlB[k]));
+  PetscCall(ForceControlsDestroy(&p->fc));
   PetscCall(MatDestroy(&p->H));
   PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(SubdomainDestroy(&p->sub));

@@ -74,7 +74,7 @@ static PetscErrorCode SchurPCDestroy(PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactSchurPCSetUp(Problem p, PC pc)
+PetscErrorCode ContactSchurPCSetUp(PC pc, Mat K, IS surface, const PetscBool *exact)
 {
   SchurCtx     *ctx;
   MatFactorInfo info;
@@ -89,22 +89,22 @@ PetscErrorCode ContactSchurPCSetUp(Problem p, PC pc)
     PetscCall(PetscLogEventRegister("SchurStep", id, &SchurStep));
   }
   PetscCall(PetscNew(&ctx));
-  ctx->exact = &p->exactHessian;
-  PetscCall(PetscObjectReference((PetscObject)p->surfaceDofs));
-  ctx->isc = p->surfaceDofs;
+  ctx->exact = exact;
+  PetscCall(PetscObjectReference((PetscObject)surface));
+  ctx->isc = surface;
   {
     PetscInt nc;
     PetscCall(ISGetSize(ctx->isc, &nc));
     PetscCall(PetscInfo(pc, "Schur block: %" PetscInt_FMT " contact-surface dofs\n", nc));
   }
   PetscCall(PetscLogEventBegin(SchurFactorK, 0, 0, 0, 0));
-  PetscCall(MatGetFactor(p->K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &ctx->F));
+  PetscCall(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &ctx->F));
   PetscCall(MatFactorSetSchurIS(ctx->F, ctx->isc));
   PetscCall(MatFactorInfoInitialize(&info));
-  PetscCall(MatCholeskyFactorSymbolic(ctx->F, p->K, NULL, &info));
-  PetscCall(MatCholeskyFactorNumeric(ctx->F, p->K, &info));
+  PetscCall(MatCholeskyFactorSymbolic(ctx->F, K, NULL, &info));
+  PetscCall(MatCholeskyFactorNumeric(ctx->F, K, &info));
   PetscCall(MatFactorCreateSchurComplement(ctx->F, &S, &status));
-  PetscCall(MatCreateSubMatrix(p->K, ctx->isc, ctx->isc, MAT_INITIAL_MATRIX, &Kcc));
+  PetscCall(MatCreateSubMatrix(K, ctx->isc, ctx->isc, MAT_INITIAL_MATRIX, &Kcc));
   PetscCall(MatAXPY(S, -1.0, Kcc, DIFFERENT_NONZERO_PATTERN));
   ctx->T0 = S;
   PetscCall(MatDestroy(&Kcc));

@@ -114,17 +114,17 @@ static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
    knows every rank's row range and body offsets); each body's lists G_b,
    c_b of positions in B, and each boundary dof's position in its body's
    [G_b; c_b]. */
-static PetscErrorCode SubSetUpBodies(Problem p, SubCtx *ctx, const PetscInt G[], const PetscInt surf[])
+static PetscErrorCode SubSetUpBodies(SubCtx *ctx, PetscInt nb, const PetscInt offset[], const PetscInt G[], const PetscInt surf[])
 {
   const PetscInt *ranges;
-  PetscInt       *offs, nb = p->nbodies;
+  PetscInt       *offs;
   PetscMPIInt     size;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
-  PetscCall(VecGetOwnershipRanges(p->Xb, &ranges));
+  PetscCall(MatGetOwnershipRanges(ctx->K, &ranges));
   PetscCall(PetscMalloc1(size * nb, &offs));
-  PetscCallMPI(MPI_Allgather(p->offset, (PetscMPIInt)nb, MPIU_INT, offs, (PetscMPIInt)nb, MPIU_INT, ctx->comm));
+  PetscCallMPI(MPI_Allgather(offset, (PetscMPIInt)nb, MPIU_INT, offs, (PetscMPIInt)nb, MPIU_INT, ctx->comm));
   ctx->nbodies = nb;
   PetscCall(PetscMalloc2(ctx->nB, &ctx->bBody, ctx->nB, &ctx->bLocal));
   for (PetscInt k = 0; k < ctx->nB; ++k) {
@@ -164,7 +164,7 @@ static PetscErrorCode SubSetUpBodies(Problem p, SubCtx *ctx, const PetscInt G[],
    rank, sorted) and the positions of the boundary dofs in B. A dof is on the
    interface if another subdomain has it: it is a ghost here, or the sum over
    ranks of the subdomains holding it exceeds one. */
-static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
+static PetscErrorCode SubSetUpDofs(SubCtx *ctx, Subdomain sub, PetscInt nbodies, const PetscInt offset[])
 {
   PetscInt           n = 0, rend, nsurf, ngown = 0, nI = 0, nBr = 0, nOwned = 0;
   const PetscInt    *surf;
@@ -175,18 +175,18 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
   PetscMPIInt        size, ngownm, *counts, *displs;
 
   PetscFunctionBeginUser;
-  if (p->sub) { /* several ranks: the subdomain's dofs */
-    n = p->sub->n;
+  if (sub) { /* several ranks: the subdomain's dofs */
+    n = sub->n;
     PetscCall(PetscMalloc1(n + 1, &ctx->D));
-    PetscCall(PetscArraycpy(ctx->D, p->sub->dofs, n));
+    PetscCall(PetscArraycpy(ctx->D, sub->dofs, n));
   } else { /* one rank: the whole joined vector */
-    PetscCall(VecGetSize(p->Xb, &n));
+    PetscCall(MatGetSize(ctx->K, &n, NULL));
     PetscCall(PetscMalloc1(n + 1, &ctx->D));
     for (PetscInt k = 0; k < n; ++k) ctx->D[k] = k;
   }
   ctx->nD = n;
 
-  PetscCall(VecDuplicate(p->Xb, &count));
+  PetscCall(MatCreateVecs(ctx->K, &count, NULL));
   PetscCall(VecZeroEntries(count));
   PetscCall(PetscMalloc1(n + 1, &ones));
   for (PetscInt k = 0; k < n; ++k) ones[k] = 1.0;
@@ -194,7 +194,7 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
   PetscCall(PetscFree(ones));
   PetscCall(VecAssemblyBegin(count));
   PetscCall(VecAssemblyEnd(count));
-  PetscCall(VecGetOwnershipRange(p->Xb, &ctx->rstart, &rend));
+  PetscCall(MatGetOwnershipRange(ctx->K, &ctx->rstart, &rend));
   PetscCall(ISGetLocalSize(ctx->isc, &nsurf));
   surf = ctx->surf;
   PetscCall(PetscMalloc2(n + 1, &onB, n + 1, &gown));
@@ -257,7 +257,7 @@ static PetscErrorCode SubSetUpDofs(Problem p, SubCtx *ctx)
         ctx->ownedRow[nOwned++] = g - ctx->rstart;
       }
     }
-    PetscCall(SubSetUpBodies(p, ctx, G, surf));
+    PetscCall(SubSetUpBodies(ctx, nbodies, offset, G, surf));
     PetscCall(PetscFree(G));
   }
   PetscCall(PetscFree2(counts, displs));
@@ -724,7 +724,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
+PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], Subdomain *sub)
 {
   SubCtx      *ctx;
   PetscScalar *Sr;
@@ -739,21 +739,21 @@ PetscErrorCode ContactSubstructurePCSetUp(Problem p, PC pc)
     PetscCall(PetscLogEventRegister("SubstrSolve", id, &SubSolve));
   }
   PetscCall(PetscNew(&ctx));
-  ctx->comm = p->comm;
-  PetscCall(PetscObjectReference((PetscObject)p->surfaceDofs));
-  ctx->isc = p->surfaceDofs;
+  ctx->comm = PetscObjectComm((PetscObject)K);
+  PetscCall(PetscObjectReference((PetscObject)surface));
+  ctx->isc = surface;
   PetscCall(ISGetIndices(ctx->isc, &ctx->surf));
-  PetscCall(PetscObjectReference((PetscObject)p->K));
-  ctx->K = p->K;
+  PetscCall(PetscObjectReference((PetscObject)K));
+  ctx->K = K;
   PetscCall(PetscLogEventBegin(SubFactor, 0, 0, 0, 0));
-  PetscCall(SubSetUpDofs(p, ctx));
+  PetscCall(SubSetUpDofs(ctx, *sub, nbodies, offset));
   PetscCall(PetscInfo(NULL, "subdomain: %" PetscInt_FMT " dofs, %" PetscInt_FMT " interior, %" PetscInt_FMT " boundary; interface %" PetscInt_FMT ", contact surfaces %" PetscInt_FMT " dofs\n", ctx->nD, ctx->nI, ctx->nBr, ctx->nG, ctx->nc));
   PetscCall(PetscCalloc1(ctx->nBr * ctx->nBr + 1, &Sr));
   /* K^r: the subdomain's stiffness (subdomain.c), consumed here; on one rank K
      itself, with the surface block's explicit zeros, which
      SubFactorSubdomain drops */
-  PetscCall(SubFactorSubdomain(ctx, p->sub ? p->sub->K : p->K, Sr));
-  PetscCall(SubdomainDestroy(&p->sub));
+  PetscCall(SubFactorSubdomain(ctx, *sub ? (*sub)->K : K, Sr));
+  PetscCall(SubdomainDestroy(sub));
   {
     PetscMPIInt info[2] = {ctx->hasMumps ? (PetscMPIInt)ctx->mumps.INFOG(1) : 0, 0}, worst[2];
     PetscCallMPI(MPI_Comm_rank(ctx->comm, &info[1]));

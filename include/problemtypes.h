@@ -1,0 +1,141 @@
+#pragma once
+/* The problem's data (problemtypes.c names its enumerations): its options,
+   schedule, force controls and results, and the Problem struct that joins
+   them. problem.c (the assembled system), the solver's files above it
+   (staging.c, lmvm.c, forcesolve.c, forceouter.c, newtonstep.c, solve.c)
+   and below it (forcecontrol.c, forceborder.c, the preconditioners) read
+   these types; each calls only the files below it. */
+#include "energyterm.h"
+#include "subdomain.h"
+#include "unheld.h"
+
+#define CONTACT_MAX_TERMS    16
+
+/* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
+typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
+extern const char *const HessianTypes[];
+
+typedef enum { H0_NONE, H0_ELASTIC, H0_CONTACT } H0Type;
+extern const char *const H0Types[];
+
+/* How the Newton step's Schur complement on the contact surfaces is formed:
+   by substructuring, on any number of ranks (substructure.c), or by MUMPS
+   from K, on one rank (schur.c). */
+typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
+extern const char *const SchurTypes[];
+
+/* The force control types by name (-force_control_type: coupled, outer):
+   read by ProblemSetFromOptions, filled by ForceControlRegisterAll (forcesolve.c). */
+extern PetscFunctionList ForceControlList;
+
+/* What ProblemSetFromOptions reads, and nothing else. */
+typedef struct {
+  char        scene[CONTACT_NAME_LEN];
+  char        meshDir[PETSC_MAX_PATH_LEN];
+  PetscReal   meshSize; /* -mesh_size, or -1: each body's own */
+  PetscReal   maxDofs;  /* refuse a generated mesh above this many dofs (-max_dofs; 0: from memory, set when meshing) */
+  PetscInt    partitioner;
+  PetscBool   partitionView, taylor;
+  PetscBool   axisymmetric; /* -axisymmetric: every body in r-z (axis.c) */
+  PetscReal   taylorScale;
+  H0Type      h0;
+  PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
+  PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
+  PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
+  PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances; -1: not given, chosen with the solver) */
+  PetscInt    loadSteps, penaltyStages;
+  PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
+  PetscReal   penaltyStart, stageRtol;
+  PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
+  char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
+  PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration (outer), of the solve and its refinements (coupled) */
+  PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
+  PetscBool   controlRtolSet; /* given (coupled force control checks it only then) */
+  PetscReal   controlStep;   /* coupled force control: the most a Newton step moves a controlled group, times its body's size */
+  PetscBool   schur;     /* Newton through the contact-surface Schur complement */
+  PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
+  SchurType   schurType;
+  HessianType hessianType;   /* -contact_hessian */
+  PetscReal   hessianSwitch; /* auto: exact once ||g|| < hessianSwitch ||g0|| */
+} ProblemOptions;
+
+/* A force-controlled component (forcecontrol.c): body, Dirichlet condition
+   and component (an index into its comps), its force, and the displacement
+   and reaction of the last solve. */
+typedef struct {
+  PetscInt  body, bc, c;
+  PetscReal force, U, R;
+  PetscReal L;     /* the body's size: its reference bounding box's diagonal */
+  PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads */
+  PetscBool anchor; /* the anchor of a body held by contact (anchors.c): force 0 */
+  PetscReal kref;   /* an anchor: a motion stiffer than this is held by the contact (forceborder.c) */
+} ForceControl;
+
+/* Force control's state (forcecontrol.c): the controlled components, and
+   for the coupled type the border of the Hessian, the frozen directions of
+   the anchors and the Newton step's solve of H inside the bordered one. */
+typedef struct {
+  PetscInt     n;                       /* the controlled components, anchors included */
+  ForceControl c[CONTACT_MAX_CONTROLS];
+  PetscBool    coupled;                 /* the controls' displacements are the last entries of X */
+  Vec          B[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout) */
+  PetscReal    D[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls */
+  Unheld       unheld; /* coupled: the anchors' directions the contact does not hold (unheld.c) */
+  KSP          ksp;    /* coupled, Newton: the solve of H inside the bordered one (newtonstep.c) */
+} ForceControls;
+
+/* What a solve and its post-processing found. */
+typedef struct {
+  PetscInt           nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
+  PetscInt           stagesDone, cutbacks; /* the stages solved, and how many times the load was cut back */
+  PetscReal          loadDone;             /* the load factor of the last converged stage */
+  TaoConvergedReason reason;
+  PetscReal          energy, gnorm;        /* at the solution (ProblemPostProcess) */
+  PetscReal          bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
+  PetscReal          taylorRates[2], taylorRemainders[2][8], taylorEps[8]; /* ProblemTaylorTest */
+  PetscInt           taylorN;
+  PetscInt           controlSolves; /* force control: the solves of its outer iteration */
+  PetscInt           h0Refreshes;   /* -lmvm_h0 contact: the H0 set-ups (the first included) */
+  PetscInt           pairsDropped;  /* -lmvm_pair_ratio: the correction pairs dropped */
+  PetscInt           lmvmRestarts;  /* -lmvm_restarts: the L-BFGS solves restarted */
+  PetscInt           decrementSolves; /* -lmvm_decrement_rtol: the H0 solves of the decrement test */
+  PetscInt           decrementFloor;  /* -lmvm_decrement_rtol: last stages ended at the decrement's round-off floor */
+  char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
+} ProblemResults;
+
+/* What the solve runs (staging.c): the options' load steps, penalty continuation and
+   decrement test, or, where the user gave none, what the program chose
+   (ProblemSetPenaltyContinuation, the L-BFGS defaults of lmvm.c); force
+   control's solves from a converged state run one stage. */
+typedef struct {
+  PetscInt  loadSteps, penaltyStages;
+  PetscReal penaltyStart;  /* the first stage's k_p over the scene's */
+  PetscReal decrementRtol; /* the last stage stops on the decrement (0: on the gradient tolerances; -1: not chosen yet) */
+} ProblemSchedule;
+
+/* The whole scene: bodies joined into one vector, energy terms, TAO glue.
+   L-BFGS's state lives with the TAO solver that uses it (lmvm.c). */
+typedef struct _n_Problem *Problem;
+struct _n_Problem {
+  MPI_Comm       comm;
+  ProblemOptions opt;
+  ProblemSchedule sched;
+  PetscInt       nbodies;
+  Body           bodies[CONTACT_MAX_BODIES];
+  PetscInt       nterms;
+  EnergyTerm     terms[CONTACT_MAX_TERMS];
+  PetscInt       offset[CONTACT_MAX_BODIES]; /* start of each body in this rank's part of X */
+  Vec            X, G; /* TAO's unknowns and gradient: the bodies' dofs, then (coupled force control, rank 0) the controlled displacements */
+  Vec            Xb;   /* the bodies' dofs alone, the layout of K and H (X itself without coupled controls) */
+  Vec            X0;   /* the first iterate (NULL: rest; ignored with load or penalty stages) */
+  Mat            H, K; /* Hessian, elastic stiffness of the bodies */
+  IS             surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
+  Subdomain      sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
+  Tao            tao;
+  PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
+  PetscReal      hessianG0;    /* -contact_hessian auto: the ||g|| its switch is relative to (ProblemSetHessianSwitchReference) */
+  ForceControls  fc;        /* force control (forcecontrol.c) */
+  Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
+  ProblemResults res;
+};
+

@@ -1,0 +1,95 @@
+/* The Newton step's linear solve (nls, ntr): the KSP and preconditioner of
+   the Hessian, chosen by the options: the Schur complement on the contact
+   surfaces (substructure.c on any number of ranks, schur.c on one), a
+   direct Cholesky factorisation, or CG with GAMG (iterative.c); with
+   coupled force control, the bordered Hessian's solve around it
+   (forceborder.c). The orchestrator (solve.c) sets it up; L-BFGS's H0
+   (lmvm.c) shares its Cholesky. */
+#include "newtonstep.h"
+#include "schur.h"
+#include "substructure.h"
+#include "iterative.h"
+#include "forceborder.h"
+
+/* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
+   MUMPS's LDL^T for a matrix that may be indefinite. */
+PetscErrorCode ContactPCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
+{
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, size > 1 || indefinite ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  PetscFunctionReturn(0);
+}
+
+/* The Schur complement on the contact surfaces of K (set up): MUMPS's on one
+   rank with -newton_schur_type mumps, else by substructuring. */
+PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
+{
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(pc, p->K, p->surfaceDofs, &p->exactHessian));
+  else PetscCall(ContactSubstructurePCSetUp(pc, p->K, p->surfaceDofs, p->nbodies, p->offset, &p->sub));
+  PetscFunctionReturn(0);
+}
+
+/* Newton types (nls, ntr): the Hessian changes only in the contact-surface
+   block, so the step goes through the Schur complement on that block, K
+   condensed once: by substructuring on any number of ranks
+   (substructure.c), or on one rank by MUMPS's Schur complement of K
+   (schur.c, -newton_schur_type mumps). Without contact, or with
+   -newton_schur 0, a Cholesky factorisation per step (CHOLMOD on one rank,
+   MUMPS on several); -newton_iterative: CG with GAMG (iterative.c). nls takes
+   the factored step directly (preonly); at most 500 iterations (TAO's 50 are
+   too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
+   -tao_max_it, -newton_schur 0, -tao_nls_ksp_type, -tao_nls_pc_type, ...
+   override them and -help shows them. Without a set-up problem (-help) the
+   Schur preconditioner is only named. */
+static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
+{
+  PC          pc;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  if (p->opt.iterative) {
+    if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies));
+  } else if (p->opt.schur && p->nterms > 0) {
+    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+    if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
+    else PetscCall(ProblemSchurPCSetUp(p, pc));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
+  PetscFunctionReturn(0);
+}
+
+/* The Newton KSP as above; with coupled force control the Hessian TAO sees
+   is H bordered by the controls, and its step eliminates them around a KSP
+   of H set up as above (forceborder.c). */
+PetscErrorCode ProblemSetNewtonDefaults(Problem p)
+{
+  PetscBool nls;
+  KSP       ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONLS, &nls));
+  PetscCall(TaoSetMaximumIterations(p->tao, 500));
+  PetscCall(TaoGetKSP(p->tao, &ksp));
+  if (p->fc.coupled && p->K) {
+    PC pc;
+    PetscCall(KSPCreate(p->comm, &p->fc.ksp));
+    PetscCall(KSPSetOperators(p->fc.ksp, p->H, p->H));
+    PetscCall(ProblemSetUpStepKSP(p, p->fc.ksp, PETSC_TRUE));
+    PetscCall(MatDestroy(&p->Htao));
+    PetscCall(ForceBorderMatCreate(p, p->H, p->fc.ksp, &p->Htao));
+    if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(ForceBorderPCSetUp(p->Htao, pc));
+  } else PetscCall(ProblemSetUpStepKSP(p, ksp, nls));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,204 @@
+/* The staged solve: load steps (outer), penalty continuation (inner) and
+   automatic cutback, each stage a TAO solve from the last converged state,
+   and the stopping test of each stage (the last relative to the gradient
+   of the full problem at rest, so that the result does not depend on the
+   staging). Below the orchestrator (solve.c) and force control's solves
+   (forcesolve.c, forceouter.c); above the assembled system (problem.c) and
+   L-BFGS's TAO solve (lmvm.c). */
+#include "staging.h"
+#include "problem.h"
+#include "forcecontrol.h"
+#include "lmvm.h"
+
+static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoadFactor(p->bodies[i], load));
+  for (PetscInt t = 0; t < p->nterms; ++t)
+    PetscCall(EnergyTermSetPenaltyFactor(p->terms[t], penalty));
+  PetscFunctionReturn(0);
+}
+
+/* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
+   rest, where a solve from rest starts and the last stage stops relative to;
+   the energy evaluation is not counted. */
+static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
+{
+  PetscReal f;
+  Vec       X;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(p->X, &X));
+  PetscCall(ProblemSetStage(p, 1.0, 1.0));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
+  p->res.nEnergyEvals--;
+  PetscCall(VecNorm(p->G, NORM_2, g0));
+  PetscCall(VecDestroy(&X));
+  PetscFunctionReturn(0);
+}
+
+/* Whether a stopped solve is retried with a smaller load increment: its line
+   search failed (or met a NaN), which is what an iterate thrown far from the
+   solution by a large step of the load meets (the contact's kinks, a
+   non-convex energy at deep overlap); not a limit the user set. TAO's own
+   budget of energy evaluations runs out the same way, where line searches
+   keep failing and L-BFGS restarts after each (lmvm.c: measured on the half
+   scene at h = 0.01, k_p = 1e10, push 0.3, mortar, where the load's half
+   then converges); -tao_max_funcs given is the user's limit. */
+static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
+{
+  PetscBool userLimit = PETSC_FALSE;
+
+  if (r == TAO_DIVERGED_MAXFCN && PetscOptionsHasName(NULL, NULL, "-tao_max_funcs", &userLimit)) return PETSC_FALSE;
+  return (PetscBool)(r == TAO_DIVERGED_LS_FAILURE || r == TAO_DIVERGED_NAN || r == TAO_DIVERGED_TR_REDUCTION || (r == TAO_DIVERGED_MAXFCN && !userLimit));
+}
+
+/* Coupled force control: the gradient norm at rest of the displacement run
+   that imposes the controls' displacements as X now holds them (the bodies'
+   dofs at 0; the controls' own entries left out, as that run has none),
+   counted as no energy evaluation. A displacement run's last stage stops
+   relative to its gradient at rest, K_fc 1 U and the loads; a force
+   control's at rest is F alone, far smaller where the group's own stiffness
+   is large (the reference scene pushed by 0.01: 2.25 against 577), so that
+   its solve would be held to a tighter stop than the displacement run's.
+   A body held by contact keeps its anchors at 0 there: one vertex moved
+   alone would give a gradient of its own stiffness times U. And in a scene
+   with a body held by contact the scale is at most the scene's largest
+   force (at the state the last stage starts from): a displacement pushed
+   into a penalty contact from rest gives a gradient far above the forces
+   it makes, and a body held by contact balances its contacts only to the
+   stop (measured on the roller pushed by 1000: a scale of 116079 stopped
+   at a gradient norm of 8.3e-5 with the contacts 4e-7 of the load apart).
+   Once an earlier stage has found U, its last stage stops relative to the
+   larger of the two. */
+static PetscErrorCode ProblemControlGradientScale(Problem p, PetscReal g0, PetscReal *g)
+{
+  PetscReal f, S = 0;
+  Vec       Y;
+
+  PetscFunctionBeginUser;
+  if (UnheldAny(&p->fc.unheld)) { /* the scene's largest force, at the state the last stage starts from */
+    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+    PetscCall(ProblemControlSceneForce(p, &S));
+  }
+  PetscCall(VecDuplicate(p->X, &Y));
+  PetscCall(ProblemControlRest(p, p->X, Y));
+  PetscCall(ProblemEvaluate(p, Y, &f, p->G, NULL)); /* G: the bodies' part alone */
+  PetscCall(VecNorm(p->G, NORM_2, g));
+  PetscCall(VecDestroy(&Y));
+  *g = PetscMax(g0, *g);
+  if (S > 0) *g = PetscMin(*g, S);
+  PetscFunctionReturn(0);
+}
+
+/* The penalty stages at load factor load, each a TAO solve from the last;
+   the last stage of the last load stops at the final tolerance, gttol times
+   the gradient norm g0 of the full problem at rest, the others when their
+   gradient norm has fallen by -stage_rtol. */
+static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
+{
+  const ProblemSchedule *sc = &p->sched;
+
+  PetscFunctionBeginUser;
+  for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
+    const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
+    const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
+    PetscInt        n;
+
+    PetscCall(ProblemSetStage(p, load, penalty));
+    PetscCall(ProblemLMVMSetLastStage(p, last));
+    if (last && p->fc.coupled && p->res.stagesDone > 0) { /* force control: as the displacement run of the U found */
+      PetscReal gd;
+      PetscCall(ProblemControlGradientScale(p, g0, &gd));
+      PetscCall(PetscInfo(p->tao, "force control: the last stage stops relative to %g (at rest: %g)\n", (double)gd, (double)g0));
+      g0 = gd;
+    }
+    if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
+    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
+    PetscCall(ProblemTaoSolve(p, &n, reason));
+    PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
+    *its += n;
+    p->res.stagesDone++;
+    if (*reason <= 0) PetscFunctionReturn(0);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Load stepping (outer), penalty continuation (inner) and automatic cutback.
+   The load factor walks from 0 to 1 in steps of 1/-load_steps; each load is
+   solved from the last converged state. Where a load's solve stops with a
+   failed line search the state goes back to the last converged one and the
+   step is halved (at most -load_cutbacks times in all): a smaller step of the
+   load starts Newton closer to the solution it tracks, as an implicit
+   analysis cuts back its increment. A single solve from rest (the default)
+   that fails starts this walk with a step of 1/2. The last stage stops
+   where a single solve from rest would, at -tao_gttol times the gradient
+   norm of the full problem at rest, which makes the result independent of
+   the staging. */
+static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
+  Vec       Xs;
+
+  PetscFunctionBeginUser;
+  *its = 0;
+  p->res.stagesDone = 0;
+  p->res.cutbacks   = 0;
+  p->res.loadDone   = 0.0;
+  PetscCall(ProblemSetHessianSwitchReference(p, -1.0)); /* -contact_hessian auto: the first Hessian's */
+  PetscCall(ProblemLMVMBeginStaged(p)); /* a single solve is the last stage */
+  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
+    PetscBool cut;
+    if (p->X0) {
+      PetscCall(ProblemGradientAtRest(p, &g0));
+      PetscCall(VecCopy(p->X0, p->X));
+      PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
+    }
+    PetscCall(ProblemTaoSolve(p, its, reason));
+    p->res.stagesDone = 1;
+    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
+    if (!cut) {
+      if (*reason > 0) p->res.loadDone = 1.0;
+      PetscFunctionReturn(0);
+    }
+    PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
+    p->res.cutbacks = 1;
+    step        = 0.5;
+  }
+  if (g0 < 0) PetscCall(ProblemGradientAtRest(p, &g0));
+  PetscCall(ProblemSetHessianSwitchReference(p, g0)); /* every stage switches where a single solve would */
+  PetscCall(VecZeroEntries(p->X));
+  PetscCall(VecDuplicate(p->X, &Xs));
+  PetscCall(VecCopy(p->X, Xs));
+  while (p->res.loadDone < 1.0) {
+    const PetscReal next = p->res.loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
+    PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
+    if (*reason > 0) {
+      p->res.loadDone = load;
+      PetscCall(VecCopy(p->X, Xs));
+      continue;
+    }
+    if (!ProblemCutbackApplies(*reason) || p->res.cutbacks >= p->opt.maxCutbacks) break;
+    PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->res.loadDone, (double)(0.5 * step)));
+    p->res.cutbacks++;
+    step *= 0.5;
+    PetscCall(VecCopy(Xs, p->X));
+  }
+  PetscCall(VecDestroy(&Xs));
+  PetscFunctionReturn(0);
+}
+
+/* The stages, and TAO's tolerances restored after them (they set each
+   stage's own), so that another solve of the same problem (force control's
+   next trial) stops by the same test. */
+PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal tol[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  PetscCall(ProblemSolveStages(p, its, reason));
+  PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
+  PetscFunctionReturn(0);
+}
