@@ -16,7 +16,7 @@ sys.path.insert(0, str(ROOT / "scripts"))
 BIN = Path(os.environ.get("CONTACT_BIN", ROOT / "bin" / "contact"))
 # A rank waiting for another yields its core (mpi_yield_when_idle; Open MPI sets
 # it by itself only when there are more ranks than cores): otherwise it polls,
-# and on 2 cores shared by the suite's 3 workers a 2-rank run burnt 2 to 6 times
+# and on 2 cores shared by the suite's workers a 2-rank run burnt 2 to 6 times
 # the CPU of its 1-rank twin, taken from the other workers (the roller by force
 # at h = 0.04, load 8: 24 to 28 s of CPU polling, 11 to 15 s yielding, 4.4 s on
 # one rank). Set in os.environ, so that every process a test starts has it.
