@@ -14,6 +14,13 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
 # CONTACT_BIN: another build of the program (make check-sanitize: bin/contact-sanitize)
 BIN = Path(os.environ.get("CONTACT_BIN", ROOT / "bin" / "contact"))
+# A rank waiting for another yields its core (mpi_yield_when_idle; Open MPI sets
+# it by itself only when there are more ranks than cores): otherwise it polls,
+# and on 2 cores shared by the suite's workers a 2-rank run burnt 2 to 6 times
+# the CPU of its 1-rank twin, taken from the other workers (the roller by force
+# at h = 0.04, load 8: 24 to 28 s of CPU polling, 11 to 15 s yielding, 4.4 s on
+# one rank). Set in os.environ, so that every process a test starts has it.
+os.environ.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
 

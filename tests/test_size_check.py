@@ -4,7 +4,7 @@ geometry's extent at h would not; a mesh that does not fit is refused in
 seconds, with status 1 and one line, also where the .geo refines below h by
 its own parameters (which the extent never saw). "In seconds" is the CPU time
 of the run and its Gmsh probes (measured 3.4 s and 6.8 s), not the wall time,
-which the load of the machine decides: make test runs on three workers, on a
+which the load of the machine decides: make test runs on several workers, on a
 machine others share, and the second refusal took 17 to 35 s of wall time
 there."""
 import resource
