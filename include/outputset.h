@@ -27,5 +27,12 @@ PetscErrorCode ContactOutputCheckOnRoot(MPI_Comm, int code, char msg[]);
 /* Rank 0: frees the room the set holds for the HDF5 file to close after a
    failed write (outputset.c, Reserve). */
 void           ContactOutputReleaseReserve(void);
+/* Collective, before the HDF5 file is written on several ranks: whether the
+   disk has room for bytes in its temporary (rank 0 allocates them and frees
+   them again, as the reserve is allocated); if not, the one line naming the
+   HDF5 file and the cause, on every rank. Parallel HDF5 fails inside a
+   collective call on the rank whose write found no room, and the others wait
+   in it: this check is what keeps a full disk from hanging such a run. */
+PetscErrorCode ContactOutputCheckRoom(MPI_Comm, size_t bytes);
 /* The descriptor the signal handler's message goes to (default stderr). */
 void           ContactOutputSetMessageFd(int fd);

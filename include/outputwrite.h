@@ -34,11 +34,5 @@ PetscErrorCode ContactOutputLibraryWriteBegin(void);
    it fails on every rank of v's communicator, which would otherwise go on to
    the next collective call and wait there for the rank that failed. */
 PetscErrorCode ContactOutputCollective(PetscViewer, PetscErrorCode ierr);
-/* Before a library's write on several ranks: whether the disk has room for
-   bytes in tmp (rank 0 allocates them and frees them again); if not, the one
-   line naming name and the cause, on every rank. Parallel HDF5 fails inside a
-   collective call on the rank whose write found no room, and the others wait
-   in it: this check is what keeps a full disk from hanging such a run. */
-PetscErrorCode ContactOutputCheckRoom(MPI_Comm, size_t bytes, const char tmp[], const char name[]);
 #define ContactOutputCall(v, call) PetscCall(ContactOutputCollective((v), (call)))
 PetscErrorCode ContactOutputLibraryWriteEnd(MPI_Comm, PetscErrorCode ierr, PetscErrorCode (*close)(void *), void *ctx, const char tmp[], const char name[]);

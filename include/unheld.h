@@ -9,7 +9,6 @@
 typedef struct {
   PetscInt  m;                 /* the controls, anchors among them */
   PetscBool anchor[CONTACT_MAX_CONTROLS];
-  PetscInt  body[CONTACT_MAX_CONTROLS];  /* each control's body */
   PetscReal kref[CONTACT_MAX_CONTROLS];  /* an anchor: a motion stiffer than this is held by the contact */
   PetscReal raw[CONTACT_MAX_CONTROLS];   /* the controls' gradient R - F at the last evaluation, before the projection */
   PetscReal allowance;         /* the residual an unheld direction may keep: UNHELD_NEUTRAL times the scene's largest force there */
@@ -19,7 +18,7 @@ typedef struct {
   PetscReal Vc[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS];
 } Unheld;
 
-PetscErrorCode UnheldSetUp(Unheld *, PetscInt m, const PetscBool anchor[], const PetscInt body[], const PetscReal kref[]);
+PetscErrorCode UnheldSetUp(Unheld *, PetscInt m, const PetscBool anchor[], const PetscReal kref[]);
 PetscBool      UnheldAny(const Unheld *);
 /* g: the controls' gradient R - F; keeps it as raw and projects the frozen directions out of g. */
 PetscErrorCode UnheldSetGradient(Unheld *, PetscReal sceneForce, PetscReal g[]);

@@ -160,7 +160,7 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
 #define HDF5_NODE_VALUES 17
 #define HDF5_MARGIN      (1 << 20)
 
-static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
+static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
 {
   PetscMPIInt size;
   size_t      bytes = HDF5_MARGIN;
@@ -174,7 +174,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[], const C
     PetscCall(ISGetSize(F[i].topo, &cells));
     bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) + (size_t)cells * sizeof(PetscInt);
   }
-  PetscCall(ContactOutputCheckRoom(p->comm, bytes, out->htmp, out->h5));
+  PetscCall(ContactOutputCheckRoom(p->comm, bytes));
   PetscFunctionReturn(0);
 }
 
@@ -195,7 +195,7 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
-  PetscCall(WriteHDF5CheckRoom(p, F, out));
+  PetscCall(WriteHDF5CheckRoom(p, F));
   PetscCheck(H5Eset_auto2(H5E_DEFAULT, NULL, NULL) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "cannot turn off HDF5's error printing");
   PetscCall(ContactOutputLibraryWriteBegin());
   ierr = PetscViewerHDF5Open(p->comm, out->htmp, FILE_MODE_WRITE, &v);

@@ -221,18 +221,43 @@ static int CreateTemporary(const char opt[], const char path[], char msg[])
    1.10 flushes its metadata when it closes a file, and if that flush fails
    too, it keeps the file's id over freed memory and crashes in MPI_Finalize().
    A disk without this room fails here, before meshing. */
-static int Reserve(const char opt[], const char path[], const char name[], char msg[])
+static int Allocate(const char path[], off_t bytes, PetscBool keep)
 {
   int fd = open(path, O_WRONLY | O_CLOEXEC), e;
 
-  if (fd < 0) e = errno;
-  else {
-    e = posix_fallocate(fd, 0, OUTPUT_RESERVE);
-    close(fd);
-  }
+  if (fd < 0) return errno;
+  e = posix_fallocate(fd, 0, bytes);
+  if (!keep && ftruncate(fd, 0) && !e) e = errno;
+  close(fd);
+  return e;
+}
+
+static int Reserve(const char opt[], const char path[], const char name[], char msg[])
+{
+  const int e = Allocate(path, OUTPUT_RESERVE, PETSC_TRUE);
+
   if (!e) return 0;
   snprintf(msg, OUT_MSG_LEN, "option %s: cannot write %s: %s", opt, name, strerror(e));
   return PETSC_ERR_FILE_WRITE;
+}
+
+PetscErrorCode ContactOutputCheckRoom(MPI_Comm comm, size_t bytes)
+{
+  PetscMPIInt rank;
+  int         code = 0;
+  char        msg[OUT_MSG_LEN] = "";
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    const int e = Allocate(set.htmp, (off_t)bytes, PETSC_FALSE);
+    if (e) {
+      snprintf(msg, OUT_MSG_LEN, "cannot write %s: %s", set.h5, strerror(e));
+      code = PETSC_ERR_FILE_WRITE;
+    }
+  }
+  PetscCall(ContactOutputCheckOnRoot(comm, code, msg));
+  PetscFunctionReturn(0);
 }
 
 void ContactOutputReleaseReserve(void)

@@ -124,30 +124,6 @@ PetscErrorCode ContactOutputCollective(PetscViewer v, PetscErrorCode ierr)
   return any ? (ierr ? ierr : PETSC_ERR_FILE_WRITE) : 0;
 }
 
-PetscErrorCode ContactOutputCheckRoom(MPI_Comm comm, size_t bytes, const char tmp[], const char name[])
-{
-  PetscMPIInt rank;
-  int         code = 0;
-  char        msg[CONTACT_OUTPUT_MSG_LEN] = "";
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (!rank) {
-    const int fd = open(tmp, O_WRONLY | O_CLOEXEC);
-    int       e  = fd < 0 ? errno : posix_fallocate(fd, 0, (off_t)bytes);
-    if (fd >= 0) {
-      if (ftruncate(fd, 0) && !e) e = errno;
-      close(fd);
-    }
-    if (e) {
-      PetscCall(PetscSNPrintf(msg, sizeof(msg), "cannot write %s: %s", name, strerror(e)));
-      code = PETSC_ERR_FILE_WRITE;
-    }
-  }
-  PetscCall(ContactOutputCheckOnRoot(comm, code, msg));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode ContactOutputLibraryWriteBegin(void)
 {
   PetscFunctionBeginUser;

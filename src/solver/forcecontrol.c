@@ -65,7 +65,6 @@ static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
 PetscErrorCode ProblemCollectControls(Problem p)
 {
   PetscBool anchor[CONTACT_MAX_CONTROLS];
-  PetscInt  body[CONTACT_MAX_CONTROLS];
   PetscReal kref[CONTACT_MAX_CONTROLS];
 
   PetscFunctionBeginUser;
@@ -92,10 +91,9 @@ PetscErrorCode ProblemCollectControls(Problem p)
       }
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     anchor[k] = p->fc.c[k].anchor;
-    body[k]   = p->fc.c[k].body;
     kref[k]   = p->fc.c[k].kref;
   }
-  PetscCall(UnheldSetUp(&p->fc.unheld, p->fc.n, anchor, body, kref));
+  PetscCall(UnheldSetUp(&p->fc.unheld, p->fc.n, anchor, kref));
   PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &p->fc.coupled));
   if (p->fc.n && !p->fc.coupled && UnheldAny(&p->fc.unheld)) PetscCall(PetscInfo(NULL, "force control: a body held by contact: coupled, whatever -force_control_type\n"));
   p->fc.coupled = (PetscBool)(p->fc.n > 0 && (p->fc.coupled || UnheldAny(&p->fc.unheld)));
@@ -217,28 +215,30 @@ PetscErrorCode ProblemSetControlDisplacements(Problem p, Vec X)
 
 PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
 {
-  PetscBool   done[CONTACT_MAX_BODIES] = {PETSC_FALSE};
-  PetscMPIInt rank;
-  PetscInt    nb;
-  PetscReal   gU[CONTACT_MAX_CONTROLS], S = 0;
+  const PetscBool held = UnheldAny(&p->fc.unheld);
+  PetscBool       done[CONTACT_MAX_BODIES];
+  PetscMPIInt     rank;
+  PetscInt        nb;
+  PetscReal       gU[CONTACT_MAX_CONTROLS], S = 0;
 
   PetscFunctionBeginUser;
   if (!p->fc.coupled) PetscFunctionReturn(0);
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   PetscCall(VecGetLocalSize(p->Xb, &nb));
-  if (UnheldAny(&p->fc.unheld)) PetscCall(ProblemControlSceneForce(p, &S)); /* every body's reactions */
+  if (held) PetscCall(ProblemControlSceneForce(p, &S)); /* it computes every body's reactions */
+  for (PetscInt i = 0; i < p->nbodies; ++i) done[i] = held;
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     ForceControl *fc = &p->fc.c[k];
     Body          b  = p->bodies[fc->body];
     const BodyBC *bc = &b->bc[fc->bc];
-    if (!done[fc->body] && !UnheldAny(&p->fc.unheld)) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
+    if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
     fc->R          = bc->reaction[bc->comps[fc->c]];
     gU[k]          = fc->R - b->loadFactor * fc->force;
     *f -= b->loadFactor * fc->force * fc->U;
   }
   PetscCall(PetscInfo(NULL, "force control: U_0 = %.10g, reaction %.10g, energy %.10g\n", (double)p->fc.c[0].U, (double)p->fc.c[0].R, (double)*f));
-  if (UnheldAny(&p->fc.unheld)) PetscCall(UnheldSetGradient(&p->fc.unheld, S, gU)); /* the directions the contact does not hold, projected out */
+  if (held) PetscCall(UnheldSetGradient(&p->fc.unheld, S, gU)); /* the directions the contact does not hold, projected out */
   if (!rank) {
     PetscScalar *g;
     PetscCall(VecGetArray(G, &g));

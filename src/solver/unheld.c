@@ -50,7 +50,7 @@
 #define UNHELD_STIFF   1e-4 /* held: stiffness at least this times E (E L in r-z) */
 #define UNHELD_NEUTRAL 1e-3 /* an unheld direction's residual allowed, relative to the scene's largest force */
 
-PetscErrorCode UnheldSetUp(Unheld *u, PetscInt m, const PetscBool anchor[], const PetscInt body[], const PetscReal kref[])
+PetscErrorCode UnheldSetUp(Unheld *u, PetscInt m, const PetscBool anchor[], const PetscReal kref[])
 {
   PetscFunctionBeginUser;
   PetscCheck(m <= CONTACT_MAX_CONTROLS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "more than %d controls", CONTACT_MAX_CONTROLS);
@@ -58,7 +58,6 @@ PetscErrorCode UnheldSetUp(Unheld *u, PetscInt m, const PetscBool anchor[], cons
   u->m = m;
   for (PetscInt k = 0; k < m; ++k) {
     u->anchor[k] = anchor[k];
-    u->body[k]   = body[k];
     u->kref[k]   = UNHELD_STIFF * kref[k];
   }
   PetscFunctionReturn(0);
