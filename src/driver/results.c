@@ -37,6 +37,7 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
       const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
       const char *g  = b->name;
       PetscInt    N = F[i].nnodes, C = F[i].ncells;
+      if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
       fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
       fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
       fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
@@ -112,6 +113,19 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     char group[2 * CONTACT_NAME_LEN];
     PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
+    if (p->bodies[i]->rigid) { /* its motion and force, no fields */
+      const BodyRigid *r = p->bodies[i]->rg;
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rigid", PETSC_INT, &(PetscInt){1}));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_x", PETSC_REAL, &r->t[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_y", PETSC_REAL, &r->t[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rotation", PETSC_REAL, &r->theta));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &r->force[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &r->force[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &r->moment));
+      PetscCall(PetscViewerHDF5PopGroup(v));
+      continue;
+    }
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     ContactOutputCall(v, VecView(F[i].coords, v));
     ContactOutputCall(v, VecView(F[i].disp, v));
@@ -274,6 +288,19 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body              b = p->bodies[i];
     const BodyErrors *e = &F[i].err;
+    if (b->rigid) { /* its motion, and the contact's force and moment on it */
+      const BodyRigid *r = b->rg;
+      fprintf(fp, "%s\n    \"%s\": {\"rigid\": true, \"dofs\": 0, \"nodes\": %d", i ? "," : "", b->name, (int)r->nn);
+      ContactJSONKeyPair(fp, ", ", "translation", r->t);
+      ContactJSONKeyReal(fp, ", ", "rotation", r->theta);
+      ContactJSONKeyPair(fp, ", ", "centre", r->centre);
+      ContactJSONKeyPair(fp, ", ", "force", r->force);
+      ContactJSONKeyReal(fp, ", ", "moment", r->moment);
+      fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
+      ContactJSONKeyReal(fp, ", ", "h", b->h);
+      fprintf(fp, "}");
+      continue;
+    }
     fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);

@@ -300,6 +300,7 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
     const PetscScalar *l;
     PetscInt           n;
 
+    if (b->rigid) continue; /* no dofs */
     PetscCall(VecGetArray(b->Xg, &a));
     for (PetscInt k = 0; k < b->nlocal; ++k) a[k] = (PetscScalar)(rstart + p->offset[i] + k);
     PetscCall(VecRestoreArray(b->Xg, &a));
@@ -330,6 +331,7 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
     PetscInt  nfree;
     PetscBool contact = PETSC_FALSE;
 
+    if (b->rigid) continue; /* its motion is held by its conditions (rigidbody.c) */
     PetscCall(BodyCountFreeRigidModes(b, &nfree));
     if (!nfree) continue;
     for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
@@ -514,7 +516,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(ProblemIsLoaded(p, &loaded));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body in a contact of a loaded scene may be held by it (anchors.c) */
     Body b = p->bodies[i];
-    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(b->mayAnchor || (p->terms[t]->couples[i] && loaded));
+    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
     PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
   }
   PetscCall(PetscLogStagePush(contactLog.setup));
@@ -637,6 +639,7 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body b = p->bodies[i];
+    if (b->rigid) continue; /* no dofs: its gradient is its force (rigidbody.c) */
     PetscCall(VecPlaceArray(b->Gg, g + p->offset[i]));
     PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
     PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
