@@ -184,6 +184,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
   if (size == 1) PetscFunctionReturn(0);
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscInt nodes, cells;
+    if (p->bodies[i]->rigid) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
     bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) + (size_t)cells * sizeof(PetscInt);
