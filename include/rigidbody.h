@@ -46,5 +46,9 @@ void           BodyRigidAddForce(Body, PetscInt n, const PetscReal X[], const Pe
 /* The conditions' reactions: each group's held components' share of the force (the whole force). */
 PetscErrorCode BodyRigidComputeReactions(Body);
 PetscErrorCode BodyRigidDestroy(Body);
+/* Whether the body's lines close on themselves (every corner on two lines): it is then the region they enclose. */
+PetscBool      BodyRigidClosed(const Body);
+/* Whether the reference point p lies inside the region the lines enclose (even-odd rule; meaningful where BodyRigidClosed). */
+PetscBool      BodyRigidInside(const Body, const PetscReal p[2]);
 /* The line elements of physical tag: their count, and (PetscFree) their indices. */
 PetscErrorCode BodyRigidGroupEdges(Body, PetscInt tag, PetscInt *n, PetscInt **edges);

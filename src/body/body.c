@@ -116,7 +116,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCall(BodyBCSetFromOptions(b, prefix, &b->bc[i]));
   }
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
-  PetscCheck(!b->rigid || !b->nload, b->comm, PETSC_ERR_SUP, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
+  PetscCheck(!b->rigid || !b->nload, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
   PetscCheck(!b->rigid || !b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s is rigid: it has no exact solution", prefix, b->name);
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
   PetscFunctionReturn(0);

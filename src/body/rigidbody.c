@@ -145,7 +145,7 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
     PetscCheck(!bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_exact: body %s is rigid: it has no exact solution", b->name, bc->group, b->name);
     for (PetscInt k = 0; k < bc->ncomp; ++k) {
       const PetscInt c = bc->comps[k];
-      PetscCheck(!bc->control[k], b->comm, PETSC_ERR_SUP, "option -%s_bc_%s_control: a force control on rigid body %s is not supported yet; give its displacement", b->name, bc->group, b->name);
+      PetscCheck(!bc->control[k], b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: a force control on rigid body %s is not supported yet; give its displacement", b->name, bc->group, b->name);
       PetscCheck(by[c] < 0 || value[c] == bc->values[k], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s give its translation in %s the values %g and %g", b->name, b->bc[by[c]].group, bc->group, c ? "y" : "x", (double)value[c], (double)bc->values[k]);
       by[c]    = i;
       value[c] = bc->values[k];
@@ -157,7 +157,7 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
       r->held[0] = PETSC_TRUE;
       continue;
     }
-    PetscCheck(by[c] >= 0, b->comm, PETSC_ERR_SUP, "body %s is rigid and no condition holds its translation in %s (-%s_bc_<group>_components): a free rigid motion is not supported yet", b->name, c ? "y" : "x", b->name);
+    PetscCheck(by[c] >= 0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and no condition holds its translation in %s (-%s_bc_<group>_components): a free rigid motion is not supported yet", b->name, c ? "y" : "x", b->name);
     r->held[c] = PETSC_TRUE;
   }
   r->t[0] = value[0]; /* at the full load until BodyRigidSetLoadFactor */
@@ -282,6 +282,42 @@ PetscErrorCode BodyRigidGroupEdges(Body b, PetscInt tag, PetscInt *n, PetscInt *
     if (r->etag[e] == tag) (*edges)[k++] = e;
   *n = k;
   PetscFunctionReturn(0);
+}
+
+PetscBool BodyRigidClosed(const Body b)
+{
+  const BodyRigid *r = b->rg;
+  PetscInt        *deg;
+  PetscBool        closed = PETSC_TRUE;
+
+  if (PetscCalloc1(r->nn, &deg)) return PETSC_FALSE;
+  for (PetscInt e = 0; e < r->ne; ++e) {
+    deg[r->enodes[3 * e]]++;
+    deg[r->enodes[3 * e + 1]]++;
+  }
+  for (PetscInt v = 0; v < r->nn; ++v) closed = (PetscBool)(closed && (deg[v] == 0 || deg[v] == 2));
+  (void)PetscFree(deg);
+  return closed;
+}
+
+/* Even-odd rule over the lines as polylines (corner, middle, corner): a
+   ray from p along +x crosses the boundary an odd number of times. */
+PetscBool BodyRigidInside(const Body b, const PetscReal p[2])
+{
+  const BodyRigid *r = b->rg;
+  PetscInt         cross = 0;
+
+  for (PetscInt e = 0; e < r->ne; ++e) {
+    const PetscInt order[3] = {r->enodes[3 * e], r->enodes[3 * e + 2], r->enodes[3 * e + 1]};
+    for (PetscInt k = 0; k < 2; ++k) {
+      const PetscReal *a = &r->X[2 * order[k]], *c = &r->X[2 * order[k + 1]];
+      if ((a[1] > p[1]) != (c[1] > p[1])) {
+        const PetscReal x = a[0] + (p[1] - a[1]) * (c[0] - a[0]) / (c[1] - a[1]);
+        if (x > p[0]) cross++;
+      }
+    }
+  }
+  return (PetscBool)(cross % 2);
 }
 
 PetscErrorCode BodyRigidDestroy(Body b)

@@ -386,15 +386,20 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
 
 /* A rigid surface's outward side, and how the body goes on at its ends.
    Its lines carry no cell to tell the body's side, so each chain of the
-   surface (edges joined end to end) is oriented along its walk, and turned
-   to face the partner surface: the side on which most of the partner's
-   nodes lie, each judged at the chain's point nearest it (a rigid
-   indenter's face towards the block it presses, a rigid plane towards the
-   body above it, a rigid hole's wall inwards, towards the pin inside it). At an end, the body continues along its other lines through
+   surface (edges joined end to end) is oriented along its walk, and then
+   turned outwards: where the body's lines close on themselves (its
+   outline: every corner on two lines), away from the region they enclose
+   (a point a millionth of an edge off each edge's middle, by the even-odd
+   rule); where they do not (a rigid plane given as one line), towards the
+   partner surface, the side on which most of the partner's nodes lie, each
+   judged at the chain's point nearest it (a partner node on the chain's
+   own line, as a flat block's top beside a flat punch's face, has no
+   vote). At an end, the body continues along its other lines through
    that node (its other curves), as an elastic body's boundary does. */
 PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const ContactSurface *M, const char pair[])
 {
   const BodyRigid *r = b->rg;
+  const PetscBool  closed = BodyRigidClosed(b);
   PetscInt        *chain, nchain = 0;
 
   PetscFunctionBeginUser;
@@ -415,23 +420,34 @@ PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const Contac
   nchain++;
   for (PetscInt c = 0; c < nchain; ++c) {
     PetscInt votes = 0;
-    for (PetscInt w = 0; w < M->nn; ++w) { /* each partner node's side of the chain, at the chain's point nearest it */
-      PetscReal best = PETSC_MAX_REAL, side = 0.0;
+    if (closed) /* a closed body: the normal at each edge's middle points out of the region */
       for (PetscInt e = 0; e < S->ne; ++e) {
+        PetscReal p[2], t[2], q[2], l;
         if (chain[e] != c) continue;
-        for (PetscInt q = 0; q < 9; ++q) {
-          PetscReal p[2], t[2], d;
-          EdgeEval(S->X, &S->enodes[3 * e], -1.0 + 0.25 * q, p, t);
-          d = PetscSqr(p[0] - M->X[2 * w]) + PetscSqr(p[1] - M->X[2 * w + 1]);
-          if (d < best) {
-            best = d;
-            side = S->esign[e] * (t[1] * (M->X[2 * w] - p[0]) - t[0] * (M->X[2 * w + 1] - p[1])); /* n . (x_w - p), n = esign (t_y, -t_x) */
+        EdgeEval(S->X, &S->enodes[3 * e], 0.0, p, t);
+        l    = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+        q[0] = p[0] + 1e-6 * S->esign[e] * t[1] / l * S->elen[e];
+        q[1] = p[1] - 1e-6 * S->esign[e] * t[0] / l * S->elen[e];
+        votes += BodyRigidInside(b, q) ? -1 : 1;
+      }
+    else
+      for (PetscInt w = 0; w < M->nn; ++w) { /* open lines: each partner node's side of the chain, at the chain's point nearest it */
+        PetscReal best = PETSC_MAX_REAL, side = 0.0;
+        for (PetscInt e = 0; e < S->ne; ++e) {
+          if (chain[e] != c) continue;
+          for (PetscInt q = 0; q < 9; ++q) {
+            PetscReal p[2], t[2], d;
+            EdgeEval(S->X, &S->enodes[3 * e], -1.0 + 0.25 * q, p, t);
+            d = PetscSqr(p[0] - M->X[2 * w]) + PetscSqr(p[1] - M->X[2 * w + 1]);
+            if (d < best) {
+              best = d;
+              side = S->esign[e] * (t[1] * (M->X[2 * w] - p[0]) - t[0] * (M->X[2 * w + 1] - p[1])); /* n . (x_w - p), n = esign (t_y, -t_x) */
+            }
           }
         }
+        votes += side > 1e-12 * best ? 1 : (side < -1e-12 * best ? -1 : 0);
       }
-      votes += side > 0 ? 1 : (side < 0 ? -1 : 0);
-    }
-    PetscCheck(votes != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pair %s: surface '%s' of rigid body %s: the partner surface lies as much on one side of it as on the other, so its outward side is not known", pair, S->group, b->name);
+    PetscCheck(votes != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pair %s: surface '%s' of rigid body %s: its lines do not close on themselves and the partner surface lies as much on one side of it as on the other, so its outward side is not known (close the body's outline in its .geo)", pair, S->group, b->name);
     if (votes < 0)
       for (PetscInt e = 0; e < S->ne; ++e)
         if (chain[e] == c) S->esign[e] = -S->esign[e];

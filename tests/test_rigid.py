@@ -1,0 +1,168 @@
+"""Rigid bodies (-<body>_rigid), first form: a body given by its curves alone,
+moved rigidly by its conditions (translation) and -<body>_rigid_rotation,
+with no dofs. The scene meshes/rigid-hertz: a rigid cylinder (R = 1) and the
+elastic block (E = 1000, nu = 0.3) pushed onto it by 0.0095, graded to a/10
+at the contact. Each figure against an independent answer: Hertz's line
+contact with E* = E / (1 - nu^2), the elastic body made stiffer (the rigid
+answer is its limit), the same relative motion given to the other body,
+a rotation of a circle about its centre, another rank count."""
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT, run_contact
+
+SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
+
+
+@pytest.fixture(scope="module")
+def rigid(tmp_path_factory):
+    """The scene as given (mortar; the elastic block is the slave)."""
+    tmp = tmp_path_factory.mktemp("rigid")
+    return run_contact(SCENE, tmp).summary
+
+
+def stiff_options(tmp_path, E):
+    """The scene with the disc elastic (a full disc clamped behind, the
+    reference scene's indenter.geo, graded alike), of modulus E."""
+    src = (ROOT / "meshes/rigid-hertz/rigid-hertz.opts").read_text().splitlines()
+    out = []
+    for line in src:
+        if line.startswith("-indenter_geo "):
+            line = f"-indenter_geo {ROOT}/meshes/hertz/indenter.geo"
+        elif line.startswith("-indenter_geo_params"):
+            line = "-indenter_geo_params R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0076,dc=1"
+        elif line.startswith("-indenter_rigid"):
+            line = f"-indenter_E {E}\n-indenter_nu 0.3"
+        elif line.startswith("-block_geo "):
+            line = f"-block_geo {ROOT}/meshes/hertz/block.geo"
+        out.append(line.replace("back", "clamp"))
+    path = Path(tmp_path) / f"stiff{E}.opts"
+    path.write_text("\n".join(out) + "\n")
+    return path
+
+
+def hertz_errors(s):
+    return s["fem_pmax"] / s["hertz_pmax"] - 1, s["fem_a_moment"] / s["hertz_a"] - 1
+
+
+@pytest.mark.parametrize("formulation", ["mortar", "gpts"])
+def test_hertz(formulation, rigid, tmp_path):
+    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 - nu^2)
+    (the block's alone: 1098.9), at a / h of 10: p_max within 1 % and the
+    second-moment half-width within 1 % (measured mortar -0.33 % and +0.41 %,
+    gpts +0.43 % and -0.36 %)."""
+    s = rigid if formulation == "mortar" else run_contact(SCENE + ["-contact_formulation", formulation, "-output", "none"], tmp_path).summary
+    assert s["E_star"] == pytest.approx(1000 / (1 - 0.3 ** 2), rel=1e-12)
+    dp, da = hertz_errors(s)
+    print(f"{formulation}: p_max {dp:+.2%}, a {da:+.2%}")
+    assert abs(dp) <= 0.01 and abs(da) <= 0.01
+
+
+def test_rigid_slave(tmp_path):
+    """The rigid surface as mortar's slave (-contact_mortar_slave first; the
+    automatic choice takes the softer body, the block): p_max within 2 % and
+    the half-width within 2 % of Hertz (measured +1.45 % and -1.41 %). A
+    rigid slave finer than its master oscillates (its nodes ask more than
+    the master's can give): at the disc's hc = 0.0038, p_max +13.9 %."""
+    s = run_contact(SCENE + ["-contact_mortar_slave", "first", "-output", "none"], tmp_path).summary
+    dp, da = hertz_errors(s)
+    print(f"rigid slave: p_max {dp:+.2%}, a {da:+.2%}")
+    assert abs(dp) <= 0.02 and abs(da) <= 0.02
+
+
+def test_stiff_limit(rigid, tmp_path):
+    """The rigid answer is the limit of the elastic disc made stiffer: at
+    E = 1e8 (1e5 times the block's) P is 1.46e-5 from the rigid one, at
+    1e10 4.7e-7, the O(1/E) of the disc's own compliance (bounds 4e-5 and
+    2e-6); p_max alike (1.28e-5, 7.3e-7). The rigid disc has no dofs: 6672
+    against 14028."""
+    for E, bound in ((1e8, 4e-5), (1e10, 2e-6)):
+        s = run_contact(["-options_file", stiff_options(tmp_path, E), "-output", "none"], tmp_path, name=f"E{E:g}").summary
+        dP = rigid["contact_force"] / s["contact_force"] - 1
+        dp = rigid["fem_pmax"] / s["fem_pmax"] - 1
+        print(f"E = {E:g}: P {dP:.2e}, p_max {dp:.2e}; dofs {rigid['dofs']} against {s['dofs']}")
+        assert abs(dP) <= bound and abs(dp) <= bound
+    assert rigid["dofs"] < s["dofs"] / 2
+
+
+def test_motion_given_to_the_rigid_body(rigid, tmp_path):
+    """The same relative motion given to the rigid disc (translated by
+    +0.0095) with the block held gives the same answer: P to the solver's
+    stop (measured 1.6e-10, bound 1e-8)."""
+    s = run_contact(SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "0.0095,0", "-output", "none"], tmp_path).summary
+    d = s["contact_force"] / rigid["contact_force"] - 1
+    print(f"P {d:.2e}; the disc's translation {s['bodies']['indenter']['translation']}")
+    assert s["bodies"]["indenter"]["translation"] == [0.0095, 0]
+    assert abs(d) <= 1e-8
+
+
+def test_rotation_about_centre(rigid, tmp_path):
+    """A circle turned about its centre is the same circle: the rigid disc
+    rotated by 0.05 rad about (-1, 0) gives the same P to the solver's stop
+    (its nodes move along the arc, which their quadratic edges follow:
+    measured 1.4e-9, bound 1e-8), and the contact's moment about the centre
+    is nil beside P R (frictionless: every normal passes through the centre;
+    measured 6.9e-10, bound 1e-8)."""
+    s = run_contact(SCENE + ["-indenter_rigid_centre", "-1,0", "-indenter_rigid_rotation", "0.05", "-output", "none"], tmp_path).summary
+    ind = s["bodies"]["indenter"]
+    d = s["contact_force"] / rigid["contact_force"] - 1
+    m = ind["moment"] / (s["contact_force"] * 1.0)
+    print(f"P {d:.2e}, moment / (P R) {m:.2e}, rotation {ind['rotation']}")
+    assert ind["rotation"] == 0.05 and ind["centre"] == [-1, 0]
+    assert abs(d) <= 1e-8
+    assert abs(m) <= 1e-8
+
+
+def test_balance(rigid):
+    """The rigid body's force is the contact's (its reaction, through the
+    condition that holds it), to round-off; and the block's support carries
+    it back to the solver's stop (the block's residual: measured 1.8e-10 of
+    P, bound 1e-9)."""
+    P = rigid["contact_force"]
+    ind = rigid["bodies"]["indenter"]
+    r_ind, r_block = rigid["reactions"]["indenter:back"], rigid["reactions"]["block:push"]
+    print(ind, r_ind, r_block)
+    assert ind["rigid"] and ind["dofs"] == 0
+    assert math.hypot(*ind["force"]) == pytest.approx(P, rel=1e-12)
+    assert r_ind == ind["force"]
+    assert abs(r_ind[0] + r_block[0]) <= 1e-9 * P and abs(r_ind[1] + r_block[1]) <= 1e-9 * P
+
+
+def test_ranks(rigid, tmp_path):
+    """2 ranks give the 1-rank answer: P and p_max to 1e-11 (measured 4.6e-13
+    and 2.8e-15)."""
+    s = run_contact(SCENE, tmp_path, ranks=2).summary
+    for k in ("contact_force", "fem_pmax"):
+        print(k, s[k] / rigid[k] - 1)
+        assert s[k] == pytest.approx(rigid[k], rel=1e-11)
+    assert s["bodies"]["indenter"]["force"][0] == pytest.approx(rigid["bodies"]["indenter"]["force"][0], rel=1e-11)
+
+
+@pytest.mark.parametrize("args,words", [
+    (["-indenter_bc_back_control", "force,displacement"], ["-indenter_bc_back_control", "rigid", "not supported"]),
+    (["-indenter_bc_back_components", "x", "-indenter_bc_back_values", "0"], ["rigid", "translation in y", "not supported"]),
+    (["-indenter_rigid_rotation", "nan"], ["-indenter_rigid_rotation", "finite"]),
+    (["-indenter_rigid_centre", "1"], ["-indenter_rigid_centre", "two numbers"]),
+])
+def test_refused(args, words, tmp_path):
+    """What a rigid body cannot do yet, or a bad value: one line naming it,
+    status 1, no output."""
+    r = run_contact(SCENE + args, tmp_path, check=False)
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    assert r.returncode == 1 and len(lines) == 1, r.stderr[-2000:]
+    for w in words:
+        assert w in lines[0], lines[0]
+    assert not r.summary_path.exists() and not r.output_path.exists()
+
+
+def test_no_curves(tmp_path):
+    """A rigid body's mesh without line elements: one line naming the file."""
+    geo = Path(tmp_path) / "dot.geo"
+    geo.write_text("Point(1) = {xc + R + 0 * yc * xcontact * hc, 0, 0, h};\nPhysical Point(\"back\") = {1};\nMesh.ElementOrder = 2;\n")
+    r = run_contact(SCENE + ["-indenter_geo", geo], tmp_path, check=False)
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    assert r.returncode == 1 and len(lines) == 1, r.stderr[-2000:]
+    assert "line" in lines[0] and ".msh" in lines[0], lines[0]
