@@ -7,6 +7,7 @@ quoting them, generated from committed results, and the README's picture.
     python3 scripts/readme_figures.py --measure scenes --measure solver --measure lmvm [--update]
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
+    python3 scripts/readme_figures.py --measure rigid [--update]
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
 
@@ -33,6 +34,8 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
+- rigid: bench/rigid/results.json (written by --measure rigid: rigid_study.py's
+  scenes, each run once).
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
@@ -503,6 +506,17 @@ def render_axisymmetric():
     return "\n".join(out) + "\n"
 
 
+def measure_rigid():
+    """The rigid bodies' scenes against their references (rigid_study.py)."""
+    import rigid_study
+    save("rigid", rigid_study.measure())
+
+
+def render_rigid():
+    import rigid_study
+    return rigid_study.table(load("rigid"))
+
+
 def and_list(items):
     """'a', 'a and b', 'a, b and c'."""
     return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else "".join(items)
@@ -794,7 +808,7 @@ def render_sweep_half():
             f"{half[0]['solve_median']:.3g} s against {full[0]['solve_median']:.3g} s")
 
 
-RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations,
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
@@ -904,7 +918,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "claims"], action="append",
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "claims"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -917,6 +931,8 @@ def main():
         measure_picture()
     if "axisymmetric" in args.measure:
         measure_axisymmetric()
+    if "rigid" in args.measure:
+        measure_rigid()
     if "claims" in args.measure:
         measure_claims()
     texts = {}

@@ -21,7 +21,8 @@
    The force. The contact terms add their gradient dPi/du at the surface
    nodes (summed over ranks, so the same on every rank); for a rigid body it
    goes into the body's force F = sum g and its moment about the current
-   reference point, M = sum (x - c - t) x g = dPi/dtheta. F is the reaction
+   reference point, M = sum (x - c - t) x g = dPi/dtheta (in r-z the axial
+   force alone: the radial parts cancel round each ring). F is the reaction
    of the conditions that hold the translation, as the reaction of an
    elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
 #include "rigidbody.h"
@@ -245,8 +246,9 @@ void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal 
     BodyRigidDisplacement(b, &X[2 * i], u);
     d[0] = X[2 * i] + u[0] - r->centre[0] - r->t[0];
     d[1] = X[2 * i + 1] + u[1] - r->centre[1] - r->t[1];
-    r->force[0] += g[2 * i];
     r->force[1] += g[2 * i + 1];
+    if (b->axisym) continue; /* r-z: the radial parts cancel round the ring, and the body turns about no axis */
+    r->force[0] += g[2 * i];
     r->moment += d[0] * g[2 * i + 1] - d[1] * g[2 * i];
   }
 }

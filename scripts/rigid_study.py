@@ -1,0 +1,107 @@
+"""Rigid bodies against their independent answers: the scenes rigid-hertz
+(Hertz with E* = E / (1 - nu^2), and the disc made elastic and 1e5 times
+stiffer), rigid-punch (Sadowsky's pressure, either slave) and rigid-sphere
+(Hertz's point contact in r-z). Used by tests/test_rigid.py and by
+readme_figures.py --measure rigid, which writes bench/rigid/results.json and
+the README's table from it.
+
+    python3 scripts/rigid_study.py        # measures and prints the table
+"""
+import os
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+HERTZ = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
+PUNCH = ["-options_file", "meshes/rigid-punch/rigid-punch.opts"]
+SPHERE = ["-options_file", "meshes/rigid-sphere/rigid-sphere.opts"]
+B = 0.25   # the punch's half-width
+
+
+def stiff_options(tmp, E):
+    """An options file of the rigid-hertz scene with the disc elastic (the
+    reference scene's full disc, clamped behind, graded alike) of modulus E."""
+    out = []
+    with open(os.path.join(ROOT, "meshes/rigid-hertz/rigid-hertz.opts")) as f:
+        for line in f.read().splitlines():
+            if line.startswith("-indenter_geo "):
+                line = f"-indenter_geo {ROOT}/meshes/hertz/indenter.geo"
+            elif line.startswith("-indenter_geo_params"):
+                line = "-indenter_geo_params R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0076,dc=1"
+            elif line.startswith("-indenter_rigid"):
+                line = f"-indenter_E {E}\n-indenter_nu 0.3"
+            elif line.startswith("-block_geo "):
+                line = f"-block_geo {ROOT}/meshes/hertz/block.geo"
+            out.append(line.replace("back", "clamp"))
+    path = os.path.join(str(tmp), f"stiff{E:g}.opts")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+    return path
+
+
+def sadowsky_l2(h5, P):
+    """(slave surface, relative L2 distance of its nodal pressure from
+    Sadowsky's p = P / (pi sqrt(b^2 - x^2)) over |x| < 0.6 b, node weights)."""
+    for name in ("punch_contact", "block_contact"):
+        g = h5[f"contact/tool/{name}"]
+        if not g.attrs["slave"]:
+            continue
+        X, p, w = g["node_X"][...], g["node_pressure"][...], g["node_weight"][...]
+        m = np.abs(X[:, 0]) < 0.6 * B
+        ps = P / (np.pi * np.sqrt(B * B - X[m, 0] ** 2))
+        return name, float(np.sqrt(np.sum(w[m] * (p[m] - ps) ** 2) / np.sum(w[m] * ps ** 2)))
+    raise ValueError("no slave surface")
+
+
+def hertz_row(label, s):
+    return dict(scene=label, dofs=s["dofs"], iterations=s["iterations"], solve=s["time"]["solve"], P=s["contact_force"],
+                fem_pmax=s["fem_pmax"], hertz_pmax=s["hertz_pmax"], fem_a=s["fem_a_moment"], hertz_a=s["hertz_a"])
+
+
+def measure():
+    """The rows of the table: each run once (the times are the solve's, one run: indicative)."""
+    import h5py
+    from contactrun import run_checked
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        rigid = run_checked(HERTZ, tmp, "r").summary
+        rows.append(hertz_row("rigid-hertz, mortar (the block as slave)", rigid))
+        rows.append(hertz_row("rigid-hertz, gpts", run_checked(HERTZ + ["-contact_formulation", "gpts"], tmp, "g").summary))
+        rows.append(hertz_row("rigid-hertz, mortar, the rigid disc as slave",
+                              run_checked(HERTZ + ["-contact_mortar_slave", "first"], tmp, "f").summary))
+        for E in (1e8, 1e10):
+            s = run_checked(["-options_file", stiff_options(tmp, E)], tmp, f"E{E:g}").summary
+            row = hertz_row(f"the disc elastic, E = {E:g}", s)
+            row["dP"] = rigid["contact_force"] / s["contact_force"] - 1
+            rows.append(row)
+        rows.append(hertz_row("rigid-sphere (r-z)", run_checked(SPHERE, tmp, "s").summary))
+        for slave in ("auto", "second"):
+            r = run_checked(PUNCH + ["-contact_mortar_slave", slave], tmp, f"p{slave}")
+            P = r.summary["contact"]["tool"]["P"]
+            with h5py.File(r.h5) as h5:
+                name, err = sadowsky_l2(h5, P)
+            rows.append(dict(scene=f"rigid-punch, {name.split('_')[0]} as slave", dofs=r.summary["dofs"],
+                             iterations=r.summary["iterations"], solve=r.summary["time"]["solve"], P=P, sadowsky=err))
+    return rows
+
+
+def table(rows):
+    out = ["| run | dofs | Newton iterations | solve | P | against its reference |", "|---|---|---|---|---|---|"]
+    rigidP = rows[0]["P"]
+    for r in rows:
+        if "sadowsky" in r:
+            ref = f"Sadowsky's pressure, L2 over \\|x\\| < 0.6 b: {100 * r['sadowsky']:.2f} %"
+        elif "dP" in r:
+            ref = f"the rigid disc's P {rigidP:.6g}: {r['dP']:+.1e}"
+        else:
+            ref = (f"Hertz: p_max {100 * (r['fem_pmax'] / r['hertz_pmax'] - 1):+.2f} %, second-moment a "
+                   f"{100 * (r['fem_a'] / r['hertz_a'] - 1):+.2f} %")
+        out.append(f"| {r['scene']} | {r['dofs']:,} | {r['iterations']} | {r['solve']:.2f} s | {r['P']:.6g} | {ref} |")
+    return "\n".join(out) + "\n"
+
+
+if __name__ == "__main__":
+    import sys
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    print(table(measure()))
