@@ -34,8 +34,10 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
-- rigid: bench/rigid/results.json (written by --measure rigid: rigid_study.py's
-  scenes, each run once).
+- rigid, rigid-adequacy: bench/rigid/results.json (written by --measure rigid:
+  rigid_study.py's scenes, each run once but the timed pairs, alternated 3
+  times; and the reference scene with the disc E2/E1 times stiffer against
+  the disc rigid).
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
@@ -509,12 +511,17 @@ def render_axisymmetric():
 def measure_rigid():
     """The rigid bodies' scenes against their references (rigid_study.py)."""
     import rigid_study
-    save("rigid", rigid_study.measure())
+    save("rigid", {"scenes": rigid_study.measure(), "adequacy": rigid_study.measure_adequacy()})
 
 
 def render_rigid():
     import rigid_study
-    return rigid_study.table(load("rigid"))
+    return rigid_study.table(load("rigid")["scenes"])
+
+
+def render_rigid_adequacy():
+    import rigid_study
+    return rigid_study.adequacy_table(load("rigid")["adequacy"])
 
 
 def and_list(items):
@@ -808,7 +815,7 @@ def render_sweep_half():
             f"{half[0]['solve_median']:.3g} s against {full[0]['solve_median']:.3g} s")
 
 
-RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "formulations": render_formulations,
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "rigid-adequacy": render_rigid_adequacy, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
