@@ -69,6 +69,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
   if (b->rigid || help) PetscCall(BodyRigidSetFromOptions(b, prefix));
   if (b->rigid && !help) { /* E and nu are not asked for; a rigid body has no cells to load */
+    PetscCheck(!setE && !setNu, b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: body %s is rigid (-%srigid): it has no elastic constants", prefix, setE ? "E" : "nu", b->name, prefix);
     setE = setNu = PETSC_TRUE;
     b->E         = PETSC_INFINITY;
     b->nu        = 0.0;
