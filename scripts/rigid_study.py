@@ -21,49 +21,43 @@ SSNV104_RIGID = ["-options_file", "meshes/ssnv104-rigid/ssnv104-rigid.opts"]
 B = 0.25   # the punch's half-width
 
 
-def stiff_options(tmp, E):
-    """An options file of the rigid-hertz scene with the disc elastic (the
-    reference scene's full disc, clamped behind, graded alike) of modulus E."""
+def rewrite_options(scene, tmp, name, swaps, rename):
+    """The scene's options file written to tmp/name with each line that starts
+    with a key of swaps replaced by its value (None: dropped), the block's
+    geometry path made absolute, and the group names renamed (old, new)."""
     out = []
-    with open(os.path.join(ROOT, "meshes/rigid-hertz/rigid-hertz.opts")) as f:
+    with open(os.path.join(ROOT, scene)) as f:
         for line in f.read().splitlines():
-            if line.startswith("-indenter_geo "):
-                line = f"-indenter_geo {ROOT}/meshes/hertz/indenter.geo"
-            elif line.startswith("-indenter_geo_params"):
-                line = "-indenter_geo_params R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0076,dc=1"
-            elif line.startswith("-indenter_rigid"):
-                line = f"-indenter_E {E}\n-indenter_nu 0.3"
-            elif line.startswith("-block_geo "):
+            key = next((k for k in swaps if line.startswith(k)), None)
+            if key is not None and swaps[key] is None:
+                continue
+            line = swaps[key] if key is not None else line
+            if line.startswith("-block_geo "):
                 line = f"-block_geo {ROOT}/meshes/hertz/block.geo"
-            out.append(line.replace("back", "clamp"))
-    path = os.path.join(str(tmp), f"stiff{E:g}.opts")
+            out.append(line.replace(*rename))
+    path = os.path.join(str(tmp), name)
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
     return path
+
+
+def stiff_options(tmp, E):
+    """An options file of the rigid-hertz scene with the disc elastic (the
+    reference scene's full disc, clamped behind, graded alike) of modulus E."""
+    return rewrite_options("meshes/rigid-hertz/rigid-hertz.opts", tmp, f"stiff{E:g}.opts",
+                           {"-indenter_geo ": f"-indenter_geo {ROOT}/meshes/hertz/indenter.geo",
+                            "-indenter_geo_params": "-indenter_geo_params R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0076,dc=1",
+                            "-indenter_rigid": f"-indenter_E {E}\n-indenter_nu 0.3"}, ("back", "clamp"))
 
 
 def rigid_reference_options(tmp):
     """An options file of the reference scene (meshes/hertz) with the disc
     rigid: its circle alone (rigid-hertz's indenter.geo, the same arcs and
     sizes as the elastic disc's boundary), held behind."""
-    out = []
-    with open(os.path.join(ROOT, "meshes/hertz/hertz.opts")) as f:
-        for line in f.read().splitlines():
-            if line.startswith("-indenter_geo "):
-                line = f"-indenter_geo {ROOT}/meshes/rigid-hertz/indenter.geo"
-            elif line.startswith("-indenter_geo_params"):
-                line = "-indenter_geo_params R=1,xc=-1,yc=0,xcontact=-0.5"
-            elif line.startswith("-indenter_E"):
-                line = "-indenter_rigid"
-            elif line.startswith("-indenter_nu"):
-                continue
-            elif line.startswith("-block_geo "):
-                line = f"-block_geo {ROOT}/meshes/hertz/block.geo"
-            out.append(line.replace("clamp", "back"))
-    path = os.path.join(str(tmp), "hertz-rigid.opts")
-    with open(path, "w") as f:
-        f.write("\n".join(out) + "\n")
-    return path
+    return rewrite_options("meshes/hertz/hertz.opts", tmp, "hertz-rigid.opts",
+                           {"-indenter_geo ": f"-indenter_geo {ROOT}/meshes/rigid-hertz/indenter.geo",
+                            "-indenter_geo_params": "-indenter_geo_params R=1,xc=-1,yc=0,xcontact=-0.5",
+                            "-indenter_E": "-indenter_rigid", "-indenter_nu": None}, ("clamp", "back"))
 
 
 ADEQUACY_RATIOS = (10, 100, 1000)
