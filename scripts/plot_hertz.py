@@ -335,6 +335,13 @@ def zoom_window(f, zoom, scale, fits):
             centre[1] - size / 2, centre[1] + size / 2), None
 
 
+def rigid_outline(g):
+    """A rigid body's lines as polylines (corner, middle, corner) at their
+    current positions: its group's line_x and lines."""
+    x, lines = g["line_x"][()].reshape(-1, 2), g["lines"][()].astype(int).reshape(-1, 3)
+    return [x[[c[0], c[2], c[1]]] for c in lines]
+
+
 def rigid_surface_lines(f, body):
     """The contact surfaces of rigid body ``body`` as polylines (corner,
     middle, corner of each quadratic edge) at their current positions."""
@@ -356,7 +363,7 @@ def plot_field(f, scale, ax, label, units, zoom=None):
     for name in bodies:
         g = bodies[name]
         if attr(g, "rigid", 0):
-            rigid_lines += rigid_surface_lines(f, name)
+            rigid_lines += rigid_outline(g) if "lines" in g else rigid_surface_lines(f, name)
             continue
         cell_type = attr(g, "cell_type")
         topo = g["topology"][()].astype(int)

@@ -18,10 +18,15 @@ SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
 
 
 @pytest.fixture(scope="module")
-def rigid(tmp_path_factory):
+def rigid_run(tmp_path_factory):
     """The scene as given (mortar; the elastic block is the slave)."""
     tmp = tmp_path_factory.mktemp("rigid")
-    return run_contact(SCENE, tmp).summary
+    return run_contact(SCENE, tmp)
+
+
+@pytest.fixture(scope="module")
+def rigid(rigid_run):
+    return rigid_run.summary
 
 
 def hertz_errors(s):
@@ -200,3 +205,25 @@ def test_ssnv104_rigid_plane(tmp_path):
     assert 0 < dP <= 2e-4
     assert abs(dp) <= 3e-4 and abs(da) <= 3e-4
     assert r["dofs"] < 0.6 * e["dofs"]
+
+
+def test_output(rigid_run, tmp_path):
+    """The HDF5 holds the rigid body's motion, force and outline (its 204
+    nodes at their current positions, its lines), no fields; the report
+    prints its line; the plots draw it by its outline."""
+    import subprocess
+    import sys
+    from conftest import ROOT
+    with rigid_run.h5() as h5:
+        g = h5["bodies/indenter"]
+        assert g.attrs["rigid"] == 1 and "displacement" not in g
+        assert g.attrs["force_x"] == pytest.approx(rigid_run.summary["bodies"]["indenter"]["force"][0], rel=1e-15)
+        x, lines = g["line_x"][()].reshape(-1, 2), g["lines"][()].reshape(-1, 3)
+        assert len(x) == rigid_run.summary["bodies"]["indenter"]["nodes"] == 204
+        r = ((x[:, 0] + 1) ** 2 + x[:, 1] ** 2) ** 0.5   # the circle, held: radius 1 about (-1, 0)
+        assert abs(r - 1).max() <= 1e-12 and lines.max() < len(x)
+    assert "rigid body indenter: moved (0., 0.)" in rigid_run.stdout
+    for extra in ([], ["--field"]):
+        p = subprocess.run([sys.executable, "scripts/plot_hertz.py", str(rigid_run.output_path), *extra, "-o",
+                            str(tmp_path / f"p{len(extra)}.png")], cwd=ROOT, capture_output=True, text=True, timeout=120)
+        assert p.returncode == 0, p.stderr

@@ -103,6 +103,45 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, Pets
   PetscFunctionReturn(0);
 }
 
+/* A rigid body's outline: its lines' nodes at their current positions
+   (line_x, rank 0's) and each line's nodes (lines: the ends, then the
+   middle), for the plots. */
+static PetscErrorCode WriteRigidOutline(Body b, PetscViewer v)
+{
+  const BodyRigid *r = b->rg;
+  PetscMPIInt      rank;
+  Vec              x;
+  IS               lines;
+  PetscScalar     *a;
+  PetscInt         nn, ne;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  nn = rank ? 0 : r->nn;
+  ne = rank ? 0 : r->ne;
+  PetscCall(VecCreate(b->comm, &x));
+  PetscCall(VecSetSizes(x, 2 * nn, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(x, 2));
+  PetscCall(VecSetType(x, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)x, "line_x"));
+  PetscCall(VecGetArray(x, &a));
+  for (PetscInt i = 0; i < nn; ++i) {
+    PetscReal u[2];
+    BodyRigidDisplacement(b, &r->X[2 * i], u);
+    a[2 * i]     = r->X[2 * i] + u[0];
+    a[2 * i + 1] = r->X[2 * i + 1] + u[1];
+  }
+  PetscCall(VecRestoreArray(x, &a));
+  ContactOutputCall(v, VecView(x, v));
+  PetscCall(VecDestroy(&x));
+  PetscCall(ISCreateGeneral(b->comm, 3 * ne, r->enodes, PETSC_COPY_VALUES, &lines));
+  PetscCall(ISSetBlockSize(lines, 3));
+  PetscCall(PetscObjectSetName((PetscObject)lines, "lines"));
+  ContactOutputCall(v, ISView(lines, v));
+  PetscCall(ISDestroy(&lines));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNodalFields F[], const char runId[], PetscViewer v)
 {
   char       *opts, version[256];
@@ -123,6 +162,7 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &r->force[0]));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &r->force[1]));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &r->moment));
+      PetscCall(WriteRigidOutline(p->bodies[i], v));
       PetscCall(PetscViewerHDF5PopGroup(v));
       continue;
     }
