@@ -107,11 +107,12 @@ static PetscErrorCode BorderMatMult(Mat M, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
-/* The controls' stiffness through the scene, every entry to round-off
-   (-info; the tests compare the two paths with it). */
+/* The controls' stiffness through the scene and their own, every entry of S
+   and the diagonal of D to round-off (-info; the tests compare the two ways
+   of eliminating the border with it). */
 static PetscErrorCode BorderInfoS(BorderCtx *c)
 {
-  char   buf[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS * 26 + 8];
+  char   buf[CONTACT_MAX_CONTROLS * (CONTACT_MAX_CONTROLS + 1) * 26 + 16];
   size_t len = 0;
 
   PetscFunctionBeginUser;
@@ -120,7 +121,12 @@ static PetscErrorCode BorderInfoS(BorderCtx *c)
     PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s%.17g", k ? (k % c->m ? " " : "; ") : "", (double)c->S[k]));
     PetscCall(PetscStrlen(buf, &len));
   }
-  PetscCall(PetscInfo(NULL, "force control: the controls' stiffness through the scene S = [%s] (own D_00 = %g)\n", buf, (double)c->D[0]));
+  PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "], own D_kk = ["));
+  for (PetscInt k = 0; k < c->m; ++k) {
+    PetscCall(PetscStrlen(buf, &len));
+    PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s%.17g", k ? " " : "", (double)c->D[k * c->m + k]));
+  }
+  PetscCall(PetscInfo(NULL, "force control: the controls' stiffness through the scene S = [%s]\n", buf));
   PetscFunctionReturn(0);
 }
 
@@ -138,7 +144,6 @@ static PetscErrorCode BorderChoosePath(BorderCtx *c)
   c->asked = PETSC_TRUE;
   if (c->solves) PetscFunctionReturn(0);
   PetscCall(KSPGetPC(c->kin, &pc));
-  PetscCall(KSPSetUp(c->kin));
   PetscCall(ContactBorderPCSetColumns(pc, c->m, c->B, &has));
   if (has) c->fast = pc;
   PetscCall(PetscInfo(NULL, "force control: the border eliminated %s\n", has ? "by the PC of the bodies' step from the surfaces (one solve a step)" : "by m solves of the bodies' step a Hessian"));
