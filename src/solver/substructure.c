@@ -48,7 +48,31 @@
    sparse work of a step is one forward and one backward substitution per
    subdomain, in parallel. MUMPS is called directly (dmumps_c): PETSc 3.18
    does not expose its condensation and expansion phases, and through
-   MatSolve a step would cost two whole subdomain solves. */
+   MatSolve a step would cost two whole subdomain solves.
+
+   The border of coupled force control (forceborder.c: H bordered by m
+   constant columns B_k, B = K_fc 1) needs B^T H^-1 B at every Hessian and
+   B^T H^-1 r_u and H^-1 (r_u - B dU) at every step. Eliminating I, then G,
+   from a symmetric H gives for any a, b
+
+       a^T H^-1 b = a_I^T K_II^-1 b_I + y(a)^T y(b) + t(a)^T (S_K + C_cc)^-1 t(b),
+
+   with y = L_G^-1 g_G and t = g_c - W^T y the right side condensed onto
+   the surfaces (step 2). Of B_k's, only the last term depends on C: so
+   once (SubBorderSetColumns, m condensations and expansions with z_B = 0)
+   y_k, t_k, v_k = S_K^-1 t_k, X_k = K_II^-1 B_k,I (zero on B) and
+   Q_lk = B_l^T X_k + y_l^T y_k are kept, and per Hessian
+   (SubBorderGetCoupling) Zc_k = (S_K + C_cc)^-1 t_k is v_k corrected by the
+   capacitance solve (nA^2 + nA nc each) and B_l^T H^-1 B_k = Q_lk +
+   t_l^T Zc_k: no sparse work at all. Per step (SubBorderCondense) r_u is
+   condensed and its surface solve w_c made, which gives B_k^T H^-1 r_u =
+   X_k^T r_u + y_k^T y(r_u) + t_k^T w_c; and once dU is known
+   (SubBorderExpand), by linearity the boundary of H^-1 (r_u - B dU) solves
+   with y(r_u) - sum dU_k y_k and z_c = w_c - sum dU_k Zc_k, and its interior
+   is K_II^-1 (r_I - K_IB z_B) - sum dU_k X_k: r_u's own expansion less the
+   kept X_k. One condensation and one expansion a step, what one solve of H
+   costs, where eliminating by m solves cost m + 1. On several ranks X_k^T
+   r_u is one more sum over ranks of m numbers. */
 #include "substructure.h"
 #include <petscblaslapack.h>
 #include <dmumps_c.h>
