@@ -11,7 +11,6 @@ markdown table results/force_border.md.
     python3 scripts/force_border_bench.py [--repeats 3] [--scenes roller-force,...] [--ranks 1]
 """
 import argparse
-import json
 import os
 import sys
 import tempfile
@@ -24,7 +23,7 @@ HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
 SCENES = {
     "roller-force": ("the roller pushed by a force of 1000 (its shipped options)", ROLLER),
     "roller-pressure": ("the roller pushed by a pressure of 100 (the upper race held in x alone)",
-                        ROLLER + ["-upper_bc_back_components", "x", "-upper_bc_back_values", "0", "-upper_load", "back",
+                        ROLLER + ["-upper_bc_back_components", "x", "-upper_bc_back_control", "displacement", "-upper_bc_back_values", "0", "-upper_load", "back",
                                   "-upper_load_back_pressure", "100"]),
     "held-block": ("the reference scene's block held by contact, pressed by 27.5 (tests/test_held_by_contact.py)",
                    HERTZ + ["-block_bc_push_components", "y", "-block_bc_push_values", "0", "-block_load", "push",
@@ -88,9 +87,6 @@ def main():
                    "(-force_control_border_solves); scripts/force_border_bench.py",
            "repeats": a.repeats, "git": contactrun.git_info(os.path.dirname(a.out)), "machine": contactrun.machine_info(),
            "rows": rows}
-    os.makedirs(os.path.dirname(a.out), exist_ok=True)
-    with open(a.out, "w") as fp:
-        json.dump(res, fp, indent=1)
     lines = ["Coupled force control's border eliminated from the contact surfaces (the default) against m solves of the "
              f"bodies' Hessian per Hessian (-force_control_border_solves) (scripts/force_border_bench.py; {res['git']}). "
              f"Medians of {a.repeats} interleaved runs, -log_view's TaoSolve and ForceBorderSetUp; m: the controls, "
@@ -104,11 +100,7 @@ def main():
         lines.append(f"| {r['scene']} | {r['ranks']} | {r['dofs']:,} | {r['controls']} | {its} | {s['tao_solve']:.2f}, "
                      f"{f['tao_solve']:.2f} | {r['speedup']:.2f} | {s['border_setup']:.2f}, {f['border_setup']:.2f} | "
                      f"{r['contact_force_rel']:.1e} | {r['displacement_diff']:.1e} | {r['load_average']:.1f} |")
-    md = os.path.splitext(a.out)[0] + ".md"
-    with open(md, "w") as fp:
-        fp.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
-    print(f"Wrote {a.out} and {md}")
+    contactrun.write_results(a.out, res, lines)
 
 
 if __name__ == "__main__":

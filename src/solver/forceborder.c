@@ -125,10 +125,13 @@ static PetscErrorCode BorderMatMult(Mat M, Vec x, Vec y)
    of eliminating the border with it). */
 static PetscErrorCode BorderInfoS(BorderCtx *c)
 {
-  char   buf[CONTACT_MAX_CONTROLS * (CONTACT_MAX_CONTROLS + 1) * 26 + 16];
-  size_t len = 0;
+  char      buf[CONTACT_MAX_CONTROLS * (CONTACT_MAX_CONTROLS + 1) * 26 + 16];
+  size_t    len = 0;
+  PetscBool on;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscInfoEnabled(PETSC_SMALLEST_CLASSID, &on)); /* PetscInfo(NULL, ...): the class "sys" */
+  if (!on) PetscFunctionReturn(0);
   buf[0] = 0;
   for (PetscInt k = 0; k < c->m * c->m; ++k) {
     PetscCall(PetscSNPrintf(buf + len, sizeof(buf) - len, "%s%.17g", k ? (k % c->m ? " " : "; ") : "", (double)c->S[k]));
