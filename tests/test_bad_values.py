@@ -51,7 +51,7 @@ DOMAINS = {
     "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
     "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",), "accuracy_warm_start": ("bool",),
     "force_control_max_it": ("int", 1, False), "force_control_rtol": ("fraction",),
-    "force_control_type": ("choice",), "force_control_step": REAL_POS,
+    "force_control_type": ("choice",), "force_control_step": REAL_POS, "force_control_border_solves": ("bool",),
     # a list of choices and lists of group names: their own tests (test_force_control.py, test_loads.py)
     "indenter_bc_clamp_control": ("name",), "block_bc_push_control": ("name",),
     "indenter_load": ("name",), "block_load": ("name",),

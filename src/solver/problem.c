@@ -173,6 +173,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
   PetscCall(PetscOptionsReal("-force_control_rtol", "Force control: every controlled group's reaction is its force to this relative tolerance at the end (coupled: where given; else the solve's gradient test)", NULL, p->opt.controlRtol, &p->opt.controlRtol, &p->opt.controlRtolSet));
   PetscCall(PetscOptionsReal("-force_control_step", "Coupled force control: the most a Newton step moves a controlled group, relative to its body's size", NULL, p->opt.controlStep, &p->opt.controlStep, NULL));
+  PetscCall(PetscOptionsBool("-force_control_border_solves", "Coupled force control: eliminate the controls by m solves of the bodies' Hessian per Hessian, even where the step's preconditioner (the substructuring) does it from the contact surfaces with one solve a step", NULL, p->opt.controlBorderSolves, &p->opt.controlBorderSolves, NULL));
   PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->opt.hessianSwitch, &p->opt.hessianSwitch, NULL));
   PetscOptionsEnd();
   PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", p->opt.meshDir, sizeof(p->opt.meshDir), NULL, 0)); /* relative to the options file that names it */
