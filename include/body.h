@@ -29,6 +29,9 @@ PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
+/* The tangent stiffness at the body's local vector Xl, added into H (l2b
+   indices): the stiffness at rest for a material of constant tangent. */
+PetscErrorCode BodyAssembleTangent(Body, Vec Xl, Mat H);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 /* A body's errors against its exact solution, if any (zero without one), with
    the exact solution's norms: L2 of u, energy norm, L2 of the stress. */

@@ -2,7 +2,9 @@
    (coordinates, Tri6/Quad9 connectivity in XDMF node order), displacement,
    and the stress (xx, yy, zz, xy; in axisymmetry rr, zz, thth, rz: the
    third the hoop stress) and von Mises stress recovered at the nodes
-   by averaging each cell's stress there over the cells around the node. */
+   by averaging each cell's stress there over the cells around the node.
+   The stress is the material's Cauchy stress (material.h): of the deformed
+   configuration, attached to each node's reference position. */
 #include <petscsf.h>
 #include "body.h"
 
@@ -43,7 +45,7 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
       u[k][1] = PetscRealPart(ua[dof[k] + 1]);
     }
     for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], e3 = 0.0;
+      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], s33, e3 = 0.0;
       PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
       (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
       for (PetscInt q = 0; q < nb; ++q) {
@@ -53,10 +55,10 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
         gu[3] += u[q][1] * dNdx[2 * q + 1];
       }
       if (b->axisym) e3 = ElasticityHoopStrain(u[a][0], gu[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
-      ElasticityStress(b->param, gu, e3, sig);
+      b->mat->cauchy(b->param, gu, e3, sig, &s33);
       acc[0] += sig[0];
       acc[1] += sig[3];
-      acc[2] += ElasticityStress33(b->param, gu, e3);
+      acc[2] += s33;
       acc[3] += sig[1];
       acc[4] += 1.0;
     }
@@ -108,10 +110,9 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
         for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
       }
       if (b->axisym) e3 = ElasticityHoopStrain(ur, gu[0], b->xq[(c * nq + iq) * 2]);
-      ElasticityStress(b->param, gu, e3, sig);
+      b->mat->cauchy(b->param, gu, e3, sig, &h[2]);
       h[0] = sig[0];
       h[1] = sig[3];
-      h[2] = ElasticityStress33(b->param, gu, e3);
       h[3] = sig[1];
       e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
     }

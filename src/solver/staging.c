@@ -19,13 +19,26 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
   PetscFunctionReturn(0);
 }
 
+/* Whether a body's material can invert (neohookean): its energy is +inf
+   where an element does, which TAO refuses at a solve's first iterate. */
+static PetscBool ProblemMayInvert(Problem p)
+{
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (!p->bodies[i]->mat->constantTangent) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 /* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
    rest, where a solve from rest starts and the last stage stops relative to;
-   the energy evaluation is not counted. */
+   the energy evaluation is not counted. Where the full load put on at rest
+   inverts an element (a neohookean body), the gradient there has no value:
+   g0 is then the gradient at load 1e-6 divided by 1e-6, its limit at small
+   load, which is the linear body's g0. */
 static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
 {
-  PetscReal f;
-  Vec       X;
+  const PetscReal small = 1e-6;
+  PetscReal       f;
+  Vec             X;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(p->X, &X));
@@ -33,7 +46,36 @@ static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
   PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
   p->res.nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, g0));
+  if (PetscIsInfReal(f)) {
+    PetscCall(ProblemSetStage(p, small, 1.0));
+    PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
+    p->res.nEnergyEvals--;
+    PetscCall(VecNorm(p->G, NORM_2, g0));
+    *g0 /= small;
+  }
   PetscCall(VecDestroy(&X));
+  PetscFunctionReturn(0);
+}
+
+/* A stage's TAO solve, unless its first iterate inverts an element (a
+   neohookean body given the load's Dirichlet values at once, its inside
+   still where the last load left it): TAO refuses an infinite energy at its
+   start, so the stage stops as at a NaN, and the load is cut back. */
+static PetscErrorCode ProblemStageSolve(Problem p, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal f;
+
+  PetscFunctionBeginUser;
+  if (ProblemMayInvert(p)) {
+    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+    if (PetscIsInfReal(f)) {
+      PetscCall(PetscInfo(p->tao, "the stage's first iterate inverts an element: stopped as at a NaN\n"));
+      *its    = 0;
+      *reason = TAO_DIVERGED_NAN;
+      PetscFunctionReturn(0);
+    }
+  }
+  PetscCall(ProblemTaoSolve(p, its, reason));
   PetscFunctionReturn(0);
 }
 
@@ -115,7 +157,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     }
     if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
-    PetscCall(ProblemTaoSolve(p, &n, reason));
+    PetscCall(ProblemStageSolve(p, &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
     *its += n;
     p->res.stagesDone++;
@@ -155,7 +197,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
       PetscCall(VecCopy(p->X0, p->X));
       PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     }
-    PetscCall(ProblemTaoSolve(p, its, reason));
+    PetscCall(ProblemStageSolve(p, its, reason));
     p->res.stagesDone = 1;
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
