@@ -27,6 +27,9 @@ PetscErrorCode BodySetLoadFactor(Body, PetscReal);
    the value U (a force-controlled component's displacement). */
 PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
+/* Collective: how many energy evaluations found the body inverted (J <= 0
+   at a quadrature point: +inf), and where one did (reference x, y). */
+PetscErrorCode BodyGetInversions(Body, PetscInt *n, PetscReal xy[2]);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
 /* The tangent stiffness at the body's local vector Xl, added into H (l2b

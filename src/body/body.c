@@ -505,8 +505,27 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecRestoreArray(Gl, &g));
   PetscCall(PetscLogFlops(b->ncells * nq * (nb * 16.0 + 30.0)));
   PetscCall(PetscLogEventEnd(contactLog.elasEnergyGrad, 0, 0, 0, 0));
-  if (inverted) b->inverted++;
+  if (inverted) {
+    b->inverted++;
+    PetscCall(PetscInfo(NULL, "body %s: J <= 0 at (%g, %g): energy +inf\n", b->name, (double)b->invertedAt[0], (double)b->invertedAt[1]));
+  }
   *energy = inverted ? (PetscReal)INFINITY : e;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyGetInversions(Body b, PetscInt *n, PetscReal xy[2])
+{
+  PetscMPIInt rank, size, first;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCall(MPIU_Allreduce(&b->inverted, n, 1, MPIU_INT, MPI_SUM, b->comm));
+  first = b->inverted ? rank : size;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
+  xy[0] = b->invertedAt[0];
+  xy[1] = b->invertedAt[1];
+  if (first < size) PetscCallMPI(MPI_Bcast(xy, 2, MPIU_REAL, first, b->comm));
   PetscFunctionReturn(0);
 }
 

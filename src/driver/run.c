@@ -104,6 +104,15 @@ static PetscErrorCode RunSayNotConverged(Problem p)
   PetscFunctionBeginUser;
   if (p->res.why[0]) PetscCall(PetscStrncpy(why, p->res.why, sizeof(why)));
   for (PetscInt t = 0; t < p->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(p->terms[t], sizeof(why), why));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body whose elements invert on the way (neohookean): named, first */
+    PetscInt  n;
+    PetscReal xy[2];
+    PetscCall(BodyGetInversions(p->bodies[i], &n, xy));
+    if (n && p->res.reason != TAO_DIVERGED_MAXITS) {
+      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations, which every step tried met (smaller load steps, -load_steps, or a finer mesh there may pass)", p->bodies[i]->name, (double)xy[0], (double)xy[1], n));
+      break;
+    }
+  }
   if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));
   PetscFunctionReturn(0);
