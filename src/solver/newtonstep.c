@@ -6,6 +6,7 @@
    (forceborder.c). The orchestrator (solve.c) sets it up; L-BFGS's H0
    (lmvm.c) shares its Cholesky. */
 #include "newtonstep.h"
+#include "problem.h"
 #include "schur.h"
 #include "substructure.h"
 #include "iterative.h"
@@ -56,11 +57,10 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
 {
   PC          pc;
   PetscMPIInt size;
-  PetscBool   varies = PETSC_FALSE; /* a body's tangent depends on u (neohookean): K is no longer condensed once */
+  PetscBool   varies = ProblemTangentVaries(p); /* a body's tangent depends on u (neohookean): K is no longer condensed once */
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  for (PetscInt i = 0; i < p->nbodies; ++i) varies = (PetscBool)(varies || (p->bodies[i]->mat && !p->bodies[i]->mat->constantTangent));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   if (p->opt.iterative) {

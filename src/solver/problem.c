@@ -696,17 +696,21 @@ PetscErrorCode ProblemSetHessianSwitchReference(Problem p, PetscReal g0)
   PetscFunctionReturn(0);
 }
 
+PetscBool ProblemTangentVaries(Problem p)
+{
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (p->bodies[i]->mat && !p->bodies[i]->mat->constantTangent) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 /* P = K + the terms' Hessians at X, in their current order (exact or
    Gauss-Newton); K the bodies' tangent at X where a body's varies
    (neohookean), else the stiffness assembled once. */
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
-  PetscBool varies = PETSC_FALSE;
-
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(p, X));
-  for (PetscInt i = 0; i < p->nbodies; ++i) varies = (PetscBool)(varies || !p->bodies[i]->mat->constantTangent);
-  if (varies) {
+  if (ProblemTangentVaries(p)) {
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));

@@ -19,15 +19,6 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
   PetscFunctionReturn(0);
 }
 
-/* Whether a body's material can invert (neohookean): its energy is +inf
-   where an element does, which TAO refuses at a solve's first iterate. */
-static PetscBool ProblemMayInvert(Problem p)
-{
-  for (PetscInt i = 0; i < p->nbodies; ++i)
-    if (!p->bodies[i]->mat->constantTangent) return PETSC_TRUE;
-  return PETSC_FALSE;
-}
-
 /* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
    rest, where a solve from rest starts and the last stage stops relative to;
    the energy evaluation is not counted. Where the full load put on at rest
@@ -66,7 +57,7 @@ static PetscErrorCode ProblemStageSolve(Problem p, PetscInt *its, TaoConvergedRe
   PetscReal f;
 
   PetscFunctionBeginUser;
-  if (ProblemMayInvert(p)) {
+  if (ProblemTangentVaries(p)) { /* a material that can invert (neohookean) */
     PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
     if (PetscIsInfReal(f)) {
       PetscCall(PetscInfo(p->tao, "the stage's first iterate inverts an element: stopped as at a NaN\n"));
