@@ -28,6 +28,9 @@ typedef struct {
      them): dN[a][2] the basis gradients, B[a] the basis values and r > 0
      the radius in axisymmetry, where e3 = u_r / r adds its terms (r = 0:
      plane strain). */
+  /* The tangent A = d2W/dF dF at (gu, e3): A[((i*2+J)*2+k)*2+L] in-plane,
+     a3[i*2+J] = A_iJ33, a33 = A_3333 (for a manufactured body force). */
+  void (*moduli)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal A[], PetscReal a3[], PetscReal *a33);
   void (*tangent)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscInt nb, PetscReal w, const PetscReal dN[], const PetscReal B[], PetscReal r, PetscScalar K[]);
 } Material;
 

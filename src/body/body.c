@@ -104,8 +104,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
-    /* affine's body force is zero whatever the material: a homogeneous F is a solution of any */
-    PetscCheck(b->mat->constantTangent || !strcmp(exact, "affine"), b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution of linear elasticity (its body force is); with -%smaterial %s only affine is exact", prefix, exact, prefix, b->mat->name);
+    /* another material's body force comes from the solution's second derivatives (BodyExactForce) */
+    PetscCheck(b->mat->constantTangent || b->exact.d2u, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' has linear elasticity's body force only; with -%smaterial %s, affine and trig are exact", prefix, exact, prefix, b->mat->name);
     b->hasExact      = PETSC_TRUE;
     b->exact.lambda  = b->param[0];
     b->exact.mu      = b->param[1];
@@ -425,6 +425,31 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
   PetscFunctionReturn(0);
 }
 
+/* The exact solution's body force at x, f = -div P(F(u)), times the load
+   factor (a load, as the Dirichlet values it goes with): its own (linear
+   elasticity's) for a material of constant tangent, else from the
+   material's tangent at grad u and the solution's second derivatives,
+   f_i = -A_iJkL d2u_k/dx_J dx_L (plane strain). */
+static void BodyExactForce(Body b, const PetscReal x[], PetscReal f[])
+{
+  PetscReal du[4], d2u[8], A[16], a3[4], a33;
+
+  if (b->mat->constantTangent) b->exact.f(b->exact.params, b->param[0], b->param[1], x, f);
+  else {
+    b->exact.du(b->exact.params, x, du);
+    b->exact.d2u(b->exact.params, x, d2u);
+    b->mat->moduli(b->param, du, 0.0, A, a3, &a33);
+    for (PetscInt i = 0; i < 2; ++i) {
+      f[i] = 0.0;
+      for (PetscInt J = 0; J < 2; ++J)
+        for (PetscInt k = 0; k < 2; ++k)
+          for (PetscInt L = 0; L < 2; ++L) f[i] -= A[((i * 2 + J) * 2 + k) * 2 + L] * d2u[(k * 2 + J) * 2 + L];
+    }
+  }
+  f[0] *= b->loadFactor;
+  f[1] *= b->loadFactor;
+}
+
 /* Pi_b(u) = int W(grad u) dA - int f . u dA - (the loads' f) . u (loads.c)
    and its gradient, added into Gl, W the body's material's. Where the
    material is inverted (J <= 0 at a quadrature point), Pi_b is +inf and the
@@ -483,7 +508,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
       }
       if (b->hasExact) {
         PetscReal f[2], uq[2] = {0, 0};
-        b->exact.f(b->exact.params, b->param[0], b->param[1], &b->xq[(c * nq + iq) * 2], f);
+        BodyExactForce(b, &b->xq[(c * nq + iq) * 2], f);
         for (PetscInt a = 0; a < nb; ++a) {
           uq[0] += B[a] * u[a][0];
           uq[1] += B[a] * u[a][1];

@@ -121,4 +121,13 @@ static void LinearTangent(const PetscReal param[], const PetscReal gu[], PetscRe
   }
 }
 
-const Material MaterialLinear = {"linear", PETSC_TRUE, LinearEnergy, LinearCauchy, LinearTangent};
+static void LinearModuli(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal A[], PetscReal a3[], PetscReal *a33)
+{
+  (void)gu;
+  (void)e3;
+  ElasticityTangent(param, A);
+  for (PetscInt j = 0; j < 4; ++j) a3[j] = (j == 0 || j == 3) ? param[0] : 0.0;
+  *a33 = param[0] + 2.0 * param[1];
+}
+
+const Material MaterialLinear = {"linear", PETSC_TRUE, LinearEnergy, LinearCauchy, LinearModuli, LinearTangent};

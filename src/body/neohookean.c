@@ -112,7 +112,7 @@ static void NeoHookeanCauchy(const PetscReal param[], const PetscReal gu[], Pets
 }
 
 /* The tangent at (gu, e3): A[((i*2+J)*2+k)*2+L] in-plane, a3[i*2+J] = A_iJ33, a33 = A_3333. */
-static void NeoHookeanModuli(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal A[16], PetscReal a3[4], PetscReal *a33)
+static void NeoHookeanModuli(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal A[], PetscReal a3[], PetscReal *a33)
 {
   const PetscReal lambda = param[0], mu = param[1], F33 = 1.0 + e3;
   PetscReal       F[4], Fi[4], J, lnJ, m;
@@ -155,4 +155,4 @@ static void NeoHookeanTangent(const PetscReal param[], const PetscReal gu[], Pet
       }
 }
 
-const Material MaterialNeoHookean = {"neohookean", PETSC_FALSE, NeoHookeanEnergy, NeoHookeanCauchy, NeoHookeanTangent};
+const Material MaterialNeoHookean = {"neohookean", PETSC_FALSE, NeoHookeanEnergy, NeoHookeanCauchy, NeoHookeanModuli, NeoHookeanTangent};
