@@ -49,9 +49,13 @@ typedef struct {
   PetscInt  nnodes, ncells;
   PetscReal umax, unorm2;
   BodyErrors err; /* against the body's exact solution, if any */
+  PetscReal maxStrain; /* the largest principal Green-Lagrange strain (BodyComputeMaxStrain) */
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
 PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);
+/* Collective: the largest principal Green-Lagrange strain, in magnitude,
+   over the body's quadrature points (fields.c). */
+PetscErrorCode BodyComputeMaxStrain(Body, Vec Xl, PetscReal *emax);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
    of the recovered (nodal-average) stress minus the cell's stress. */
 PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);

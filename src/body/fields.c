@@ -123,6 +123,47 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
   PetscFunctionReturn(0);
 }
 
+/* The largest principal Green-Lagrange strain, in magnitude, over every
+   rank's quadrature points: E = (F^T F - I)/2 with F = I + [gu 0; 0 e3],
+   its in-plane block's eigenvalues and E33 = e3 + e3^2/2 (the hoop one in
+   r-z, 0 in plane strain). The measure of a linear body's model error:
+   small-strain elasticity drops the quadratic terms of E. */
+PetscErrorCode BodyComputeMaxStrain(Body b, Vec Xl, PetscReal *emax)
+{
+  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscScalar *ua;
+  PetscReal          m = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(Xl, &ua));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt *dof = &b->cdof[c * nb];
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
+      PetscReal        g[4] = {0, 0, 0, 0}, ur = 0.0, e3 = 0.0, E[3], mean, rad;
+      for (PetscInt a = 0; a < nb; ++a) {
+        const PetscReal ux = PetscRealPart(ua[dof[a]]), uy = PetscRealPart(ua[dof[a] + 1]);
+        g[0] += ux * dN[2 * a];
+        g[1] += ux * dN[2 * a + 1];
+        g[2] += uy * dN[2 * a];
+        g[3] += uy * dN[2 * a + 1];
+        ur += B[a] * ux;
+      }
+      if (b->axisym) e3 = ElasticityHoopStrain(ur, g[0], b->xq[(c * nq + iq) * 2]);
+      /* E_IJ = (g_IJ + g_JI + g_kI g_kJ) / 2 */
+      E[0] = g[0] + 0.5 * (g[0] * g[0] + g[2] * g[2]);
+      E[1] = g[3] + 0.5 * (g[1] * g[1] + g[3] * g[3]);
+      E[2] = 0.5 * (g[1] + g[2] + g[0] * g[1] + g[2] * g[3]);
+      mean = 0.5 * (E[0] + E[1]);
+      rad  = PetscSqrtReal(0.25 * PetscSqr(E[0] - E[1]) + E[2] * E[2]);
+      m    = PetscMax(m, PetscMax(PetscAbsReal(mean) + rad, PetscAbsReal(e3 + 0.5 * e3 * e3)));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &ua));
+  PetscCall(MPIU_Allreduce(&m, emax, 1, MPIU_REAL, MPIU_MAX, b->comm));
+  PetscFunctionReturn(0);
+}
+
 /* Node values are computed per local point (arrays over the chart); owned
    points are numbered by the body's node numbering, and the stress sums of the
    cells around a node are reduced from ghosts to owners over the point SF. */
@@ -215,6 +256,7 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
   F->ncells = b->ncellsGlobal;
   PetscCall(BodyComputeErrors(b, Xl, &F->err));
+  PetscCall(BodyComputeMaxStrain(b, Xl, &F->maxStrain));
   PetscFunctionReturn(0);
 }
 

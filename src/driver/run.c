@@ -118,11 +118,29 @@ static PetscErrorCode RunSayNotConverged(Problem p)
   PetscFunctionReturn(0);
 }
 
+/* The model's error, as the mesh's is measured: each body's largest
+   principal Green-Lagrange strain; a linear body above 2 % is warned in the
+   report, its model's error being of the order of the strain there (it
+   drops E's quadratic terms and tells a rotation from a strain no better). */
+static PetscErrorCode RunReportStrains(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body      b = p->bodies[i];
+    PetscReal e;
+    PetscCall(BodyComputeMaxStrain(b, b->Xl, &e));
+    PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", b->name, b->mat->name, (double)(100 * e)));
+    if (b->mat->constantTangent && e > 0.02) PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", b->name, (double)(100 * e), b->name));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RunFinish(Problem p, RunRecord *rec)
 {
   PetscLogDouble t;
 
   PetscFunctionBeginUser;
+  if (rec->converged) PetscCall(RunReportStrains(p));
   if (p->opt.taylor) {
     PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
     PetscCall(ProblemTaylorTest(p));
