@@ -109,7 +109,7 @@ static PetscErrorCode RunSayNotConverged(Problem p)
     PetscReal xy[2];
     PetscCall(BodyGetInversions(p->bodies[i], &n, xy));
     if (n && p->res.reason != TAO_DIVERGED_MAXITS) {
-      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations, which every step tried met (smaller load steps, -load_steps, or a finer mesh there may pass)", p->bodies[i]->name, (double)xy[0], (double)xy[1], n));
+      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations (smaller load steps, -load_steps, or a finer mesh there may pass)", p->bodies[i]->name, (double)xy[0], (double)xy[1], n));
       break;
     }
   }
