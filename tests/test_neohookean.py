@@ -20,7 +20,8 @@ against answers computed here, outside the program:
   radial equilibrium ODE integrated here (RK4 and shooting, to 1e-14):
   the nodal error falls at order 3 and more;
 - a manufactured solution at finite strain with its neo-Hookean body force
-  converges at the P2/Q2 orders.
+  converges at the P2/Q2 orders;
+- 1 and 2 ranks give the same answer.
 
 Each bound comments the figure measured (2 cores, PETSc 3.18, OpenBLAS)."""
 import math
@@ -337,3 +338,17 @@ def test_largest_strain_reported(material, tmp_path):
         assert len(warned) == 1 and "-square_material neohookean" in warned[0]
     else:
         assert not warned
+
+
+def test_two_ranks(tmp_path):
+    """The reference scene with both bodies neo-Hookean on 1 and 2 ranks (the
+    tangent assembled from each rank's cells, MUMPS's LDL^T of the whole
+    Hessian, the tangent predictor): the same Newton iterations, energy and
+    contact force. Measured: 14 iterations both, energy 1.3e-15 and P 4.2e-14
+    apart (relative); bounds 1e-11 (the stop's own)."""
+    args = ["-options_file", "meshes/hertz/hertz.opts", "-indenter_material", "neohookean", "-block_material", "neohookean", "-output", "none"]
+    one, two = (run_contact(args, tmp_path, ranks=n, name=f"r{n}").summary for n in (1, 2))
+    print(one["iterations"], two["iterations"], one["energy"], two["energy"], one["contact_force"], two["contact_force"])
+    assert one["iterations"] == two["iterations"]
+    assert abs(one["energy"] - two["energy"]) <= 1e-11 * one["energy"]
+    assert abs(one["contact_force"] - two["contact_force"]) <= 1e-11 * one["contact_force"]
