@@ -126,8 +126,11 @@ def test_uniaxial_rollers(l1, cells, tmp_path):
     F = diag(l1, l2) with l2 from P22 = 0 (0.82492 at 1.5, 1.21443 at 0.6).
     Every node at ((l1 - 1) X, (l2 - 1) Y) and the right edge's reaction
     P11 = mu (l1 - 1/l1) + lambda ln(l1 l2) / l1 times the height 1.
+    The nodal Cauchy stress written, against sigma = P F^T / J:
+    sigma_xx = P11 / l2, sigma_zz = lambda ln J / J, the others 0.
     Measured: nodes 7.8e-16 and 2.6e-15 of max |u|, reaction 5.6e-16 and
-    3.2e-16 relative; bounds 1e-11, 1e-11."""
+    3.2e-16 relative, stress 1.1e-14 and 7.0e-15 of P11; bounds 1e-11, 1e-11,
+    1e-10."""
     l2 = lateral_stretch(l1)
     P11 = MU * (l1 - 1 / l1) + LAM * math.log(l1 * l2) / l1
     args = ["-scene", "uni", "-bodies", "b", "-b_geo", "tests/meshes/plate.geo", "-b_geo_params", f"L=1,H=1,quads={cells}",
@@ -138,12 +141,20 @@ def test_uniaxial_rollers(l1, cells, tmp_path):
     s = r.summary
     with r.h5() as f:
         X, u = f["bodies/b/geometry"][...], f["bodies/b/displacement"][...]
+        st = {k: f[f"bodies/b/stress_{k}"][...] for k in ("xx", "yy", "zz", "xy")}
     exact = np.stack([(l1 - 1) * X[:, 0], (l2 - 1) * X[:, 1]], 1)
     err = np.abs(u - exact).max() / np.abs(exact).max()
     R = s["reactions"]["b:right"][0]
-    print(f"l1 {l1}: l2 {l2!r}, nodes {err:.2e}, reaction {R!r} against P11 H = {P11!r} ({abs(R - P11) / abs(P11):.1e}), cutbacks {s['load_cutbacks']}")
+    # the Cauchy stress written: sigma = P F^T / J, so sigma_xx = P11 / l2 (the
+    # force per current height), sigma_yy = sigma_xy = 0, sigma_zz = lambda ln J / J
+    J = l1 * l2
+    cauchy = {"xx": P11 / l2, "yy": 0.0, "zz": LAM * math.log(J) / J, "xy": 0.0}
+    serr = max(np.abs(st[k] - v).max() for k, v in cauchy.items()) / abs(P11)
+    print(f"l1 {l1}: l2 {l2!r}, nodes {err:.2e}, reaction {R!r} against P11 H = {P11!r} ({abs(R - P11) / abs(P11):.1e}), "
+          f"Cauchy stress {serr:.1e}, cutbacks {s['load_cutbacks']}")
     assert err <= 1e-11
     assert abs(R - P11) <= 1e-11 * abs(P11)
+    assert serr <= 1e-10
 
 
 TUBE = ["-scene", "tube", "-axisymmetric", "-bodies", "tube", "-tube_geo", "tests/meshes/plate.geo",
