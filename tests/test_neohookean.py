@@ -363,3 +363,16 @@ def test_two_ranks(tmp_path):
     assert one["iterations"] == two["iterations"]
     assert abs(one["energy"] - two["energy"]) <= 1e-11 * one["energy"]
     assert abs(one["contact_force"] - two["contact_force"]) <= 1e-11 * one["contact_force"]
+
+
+def test_held_by_contact_refused(tmp_path):
+    """A neo-Hookean body held by its contacts alone (the roller) would be
+    anchored by force controls, whose border is a constant stiffness (K e_k):
+    refused in one line naming the body and the option, as force control
+    itself is (before, the solve ran without an answer for minutes)."""
+    r = run_contact(["-options_file", "meshes/roller/roller.opts", "-roller_material", "neohookean", "-output", "none"],
+                    tmp_path, check=False)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    print(r.returncode, lines)
+    assert r.returncode == 1 and len(lines) == 1
+    assert lines[0].startswith("contact: error: body roller: held by its contacts alone") and "-roller_material neohookean" in lines[0]
