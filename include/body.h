@@ -7,6 +7,7 @@
 #include "conditions.h"
 #include "loads.h"
 #include "rigid.h"
+#include "rigidbody.h"
 
 PetscErrorCode BodyCreate(MPI_Comm, const char name[], Body *);
 PetscErrorCode BodySetFromOptions(Body, PetscReal meshSizeOverride);

@@ -36,6 +36,7 @@ typedef struct {
 /* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
    conditions and the per-cell geometry cache used by the element loops. */
 typedef struct _n_Body *Body;
+typedef struct _n_BodyRigid BodyRigid; /* a rigid body's curves and motion (rigidbody.h) */
 struct _n_Body {
   char      name[CONTACT_NAME_LEN];
   MPI_Comm  comm;
@@ -83,6 +84,8 @@ struct _n_Body {
   PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
   PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
   PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
+  PetscBool rigid;      /* -<body>_rigid: a rigid body (rigidbody.c): no cells, no dofs; rg its curves and motion */
+  BodyRigid *rg;
   PetscBool axisym;     /* set before BodySetUp (-axisymmetric): x is the radius r >= 0, y the axis; every volume and surface measure carries 2 pi r (axis.c) */
 };
 

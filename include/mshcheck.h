@@ -6,3 +6,6 @@
    message names the file, the line and what is wrong: PETSC_ERR_FILE_OPEN,
    PETSC_ERR_FILE_READ, or PETSC_ERR_FILE_UNEXPECTED for bad content. */
 PetscErrorCode MeshCheckFile(MPI_Comm, const char path[]);
+/* The same for a rigid body's mesh: its line elements are required, its
+   cells (if any) are not used and not checked. */
+PetscErrorCode MeshCheckCurvesFile(MPI_Comm, const char path[]);

@@ -52,6 +52,7 @@ typedef struct {
   PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
   PetscBool   controlRtolSet; /* given (coupled force control checks it only then) */
   PetscReal   controlStep;   /* coupled force control: the most a Newton step moves a controlled group, times its body's size */
+  PetscBool   controlBorderSolves; /* coupled force control: the border eliminated by m solves a Hessian even where the step's PC can do it from the surfaces */
   PetscBool   schur;     /* Newton through the contact-surface Schur complement */
   PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
   SchurType   schurType;

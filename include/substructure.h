@@ -11,3 +11,15 @@
    this rank's subdomain on several ranks (consumed), NULL on one. Assumption:
    K does not depend on u. */
 PetscErrorCode ContactSubstructurePCSetUp(PC, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], Subdomain *sub);
+/* Coupled force control's bordered step [H B; B^T D] through the PC of H
+   (forceborder.c), where the PC can (the substructuring's does; any other
+   leaves *has false and the border falls back on m solves of H): the m
+   constant columns B_k, condensed once (SetColumns); per set-up of the PC,
+   B^T H^-1 B (m x m, row k column l at k m + l, on every rank) from the
+   surfaces alone (GetCoupling); per step, the first half of H^-1 r, giving
+   B^T H^-1 r (Condense), then z = H^-1 (r - B dU) (Expand), one solve of H
+   in all. Collective. */
+PetscErrorCode ContactBorderPCSetColumns(PC, PetscInt m, const Vec B[], PetscBool *has);
+PetscErrorCode ContactBorderPCGetCoupling(PC, PetscReal BHB[]);
+PetscErrorCode ContactBorderPCCondense(PC, Vec r, PetscReal BHr[]);
+PetscErrorCode ContactBorderPCExpand(PC, const PetscReal dU[], Vec z);

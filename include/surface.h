@@ -47,6 +47,9 @@ static inline PetscReal ContactSurfaceMeasure(const ContactSurface *S, const Pet
    the nodes, walks the arc and sets up the master blend of width blend (in eta). */
 PetscErrorCode ContactSurfaceSetUp(ContactSurface *, Body, const char pair[], PetscReal blend);
 PetscErrorCode ContactSurfaceDestroy(ContactSurface *);
+/* A rigid body's surface (after ContactSurfaceSetUp): each chain turned to
+   face the partner surface M, and the body's continuation at its ends. */
+PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *, Body, const ContactSurface *M, const char pair[]);
 /* The surface is the half y >= y of one symmetric about that line: marks its
    ends on the line, where the mirror image continues it. */
 PetscErrorCode ContactSurfaceSetMirror(ContactSurface *, PetscReal y);

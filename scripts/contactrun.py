@@ -14,6 +14,7 @@ the tree.
     event_totals(log_view)            each event's count and time summed over the stages
     parse_tao_line(text)              the program's `TAO ...` line: reason, iterations, evaluations
     median(values)                    the median of the finite numbers
+    write_results(out, res, lines)    a study's JSON at out and its markdown table beside it
     machine_info(), nproc(), load_average(), git(...), git_info(out)
 
 Used by bench.py and its modules (bench_run.py, bench_analysis.py, ...),
@@ -268,6 +269,19 @@ def median(values):
     none."""
     v = [x for x in values if finite(x)]
     return statistics.median(v) if v else float("nan")
+
+
+def write_results(out, res, lines):
+    """A study's results: res as JSON at out, lines (a markdown table and its
+    caption) at out with the ending .md, printed too."""
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w") as fp:
+        json.dump(res, fp, indent=1)
+    md = os.path.splitext(out)[0] + ".md"
+    with open(md, "w") as fp:
+        fp.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    print(f"Wrote {out} and {md}")
 
 
 def nproc():

@@ -13,7 +13,6 @@ displacement run's iterations plus 2.
     python3 scripts/force_control_table.py --types coupled --extra "-tao_type lmvm" --both --out results/force_control_lmvm.json
 """
 import argparse
-import json
 import os
 import sys
 import tempfile
@@ -104,9 +103,6 @@ def main():
     res = {"what": "Newton iterations, force control against displacement control (scripts/force_control_table.py)",
            "options": a.extra + (" (both runs)" if a.both else " (force-controlled runs)") if a.extra else "",
            "git": contactrun.git_info(os.path.dirname(a.out)), "machine": contactrun.machine_info(), "rows": rows}
-    os.makedirs(os.path.dirname(a.out), exist_ok=True)
-    with open(a.out, "w") as fp:
-        json.dump(res, fp, indent=1)
     lines = ["Iterations of force control against displacement control (scripts/force_control_table.py; "
              f"{res['git']}{'; options ' + res['options'] if res['options'] else ''}). Each force is the displacement "
              "run's reaction; *coupled* is the default (-force_control_type coupled), *outer* the outer iteration. "
@@ -120,11 +116,7 @@ def main():
         lines.append(f"| {r['scene']} | {r['ranks']} | {r['dofs']} | {r['displacement_run']['iterations']} | {c['iterations']} "
                      f"| {r['target']:g} | {outer} | "
                      f"{', '.join(f'{u:.6g}' for u in c['displacements_found'])}, {c['relative_error']:.1e} |")
-    md = os.path.splitext(a.out)[0] + ".md"
-    with open(md, "w") as fp:
-        fp.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
-    print(f"Wrote {a.out} and {md}")
+    contactrun.write_results(a.out, res, lines)
 
 
 if __name__ == "__main__":

@@ -251,6 +251,8 @@ def body_fits(f):
     """RigidFit of every body, by name."""
     fits = {}
     for name, g in f["bodies"].items():
+        if attr(g, "rigid", 0):   # no cells: drawn by its contact surfaces
+            continue
         cell_type = attr(g, "cell_type")
         if cell_type not in EDGES:
             raise PlotError(f"body '{name}': unsupported cell_type {cell_type!r}")
@@ -327,18 +329,42 @@ def zoom_window(f, zoom, scale, fits):
     lo, hi = pts.min(0), pts.max(0)
     centre, size = (lo + hi) / 2, zoom * max(hi - lo)
     if size <= 0:   # a single loaded point: a window of 5 % of the scene
-        allx = np.concatenate([g["geometry"][()] for g in f["bodies"].values()])
+        allx = np.concatenate([g["geometry"][()] for g in f["bodies"].values() if "geometry" in g])
         size = zoom * 0.05 * max(np.ptp(allx, axis=0))
     return (centre[0] - size / 2, centre[0] + size / 2,
             centre[1] - size / 2, centre[1] + size / 2), None
+
+
+def rigid_outline(g):
+    """A rigid body's lines as polylines (corner, middle, corner) at their
+    current positions: its group's line_x and lines."""
+    x, lines = g["line_x"][()].reshape(-1, 2), g["lines"][()].astype(int).reshape(-1, 3)
+    return [x[[c[0], c[2], c[1]]] for c in lines]
+
+
+def rigid_surface_lines(f, body):
+    """The contact surfaces of rigid body ``body`` as polylines (corner,
+    middle, corner of each quadratic edge) at their current positions."""
+    lines = []
+    for pair in f.get("contact", {}).values():
+        for sname, sg in pair.items():
+            if not sname.startswith(body + "_") or "node_cells" not in sg:
+                continue
+            x, cells = sg["node_x"][()], sg["node_cells"][()].astype(int)
+            lines += [x[[c[0], c[2], c[1]]] for c in cells]
+    return lines
 
 
 def plot_field(f, scale, ax, label, units, zoom=None):
     bodies = f["bodies"]
     fits = body_fits(f)
     data = []
+    rigid_lines = []
     for name in bodies:
         g = bodies[name]
+        if attr(g, "rigid", 0):
+            rigid_lines += rigid_outline(g) if "lines" in g else rigid_surface_lines(f, name)
+            continue
         cell_type = attr(g, "cell_type")
         topo = g["topology"][()].astype(int)
         X = g["geometry"][()]
@@ -364,6 +390,8 @@ def plot_field(f, scale, ax, label, units, zoom=None):
         mappable = ax.tripcolor(pts[:, 0], pts[:, 1], tris, vals, shading="gouraud",
                                 cmap="viridis", norm=norm)
         ax.add_collection(LineCollection(lines, colors="k", linewidths=0.5, alpha=0.6))
+    if rigid_lines:   # a rigid body: its contact surfaces, at their current place
+        ax.add_collection(LineCollection(rigid_lines, colors="0.3", linewidths=1.5))
     cax = make_axes_locatable(ax).append_axes("right", size="4%", pad=0.1)
     ax.figure.colorbar(mappable, cax=cax, label=units.label("von Mises stress", "stress"))
     ax.set_aspect("equal")

@@ -7,6 +7,7 @@ quoting them, generated from committed results, and the README's picture.
     python3 scripts/readme_figures.py --measure scenes --measure solver --measure lmvm [--update]
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
+    python3 scripts/readme_figures.py --measure rigid [--update]
     python3 scripts/readme_figures.py --measure model [--update]
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
@@ -34,6 +35,10 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
+- rigid, rigid-adequacy: bench/rigid/results.json (written by --measure rigid:
+  rigid_study.py's scenes, each run once but the timed pairs, alternated 3
+  times; and the reference scene with the disc E2/E1 times stiffer against
+  the disc rigid).
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
@@ -540,6 +545,22 @@ def render_model():
     return "\n".join(out) + "\n"
 
 
+def measure_rigid():
+    """The rigid bodies' scenes against their references (rigid_study.py)."""
+    import rigid_study
+    save("rigid", {"scenes": rigid_study.measure(), "adequacy": rigid_study.measure_adequacy()})
+
+
+def render_rigid():
+    import rigid_study
+    return rigid_study.table(load("rigid")["scenes"])
+
+
+def render_rigid_adequacy():
+    import rigid_study
+    return rigid_study.adequacy_table(load("rigid")["adequacy"])
+
+
 def and_list(items):
     """'a', 'a and b', 'a, b and c'."""
     return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else "".join(items)
@@ -831,7 +852,7 @@ def render_sweep_half():
             f"{half[0]['solve_median']:.3g} s against {full[0]['solve_median']:.3g} s")
 
 
-RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "formulations": render_formulations,
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "rigid-adequacy": render_rigid_adequacy, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
@@ -941,7 +962,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "claims", "model"], action="append",
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "claims", "model"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -954,6 +975,8 @@ def main():
         measure_picture()
     if "axisymmetric" in args.measure:
         measure_axisymmetric()
+    if "rigid" in args.measure:
+        measure_rigid()
     if "claims" in args.measure:
         measure_claims()
     if "model" in args.measure:

@@ -39,6 +39,9 @@ DOMAINS = {
     "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
     "partition_view": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
+    "indenter_rigid": ("bool",), "block_rigid": ("bool",),
+    "indenter_rigid_centre": ("reals", None, False), "block_rigid_centre": ("reals", None, False),
+    "indenter_rigid_rotation": REAL_ANY, "block_rigid_rotation": REAL_ANY,
     # names, paths and lists of names: their own tests (test_bad_input.py, test_scene_files.py)
     "scene": ("name",), "bodies": ("name",), "mesh_dir": ("name",), "output": ("name",), "summary": ("name",),
     "indenter_geo": ("name",), "block_geo": ("name",), "indenter_mesh": ("name",), "block_mesh": ("name",),
@@ -48,7 +51,7 @@ DOMAINS = {
     "accuracy": ("fraction",), "accuracy_max_dofs": ("real", 1.0, False), "accuracy_max_steps": ("int", 3, False),
     "accuracy_grading": REAL_POS, "accuracy_bulk": ("unit",), "accuracy_warm_start": ("bool",),
     "force_control_max_it": ("int", 1, False), "force_control_rtol": ("fraction",),
-    "force_control_type": ("choice",), "force_control_step": REAL_POS,
+    "force_control_type": ("choice",), "force_control_step": REAL_POS, "force_control_border_solves": ("bool",),
     # a list of choices and lists of group names: their own tests (test_force_control.py, test_loads.py)
     "indenter_bc_clamp_control": ("name",), "block_bc_push_control": ("name",),
     "indenter_load": ("name",), "block_load": ("name",),
@@ -57,7 +60,7 @@ DOMAINS = {
     "indenter_load_": ("name",), "block_load_": ("name",),
 }
 # the sections of -help that are the program's own
-SECTIONS = ("Program options", "Output options", "Progress options", "Contact scene options", "Body options",
+SECTIONS = ("Program options", "Output options", "Progress options", "Contact scene options", "Body options", "Rigid body options",
             "Dirichlet condition", "Body loads", "Load on a boundary group", "Contact options", "Contact pair options",
             "Mortar contact options", "Accuracy options")
 

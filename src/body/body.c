@@ -52,6 +52,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(ContactOptionsString(PetscOptionsObject, "-mesh", "Ready-made second-order Gmsh .msh file (instead of -geo)", NULL, b->msh, b->msh, sizeof(b->msh), &hasMsh));
   PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
+  PetscCall(PetscOptionsBool("-rigid", "A rigid body: its mesh gives only its curves, its motion is rigid (-<body>_rigid_centre, _rigid_rotation); E and nu are not asked for", NULL, b->rigid, &b->rigid, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain) or neohookean (compressible neo-Hookean, finite strain)", NULL, MaterialList, material, material, sizeof(material), NULL));
@@ -68,13 +69,20 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     nbc = 1;
   }
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
+  if (b->rigid || help) PetscCall(BodyRigidSetFromOptions(b, prefix));
+  if (b->rigid && !help) { /* E and nu are not asked for; a rigid body has no cells to load */
+    PetscCheck(!setE && !setNu, b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: body %s is rigid (-%srigid): it has no elastic constants", prefix, setE ? "E" : "nu", b->name, prefix);
+    setE = setNu = PETSC_TRUE;
+    b->E         = PETSC_INFINITY;
+    b->nu        = 0.0;
+  }
   PetscCheck(help || setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
   PetscCheck(help || setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
   /* relative to the options file that names them */
   if (hasMsh && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-mesh", b->msh, sizeof(b->msh)));
   else if (hasGeo && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-geo", b->geo, sizeof(b->geo)));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sE", prefix));
-  PetscCall(CheckFinite(b->comm, opt, b->E));
+  if (!b->rigid) PetscCall(CheckFinite(b->comm, opt, b->E));
   PetscCheck(b->E > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: Young's modulus must be > 0, got %g", opt, (double)b->E);
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%snu", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->nu));
@@ -92,6 +100,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCall(ContactOptionsListNames(MaterialList, known, sizeof(known)));
     SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: unknown material '%s' (known: %s)", prefix, material, known);
   }
+  PetscCheck(!b->rigid || b->mat->constantTangent, b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: body %s is rigid (-%srigid): it has no material", prefix, b->name, prefix);
   b->param[1] = b->E / (2.0 * (1.0 + b->nu));
   b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
   for (PetscInt k = 0; k < b->exact.nparams; ++k) {
@@ -121,6 +130,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   for (PetscInt i = 0; i < nbc; ++i) /* force control's border is K e_k, a constant stiffness (forcecontrol.c) */
     PetscCheck(b->mat->constantTangent || (!b->bc[i].control[0] && !b->bc[i].control[1]), b->comm, PETSC_ERR_USER_INPUT, "option -%sbc_%s_control: force control needs a constant stiffness, and -%smaterial %s has none: control the displacement", prefix, b->bc[i].group, prefix, b->mat->name);
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
+  PetscCheck(!b->rigid || !b->nload, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
+  PetscCheck(!b->rigid || !b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s is rigid: it has no exact solution", prefix, b->name);
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
   PetscFunctionReturn(0);
 }
@@ -358,6 +369,13 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(contactLog.mesh));
+  if (b->rigid) { /* its curves and motion alone */
+    PetscCall(BodyRigidSetUp(b));
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscTime(&t1));
+    b->tmesh += t1 - t0;
+    PetscFunctionReturn(0);
+  }
   PetscCall(BodyReadMesh(b, partitioner, partitionView));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&t1));
@@ -412,6 +430,10 @@ PetscErrorCode BodySetLoadFactor(Body b, PetscReal f)
 {
   PetscFunctionBeginUser;
   b->loadFactor = f;
+  if (b->rigid) {
+    PetscCall(BodyRigidSetLoadFactor(b, f));
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecAXPBY(b->bcl, f, 0.0, b->bclFull));
   PetscFunctionReturn(0);
 }
@@ -419,6 +441,7 @@ PetscErrorCode BodySetLoadFactor(Body b, PetscReal f)
 PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
 {
   PetscFunctionBeginUser;
+  if (b->rigid) PetscFunctionReturn(0);
   PetscCall(VecCopy(b->bcl, Xl));
   PetscCall(DMGlobalToLocalBegin(b->dm, Xg, INSERT_VALUES, Xl));
   PetscCall(DMGlobalToLocalEnd(b->dm, Xg, INSERT_VALUES, Xl));
@@ -464,6 +487,11 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscBool          inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  if (b->rigid) { /* no elastic energy; the contact terms add its force */
+    BodyRigidZeroForce(b);
+    *energy = 0.0;
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Gl, &g));
@@ -558,6 +586,7 @@ PetscErrorCode BodyGetInversions(Body b, PetscInt *n, PetscReal xy[2])
 PetscErrorCode BodyAssembleHessian(Body b, Mat H)
 {
   PetscFunctionBeginUser;
+  if (b->rigid) PetscFunctionReturn(0);
   PetscCall(BodyAssembleHessianMapped(b, b->l2b, H));
   PetscFunctionReturn(0);
 }
@@ -623,6 +652,7 @@ PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
   const PetscScalar *x;
 
   PetscFunctionBeginUser;
+  if (b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(BodyAssembleTangentMapped(b, b->mat->constantTangent ? NULL : x, b->l2b, H));
   PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -638,6 +668,10 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
   const PetscScalar *g;
 
   PetscFunctionBeginUser;
+  if (b->rigid) {
+    PetscCall(BodyRigidComputeReactions(b));
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(VecGetArrayRead(Gl, &g));
   for (PetscInt i = 0; i < b->nbc; ++i) {
@@ -694,7 +728,7 @@ PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(E, sizeof(*E)));
-  if (!b->hasExact) PetscFunctionReturn(0);
+  if (!b->hasExact || b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   for (PetscInt c = 0; c < b->ncells; ++c) {
     for (PetscInt iq = 0; iq < nq; ++iq) {
@@ -764,6 +798,7 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(PetscFEDestroy(&b->fe));
   PetscCall(PetscFEDestroy(&b->feScalar));
   PetscCall(DMDestroy(&b->dm));
+  PetscCall(BodyRigidDestroy(b));
   PetscCall(PetscFree(b));
   *body = NULL;
   PetscFunctionReturn(0);

@@ -178,6 +178,10 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscScalar       *ax, *au, *as, *av;
 
   PetscFunctionBeginUser;
+  if (b->rigid) { /* no cells: no fields */
+    PetscCall(PetscMemzero(F, sizeof(*F)));
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
     PetscInt gdof;

@@ -76,9 +76,11 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
   const PetscReal blend = b->spec.blend < 0 ? defaultBlend : b->spec.blend;
 
   PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceSetUp(&b->S[s], bodies[b->S[s].body], b->spec.name, 2.0 * blend)); /* blend width in eta */
+  for (PetscInt s = 0; s < 2; ++s)
+    if (bodies[b->S[s].body]->rigid) PetscCall(ContactSurfaceOrientRigid(&b->S[s], bodies[b->S[s].body], &b->S[1 - s], b->spec.name));
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &b->S[s];
-    PetscCall(ContactSurfaceSetUp(S, bodies[S->body], b->spec.name, 2.0 * blend)); /* blend width in eta */
     if (b->spec.mirror) PetscCall(ContactSurfaceSetMirror(S, b->spec.mirrorY));
     PetscCall(ContactSearchCreate(S, &b->search[s]));
   }

@@ -63,6 +63,35 @@ static PetscErrorCode ContactSurfaceOwnedEdges(ContactSurface *S, Body b, const 
   PetscFunctionReturn(0);
 }
 
+/* A rigid body's lines of the group, given once, by rank 0 (every rank holds
+   the body's curves), with the sign +1: the outward side is chosen once the
+   partner surface is known (ContactSurfaceOrientRigid). */
+static PetscErrorCode ContactSurfaceRigidEdges(ContactSurface *S, Body b, PetscInt *n, PetscInt **eid, PetscReal **erl)
+{
+  const BodyRigid *r = b->rg;
+  PetscMPIInt      rank;
+  PetscInt         ne, *edges;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
+  PetscCall(BodyRigidGroupEdges(b, S->tag, &ne, &edges));
+  if (rank) ne = 0;
+  PetscCall(PetscMalloc2(3 * ne + 1, eid, 7 * ne + 1, erl));
+  for (PetscInt k = 0; k < ne; ++k) {
+    const PetscInt *en = &r->enodes[3 * edges[k]];
+    for (PetscInt j = 0; j < 3; ++j) {
+      (*eid)[3 * k + j]         = r->ids[en[j]];
+      (*erl)[7 * k + 2 * j]     = r->X[2 * en[j]];
+      (*erl)[7 * k + 2 * j + 1] = r->X[2 * en[j] + 1];
+    }
+    (*erl)[7 * k + 6] = 1.0;
+  }
+  *n = ne;
+  PetscCall(PetscFree(edges));
+  PetscFunctionReturn(0);
+}
+
 /* Every rank's owned edges gathered on every rank (in rank order): the
    surface's nodes (sorted unique global numbers), their reference
    coordinates, each edge's nodes and sign, and which edges are this rank's. */
@@ -132,6 +161,12 @@ static PetscErrorCode ContactSurfaceMapNodes(ContactSurface *S, Body b)
   PetscInt    *bigl, k = 0;
 
   PetscFunctionBeginUser;
+  if (b->rigid) { /* no dofs: the nodes follow the body's motion */
+    PetscCall(PetscMalloc2(1, &S->locNode, 1, &S->locOff));
+    S->nloc = 0;
+    for (PetscInt i = 0; i < 2 * S->nn; ++i) S->big[i] = -1;
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
   PetscCall(PetscMalloc1(2 * S->nn, &bigl));
@@ -334,16 +369,108 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
   PetscFunctionBeginUser;
   S->blend  = blend;
   S->axisym = b->axisym;
-  PetscCall(ContactSurfaceOwnedEdges(S, b, pair, &n, &eid, &erl));
+  if (b->rigid) PetscCall(ContactSurfaceRigidEdges(S, b, &n, &eid, &erl));
+  else PetscCall(ContactSurfaceOwnedEdges(S, b, pair, &n, &eid, &erl));
   PetscCall(ContactSurfaceGatherEdges(S, b, pair, n, eid, erl));
   PetscCall(PetscFree2(eid, erl));
   PetscCall(ContactSurfaceMapNodes(S, b));
   PetscCall(ContactSurfaceAdjacency(S, &deg, &adj, &adjStart));
   PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
   PetscCall(ContactSurfaceWalk(S, adj, adjStart));
-  PetscCall(ContactSurfaceSetUpEnds(S, b, pair));
+  if (b->rigid) PetscCall(PetscCalloc1(S->nn, &S->endTurn)); /* once oriented (ContactSurfaceOrientRigid) */
+  else PetscCall(ContactSurfaceSetUpEnds(S, b, pair));
   PetscCall(PetscFree2(deg, adjStart));
   PetscCall(PetscFree(adj));
+  PetscFunctionReturn(0);
+}
+
+/* A rigid surface's outward side, and how the body goes on at its ends.
+   Its lines carry no cell to tell the body's side, so each chain of the
+   surface (edges joined end to end) is oriented along its walk, and then
+   turned outwards: where the body's lines close on themselves (its
+   outline: every corner on two lines), away from the region they enclose
+   (a point a millionth of an edge off each edge's middle, by the even-odd
+   rule); where they do not (a rigid plane given as one line), towards the
+   partner surface, the side on which most of the partner's nodes lie, each
+   judged at the chain's point nearest it (a partner node on the chain's
+   own line, as a flat block's top beside a flat punch's face, has no
+   vote). At an end, the body continues along its other lines through
+   that node (its other curves), as an elastic body's boundary does. */
+PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const ContactSurface *M, const char pair[])
+{
+  const BodyRigid *r = b->rg;
+  const PetscBool  closed = BodyRigidClosed(b);
+  PetscInt        *chain, nchain = 0;
+
+  PetscFunctionBeginUser;
+  /* chains: consecutive edges of the walk that share a node */
+  PetscCall(PetscMalloc1(S->ne, &chain));
+  for (PetscInt k = 0; k < S->ne; ++k) {
+    const PetscInt e = S->walk[k];
+    PetscBool      joined = PETSC_FALSE;
+    if (k) {
+      const PetscInt f = S->walk[k - 1];
+      for (PetscInt i = 0; i < 2; ++i)
+        for (PetscInt j = 0; j < 2; ++j) joined = (PetscBool)(joined || S->enodes[3 * e + i] == S->enodes[3 * f + j]);
+    }
+    if (!joined && k) nchain++;
+    chain[e]    = nchain;
+    S->esign[e] = S->edir[e];
+  }
+  nchain++;
+  for (PetscInt c = 0; c < nchain; ++c) {
+    PetscInt votes = 0;
+    if (closed) /* a closed body: the normal at each edge's middle points out of the region */
+      for (PetscInt e = 0; e < S->ne; ++e) {
+        PetscReal p[2], t[2], q[2], l;
+        if (chain[e] != c) continue;
+        EdgeEval(S->X, &S->enodes[3 * e], 0.0, p, t);
+        l    = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+        q[0] = p[0] + 1e-6 * S->esign[e] * t[1] / l * S->elen[e];
+        q[1] = p[1] - 1e-6 * S->esign[e] * t[0] / l * S->elen[e];
+        votes += BodyRigidInside(b, q) ? -1 : 1;
+      }
+    else
+      for (PetscInt w = 0; w < M->nn; ++w) { /* open lines: each partner node's side of the chain, at the chain's point nearest it */
+        PetscReal best = PETSC_MAX_REAL, side = 0.0;
+        for (PetscInt e = 0; e < S->ne; ++e) {
+          if (chain[e] != c) continue;
+          for (PetscInt q = 0; q < 9; ++q) {
+            PetscReal p[2], t[2], d;
+            EdgeEval(S->X, &S->enodes[3 * e], -1.0 + 0.25 * q, p, t);
+            d = PetscSqr(p[0] - M->X[2 * w]) + PetscSqr(p[1] - M->X[2 * w + 1]);
+            if (d < best) {
+              best = d;
+              side = S->esign[e] * (t[1] * (M->X[2 * w] - p[0]) - t[0] * (M->X[2 * w + 1] - p[1])); /* n . (x_w - p), n = esign (t_y, -t_x) */
+            }
+          }
+        }
+        votes += side > 1e-12 * best ? 1 : (side < -1e-12 * best ? -1 : 0);
+      }
+    PetscCheck(votes != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pair %s: surface '%s' of rigid body %s: its lines do not close on themselves and the partner surface lies as much on one side of it as on the other, so its outward side is not known (close the body's outline in its .geo)", pair, S->group, b->name);
+    if (votes < 0)
+      for (PetscInt e = 0; e < S->ne; ++e)
+        if (chain[e] == c) S->esign[e] = -S->esign[e];
+  }
+  PetscCall(PetscFree(chain));
+  /* the ends: the body's other lines through them */
+  for (PetscInt e = 0; e < S->ne; ++e)
+    for (PetscInt j = 0; j < 2; ++j) {
+      const PetscInt v = S->enodes[3 * e + j];
+      if (!S->endNode[v]) continue;
+      for (PetscInt f = 0; f < r->ne; ++f) {
+        const PetscInt *fn = &r->enodes[3 * f];
+        PetscReal       xf[6];
+        if (r->etag[f] == S->tag) continue;
+        if (r->ids[fn[0]] != S->nodeId[v] && r->ids[fn[1]] != S->nodeId[v]) continue;
+        for (PetscInt k = 0; k < 3; ++k) {
+          xf[2 * k]     = r->X[2 * fn[k]];
+          xf[2 * k + 1] = r->X[2 * fn[k] + 1];
+        }
+        S->endTurn[v] = ContactSurfaceEndTurn(S, e, j, xf, r->ids[fn[0]] == S->nodeId[v] ? PETSC_TRUE : PETSC_FALSE);
+      }
+      PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of rigid body %s: an end at (%g, %g), the boundary turns there by %g degrees\n", pair, S->group, b->name, (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI)));
+    }
   PetscFunctionReturn(0);
 }
 
@@ -398,6 +525,20 @@ PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscB
   PetscReal         *du, *x;
 
   PetscFunctionBeginUser;
+  if (b->rigid) { /* the body's motion, the same on every rank */
+    *changed = PETSC_FALSE;
+    for (PetscInt v = 0; v < S->nn; ++v) {
+      PetscReal uv[2];
+      BodyRigidDisplacement(b, &S->X[2 * v], uv);
+      for (PetscInt d = 0; d < 2; ++d) {
+        const PetscReal xv = S->X[2 * v + d] + uv[d];
+        if (xv != S->x[2 * v + d]) *changed = PETSC_TRUE;
+        S->x[2 * v + d] = xv;
+      }
+    }
+    if (S->mirror) ContactSurfaceMirrorReach(S);
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscCalloc2(2 * S->nn, &du, 2 * S->nn, &x));
   PetscCall(VecGetArrayRead(b->Xl, &u));
   for (PetscInt k = 0; k < S->nloc; ++k) {
@@ -445,6 +586,11 @@ PetscErrorCode ContactSurfaceAddGradient(ContactSurface *S, Body b)
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(2 * S->nn, &sum));
   PetscCall(MPIU_Allreduce(S->g, sum, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  if (b->rigid) { /* the force and moment on the body */
+    BodyRigidAddForce(b, S->nn, S->X, sum);
+    PetscCall(PetscFree(sum));
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecGetArray(b->Gl, &g));
   for (PetscInt k = 0; k < S->nloc; ++k) {
     g[S->locOff[k]] += sum[2 * S->locNode[k]];

@@ -431,11 +431,12 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
   PetscFunctionReturn(0);
 }
 
-/* Step 0's checks: the scene has a contact pair, and none in gpts. */
+/* Step 0's checks: the scene has a contact pair, none in gpts, and no rigid body. */
 static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
 {
   PetscFunctionBeginUser;
   PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->bodies[i]->rigid, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", p->bodies[i]->name, p->bodies[i]->name);
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscBool gpts;
     PetscCall(PetscStrcmp(p->terms[t]->type, "gpts", &gpts));

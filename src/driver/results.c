@@ -37,6 +37,7 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
       const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
       const char *g  = b->name;
       PetscInt    N = F[i].nnodes, C = F[i].ncells;
+      if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
       fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
       fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
       fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
@@ -102,6 +103,45 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, Pets
   PetscFunctionReturn(0);
 }
 
+/* A rigid body's outline: its lines' nodes at their current positions
+   (line_x, rank 0's) and each line's nodes (lines: the ends, then the
+   middle), for the plots. */
+static PetscErrorCode WriteRigidOutline(Body b, PetscViewer v)
+{
+  const BodyRigid *r = b->rg;
+  PetscMPIInt      rank;
+  Vec              x;
+  IS               lines;
+  PetscScalar     *a;
+  PetscInt         nn, ne;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  nn = rank ? 0 : r->nn;
+  ne = rank ? 0 : r->ne;
+  PetscCall(VecCreate(b->comm, &x));
+  PetscCall(VecSetSizes(x, 2 * nn, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(x, 2));
+  PetscCall(VecSetType(x, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)x, "line_x"));
+  PetscCall(VecGetArray(x, &a));
+  for (PetscInt i = 0; i < nn; ++i) {
+    PetscReal u[2];
+    BodyRigidDisplacement(b, &r->X[2 * i], u);
+    a[2 * i]     = r->X[2 * i] + u[0];
+    a[2 * i + 1] = r->X[2 * i + 1] + u[1];
+  }
+  PetscCall(VecRestoreArray(x, &a));
+  ContactOutputCall(v, VecView(x, v));
+  PetscCall(VecDestroy(&x));
+  PetscCall(ISCreateGeneral(b->comm, 3 * ne, r->enodes, PETSC_COPY_VALUES, &lines));
+  PetscCall(ISSetBlockSize(lines, 3));
+  PetscCall(PetscObjectSetName((PetscObject)lines, "lines"));
+  ContactOutputCall(v, ISView(lines, v));
+  PetscCall(ISDestroy(&lines));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNodalFields F[], const char runId[], PetscViewer v)
 {
   char       *opts, version[256];
@@ -112,6 +152,20 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     char group[2 * CONTACT_NAME_LEN];
     PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
+    if (p->bodies[i]->rigid) { /* its motion and force, no fields */
+      const BodyRigid *r = p->bodies[i]->rg;
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rigid", PETSC_INT, &(PetscInt){1}));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_x", PETSC_REAL, &r->t[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_y", PETSC_REAL, &r->t[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rotation", PETSC_REAL, &r->theta));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &r->force[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &r->force[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &r->moment));
+      PetscCall(WriteRigidOutline(p->bodies[i], v));
+      PetscCall(PetscViewerHDF5PopGroup(v));
+      continue;
+    }
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     ContactOutputCall(v, VecView(F[i].coords, v));
     ContactOutputCall(v, VecView(F[i].disp, v));
@@ -170,6 +224,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
   if (size == 1) PetscFunctionReturn(0);
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscInt nodes, cells;
+    if (p->bodies[i]->rigid) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
     bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) + (size_t)cells * sizeof(PetscInt);
@@ -274,6 +329,19 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body              b = p->bodies[i];
     const BodyErrors *e = &F[i].err;
+    if (b->rigid) { /* its motion, and the contact's force and moment on it */
+      const BodyRigid *r = b->rg;
+      fprintf(fp, "%s\n    \"%s\": {\"rigid\": true, \"dofs\": 0, \"nodes\": %d", i ? "," : "", b->name, (int)r->nn);
+      ContactJSONKeyPair(fp, ", ", "translation", r->t);
+      ContactJSONKeyReal(fp, ", ", "rotation", r->theta);
+      ContactJSONKeyPair(fp, ", ", "centre", r->centre);
+      ContactJSONKeyPair(fp, ", ", "force", r->force);
+      ContactJSONKeyReal(fp, ", ", "moment", r->moment);
+      fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
+      ContactJSONKeyReal(fp, ", ", "h", b->h);
+      fprintf(fp, "}");
+      continue;
+    }
     fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);

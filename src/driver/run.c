@@ -128,6 +128,7 @@ static PetscErrorCode RunReportStrains(Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body      b = p->bodies[i];
     PetscReal e;
+    if (b->rigid) continue; /* no strain */
     PetscCall(BodyComputeMaxStrain(b, b->Xl, &e));
     PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", b->name, b->mat->name, (double)(100 * e)));
     if (b->mat->constantTangent && e > 0.02) PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", b->name, (double)(100 * e), b->name));

@@ -135,6 +135,7 @@ typedef struct {
   int           *point; /* per point element: node, element number, line */
   const MshType *cellType; /* type of the first 2D element */
   long           cellTypeLine, endElementsLine;
+  int            curves; /* a rigid body's mesh: its lines are what it needs, cells are ignored */
 } MshCheck;
 
 /* Writes the message "mesh FILE, line N: [ctx ctxId: ]..." unless a verdict is already set. */
@@ -939,6 +940,7 @@ static int MshCheckTopology(MshCheck *c)
   char   *corner = NULL;
   int     fail   = 0;
 
+  if (c->curves) return c->nsegs ? 0 : MshFailAt(c, c->endElementsLine, "no line element in $Elements; a rigid body needs its curves");
   if (!c->ncells) return MshFailAt(c, c->endElementsLine, "no 2D element (triangle or quadrilateral) in $Elements; the solver needs a 2D mesh");
   corner = (char *)calloc((size_t)c->nnodes, 1);
   if (!corner || MshHashReserve(&edges, (size_t)(2 * c->ncells + 16))) {
@@ -1010,11 +1012,12 @@ static int MshCheckAll(MshCheck *c)
 }
 
 /* Runs the check on this process; returns the verdict, the message in msg. */
-static MshVerdict MshCheckPath(const char path[], char msg[], size_t msglen, long *nnodes, long *nelems, int *format)
+static MshVerdict MshCheckPath(const char path[], int curves, char msg[], size_t msglen, long *nnodes, long *nelems, int *format)
 {
   MshCheck c;
 
   memset(&c, 0, sizeof(c));
+  c.curves = curves;
   c.path   = path;
   c.msg    = msg;
   c.msglen = msglen;
@@ -1046,7 +1049,7 @@ static MshVerdict MshCheckPath(const char path[], char msg[], size_t msglen, lon
 }
 
 /* Checks the file on rank 0 and raises the verdict on every rank. */
-PetscErrorCode MeshCheckFile(MPI_Comm comm, const char path[])
+static PetscErrorCode MeshCheck(MPI_Comm comm, const char path[], int curves)
 {
   PetscMPIInt rank;
   int         verdict = MSH_OK;
@@ -1060,7 +1063,7 @@ PetscErrorCode MeshCheckFile(MPI_Comm comm, const char path[])
     PetscLogDouble t0, t1;
 
     PetscCall(PetscTime(&t0));
-    verdict = (int)MshCheckPath(path, msg, sizeof(msg), &nnodes, &nelems, &format);
+    verdict = (int)MshCheckPath(path, curves, msg, sizeof(msg), &nnodes, &nelems, &format);
     PetscCall(PetscTime(&t1));
     if (verdict == MSH_OK) PetscCall(PetscInfo(NULL, "Mesh %s (MSH %d.%d): %ld nodes, %ld elements, checked in %g s\n", path, format / 10, format % 10, nnodes, nelems, (double)(t1 - t0)));
   }
@@ -1069,5 +1072,19 @@ PetscErrorCode MeshCheckFile(MPI_Comm comm, const char path[])
   PetscCheck(verdict != MSH_OPEN, comm, PETSC_ERR_FILE_OPEN, "%s", msg);
   PetscCheck(verdict != MSH_READ, comm, PETSC_ERR_FILE_READ, "%s", msg);
   PetscCheck(verdict == MSH_OK, comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MeshCheckFile(MPI_Comm comm, const char path[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(MeshCheck(comm, path, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MeshCheckCurvesFile(MPI_Comm comm, const char path[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(MeshCheck(comm, path, 1));
   PetscFunctionReturn(0);
 }

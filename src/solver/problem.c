@@ -173,6 +173,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
   PetscCall(PetscOptionsReal("-force_control_rtol", "Force control: every controlled group's reaction is its force to this relative tolerance at the end (coupled: where given; else the solve's gradient test)", NULL, p->opt.controlRtol, &p->opt.controlRtol, &p->opt.controlRtolSet));
   PetscCall(PetscOptionsReal("-force_control_step", "Coupled force control: the most a Newton step moves a controlled group, relative to its body's size", NULL, p->opt.controlStep, &p->opt.controlStep, NULL));
+  PetscCall(PetscOptionsBool("-force_control_border_solves", "Coupled force control: eliminate the controls by m solves of the bodies' Hessian per Hessian, even where the step's preconditioner (the substructuring) does it from the contact surfaces with one solve a step", NULL, p->opt.controlBorderSolves, &p->opt.controlBorderSolves, NULL));
   PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->opt.hessianSwitch, &p->opt.hessianSwitch, NULL));
   PetscOptionsEnd();
   PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", p->opt.meshDir, sizeof(p->opt.meshDir), NULL, 0)); /* relative to the options file that names it */
@@ -300,6 +301,7 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
     const PetscScalar *l;
     PetscInt           n;
 
+    if (b->rigid) continue; /* no dofs */
     PetscCall(VecGetArray(b->Xg, &a));
     for (PetscInt k = 0; k < b->nlocal; ++k) a[k] = (PetscScalar)(rstart + p->offset[i] + k);
     PetscCall(VecRestoreArray(b->Xg, &a));
@@ -330,6 +332,7 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
     PetscInt  nfree;
     PetscBool contact = PETSC_FALSE;
 
+    if (b->rigid) continue; /* its motion is held by its conditions (rigidbody.c) */
     PetscCall(BodyCountFreeRigidModes(b, &nfree));
     if (!nfree) continue;
     for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
@@ -514,7 +517,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(ProblemIsLoaded(p, &loaded));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body in a contact of a loaded scene may be held by it (anchors.c) */
     Body b = p->bodies[i];
-    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(b->mayAnchor || (p->terms[t]->couples[i] && loaded));
+    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
     PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
   }
   PetscCall(PetscLogStagePush(contactLog.setup));
@@ -638,6 +641,7 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body b = p->bodies[i];
+    if (b->rigid) continue; /* no dofs: its gradient is its force (rigidbody.c) */
     PetscCall(VecPlaceArray(b->Gg, g + p->offset[i]));
     PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
     PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
@@ -791,6 +795,12 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
   PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a rigid body: its motion and the contact's force on it */
+    const BodyRigid *r = p->bodies[i]->rg;
+    if (!p->bodies[i]->rigid) continue;
+    if (p->opt.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)r->force[1]));
+    else PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", p->bodies[i]->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)r->force[0], (double)r->force[1], (double)r->moment));
+  }
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
     Body       b = p->bodies[i];
     BodyErrors e;

@@ -48,10 +48,35 @@
    sparse work of a step is one forward and one backward substitution per
    subdomain, in parallel. MUMPS is called directly (dmumps_c): PETSc 3.18
    does not expose its condensation and expansion phases, and through
-   MatSolve a step would cost two whole subdomain solves. */
+   MatSolve a step would cost two whole subdomain solves.
+
+   The border of coupled force control (forceborder.c: H bordered by m
+   constant columns B_k, B = K_fc 1) needs B^T H^-1 B at every Hessian and
+   B^T H^-1 r_u and H^-1 (r_u - B dU) at every step. Eliminating I, then G,
+   from a symmetric H gives for any a, b
+
+       a^T H^-1 b = a_I^T K_II^-1 b_I + y(a)^T y(b) + t(a)^T (S_K + C_cc)^-1 t(b),
+
+   with y = L_G^-1 g_G and t = g_c - W^T y the right side condensed onto
+   the surfaces (step 2). Of B_k's, only the last term depends on C: so
+   once (SubBorderSetColumns, m condensations and expansions with z_B = 0)
+   y_k, t_k, v_k = S_K^-1 t_k, X_k = K_II^-1 B_k,I (zero on B) and
+   Q_lk = B_l^T X_k + y_l^T y_k are kept, and per Hessian
+   (SubBorderGetCoupling) Zc_k = (S_K + C_cc)^-1 t_k is v_k corrected by the
+   capacitance solve (nA^2 + nA nc each) and B_l^T H^-1 B_k = Q_lk +
+   t_l^T Zc_k: no sparse work at all. Per step (SubBorderCondense) r_u is
+   condensed and its surface solve w_c made, which gives B_k^T H^-1 r_u =
+   X_k^T r_u + y_k^T y(r_u) + t_k^T w_c; and once dU is known
+   (SubBorderExpand), by linearity the boundary of H^-1 (r_u - B dU) solves
+   with y(r_u) - sum dU_k y_k and z_c = w_c - sum dU_k Zc_k, and its interior
+   is K_II^-1 (r_I - K_IB z_B) - sum dU_k X_k: r_u's own expansion less the
+   kept X_k. One condensation and one expansion a step, what one solve of H
+   costs, where eliminating by m solves cost m + 1. On several ranks X_k^T
+   r_u is one more sum over ranks of m numbers. */
 #include "substructure.h"
 #include <petscblaslapack.h>
 #include <dmumps_c.h>
+#include <petsc/private/petscimpl.h> /* PetscUseMethod */
 
 #define ICNTL(i) icntl[(i) - 1]
 #define INFOG(i) infog[(i) - 1]
@@ -65,6 +90,20 @@ typedef struct {
   PetscScalar *LG, *W, *Ginv;
   PetscScalar *y; /* [nG] work */
 } SubBody;
+
+/* The border of coupled force control's step (SubBorder* below): its m
+   constant columns B_k condensed once, and their surface solves of the
+   current step. */
+typedef struct {
+  PetscInt     m;         /* columns; 0: none set */
+  PetscScalar *red;       /* [m nB] y_k = L_G^-1 g_G(B_k) on G, t_k = g_c - W^T y_k on c */
+  PetscScalar *v;         /* [m nc] S_K^-1 t_k */
+  PetscScalar *X;         /* [m nI] (K^r_II)^-1 B_k,I on this rank's interior dofs */
+  PetscScalar *Q;         /* [m m] B_l,I^T K_II^-1 B_k,I + y_l^T y_k, on every rank */
+  PetscScalar *Zc;        /* [m nc] (S_K + C_cc)^-1 t_k, this step's */
+  PetscScalar *xr;        /* [m] work */
+  PetscBool    condensed; /* gB, zc and MUMPS hold a right side's first half (SubBorderCondense) */
+} SubBorder;
 
 typedef struct {
   MPI_Comm comm, self; /* self: MUMPS's communicator, a duplicate of MPI_COMM_SELF */
@@ -96,9 +135,10 @@ typedef struct {
   PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
   PetscScalar  *MA, *GAA, *tA; /* [nA x nA] LU of I + G_AA C_AA; G_AA; [nA] work */
   PetscBLASInt *ipiv;
+  SubBorder     border;
 } SubCtx;
 
-static PetscLogEvent SubFactor = 0, SubInterface, SubStep, SubSolve;
+static PetscLogEvent SubFactor = 0, SubInterface, SubStep, SubSolve, SubBorderCols, SubBorderStep, SubBorderSolve;
 
 static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
 {
@@ -553,6 +593,7 @@ static PetscErrorCode SubPCSetUp(PC pc)
   PetscCall(PCShellGetContext(pc, &ctx));
   PetscCall(PCGetOperators(pc, NULL, &H));
   PetscCall(PetscLogEventBegin(SubStep, 0, 0, 0, 0));
+  ctx->border.condensed = PETSC_FALSE;
   PetscCall(SubGatherContactHessian(ctx, H));
   nA = ctx->nA;
   if (nA > ctx->capA) {
@@ -591,77 +632,48 @@ static PetscErrorCode SubPCSetUp(PC pc)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
+/* Step 1, condensation: g_B = r_B + sum_r R_Br^T g^r for the nrhs right
+   sides in ra (each of nD entries on this rank's subdomain: the interior
+   ones are read from the columns' local arrays ra[j]), g^r = -K^r_BI
+   (K^r_II)^-1 r_I by MUMPS (ICNTL(26) = 1, which keeps the forward
+   substitution for the expansion that follows it); gB[j nB ...], summed
+   over ranks. */
+static PetscErrorCode SubCondense(SubCtx *ctx, PetscInt nrhs, const PetscScalar *const ra[], PetscScalar rhs[], PetscScalar red[], PetscScalar gB[])
 {
-  SubCtx            *ctx;
-  const PetscScalar *ra;
-  PetscScalar       *za, *gB;
-  PetscBLASInt       one_i = 1, info;
-  PetscMPIInt        nBm;
-  const PetscScalar  one = 1.0, mone = -1.0;
+  PetscMPIInt nBm;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &ctx));
-  PetscCall(PetscLogEventBegin(SubSolve, 0, 0, 0, 0));
-  gB = ctx->gB;
-  PetscCall(VecGetArrayRead(r, &ra));
-  PetscCall(PetscArrayzero(ctx->rhs, ctx->nD));
-  for (PetscInt k = 0; k < ctx->nI; ++k) ctx->rhs[ctx->Iloc[k]] = ra[ctx->D[ctx->Iloc[k]] - ctx->rstart];
-  PetscCall(PetscArrayzero(gB, ctx->nB));
-  if (ctx->nI && ctx->nBr) { /* condensation */
-    ctx->mumps.nrhs      = 1;
+  PetscCall(PetscArrayzero(rhs, nrhs * ctx->nD));
+  for (PetscInt j = 0; j < nrhs; ++j)
+    for (PetscInt k = 0; k < ctx->nI; ++k) rhs[j * ctx->nD + ctx->Iloc[k]] = ra[j][ctx->D[ctx->Iloc[k]] - ctx->rstart];
+  PetscCall(PetscArrayzero(gB, nrhs * ctx->nB));
+  if (ctx->nI && ctx->nBr) {
+    ctx->mumps.nrhs      = (MUMPS_INT)nrhs;
     ctx->mumps.lrhs      = (MUMPS_INT)ctx->nD;
-    ctx->mumps.rhs       = ctx->rhs;
-    ctx->mumps.redrhs    = ctx->red;
+    ctx->mumps.rhs       = rhs;
+    ctx->mumps.redrhs    = red;
     ctx->mumps.lredrhs   = (MUMPS_INT)ctx->nBr;
     ctx->mumps.ICNTL(26) = 1;
     PetscCall(SubMumps(ctx, 3));
-    for (PetscInt k = 0; k < ctx->nBr; ++k) gB[ctx->Bpos[k]] += ctx->red[k];
+    for (PetscInt j = 0; j < nrhs; ++j)
+      for (PetscInt k = 0; k < ctx->nBr; ++k) gB[j * ctx->nB + ctx->Bpos[k]] += red[j * ctx->nBr + k];
   }
-  for (PetscInt k = 0; k < ctx->nOwned; ++k) gB[ctx->ownedPos[k]] += ra[ctx->ownedRow[k]];
-  PetscCall(VecRestoreArrayRead(r, &ra));
-  PetscCall(PetscMPIIntCast(ctx->nB, &nBm));
+  for (PetscInt j = 0; j < nrhs; ++j)
+    for (PetscInt k = 0; k < ctx->nOwned; ++k) gB[j * ctx->nB + ctx->ownedPos[k]] += ra[j][ctx->ownedRow[k]];
+  PetscCall(PetscMPIIntCast(nrhs * ctx->nB, &nBm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, gB, nBm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
-  /* per body: y = L_G^-1 g_G, g_c -= W^T y, z_c = G g_c */
+  PetscFunctionReturn(0);
+}
+
+/* Step 2a, in place on g_B, per body: y = L_G^-1 g_G on G, t = g_c - W^T y
+   on c, the right side condensed onto the contact surfaces. */
+static PetscErrorCode SubReduce(SubCtx *ctx, PetscScalar gB[])
+{
+  PetscBLASInt      one_i = 1;
+  const PetscScalar one = 1.0, mone = -1.0;
+
+  PetscFunctionBeginUser;
   for (PetscInt b = 0; b < ctx->nbodies; ++b) {
-    SubBody     *B = &ctx->body[b];
-    PetscBLASInt bG, bc;
-    PetscScalar *t = ctx->tmp, zero = 0.0;
-
-    PetscCall(PetscBLASIntCast(B->nG, &bG));
-    PetscCall(PetscBLASIntCast(B->nc, &bc));
-    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
-    if (B->nG) {
-      for (PetscInt i = 0; i < B->nG; ++i) B->y[i] = gB[B->G[i]];
-      PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
-      if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("T", &bG, &bc, &mone, B->W, &bG, B->y, &one_i, &one, t, &one_i));
-    }
-    if (B->nc) {
-      PetscScalar *zcb = t + B->nc;
-      PetscCallBLAS("BLASgemv", BLASgemv_("N", &bc, &bc, &one, B->Ginv, &bc, t, &one_i, &zero, zcb, &one_i));
-      for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] = zcb[j];
-    }
-  }
-  if (ctx->nA) { /* z_c -= G E_A C_AA z_A, (I + G_AA C_AA) z_A = (G g_c)_A */
-    PetscScalar *w = ctx->tmp;
-    PetscBLASInt bA;
-
-    PetscCall(PetscBLASIntCast(ctx->nA, &bA));
-    for (PetscInt a = 0; a < ctx->nA; ++a) ctx->tA[a] = ctx->zc[ctx->A[a]];
-    PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &bA, &one_i, ctx->MA, &bA, ctx->ipiv, ctx->tA, &bA, &info));
-    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "getrs info %d", (int)info);
-    PetscCall(PetscArrayzero(w, ctx->nA));
-    for (PetscInt k = 0; k < ctx->nC; ++k) w[ctx->Ci[k]] += ctx->Cv[k] * ctx->tA[ctx->Cj[k]];
-    for (PetscInt a = 0; a < ctx->nA; ++a) {
-      const PetscInt     ca = ctx->nG + ctx->A[a];
-      const SubBody     *B  = &ctx->body[ctx->bBody[ca]];
-      const PetscScalar *Ga = B->Ginv + (ctx->bLocal[ca] - B->nG) * B->nc;
-      if (w[a] != 0.0)
-        for (PetscInt j = 0; j < B->nc; ++j) ctx->zc[B->c[j] - ctx->nG] -= w[a] * Ga[j];
-    }
-  }
-  PetscCall(PetscArraycpy(gB + ctx->nG, ctx->zc, ctx->nc));
-  for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* z_G = L_G^-T (y - W z_c) */
     SubBody     *B = &ctx->body[b];
     PetscBLASInt bG, bc;
     PetscScalar *t = ctx->tmp;
@@ -670,26 +682,302 @@ static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
     PetscCall(PetscBLASIntCast(B->nG, &bG));
     PetscCall(PetscBLASIntCast(B->nc, &bc));
     for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    for (PetscInt i = 0; i < B->nG; ++i) B->y[i] = gB[B->G[i]];
+    PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "N", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
+    if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("T", &bG, &bc, &mone, B->W, &bG, B->y, &one_i, &one, t, &one_i));
+    for (PetscInt i = 0; i < B->nG; ++i) gB[B->G[i]] = B->y[i];
+    for (PetscInt j = 0; j < B->nc; ++j) gB[B->c[j]] = t[j];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* zc = S_K^-1 t, per body (t on gB's surface positions). */
+static PetscErrorCode SubSurfaceInverse(SubCtx *ctx, const PetscScalar gB[], PetscScalar zc[])
+{
+  PetscBLASInt      one_i = 1;
+  const PetscScalar one = 1.0, zero = 0.0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bc;
+    PetscScalar *t = ctx->tmp, *zcb = ctx->tmp + B->nc;
+
+    if (!B->nc) continue;
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    PetscCallBLAS("BLASgemv", BLASgemv_("N", &bc, &bc, &one, B->Ginv, &bc, t, &one_i, &zero, zcb, &one_i));
+    for (PetscInt j = 0; j < B->nc; ++j) zc[B->c[j] - ctx->nG] = zcb[j];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* From zc = S_K^-1 t to (S_K + C_cc)^-1 t, in place: z_c -= G E_A C_AA z_A,
+   (I + G_AA C_AA) z_A = (G t)_A (the LU of SubPCSetUp). */
+static PetscErrorCode SubSurfaceCorrect(SubCtx *ctx, PetscScalar zc[])
+{
+  PetscScalar *w = ctx->tmp;
+  PetscBLASInt bA, one_i = 1, info;
+
+  PetscFunctionBeginUser;
+  if (!ctx->nA) PetscFunctionReturn(0);
+  PetscCall(PetscBLASIntCast(ctx->nA, &bA));
+  for (PetscInt a = 0; a < ctx->nA; ++a) ctx->tA[a] = zc[ctx->A[a]];
+  PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &bA, &one_i, ctx->MA, &bA, ctx->ipiv, ctx->tA, &bA, &info));
+  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "getrs info %d", (int)info);
+  PetscCall(PetscArrayzero(w, ctx->nA));
+  for (PetscInt k = 0; k < ctx->nC; ++k) w[ctx->Ci[k]] += ctx->Cv[k] * ctx->tA[ctx->Cj[k]];
+  for (PetscInt a = 0; a < ctx->nA; ++a) {
+    const PetscInt     ca = ctx->nG + ctx->A[a];
+    const SubBody     *B  = &ctx->body[ctx->bBody[ca]];
+    const PetscScalar *Ga = B->Ginv + (ctx->bLocal[ca] - B->nG) * B->nc;
+    if (w[a] != 0.0)
+      for (PetscInt j = 0; j < B->nc; ++j) zc[B->c[j] - ctx->nG] -= w[a] * Ga[j];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Step 2b, in place on g_B holding y on G and z_c on c, per body:
+   z_G = L_G^-T (y - W z_c). */
+static PetscErrorCode SubInterfaceBack(SubCtx *ctx, PetscScalar gB[])
+{
+  PetscBLASInt      one_i = 1;
+  const PetscScalar one = 1.0, mone = -1.0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) {
+    SubBody     *B = &ctx->body[b];
+    PetscBLASInt bG, bc;
+    PetscScalar *t = ctx->tmp;
+
+    if (!B->nG) continue;
+    PetscCall(PetscBLASIntCast(B->nG, &bG));
+    PetscCall(PetscBLASIntCast(B->nc, &bc));
+    for (PetscInt j = 0; j < B->nc; ++j) t[j] = gB[B->c[j]];
+    for (PetscInt i = 0; i < B->nG; ++i) B->y[i] = gB[B->G[i]];
     if (B->nc) PetscCallBLAS("BLASgemv", BLASgemv_("N", &bG, &bc, &mone, B->W, &bG, t, &one_i, &one, B->y, &one_i));
     PetscCallBLAS("BLAStrsm", BLAStrsm_("L", "L", "T", "N", &bG, &one_i, &one, B->LG, &bG, B->y, &bG));
     for (PetscInt i = 0; i < B->nG; ++i) gB[B->G[i]] = B->y[i];
   }
-  if (ctx->nI) { /* expansion (or, with no boundary, the subdomain's own solve) */
-    for (PetscInt k = 0; k < ctx->nBr; ++k) ctx->red[k] = gB[ctx->Bpos[k]];
-    ctx->mumps.nrhs      = 1;
-    ctx->mumps.lrhs      = (MUMPS_INT)ctx->nD;
-    ctx->mumps.rhs       = ctx->rhs;
-    ctx->mumps.redrhs    = ctx->red;
-    ctx->mumps.lredrhs   = (MUMPS_INT)ctx->nBr;
-    ctx->mumps.ICNTL(26) = ctx->nBr ? 2 : 0;
-    PetscCall(SubMumps(ctx, 3));
-  }
+  PetscFunctionReturn(0);
+}
+
+/* Step 3, expansion of the nrhs right sides last condensed (SubCondense, with
+   the same rhs and red): z_I = (K^r_II)^-1 (r_I - K^r_IB z_B) in rhs, z_B
+   read from gB[j nB ...] (with no boundary, the subdomain's own solve). */
+static PetscErrorCode SubExpand(SubCtx *ctx, PetscInt nrhs, const PetscScalar gB[], PetscScalar rhs[], PetscScalar red[])
+{
+  PetscFunctionBeginUser;
+  if (!ctx->nI) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < nrhs; ++j)
+    for (PetscInt k = 0; k < ctx->nBr; ++k) red[j * ctx->nBr + k] = gB[j * ctx->nB + ctx->Bpos[k]];
+  ctx->mumps.nrhs      = (MUMPS_INT)nrhs;
+  ctx->mumps.lrhs      = (MUMPS_INT)ctx->nD;
+  ctx->mumps.rhs       = rhs;
+  ctx->mumps.redrhs    = red;
+  ctx->mumps.lredrhs   = (MUMPS_INT)ctx->nBr;
+  ctx->mumps.ICNTL(26) = ctx->nBr ? 2 : 0;
+  PetscCall(SubMumps(ctx, 3));
+  PetscFunctionReturn(0);
+}
+
+/* z's entries on this rank: the interior from the expansion, the owned
+   boundary dofs from z_B. */
+static PetscErrorCode SubScatterSolution(SubCtx *ctx, const PetscScalar gB[], Vec z)
+{
+  PetscScalar *za;
+
+  PetscFunctionBeginUser;
   PetscCall(VecGetArray(z, &za));
   for (PetscInt k = 0; k < ctx->nI; ++k) za[ctx->D[ctx->Iloc[k]] - ctx->rstart] = ctx->rhs[ctx->Iloc[k]];
   for (PetscInt k = 0; k < ctx->nOwned; ++k) za[ctx->ownedRow[k]] = gB[ctx->ownedPos[k]];
   PetscCall(VecRestoreArray(z, &za));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SubLogSolveFlops(SubCtx *ctx)
+{
+  PetscFunctionBeginUser;
   PetscCall(PetscLogFlops(2.0 * ctx->nc * ctx->nc + 2.0 * ctx->nc * ctx->nA + 2.0 * ctx->nG * ctx->nG + 4.0 * ctx->nG * ctx->nc));
+  PetscFunctionReturn(0);
+}
+
+/* H z = r: steps 1 to 3 above. */
+static PetscErrorCode SubPCApply(PC pc, Vec r, Vec z)
+{
+  SubCtx            *ctx;
+  const PetscScalar *ra;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  PetscCall(PetscLogEventBegin(SubSolve, 0, 0, 0, 0));
+  ctx->border.condensed = PETSC_FALSE; /* MUMPS's forward substitution is this right side's now */
+  PetscCall(VecGetArrayRead(r, &ra));
+  PetscCall(SubCondense(ctx, 1, &ra, ctx->rhs, ctx->red, ctx->gB));
+  PetscCall(VecRestoreArrayRead(r, &ra));
+  PetscCall(SubReduce(ctx, ctx->gB));
+  PetscCall(SubSurfaceInverse(ctx, ctx->gB, ctx->zc));
+  PetscCall(SubSurfaceCorrect(ctx, ctx->zc));
+  PetscCall(PetscArraycpy(ctx->gB + ctx->nG, ctx->zc, ctx->nc));
+  PetscCall(SubInterfaceBack(ctx, ctx->gB));
+  PetscCall(SubExpand(ctx, 1, ctx->gB, ctx->rhs, ctx->red));
+  PetscCall(SubScatterSolution(ctx, ctx->gB, z));
+  PetscCall(SubLogSolveFlops(ctx));
   PetscCall(PetscLogEventEnd(SubSolve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The bordered step of coupled force control (forceborder.c) through the
+   substructuring: see the file's header. Once, for the constant columns B_k:
+   y_k and t_k (condensation, step 2a), v_k = S_K^-1 t_k, X_k = (K_II)^-1
+   B_k,I (condensation and an expansion with z_B = 0), and Q_lk = B_l,I^T X_k
+   + y_l^T y_k. */
+static PetscErrorCode SubBorderSetColumns(PC pc, PetscInt m, const Vec B[])
+{
+  SubCtx             *ctx;
+  SubBorder          *bd;
+  const PetscScalar **ba;
+  PetscScalar        *rhs, *red, *gB;
+  PetscMPIInt         mm;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  bd = &ctx->border;
+  PetscCheck(m >= 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "the border needs at least one column, got %" PetscInt_FMT, m);
+  PetscCall(PetscLogEventBegin(SubBorderCols, 0, 0, 0, 0));
+  PetscCall(PetscFree6(bd->red, bd->v, bd->X, bd->Q, bd->Zc, bd->xr));
+  bd->m         = m;
+  bd->condensed = PETSC_FALSE;
+  PetscCall(PetscMalloc6(m * ctx->nB + 1, &bd->red, m * ctx->nc + 1, &bd->v, m * ctx->nI + 1, &bd->X, m * m, &bd->Q, m * ctx->nc + 1, &bd->Zc, m, &bd->xr));
+  PetscCall(PetscMalloc4(m * ctx->nD + 1, &rhs, m * ctx->nBr + 1, &red, m * ctx->nB + 1, &gB, m, &ba));
+  for (PetscInt k = 0; k < m; ++k) PetscCall(VecGetArrayRead(B[k], &ba[k]));
+  PetscCall(SubCondense(ctx, m, ba, rhs, red, gB));
+  PetscCall(PetscArraycpy(bd->red, gB, m * ctx->nB));
+  PetscCall(PetscArrayzero(gB, m * ctx->nB));
+  PetscCall(SubExpand(ctx, m, gB, rhs, red)); /* z_B = 0: the interior's own solve */
+  for (PetscInt k = 0; k < m; ++k) {
+    for (PetscInt i = 0; i < ctx->nI; ++i) bd->X[k * ctx->nI + i] = rhs[k * ctx->nD + ctx->Iloc[i]];
+    PetscCall(SubReduce(ctx, bd->red + k * ctx->nB));
+    PetscCall(SubSurfaceInverse(ctx, bd->red + k * ctx->nB, bd->v + k * ctx->nc));
+  }
+  for (PetscInt l = 0; l < m; ++l)
+    for (PetscInt k = 0; k < m; ++k) {
+      PetscScalar s = 0.0;
+      for (PetscInt i = 0; i < ctx->nI; ++i) s += ba[l][ctx->D[ctx->Iloc[i]] - ctx->rstart] * bd->X[k * ctx->nI + i];
+      bd->Q[l * m + k] = s;
+    }
+  for (PetscInt k = 0; k < m; ++k) PetscCall(VecRestoreArrayRead(B[k], &ba[k]));
+  PetscCall(PetscMPIIntCast(m * m, &mm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, bd->Q, mm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
+  for (PetscInt l = 0; l < m; ++l)
+    for (PetscInt k = 0; k < m; ++k)
+      for (PetscInt i = 0; i < ctx->nG; ++i) bd->Q[l * m + k] += bd->red[l * ctx->nB + i] * bd->red[k * ctx->nB + i];
+  PetscCall(PetscFree4(rhs, red, gB, ba));
+  PetscCall(PetscLogFlops(2.0 * m * ctx->nc * ctx->nc + 2.0 * m * m * (ctx->nI + ctx->nG)));
+  PetscCall(PetscLogEventEnd(SubBorderCols, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Per Hessian (after SubPCSetUp): Zc_k = (S_K + C_cc)^-1 t_k from v_k by the
+   capacitance correction, and B_l^T H^-1 B_k = Q_lk + t_l^T Zc_k. */
+static PetscErrorCode SubBorderGetCoupling(PC pc, PetscReal BHB[])
+{
+  SubCtx    *ctx;
+  SubBorder *bd;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  bd = &ctx->border;
+  PetscCheck(bd->m, ctx->comm, PETSC_ERR_ORDER, "the border's columns are not set (ContactBorderPCSetColumns)");
+  PetscCall(PetscLogEventBegin(SubBorderStep, 0, 0, 0, 0));
+  bd->condensed = PETSC_FALSE; /* the contact block may have changed since */
+  for (PetscInt k = 0; k < bd->m; ++k) {
+    PetscScalar *Zk = bd->Zc + k * ctx->nc;
+    PetscCall(PetscArraycpy(Zk, bd->v + k * ctx->nc, ctx->nc));
+    PetscCall(SubSurfaceCorrect(ctx, Zk));
+  }
+  for (PetscInt l = 0; l < bd->m; ++l)
+    for (PetscInt k = 0; k < bd->m; ++k) {
+      const PetscScalar *tl = bd->red + l * ctx->nB + ctx->nG, *Zk = bd->Zc + k * ctx->nc;
+      PetscScalar        s  = bd->Q[l * bd->m + k];
+      for (PetscInt j = 0; j < ctx->nc; ++j) s += tl[j] * Zk[j];
+      BHB[l * bd->m + k] = PetscRealPart(s);
+    }
+  PetscCall(PetscLogFlops(bd->m * (2.0 * ctx->nC + 2.0 * ctx->nA * ctx->nA + 2.0 * ctx->nA * ctx->nc) + 2.0 * bd->m * bd->m * ctx->nc));
+  PetscCall(PetscLogEventEnd(SubBorderStep, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The first half of H^-1 r: condensation, y(r), t(r) in gB and w_c =
+   (S_K + C_cc)^-1 t(r) in zc (MUMPS keeps r's forward substitution), and
+   B_k^T H^-1 r = X_k^T r_I + y_k^T y(r) + t_k^T w_c. */
+static PetscErrorCode SubBorderCondense(PC pc, Vec r, PetscReal BHr[])
+{
+  SubCtx            *ctx;
+  SubBorder         *bd;
+  const PetscScalar *ra;
+  PetscScalar       *xr;
+  PetscMPIInt        mm;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  bd = &ctx->border;
+  PetscCheck(bd->m, ctx->comm, PETSC_ERR_ORDER, "the border's columns are not set (ContactBorderPCSetColumns)");
+  xr = bd->xr;
+  PetscCall(PetscLogEventBegin(SubBorderSolve, 0, 0, 0, 0));
+  PetscCall(VecGetArrayRead(r, &ra));
+  PetscCall(SubCondense(ctx, 1, &ra, ctx->rhs, ctx->red, ctx->gB));
+  for (PetscInt k = 0; k < bd->m; ++k) {
+    xr[k] = 0.0;
+    for (PetscInt i = 0; i < ctx->nI; ++i) xr[k] += bd->X[k * ctx->nI + i] * ra[ctx->D[ctx->Iloc[i]] - ctx->rstart];
+  }
+  PetscCall(VecRestoreArrayRead(r, &ra));
+  PetscCall(PetscMPIIntCast(bd->m, &mm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, xr, mm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
+  PetscCall(SubReduce(ctx, ctx->gB));
+  PetscCall(SubSurfaceInverse(ctx, ctx->gB, ctx->zc));
+  PetscCall(SubSurfaceCorrect(ctx, ctx->zc));
+  for (PetscInt k = 0; k < bd->m; ++k) {
+    const PetscScalar *yk = bd->red + k * ctx->nB, *tk = yk + ctx->nG;
+    PetscScalar        s  = xr[k];
+    for (PetscInt i = 0; i < ctx->nG; ++i) s += yk[i] * ctx->gB[i];
+    for (PetscInt j = 0; j < ctx->nc; ++j) s += tk[j] * ctx->zc[j];
+    BHr[k] = PetscRealPart(s);
+  }
+  bd->condensed = PETSC_TRUE;
+  PetscCall(SubLogSolveFlops(ctx));
+  PetscCall(PetscLogEventEnd(SubBorderSolve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The second half: z = H^-1 (r - B dU), r the right side last condensed. By
+   linearity its y and z_c are y(r) - sum_k dU_k y_k and w_c - sum_k dU_k
+   Zc_k; then z_G (step 2b), the expansion of r with that z_B, and the
+   interior less sum_k dU_k X_k. */
+static PetscErrorCode SubBorderExpand(PC pc, const PetscReal dU[], Vec z)
+{
+  SubCtx    *ctx;
+  SubBorder *bd;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &ctx));
+  bd = &ctx->border;
+  PetscCheck(bd->condensed, ctx->comm, PETSC_ERR_ORDER, "the border's expansion without a condensation before it (ContactBorderPCCondense)");
+  PetscCall(PetscLogEventBegin(SubBorderSolve, 0, 0, 0, 0));
+  for (PetscInt k = 0; k < bd->m; ++k) {
+    const PetscScalar *yk = bd->red + k * ctx->nB, *Zk = bd->Zc + k * ctx->nc;
+    for (PetscInt i = 0; i < ctx->nG; ++i) ctx->gB[i] -= dU[k] * yk[i];
+    for (PetscInt j = 0; j < ctx->nc; ++j) ctx->zc[j] -= dU[k] * Zk[j];
+  }
+  PetscCall(PetscArraycpy(ctx->gB + ctx->nG, ctx->zc, ctx->nc));
+  PetscCall(SubInterfaceBack(ctx, ctx->gB));
+  PetscCall(SubExpand(ctx, 1, ctx->gB, ctx->rhs, ctx->red));
+  for (PetscInt k = 0; k < bd->m; ++k)
+    for (PetscInt i = 0; i < ctx->nI; ++i) ctx->rhs[ctx->Iloc[i]] -= dU[k] * bd->X[k * ctx->nI + i];
+  PetscCall(SubScatterSolution(ctx, ctx->gB, z));
+  bd->condensed = PETSC_FALSE;
+  PetscCall(PetscLogFlops(2.0 * bd->m * (ctx->nG + ctx->nc + ctx->nI)));
+  PetscCall(PetscLogEventEnd(SubBorderSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -719,6 +1007,11 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
   PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
+  PetscCall(PetscFree6(ctx->border.red, ctx->border.v, ctx->border.X, ctx->border.Q, ctx->border.Zc, ctx->border.xr));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCSetColumns_C", NULL));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCGetCoupling_C", NULL));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCCondense_C", NULL));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCExpand_C", NULL));
   PetscCall(MatDestroy(&ctx->K));
   PetscCall(PetscFree(ctx));
   PetscFunctionReturn(0);
@@ -737,6 +1030,9 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
     PetscCall(PetscLogEventRegister("SubstrInterface", id, &SubInterface));
     PetscCall(PetscLogEventRegister("SubstrStep", id, &SubStep));
     PetscCall(PetscLogEventRegister("SubstrSolve", id, &SubSolve));
+    PetscCall(PetscLogEventRegister("SubstrBordCols", id, &SubBorderCols));
+    PetscCall(PetscLogEventRegister("SubstrBordStep", id, &SubBorderStep));
+    PetscCall(PetscLogEventRegister("SubstrBordSolve", id, &SubBorderSolve));
   }
   PetscCall(PetscNew(&ctx));
   ctx->comm = PetscObjectComm((PetscObject)K);
@@ -772,6 +1068,42 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
   PetscCall(PCShellSetSetUp(pc, SubPCSetUp));
   PetscCall(PCShellSetApply(pc, SubPCApply));
   PetscCall(PCShellSetDestroy(pc, SubPCDestroy));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCSetColumns_C", SubBorderSetColumns));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCGetCoupling_C", SubBorderGetCoupling));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCCondense_C", SubBorderCondense));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCExpand_C", SubBorderExpand));
   PetscCall(PCShellSetName(pc, "contact Schur by substructuring: subdomains condensed once (MUMPS), dense surface block per step"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactBorderPCSetColumns(PC pc, PetscInt m, const Vec B[], PetscBool *has)
+{
+  PetscErrorCode (*f)(PC, PetscInt, const Vec[]);
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)pc, "ContactBorderPCSetColumns_C", &f));
+  *has = f ? PETSC_TRUE : PETSC_FALSE;
+  if (f) PetscCall((*f)(pc, m, B));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactBorderPCGetCoupling(PC pc, PetscReal BHB[])
+{
+  PetscFunctionBeginUser;
+  PetscUseMethod(pc, "ContactBorderPCGetCoupling_C", (PC, PetscReal[]), (pc, BHB));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactBorderPCCondense(PC pc, Vec r, PetscReal BHr[])
+{
+  PetscFunctionBeginUser;
+  PetscUseMethod(pc, "ContactBorderPCCondense_C", (PC, Vec, PetscReal[]), (pc, r, BHr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactBorderPCExpand(PC pc, const PetscReal dU[], Vec z)
+{
+  PetscFunctionBeginUser;
+  PetscUseMethod(pc, "ContactBorderPCExpand_C", (PC, const PetscReal[], Vec), (pc, dU, z));
   PetscFunctionReturn(0);
 }

@@ -1,0 +1,333 @@
+/* A rigid body: its curves read from the Gmsh file, its reference point and
+   its prescribed rigid motion (rigidbody.h).
+
+   The curves. Gmsh writes the mesh as MSH 2.2 (meshgen.c asks for it): the
+   nodes, then the elements, each with its physical tag first. A rigid body
+   keeps the second-order lines (type 8: the two ends, then the middle) and
+   ignores points and any cells (a .geo that also has the body's surface
+   serves as it is). Rank 0 reads the file (MeshCheckFile has checked it
+   whole) and broadcasts the curves: they are small, and every rank holds
+   every contact surface anyway (surface.c).
+
+   The motion. u(X) = t + (R(theta) - I)(X - c) moves every point rigidly.
+   Its translation is held in a component where a condition of the body
+   holds that component (of any of its groups: the body is one piece), with
+   the condition's value; two conditions that hold the same component with
+   different values are refused. A component that no condition holds would
+   be a free motion of the body: refused for now, with the line naming it.
+   The load factor scales t and theta as it scales an elastic body's
+   Dirichlet values.
+
+   The force. The contact terms add their gradient dPi/du at the surface
+   nodes (summed over ranks, so the same on every rank); for a rigid body it
+   goes into the body's force F = sum g and its moment about the current
+   reference point, M = sum (x - c - t) x g = dPi/dtheta (in r-z the axial
+   force alone: the radial parts cancel round each ring). F is the reaction
+   of the conditions that hold the translation, as the reaction of an
+   elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
+#include "rigidbody.h"
+#include "options.h"
+#include "mshcheck.h"
+#include "meshgen.h"
+
+PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
+{
+  BodyRigid *r;
+  PetscReal  c[2] = {0, 0};
+  PetscInt   nc   = 2;
+  PetscBool  setc = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&r));
+  b->rg = r;
+  PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
+  PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves' nodes)", NULL, c, &nc, &setc));
+  PetscCall(PetscOptionsReal("-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (default 0: held)", NULL, r->rotation, &r->rotation, NULL));
+  PetscOptionsEnd();
+  PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
+  for (PetscInt k = 0; k < 2 && setc; ++k) PetscCheck(!PetscIsInfOrNanReal(c[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: must be finite, got %g", prefix, (double)c[k]);
+  PetscCheck(!PetscIsInfOrNanReal(r->rotation), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be finite, got %g", prefix, (double)r->rotation);
+  PetscCheck(!b->axisym || r->rotation == 0.0, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, got %g", prefix, (double)r->rotation);
+  if (setc) {
+    r->centre[0] = c[0];
+    r->centre[1] = c[1];
+  } else r->centre[0] = r->centre[1] = PETSC_MAX_REAL; /* the centroid, once read */
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0: the nodes and second-order lines of an MSH 2.2 file. */
+static PetscErrorCode RigidReadCurves(Body b, BodyRigid *r)
+{
+  FILE    *fp;
+  char     line[4096];
+  PetscInt nnodes = 0, *ids = NULL, nel = 0, ne = 0, *en = NULL, *tag = NULL;
+  PetscReal *X    = NULL;
+
+  PetscFunctionBeginUser;
+  fp = fopen(b->msh, "r");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "body %s: cannot open mesh %s", b->name, b->msh);
+  while (fgets(line, sizeof(line), fp)) {
+    if (!strncmp(line, "$Nodes", 6)) {
+      PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%" PetscInt_FMT, &nnodes) == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: bad $Nodes", b->name, b->msh);
+      PetscCall(PetscMalloc2(nnodes, &ids, 2 * nnodes, &X));
+      for (PetscInt i = 0; i < nnodes; ++i) {
+        double x, y, z;
+        PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%" PetscInt_FMT " %lf %lf %lf", &ids[i], &x, &y, &z) == 4, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: bad node line", b->name, b->msh);
+        X[2 * i]     = x;
+        X[2 * i + 1] = y;
+      }
+    } else if (!strncmp(line, "$Elements", 9)) {
+      PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%" PetscInt_FMT, &nel) == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: bad $Elements", b->name, b->msh);
+      PetscCall(PetscMalloc2(3 * nel + 3, &en, nel + 1, &tag));
+      for (PetscInt i = 0; i < nel; ++i) {
+        long  v[16];
+        int   nv = 0;
+        char *s  = line, *end;
+        PetscCheck(fgets(line, sizeof(line), fp), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: short $Elements", b->name, b->msh);
+        for (long x = strtol(s, &end, 10); end != s && nv < 16; x = strtol(s, &end, 10)) {
+          v[nv++] = x;
+          s       = end;
+        }
+        if (nv < 3 || v[1] != 8) continue; /* id, type (8: 3-node line), ntags, tags..., nodes */
+        PetscCheck(nv == 3 + v[2] + 3 && v[2] >= 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: bad line element %ld", b->name, b->msh, v[0]);
+        tag[ne] = (PetscInt)v[3];
+        for (PetscInt j = 0; j < 3; ++j) en[3 * ne + j] = (PetscInt)v[3 + v[2] + j];
+        ne++;
+      }
+    }
+  }
+  fclose(fp);
+  PetscCheck(ne > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has no second-order lines: a rigid body is given by its curves (Mesh.ElementOrder = 2)", b->name, b->msh);
+  /* nodes of the lines only, sorted by Gmsh number; lines' nodes as indices */
+  {
+    PetscInt  n = 3 * ne, *used, *perm;
+    PetscCall(PetscMalloc1(n, &used));
+    PetscCall(PetscArraycpy(used, en, n));
+    PetscCall(PetscSortRemoveDupsInt(&n, used));
+    PetscCall(PetscMalloc1(nnodes, &perm));
+    for (PetscInt i = 0; i < nnodes; ++i) perm[i] = i;
+    PetscCall(PetscSortIntWithArray(nnodes, ids, perm));
+    r->nn = n;
+    PetscCall(PetscMalloc2(n, &r->ids, 2 * n, &r->X));
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscInt loc;
+      PetscCall(PetscFindInt(used[i], nnodes, ids, &loc));
+      PetscCheck(loc >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: a line's node %" PetscInt_FMT " is not among its nodes", b->name, b->msh, used[i]);
+      r->ids[i]       = used[i];
+      r->X[2 * i]     = X[2 * perm[loc]];
+      r->X[2 * i + 1] = X[2 * perm[loc] + 1];
+    }
+    r->ne = ne;
+    PetscCall(PetscMalloc2(3 * ne, &r->enodes, ne, &r->etag));
+    for (PetscInt e = 0; e < ne; ++e) {
+      r->etag[e] = tag[e];
+      for (PetscInt j = 0; j < 3; ++j) PetscCall(PetscFindInt(en[3 * e + j], n, r->ids, &r->enodes[3 * e + j]));
+    }
+    PetscCall(PetscFree(used));
+    PetscCall(PetscFree(perm));
+  }
+  PetscCall(PetscFree2(ids, X));
+  PetscCall(PetscFree2(en, tag));
+  PetscFunctionReturn(0);
+}
+
+/* The translation's components from the conditions: a component held by
+   one condition or by several with the same value. */
+static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
+{
+  PetscReal value[2] = {0, 0};
+  PetscInt  by[2]    = {-1, -1};
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    const BodyBC *bc = &b->bc[i];
+    PetscInt      tag;
+    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &tag));
+    PetscCheck(!bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_exact: body %s is rigid: it has no exact solution", b->name, bc->group, b->name);
+    for (PetscInt k = 0; k < bc->ncomp; ++k) {
+      const PetscInt c = bc->comps[k];
+      PetscCheck(!bc->control[k], b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: a force control on rigid body %s is not supported yet; give its displacement", b->name, bc->group, b->name);
+      PetscCheck(by[c] < 0 || value[c] == bc->values[k], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s give its translation in %s the values %g and %g", b->name, b->bc[by[c]].group, bc->group, c ? "y" : "x", (double)value[c], (double)bc->values[k]);
+      by[c]    = i;
+      value[c] = bc->values[k];
+    }
+  }
+  for (PetscInt c = 0; c < 2; ++c) {
+    if (c == 0 && b->axisym) { /* r-z: the body moves along the axis alone */
+      PetscCheck(by[0] < 0 || value[0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[0]);
+      r->held[0] = PETSC_TRUE;
+      continue;
+    }
+    PetscCheck(by[c] >= 0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and no condition holds its translation in %s (-%s_bc_<group>_components): a free rigid motion is not supported yet", b->name, c ? "y" : "x", b->name);
+    r->held[c] = PETSC_TRUE;
+  }
+  r->t[0] = value[0]; /* at the full load until BodyRigidSetLoadFactor */
+  r->t[1] = value[1];
+  r->tFull[0] = value[0];
+  r->tFull[1] = value[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyRigidSetUp(Body b)
+{
+  BodyRigid  *r = b->rg;
+  PetscMPIInt rank;
+  PetscInt    n[2];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCall(MeshCheckCurvesFile(b->comm, b->msh));
+  PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
+  if (!rank) PetscCall(RigidReadCurves(b, r));
+  n[0] = r->nn;
+  n[1] = r->ne;
+  PetscCallMPI(MPI_Bcast(n, 2, MPIU_INT, 0, b->comm));
+  if (rank) {
+    r->nn = n[0];
+    r->ne = n[1];
+    PetscCall(PetscMalloc2(r->nn, &r->ids, 2 * r->nn, &r->X));
+    PetscCall(PetscMalloc2(3 * r->ne, &r->enodes, r->ne, &r->etag));
+  }
+  PetscCallMPI(MPI_Bcast(r->ids, (PetscMPIInt)r->nn, MPIU_INT, 0, b->comm));
+  PetscCallMPI(MPI_Bcast(r->X, (PetscMPIInt)(2 * r->nn), MPIU_REAL, 0, b->comm));
+  PetscCallMPI(MPI_Bcast(r->enodes, (PetscMPIInt)(3 * r->ne), MPIU_INT, 0, b->comm));
+  PetscCallMPI(MPI_Bcast(r->etag, (PetscMPIInt)r->ne, MPIU_INT, 0, b->comm));
+  if (r->centre[0] == PETSC_MAX_REAL) {
+    r->centre[0] = r->centre[1] = 0.0;
+    for (PetscInt i = 0; i < r->nn; ++i) {
+      r->centre[0] += r->X[2 * i] / r->nn;
+      r->centre[1] += r->X[2 * i + 1] / r->nn;
+    }
+  }
+  PetscCall(RigidConditions(b, r));
+  b->dim     = 2;
+  b->nlocal  = 0;
+  b->nglobal = 0;
+  PetscCall(VecCreateMPI(b->comm, 0, 0, &b->Xg));
+  PetscCall(VecDuplicate(b->Xg, &b->Gg));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, 0, &b->Xl));
+  PetscCall(VecDuplicate(b->Xl, &b->Gl));
+  PetscCall(PetscInfo(NULL, "body %s is rigid: %" PetscInt_FMT " nodes, %" PetscInt_FMT " lines, reference point (%g, %g)\n", b->name, r->nn, r->ne, (double)r->centre[0], (double)r->centre[1]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyRigidSetLoadFactor(Body b, PetscReal f)
+{
+  BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  r->t[0]  = f * r->tFull[0];
+  r->t[1]  = f * r->tFull[1];
+  r->theta = f * r->rotation;
+  PetscFunctionReturn(0);
+}
+
+void BodyRigidDisplacement(const Body b, const PetscReal X[2], PetscReal u[2])
+{
+  const BodyRigid *r = b->rg;
+  const PetscReal  dx = X[0] - r->centre[0], dy = X[1] - r->centre[1];
+  const PetscReal  c = PetscCosReal(r->theta), s = PetscSinReal(r->theta);
+
+  u[0] = r->t[0] + (c - 1.0) * dx - s * dy;
+  u[1] = r->t[1] + s * dx + (c - 1.0) * dy;
+}
+
+void BodyRigidZeroForce(Body b)
+{
+  b->rg->force[0] = b->rg->force[1] = b->rg->moment = 0.0;
+}
+
+void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal g[])
+{
+  BodyRigid *r = b->rg;
+
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscReal u[2], d[2];
+    BodyRigidDisplacement(b, &X[2 * i], u);
+    d[0] = X[2 * i] + u[0] - r->centre[0] - r->t[0];
+    d[1] = X[2 * i + 1] + u[1] - r->centre[1] - r->t[1];
+    r->force[1] += g[2 * i + 1];
+    if (b->axisym) continue; /* r-z: the radial parts cancel round the ring, and the body turns about no axis */
+    r->force[0] += g[2 * i];
+    r->moment += d[0] * g[2 * i + 1] - d[1] * g[2 * i];
+  }
+}
+
+/* Each condition's reaction: the force's components it holds (a component
+   held by several groups: the first carries it). */
+PetscErrorCode BodyRigidComputeReactions(Body b)
+{
+  PetscBool given[2] = {PETSC_FALSE, PETSC_FALSE};
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC *bc = &b->bc[i];
+    bc->reaction[0] = bc->reaction[1] = 0.0;
+    for (PetscInt k = 0; k < bc->ncomp; ++k) {
+      const PetscInt c = bc->comps[k];
+      if (given[c]) continue;
+      bc->reaction[c] = b->rg->force[c];
+      given[c]        = PETSC_TRUE;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyRigidGroupEdges(Body b, PetscInt tag, PetscInt *n, PetscInt **edges)
+{
+  const BodyRigid *r = b->rg;
+  PetscInt         k = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(r->ne + 1, edges));
+  for (PetscInt e = 0; e < r->ne; ++e)
+    if (r->etag[e] == tag) (*edges)[k++] = e;
+  *n = k;
+  PetscFunctionReturn(0);
+}
+
+PetscBool BodyRigidClosed(const Body b)
+{
+  const BodyRigid *r = b->rg;
+  PetscInt        *deg;
+  PetscBool        closed = PETSC_TRUE;
+
+  if (PetscCalloc1(r->nn, &deg)) return PETSC_FALSE;
+  for (PetscInt e = 0; e < r->ne; ++e) {
+    deg[r->enodes[3 * e]]++;
+    deg[r->enodes[3 * e + 1]]++;
+  }
+  for (PetscInt v = 0; v < r->nn; ++v) closed = (PetscBool)(closed && (deg[v] == 0 || deg[v] == 2));
+  (void)PetscFree(deg);
+  return closed;
+}
+
+/* Even-odd rule over the lines as polylines (corner, middle, corner): a
+   ray from p along +x crosses the boundary an odd number of times. */
+PetscBool BodyRigidInside(const Body b, const PetscReal p[2])
+{
+  const BodyRigid *r = b->rg;
+  PetscInt         cross = 0;
+
+  for (PetscInt e = 0; e < r->ne; ++e) {
+    const PetscInt order[3] = {r->enodes[3 * e], r->enodes[3 * e + 2], r->enodes[3 * e + 1]};
+    for (PetscInt k = 0; k < 2; ++k) {
+      const PetscReal *a = &r->X[2 * order[k]], *c = &r->X[2 * order[k + 1]];
+      if ((a[1] > p[1]) != (c[1] > p[1])) {
+        const PetscReal x = a[0] + (p[1] - a[1]) * (c[0] - a[0]) / (c[1] - a[1]);
+        if (x > p[0]) cross++;
+      }
+    }
+  }
+  return (PetscBool)(cross % 2);
+}
+
+PetscErrorCode BodyRigidDestroy(Body b)
+{
+  PetscFunctionBeginUser;
+  if (!b->rg) PetscFunctionReturn(0);
+  PetscCall(PetscFree2(b->rg->ids, b->rg->X));
+  PetscCall(PetscFree2(b->rg->enodes, b->rg->etag));
+  PetscCall(PetscFree(b->rg));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,229 @@
+"""Rigid bodies (-<body>_rigid), first form: a body given by its curves alone,
+moved rigidly by its conditions (translation) and -<body>_rigid_rotation,
+with no dofs. The scene meshes/rigid-hertz: a rigid cylinder (R = 1) and the
+elastic block (E = 1000, nu = 0.3) pushed onto it by 0.0095, graded to a/10
+at the contact. Each figure against an independent answer: Hertz's line
+contact with E* = E / (1 - nu^2), the elastic body made stiffer (the rigid
+answer is its limit), the same relative motion given to the other body,
+a rotation of a circle about its centre, another rank count."""
+import math
+from pathlib import Path
+
+import pytest
+
+from conftest import run_contact
+from rigid_study import PUNCH, sadowsky_l2, stiff_options
+
+SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
+
+
+@pytest.fixture(scope="module")
+def rigid_run(tmp_path_factory):
+    """The scene as given (mortar; the elastic block is the slave)."""
+    tmp = tmp_path_factory.mktemp("rigid")
+    return run_contact(SCENE, tmp)
+
+
+@pytest.fixture(scope="module")
+def rigid(rigid_run):
+    return rigid_run.summary
+
+
+def hertz_errors(s):
+    return s["fem_pmax"] / s["hertz_pmax"] - 1, s["fem_a_moment"] / s["hertz_a"] - 1
+
+
+@pytest.mark.parametrize("formulation", ["mortar", "gpts"])
+def test_hertz(formulation, rigid, tmp_path):
+    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 - nu^2)
+    (the block's alone: 1098.9), at a / h of 10: p_max within 1 % and the
+    second-moment half-width within 1 % (measured mortar -0.33 % and +0.41 %,
+    gpts +0.43 % and -0.36 %)."""
+    s = rigid if formulation == "mortar" else run_contact(SCENE + ["-contact_formulation", formulation, "-output", "none"], tmp_path).summary
+    assert s["E_star"] == pytest.approx(1000 / (1 - 0.3 ** 2), rel=1e-12)
+    dp, da = hertz_errors(s)
+    print(f"{formulation}: p_max {dp:+.2%}, a {da:+.2%}")
+    assert abs(dp) <= 0.01 and abs(da) <= 0.01
+
+
+def test_rigid_slave(tmp_path):
+    """The rigid surface as mortar's slave (-contact_mortar_slave first; the
+    automatic choice takes the softer body, the block): p_max within 2 % and
+    the half-width within 2 % of Hertz (measured +1.45 % and -1.41 %). A
+    rigid slave finer than its master oscillates (its nodes ask more than
+    the master's can give): at the disc's hc = 0.0038, p_max +13.9 %."""
+    s = run_contact(SCENE + ["-contact_mortar_slave", "first", "-output", "none"], tmp_path).summary
+    dp, da = hertz_errors(s)
+    print(f"rigid slave: p_max {dp:+.2%}, a {da:+.2%}")
+    assert abs(dp) <= 0.02 and abs(da) <= 0.02
+
+
+def test_stiff_limit(rigid, tmp_path):
+    """The rigid answer is the limit of the elastic disc made stiffer: at
+    E = 1e8 (1e5 times the block's) P is 1.46e-5 from the rigid one, at
+    1e10 4.7e-7, the O(1/E) of the disc's own compliance (bounds 4e-5 and
+    2e-6); p_max alike (1.28e-5, 7.3e-7). The rigid disc has no dofs: 6672
+    against 14028."""
+    for E, bound in ((1e8, 4e-5), (1e10, 2e-6)):
+        s = run_contact(["-options_file", stiff_options(tmp_path, E), "-output", "none"], tmp_path, name=f"E{E:g}").summary
+        dP = rigid["contact_force"] / s["contact_force"] - 1
+        dp = rigid["fem_pmax"] / s["fem_pmax"] - 1
+        print(f"E = {E:g}: P {dP:.2e}, p_max {dp:.2e}; dofs {rigid['dofs']} against {s['dofs']}")
+        assert abs(dP) <= bound and abs(dp) <= bound
+    assert rigid["dofs"] < s["dofs"] / 2
+
+
+def test_motion_given_to_the_rigid_body(rigid, tmp_path):
+    """The same relative motion given to the rigid disc (translated by
+    +0.0095) with the block held gives the same answer: P to the solver's
+    stop (measured 1.6e-10, bound 1e-8)."""
+    s = run_contact(SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "0.0095,0", "-output", "none"], tmp_path).summary
+    d = s["contact_force"] / rigid["contact_force"] - 1
+    print(f"P {d:.2e}; the disc's translation {s['bodies']['indenter']['translation']}")
+    assert s["bodies"]["indenter"]["translation"] == [0.0095, 0]
+    assert abs(d) <= 1e-8
+
+
+def test_rotation_about_centre(rigid, tmp_path):
+    """A circle turned about its centre is the same circle: the rigid disc
+    rotated by 0.05 rad about (-1, 0) gives the same P to the solver's stop
+    (its nodes move along the arc, which their quadratic edges follow:
+    measured 1.4e-9, bound 1e-8), and the contact's moment about the centre
+    is nil beside P R (frictionless: every normal passes through the centre;
+    measured 6.9e-10, bound 1e-8)."""
+    s = run_contact(SCENE + ["-indenter_rigid_centre", "-1,0", "-indenter_rigid_rotation", "0.05", "-output", "none"], tmp_path).summary
+    ind = s["bodies"]["indenter"]
+    d = s["contact_force"] / rigid["contact_force"] - 1
+    m = ind["moment"] / (s["contact_force"] * 1.0)
+    print(f"P {d:.2e}, moment / (P R) {m:.2e}, rotation {ind['rotation']}")
+    assert ind["rotation"] == 0.05 and ind["centre"] == [-1, 0]
+    assert abs(d) <= 1e-8
+    assert abs(m) <= 1e-8
+
+
+def test_balance(rigid):
+    """The rigid body's force is the contact's (its reaction, through the
+    condition that holds it), to round-off; and the block's support carries
+    it back to the solver's stop (the block's residual: measured 1.8e-10 of
+    P, bound 1e-9)."""
+    P = rigid["contact_force"]
+    ind = rigid["bodies"]["indenter"]
+    r_ind, r_block = rigid["reactions"]["indenter:back"], rigid["reactions"]["block:push"]
+    print(ind, r_ind, r_block)
+    assert ind["rigid"] and ind["dofs"] == 0
+    assert math.hypot(*ind["force"]) == pytest.approx(P, rel=1e-12)
+    assert r_ind == ind["force"]
+    assert abs(r_ind[0] + r_block[0]) <= 1e-9 * P and abs(r_ind[1] + r_block[1]) <= 1e-9 * P
+
+
+def test_ranks(rigid, tmp_path):
+    """2 ranks give the 1-rank answer: P and p_max to 1e-11 (measured 4.6e-13
+    and 2.8e-15)."""
+    s = run_contact(SCENE, tmp_path, ranks=2).summary
+    for k in ("contact_force", "fem_pmax"):
+        print(k, s[k] / rigid[k] - 1)
+        assert s[k] == pytest.approx(rigid[k], rel=1e-11)
+    assert s["bodies"]["indenter"]["force"][0] == pytest.approx(rigid["bodies"]["indenter"]["force"][0], rel=1e-11)
+
+
+@pytest.mark.parametrize("args,words", [
+    (["-indenter_bc_back_control", "force,displacement"], ["-indenter_bc_back_control", "rigid", "not supported"]),
+    (["-indenter_bc_back_components", "x", "-indenter_bc_back_values", "0"], ["rigid", "translation in y", "not supported"]),
+    (["-indenter_rigid_rotation", "nan"], ["-indenter_rigid_rotation", "finite"]),
+    (["-indenter_rigid_centre", "1"], ["-indenter_rigid_centre", "two numbers"]),
+    (["-indenter_E", "1000"], ["-indenter_E", "rigid", "no elastic constants"]),
+    (["-accuracy", "0.05"], ["-accuracy", "rigid", "not supported"]),
+])
+def test_refused(args, words, tmp_path):
+    """What a rigid body cannot do yet, or a bad value: one line naming it,
+    status 1, no output."""
+    r = run_contact(SCENE + args, tmp_path, check=False)
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    assert r.returncode == 1 and len(lines) == 1, r.stderr[-2000:]
+    for w in words:
+        assert w in lines[0], lines[0]
+    assert not r.summary_path.exists() and not r.output_path.exists()
+
+
+def test_no_curves(tmp_path):
+    """A rigid body's mesh without line elements: one line naming the file."""
+    geo = Path(tmp_path) / "dot.geo"
+    geo.write_text("Point(1) = {xc + R + 0 * yc * xcontact * hc, 0, 0, h};\nPhysical Point(\"back\") = {1};\nMesh.ElementOrder = 2;\n")
+    r = run_contact(SCENE + ["-indenter_geo", geo], tmp_path, check=False)
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    assert r.returncode == 1 and len(lines) == 1, r.stderr[-2000:]
+    assert "line" in lines[0] and ".msh" in lines[0], lines[0]
+
+
+
+@pytest.mark.parametrize("slave", ["auto", "second"])
+def test_punch_sadowsky(slave, tmp_path):
+    """A rigid flat punch (its four sides alone, square corners) pressed into
+    a soft block: the slave's pressure within 3 % of Sadowsky's over
+    |x| < 0.6 b, either slave (auto: the punch, whose face ends on the
+    block, measured 0.85 %; the block, 0.39 %), and the two P within 0.5 %
+    of each other (measured 0.15 %). The elastic punch at E = 1e5 to 1e7
+    solved to gttol 1e-14 tends to the rigid P (0.150262, 0.150320,
+    0.150326 against 0.150331); at the default stop the E = 1e7 punch ends
+    at 0.151127, its gradient dominated by the stiff punch's residual."""
+    r = run_contact(PUNCH + ["-contact_mortar_slave", slave], tmp_path)
+    P = r.summary["contact"]["tool"]["P"]
+    with r.h5() as h5:
+        name, err = sadowsky_l2(h5, P)
+    print(f"slave {slave} ({name}): P = {P:.6f}, {100 * err:.2f} % from Sadowsky")
+    assert name == ("punch_contact" if slave == "auto" else "block_contact")
+    assert err <= 0.03
+    assert P == pytest.approx(0.150331, rel=5e-3)
+
+
+def test_sphere_rz(tmp_path):
+    """A rigid ball (its meridian's curves) on an elastic flat in r-z: Hertz's
+    point contact with E* = E / (1 - nu^2), p_max and the second-moment a
+    within 1 % (measured +0.44 % and -0.09 %); the ball moves along the axis
+    alone, and its force is the contact's, along the axis (pressing it up)."""
+    s = run_contact(["-options_file", "meshes/rigid-sphere/rigid-sphere.opts", "-output", "none"], tmp_path).summary
+    dp, da = hertz_errors(s)
+    ball = s["bodies"]["ball"]
+    print(f"sphere: p_max {dp:+.2%}, a {da:+.2%}; ball {ball}")
+    assert abs(dp) <= 0.01 and abs(da) <= 0.01
+    assert ball["translation"] == [0, -0.01]
+    assert ball["force"][0] == 0 and ball["moment"] == 0
+    assert -ball["force"][1] == pytest.approx(s["contact_force"], rel=1e-12)
+
+
+def test_ssnv104_rigid_plane(tmp_path):
+    """SSNV104 with its plane of symmetry rigid (the line y = 0 alone) gives
+    the stiff flat's figures with half the dofs (9,044 against 18,228): P
+    8.7e-5 above it (the flat, 10^4 times stiffer than the sphere, gives way
+    by about 1e-4 of the approach; bound 2e-4), p_max and the second-moment
+    a within 3e-4 of it (measured 1.0e-4 and -5e-6)."""
+    r = run_contact(["-options_file", "meshes/ssnv104-rigid/ssnv104-rigid.opts", "-output", "none"], tmp_path, name="rigid").summary
+    e = run_contact(["-options_file", "meshes/ssnv104/ssnv104.opts", "-output", "none"], tmp_path, name="stiff").summary
+    dP = r["contact_force"] / e["contact_force"] - 1
+    dp, da = r["fem_pmax"] / e["fem_pmax"] - 1, r["fem_a_moment"] / e["fem_a_moment"] - 1
+    print(f"P {dP:.2e}, p_max {dp:.2e}, a {da:.2e}; dofs {r['dofs']} against {e['dofs']}")
+    assert 0 < dP <= 2e-4
+    assert abs(dp) <= 3e-4 and abs(da) <= 3e-4
+    assert r["dofs"] < 0.6 * e["dofs"]
+
+
+def test_output(rigid_run, tmp_path):
+    """The HDF5 holds the rigid body's motion, force and outline (its 204
+    nodes at their current positions, its lines), no fields; the report
+    prints its line; the plots draw it by its outline."""
+    import subprocess
+    import sys
+    from conftest import ROOT
+    with rigid_run.h5() as h5:
+        g = h5["bodies/indenter"]
+        assert g.attrs["rigid"] == 1 and "displacement" not in g
+        assert g.attrs["force_x"] == pytest.approx(rigid_run.summary["bodies"]["indenter"]["force"][0], rel=1e-15)
+        x, lines = g["line_x"][()].reshape(-1, 2), g["lines"][()].reshape(-1, 3)
+        assert len(x) == rigid_run.summary["bodies"]["indenter"]["nodes"] == 204
+        r = ((x[:, 0] + 1) ** 2 + x[:, 1] ** 2) ** 0.5   # the circle, held: radius 1 about (-1, 0)
+        assert abs(r - 1).max() <= 1e-12 and lines.max() < len(x)
+    assert "rigid body indenter: moved (0., 0.)" in rigid_run.stdout
+    for extra in ([], ["--field"]):
+        p = subprocess.run([sys.executable, "scripts/plot_hertz.py", str(rigid_run.output_path), *extra, "-o",
+                            str(tmp_path / f"p{len(extra)}.png")], cwd=ROOT, capture_output=True, text=True, timeout=120)
+        assert p.returncode == 0, p.stderr
