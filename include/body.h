@@ -28,8 +28,14 @@ PetscErrorCode BodySetLoadFactor(Body, PetscReal);
    the value U (a force-controlled component's displacement). */
 PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
+/* Collective: how many energy evaluations found the body inverted (J <= 0
+   at a quadrature point: +inf), and where one did (reference x, y). */
+PetscErrorCode BodyGetInversions(Body, PetscInt *n, PetscReal xy[2]);
 PetscErrorCode BodyAssembleHessian(Body, Mat H);
 PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
+/* The tangent stiffness at the body's local vector Xl, added into H (l2b
+   indices): the stiffness at rest for a material of constant tangent. */
+PetscErrorCode BodyAssembleTangent(Body, Vec Xl, Mat H);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 /* A body's errors against its exact solution, if any (zero without one), with
    the exact solution's norms: L2 of u, energy norm, L2 of the stress. */
@@ -44,9 +50,13 @@ typedef struct {
   PetscInt  nnodes, ncells;
   PetscReal umax, unorm2;
   BodyErrors err; /* against the body's exact solution, if any */
+  PetscReal maxStrain; /* the largest principal Green-Lagrange strain (BodyComputeMaxStrain) */
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
 PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);
+/* Collective: the largest principal Green-Lagrange strain, in magnitude,
+   over the body's quadrature points (fields.c). */
+PetscErrorCode BodyComputeMaxStrain(Body, Vec Xl, PetscReal *emax);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
    of the recovered (nodal-average) stress minus the cell's stress. */
 PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);

@@ -5,6 +5,7 @@
    It calls none of them. */
 #include "contact.h"
 #include "exact.h"
+#include "material.h"
 
 /* A Dirichlet condition: a named physical group (or the program's own
    points: the axis's, an anchor's), constrained components and values. A force-controlled component (-<body>_bc_<group>_control force)
@@ -45,6 +46,8 @@ struct _n_Body {
   char     *geoparams[16];
   char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement, BodySetSizeField), or empty */
   PetscReal E, nu, param[2]; /* param = {lambda, mu} */
+  const Material *mat;       /* -<body>_material: its kernels (material.h) */
+  PetscInt  inverted; PetscReal invertedAt[2]; /* energy evaluations that found J <= 0, and where the last one did (reference x, y) */
   PetscInt  nbc, qdeg;
   void     *bcctx[CONTACT_MAX_BC][2];
   BodyBC    bc[CONTACT_MAX_BC];

@@ -34,4 +34,5 @@ void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscRe
 void ElasticityTangent(const PetscReal params[], PetscReal C[]);
 PetscReal ElasticityStress33(const PetscReal params[], const PetscReal gradu[], PetscReal e3);
 PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r);
+void ElasticityAddTangent(const PetscReal C[], PetscInt nb, PetscReal w, const PetscReal dN[], PetscScalar K[]);
 PetscReal ElasticityVonMises(PetscReal sxx, PetscReal syy, PetscReal szz, PetscReal sxy);

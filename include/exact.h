@@ -12,6 +12,8 @@ typedef struct {
   void (*u)(const PetscReal params[], const PetscReal x[], PetscReal u[]);
   void (*du)(const PetscReal params[], const PetscReal x[], PetscReal du[]);
   void (*f)(const PetscReal params[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[]);
+  /* d2u[(k*2+J)*2+L] = d2u_k/dx_J dx_L, for another material's body force (body.c); NULL: none (lame) */
+  void (*d2u)(const PetscReal params[], const PetscReal x[], PetscReal d2u[]);
   PetscBool axisymmetric; /* a solution in r-z (-axisymmetric), else in plane strain */
 } ExactSolution;
 

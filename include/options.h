@@ -50,6 +50,8 @@ PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject,
 PetscErrorCode ContactOptionsString(PetscOptionItems *, const char opt[], const char text[], const char man[], const char current[], char value[], size_t len, PetscBool *set);
 PetscErrorCode ContactOptionsStringArray(PetscOptionItems *, const char opt[], const char text[], const char man[], char *value[], PetscInt *n, PetscBool *set);
 PetscErrorCode ContactOptionsFList(PetscOptionItems *, const char opt[], const char text[], const char man[], PetscFunctionList, const char current[], char value[], size_t len, PetscBool *set);
+/* The names in list, "a, b, c", for an error that lists the known ones. */
+PetscErrorCode ContactOptionsListNames(PetscFunctionList list, char known[], size_t len);
 /* Whether value is the one given to an option given without a value (as
    -options_left and the unused-option check show it: without a value). */
 PetscBool      ContactOptionsGivenWithoutValue(const char value[]);

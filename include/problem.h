@@ -30,6 +30,10 @@ PetscErrorCode ProblemComputeHessian(Tao, Vec, Mat, Mat, void *);
 /* -contact_hessian auto: the gradient norm the switch to the exact Hessian
    is relative to (-1: the first Hessian's of each TAO solve). */
 PetscErrorCode ProblemSetHessianSwitchReference(Problem, PetscReal g0);
+/* Whether a body's tangent depends on u (a neohookean body): K is then
+   reassembled at every Hessian, and the steps that condense it once (the
+   Schur step, L-BFGS's contact H0) do not apply. */
+PetscBool      ProblemTangentVaries(Problem);
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */

@@ -8,6 +8,7 @@ quoting them, generated from committed results, and the README's picture.
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
     python3 scripts/readme_figures.py --measure rigid [--update]
+    python3 scripts/readme_figures.py --measure model [--update]
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
 
@@ -41,6 +42,9 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
+- model: bench/model/results.json (written by --measure model: the reference
+  scene pushed by 0.01, 0.05, 0.15 and 0.3 with both bodies linear and both
+  neo-Hookean, the model's error against the largest strain; half a minute);
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -508,6 +512,39 @@ def render_axisymmetric():
     return "\n".join(out) + "\n"
 
 
+MODEL_PUSHES = [0.01, 0.05, 0.15, 0.3]   # the reference scene's push is 0.15
+
+
+def measure_model():
+    """The reference scene (h = 0.1) pushed by each of MODEL_PUSHES, both
+    bodies linear and both neo-Hookean: P, p_max, the second-moment a, the
+    largest Green-Lagrange strain of either body and Newton's iterations."""
+    from contactrun import run_checked
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for d in MODEL_PUSHES:
+            for m in ("linear", "neohookean"):
+                args = ["-options_file", "meshes/hertz/hertz.opts", "-indenter_material", m, "-block_material", m,
+                        "-block_bc_push_values", f"{-d!r},0"]
+                s = run_checked(args, tmp, "m").summary
+                rows.append(dict(push=d, material=m, command="bin/contact " + " ".join(args), P=s["contact_force"],
+                                 fem_pmax=s["fem_pmax"], fem_a=s["fem_a_moment"], iterations=s["iterations"],
+                                 strain=max(b["max_green_lagrange_strain"] for b in s["bodies"].values())))
+    save("model", rows)
+
+
+def render_model():
+    rows = load("model")
+    out = ["| push | largest strain | P: linear / neo-Hookean | p_max: linear / neo-Hookean | a: linear / neo-Hookean | Newton iterations |",
+           "|---|---|---|---|---|---|"]
+    for d in sorted({r["push"] for r in rows}):
+        lin, nh = ([r for r in rows if r["push"] == d and r["material"] == m][0] for m in ("linear", "neohookean"))
+        cells = [f"{lin[k]:.5g} / {nh[k]:.5g} ({100 * (nh[k] / lin[k] - 1):+.2f} %)" for k in ("P", "fem_pmax", "fem_a")]
+        out.append(f"| {d:g} | {100 * lin['strain']:.3g} % / {100 * nh['strain']:.3g} % | " + " | ".join(cells)
+                   + f" | {lin['iterations']} / {nh['iterations']} |")
+    return "\n".join(out) + "\n"
+
+
 def measure_rigid():
     """The rigid bodies' scenes against their references (rigid_study.py)."""
     import rigid_study
@@ -819,7 +856,7 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
-          "penalty": render_penalty, "claims": render_claims}
+          "penalty": render_penalty, "claims": render_claims, "model": render_model}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
            "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
@@ -925,7 +962,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "claims"], action="append",
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "claims", "model"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -942,6 +979,8 @@ def main():
         measure_rigid()
     if "claims" in args.measure:
         measure_claims()
+    if "model" in args.measure:
+        measure_model()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:

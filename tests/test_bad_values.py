@@ -35,7 +35,7 @@ DOMAINS = {
     "lmvm_restarts": ("int", 0, False), "lmvm_pair_ratio": ("real", 1.0, False), "lmvm_decrement_rtol": REAL_NONNEG, "contact_hessian": ("choice",),
     "contact_formulation": ("choice",), "contact_interface_formulation": ("choice",),
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
-    "indenter_exact": ("choice",), "block_exact": ("choice",),
+    "indenter_exact": ("choice",), "block_exact": ("choice",), "indenter_material": ("choice",), "block_material": ("choice",),
     "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
     "partition_view": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),

@@ -107,6 +107,8 @@ PetscErrorCode BodyAddAnchors(Body b)
     PetscCall(PetscFree(xy));
     PetscFunctionReturn(0);
   }
+  /* an anchor is a force control, whose border is K e_k, a constant stiffness (forcecontrol.c) */
+  PetscCheck(b->mat->constantTangent, b->comm, PETSC_ERR_USER_INPUT, "body %s: held by its contacts alone, it would be anchored by force controls, which need a constant stiffness, and -%s_material %s has none: hold it by a Dirichlet condition", b->name, b->name, b->mat->name);
   { /* A: the loaded vertex nearest the loaded vertices' centroid (least (x, y) on a tie) */
     PetscReal m[3] = {0, 0, 0}, dbest = PETSC_MAX_REAL, dmin;
     PetscBool *on;

@@ -1,6 +1,7 @@
 /* An elastic body: options, mesh (Gmsh -> DMPlex), P2/Q2 displacement with
    Dirichlet constraints, the per-cell geometry cache and the element loops that
-   evaluate the pointwise kernels of elasticity.c. It orchestrates the body's
+   evaluate the pointwise kernels of the body's material (material.h:
+   elasticity.c, neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
    take what they share from bodycore.c and rigid.c, below them all. */
 #include "body.h"
@@ -36,7 +37,7 @@ static PetscErrorCode CheckFinite(MPI_Comm comm, const char opt[], PetscReal v)
 
 PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
 {
-  char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none";
+  char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none", material[64] = "linear";
   char     *bcnames[CONTACT_MAX_BC];
   PetscInt  nbc = CONTACT_MAX_BC, ngp = 16;
   PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, setE, setNu, help;
@@ -54,6 +55,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(PetscOptionsBool("-rigid", "A rigid body: its mesh gives only its curves, its motion is rigid (-<body>_rigid_centre, _rigid_rotation); E and nu are not asked for", NULL, b->rigid, &b->rigid, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
+  PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain) or neohookean (compressible neo-Hookean, finite strain)", NULL, MaterialList, material, material, sizeof(material), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
   PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
@@ -92,6 +94,13 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCheck(b->h > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: mesh size must be > 0, got %g", opt, (double)b->h);
   if (meshSizeOverride > 0) b->h = meshSizeOverride;
   PetscCheck(qdeg >= 2 && qdeg <= 12, b->comm, PETSC_ERR_USER_INPUT, "option -%squadrature_degree: must be in [2, 12], got %" PetscInt_FMT, prefix, qdeg);
+  PetscCall(MaterialFind(material, &b->mat));
+  if (!b->mat) {
+    char known[256];
+    PetscCall(ContactOptionsListNames(MaterialList, known, sizeof(known)));
+    SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: unknown material '%s' (known: %s)", prefix, material, known);
+  }
+  PetscCheck(!b->rigid || b->mat->constantTangent, b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: body %s is rigid (-%srigid): it has no material", prefix, b->name, prefix);
   b->param[1] = b->E / (2.0 * (1.0 + b->nu));
   b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
   for (PetscInt k = 0; k < b->exact.nparams; ++k) {
@@ -104,6 +113,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
+    /* another material's body force comes from the solution's second derivatives (BodyExactForce) */
+    PetscCheck(b->mat->constantTangent || b->exact.d2u, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' has linear elasticity's body force only; with -%smaterial %s, affine and trig are exact", prefix, exact, prefix, b->mat->name);
     b->hasExact      = PETSC_TRUE;
     b->exact.lambda  = b->param[0];
     b->exact.mu      = b->param[1];
@@ -116,6 +127,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCall(PetscFree(bcnames[i]));
     PetscCall(BodyBCSetFromOptions(b, prefix, &b->bc[i]));
   }
+  for (PetscInt i = 0; i < nbc; ++i) /* force control's border is K e_k, a constant stiffness (forcecontrol.c) */
+    PetscCheck(b->mat->constantTangent || (!b->bc[i].control[0] && !b->bc[i].control[1]), b->comm, PETSC_ERR_USER_INPUT, "option -%sbc_%s_control: force control needs a constant stiffness, and -%smaterial %s has none: control the displacement", prefix, b->bc[i].group, prefix, b->mat->name);
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
   PetscCheck(!b->rigid || !b->nload, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
   PetscCheck(!b->rigid || !b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s is rigid: it has no exact solution", prefix, b->name);
@@ -435,14 +448,43 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
   PetscFunctionReturn(0);
 }
 
+/* The exact solution's body force at x, f = -div P(F(u)), times the load
+   factor (a load, as the Dirichlet values it goes with): its own (linear
+   elasticity's) for a material of constant tangent, else from the
+   material's tangent at grad u and the solution's second derivatives,
+   f_i = -A_iJkL d2u_k/dx_J dx_L (plane strain). */
+static void BodyExactForce(Body b, const PetscReal x[], PetscReal f[])
+{
+  PetscReal du[4], d2u[8], A[16], a3[4], a33;
+
+  if (b->mat->constantTangent) b->exact.f(b->exact.params, b->param[0], b->param[1], x, f);
+  else {
+    b->exact.du(b->exact.params, x, du);
+    b->exact.d2u(b->exact.params, x, d2u);
+    b->mat->moduli(b->param, du, 0.0, A, a3, &a33);
+    for (PetscInt i = 0; i < 2; ++i) {
+      f[i] = 0.0;
+      for (PetscInt J = 0; J < 2; ++J)
+        for (PetscInt k = 0; k < 2; ++k)
+          for (PetscInt L = 0; L < 2; ++L) f[i] -= A[((i * 2 + J) * 2 + k) * 2 + L] * d2u[(k * 2 + J) * 2 + L];
+    }
+  }
+  f[0] *= b->loadFactor;
+  f[1] *= b->loadFactor;
+}
+
 /* Pi_b(u) = int W(grad u) dA - int f . u dA - (the loads' f) . u (loads.c)
-   and its gradient, added into Gl. */
+   and its gradient, added into Gl, W the body's material's. Where the
+   material is inverted (J <= 0 at a quadrature point), Pi_b is +inf and the
+   gradient is left partial (finite): the line search that asked backs off,
+   and b->inverted counts the evaluation. */
 PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec Gl)
 {
   const PetscScalar *x;
   PetscScalar       *g;
   PetscReal          e = 0.0;
   const PetscInt     nb = b->nb, nq = b->nq;
+  PetscBool          inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   if (b->rigid) { /* no elastic energy; the contact terms add its force */
@@ -453,7 +495,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Gl, &g));
-  for (PetscInt c = 0; c < b->ncells; ++c) {
+  for (PetscInt c = 0; c < b->ncells && !inverted; ++c) {
     const PetscInt *dof = &b->cdof[c * nb];
     PetscReal       u[9][2], ge[9][2];
 
@@ -466,7 +508,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
       const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
       const PetscReal  w  = b->wdetJ[c * nq + iq];
       const PetscReal *B  = &b->B[iq * nb];
-      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4], e3 = 0.0, s3r = 0.0;
+      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4], e3 = 0.0, s3r = 0.0, s3, r = 0.0;
 
       for (PetscInt a = 0; a < nb; ++a) {
         gu[0] += u[a][0] * dN[2 * a];
@@ -475,14 +517,18 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
         gu[3] += u[a][1] * dN[2 * a + 1];
       }
       if (b->axisym) { /* the hoop strain u_r / r, at a quadrature point (r > 0) */
-        const PetscReal r  = b->xq[(c * nq + iq) * 2];
-        PetscReal       ur = 0.0;
+        PetscReal ur = 0.0;
+        r = b->xq[(c * nq + iq) * 2];
         for (PetscInt a = 0; a < nb; ++a) ur += B[a] * u[a][0];
-        e3  = ElasticityHoopStrain(ur, gu[0], r);
-        s3r = ElasticityStress33(b->param, gu, e3) / r;
+        e3 = ElasticityHoopStrain(ur, gu[0], r);
       }
-      ElasticityEnergyDensity(b->param, gu, e3, &W);
-      ElasticityStress(b->param, gu, e3, s);
+      if (!b->mat->energy(b->param, gu, e3, &W, s, &s3)) {
+        inverted         = PETSC_TRUE;
+        b->invertedAt[0] = b->xq[(c * nq + iq) * 2];
+        b->invertedAt[1] = b->xq[(c * nq + iq) * 2 + 1];
+        break;
+      }
+      if (b->axisym) s3r = s3 / r;
       e += w * W;
       for (PetscInt a = 0; a < nb; ++a) {
         ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1] + s3r * B[a]);
@@ -490,7 +536,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
       }
       if (b->hasExact) {
         PetscReal f[2], uq[2] = {0, 0};
-        b->exact.f(b->exact.params, b->param[0], b->param[1], &b->xq[(c * nq + iq) * 2], f);
+        BodyExactForce(b, &b->xq[(c * nq + iq) * 2], f);
         for (PetscInt a = 0; a < nb; ++a) {
           uq[0] += B[a] * u[a][0];
           uq[1] += B[a] * u[a][1];
@@ -512,7 +558,27 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecRestoreArray(Gl, &g));
   PetscCall(PetscLogFlops(b->ncells * nq * (nb * 16.0 + 30.0)));
   PetscCall(PetscLogEventEnd(contactLog.elasEnergyGrad, 0, 0, 0, 0));
-  *energy = e;
+  if (inverted) {
+    b->inverted++;
+    PetscCall(PetscInfo(NULL, "body %s: J <= 0 at (%g, %g): energy +inf\n", b->name, (double)b->invertedAt[0], (double)b->invertedAt[1]));
+  }
+  *energy = inverted ? (PetscReal)INFINITY : e;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyGetInversions(Body b, PetscInt *n, PetscReal xy[2])
+{
+  PetscMPIInt rank, size, first;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(b->comm, &size));
+  PetscCall(MPIU_Allreduce(&b->inverted, n, 1, MPIU_INT, MPI_SUM, b->comm));
+  first = b->inverted ? rank : size;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
+  xy[0] = b->invertedAt[0];
+  xy[1] = b->invertedAt[1];
+  if (first < size) PetscCallMPI(MPI_Bcast(xy, 2, MPIU_REAL, first, b->comm));
   PetscFunctionReturn(0);
 }
 
@@ -525,49 +591,41 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   PetscFunctionReturn(0);
 }
 
-/* K_(a i)(b j) = int dN_a/dx_k C_ikjl dN_b/dx_l dA over this rank's cells,
-   added into H at rows and columns map[local dof] (negative: left out). With
-   the joined vector's map l2b, the assembled stiffness; with a map onto the
-   rank's own dofs, its subdomain stiffness (substructure.c). */
-PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
+/* K_(a i)(b j) = int d2W/du_(a i) du_(b j) dA over this rank's cells, at
+   the displacement x (a local array; NULL: at rest, where every material's
+   tangent is linear elasticity's, int dN_a/dx_k C_ikjl dN_b/dx_l dA), added
+   into H at rows and columns map[local dof] (negative: left out). */
+static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], const PetscInt map[], Mat H)
 {
   const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
-  PetscReal      C[16];
   PetscScalar    K[18 * 18];
   PetscInt       idx[18];
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
-  ElasticityTangent(b->param, C);
   for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[9][2];
     for (PetscInt a = 0; a < nb; ++a) {
       idx[2 * a]     = map[b->cdof[c * nb + a]];
       idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
+      u[a][0]        = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
+      u[a][1]        = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
     }
     PetscCall(PetscArrayzero(K, n * n));
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
-      const PetscReal  w  = b->wdetJ[c * nq + iq];
-      PetscReal        G[9][2][2][2]; /* w dN_a/dx_k C_ikjl, summed over k */
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
+      const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
+      PetscReal        gu[4] = {0, 0, 0, 0}, e3 = 0.0, ur = 0.0;
 
-      for (PetscInt a = 0; a < nb; ++a)
-        for (PetscInt i = 0; i < 2; ++i)
-          for (PetscInt j = 0; j < 2; ++j)
-            for (PetscInt l = 0; l < 2; ++l) G[a][i][j][l] = w * (dN[2 * a] * C[((i * 2) * 2 + j) * 2 + l] + dN[2 * a + 1] * C[((i * 2 + 1) * 2 + j) * 2 + l]);
-      for (PetscInt a = 0; a < nb; ++a) /* the upper blocks (bb >= a); K is symmetric */
-        for (PetscInt i = 0; i < 2; ++i)
-          for (PetscInt bb = a; bb < nb; ++bb)
-            for (PetscInt j = 0; j < 2; ++j) K[(2 * a + i) * n + 2 * bb + j] += G[a][i][j][0] * dN[2 * bb] + G[a][i][j][1] * dN[2 * bb + 1];
-      if (b->axisym) { /* the hoop strain's terms: e3 = N_a / r on u_a,r (elasticity.c) */
-        const PetscReal *B = &b->B[iq * nb], r = b->xq[(c * nq + iq) * 2], lambda = b->param[0], mu = b->param[1];
-        for (PetscInt a = 0; a < nb; ++a)
-          for (PetscInt bb = a; bb < nb; ++bb) {
-            const PetscReal na = B[a] / r, nbb = B[bb] / r;
-            K[(2 * a) * n + 2 * bb] += w * (lambda * (dN[2 * a] * nbb + na * dN[2 * bb]) + (lambda + 2.0 * mu) * na * nbb);
-            K[(2 * a) * n + 2 * bb + 1] += w * lambda * na * dN[2 * bb + 1];
-            K[(2 * a + 1) * n + 2 * bb] += w * lambda * dN[2 * a + 1] * nbb;
-          }
+      for (PetscInt a = 0; a < nb && x; ++a) {
+        gu[0] += u[a][0] * dN[2 * a];
+        gu[1] += u[a][0] * dN[2 * a + 1];
+        gu[2] += u[a][1] * dN[2 * a];
+        gu[3] += u[a][1] * dN[2 * a + 1];
+        ur += B[a] * u[a][0];
       }
+      if (r > 0) e3 = ElasticityHoopStrain(ur, gu[0], r);
+      b->mat->tangent(b->param, gu, e3, nb, w, dN, B, r, K);
     }
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt i = 0; i < 2; ++i)
@@ -576,6 +634,28 @@ PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The stiffness at rest, added into H at rows and columns map[local dof].
+   With the joined vector's map l2b, the assembled stiffness; with a map
+   onto the rank's own dofs, its subdomain stiffness (substructure.c). */
+PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BodyAssembleTangentMapped(b, NULL, map, H));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
+{
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  if (b->rigid) PetscFunctionReturn(0);
+  PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(BodyAssembleTangentMapped(b, b->mat->constantTangent ? NULL : x, b->l2b, H));
+  PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscFunctionReturn(0);
 }
 

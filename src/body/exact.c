@@ -14,6 +14,9 @@
                            [-sin kx sin ky,  cos kx cos ky]],
            so eps = grad u (symmetric) and the exact stress is
            sigma(grad u) (the energy-norm and stress errors of body.c).
+           Its second derivatives (d2u) give any material's body force
+           f_i = -A_iJkL d2u_k/dx_J dx_L (body.c; A the material's tangent
+           at grad u): a manufactured solution at finite strain too.
    lame:   in axisymmetry (x = r, y = z), u = (A r + B / r, C z), params
            {A, B, C}: Lame's thick-walled tube (C = 0: no axial strain) and,
            with B = 0, a cylinder under uniform axial strain C with
@@ -68,6 +71,27 @@ static void TrigDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
   du[3] = A * k * cc;
 }
 
+/* d2u[(k*2+J)*2+L] = d2u_k/dx_J dx_L: d2u_0/dx^2 = d2u_0/dy^2 = -k^2 u_0,
+   d2u_0/dxdy = -k^2 u_1, and the same with 0 and 1 swapped. */
+static void TrigD2U(const PetscReal p[], const PetscReal x[], PetscReal d2u[])
+{
+  const PetscReal k2 = p[1] * p[1];
+  PetscReal       u[2];
+
+  TrigU(p, x, u);
+  for (PetscInt c = 0; c < 2; ++c) {
+    d2u[c * 4 + 0] = d2u[c * 4 + 3] = -k2 * u[c];
+    d2u[c * 4 + 1] = d2u[c * 4 + 2] = -k2 * u[1 - c];
+  }
+}
+
+static void ZeroD2U(const PetscReal p[], const PetscReal x[], PetscReal d2u[])
+{
+  (void)p;
+  (void)x;
+  for (PetscInt j = 0; j < 8; ++j) d2u[j] = 0.0;
+}
+
 static void TrigF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
 {
   const PetscReal k = p[1];
@@ -107,9 +131,10 @@ static PetscErrorCode ExactSetAffine(ExactSolution *e)
 {
   PetscFunctionBeginUser;
   PetscCheck(e->nparams == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution affine needs 6 parameters (u0, dux/dx, dux/dy, v0, duy/dx, duy/dy), got %" PetscInt_FMT, e->nparams);
-  e->u  = AffineU;
-  e->du = AffineDU;
-  e->f  = ZeroF;
+  e->u   = AffineU;
+  e->du  = AffineDU;
+  e->d2u = ZeroD2U;
+  e->f   = ZeroF;
   PetscFunctionReturn(0);
 }
 
@@ -117,9 +142,10 @@ static PetscErrorCode ExactSetTrig(ExactSolution *e)
 {
   PetscFunctionBeginUser;
   PetscCheck(e->nparams == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution trig needs 2 parameters (A, k), got %" PetscInt_FMT, e->nparams);
-  e->u  = TrigU;
-  e->du = TrigDU;
-  e->f  = TrigF;
+  e->u   = TrigU;
+  e->du  = TrigDU;
+  e->d2u = TrigD2U;
+  e->f   = TrigF;
   PetscFunctionReturn(0);
 }
 

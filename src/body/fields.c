@@ -2,7 +2,9 @@
    (coordinates, Tri6/Quad9 connectivity in XDMF node order), displacement,
    and the stress (xx, yy, zz, xy; in axisymmetry rr, zz, thth, rz: the
    third the hoop stress) and von Mises stress recovered at the nodes
-   by averaging each cell's stress there over the cells around the node. */
+   by averaging each cell's stress there over the cells around the node.
+   The stress is the material's Cauchy stress (material.h): of the deformed
+   configuration, attached to each node's reference position. */
 #include <petscsf.h>
 #include "body.h"
 
@@ -43,7 +45,7 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
       u[k][1] = PetscRealPart(ua[dof[k] + 1]);
     }
     for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], e3 = 0.0;
+      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], s33, e3 = 0.0;
       PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
       (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
       for (PetscInt q = 0; q < nb; ++q) {
@@ -53,10 +55,10 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
         gu[3] += u[q][1] * dNdx[2 * q + 1];
       }
       if (b->axisym) e3 = ElasticityHoopStrain(u[a][0], gu[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
-      ElasticityStress(b->param, gu, e3, sig);
+      b->mat->cauchy(b->param, gu, e3, sig, &s33);
       acc[0] += sig[0];
       acc[1] += sig[3];
-      acc[2] += ElasticityStress33(b->param, gu, e3);
+      acc[2] += s33;
       acc[3] += sig[1];
       acc[4] += 1.0;
     }
@@ -108,10 +110,9 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
         for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
       }
       if (b->axisym) e3 = ElasticityHoopStrain(ur, gu[0], b->xq[(c * nq + iq) * 2]);
-      ElasticityStress(b->param, gu, e3, sig);
+      b->mat->cauchy(b->param, gu, e3, sig, &h[2]);
       h[0] = sig[0];
       h[1] = sig[3];
-      h[2] = ElasticityStress33(b->param, gu, e3);
       h[3] = sig[1];
       e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
     }
@@ -119,6 +120,47 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
   }
   PetscCall(VecRestoreArrayRead(Xl, &ua));
   PetscCall(PetscFree(sr));
+  PetscFunctionReturn(0);
+}
+
+/* The largest principal Green-Lagrange strain, in magnitude, over every
+   rank's quadrature points: E = (F^T F - I)/2 with F = I + [gu 0; 0 e3],
+   its in-plane block's eigenvalues and E33 = e3 + e3^2/2 (the hoop one in
+   r-z, 0 in plane strain). The measure of a linear body's model error:
+   small-strain elasticity drops the quadratic terms of E. */
+PetscErrorCode BodyComputeMaxStrain(Body b, Vec Xl, PetscReal *emax)
+{
+  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscScalar *ua;
+  PetscReal          m = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(Xl, &ua));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    const PetscInt *dof = &b->cdof[c * nb];
+    for (PetscInt iq = 0; iq < nq; ++iq) {
+      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
+      PetscReal        g[4] = {0, 0, 0, 0}, ur = 0.0, e3 = 0.0, E[3], mean, rad;
+      for (PetscInt a = 0; a < nb; ++a) {
+        const PetscReal ux = PetscRealPart(ua[dof[a]]), uy = PetscRealPart(ua[dof[a] + 1]);
+        g[0] += ux * dN[2 * a];
+        g[1] += ux * dN[2 * a + 1];
+        g[2] += uy * dN[2 * a];
+        g[3] += uy * dN[2 * a + 1];
+        ur += B[a] * ux;
+      }
+      if (b->axisym) e3 = ElasticityHoopStrain(ur, g[0], b->xq[(c * nq + iq) * 2]);
+      /* E_IJ = (g_IJ + g_JI + g_kI g_kJ) / 2 */
+      E[0] = g[0] + 0.5 * (g[0] * g[0] + g[2] * g[2]);
+      E[1] = g[3] + 0.5 * (g[1] * g[1] + g[3] * g[3]);
+      E[2] = 0.5 * (g[1] + g[2] + g[0] * g[1] + g[2] * g[3]);
+      mean = 0.5 * (E[0] + E[1]);
+      rad  = PetscSqrtReal(0.25 * PetscSqr(E[0] - E[1]) + E[2] * E[2]);
+      m    = PetscMax(m, PetscMax(PetscAbsReal(mean) + rad, PetscAbsReal(e3 + 0.5 * e3 * e3)));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &ua));
+  PetscCall(MPIU_Allreduce(&m, emax, 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscFunctionReturn(0);
 }
 
@@ -218,6 +260,7 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(PetscObjectSetName((PetscObject)F->topo, "topology"));
   F->ncells = b->ncellsGlobal;
   PetscCall(BodyComputeErrors(b, Xl, &F->err));
+  PetscCall(BodyComputeMaxStrain(b, Xl, &F->maxStrain));
   PetscFunctionReturn(0);
 }
 

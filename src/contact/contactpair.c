@@ -54,16 +54,8 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListFind(ContactFormulationList, spec->formulation, &create));
   if (!create) {
-    const char **names;
-    int          n;
-    char         known[256] = "";
-    PetscCall(PetscFunctionListGet(ContactFormulationList, &names, &n));
-    for (int i = 0; i < n; ++i) {
-      if (!names[i] || !names[i][0]) continue;
-      PetscCall(PetscStrlcat(known, known[0] ? ", " : "", sizeof(known)));
-      PetscCall(PetscStrlcat(known, names[i], sizeof(known)));
-    }
-    PetscCall(PetscFree(names));
+    char known[256];
+    PetscCall(ContactOptionsListNames(ContactFormulationList, known, sizeof(known)));
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "option %s: unknown contact formulation '%s' (known: %s)", option, spec->formulation, known);
   }
   PetscCall(EnergyTermCreate(comm, spec->name, term));

@@ -10,6 +10,7 @@ static const char help[] = "Frictionless contact between 2D linear-elastic bodie
 #include "options.h"
 #include "outputset.h"
 #include "forcesolve.h"
+#include "material.h"
 
 ContactLog contactLog;
 
@@ -95,6 +96,7 @@ static PetscErrorCode Run(int *status)
   rec.mark = rec.start;
   PetscCall(ContactInitializeLogging());
   PetscCall(ExactSolutionRegisterAll());
+  PetscCall(MaterialRegisterAll());
   PetscCall(ForceControlRegisterAll());
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
@@ -163,6 +165,7 @@ int main(int argc, char **argv)
     ContactOutputDiscard();
   }
   PetscCall(ExactSolutionFinalize());
+  PetscCall(MaterialFinalize());
   PetscCall(ContactFormulationFinalize());
   PetscCall(PetscFinalize());
   ContactOptionsFinalize();

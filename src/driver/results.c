@@ -345,6 +345,8 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
     fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
+    fprintf(fp, ", \"material\": \"%s\"", b->mat->name);
+    ContactJSONKeyReal(fp, ", ", "max_green_lagrange_strain", F[i].maxStrain);
     fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
     ContactJSONKeyReal(fp, ", ", "h", b->h);
     if (b->hasExact) { /* each error with the exact solution's norm */

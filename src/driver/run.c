@@ -104,8 +104,35 @@ static PetscErrorCode RunSayNotConverged(Problem p)
   PetscFunctionBeginUser;
   if (p->res.why[0]) PetscCall(PetscStrncpy(why, p->res.why, sizeof(why)));
   for (PetscInt t = 0; t < p->nterms && !why[0]; ++t) PetscCall(EnergyTermDiagnose(p->terms[t], sizeof(why), why));
+  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body whose elements invert on the way (neohookean): named, first */
+    PetscInt  n;
+    PetscReal xy[2];
+    PetscCall(BodyGetInversions(p->bodies[i], &n, xy));
+    if (n && p->res.reason != TAO_DIVERGED_MAXITS) {
+      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations (smaller load steps, -load_steps, or a finer mesh there may pass)", p->bodies[i]->name, (double)xy[0], (double)xy[1], n));
+      break;
+    }
+  }
   if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));
+  PetscFunctionReturn(0);
+}
+
+/* The model's error, as the mesh's is measured: each body's largest
+   principal Green-Lagrange strain; a linear body above 2 % is warned in the
+   report, its model's error being of the order of the strain there (it
+   drops E's quadratic terms and tells a rotation from a strain no better). */
+static PetscErrorCode RunReportStrains(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body      b = p->bodies[i];
+    PetscReal e;
+    if (b->rigid) continue; /* no strain */
+    PetscCall(BodyComputeMaxStrain(b, b->Xl, &e));
+    PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", b->name, b->mat->name, (double)(100 * e)));
+    if (b->mat->constantTangent && e > 0.02) PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", b->name, (double)(100 * e), b->name));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -114,6 +141,7 @@ PetscErrorCode RunFinish(Problem p, RunRecord *rec)
   PetscLogDouble t;
 
   PetscFunctionBeginUser;
+  if (rec->converged) PetscCall(RunReportStrains(p));
   if (p->opt.taylor) {
     PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
     PetscCall(ProblemTaylorTest(p));

@@ -734,3 +734,20 @@ PetscErrorCode ContactOptionsFList(PetscOptionItems *PetscOptionsObject, const c
   PetscCall(CheckGiven(PetscOptionsObject, opt));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode ContactOptionsListNames(PetscFunctionList list, char known[], size_t len)
+{
+  const char **names;
+  int          n;
+
+  PetscFunctionBeginUser;
+  known[0] = 0;
+  PetscCall(PetscFunctionListGet(list, &names, &n));
+  for (int i = 0; i < n; ++i) {
+    if (!names[i] || !names[i][0]) continue;
+    PetscCall(PetscStrlcat(known, known[0] ? ", " : "", len));
+    PetscCall(PetscStrlcat(known, names[i], len));
+  }
+  PetscCall(PetscFree(names));
+  PetscFunctionReturn(0);
+}

@@ -6,6 +6,7 @@
    (forceborder.c). The orchestrator (solve.c) sets it up; L-BFGS's H0
    (lmvm.c) shares its Cholesky. */
 #include "newtonstep.h"
+#include "problem.h"
 #include "schur.h"
 #include "substructure.h"
 #include "iterative.h"
@@ -41,9 +42,12 @@ PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
    block, so the step goes through the Schur complement on that block, K
    condensed once: by substructuring on any number of ranks
    (substructure.c), or on one rank by MUMPS's Schur complement of K
-   (schur.c, -newton_schur_type mumps). Without contact, or with
-   -newton_schur 0, a Cholesky factorisation per step (CHOLMOD on one rank,
-   MUMPS on several); -newton_iterative: CG with GAMG (iterative.c). nls takes
+   (schur.c, -newton_schur_type mumps). Without contact, with
+   -newton_schur 0, or where a body's tangent depends on u (a neohookean
+   body: the whole Hessian changes, and may be indefinite), a Cholesky
+   factorisation per step (CHOLMOD on one rank, MUMPS on several; MUMPS's
+   LDL^T where the Hessian may be indefinite); -newton_iterative: CG with
+   GAMG (iterative.c). nls takes
    the factored step directly (preonly); at most 500 iterations (TAO's 50 are
    too few for k_p / E above 1e7). Set before TaoSetFromOptions(), so that
    -tao_max_it, -newton_schur 0, -tao_nls_ksp_type, -tao_nls_pc_type, ...
@@ -53,6 +57,7 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
 {
   PC          pc;
   PetscMPIInt size;
+  PetscBool   varies = ProblemTangentVaries(p); /* a body's tangent depends on u (neohookean): K is no longer condensed once */
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
@@ -60,11 +65,11 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PetscCall(KSPGetPC(ksp, &pc));
   if (p->opt.iterative) {
     if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies));
-  } else if (p->opt.schur && p->nterms > 0) {
+  } else if (p->opt.schur && p->nterms > 0 && !varies) {
     PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
     else PetscCall(ProblemSchurPCSetUp(p, pc));
-  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(varies || p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
   PetscFunctionReturn(0);
 }
 

@@ -611,7 +611,8 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscCall(VecZeroEntries(p->bodies[i]->Gl));
     PetscCall(BodyComputeEnergyGradient(p->bodies[i], p->bodies[i]->Xl, &eb, p->bodies[i]->Gl));
-    if (PetscIsInfOrNanReal(eb)) bad[i] = 1.0;
+    if (PetscIsInfReal(eb) && eb > 0 && !p->bodies[i]->mat->constantTangent) eb = (PetscReal)INFINITY; /* an inverted element: Pi = +inf, for the line search */
+    else if (PetscIsInfOrNanReal(eb)) bad[i] = 1.0;
     else PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &bad[i]));
     sum[0] += eb;
     part[i] = eb;
@@ -699,12 +700,24 @@ PetscErrorCode ProblemSetHessianSwitchReference(Problem p, PetscReal g0)
   PetscFunctionReturn(0);
 }
 
-/* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
+PetscBool ProblemTangentVaries(Problem p)
+{
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (p->bodies[i]->mat && !p->bodies[i]->mat->constantTangent) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+/* P = K + the terms' Hessians at X, in their current order (exact or
+   Gauss-Newton); K the bodies' tangent at X where a body's varies
+   (neohookean), else the stiffness assembled once. */
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(p, X));
-  PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
+  if (ProblemTangentVaries(p)) {
+    PetscCall(MatZeroEntries(P));
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
+  } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));

@@ -9,6 +9,7 @@
 #include "problem.h"
 #include "forcecontrol.h"
 #include "lmvm.h"
+#include "newtonstep.h"
 
 static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
 {
@@ -21,11 +22,15 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
 
 /* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
    rest, where a solve from rest starts and the last stage stops relative to;
-   the energy evaluation is not counted. */
+   the energy evaluation is not counted. Where the full load put on at rest
+   inverts an element (a neohookean body), the gradient there has no value:
+   g0 is then the gradient at load 1e-6 divided by 1e-6, its limit at small
+   load, which is the linear body's g0. */
 static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
 {
-  PetscReal f;
-  Vec       X;
+  const PetscReal small = 1e-6;
+  PetscReal       f;
+  Vec             X;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(p->X, &X));
@@ -33,7 +38,90 @@ static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
   PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
   p->res.nEnergyEvals--;
   PetscCall(VecNorm(p->G, NORM_2, g0));
+  if (PetscIsInfReal(f)) {
+    PetscCall(ProblemSetStage(p, small, 1.0));
+    PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
+    p->res.nEnergyEvals--;
+    PetscCall(VecNorm(p->G, NORM_2, g0));
+    *g0 /= small;
+    PetscCall(ProblemSetStage(p, 1.0, 1.0));
+  }
   PetscCall(VecDestroy(&X));
+  PetscFunctionReturn(0);
+}
+
+/* The tangent predictor of a stage from load l0 to l1 (at the penalty
+   factor of the stage): X += dX with
+     H(X; l0) dX = -(g(X; l0) + (g(X; l0 + t (l1 - l0)) - g(X; l0)) / t),
+   the gradient's change with the load taken by a secant at t = 1e-3 (a
+   step of the Dirichlet values that inverts nothing) and H the Hessian at
+   the last converged state: the equilibrium path extrapolated linearly, a
+   linear solve from rest for the first load. The inside of the body moves
+   with its Dirichlet values instead of waiting for them. Nothing is done
+   where H cannot be factored (a body held by contact alone at rest) or
+   the controls are coupled to X. */
+static PetscErrorCode ProblemPredict(Problem p, PetscReal l0, PetscReal l1, PetscReal penalty)
+{
+  const PetscReal    t = 1e-3;
+  PetscReal          f0, f1;
+  Vec                g0, g1;
+  KSP                ksp;
+  PC                 pc;
+  KSPConvergedReason kr = KSP_CONVERGED_ITERATING;
+
+  PetscFunctionBeginUser;
+  if (p->X != p->Xb || !(l1 > l0)) PetscFunctionReturn(0);
+  PetscCall(VecDuplicate(p->X, &g0));
+  PetscCall(VecDuplicate(p->X, &g1));
+  PetscCall(ProblemSetStage(p, l0, penalty));
+  PetscCall(ProblemEvaluate(p, p->X, &f0, g0, NULL));
+  PetscCall(ProblemAssembleHessian(p, p->X, p->H));
+  PetscCall(ProblemSetStage(p, l0 + t * (l1 - l0), penalty));
+  PetscCall(ProblemEvaluate(p, p->X, &f1, g1, NULL));
+  if (!PetscIsInfReal(f0) && !PetscIsInfReal(f1)) {
+    PetscCall(VecAXPBY(g1, 1.0 - 1.0 / t, 1.0 / t, g0)); /* g0 + (g1 - g0) / t */
+    PetscCall(KSPCreate(p->comm, &ksp));
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPSetOperators(ksp, p->H, p->H));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_TRUE));
+    PetscCall(KSPSolve(ksp, g1, g0));
+    PetscCall(KSPGetConvergedReason(ksp, &kr));
+    PetscCall(KSPDestroy(&ksp));
+    if (kr >= 0) PetscCall(VecAXPY(p->X, -1.0, g0));
+  }
+  PetscCall(PetscInfo(p->tao, "tangent predictor from load %g to %g: %s\n", (double)l0, (double)l1, kr >= 0 && kr != KSP_CONVERGED_ITERATING ? "applied" : "not applied"));
+  PetscCall(ProblemSetStage(p, l1, penalty));
+  PetscCall(VecDestroy(&g0));
+  PetscCall(VecDestroy(&g1));
+  PetscFunctionReturn(0);
+}
+
+/* A stage's TAO solve from load l0 (the last converged) at load l1. Where
+   its first iterate inverts an element (a neohookean body given the load's
+   Dirichlet values at once, its inside still where the last load left it),
+   the tangent predictor moves the inside along; if the iterate still
+   inverts, the stage stops as at a NaN (TAO refuses an infinite energy at
+   its start), and the load is cut back. */
+static PetscErrorCode ProblemStageSolve(Problem p, PetscReal l0, PetscReal l1, PetscReal penalty, PetscInt *its, TaoConvergedReason *reason)
+{
+  PetscReal f;
+
+  PetscFunctionBeginUser;
+  if (ProblemTangentVaries(p)) { /* a material that can invert (neohookean) */
+    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+    if (PetscIsInfReal(f)) {
+      PetscCall(ProblemPredict(p, l0, l1, penalty));
+      PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+    }
+    if (PetscIsInfReal(f)) {
+      PetscCall(PetscInfo(p->tao, "the stage's first iterate inverts an element: stopped as at a NaN\n"));
+      *its    = 0;
+      *reason = TAO_DIVERGED_NAN;
+      PetscFunctionReturn(0);
+    }
+  }
+  PetscCall(ProblemTaoSolve(p, its, reason));
   PetscFunctionReturn(0);
 }
 
@@ -115,7 +203,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     }
     if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
-    PetscCall(ProblemTaoSolve(p, &n, reason));
+    PetscCall(ProblemStageSolve(p, p->res.loadDone, load, penalty, &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
     *its += n;
     p->res.stagesDone++;
@@ -150,12 +238,12 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
   if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
     PetscBool cut;
-    if (p->X0) {
+    if (p->X0 || ProblemTangentVaries(p)) { /* a given start, or the tangent predictor's: the stop is relative to the gradient at rest */
       PetscCall(ProblemGradientAtRest(p, &g0));
-      PetscCall(VecCopy(p->X0, p->X));
+      if (p->X0) PetscCall(VecCopy(p->X0, p->X));
       PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     }
-    PetscCall(ProblemTaoSolve(p, its, reason));
+    PetscCall(ProblemStageSolve(p, p->X0 ? 1.0 : 0.0, 1.0, 1.0, its, reason));
     p->res.stagesDone = 1;
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
