@@ -54,13 +54,16 @@ run: bin/contact meshes
 	echo "Figures:$${figs:- none}; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"
 
 # the suite runs on TEST_JOBS workers (pytest-xdist; TEST_JOBS=0: serially).
-# 4 on 2 cores: a worker waits a good part of its time (MPI start-up, Gmsh,
-# pvpython), and more workers fill the cores: in a clean clone on the quiet
-# machine, pytest took 6 min 28 s on 3 workers, 5 min 35 s on 4
-# (docs/testing.md). --dist loadgroup
+# 3 on 2 cores: a worker waits part of its time (Gmsh, pvpython, a 2-rank
+# run's start), and a third worker fills it; a fourth now costs more than it
+# fills (the processes' start-up is cheap since the suite's Open MPI uses ob1,
+# tests/conftest.py, and 2-rank runs on 4 workers oversubscribe the cores): in
+# a clean clone of 07a0451 on the quiet machine, built, pytest took 6 min 9 s
+# (674 s of CPU) on 4 workers and 5 min 21 s (545 s) on 3 (docs/testing.md).
+# --dist loadgroup
 # keeps the tests that share a module- or session-scoped fixture on one worker
 # (tests/conftest.py), so each shared run is made once.
-TEST_JOBS ?= 4
+TEST_JOBS ?= 3
 PYTEST_PARALLEL = -n $(TEST_JOBS) --dist loadgroup
 test: bin/contact meshes
 	$(PYTHON) -m pytest -q --durations=10 -m "not stress" $(PYTEST_PARALLEL) tests
