@@ -57,9 +57,10 @@ run: bin/contact meshes
 # 3 on 2 cores: a worker waits part of its time (Gmsh, pvpython, a 2-rank
 # run's start), and a third worker fills it; a fourth now costs more than it
 # fills (the processes' start-up is cheap since the suite's Open MPI uses ob1,
-# tests/conftest.py, and 2-rank runs on 4 workers oversubscribe the cores): in
-# a clean clone of 07a0451 on the quiet machine, built, pytest took 6 min 9 s
-# (674 s of CPU) on 4 workers and 5 min 21 s (545 s) on 3 (docs/testing.md).
+# tests/conftest.py, and 2-rank runs on 4 workers oversubscribe the cores):
+# 777 tests in clean clones of 07a0451 on the quiet machine, make test on 4
+# workers 6 min 26 s (674 s of CPU), on 3 6 min 10 s (634 s); built, pytest on
+# 3 workers 5 min 21 s (545 s) (docs/testing.md).
 # --dist loadgroup
 # keeps the tests that share a module- or session-scoped fixture on one worker
 # (tests/conftest.py), so each shared run is made once.
