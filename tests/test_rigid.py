@@ -103,7 +103,11 @@ def test_rotation_about_centre(rigid, tmp_path):
 
 def test_balance(rigid):
     """The rigid body's force is the contact's (its reaction, through the
-    condition that holds it), to round-off; and the block's support carries
+    condition that holds it), to round-off; its default reference point is
+    the circle's centre (the curves' centroid by length, whatever the
+    grading: x 4.8e-8 off, the quadratic edges' departure from the circle,
+    bound 2e-7; y 1.2e-15, bound 1e-12), about which the contact's moment is
+    nil (measured 6.7e-12 of P, bound 1e-9); and the block's support carries
     it back to the solver's stop (the block's residual: measured 1.8e-10 of
     P, bound 1e-9)."""
     P = rigid["contact_force"]
@@ -111,6 +115,9 @@ def test_balance(rigid):
     r_ind, r_block = rigid["reactions"]["indenter:back"], rigid["reactions"]["block:push"]
     print(ind, r_ind, r_block)
     assert ind["rigid"] and ind["dofs"] == 0
+    # the default reference point, the curves' centroid by length: the circle's centre (the mesh is graded)
+    assert abs(ind["centre"][0] + 1) <= 2e-7 and abs(ind["centre"][1]) <= 1e-12
+    assert abs(ind["moment"]) <= 1e-9 * P   # frictionless on a circle: every normal through the centre
     assert math.hypot(*ind["force"]) == pytest.approx(P, rel=1e-12)
     assert r_ind == ind["force"]
     assert abs(r_ind[0] + r_block[0]) <= 1e-9 * P and abs(r_ind[1] + r_block[1]) <= 1e-9 * P

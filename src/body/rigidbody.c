@@ -41,7 +41,7 @@ PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
   PetscCall(PetscNew(&r));
   b->rg = r;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
-  PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves' nodes)", NULL, c, &nc, &setc));
+  PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves, weighted by length)", NULL, c, &nc, &setc));
   PetscCall(PetscOptionsReal("-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (default 0: held)", NULL, r->rotation, &r->rotation, NULL));
   PetscOptionsEnd();
   PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
@@ -168,6 +168,35 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
   PetscFunctionReturn(0);
 }
 
+/* The centroid of the body's curves, each point weighted by its length: the
+   same whatever the mesh's grading (a circle's is its centre, a
+   rectangle's its middle). Each quadratic line (nodes at xi = -1, +1, 0)
+   by 4-point Gauss. */
+static PetscErrorCode RigidCurvesCentroid(BodyRigid *r)
+{
+  PetscReal gx[4], gw[4], L = 0.0, c[2] = {0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(4, -1.0, 1.0, gx, gw));
+  for (PetscInt e = 0; e < r->ne; ++e)
+    for (PetscInt q = 0; q < 4; ++q) {
+      const PetscReal xi = gx[q], N[3] = {0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi}, dN[3] = {xi - 0.5, xi + 0.5, -2.0 * xi};
+      PetscReal       p[2] = {0, 0}, t[2] = {0, 0}, w;
+      for (PetscInt k = 0; k < 3; ++k)
+        for (PetscInt d = 0; d < 2; ++d) {
+          p[d] += N[k] * r->X[2 * r->enodes[3 * e + k] + d];
+          t[d] += dN[k] * r->X[2 * r->enodes[3 * e + k] + d];
+        }
+      w = gw[q] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      L += w;
+      c[0] += w * p[0];
+      c[1] += w * p[1];
+    }
+  r->centre[0] = c[0] / L;
+  r->centre[1] = c[1] / L;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyRigidSetUp(Body b)
 {
   BodyRigid  *r = b->rg;
@@ -192,13 +221,7 @@ PetscErrorCode BodyRigidSetUp(Body b)
   PetscCallMPI(MPI_Bcast(r->X, (PetscMPIInt)(2 * r->nn), MPIU_REAL, 0, b->comm));
   PetscCallMPI(MPI_Bcast(r->enodes, (PetscMPIInt)(3 * r->ne), MPIU_INT, 0, b->comm));
   PetscCallMPI(MPI_Bcast(r->etag, (PetscMPIInt)r->ne, MPIU_INT, 0, b->comm));
-  if (r->centre[0] == PETSC_MAX_REAL) {
-    r->centre[0] = r->centre[1] = 0.0;
-    for (PetscInt i = 0; i < r->nn; ++i) {
-      r->centre[0] += r->X[2 * i] / r->nn;
-      r->centre[1] += r->X[2 * i + 1] / r->nn;
-    }
-  }
+  if (r->centre[0] == PETSC_MAX_REAL) PetscCall(RigidCurvesCentroid(r));
   PetscCall(RigidConditions(b, r));
   b->dim     = 2;
   b->nlocal  = 0;
