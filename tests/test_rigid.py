@@ -137,6 +137,8 @@ def test_ranks(rigid, tmp_path):
     (["-indenter_bc_back_control", "force,displacement"], ["-indenter_bc_back_control", "rigid", "not supported"]),
     (["-indenter_bc_back_components", "x", "-indenter_bc_back_values", "0"], ["rigid", "translation in y", "not supported"]),
     (["-indenter_rigid_rotation", "nan"], ["-indenter_rigid_rotation", "finite"]),
+    (["-indenter_rigid_rotation", "abc"], ["-indenter_rigid_rotation", "a number"]),
+    (["-indenter_rigid_rotation", "free"], ["-indenter_rigid_rotation", "free rotation", "not supported"]),
     (["-indenter_rigid_centre", "1"], ["-indenter_rigid_centre", "two numbers"]),
     (["-indenter_E", "1000"], ["-indenter_E", "rigid", "no elastic constants"]),
     (["-accuracy", "0.05"], ["-accuracy", "rigid", "not supported"]),

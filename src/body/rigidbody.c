@@ -35,15 +35,20 @@ PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
   BodyRigid *r;
   PetscReal  c[2] = {0, 0};
   PetscInt   nc   = 2;
-  PetscBool  setc = PETSC_FALSE;
+  PetscBool  setc = PETSC_FALSE, free;
+  char       rot[64] = "0", *end;
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&r));
   b->rg = r;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
   PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves, weighted by length)", NULL, c, &nc, &setc));
-  PetscCall(PetscOptionsReal("-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (default 0: held)", NULL, r->rotation, &r->rotation, NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; free: not supported yet)", NULL, rot, rot, sizeof(rot), NULL));
   PetscOptionsEnd();
+  PetscCall(PetscStrcmp(rot, "free", &free));
+  PetscCheck(!free, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a free rotation of a rigid body is not supported yet; give its value (radians)", prefix);
+  r->rotation = strtod(rot, &end);
+  PetscCheck(end != rot && !*end, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be a number (radians), got '%s'", prefix, rot);
   PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
   for (PetscInt k = 0; k < 2 && setc; ++k) PetscCheck(!PetscIsInfOrNanReal(c[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: must be finite, got %g", prefix, (double)c[k]);
   PetscCheck(!PetscIsInfOrNanReal(r->rotation), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be finite, got %g", prefix, (double)r->rotation);
