@@ -26,7 +26,6 @@ struct _n_BodyRigid {
   PetscReal  rotation;  /* the rotation at the full load (radians) */
   PetscReal  tFull[2];  /* the translation at the full load (the conditions' values) */
   PetscReal  t[2], theta; /* the motion at the current load factor */
-  PetscBool  held[2];   /* translation component held by a condition (else free: refused for now) */
   PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
 };
 

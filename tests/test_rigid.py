@@ -7,11 +7,13 @@ contact with E* = E / (1 - nu^2), the elastic body made stiffer (the rigid
 answer is its limit), the same relative motion given to the other body,
 a rotation of a circle about its centre, another rank count."""
 import math
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import run_contact
+from conftest import ROOT, run_contact
 from rigid_study import PUNCH, sadowsky_l2, stiff_options
 
 SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
@@ -220,9 +222,6 @@ def test_output(rigid_run, tmp_path):
     """The HDF5 holds the rigid body's motion, force and outline (its 204
     nodes at their current positions, its lines), no fields; the report
     prints its line; the plots draw it by its outline."""
-    import subprocess
-    import sys
-    from conftest import ROOT
     with rigid_run.h5() as h5:
         g = h5["bodies/indenter"]
         assert g.attrs["rigid"] == 1 and "displacement" not in g

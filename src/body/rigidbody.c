@@ -160,11 +160,9 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
   for (PetscInt c = 0; c < 2; ++c) {
     if (c == 0 && b->axisym) { /* r-z: the body moves along the axis alone */
       PetscCheck(by[0] < 0 || value[0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[0]);
-      r->held[0] = PETSC_TRUE;
       continue;
     }
     PetscCheck(by[c] >= 0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and no condition holds its translation in %s (-%s_bc_<group>_components): a free rigid motion is not supported yet", b->name, c ? "y" : "x", b->name);
-    r->held[c] = PETSC_TRUE;
   }
   r->t[0] = value[0]; /* at the full load until BodyRigidSetLoadFactor */
   r->t[1] = value[1];
