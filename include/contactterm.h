@@ -15,6 +15,8 @@ typedef struct {
   PetscReal       kp;          /* penalty in use (continuation) */
   PetscBool       exactHessian; /* add the second-order terms to the Hessian */
   PetscBool       built;       /* the searches have been built (at the surfaces' current coordinates) */
+  Body            rigid;       /* the surfaces' rigid body, or NULL: its Hessian's part goes to its unknowns' border (rigidbody.h) */
+  PetscInt        rigidSide;   /* and which surface is its */
   ContactReport   report;
 } ContactTerm;
 
@@ -28,4 +30,9 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *, Body[], PetscReal default
 PetscErrorCode ContactTermUpdate(ContactTerm *, Body[], PetscLogEvent search, PetscBool *changed);
 /* Starts a new report: the penalty, the surfaces' edge counts and which act as slave. */
 PetscErrorCode ContactTermReportBegin(ContactTerm *, const PetscBool slave[2]);
+/* Adds a formulation's Hessian block K (n x n, symmetric) over the joined
+   vector's indices idx to H (a constrained dof's -1 and a rigid body's
+   surface dofs are left out) and a rigid body's part to its unknowns'
+   border (BodyRigidAddHessian). */
+PetscErrorCode ContactTermAddHessian(const ContactTerm *, Mat H, PetscInt n, const PetscInt idx[], const PetscScalar K[]);
 PetscErrorCode ContactTermDestroy(ContactTerm *);

@@ -17,4 +17,17 @@ PetscErrorCode ProblemAddControlWork(Problem, PetscReal *f, Vec G);
 PetscErrorCode ProblemControlSceneForce(Problem, PetscReal *S);
 /* Coupled: Y, X's layout, the rest of the displacement run of the controls' displacements in X. */
 PetscErrorCode ProblemControlRest(Problem, Vec X, Vec Y);
+/* A rigid body's unknowns' border, from the contact's Hessian (rigidbody.h):
+   Begin, before the terms' Hessians, zeroes it and lends the bodies its
+   columns; End sums it and sets p->fc.B and p->fc.D (the curl of the last
+   evaluation, which must be at the Hessian's X, in the rotation's corner). */
+/* Control k's reaction at the last evaluation (after the bodies' reactions:
+   BodyComputeReactions), its condition's group ("" for a rigid body's unknown
+   that no condition controls) and its component: x, y, or rotation (a rigid
+   body's, whose unknown is the arc L theta, and reaction the moment over L). */
+PetscReal      ProblemControlReaction(Problem, PetscInt k);
+const char    *ProblemControlGroup(Problem, PetscInt k);
+const char    *ProblemControlComponent(Problem, PetscInt k);
+PetscErrorCode ProblemRigidBorderBegin(Problem);
+PetscErrorCode ProblemRigidBorderEnd(Problem);
 PetscErrorCode ForceControlsDestroy(ForceControls *);

@@ -70,6 +70,7 @@ typedef struct {
   PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads */
   PetscBool anchor; /* the anchor of a body held by contact (anchors.c): force 0 */
   PetscReal kref;   /* an anchor: a motion stiffer than this is held by the contact (forceborder.c) */
+  PetscBool rigid;  /* unknown c (x, y, or the arc L theta) of rigid body `body` (rigidbody.h); bc: its condition, or -1 */
 } ForceControl;
 
 /* Force control's state (forcecontrol.c): the controlled components, and
@@ -79,8 +80,9 @@ typedef struct {
   PetscInt     n;                       /* the controlled components, anchors included */
   ForceControl c[CONTACT_MAX_CONTROLS];
   PetscBool    coupled;                 /* the controls' displacements are the last entries of X */
-  Vec          B[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout) */
-  PetscReal    D[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls */
+  Vec          B[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout); a rigid body's unknown: the contact's coupling, at each Hessian */
+  PetscReal    D[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls; a rigid body's unknowns: the contact's J^T H J, at each Hessian */
+  PetscBool    rigid;                   /* some control is a rigid body's unknown: the border changes with the Hessian */
   Unheld       unheld; /* coupled: the anchors' directions the contact does not hold (unheld.c) */
   KSP          ksp;    /* coupled, Newton: the solve of H inside the bordered one (newtonstep.c) */
 } ForceControls;

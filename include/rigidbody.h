@@ -7,12 +7,21 @@
 
        u(X) = t + (R(theta) - I)(X - c),   R(theta) the rotation by theta.
 
-   In this first form the motion is prescribed: the translation's components
-   by the body's Dirichlet conditions (any of its groups, -<body>_bc_<group>_
+   Each component of the motion (x, y and the rotation; in r-z y alone) is
+   prescribed or an unknown. Prescribed: a translation's component by a
+   Dirichlet condition of the body (any of its groups, -<body>_bc_<group>_
    values), the rotation by -<body>_rigid_rotation (default 0: held), both
-   scaled by the load factor. The body has no unknowns, no elastic energy;
-   its contact surfaces follow the motion and the contact's force on it
-   (and moment about its current reference point) is its reaction. */
+   scaled by the load factor. An unknown (at most 3): a translation's
+   component force-controlled by a condition (_control force: the contact's
+   force on the body balances the condition's), or held by no condition,
+   and the rotation where -<body>_rigid_rotation free: these two are held by
+   the contact alone (a moment and a force of zero). The unknowns are
+   force control's (forcecontrol.c): the last entries of X, bordering the
+   Hessian. The rotation's unknown is the arc s = L theta, L the curves'
+   size, so that every unknown is a length and every stiffness a force per
+   length. The body has no elastic energy; its contact surfaces follow the
+   motion, and the contact's force on it (and moment about its current
+   reference point) is its reaction, and the unknowns' gradient. */
 #include "bodycore.h"
 
 struct _n_BodyRigid {
@@ -27,6 +36,14 @@ struct _n_BodyRigid {
   PetscReal  tFull[2];  /* the translation at the full load (the conditions' values) */
   PetscReal  t[2], theta; /* the motion at the current load factor */
   PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
+  PetscReal  curl;      /* -sum g.(x - c - t) at the last evaluation: d2Pi/dtheta2 beyond the contact's Hessian */
+  PetscReal  L;         /* the curves' size (their bounding box's diagonal): the rotation's unknown is L theta */
+  PetscBool  unknown[3];  /* component q (x, y, the rotation) is an unknown */
+  PetscBool  control[3];  /* a force control (a condition's _control force); else held by the contact alone */
+  PetscReal  qforce[3];   /* an unknown's force at the full load (a control's; 0: held by the contact) */
+  PetscInt   qbc[3];      /* the condition that controls component q, or -1 */
+  Vec        B[3];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
+  PetscReal  D[9];        /* and this rank's part of the contact's coupling between the unknowns */
 };
 
 /* The rigid options (-<body>_rigid_centre, -<body>_rigid_rotation), in the body's options block's place. */
@@ -35,6 +52,20 @@ PetscErrorCode BodyRigidSetFromOptions(Body, const char prefix[]);
    point, the conditions' translation; b->nlocal = 0. */
 PetscErrorCode BodyRigidSetUp(Body);
 PetscErrorCode BodyRigidSetLoadFactor(Body, PetscReal);
+/* Sets unknown q of the motion (x, y translation, or the arc L theta). */
+void           BodyRigidSetUnknown(Body, PetscInt q, PetscReal value);
+/* Unknown q's value, and its gradient dPi/dq at the last evaluation (the force, or the moment over L). */
+PetscReal      BodyRigidGetUnknown(const Body, PetscInt q);
+PetscReal      BodyRigidUnknownGradient(const Body, PetscInt q);
+/* The derivative of the current position x of a point with respect to
+   unknown q: J[q] = (1, 0), (0, 1), or perp(x - c - t) / L. */
+void           BodyRigidJacobian(const Body, const PetscReal x[2], PetscReal J[3][2]);
+/* Adds to the border a Hessian block K (n x n, row-major, symmetric) over
+   the joined vector's indices idx, where the negative ones below -1 are
+   this body's surface nodes' components (ContactRigidDofDecode), at their
+   current positions x: K's coupling of them to the other indices into
+   r->B, among themselves into r->D. */
+PetscErrorCode BodyRigidAddHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
 /* The displacement of the reference point X under the current motion. */
 void           BodyRigidDisplacement(const Body, const PetscReal X[2], PetscReal u[2]);
 /* Zeroes the force and moment (before an evaluation). */
@@ -42,6 +73,18 @@ void           BodyRigidZeroForce(Body);
 /* Adds the gradient g[n][2] at the nodes of reference coordinates X[n][2]
    (summed over ranks) to the body's force and moment. */
 void           BodyRigidAddForce(Body, PetscInt n, const PetscReal X[], const PetscReal g[]);
+/* A surface node's component in the joined vector's indices: -2 - (2 j + d), node j of the surface, d its component. */
+static inline PetscInt ContactRigidDof(PetscInt j, PetscInt d)
+{
+  return -2 - (2 * j + d);
+}
+static inline PetscBool ContactRigidDofDecode(PetscInt i, PetscInt *j, PetscInt *d)
+{
+  if (i > -2) return PETSC_FALSE;
+  *j = (-2 - i) / 2;
+  *d = (-2 - i) % 2;
+  return PETSC_TRUE;
+}
 /* The conditions' reactions: each group's held components' share of the force (the whole force). */
 PetscErrorCode BodyRigidComputeReactions(Body);
 PetscErrorCode BodyRigidDestroy(Body);

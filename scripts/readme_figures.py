@@ -35,10 +35,11 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
-- rigid, rigid-adequacy: bench/rigid/results.json (written by --measure rigid:
-  rigid_study.py's scenes, each run once but the timed pairs, alternated 3
-  times; and the reference scene with the disc E2/E1 times stiffer against
-  the disc rigid).
+- rigid, rigid-adequacy, rigid-free: bench/rigid/results.json (written by
+  --measure rigid: rigid_study.py's scenes, each run once but the timed
+  pairs, alternated 3 times; the reference scene with the disc E2/E1 times
+  stiffer against the disc rigid; the rigid bodies' unknowns: force control,
+  held by contact, a free rotation).
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
@@ -548,12 +549,17 @@ def render_model():
 def measure_rigid():
     """The rigid bodies' scenes against their references (rigid_study.py)."""
     import rigid_study
-    save("rigid", {"scenes": rigid_study.measure(), "adequacy": rigid_study.measure_adequacy()})
+    save("rigid", {"scenes": rigid_study.measure(), "adequacy": rigid_study.measure_adequacy(), "free": rigid_study.measure_free()})
 
 
 def render_rigid():
     import rigid_study
     return rigid_study.table(load("rigid")["scenes"])
+
+
+def render_rigid_free():
+    import rigid_study
+    return rigid_study.free_table(load("rigid")["free"])
 
 
 def render_rigid_adequacy():
@@ -852,7 +858,7 @@ def render_sweep_half():
             f"{half[0]['solve_median']:.3g} s against {full[0]['solve_median']:.3g} s")
 
 
-RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "rigid-adequacy": render_rigid_adequacy, "formulations": render_formulations,
+RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid": render_rigid, "rigid-adequacy": render_rigid_adequacy, "rigid-free": render_rigid_free, "formulations": render_formulations,
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,

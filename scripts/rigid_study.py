@@ -1,9 +1,12 @@
 """Rigid bodies against their independent answers: the scenes rigid-hertz
 (Hertz with E* = E / (1 - nu^2), and the disc made elastic and 1e5 times
 stiffer), rigid-punch (Sadowsky's pressure, either slave) and rigid-sphere
-(Hertz's point contact in r-z). Used by tests/test_rigid.py and by
-readme_figures.py --measure rigid, which writes bench/rigid/results.json and
-the README's table from it.
+(Hertz's point contact in r-z); and the rigid body's unknowns (measure_free):
+the disc force-controlled (the displaced run's motion), the roller held by
+its contacts (Hertz, and half the race's displacement by symmetry), the
+punch turning freely under an eccentric force (Johnson's tilted punch).
+Used by tests/test_rigid.py and by readme_figures.py --measure rigid, which
+writes bench/rigid/results.json and the README's tables from it.
 
     python3 scripts/rigid_study.py        # measures and prints the table
 """
@@ -18,6 +21,10 @@ PUNCH = ["-options_file", "meshes/rigid-punch/rigid-punch.opts"]
 SPHERE = ["-options_file", "meshes/rigid-sphere/rigid-sphere.opts"]
 SSNV104 = ["-options_file", "meshes/ssnv104/ssnv104.opts"]
 SSNV104_RIGID = ["-options_file", "meshes/ssnv104-rigid/ssnv104-rigid.opts"]
+ROLLER = ["-options_file", "meshes/rigid-roller/rigid-roller.opts"]
+# the rigid punch pushed by a force through a point e = 0.1 right of its axis, free to turn about it
+TILT = PUNCH + ["-punch_rigid_rotation", "free", "-punch_rigid_centre", "0.1,0.125",
+                "-punch_bc_push_control", "displacement,force", "-punch_bc_push_values", "0,-0.15"]
 B = 0.25   # the punch's half-width
 
 
@@ -154,6 +161,49 @@ def measure():
             rows.append(dict(scene=f"rigid-punch, {name.split('_')[0]} as slave", dofs=r.summary["dofs"],
                              iterations=r.summary["iterations"], solve=r.summary["time"]["solve"], P=P, sadowsky=err))
     return rows
+
+
+def tilt_angle(P=0.15, e=0.1, E=100.0, nu=0.3):
+    """Johnson's rigid flat punch on a half-space, tilted by the moment P e
+    (Contact Mechanics, 2.8): alpha = 4 P e / (pi E* b^2), E* = E / (1 - nu^2)."""
+    return 4 * P * e / (np.pi * E / (1 - nu * nu) * B * B)
+
+
+def measure_free():
+    """The rigid bodies' unknowns, each run once: the disc force-controlled by
+    the displaced run's force, the roller held by contact, the tilted punch;
+    mortar and gpts."""
+    from contactrun import run_checked
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for f in ("mortar", "gpts"):
+            form = ["-contact_formulation", f]
+            d = run_checked(HERTZ + form, tmp, f"d{f}").summary
+            F = d["bodies"]["indenter"]["force"][0]
+            s = run_checked(HERTZ + form + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
+                                            "-indenter_bc_back_values", f"{F!r},0"], tmp, f"f{f}").summary
+            rows.append(dict(scene=f"rigid-hertz, the disc force-controlled, {f}", dofs=s["dofs"], iterations=s["iterations"],
+                             solve=s["time"]["solve"], P=s["contact_force"],
+                             ref=f"the displaced run's motion 0.0095: {s['bodies']['indenter']['translation'][0] / 0.0095 - 1:+.1e}"))
+            s = run_checked(ROLLER + form, tmp, f"r{f}").summary
+            c = s["contact"]["below"]
+            sym = s["bodies"]["roller"]["translation"][1] / (s["force_control"][0]["displacement"] / 2) - 1
+            rows.append(dict(scene=f"rigid-roller, held by its contacts, {f}", dofs=s["dofs"], iterations=s["iterations"],
+                             solve=s["time"]["solve"], P=c["P"],
+                             ref=(f"Hertz: p_max {100 * (c['fem_pmax'] / c['hertz_pmax'] - 1):+.2f} %, a "
+                                  f"{100 * (c['fem_a_moment'] / c['hertz_a'] - 1):+.2f} %; half the race's motion {sym:+.0e}")))
+            s = run_checked(TILT + form, tmp, f"t{f}").summary
+            rows.append(dict(scene=f"rigid-punch, turning freely under an eccentric force, {f}", dofs=s["dofs"],
+                             iterations=s["iterations"], solve=s["time"]["solve"], P=-s["bodies"]["punch"]["force"][1],
+                             ref=f"Johnson's tilt {tilt_angle():.4e}: {-s['bodies']['punch']['rotation'] / tilt_angle() - 1:+.2%}"))
+    return rows
+
+
+def free_table(rows):
+    out = ["| run | dofs | Newton iterations | solve | P | against its reference |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append(f"| {r['scene']} | {r['dofs']:,} | {r['iterations']} | {r['solve']:.2f} s | {r['P']:.6g} | {r['ref']} |")
+    return "\n".join(out) + "\n"
 
 
 def table(rows):

@@ -1,4 +1,4 @@
-"""Rigid bodies (-<body>_rigid), first form: a body given by its curves alone,
+"""Rigid bodies (-<body>_rigid): a body given by its curves alone,
 moved rigidly by its conditions (translation) and -<body>_rigid_rotation,
 with no dofs. The scene meshes/rigid-hertz: a rigid cylinder (R = 1) and the
 elastic block (E = 1000, nu = 0.3) pushed onto it by 0.0095, graded to a/10
@@ -17,6 +17,8 @@ from conftest import ROOT, run_contact
 from rigid_study import PUNCH, sadowsky_l2, stiff_options
 
 SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
+SPHERE = ["-options_file", "meshes/rigid-sphere/rigid-sphere.opts"]
+ROLLER = ["-options_file", "meshes/rigid-roller/rigid-roller.opts"]
 
 
 @pytest.fixture(scope="module")
@@ -135,20 +137,23 @@ def test_ranks(rigid, tmp_path):
     assert s["bodies"]["indenter"]["force"][0] == pytest.approx(rigid["bodies"]["indenter"]["force"][0], rel=1e-11)
 
 
-@pytest.mark.parametrize("args,words", [
-    (["-indenter_bc_back_control", "force,displacement"], ["-indenter_bc_back_control", "rigid", "not supported"]),
-    (["-indenter_bc_back_components", "x", "-indenter_bc_back_values", "0"], ["rigid", "translation in y", "not supported"]),
-    (["-indenter_rigid_rotation", "nan"], ["-indenter_rigid_rotation", "finite"]),
-    (["-indenter_rigid_rotation", "abc"], ["-indenter_rigid_rotation", "a number"]),
-    (["-indenter_rigid_rotation", "free"], ["-indenter_rigid_rotation", "free rotation", "not supported"]),
-    (["-indenter_rigid_centre", "1"], ["-indenter_rigid_centre", "two numbers"]),
-    (["-indenter_E", "1000"], ["-indenter_E", "rigid", "no elastic constants"]),
-    (["-accuracy", "0.05"], ["-accuracy", "rigid", "not supported"]),
+@pytest.mark.parametrize("scene,args,words", [
+    (SCENE, ["-indenter_bc", "back,contact", "-indenter_bc_contact_components", "x", "-indenter_bc_contact_values", "0",
+             "-indenter_bc_back_control", "force,displacement"], ["rigid", "both give its translation in x"]),
+    (SCENE, ["-indenter_bc_back_control", "force,displacement", "-force_control_type", "outer"], ["-force_control_type", "coupled only"]),
+    (SCENE, ["-indenter_rigid_rotation", "nan"], ["-indenter_rigid_rotation", "finite"]),
+    (SCENE, ["-indenter_rigid_rotation", "abc"], ["-indenter_rigid_rotation", "a number"]),
+    (SCENE, ["-indenter_rigid_centre", "1"], ["-indenter_rigid_centre", "two numbers"]),
+    (SCENE, ["-indenter_E", "1000"], ["-indenter_E", "rigid", "no elastic constants"]),
+    (SCENE, ["-accuracy", "0.05"], ["-accuracy", "rigid", "not supported"]),
+    (SPHERE, ["-ball_rigid_rotation", "free"], ["-ball_rigid_rotation", "r-z", "along the axis"]),
+    (SPHERE, ["-ball_bc_equator_components", "x,y", "-ball_bc_equator_control", "force,displacement",
+              "-ball_bc_equator_values", "1,-0.01"], ["-ball_bc_equator_control", "r-z", "radial force control"]),
 ])
-def test_refused(args, words, tmp_path):
+def test_refused(scene, args, words, tmp_path):
     """What a rigid body cannot do yet, or a bad value: one line naming it,
     status 1, no output."""
-    r = run_contact(SCENE + args, tmp_path, check=False)
+    r = run_contact(scene + args, tmp_path, check=False)
     lines = [l for l in r.stderr.splitlines() if l.strip()]
     assert r.returncode == 1 and len(lines) == 1, r.stderr[-2000:]
     for w in words:
@@ -192,7 +197,7 @@ def test_sphere_rz(tmp_path):
     point contact with E* = E / (1 - nu^2), p_max and the second-moment a
     within 1 % (measured +0.44 % and -0.09 %); the ball moves along the axis
     alone, and its force is the contact's, along the axis (pressing it up)."""
-    s = run_contact(["-options_file", "meshes/rigid-sphere/rigid-sphere.opts", "-output", "none"], tmp_path).summary
+    s = run_contact(SPHERE + ["-output", "none"], tmp_path).summary
     dp, da = hertz_errors(s)
     ball = s["bodies"]["ball"]
     print(f"sphere: p_max {dp:+.2%}, a {da:+.2%}; ball {ball}")
@@ -235,3 +240,118 @@ def test_output(rigid_run, tmp_path):
         p = subprocess.run([sys.executable, "scripts/plot_hertz.py", str(rigid_run.output_path), *extra, "-o",
                             str(tmp_path / f"p{len(extra)}.png")], cwd=ROOT, capture_output=True, text=True, timeout=120)
         assert p.returncode == 0, p.stderr
+
+
+# The rigid body's unknowns: its translation where a condition force-controls
+# it or none holds it, its rotation where -<body>_rigid_rotation free.
+
+def test_force_controlled(rigid, tmp_path):
+    """The disc force-controlled in x by the force the displaced block gave
+    it (the fixture's P), the block held: the disc moves by the block's
+    0.0095 to 1e-7 (measured 1.7e-10), the profile's p_max is the
+    fixture's to 1e-7 (measured 3.6e-9), and 2 ranks find the same motion to 1e-9 (the two
+    solves' stops)."""
+    F = rigid["bodies"]["indenter"]["force"][0]
+    args = SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
+                    "-indenter_bc_back_values", f"{F!r},0", "-output", "none"]
+    s = run_contact(args, tmp_path).summary
+    t = s["bodies"]["indenter"]["translation"]
+    print(f"t = {t}, {t[0] / 0.0095 - 1:.2e}; p_max {s['fem_pmax'] / rigid['fem_pmax'] - 1:.2e}")
+    assert t[0] == pytest.approx(0.0095, rel=1e-7) and t[1] == 0
+    assert s["fem_pmax"] == pytest.approx(rigid["fem_pmax"], rel=1e-7)
+    c = s["force_control"][0]
+    assert c["rigid"] and c["component"] == "x" and c["reaction"] == pytest.approx(F, rel=1e-8)
+    s2 = run_contact(args, tmp_path, ranks=2, name="two").summary
+    assert s2["bodies"]["indenter"]["translation"][0] == pytest.approx(t[0], rel=1e-9)
+
+
+def test_force_controlled_rz(tmp_path):
+    """In r-z: the ball force-controlled along the axis by the force the
+    displacement run (ball moved by -0.01) gave it, the flat's base moved
+    up by 0.01 instead: the ball stays where it is, to 1e-9 of 0.01
+    (measured 6.5e-13, both solved to a gradient of 1e-11), and p_max is
+    the displacement run's to 1e-9 (5.3e-13)."""
+    tight = ["-tao_gatol", "1e-11", "-tao_grtol", "0", "-tao_gttol", "0", "-output", "none"]
+    d = run_contact(SPHERE + tight, tmp_path, name="disp").summary
+    F = d["bodies"]["ball"]["force"][1]
+    s = run_contact(SPHERE + tight + ["-ball_bc_equator_control", "force", "-ball_bc_equator_values", repr(F),
+                                      "-flat_bc_bottom_values", "0.01"], tmp_path, name="force").summary
+    t = s["bodies"]["ball"]["translation"]
+    print(f"t = {t}; p_max {s['fem_pmax'] / d['fem_pmax'] - 1:.2e}")
+    assert t[0] == 0 and abs(t[1]) <= 1e-9 * 0.01
+    assert s["fem_pmax"] == pytest.approx(d["fem_pmax"], rel=1e-9)
+
+
+@pytest.fixture(scope="module")
+def roller(tmp_path_factory):
+    return run_contact(ROLLER + ["-output", "none"], tmp_path_factory.mktemp("roller")).summary
+
+
+def test_roller_held_by_contact(roller):
+    """meshes/rigid-roller: a rigid roller between two races, held by its two
+    contacts alone (no condition: its x and y are unknowns of force zero),
+    the upper race pushed by 1000. By symmetry the roller moves by half
+    the upper race's displacement (to 1e-9; measured 2.3e-14); each
+    contact carries the 1000 (to 1e-8) and matches Hertz's rigid cylinder
+    on a flat with E* = E / (1 - nu^2): p_max and the second-moment a
+    within 1 % (measured -0.26 % and +0.31 %); the force left on the
+    roller is within the allowance of a motion the contacts do not hold
+    (x, along the flat races: 1e-3 of the load; measured 7.9e-7)."""
+    t = roller["bodies"]["roller"]["translation"]
+    U = roller["force_control"][0]["displacement"]
+    print(f"roller t = {t}, upper race U = {U}: {t[1] / (U / 2) - 1:.1e}")
+    assert t[1] == pytest.approx(U / 2, rel=1e-9)
+    for name, c in roller["contact"].items():
+        dp, da = c["fem_pmax"] / c["hertz_pmax"] - 1, c["fem_a_moment"] / c["hertz_a"] - 1
+        print(f"{name}: P {c['P']:.9f}, p_max {dp:+.2%}, a {da:+.2%}")
+        assert c["P"] == pytest.approx(1000, rel=1e-8)
+        assert abs(dp) <= 0.01 and abs(da) <= 0.01
+    f = roller["bodies"]["roller"]["force"]
+    assert abs(f[0]) <= 1e-3 * 1000 and abs(f[1]) <= 1e-8 * 1000
+
+
+def test_roller_ranks_and_gpts(roller, tmp_path):
+    """The rigid roller on 2 ranks: the same motion in y to 1e-9 (the
+    solves' stops; x, which the contacts do not hold, is not compared);
+    with gpts the symmetry holds (1e-9) and Hertz within 1.5 % (measured
+    p_max +1.07 %, a -0.09 %)."""
+    s = run_contact(ROLLER + ["-output", "none"], tmp_path, ranks=2, name="two").summary
+    assert s["bodies"]["roller"]["translation"][1] == pytest.approx(roller["bodies"]["roller"]["translation"][1], rel=1e-9)
+    g = run_contact(ROLLER + ["-output", "none", "-contact_formulation", "gpts"], tmp_path, name="gpts").summary
+    assert g["bodies"]["roller"]["translation"][1] == pytest.approx(g["force_control"][0]["displacement"] / 2, rel=1e-9)
+    for c in g["contact"].values():
+        assert abs(c["fem_pmax"] / c["hertz_pmax"] - 1) <= 0.015 and abs(c["fem_a_moment"] / c["hertz_a"] - 1) <= 0.015
+
+
+TILT = ["-options_file", "meshes/rigid-punch/rigid-punch.opts", "-output", "none", "-punch_rigid_rotation", "free",
+        "-punch_rigid_centre", "0.1,0.125", "-punch_bc_push_control", "displacement,force", "-punch_bc_push_values", "0,-0.15"]
+
+
+@pytest.mark.parametrize("formulation", ["mortar", "gpts"])
+def test_free_rotation_tilt(formulation, tmp_path):
+    """The rigid flat punch (half-width b = 0.25) pushed by a force
+    P = 0.15 through the point 0.1 right of its axis, free to turn about
+    it: the punch tilts until the contact's moment about that point is zero
+    (to 1e-6 of P e; measured 2e-8 and 4e-8), by Johnson's tilted punch on a
+    half-space (Contact Mechanics, 2.8) alpha = 4 P e / (pi E* b^2) =
+    2.781e-3 with E* = E / (1 - nu^2), within 3 % (the block is finite;
+    measured -0.80 % mortar, -1.34 % gpts; e < b / 2, so the whole face
+    stays in contact). The Taylor test at the answer, the rigid body's
+    unknowns included: the gradient's remainder second order, and the
+    Hessian's (the rotation's second derivative and the contact's coupling
+    through J) second order (measured 2.01 and 2.39). With the block as
+    mortar's slave the Hessian's order is 1.0 as with an elastic punch:
+    the master's corners, not the rigid body."""
+    args = TILT + ["-contact_formulation", formulation, "-taylor_test"]
+    r = run_contact(args, tmp_path)
+    s = r.summary
+    punch = s["bodies"]["punch"]
+    P, e, b, Es = 0.15, 0.1, 0.25, 100 / (1 - 0.3 ** 2)
+    alpha = 4 * P * e / (math.pi * Es * b ** 2)
+    print(f"{formulation}: rotation {punch['rotation']:.6e} against -{alpha:.6e} ({-punch['rotation'] / alpha - 1:+.2%}), moment {punch['moment']:.2e}")
+    assert abs(-punch["rotation"] / alpha - 1) <= 0.03
+    assert abs(punch["moment"]) <= 1e-6 * P * e
+    assert punch["force"][1] == pytest.approx(-P, rel=1e-7)
+    orders = s["taylor"]["gradient_order"], s["taylor"]["hessian_order"]
+    print("Taylor orders", orders)
+    assert orders[0] >= 1.9 and orders[1] >= 1.9

@@ -10,13 +10,27 @@
    every contact surface anyway (surface.c).
 
    The motion. u(X) = t + (R(theta) - I)(X - c) moves every point rigidly.
-   Its translation is held in a component where a condition of the body
-   holds that component (of any of its groups: the body is one piece), with
-   the condition's value; two conditions that hold the same component with
-   different values are refused. A component that no condition holds would
-   be a free motion of the body: refused for now, with the line naming it.
-   The load factor scales t and theta as it scales an elastic body's
-   Dirichlet values.
+   Its translation is prescribed in a component where a condition of the
+   body holds that component (of any of its groups: the body is one piece),
+   with the condition's value; two conditions that hold the same component
+   differently are refused. The load factor scales a prescribed t and theta
+   as it scales an elastic body's Dirichlet values. A component that a
+   condition force-controls, or that no condition holds, and the rotation
+   where -<body>_rigid_rotation free, are unknowns (rigidbody.h): a control's
+   force is scaled by the load factor, the others are held by the contact
+   alone.
+
+   The unknowns' derivatives. With q = (t_x, t_y, s = L theta), a point at
+   x = X + u(X) has dx/dq = J = [(1, 0), (0, 1), perp(x - c - t) / L],
+   perp(v) = (-v_y, v_x), and d2x/ds2 = -(x - c - t) / L^2, the others'
+   second derivatives zero. The contact energy Pi_c(x(q)) so has the
+   gradient J^T g (the force, and the moment about c + t over L) and the
+   Hessian J^T H_c J + sum_nodes g . d2x/dq2: the contact's Hessian block
+   between the body's surface nodes mapped by J (BodyRigidAddHessian, as
+   the formulations add their blocks), plus -sum g.(x - c - t) / L^2 in the
+   rotation's corner (curl, from the gradient's evaluation). The coupling to
+   the other body's dofs is H_c's mixed block times J: the border's
+   columns (forceborder.c).
 
    The force. The contact terms add their gradient dPi/du at the surface
    nodes (summed over ranks, so the same on every rank); for a rigid body it
@@ -43,10 +57,12 @@ PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
   b->rg = r;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
   PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves, weighted by length)", NULL, c, &nc, &setc));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; free: not supported yet)", NULL, rot, rot, sizeof(rot), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held), or free (held by the contact alone: the contact's moment about the reference point is zero)", NULL, rot, rot, sizeof(rot), NULL));
   PetscOptionsEnd();
   PetscCall(PetscStrcmp(rot, "free", &free));
-  PetscCheck(!free, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a free rotation of a rigid body is not supported yet; give its value (radians)", prefix);
+  PetscCheck(!free || !b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, and cannot turn freely", prefix);
+  r->unknown[2] = free;
+  if (free) PetscCall(PetscStrcpy(rot, "0"));
   r->rotation = strtod(rot, &end);
   PetscCheck(end != rot && !*end, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be a number (radians), got '%s'", prefix, rot);
   PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
@@ -136,14 +152,16 @@ static PetscErrorCode RigidReadCurves(Body b, BodyRigid *r)
   PetscFunctionReturn(0);
 }
 
-/* The translation's components from the conditions: a component held by
-   one condition or by several with the same value. */
+/* The translation's components from the conditions: prescribed by one
+   condition's value or by several alike, force-controlled by one, or held
+   by no condition (an unknown the contact holds). */
 static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
 {
   PetscReal value[2] = {0, 0};
   PetscInt  by[2]    = {-1, -1};
 
   PetscFunctionBeginUser;
+  r->qbc[0] = r->qbc[1] = r->qbc[2] = -1;
   for (PetscInt i = 0; i < b->nbc; ++i) {
     const BodyBC *bc = &b->bc[i];
     PetscInt      tag;
@@ -151,10 +169,15 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
     PetscCheck(!bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_exact: body %s is rigid: it has no exact solution", b->name, bc->group, b->name);
     for (PetscInt k = 0; k < bc->ncomp; ++k) {
       const PetscInt c = bc->comps[k];
-      PetscCheck(!bc->control[k], b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: a force control on rigid body %s is not supported yet; give its displacement", b->name, bc->group, b->name);
-      PetscCheck(by[c] < 0 || value[c] == bc->values[k], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s give its translation in %s the values %g and %g", b->name, b->bc[by[c]].group, bc->group, c ? "y" : "x", (double)value[c], (double)bc->values[k]);
+      PetscCheck(by[c] < 0 || (!bc->control[k] && !r->control[c] && value[c] == bc->values[k]), b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s both give its translation in %s (%s %g, %s %g); give it once", b->name, b->bc[PetscMax(by[c], 0)].group, bc->group, c ? "y" : "x", by[c] >= 0 && r->control[c] ? "force" : "value", (double)value[c], bc->control[k] ? "force" : "value", (double)bc->values[k]);
+      PetscCheck(!(c == 0 && b->axisym && bc->control[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: body %s is rigid in r-z: it moves along the axis only, and a radial force control has nothing to move", b->name, bc->group, b->name);
       by[c]    = i;
-      value[c] = bc->values[k];
+      value[c] = bc->control[k] ? bc->force[k] : bc->values[k];
+      if (bc->control[k]) {
+        r->unknown[c] = r->control[c] = PETSC_TRUE;
+        r->qforce[c]  = bc->force[k];
+        r->qbc[c]     = i;
+      }
     }
   }
   for (PetscInt c = 0; c < 2; ++c) {
@@ -162,12 +185,11 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
       PetscCheck(by[0] < 0 || value[0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[0]);
       continue;
     }
-    PetscCheck(by[c] >= 0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and no condition holds its translation in %s (-%s_bc_<group>_components): a free rigid motion is not supported yet", b->name, c ? "y" : "x", b->name);
+    if (by[c] < 0) r->unknown[c] = PETSC_TRUE; /* held by the contact alone */
   }
-  r->t[0] = value[0]; /* at the full load until BodyRigidSetLoadFactor */
-  r->t[1] = value[1];
-  r->tFull[0] = value[0];
-  r->tFull[1] = value[1];
+  for (PetscInt c = 0; c < 2; ++c) r->tFull[c] = r->unknown[c] ? 0.0 : value[c];
+  r->t[0] = r->tFull[0]; /* at the full load until BodyRigidSetLoadFactor */
+  r->t[1] = r->tFull[1];
   PetscFunctionReturn(0);
 }
 
@@ -226,6 +248,15 @@ PetscErrorCode BodyRigidSetUp(Body b)
   PetscCallMPI(MPI_Bcast(r->etag, (PetscMPIInt)r->ne, MPIU_INT, 0, b->comm));
   if (r->centre[0] == PETSC_MAX_REAL) PetscCall(RigidCurvesCentroid(r));
   PetscCall(RigidConditions(b, r));
+  {
+    PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+    for (PetscInt i = 0; i < r->nn; ++i)
+      for (PetscInt d = 0; d < 2; ++d) {
+        lo[d] = PetscMin(lo[d], r->X[2 * i + d]);
+        hi[d] = PetscMax(hi[d], r->X[2 * i + d]);
+      }
+    r->L = PetscSqrtReal(PetscSqr(hi[0] - lo[0]) + PetscSqr(hi[1] - lo[1]));
+  }
   b->dim     = 2;
   b->nlocal  = 0;
   b->nglobal = 0;
@@ -242,9 +273,67 @@ PetscErrorCode BodyRigidSetLoadFactor(Body b, PetscReal f)
   BodyRigid *r = b->rg;
 
   PetscFunctionBeginUser;
-  r->t[0]  = f * r->tFull[0];
-  r->t[1]  = f * r->tFull[1];
-  r->theta = f * r->rotation;
+  for (PetscInt c = 0; c < 2; ++c)
+    if (!r->unknown[c]) r->t[c] = f * r->tFull[c];
+  if (!r->unknown[2]) r->theta = f * r->rotation;
+  PetscFunctionReturn(0);
+}
+
+void BodyRigidSetUnknown(Body b, PetscInt q, PetscReal v)
+{
+  if (q < 2) b->rg->t[q] = v;
+  else b->rg->theta = v / b->rg->L;
+}
+
+PetscReal BodyRigidGetUnknown(const Body b, PetscInt q)
+{
+  return q < 2 ? b->rg->t[q] : b->rg->theta * b->rg->L;
+}
+
+PetscReal BodyRigidUnknownGradient(const Body b, PetscInt q)
+{
+  return q < 2 ? b->rg->force[q] : b->rg->moment / b->rg->L;
+}
+
+void BodyRigidJacobian(const Body b, const PetscReal x[2], PetscReal J[3][2])
+{
+  const BodyRigid *r = b->rg;
+
+  J[0][0] = J[1][1] = 1.0;
+  J[0][1] = J[1][0] = 0.0;
+  J[2][0]           = -(x[1] - r->centre[1] - r->t[1]) / r->L;
+  J[2][1]           = (x[0] - r->centre[0] - r->t[0]) / r->L;
+}
+
+PetscErrorCode BodyRigidAddHessian(Body b, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[])
+{
+  BodyRigid *r = b->rg;
+  PetscInt   pos[1024], nr = 0;
+  PetscReal  Jr[1024][3];
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < n; ++a) {
+    PetscInt  j, d;
+    PetscReal J[3][2];
+    if (!ContactRigidDofDecode(idx[a], &j, &d)) continue;
+    PetscCheck(nr < 1024, PETSC_COMM_SELF, PETSC_ERR_PLIB, "rigid body %s: a Hessian block with more than 1024 of its dofs", b->name);
+    BodyRigidJacobian(b, &x[2 * j], J);
+    for (PetscInt q = 0; q < 3; ++q) Jr[nr][q] = J[q][d];
+    pos[nr++] = a;
+  }
+  if (!nr) PetscFunctionReturn(0);
+  for (PetscInt q = 0; q < 3; ++q) {
+    if (!r->unknown[q] || !r->B[q]) continue;
+    for (PetscInt e = 0; e < n; ++e) { /* K symmetric: row e's coupling to the body's dofs */
+      PetscScalar v = 0;
+      if (idx[e] < 0) continue;
+      for (PetscInt k = 0; k < nr; ++k) v += K[e * n + pos[k]] * Jr[k][q];
+      if (v != 0.0) PetscCall(VecSetValue(r->B[q], idx[e], v, ADD_VALUES));
+    }
+    for (PetscInt q2 = 0; q2 < 3; ++q2)
+      for (PetscInt k = 0; k < nr && r->unknown[q2]; ++k)
+        for (PetscInt l = 0; l < nr; ++l) r->D[3 * q + q2] += Jr[k][q] * PetscRealPart(K[pos[k] * n + pos[l]]) * Jr[l][q2];
+  }
   PetscFunctionReturn(0);
 }
 
@@ -260,7 +349,7 @@ void BodyRigidDisplacement(const Body b, const PetscReal X[2], PetscReal u[2])
 
 void BodyRigidZeroForce(Body b)
 {
-  b->rg->force[0] = b->rg->force[1] = b->rg->moment = 0.0;
+  b->rg->force[0] = b->rg->force[1] = b->rg->moment = b->rg->curl = 0.0;
 }
 
 void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal g[])
@@ -276,6 +365,7 @@ void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal 
     if (b->axisym) continue; /* r-z: the radial parts cancel round the ring, and the body turns about no axis */
     r->force[0] += g[2 * i];
     r->moment += d[0] * g[2 * i + 1] - d[1] * g[2 * i];
+    r->curl -= d[0] * g[2 * i] + d[1] * g[2 * i + 1];
   }
 }
 

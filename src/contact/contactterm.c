@@ -77,8 +77,13 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
 
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceSetUp(&b->S[s], bodies[b->S[s].body], b->spec.name, 2.0 * blend)); /* blend width in eta */
+  PetscCheck(!bodies[b->S[0].body]->rigid || !bodies[b->S[1].body]->rigid, bodies[b->S[0].body]->comm, PETSC_ERR_USER_INPUT, "contact pair %s: bodies %s and %s are both rigid: a contact between them has no elastic side", b->spec.name, bodies[b->S[0].body]->name, bodies[b->S[1].body]->name);
   for (PetscInt s = 0; s < 2; ++s)
-    if (bodies[b->S[s].body]->rigid) PetscCall(ContactSurfaceOrientRigid(&b->S[s], bodies[b->S[s].body], &b->S[1 - s], b->spec.name));
+    if (bodies[b->S[s].body]->rigid) {
+      PetscCall(ContactSurfaceOrientRigid(&b->S[s], bodies[b->S[s].body], &b->S[1 - s], b->spec.name));
+      b->rigid     = bodies[b->S[s].body];
+      b->rigidSide = s;
+    }
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &b->S[s];
     if (b->spec.mirror) PetscCall(ContactSurfaceSetMirror(S, b->spec.mirrorY));
@@ -128,6 +133,14 @@ PetscErrorCode ContactTermReportBegin(ContactTerm *b, const PetscBool slave[2])
     b->report.side[s].nedges = b->S[s].ne;
     b->report.side[s].slave  = slave[s];
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactTermAddHessian(const ContactTerm *b, Mat H, PetscInt n, const PetscInt idx[], const PetscScalar K[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  if (b->rigid) PetscCall(BodyRigidAddHessian(b->rigid, b->S[b->rigidSide].x, n, idx, K));
   PetscFunctionReturn(0);
 }
 

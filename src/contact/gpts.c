@@ -110,7 +110,7 @@ static PetscErrorCode GPTSSlaveHessian(GPTS *cp, PetscInt s, PetscReal c, Mat H)
       for (PetscInt i = 0; i < 20; ++i)
         for (PetscInt j = 0; j < 20; ++j) K[i * 20 + j] = kw * dg[i] * dg[j];
       if (cp->b.exactHessian) ContactGapAddSecond(&P.G, P.N, kw * P.G.gap, K);
-      PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
+      PetscCall(ContactTermAddHessian(&cp->b, H, 20, idx, K));
     }
   }
   PetscFunctionReturn(0);

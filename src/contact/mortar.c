@@ -880,12 +880,13 @@ static PetscBool MortarCrossFirst(const Mortar *m, PetscInt s, const MortarCut *
 }
 
 /* The slot of index i in a sparse vector's index set (idx, n), appended with
-   its nv value arrays zeroed if new; -1 for i < 0 (a constrained dof). */
+   its nv value arrays zeroed if new; -1 for i = -1 (a constrained dof; a
+   rigid body's surface dofs, below -1, have their slots: rigidbody.h). */
 static PetscErrorCode SparseSlot(PetscInt i, PetscInt *n, PetscInt nmax, PetscInt idx[], PetscInt nv, PetscReal *val[], PetscInt *slot)
 {
   PetscFunctionBeginUser;
   *slot = -1;
-  if (i < 0) PetscFunctionReturn(0);
+  if (i == -1) PetscFunctionReturn(0);
   for (PetscInt k = 0; k < *n; ++k)
     if (idx[k] == i) {
       *slot = k;
@@ -974,7 +975,7 @@ static PetscErrorCode MortarCrossHessian(const Mortar *m, PetscInt s, const Mort
       if (sa[l] >= 0 && sa[l2] >= 0) K[sa[l] * n + sa[l2]] += f * Ka[l * 20 + l2];
       if (sb[l] >= 0 && sb[l2] >= 0) K[sb[l] * n + sb[l2]] -= f * Kb[l * 20 + l2];
     }
-  PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  PetscCall(ContactTermAddHessian(&m->b, H, n, idx, K));
   PetscFunctionReturn(0);
 }
 
@@ -1013,7 +1014,7 @@ static PetscErrorCode MortarCrossPair(const Mortar *m, PetscInt s, const MortarC
   PetscCall(MortarCrossAddDc(&C2, 1.0, &n, nmax, idx, 2, val, 1, NULL, NULL));
   for (PetscInt a = 0; a < n; ++a)
     for (PetscInt b = 0; b < n; ++b) K[a * n + b] = T * (val[0][a] * val[1][b] + val[1][a] * val[0][b]);
-  PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  PetscCall(ContactTermAddHessian(&m->b, H, n, idx, K));
   PetscFunctionReturn(0);
 }
 
@@ -1162,7 +1163,7 @@ static PetscErrorCode MortarAssembleHessian(Mortar *m, Mat H)
       PetscCall(PetscArrayzero(K, 400));
       ContactGapAddSecond(&P->G, P->N, P->wt * L, K);
       ContactGapIndices(S, sn, M, &P->G, idx);
-      PetscCall(MatSetValues(H, 20, idx, 20, idx, K, ADD_VALUES));
+      PetscCall(ContactTermAddHessian(&m->b, H, 20, idx, K));
     }
     /* the crossings: the closest point's passage from one master edge to
        the next, and the Gauss points that move with it */
@@ -1180,7 +1181,7 @@ static PetscErrorCode MortarAssembleHessian(Mortar *m, Mat H)
       g = m->b.exactHessian ? D->gj[j] : 0.0;
       for (PetscInt a = 0; a < n; ++a)
         for (PetscInt b = 0; b < n; ++b) K[a * n + b] = c * (gval[0][a] * gval[0][b] - g * (gval[0][a] * gval[1][b] + gval[1][a] * gval[0][b]));
-      PetscCall(MatSetValues(H, n, gidx, n, gidx, K, ADD_VALUES));
+      PetscCall(ContactTermAddHessian(&m->b, H, n, gidx, K));
     }
   }
   PetscCall(PetscFree(pts));

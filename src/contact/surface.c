@@ -164,7 +164,8 @@ static PetscErrorCode ContactSurfaceMapNodes(ContactSurface *S, Body b)
   if (b->rigid) { /* no dofs: the nodes follow the body's motion */
     PetscCall(PetscMalloc2(1, &S->locNode, 1, &S->locOff));
     S->nloc = 0;
-    for (PetscInt i = 0; i < 2 * S->nn; ++i) S->big[i] = -1;
+    for (PetscInt j = 0; j < S->nn; ++j)
+      for (PetscInt d = 0; d < 2; ++d) S->big[2 * j + d] = ContactRigidDof(j, d); /* through the body's motion (rigidbody.h) */
     PetscFunctionReturn(0);
   }
   PetscCall(DMGetLocalSection(b->dm, &s));

@@ -5,6 +5,7 @@
    JSON summary of the run; each contact term adds its own. */
 #include <petscviewerhdf5.h>
 #include "run.h"
+#include "forcecontrol.h"
 #include "outputset.h"
 #include "outputwrite.h"
 #include "xdmf.h"
@@ -298,11 +299,12 @@ static void JSONForceControl(FILE *fp, Problem p)
   fprintf(fp, ",\n  \"force_control_solves\": %d,\n  \"force_control\": [", (int)p->res.controlSolves);
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     const ForceControl *fc = &p->fc.c[k];
-    const BodyBC       *bc = &p->bodies[fc->body]->bc[fc->bc];
-    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", p->bodies[fc->body]->name, bc->group, bc->anchor ? "true" : "false", bc->comps[fc->c] ? "y" : "x");
-    ContactJSONKeyReal(fp, ", ", "force", fc->force);
-    ContactJSONKeyReal(fp, ", ", "displacement", fc->U);
-    ContactJSONKeyReal(fp, ", ", "reaction", fc->R);
+    const PetscReal     L  = fc->rigid && fc->c == 2 ? p->bodies[fc->body]->rg->L : 1.0; /* a rotation: radians and moments */
+    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", p->bodies[fc->body]->name, ProblemControlGroup(p, k), fc->anchor ? "true" : "false", ProblemControlComponent(p, k));
+    if (fc->rigid) fprintf(fp, ", \"rigid\": true");
+    ContactJSONKeyReal(fp, ", ", "force", fc->force * L);
+    ContactJSONKeyReal(fp, ", ", "displacement", fc->U / L);
+    ContactJSONKeyReal(fp, ", ", "reaction", fc->R * L);
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");

@@ -61,7 +61,9 @@ typedef struct {
   PetscMPIInt      rank;
   PetscInt         m, nloc; /* controls; this rank's dofs of Xb */
   Vec              B[CONTACT_MAX_CONTROLS], Z[CONTACT_MAX_CONTROLS];
-  PetscReal        D[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS], S[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS];
+  const PetscReal *D;                        /* the problem's p->fc.D: a rigid body's part changes with each Hessian */
+  PetscReal        S[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS];
+  PetscReal        floor[CONTACT_MAX_CONTROLS]; /* the least own stiffness a control's step is scaled and regularised by (a rigid body's unknown out of contact has none) */
   PetscReal        cap[CONTACT_MAX_CONTROLS];
   Mat              Hin;
   KSP              kin;
@@ -222,12 +224,12 @@ static PetscErrorCode BorderSolveControls(BorderCtx *c, const PetscReal r[], Pet
 
   PetscFunctionBeginUser;
   PetscCall(PetscBLASIntCast(m, &bm));
-  for (PetscInt k = 0; k < m; ++k) s[k] = PetscSqrtReal(c->D[k * m + k]);
+  for (PetscInt k = 0; k < m; ++k) s[k] = PetscSqrtReal(PetscMax(c->D[k * m + k], c->floor[k]));
   for (PetscInt it = 0; it < 200; ++it, mu = mu > 0 ? 4 * mu : 1e-12) {
     PetscBool ok = PETSC_TRUE;
     for (PetscInt k = 0; k < m; ++k) {
       ru[k] = r[k];
-      for (PetscInt l = 0; l < m; ++l) Au[k * m + l] = c->S[k * m + l] + (k == l ? mu * c->D[k * m + k] : 0.0);
+      for (PetscInt l = 0; l < m; ++l) Au[k * m + l] = c->S[k * m + l] + (k == l ? mu * s[k] * s[k] : 0.0);
     }
     UnheldConstrain(c->unheld, Au, ru);
     for (PetscInt k = 0; k < m; ++k)
@@ -355,7 +357,9 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
     c->cap[k] = p->opt.controlStep * p->fc.c[k].L;
   }
   c->solves = p->opt.controlBorderSolves;
-  PetscCall(PetscArraycpy(c->D, p->fc.D, c->m * c->m));
+  c->D = p->fc.D;
+  for (PetscInt k = 0; k < c->m; ++k) c->floor[k] = p->fc.c[k].rigid ? p->fc.c[k].kref : 0.0;
+  if (p->fc.rigid) c->solves = PETSC_TRUE; /* the border changes with the Hessian: the PC's condensed columns would not */
   c->unheld = &p->fc.unheld;
   PetscCall(PetscObjectReference((PetscObject)Hin));
   c->Hin = Hin;

@@ -62,15 +62,49 @@ static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
   PetscFunctionReturn(0);
 }
 
+/* A rigid body's unknowns (rigidbody.h) as controls: a force-controlled
+   component with its condition's force, the others (held by the contact
+   alone) as anchors of force zero, whose kref is the least E of the
+   elastic bodies (times the body's size in r-z). */
+static PetscErrorCode ProblemCollectRigidUnknowns(Problem p)
+{
+  PetscReal Emin = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (!p->bodies[i]->rigid) Emin = PetscMin(Emin, p->bodies[i]->E);
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    for (PetscInt q = 0; q < 3 && p->bodies[i]->rigid; ++q) {
+      const BodyRigid *r = p->bodies[i]->rg;
+      ForceControl    *fc;
+      if (!r->unknown[q]) continue;
+      PetscCheck(p->fc.n < CONTACT_MAX_CONTROLS, p->comm, PETSC_ERR_USER_INPUT, "more than %d force-controlled components and rigid bodies' unknowns", CONTACT_MAX_CONTROLS);
+      fc         = &p->fc.c[p->fc.n++];
+      fc->body   = i;
+      fc->bc     = r->qbc[q];
+      fc->c      = q;
+      fc->rigid  = PETSC_TRUE;
+      fc->force  = r->qforce[q];
+      fc->U      = 0.0;
+      fc->anchor = (PetscBool)!r->control[q];
+      fc->scale  = fc->force != 0.0 ? PetscAbsReal(fc->force) : 1.0;
+      fc->L      = r->L;
+      fc->kref   = Emin * (p->bodies[i]->axisym ? r->L : 1.0);
+      p->fc.rigid = PETSC_TRUE;
+    }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemCollectControls(Problem p)
 {
   PetscBool anchor[CONTACT_MAX_CONTROLS];
   PetscReal kref[CONTACT_MAX_CONTROLS];
 
   PetscFunctionBeginUser;
-  p->fc.n = 0;
+  p->fc.n     = 0;
+  p->fc.rigid = PETSC_FALSE;
   for (PetscInt i = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j)
+    for (PetscInt j = 0; j < p->bodies[i]->nbc && !p->bodies[i]->rigid; ++j)
       for (PetscInt c = 0; c < p->bodies[i]->bc[j].ncomp; ++c) {
         const Body    b = p->bodies[i];
         ForceControl *fc;
@@ -89,6 +123,7 @@ PetscErrorCode ProblemCollectControls(Problem p)
         PetscCall(ControlBodySize(p, i, &fc->L));
         fc->kref = b->E * (b->axisym ? fc->L : 1.0); /* a stiffness (force per length per unit thickness; r-z: over the whole circle) */
       }
+  PetscCall(ProblemCollectRigidUnknowns(p));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     anchor[k] = p->fc.c[k].anchor;
     kref[k]   = p->fc.c[k].kref;
@@ -96,6 +131,7 @@ PetscErrorCode ProblemCollectControls(Problem p)
   PetscCall(UnheldSetUp(&p->fc.unheld, p->fc.n, anchor, kref));
   PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &p->fc.coupled));
   if (p->fc.n && !p->fc.coupled && UnheldAny(&p->fc.unheld)) PetscCall(PetscInfo(NULL, "force control: a body held by contact: coupled, whatever -force_control_type\n"));
+  PetscCheck(!p->fc.rigid || p->fc.coupled, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type %s: a rigid body's free motion is solved coupled only", p->opt.controlType);
   p->fc.coupled = (PetscBool)(p->fc.n > 0 && (p->fc.coupled || UnheldAny(&p->fc.unheld)));
   PetscFunctionReturn(0);
 }
@@ -152,8 +188,8 @@ static PetscErrorCode ProblemControlColumn(Problem p, PetscInt k)
   PetscCall(BodyComputeReactions(b, b->Gl));
   for (PetscInt l = 0; l < p->fc.n; ++l) {
     const ForceControl *fl = &p->fc.c[l];
-    const BodyBC       *bc = &p->bodies[fl->body]->bc[fl->bc];
-    p->fc.D[l * p->fc.n + k] = fl->body == fc->body ? bc->reaction[bc->comps[fl->c]] : 0.0;
+    const BodyBC       *bc = fl->rigid ? NULL : &p->bodies[fl->body]->bc[fl->bc];
+    p->fc.D[l * p->fc.n + k] = bc && fl->body == fc->body ? bc->reaction[bc->comps[fl->c]] : 0.0;
   }
   PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
   PetscCall(VecZeroEntries(p->fc.B[k]));
@@ -175,8 +211,16 @@ PetscErrorCode ProblemSetUpControlBorder(Problem p)
 
   PetscFunctionBeginUser;
   if (!p->fc.coupled) PetscFunctionReturn(0);
-  for (PetscInt k = 0; k < m; ++k) PetscCall(ProblemControlColumn(p, k));
   for (PetscInt k = 0; k < m; ++k) {
+    if (!p->fc.c[k].rigid) PetscCall(ProblemControlColumn(p, k));
+    else { /* the contact's, at each Hessian (ProblemRigidBorderEnd) */
+      PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
+      PetscCall(VecZeroEntries(p->fc.B[k]));
+      for (PetscInt l = 0; l < m; ++l) p->fc.D[l * m + k] = p->fc.D[k * m + l] = 0.0;
+    }
+  }
+  for (PetscInt k = 0; k < m; ++k) {
+    if (p->fc.c[k].rigid) continue;
     PetscCheck(p->fc.D[k * m + k] > 0, p->comm, PETSC_ERR_USER_INPUT, "body %s: force-controlled group %s has no stiffness of its own (no cell touches it on any rank)", p->bodies[p->fc.c[k].body]->name, p->bodies[p->fc.c[k].body]->bc[p->fc.c[k].bc].group);
     for (PetscInt l = 0; l < k; ++l) p->fc.D[k * m + l] = p->fc.D[l * m + k] = 0.5 * (p->fc.D[k * m + l] + p->fc.D[l * m + k]);
   }
@@ -208,7 +252,8 @@ PetscErrorCode ProblemSetControlDisplacements(Problem p, Vec X)
     Body            b  = p->bodies[fc->body];
     const PetscReal v  = b->loadFactor > 0 ? U[k] / b->loadFactor : 0.0;
     fc->U              = U[k];
-    if (b->bc[fc->bc].values[fc->c] != v) PetscCall(BodySetBCValue(b, fc->bc, fc->c, v));
+    if (fc->rigid) BodyRigidSetUnknown(b, fc->c, U[k]); /* the motion itself, whatever the load factor */
+    else if (b->bc[fc->bc].values[fc->c] != v) PetscCall(BodySetBCValue(b, fc->bc, fc->c, v));
   }
   PetscFunctionReturn(0);
 }
@@ -230,10 +275,9 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     ForceControl *fc = &p->fc.c[k];
     Body          b  = p->bodies[fc->body];
-    const BodyBC *bc = &b->bc[fc->bc];
     if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
-    fc->R          = bc->reaction[bc->comps[fc->c]];
+    fc->R          = ProblemControlReaction(p, k); /* a rigid body's dPi/dq: the contact's force, or moment over L */
     gU[k]          = fc->R - b->loadFactor * fc->force;
     *f -= b->loadFactor * fc->force * fc->U;
   }
@@ -244,6 +288,69 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
     PetscCall(VecGetArray(G, &g));
     for (PetscInt k = 0; k < p->fc.n; ++k) g[nb + k] = gU[k];
     PetscCall(VecRestoreArray(G, &g));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscReal ProblemControlReaction(Problem p, PetscInt k)
+{
+  const ForceControl *fc = &p->fc.c[k];
+  const Body          b  = p->bodies[fc->body];
+
+  if (fc->rigid) return BodyRigidUnknownGradient(b, fc->c);
+  return b->bc[fc->bc].reaction[b->bc[fc->bc].comps[fc->c]];
+}
+
+const char *ProblemControlGroup(Problem p, PetscInt k)
+{
+  const ForceControl *fc = &p->fc.c[k];
+
+  return fc->bc < 0 ? "" : p->bodies[fc->body]->bc[fc->bc].group;
+}
+
+const char *ProblemControlComponent(Problem p, PetscInt k)
+{
+  const ForceControl *fc = &p->fc.c[k];
+
+  if (fc->rigid) return fc->c == 2 ? "rotation" : (fc->c ? "y" : "x");
+  return p->bodies[fc->body]->bc[fc->bc].comps[fc->c] ? "y" : "x";
+}
+
+PetscErrorCode ProblemRigidBorderBegin(Problem p)
+{
+  PetscFunctionBeginUser;
+  if (!p->fc.rigid) PetscFunctionReturn(0);
+  for (PetscInt k = 0; k < p->fc.n; ++k) {
+    const ForceControl *fc = &p->fc.c[k];
+    BodyRigid          *r  = p->bodies[fc->body]->rg;
+    if (!fc->rigid) continue;
+    PetscCall(VecZeroEntries(p->fc.B[k]));
+    r->B[fc->c] = p->fc.B[k];
+    PetscCall(PetscArrayzero(r->D, 9));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemRigidBorderEnd(Problem p)
+{
+  const PetscInt m = p->fc.n;
+
+  PetscFunctionBeginUser;
+  if (!p->fc.rigid) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (p->bodies[i]->rigid) PetscCall(MPIU_Allreduce(MPI_IN_PLACE, p->bodies[i]->rg->D, 9, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt k = 0; k < m; ++k) {
+    const ForceControl *fc = &p->fc.c[k];
+    BodyRigid          *r  = p->bodies[fc->body]->rg;
+    if (!fc->rigid) continue;
+    PetscCall(VecAssemblyBegin(p->fc.B[k]));
+    PetscCall(VecAssemblyEnd(p->fc.B[k]));
+    r->B[fc->c] = NULL;
+    for (PetscInt l = 0; l < m; ++l) {
+      const ForceControl *fl = &p->fc.c[l];
+      if (!fl->rigid || fl->body != fc->body) continue;
+      p->fc.D[k * m + l] = r->D[3 * fc->c + fl->c] + (fc->c == 2 && fl->c == 2 ? r->curl / PetscSqr(r->L) : 0.0);
+    }
   }
   PetscFunctionReturn(0);
 }

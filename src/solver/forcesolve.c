@@ -8,6 +8,7 @@
 #include "forceouter.h"
 #include "staging.h"
 #include "problem.h"
+#include "forcecontrol.h"
 
 static PetscErrorCode ProblemSolveControlledCoupled(Problem, PetscInt *, TaoConvergedReason *);
 
@@ -100,15 +101,11 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
     Vec            X0;
 
     PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U (ProblemScatterToBodies) and R at X */
-    for (PetscInt k = 0; k < p->fc.n; ++k) {
-      ForceControl *fc = &p->fc.c[k];
-      const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
-      fc->R            = bc->reaction[bc->comps[fc->c]];
-    }
+    for (PetscInt k = 0; k < p->fc.n; ++k) p->fc.c[k].R = ProblemControlReaction(p, k);
     if (!p->opt.controlRtolSet || ControlsConverged(p)) break;
     if (p->res.controlSolves >= p->opt.controlMaxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)p->fc.c[0].R, (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, ProblemControlGroup(p, 0), (double)p->fc.c[0].R, (double)p->fc.c[0].force));
       break;
     }
     PetscCall(PetscInfo(p->tao, "force control: reaction %g, force %g: the solve goes on to the gradient %g\n", (double)p->fc.c[0].R, (double)p->fc.c[0].force, (double)(p->opt.controlRtol * smin)));

@@ -31,6 +31,7 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
     PetscScalar *a[3];
     PetscInt     first = n;
 
+    if (bodies[i]->rigid) continue; /* no dofs: its motion is the border's (forceborder.c) */
     for (PetscInt k = 0; k < 3; ++k) {
       PetscCall(MatCreateVecs(H, &v[k], NULL));
       PetscCall(VecZeroEntries(v[k]));

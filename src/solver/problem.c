@@ -713,12 +713,21 @@ PetscBool ProblemTangentVaries(Problem p)
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
   PetscFunctionBeginUser;
+  if (p->fc.rigid) { /* a rigid body's unknowns: the gradient at X gives the rotation's curl (ProblemRigidBorderEnd) */
+    PetscReal f;
+    Vec       G;
+    PetscCall(VecDuplicate(p->Xb, &G));
+    PetscCall(ProblemEvaluate(p, X, &f, G, NULL));
+    PetscCall(VecDestroy(&G));
+  }
   PetscCall(ProblemScatterToBodies(p, X));
   if (ProblemTangentVaries(p)) {
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
+  PetscCall(ProblemRigidBorderBegin(p));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
+  PetscCall(ProblemRigidBorderEnd(p));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
@@ -886,6 +895,7 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   /* where a remainder is round-off its order means nothing: say so */
   if (p->res.taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0)) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->res.taylorRemainders[0][n - 1], (double)f0));
   if (p->res.taylorRemainders[1][0] <= 1e-9) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->res.taylorRemainders[1][0]));
+  PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p)); /* the bodies back at the answer: a rigid body's force is its last evaluation's */
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&U));
   PetscCall(VecDestroy(&V));
