@@ -8,6 +8,7 @@ quoting them, generated from committed results, and the README's picture.
                                                    # run a table's cases first
     python3 scripts/readme_figures.py --measure axisymmetric [--update]
     python3 scripts/readme_figures.py --measure rigid [--update]
+    python3 scripts/readme_figures.py --measure rigid-free [--update]
     python3 scripts/readme_figures.py --measure model [--update]
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
@@ -39,7 +40,7 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   --measure rigid: rigid_study.py's scenes, each run once but the timed
   pairs, alternated 3 times; the reference scene with the disc E2/E1 times
   stiffer against the disc rigid; the rigid bodies' unknowns: force control,
-  held by contact, a free rotation).
+  held by contact, a free rotation, which --measure rigid-free measures alone).
 - axisymmetric: bench/axisymmetric/results.json (written by --measure
   axisymmetric: the sphere and ssnv104 scenes at their defaults and the
   sphere under -accuracy 0.01, median of 3 whole-run times; half a minute);
@@ -557,6 +558,12 @@ def render_rigid():
     return rigid_study.table(load("rigid")["scenes"])
 
 
+def measure_rigid_free():
+    """The rigid bodies' unknowns alone (rigid_study.measure_free), into the rigid results."""
+    import rigid_study
+    save("rigid", dict(load("rigid"), free=rigid_study.measure_free()))
+
+
 def render_rigid_free():
     import rigid_study
     return rigid_study.free_table(load("rigid")["free"])
@@ -968,7 +975,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "claims", "model"], action="append",
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -983,6 +990,8 @@ def main():
         measure_axisymmetric()
     if "rigid" in args.measure:
         measure_rigid()
+    if "rigid-free" in args.measure:
+        measure_rigid_free()
     if "claims" in args.measure:
         measure_claims()
     if "model" in args.measure:
