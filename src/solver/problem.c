@@ -168,6 +168,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
+  PetscCall(PetscOptionsBool("-load_path", "Record the load path in the JSON summary's load_path: at rest and at each converged load step, the load factor, the energy and every Dirichlet group's reaction; each load step's last stage then stops at the final tolerance, as the last load's", NULL, p->opt.loadPath, &p->opt.loadPath, NULL));
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-force_control_type", "Force control: coupled (each controlled displacement an unknown of the one minimisation) or outer (an outer iteration of solves on them; not with a body held by contact, always coupled)", NULL, ForceControlList, p->opt.controlType, p->opt.controlType, sizeof(p->opt.controlType), NULL));
   PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
@@ -915,6 +916,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->Xb));
   PetscCall(VecDestroy(&p->G));
+  PetscCall(PetscFree3(p->res.path.load, p->res.path.energy, p->res.path.reaction));
   PetscCall(PetscFree(p));
   *problem = NULL;
   PetscFunctionReturn(0);
