@@ -179,37 +179,46 @@ static PetscErrorCode ProblemControlGradientScale(Problem p, PetscReal g0, Petsc
   PetscFunctionReturn(0);
 }
 
+/* Room in the load path's record for one more state of ngroups groups. */
+static PetscErrorCode LoadPathReserve(LoadPath *lp, PetscInt ngroups)
+{
+  const PetscInt cap = 2 * lp->cap + 8;
+  PetscReal     *l, *e, *r;
+
+  PetscFunctionBeginUser;
+  if (lp->n < lp->cap) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc3(cap, &l, cap, &e, 2 * cap * ngroups, &r));
+  PetscCall(PetscArraycpy(l, lp->load, lp->n));
+  PetscCall(PetscArraycpy(e, lp->energy, lp->n));
+  PetscCall(PetscArraycpy(r, lp->reaction, 2 * lp->n * ngroups));
+  PetscCall(PetscFree3(lp->load, lp->energy, lp->reaction));
+  lp->load = l, lp->energy = e, lp->reaction = r, lp->cap = cap, lp->ngroups = ngroups;
+  PetscFunctionReturn(0);
+}
+
 /* -load_path: appends the state at load factor load to the record (X, or
-   rest where atRest: X = 0 at load 0), its energy and every Dirichlet
-   group's reaction; the record then reads as the load path of the converged
-   states from rest, whose energy is the work of the reactions along it
-   (where the groups' values are the only loading). */
+   rest where atRest: X = 0 at load 0, the record restarted), its energy and
+   every Dirichlet group's reaction; the record then reads as the load path
+   of the converged states from rest, whose energy is the work of the
+   reactions along it (where the groups' values are the only loading). */
 static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool atRest)
 {
   LoadPath *lp = &p->res.path;
   PetscReal f, *R, stage = p->nbodies ? p->bodies[0]->loadFactor : 1.0;
+  PetscInt  ngroups = 0;
   Vec       X = p->X;
 
   PetscFunctionBeginUser;
   if (!p->opt.loadPath) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < p->nbodies; ++i) ngroups += p->bodies[i]->nbc;
   if (atRest) lp->n = 0;
-  if (lp->n == lp->cap) { /* grow */
-    PetscReal *l, *e, *r;
-    lp->ngroups = 0;
-    for (PetscInt i = 0; i < p->nbodies; ++i) lp->ngroups += p->bodies[i]->nbc;
-    PetscCall(PetscMalloc3(2 * lp->cap + 8, &l, 2 * lp->cap + 8, &e, 2 * (2 * lp->cap + 8) * lp->ngroups, &r));
-    PetscCall(PetscArraycpy(l, lp->load, lp->n));
-    PetscCall(PetscArraycpy(e, lp->energy, lp->n));
-    PetscCall(PetscArraycpy(r, lp->reaction, 2 * lp->n * lp->ngroups));
-    PetscCall(PetscFree3(lp->load, lp->energy, lp->reaction));
-    lp->load = l, lp->energy = e, lp->reaction = r, lp->cap = 2 * lp->cap + 8;
-  }
+  PetscCall(LoadPathReserve(lp, ngroups));
   if (atRest) {
     PetscCall(VecDuplicate(p->X, &X));
     PetscCall(ProblemSetStage(p, 0.0, 1.0));
   }
   PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
-  R = lp->reaction + 2 * lp->n * lp->ngroups;
+  R = lp->reaction + 2 * lp->n * ngroups;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, R += 2) PetscCall(PetscArraycpy(R, p->bodies[i]->bc[j].reaction, 2));
@@ -217,16 +226,17 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
   lp->load[lp->n]   = load;
   lp->energy[lp->n] = f;
   lp->n++;
-  if (atRest) PetscCall(VecDestroy(&X));
-  if (atRest) PetscCall(ProblemSetStage(p, stage, 1.0)); /* the load the solve starts at, as it was */
+  if (atRest) {
+    PetscCall(VecDestroy(&X));
+    PetscCall(ProblemSetStage(p, stage, 1.0)); /* the load the solve starts at, as it was */
+  }
   PetscFunctionReturn(0);
 }
 
 /* The penalty stages at load factor load, each a TAO solve from the last;
    the last stage of the last load (of every load with -load_path) stops at
-   the final tolerance, gttol times
-   the gradient norm g0 of the full problem at rest, the others when their
-   gradient norm has fallen by -stage_rtol. */
+   the final tolerance, gttol times the gradient norm g0 of the full problem
+   at rest, the others when their gradient norm has fallen by -stage_rtol. */
 static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
 {
   const ProblemSchedule *sc = &p->sched;
