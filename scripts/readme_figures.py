@@ -594,8 +594,11 @@ def render_squeeze_cost():
 def render_squeeze_cost_ratio():
     import squeeze_study
     rows = load("squeeze")["cost"]
+    rest = ", -tangent_at_rest"
     return (f"{squeeze_study.cost_ratio(rows, 'hertz'):.2f} times the linear run's solve on the reference scene pushed "
-            f"by 0.01 and {squeeze_study.cost_ratio(rows, 'rubber-squeeze'):.2f} times on the squeeze at 1 % of its push")
+            f"by 0.01 and {squeeze_study.cost_ratio(rows, 'rubber-squeeze'):.2f} times on the squeeze at 1 % of its push; "
+            f"with -tangent_at_rest {squeeze_study.cost_ratio(rows, 'hertz', rest):.2f} and "
+            f"{squeeze_study.cost_ratio(rows, 'rubber-squeeze', rest):.2f} times")
 
 
 def render_rigid_adequacy():

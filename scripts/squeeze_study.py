@@ -11,9 +11,12 @@ the tables of docs/scenes.md and docs/img/rubber-squeeze.png from it.
   (bench/squeeze/getfem-h*.json, written by scripts/getfem_squeeze.py with
   the program's k_p: python3-getfem runs under /usr/bin/python3);
 - the cost: the reference scene pushed by 0.01 (largest strain 1.4 %) with
-  both bodies linear and both neo-Hookean, and the squeeze at 1 % of its
-  push, interleaved 3 times, median solve times; the squeeze by Newton in
-  one solve and in 20 load steps, and by L-BFGS (-tao_type lmvm).
+  both bodies linear, both neo-Hookean, and both neo-Hookean with
+  -tangent_at_rest, and the squeeze at 1 % of its push likewise,
+  interleaved 3 times, median solve times; the squeeze by Newton in one
+  solve, in 20 load steps and with -tangent_at_rest, and by L-BFGS
+  (-tao_type lmvm; and with H0 without the contact's Hessian, as before
+  -tangent_at_rest, which does not converge).
 
     python3 scripts/squeeze_study.py            # measures and prints the tables
     python3 scripts/squeeze_study.py --getfem   # and first reruns GetFEM on the meshes of
@@ -132,19 +135,27 @@ def failed_row(label, args, run):
 
 LMVM = [("rubber-squeeze, L-BFGS (lmvm)", SCENE + ["-tao_type", "lmvm"]),
         ("rubber-squeeze, L-BFGS (lmvm), 20 load steps", SCENE + ["-tao_type", "lmvm", "-load_steps", "20"]),
-        ("rubber-squeeze, L-BFGS (lmvm), Armijo's line search", SCENE + ["-tao_type", "lmvm", "-tao_ls_type", "armijo"])]
+        ("rubber-squeeze, L-BFGS (lmvm), H0 without the contact (-tangent_at_rest 0)",
+         SCENE + ["-tao_type", "lmvm", "-tangent_at_rest", "0"]),
+        ("rubber-squeeze, L-BFGS (lmvm), H0 without the contact, Armijo's line search",
+         SCENE + ["-tao_type", "lmvm", "-tangent_at_rest", "0", "-tao_ls_type", "armijo"])]
+NEO_HERTZ = HERTZ_SMALL + ["-indenter_material", "neohookean", "-block_material", "neohookean"]
+SQUEEZE_SMALL = SCENE + ["-plate_bc_contact_values", "0,-0.003"]
 
 
 def measure_cost(tmp):
     """The cost table's rows (see the module's header): Newton's runs
-    timed, interleaved; L-BFGS's once each (they do not converge)."""
+    timed, interleaved; L-BFGS's once each (some do not converge)."""
     from contactrun import run_case
     cases = [("hertz pushed by 0.01, linear", HERTZ_SMALL),
-             ("hertz pushed by 0.01, neo-Hookean", HERTZ_SMALL + ["-indenter_material", "neohookean", "-block_material", "neohookean"]),
-             ("rubber-squeeze at 1 % of its push, linear", SCENE + ["-disc_material", "linear", "-plate_bc_contact_values", "0,-0.003"]),
-             ("rubber-squeeze at 1 % of its push, neo-Hookean", SCENE + ["-plate_bc_contact_values", "0,-0.003"]),
+             ("hertz pushed by 0.01, neo-Hookean", NEO_HERTZ),
+             ("hertz pushed by 0.01, neo-Hookean, -tangent_at_rest", NEO_HERTZ + ["-tangent_at_rest"]),
+             ("rubber-squeeze at 1 % of its push, linear", SQUEEZE_SMALL + ["-disc_material", "linear"]),
+             ("rubber-squeeze at 1 % of its push, neo-Hookean", SQUEEZE_SMALL),
+             ("rubber-squeeze at 1 % of its push, neo-Hookean, -tangent_at_rest", SQUEEZE_SMALL + ["-tangent_at_rest"]),
              ("rubber-squeeze, Newton", SCENE),
-             ("rubber-squeeze, Newton, 20 load steps", SCENE + ["-load_steps", "20"])]
+             ("rubber-squeeze, Newton, 20 load steps", SCENE + ["-load_steps", "20"]),
+             ("rubber-squeeze, Newton, -tangent_at_rest", SCENE + ["-tangent_at_rest"])]
     res = timed(cases, tmp)
     rows = [cost_row(label, args, res[label]) for label, args in cases]
     for label, args in LMVM:
@@ -179,7 +190,8 @@ def curve_table(rows, gf):
 def cost_table(rows):
     out = ["| run | converged | iterations | solve | P |", "|---|---|---|---|---|"]
     for r in rows:
-        its = f"{r['iterations']}" + (f" ({r['stages']} stages, {r['cutbacks']} cutbacks)" if r["stages"] > 1 else "")
+        cut = f"{r['cutbacks']} cutback" + ("" if r["cutbacks"] == 1 else "s")
+        its = f"{r['iterations']}" + (f" ({r['stages']} stages, {cut})" if r["stages"] > 1 else "")
         if r["converged"]:
             out.append(f"| {r['run']} | yes | {its} | {r['solve']:.3f} s | {r['P']:.6g} |")
         else:
@@ -188,9 +200,11 @@ def cost_table(rows):
     return "\n".join(out) + "\n"
 
 
-def cost_ratio(rows, scene):
-    """The neo-Hookean solve's time over the linear one's, on scene's small-strain pair."""
-    lin, nh = ([r for r in rows if r["run"].startswith(scene) and r["run"].endswith(m)][0] for m in (", linear", ", neo-Hookean"))
+def cost_ratio(rows, scene, variant=""):
+    """The neo-Hookean solve's time (with variant, e.g. ", -tangent_at_rest")
+    over the linear one's, on scene's small-strain pair."""
+    lin, nh = ([r for r in rows if r["run"].startswith(scene) and r["run"].endswith(m)][0]
+               for m in (", linear", ", neo-Hookean" + variant))
     return nh["solve"] / lin["solve"]
 
 
