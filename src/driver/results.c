@@ -260,17 +260,19 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
 }
 
 /* The reaction of every Dirichlet group, R[2 k] and R[2 k + 1] for the k-th
-   (the bodies' groups in order), keyed body:group. */
-static void JSONReactionSet(FILE *fp, Problem p, const char sep[], const PetscReal R[])
+   (the bodies' groups in order), keyed body:group; each entry after indent,
+   the closing brace after end. */
+static void JSONReactionSet(FILE *fp, Problem p, const char sep[], const char indent[], const char end[], const PetscReal R[])
 {
   fprintf(fp, "%s\"reactions\": {", sep);
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, ++k) {
       char key[2 * CONTACT_NAME_LEN + 2];
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group);
-      ContactJSONKeyPair(fp, k ? ", " : "", key, R + 2 * k);
+      fprintf(fp, "%s", k ? "," : "");
+      ContactJSONKeyPair(fp, indent, key, R + 2 * k);
     }
-  fprintf(fp, "}");
+  fprintf(fp, "%s}", end);
 }
 
 static PetscErrorCode JSONReactions(FILE *fp, Problem p)
@@ -280,7 +282,7 @@ static PetscErrorCode JSONReactions(FILE *fp, Problem p)
   PetscFunctionBeginUser;
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 2) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 2));
-  JSONReactionSet(fp, p, ",\n  ", R);
+  JSONReactionSet(fp, p, ",\n  ", "\n    ", "\n  ", R);
   PetscFunctionReturn(0);
 }
 
@@ -295,7 +297,7 @@ static void JSONLoadPath(FILE *fp, Problem p)
   for (PetscInt k = 0; k < lp->n; ++k) {
     ContactJSONKeyReal(fp, k ? ",\n    {" : "\n    {", "load", lp->load[k]);
     ContactJSONKeyReal(fp, ", ", "energy", lp->energy[k]);
-    JSONReactionSet(fp, p, ", ", lp->reaction + 2 * k * lp->ngroups);
+    JSONReactionSet(fp, p, ", ", " ", " ", lp->reaction + 2 * k * lp->ngroups);
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");
