@@ -34,6 +34,12 @@ PetscErrorCode ProblemSetHessianSwitchReference(Problem, PetscReal g0);
    reassembled at every Hessian, and the steps that condense it once (the
    Schur step, L-BFGS's contact H0) do not apply. */
 PetscBool      ProblemTangentVaries(Problem);
+/* Whether the Hessian takes the bodies' tangent at X: a body's tangent
+   varies and -tangent_at_rest is not given. Otherwise K, the stiffness at
+   rest assembled once, stands for it (exact for linear bodies; for a
+   neohookean body a modified Newton step and L-BFGS's contact H0), and the
+   steps that condense it once apply. */
+PetscBool      ProblemTangentReassembled(Problem);
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */

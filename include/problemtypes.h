@@ -46,6 +46,8 @@ typedef struct {
   PetscInt    loadSteps, penaltyStages;
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
+  PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
+  PetscBool   loadPath; /* -load_path: record each converged load (staging.c), each solved to the final tolerance */
   PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
   char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
   PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration (outer), of the solve and its refinements (coupled) */
@@ -87,6 +89,15 @@ typedef struct {
   KSP          ksp;    /* coupled, Newton: the solve of H inside the bordered one (newtonstep.c) */
 } ForceControls;
 
+/* -load_path: the staged solve's converged loads, from rest (staging.c):
+   each one's load factor, energy Pi (the bodies' and the terms', the loads'
+   potential included) and the reaction of every Dirichlet group (the bodies'
+   groups in order, two components each). */
+typedef struct {
+  PetscInt   n, cap, ngroups;
+  PetscReal *load, *energy, *reaction; /* [cap], [cap], [cap][ngroups][2] */
+} LoadPath;
+
 /* What a solve and its post-processing found. */
 typedef struct {
   PetscInt           nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
@@ -104,6 +115,7 @@ typedef struct {
   PetscInt           decrementSolves; /* -lmvm_decrement_rtol: the H0 solves of the decrement test */
   PetscInt           decrementFloor;  /* -lmvm_decrement_rtol: last stages ended at the decrement's round-off floor */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
+  LoadPath           path;          /* -load_path */
 } ProblemResults;
 
 /* What the solve runs (staging.c): the options' load steps, penalty continuation and

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Install what `contact` needs on Debian 12, skipping what is already there.
 # Debian: PETSc (with TAO, HDF5, MUMPS), METIS, Gmsh, Open MPI, HDF5, pkg-config,
-# ParaView, xvfb.
+# ParaView, xvfb, GetFEM's Python module.
 # Python: h5py, numpy, matplotlib, pytest, pytest-xdist (pip, or Debian packages as
 # a fallback).
 set -eu
@@ -13,7 +13,9 @@ set -eu
 # that opens the XDMF output with ParaView's readers, headless.
 # libmumps-dev, liblapack-dev, libblas-dev: the substructured Newton step calls MUMPS
 # (condensation and expansion, which PETSc does not expose) and LAPACK directly.
-DEB_PKGS="petsc-dev libmetis-dev libmumps-dev liblapack-dev libblas-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth"
+# python3-getfem (about 30 MB with its libraries, for the system's /usr/bin/python3):
+# the independent code tests/test_squeeze.py compares the rubber squeeze with.
+DEB_PKGS="petsc-dev libmetis-dev libmumps-dev liblapack-dev libblas-dev gmsh openmpi-bin libhdf5-openmpi-dev pkg-config make gcc libopenblas0-serial paraview python3-paraview xvfb xauth python3-getfem"
 # Each Python module as module:pip-name where the names differ (pytest-xdist,
 # which runs `make test` on every core, is imported as xdist; Debian ships it as
 # python3-pytest-xdist).

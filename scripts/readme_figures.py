@@ -10,6 +10,9 @@ quoting them, generated from committed results, and the README's picture.
     python3 scripts/readme_figures.py --measure rigid [--update]
     python3 scripts/readme_figures.py --measure rigid-free [--update]
     python3 scripts/readme_figures.py --measure model [--update]
+    python3 scripts/readme_figures.py --measure squeeze [--update]
+    python3 scripts/readme_figures.py --measure squeeze-picture
+                                                   # redraw docs/img/rubber-squeeze.png
     python3 scripts/readme_figures.py --measure picture
                                                    # redraw docs/img/hertz-pressure.png
 
@@ -47,6 +50,13 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - model: bench/model/results.json (written by --measure model: the reference
   scene pushed by 0.01, 0.05, 0.15 and 0.3 with both bodies linear and both
   neo-Hookean, the model's error against the largest strain; half a minute);
+- squeeze, squeeze-cost: bench/squeeze/results.json (written by --measure
+  squeeze: squeeze_study.py's force-squeeze curves on 4 meshes, against
+  GetFEM's, bench/squeeze/getfem-h*.json, and the cost of neo-Hookean
+  bodies; it also draws docs/img/rubber-squeeze.png, which --measure
+  squeeze-picture redraws from the committed curves; about 5 minutes);
+  the phrase squeeze-cost-ratio: the neo-Hookean solve over the linear one
+  at small strain, from the same file;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -569,6 +579,41 @@ def render_rigid_free():
     return rigid_study.free_table(load("rigid")["free"])
 
 
+SQUEEZE_PNG = os.path.join("docs", "img", "rubber-squeeze.png")
+
+
+def measure_squeeze():
+    """The rubber-squeeze study (squeeze_study.py) and its figure."""
+    import squeeze_study
+    save("squeeze", squeeze_study.measure(os.path.join(ROOT, SQUEEZE_PNG)))
+
+
+def measure_squeeze_picture():
+    """The rubber-squeeze figure redrawn from the committed curves."""
+    import squeeze_study
+    squeeze_study.redraw(load("squeeze")["curves"], os.path.join(ROOT, SQUEEZE_PNG))
+
+
+def render_squeeze():
+    import squeeze_study
+    return squeeze_study.curve_table(load("squeeze")["curves"], squeeze_study.getfem_results())
+
+
+def render_squeeze_cost():
+    import squeeze_study
+    return squeeze_study.cost_table(load("squeeze")["cost"])
+
+
+def render_squeeze_cost_ratio():
+    import squeeze_study
+    rows = load("squeeze")["cost"]
+    rest = ", -tangent_at_rest"
+    return (f"{squeeze_study.cost_ratio(rows, 'hertz'):.2f} times the linear run's solve on the reference scene pushed "
+            f"by 0.01 and {squeeze_study.cost_ratio(rows, 'rubber-squeeze'):.2f} times on the squeeze at 1 % of its push; "
+            f"with -tangent_at_rest {squeeze_study.cost_ratio(rows, 'hertz', rest):.2f} and "
+            f"{squeeze_study.cost_ratio(rows, 'rubber-squeeze', rest):.2f} times")
+
+
 def render_rigid_adequacy():
     import rigid_study
     return rigid_study.adequacy_table(load("rigid")["adequacy"])
@@ -869,7 +914,8 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "solver": render_solver, "lmvm": render_lmvm,
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
-          "penalty": render_penalty, "claims": render_claims, "model": render_model}
+          "penalty": render_penalty, "claims": render_claims, "model": render_model,
+          "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
            "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
@@ -879,7 +925,8 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-exponent": render_sweep_exponent, "sweep-fixed-costs": render_sweep_fixed_costs,
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
-           "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost}
+           "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
+           "squeeze-cost-ratio": render_squeeze_cost_ratio}
 
 
 def kind(name):
@@ -975,7 +1022,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
-    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model"], action="append",
+    ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model",
+                                          "squeeze", "squeeze-picture"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -996,6 +1044,10 @@ def main():
         measure_claims()
     if "model" in args.measure:
         measure_model()
+    if "squeeze" in args.measure:
+        measure_squeeze()
+    if "squeeze-picture" in args.measure:
+        measure_squeeze_picture()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:

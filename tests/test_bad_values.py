@@ -37,7 +37,7 @@ DOMAINS = {
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",), "indenter_material": ("choice",), "block_material": ("choice",),
     "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
-    "partition_view": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
+    "partition_view": ("bool",), "load_path": ("bool",), "tangent_at_rest": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
     "indenter_rigid": ("bool",), "block_rigid": ("bool",),
     "indenter_rigid_centre": ("reals", None, False), "block_rigid_centre": ("reals", None, False),

@@ -260,16 +260,48 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   PetscFunctionReturn(0);
 }
 
-static void JSONReactions(FILE *fp, Problem p)
+/* The reaction of every Dirichlet group, R[2 k] and R[2 k + 1] for the k-th
+   (the bodies' groups in order), keyed body:group; each entry after indent,
+   the closing brace after end. */
+static void JSONReactionSet(FILE *fp, Problem p, const char sep[], const char indent[], const char end[], const PetscReal R[])
 {
-  fprintf(fp, ",\n  \"reactions\": {");
-  for (PetscInt i = 0, first = 1; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, first = 0) {
+  fprintf(fp, "%s\"reactions\": {", sep);
+  for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, ++k) {
       char key[2 * CONTACT_NAME_LEN + 2];
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group);
-      ContactJSONKeyPair(fp, first ? "\n    " : ",\n    ", key, p->bodies[i]->bc[j].reaction);
+      fprintf(fp, "%s", k ? "," : "");
+      ContactJSONKeyPair(fp, indent, key, R + 2 * k);
     }
-  fprintf(fp, "\n  }");
+  fprintf(fp, "%s}", end);
+}
+
+static PetscErrorCode JSONReactions(FILE *fp, Problem p)
+{
+  PetscReal R[2 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 2) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 2));
+  JSONReactionSet(fp, p, ",\n  ", "\n    ", "\n  ", R);
+  PetscFunctionReturn(0);
+}
+
+/* -load_path: the converged states from rest, each with its load factor,
+   energy and reactions (staging.c). */
+static void JSONLoadPath(FILE *fp, Problem p)
+{
+  const LoadPath *lp = &p->res.path;
+
+  if (!p->opt.loadPath) return;
+  fprintf(fp, ",\n  \"load_path\": [");
+  for (PetscInt k = 0; k < lp->n; ++k) {
+    ContactJSONKeyReal(fp, k ? ",\n    {" : "\n    {", "load", lp->load[k]);
+    ContactJSONKeyReal(fp, ", ", "energy", lp->energy[k]);
+    JSONReactionSet(fp, p, ", ", " ", " ", lp->reaction + 2 * k * lp->ngroups);
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "\n  ]");
 }
 
 /* Each load's resultant, at the load factor solved (only with loads). In
@@ -449,7 +481,8 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
     ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
     ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
-    JSONReactions(fp, p);
+    PetscCall(JSONReactions(fp, p));
+    JSONLoadPath(fp, p);
     JSONLoads(fp, p);
     JSONForceControl(fp, p);
     PetscCall(JSONContact(fp, p));

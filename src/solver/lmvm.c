@@ -519,7 +519,8 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
   if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
-  contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms && !ProblemTangentVaries(p)); /* a varying tangent: the stiffness at rest (elastic) */
+  if (!p->opt.tangentAtRestSet) p->opt.tangentAtRest = PETSC_TRUE; /* H0 is the stiffness at rest with the contact's Hessian, whatever the material (a neohookean body's tangent would be factored anew at each refresh) */
+  contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms && !ProblemTangentReassembled(p)); /* a varying tangent: the stiffness at rest (elastic) */
   PetscCall(ProblemCreateLMVM(p, &l));
   if (contact) PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
   H0 = contact ? p->H : p->K;

@@ -44,7 +44,8 @@ PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
    (substructure.c), or on one rank by MUMPS's Schur complement of K
    (schur.c, -newton_schur_type mumps). Without contact, with
    -newton_schur 0, or where a body's tangent depends on u (a neohookean
-   body: the whole Hessian changes, and may be indefinite), a Cholesky
+   body, unless -tangent_at_rest puts the stiffness at rest in its place:
+   the whole Hessian changes, and may be indefinite), a Cholesky
    factorisation per step (CHOLMOD on one rank, MUMPS on several; MUMPS's
    LDL^T where the Hessian may be indefinite); -newton_iterative: CG with
    GAMG (iterative.c). nls takes
@@ -57,7 +58,7 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
 {
   PC          pc;
   PetscMPIInt size;
-  PetscBool   varies = ProblemTangentVaries(p); /* a body's tangent depends on u (neohookean): K is no longer condensed once */
+  PetscBool   varies = ProblemTangentReassembled(p); /* a body's tangent depends on u (neohookean): K is no longer condensed once */
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));

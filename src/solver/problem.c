@@ -168,6 +168,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
+  PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain). Default: false with Newton, true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
+  PetscCall(PetscOptionsBool("-load_path", "Record the load path in the JSON summary's load_path: at rest and at each converged load step, the load factor, the energy and every Dirichlet group's reaction; each load step's last stage then stops at the final tolerance, as the last load's", NULL, p->opt.loadPath, &p->opt.loadPath, NULL));
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-force_control_type", "Force control: coupled (each controlled displacement an unknown of the one minimisation) or outer (an outer iteration of solves on them; not with a body held by contact, always coupled)", NULL, ForceControlList, p->opt.controlType, p->opt.controlType, sizeof(p->opt.controlType), NULL));
   PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
@@ -707,9 +709,15 @@ PetscBool ProblemTangentVaries(Problem p)
   return PETSC_FALSE;
 }
 
+PetscBool ProblemTangentReassembled(Problem p)
+{
+  return (PetscBool)(ProblemTangentVaries(p) && !p->opt.tangentAtRest);
+}
+
 /* P = K + the terms' Hessians at X, in their current order (exact or
    Gauss-Newton); K the bodies' tangent at X where a body's varies
-   (neohookean), else the stiffness assembled once. */
+   (neohookean) and -tangent_at_rest is not given, else the stiffness
+   assembled once. */
 PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
 {
   PetscFunctionBeginUser;
@@ -721,7 +729,7 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
     PetscCall(VecDestroy(&G));
   }
   PetscCall(ProblemScatterToBodies(p, X));
-  if (ProblemTangentVaries(p)) {
+  if (ProblemTangentReassembled(p)) {
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
@@ -925,6 +933,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(VecDestroy(&p->X));
   PetscCall(VecDestroy(&p->Xb));
   PetscCall(VecDestroy(&p->G));
+  PetscCall(PetscFree3(p->res.path.load, p->res.path.energy, p->res.path.reaction));
   PetscCall(PetscFree(p));
   *problem = NULL;
   PetscFunctionReturn(0);

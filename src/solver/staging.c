@@ -179,10 +179,64 @@ static PetscErrorCode ProblemControlGradientScale(Problem p, PetscReal g0, Petsc
   PetscFunctionReturn(0);
 }
 
+/* Room in the load path's record for one more state of ngroups groups. */
+static PetscErrorCode LoadPathReserve(LoadPath *lp, PetscInt ngroups)
+{
+  const PetscInt cap = 2 * lp->cap + 8;
+  PetscReal     *l, *e, *r;
+
+  PetscFunctionBeginUser;
+  if (lp->n < lp->cap) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc3(cap, &l, cap, &e, 2 * cap * ngroups, &r));
+  PetscCall(PetscArraycpy(l, lp->load, lp->n));
+  PetscCall(PetscArraycpy(e, lp->energy, lp->n));
+  PetscCall(PetscArraycpy(r, lp->reaction, 2 * lp->n * ngroups));
+  PetscCall(PetscFree3(lp->load, lp->energy, lp->reaction));
+  lp->load = l, lp->energy = e, lp->reaction = r, lp->cap = cap, lp->ngroups = ngroups;
+  PetscFunctionReturn(0);
+}
+
+/* -load_path: appends the state at load factor load to the record (X, or
+   rest where atRest: X = 0 at load 0, the record restarted), its energy and
+   every Dirichlet group's reaction; the record then reads as the load path
+   of the converged states from rest, whose energy is the work of the
+   reactions along it (where the groups' values are the only loading). */
+static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool atRest)
+{
+  LoadPath *lp = &p->res.path;
+  PetscReal f, *R, stage = p->nbodies ? p->bodies[0]->loadFactor : 1.0;
+  PetscInt  ngroups = 0;
+  Vec       X = p->X;
+
+  PetscFunctionBeginUser;
+  if (!p->opt.loadPath) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < p->nbodies; ++i) ngroups += p->bodies[i]->nbc;
+  if (atRest) lp->n = 0;
+  PetscCall(LoadPathReserve(lp, ngroups));
+  if (atRest) {
+    PetscCall(VecDuplicate(p->X, &X));
+    PetscCall(ProblemSetStage(p, 0.0, 1.0));
+  }
+  PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
+  R = lp->reaction + 2 * lp->n * ngroups;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, R += 2) PetscCall(PetscArraycpy(R, p->bodies[i]->bc[j].reaction, 2));
+  }
+  lp->load[lp->n]   = load;
+  lp->energy[lp->n] = f;
+  lp->n++;
+  if (atRest) {
+    PetscCall(VecDestroy(&X));
+    PetscCall(ProblemSetStage(p, stage, 1.0)); /* the load the solve starts at, as it was */
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The penalty stages at load factor load, each a TAO solve from the last;
-   the last stage of the last load stops at the final tolerance, gttol times
-   the gradient norm g0 of the full problem at rest, the others when their
-   gradient norm has fallen by -stage_rtol. */
+   the last stage of the last load (of every load with -load_path) stops at
+   the final tolerance, gttol times the gradient norm g0 of the full problem
+   at rest, the others when their gradient norm has fallen by -stage_rtol. */
 static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
 {
   const ProblemSchedule *sc = &p->sched;
@@ -190,6 +244,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
   PetscFunctionBeginUser;
   for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
     const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
+    const PetscBool tight   = (PetscBool)((lastLoad || p->opt.loadPath) && s == sc->penaltyStages); /* stops at the final tolerance */
     const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
@@ -201,7 +256,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
       PetscCall(PetscInfo(p->tao, "force control: the last stage stops relative to %g (at rest: %g)\n", (double)gd, (double)g0));
       g0 = gd;
     }
-    if (last) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
+    if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
     PetscCall(ProblemStageSolve(p, p->res.loadDone, load, penalty, &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
@@ -222,7 +277,8 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
    that fails starts this walk with a step of 1/2. The last stage stops
    where a single solve from rest would, at -tao_gttol times the gradient
    norm of the full problem at rest, which makes the result independent of
-   the staging. */
+   the staging (with -load_path every load's last stage stops there, and
+   each converged load is recorded). */
 static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscReal tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
@@ -236,6 +292,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   PetscCall(ProblemSetHessianSwitchReference(p, -1.0)); /* -contact_hessian auto: the first Hessian's */
   PetscCall(ProblemLMVMBeginStaged(p)); /* a single solve is the last stage */
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  PetscCall(ProblemLoadPathAppend(p, 0.0, PETSC_TRUE));
   if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
     PetscBool cut;
     if (p->X0 || ProblemTangentVaries(p)) { /* a given start, or the tangent predictor's: the stop is relative to the gradient at rest */
@@ -248,6 +305,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
       if (*reason > 0) p->res.loadDone = 1.0;
+      if (*reason > 0) PetscCall(ProblemLoadPathAppend(p, 1.0, PETSC_FALSE));
       PetscFunctionReturn(0);
     }
     PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
@@ -264,6 +322,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
     if (*reason > 0) {
       p->res.loadDone = load;
+      PetscCall(ProblemLoadPathAppend(p, load, PETSC_FALSE));
       PetscCall(VecCopy(p->X, Xs));
       continue;
     }
