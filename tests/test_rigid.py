@@ -355,3 +355,20 @@ def test_free_rotation_tilt(formulation, tmp_path):
     orders = s["taylor"]["gradient_order"], s["taylor"]["hessian_order"]
     print("Taylor orders", orders)
     assert orders[0] >= 1.9 and orders[1] >= 1.9
+
+
+def test_border_from_the_surfaces(tmp_path):
+    """A rigid body's unknowns border the Hessian with columns that change at
+    each Hessian and live on the contact surfaces alone: the substructuring
+    condenses them anew with no interior solve (one solve of the bodies'
+    Hessian a step), where -force_control_border_solves makes m + 1 solves.
+    The disc force-controlled in x, free to turn: the two give the same
+    motion to 1e-10 (measured 5e-14)."""
+    args = SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
+                    "-indenter_bc_back_values", "5.0234614148,0", "-indenter_rigid_rotation", "free", "-output", "none"]
+    fast = run_contact(args + ["-info", ":sys"], tmp_path, name="fast")
+    assert "eliminated by the PC of the bodies' step from the surfaces" in fast.stdout + fast.stderr
+    slow = run_contact(args + ["-force_control_border_solves"], tmp_path, name="slow").summary
+    a, b = fast.summary["bodies"]["indenter"]["translation"][0], slow["bodies"]["indenter"]["translation"][0]
+    print(f"fast {a!r}, solves {b!r}: {a / b - 1:.1e}")
+    assert a == pytest.approx(b, rel=1e-10)

@@ -71,6 +71,7 @@ typedef struct {
   PetscBool        haveZ;
   PetscBool        solves; /* -force_control_border_solves: the m solves even where kin's PC can do without */
   PetscBool        asked;  /* whether kin's PC has been given the columns */
+  PetscBool        varies; /* the columns change with each Hessian (a rigid body's unknowns): given to kin's PC at each */
   PC               fast;   /* kin's PC, where it eliminates the border itself (substructure.c); else NULL */
   Vec              wx, wy; /* views of Xb's layout on X's arrays */
   Unheld          *unheld; /* the problem's: the anchors' frozen directions (unheld.c) */
@@ -150,15 +151,19 @@ static PetscErrorCode BorderInfoS(BorderCtx *c)
 
 /* The first set-up asks kin's PC whether it eliminates the border itself
    (ContactBorderPCSetColumns: the substructuring's does, condensing the
-   columns once); unless -force_control_border_solves, the fast path then
-   takes it. */
+   columns once; a rigid body's, which change with the Hessian and live on
+   the contact surfaces alone, at each Hessian, with no interior solve);
+   unless -force_control_border_solves, the fast path then takes it. */
 static PetscErrorCode BorderChoosePath(BorderCtx *c)
 {
   PC        pc;
   PetscBool has = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  if (c->asked) PetscFunctionReturn(0);
+  if (c->asked) {
+    if (c->fast && c->varies) PetscCall(ContactBorderPCSetColumns(c->fast, c->m, c->B, &has));
+    PetscFunctionReturn(0);
+  }
   c->asked = PETSC_TRUE;
   if (c->solves) PetscFunctionReturn(0);
   PetscCall(KSPGetPC(c->kin, &pc));
@@ -359,7 +364,7 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
   c->solves = p->opt.controlBorderSolves;
   c->D = p->fc.D;
   for (PetscInt k = 0; k < c->m; ++k) c->floor[k] = p->fc.c[k].rigid ? p->fc.c[k].kref : 0.0;
-  if (p->fc.rigid) c->solves = PETSC_TRUE; /* the border changes with the Hessian: the PC's condensed columns would not */
+  c->varies = p->fc.rigid; /* a rigid body's columns change with the Hessian: condensed anew at each */
   c->unheld = &p->fc.unheld;
   PetscCall(PetscObjectReference((PetscObject)Hin));
   c->Hin = Hin;

@@ -839,6 +839,7 @@ static PetscErrorCode SubBorderSetColumns(PC pc, PetscInt m, const Vec B[])
   const PetscScalar **ba;
   PetscScalar        *rhs, *red, *gB;
   PetscMPIInt         mm;
+  PetscBool           inner = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &ctx));
@@ -851,10 +852,22 @@ static PetscErrorCode SubBorderSetColumns(PC pc, PetscInt m, const Vec B[])
   PetscCall(PetscMalloc6(m * ctx->nB + 1, &bd->red, m * ctx->nc + 1, &bd->v, m * ctx->nI + 1, &bd->X, m * m, &bd->Q, m * ctx->nc + 1, &bd->Zc, m, &bd->xr));
   PetscCall(PetscMalloc4(m * ctx->nD + 1, &rhs, m * ctx->nBr + 1, &red, m * ctx->nB + 1, &gB, m, &ba));
   for (PetscInt k = 0; k < m; ++k) PetscCall(VecGetArrayRead(B[k], &ba[k]));
-  PetscCall(SubCondense(ctx, m, ba, rhs, red, gB));
-  PetscCall(PetscArraycpy(bd->red, gB, m * ctx->nB));
-  PetscCall(PetscArrayzero(gB, m * ctx->nB));
-  PetscCall(SubExpand(ctx, m, gB, rhs, red)); /* z_B = 0: the interior's own solve */
+  for (PetscInt k = 0; k < m && !inner; ++k) /* columns on the boundary alone (a rigid body's: the contact's coupling) need no interior solve */
+    for (PetscInt i = 0; i < ctx->nI && !inner; ++i) inner = (PetscBool)(ba[k][ctx->D[ctx->Iloc[i]] - ctx->rstart] != 0.0);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &inner, 1, MPIU_BOOL, MPI_LOR, ctx->comm));
+  if (inner) {
+    PetscCall(SubCondense(ctx, m, ba, rhs, red, gB));
+    PetscCall(PetscArraycpy(bd->red, gB, m * ctx->nB));
+    PetscCall(PetscArrayzero(gB, m * ctx->nB));
+    PetscCall(SubExpand(ctx, m, gB, rhs, red)); /* z_B = 0: the interior's own solve */
+  } else { /* g_B = r_B, X_k = 0 */
+    PetscCall(PetscArrayzero(bd->red, m * ctx->nB));
+    for (PetscInt k = 0; k < m; ++k)
+      for (PetscInt j = 0; j < ctx->nOwned; ++j) bd->red[k * ctx->nB + ctx->ownedPos[j]] = ba[k][ctx->ownedRow[j]];
+    PetscCall(PetscMPIIntCast(m * ctx->nB, &mm));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, bd->red, mm, MPIU_SCALAR, MPIU_SUM, ctx->comm));
+    PetscCall(PetscArrayzero(rhs, m * ctx->nD));
+  }
   for (PetscInt k = 0; k < m; ++k) {
     for (PetscInt i = 0; i < ctx->nI; ++i) bd->X[k * ctx->nI + i] = rhs[k * ctx->nD + ctx->Iloc[i]];
     PetscCall(SubReduce(ctx, bd->red + k * ctx->nB));
