@@ -372,3 +372,20 @@ def test_border_from_the_surfaces(tmp_path):
     a, b = fast.summary["bodies"]["indenter"]["translation"][0], slow["bodies"]["indenter"]["translation"][0]
     print(f"fast {a!r}, solves {b!r}: {a / b - 1:.1e}")
     assert a == pytest.approx(b, rel=1e-10)
+
+
+def test_unknown_without_contact(tmp_path):
+    """A rigid body in no contact pair whose translation in y no condition
+    holds: nothing would hold it, so one line names the body and the
+    component, status 1, nothing written."""
+    src = ROOT / "meshes" / "rigid-hertz" / "rigid-hertz.opts"
+    lines = [l for l in src.read_text().splitlines() if not l.startswith("-contact_")]
+    lines = [l.replace("indenter.geo", str(src.parent / "indenter.geo")).replace("../hertz/block.geo", str(ROOT / "meshes" / "hertz" / "block.geo"))
+             for l in lines]
+    opts = Path(tmp_path) / "nocontact.opts"
+    opts.write_text("\n".join(lines) + "\n")
+    r = run_contact(["-options_file", opts, "-indenter_bc_back_components", "x", "-indenter_bc_back_values", "0"], tmp_path, check=False)
+    err = [l for l in r.stderr.splitlines() if l.strip()]
+    assert r.returncode == 1 and len(err) == 1, r.stderr[-2000:]
+    assert "body indenter is rigid and in no contact pair" in err[0] and "translation in y" in err[0]
+    assert not r.summary_path.exists() and not r.output_path.exists()

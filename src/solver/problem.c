@@ -334,10 +334,16 @@ static PetscErrorCode ProblemCheckSupports(Problem p)
     PetscInt  nfree;
     PetscBool contact = PETSC_FALSE;
 
-    if (b->rigid) continue; /* its motion is held by its conditions (rigidbody.c) */
+    for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
+    if (b->rigid) { /* its unknowns are held by its contacts, or by nothing */
+      const BodyRigid *r = b->rg;
+      for (PetscInt q = 0; q < 3 && !contact; ++q)
+        PetscCheck(!r->unknown[q], p->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
+                   q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");
+      continue;
+    }
     PetscCall(BodyCountFreeRigidModes(b, &nfree));
     if (!nfree) continue;
-    for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
     SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
             contact ? " (frictionless contact pushes but does not hold it; a load pressing it on, -<body>_load, would)" : " and it is in no contact pair", b->name);
   }
