@@ -40,6 +40,9 @@ PetscBool      ProblemTangentVaries(Problem);
    neohookean body a modified Newton step and L-BFGS's contact H0), and the
    steps that condense it once apply. */
 PetscBool      ProblemTangentReassembled(Problem);
+/* Whether Newton's step may choose between the stiffness at rest and a
+   neohookean body's tangent at each Hessian (-tangent_at_rest not given). */
+PetscBool      ProblemTangentChosen(Problem);
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */

@@ -47,6 +47,7 @@ typedef struct {
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
   PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
+  PetscInt    tangentIts; /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */
   PetscBool   loadPath; /* -load_path: record each converged load (staging.c), each solved to the final tolerance */
   PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
   char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
@@ -149,6 +150,11 @@ struct _n_Problem {
   Tao            tao;
   PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
   PetscReal      hessianG0;    /* -contact_hessian auto: the ||g|| its switch is relative to (ProblemSetHessianSwitchReference) */
+  PetscBool      tangentAuto;  /* Newton's step chooses per Hessian between K and a neohookean body's tangent (tangentswitch.c) */
+  PetscBool      tangentFull;  /* the current Hessian has the tangent (tangentAuto: its choice) */
+  PetscBool      tangentForce; /* the tangent whatever the iteration (the Taylor test) */
+  PetscBool      tangentSlow;  /* tangentAuto: the modified steps have converged slowly in this solve */
+  PetscReal      tangentG[3];  /* tangentAuto: the gradient norms of the last three iterations */
   ForceControls  fc;        /* force control (forcecontrol.c) */
   Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
   ProblemResults res;

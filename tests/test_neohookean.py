@@ -402,3 +402,22 @@ def test_held_by_contact_refused(tmp_path):
     print(r.returncode, lines)
     assert r.returncode == 1 and len(lines) == 1
     assert lines[0].startswith("contact: error: body roller: held by its contacts alone") and "-roller_material neohookean" in lines[0]
+
+
+def test_tangent_chosen_by_convergence(tmp_path):
+    """Newton without -tangent_at_rest takes the stiffness at rest while its
+    steps divide the gradient by more than 2, then the tangent: on the
+    rubber squeeze at 1 % of its push it never factors the tangent (-info
+    names each Hessian), at the full push it does, and both answers are
+    the tangent-every-step runs' (-tangent_at_rest 0), all solved to a
+    gradient of 1e-12: P to 1e-8 (measured 9e-11 and 3e-13)."""
+    scene = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts", "-mesh_size", "0.1", "-output", "none",
+             "-tao_gatol", "1e-12", "-tao_grtol", "0", "-tao_gttol", "0"]
+    for push, tangent in (("0,-0.003", False), ("0,-0.3", True)):
+        args = scene + ["-plate_bc_contact_values", push]
+        r = run_contact(args + ["-info", ":sys"], tmp_path, name="auto")
+        chosen = [l for l in (r.stdout + r.stderr).splitlines() if "Hessian at iteration" in l]
+        assert chosen and any("the tangent" in l for l in chosen) == tangent, chosen
+        full = run_contact(args + ["-tangent_at_rest", "0"], tmp_path, name="full").summary
+        print(push, len(chosen), r.summary["contact_force"] / full["contact_force"] - 1)
+        assert r.summary["contact_force"] == pytest.approx(full["contact_force"], rel=1e-8)

@@ -11,6 +11,7 @@
 #include "substructure.h"
 #include "iterative.h"
 #include "forceborder.h"
+#include "tangentswitch.h"
 
 /* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
    MUMPS's LDL^T for a matrix that may be indefinite. */
@@ -45,7 +46,8 @@ PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
    (schur.c, -newton_schur_type mumps). Without contact, with
    -newton_schur 0, or where a body's tangent depends on u (a neohookean
    body, unless -tangent_at_rest puts the stiffness at rest in its place:
-   the whole Hessian changes, and may be indefinite), a Cholesky
+   the whole Hessian changes, and may be indefinite; where -tangent_at_rest
+   is not given, either at each Hessian, tangentswitch.c), a Cholesky
    factorisation per step (CHOLMOD on one rank, MUMPS on several; MUMPS's
    LDL^T where the Hessian may be indefinite); -newton_iterative: CG with
    GAMG (iterative.c). nls takes
@@ -59,13 +61,28 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PC          pc;
   PetscMPIInt size;
   PetscBool   varies = ProblemTangentReassembled(p); /* a body's tangent depends on u (neohookean): K is no longer condensed once */
+  PetscBool   choose = ProblemTangentChosen(p);      /* or chosen at each Hessian (tangentswitch.c) */
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
+  p->tangentAuto = PETSC_FALSE;
   if (p->opt.iterative) {
     if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies));
+  } else if (p->opt.schur && p->nterms > 0 && choose && p->K) {
+    PC rest, full;
+    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+    PetscCall(PCCreate(p->comm, &rest));
+    PetscCall(PCSetOperators(rest, p->H, p->H));
+    PetscCall(ProblemSchurPCSetUp(p, rest));
+    PetscCall(PCCreate(p->comm, &full));
+    PetscCall(PCSetOperators(full, p->H, p->H));
+    PetscCall(ContactPCSetCholesky(full, p->comm, PETSC_TRUE));
+    PetscCall(ContactTangentSwitchPCSetUp(pc, rest, full, &p->tangentFull));
+    PetscCall(PCDestroy(&rest));
+    PetscCall(PCDestroy(&full));
+    p->tangentAuto = PETSC_TRUE;
   } else if (p->opt.schur && p->nterms > 0 && !varies) {
     PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     if (!p->K) PetscCall(PCSetType(pc, PCSHELL));

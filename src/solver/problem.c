@@ -37,6 +37,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.controlMaxIt  = 40;
   p->opt.controlRtol   = 1e-9;
   p->opt.controlStep   = 0.3;
+  p->opt.tangentIts    = 10;
   PetscCall(PetscStrncpy(p->opt.controlType, "coupled", sizeof(p->opt.controlType)));
   PetscCall(PetscStrncpy(p->opt.scene, "scene", sizeof(p->opt.scene)));
   *problem = p;
@@ -168,7 +169,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
-  PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain). Default: false with Newton, true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
+  PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
+  PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, p->opt.tangentIts, &p->opt.tangentIts, NULL));
   PetscCall(PetscOptionsBool("-load_path", "Record the load path in the JSON summary's load_path: at rest and at each converged load step, the load factor, the energy and every Dirichlet group's reaction; each load step's last stage then stops at the final tolerance, as the last load's", NULL, p->opt.loadPath, &p->opt.loadPath, NULL));
   PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-force_control_type", "Force control: coupled (each controlled displacement an unknown of the one minimisation) or outer (an outer iteration of solves on them; not with a body held by contact, always coupled)", NULL, ForceControlList, p->opt.controlType, p->opt.controlType, sizeof(p->opt.controlType), NULL));
@@ -720,6 +722,19 @@ PetscBool ProblemTangentReassembled(Problem p)
   return (PetscBool)(ProblemTangentVaries(p) && !p->opt.tangentAtRest);
 }
 
+/* Newton without -tangent_at_rest: the stiffness at rest serves while two
+   steps divide the gradient by more than 1 / TANGENT_SLOW (from the third
+   iteration: the first steps move the contact zone, and their gradients
+   rise whatever the Hessian); once they do not, the modified steps converge
+   slowly (the strains are large) and the tangent takes over for the rest of
+   the solve. */
+#define TANGENT_SLOW 0.5
+
+PetscBool ProblemTangentChosen(Problem p)
+{
+  return (PetscBool)(ProblemTangentVaries(p) && !p->opt.tangentAtRestSet);
+}
+
 /* P = K + the terms' Hessians at X, in their current order (exact or
    Gauss-Newton); K the bodies' tangent at X where a body's varies
    (neohookean) and -tangent_at_rest is not given, else the stiffness
@@ -735,7 +750,22 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
     PetscCall(VecDestroy(&G));
   }
   PetscCall(ProblemScatterToBodies(p, X));
-  if (ProblemTangentReassembled(p)) {
+  p->tangentFull = ProblemTangentReassembled(p);
+  if (p->tangentAuto) { /* the stiffness at rest while it converges fast, the tangent after (and for the Taylor test) */
+    PetscInt           its = 0;
+    PetscReal          f, gnorm = 0, cnorm, step;
+    TaoConvergedReason reason;
+    if (p->tao) PetscCall(TaoGetSolutionStatus(p->tao, &its, &f, &gnorm, &cnorm, &step, &reason));
+    if (its == 0) p->tangentSlow = PETSC_FALSE; /* a new solve */
+    if (its < 3) p->tangentG[its] = gnorm;
+    else {
+      if (gnorm > TANGENT_SLOW * p->tangentG[(its - 2) % 3]) p->tangentSlow = PETSC_TRUE;
+      p->tangentG[its % 3] = gnorm;
+    }
+    p->tangentFull = (PetscBool)(p->tangentForce || p->tangentSlow || its >= p->opt.tangentIts);
+    PetscCall(PetscInfo(NULL, "Hessian at iteration %" PetscInt_FMT ": %s\n", its, p->tangentFull ? "the tangent" : "the stiffness at rest"));
+  }
+  if (p->tangentFull) {
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
@@ -883,7 +913,9 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   if (umax == 0.0) umax = 1e-3;
   PetscCall(VecScale(V, p->opt.taylorScale * umax));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p));
+  p->tangentForce = PETSC_TRUE; /* the Hessian's remainder is measured against the tangent */
   PetscCall(ProblemComputeHessian(p->tao, U, p->Htao, p->Htao, p));
+  p->tangentForce = PETSC_FALSE;
   PetscCall(MatMult(p->Htao, V, HV));
   PetscCall(VecNorm(HV, NORM_2, &hvn));
   PetscCall(VecDot(G0, V, &gv));
