@@ -389,3 +389,13 @@ def test_unknown_without_contact(tmp_path):
     assert r.returncode == 1 and len(err) == 1, r.stderr[-2000:]
     assert "body indenter is rigid and in no contact pair" in err[0] and "translation in y" in err[0]
     assert not r.summary_path.exists() and not r.output_path.exists()
+
+
+@pytest.mark.parametrize("scene", ["rigid-hertz", "rigid-roller", "rigid-sphere"])
+def test_help(scene, tmp_path):
+    """-help on a scene with a rigid body lists its options with their
+    defaults and exits 0, writing nothing."""
+    r = run_contact(["-options_file", f"meshes/{scene}/{scene}.opts", "-help"], tmp_path, check=False)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert "_rigid_rotation <now 0" in r.stdout and "_rigid_centre" in r.stdout
+    assert not r.summary_path.exists() and not r.output_path.exists()

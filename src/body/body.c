@@ -130,7 +130,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   for (PetscInt i = 0; i < nbc; ++i) /* force control's border is K e_k, a constant stiffness (forcecontrol.c) */
     PetscCheck(b->mat->constantTangent || (!b->bc[i].control[0] && !b->bc[i].control[1]), b->comm, PETSC_ERR_USER_INPUT, "option -%sbc_%s_control: force control needs a constant stiffness, and -%smaterial %s has none: control the displacement", prefix, b->bc[i].group, prefix, b->mat->name);
   PetscCall(BodyLoadsSetFromOptions(b, prefix, help));
-  PetscCheck(!b->rigid || !b->nload, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
+  PetscCheck(help || !b->rigid || !b->nload, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: body %s is rigid, and a load on a rigid body is not supported yet", prefix, b->name);
   PetscCheck(!b->rigid || !b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s is rigid: it has no exact solution", prefix, b->name);
   b->generate = (PetscBool)(hasGeo && !hasMsh && !help);
   PetscFunctionReturn(0);
