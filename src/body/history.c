@@ -41,7 +41,7 @@ PetscErrorCode BodyStagedValues(Body b, const char opt[], PetscInt n, PetscInt p
   PetscCheck(n == per * S, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components and -load_stages %" PetscInt_FMT " (give %" PetscInt_FMT ", each stage's end after the last's)", opt, n, per, S, per * S);
   for (PetscInt s = 0; s < S; ++s)
     for (PetscInt c = 0; c < per; ++c) {
-      PetscCheck(!PetscIsInfOrNanReal(v[s * per + c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: value %g is not a finite number", opt, (double)v[s * per + c]);
+      PetscCheck(!PetscIsInfOrNanReal(v[s * per + c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: must be finite, got %g", opt, (double)v[s * per + c]);
       out[s * stride + c] = v[s * per + c];
     }
   PetscFunctionReturn(0);

@@ -232,8 +232,6 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCall(PetscFree(names[i]));
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->opt.meshSize));
-  for (PetscInt i = 0; i < nb && p->opt.loadStages > 1 && !help; ++i) /* a rigid body's motion follows one load (BodyRigidSetLoadFactor) */
-    PetscCheck(!p->bodies[i]->rigid, p->comm, PETSC_ERR_USER_INPUT, "option -load_stages %" PetscInt_FMT ": body %s is rigid, and a rigid body's motion does not follow load stages yet; give -load_stages 1", p->opt.loadStages, p->bodies[i]->name);
   PetscFunctionReturn(0);
 }
 
