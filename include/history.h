@@ -11,7 +11,7 @@ void LoadHistoryLocate(PetscInt S, PetscReal lambda, PetscInt *k, PetscReal *t);
 /* Checks the count n of the values given to option opt (per per stage, S
    stages) and copies them, stage after stage, to out[s * stride + c]. */
 PetscErrorCode BodyStagedValues(Body, const char opt[], PetscInt n, PetscInt per, const PetscReal v[], PetscInt stride, PetscReal out[]);
-/* Collective: puts the body's conditions and loads at load parameter lambda. */
+/* Collective: puts the body's conditions and loads (a rigid body's motion) at load parameter lambda. */
 PetscErrorCode BodySetLoad(Body, PetscReal lambda);
 /* Moves Dirichlet condition i's component c (an index into its comps) to
    the value U (a force-controlled component's displacement, the same in
@@ -19,5 +19,8 @@ PetscErrorCode BodySetLoad(Body, PetscReal lambda);
 PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 /* The force of condition i's force-controlled component c at the load parameter last set. */
 PetscReal BodyControlForce(Body, PetscInt i, PetscInt c);
+/* A rigid body's unknown q's force at the load parameter last set: its
+   condition's force where force-controlled, else 0 (held by the contact). */
+PetscReal BodyRigidControlForce(Body, PetscInt q);
 /* Load l's resultant at the load parameter last set, into f[2]. */
 void BodyLoadResultant(Body, PetscInt l, PetscReal f[2]);

@@ -160,6 +160,34 @@ def test_pressure_stages_linear(tmp_path):
     assert r.summary["loads"]["tube:inner"] == pytest.approx(one.summary["loads"]["tube:inner"], abs=1e-12)
 
 
+def test_rigid_body_stages(tmp_path):
+    """A rigid body's prescribed motion follows the stages: the rigid punch
+    pressed to 0.004 turned by 0.003, then to 0.002 turned by 0.001, ends
+    where the single solve at (0.002, 0.001) does (solved to -tao_gttol
+    1e-12: the punch's corners leave the default stop's reactions 3e-5
+    apart from the base's); measured 8.0e-13 of the force in the
+    reactions, bound 1e-9. And a rigid disc force-controlled by 8 then 5
+    (the block held) moves where the single solve by 5 moves it (measured
+    4.2e-15 of it, bound 1e-8: the solves' stop), each stage's end carrying
+    its force (to 1e-8 of it, the stop)."""
+    punch = ["-options_file", "meshes/rigid-punch/rigid-punch.opts", "-tao_gttol", "1e-12"]
+    one = run_contact(punch + ["-punch_rigid_rotation", "0.001"], tmp_path, name="one").summary
+    two = run_contact(punch + ["-load_stages", 2, "-punch_bc_push_values", "0,-0.004,0,-0.002", "-block_bc_base_values", "0,0,0,0",
+                               "-punch_rigid_rotation", "0.003,0.001"], tmp_path, name="two").summary
+    P = abs(one["reactions"]["punch:push"][1])
+    dR = max(abs(x - y) for g in one["reactions"] for x, y in zip(one["reactions"][g], two["reactions"][g])) / P
+    assert two["bodies"]["punch"]["rotation"] == 0.001 and two["bodies"]["punch"]["translation"] == [0, -0.002]
+    disc = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts", "-indenter_bc_back_control", "force,displacement"]
+    f1 = run_contact(disc + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "5,0"], tmp_path, name="f1").summary
+    f2 = run_contact(disc + ["-load_stages", 2, "-block_bc_push_values", "0,0,0,0", "-indenter_bc_back_values", "8,0,5,0"],
+                     tmp_path, name="f2").summary
+    t1, t2 = f1["bodies"]["indenter"]["translation"][0], f2["bodies"]["indenter"]["translation"][0]
+    got = [st["reactions"]["indenter:back"][0] for st in f2["load_stages"]]
+    print(f"punch: reactions {dR:.1e} of P; disc: translation {abs(t2 - t1) / abs(t1):.1e} of it, stage ends' forces {got}")
+    assert dR < 1e-9 and abs(t2 - t1) < 1e-8 * abs(t1)
+    assert all(abs(g - F) < 1e-8 * F for g, F in zip(got, (8.0, 5.0)))
+
+
 def test_two_ranks(tmp_path):
     """Load, load on, unload (-0.075, -0.15, 0) on 1 and 2 ranks: every
     stage's reactions and contact force agree to 1e-12 of P (measured
@@ -185,7 +213,11 @@ BAD = {
     "too_many": (HERTZ + ["-load_stages", "65"], "option -load_stages: must be in [1, 64], got 65"),
     "pressure_count": (["-options_file", "meshes/tube/tube.opts", "-load_stages", "2"],
                        "option -tube_load_inner_pressure: 1 values for 1 components and -load_stages 2 (give 2"),
-    "rigid": (["-options_file", "meshes/rigid-hertz/rigid-hertz.opts", "-load_stages", "2"], "is rigid"),
+    "rigid_translation": (["-options_file", "meshes/rigid-hertz/rigid-hertz.opts", "-load_stages", "2", "-block_bc_push_values", "0,0,0,0"],
+                          "option -indenter_bc_back_values: 2 values for 2 components and -load_stages 2 (give 4"),
+    "rigid_rotation": (["-options_file", "meshes/rigid-punch/rigid-punch.opts", "-load_stages", "2", "-punch_bc_push_values", "0,-0.004,0,-0.002",
+                        "-block_bc_base_values", "0,0,0,0", "-punch_rigid_rotation", "0.001"],
+                       "option -punch_rigid_rotation: 1 values for 1 components and -load_stages 2 (give 2"),
     "outer": (staged([-20.0, -40.0]) + ["-block_bc_push_control", "force,displacement", "-force_control_type", "outer"],
               "option -force_control_type outer"),
     "accuracy": (staged([-PUSH / 2, -PUSH]) + ["-accuracy", "0.05"], "option -accuracy: with -load_stages 2"),
@@ -195,9 +227,10 @@ BAD = {
 @pytest.mark.parametrize("case", sorted(BAD))
 def test_bad_stages(case, tmp_path):
     """A value count that is not the stages' (a condition given one stage
-    where there are two included), -load_stages 0, 1.5, two or above 64, a
-    rigid body, force control's outer type or -accuracy with a history: one
-    line naming the option and the counts, status 1, nothing written."""
+    where there are two included; a rigid body's translation and rotation),
+    -load_stages 0, 1.5, two or above 64, force control's outer type or
+    -accuracy with a history: one line naming the option and the counts,
+    status 1, nothing written."""
     args, cause = BAD[case]
     r = run_contact(args, tmp_path, check=False)
     lines = [ln for ln in r.stderr.splitlines() if ln.strip()]

@@ -71,7 +71,6 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     nbc = 1;
   }
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
-  PetscCheck(!b->rigid || help || b->nstages == 1, b->comm, PETSC_ERR_USER_INPUT, "option -load_stages %" PetscInt_FMT ": body %s is rigid, and a rigid body's motion does not follow load stages yet (its translation and rotation follow one load); give -load_stages 1", b->nstages, b->name);
   if (b->rigid || help) PetscCall(BodyRigidSetFromOptions(b, prefix));
   if (b->rigid && !help) { /* E and nu are not asked for; a rigid body has no cells to load */
     PetscCheck(!setE && !setNu, b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: body %s is rigid (-%srigid): it has no elastic constants", prefix, setE ? "E" : "nu", b->name, prefix);
@@ -374,6 +373,8 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(PetscLogStagePush(contactLog.mesh));
   if (b->rigid) { /* its curves and motion alone */
     PetscCall(BodyRigidSetUp(b));
+    b->stage = 0;
+    PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
     PetscCall(PetscLogStagePop());
     PetscCall(PetscTime(&t1));
     b->tmesh += t1 - t0;

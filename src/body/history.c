@@ -123,15 +123,15 @@ PetscErrorCode BodySetLoad(Body b, PetscReal lambda)
   PetscReal t;
 
   PetscFunctionBeginUser;
-  if (b->rigid) { /* one stage (BodySetFromOptions): lambda is its load factor */
-    b->loadFactor = lambda;
-    PetscCall(BodyRigidSetLoadFactor(b, lambda));
-    PetscFunctionReturn(0);
-  }
   LoadHistoryLocate(b->nstages, lambda, &k, &t);
   b->loadWeight[0] = k > 1 ? 1.0 - t : 0.0;
   b->loadWeight[1] = t;
   b->loadFactor    = k > 1 ? 1.0 : t;
+  if (b->rigid) { /* its motion: the same weights on its translation's and rotation's stage ends */
+    b->stage = k;
+    BodyRigidSetLoad(b);
+    PetscFunctionReturn(0);
+  }
   if (k != b->stage) {
     b->stage = k;
     PetscCall(BodyStageDirichlet(b));
@@ -154,8 +154,18 @@ PetscReal BodyControlForce(Body b, PetscInt i, PetscInt c)
 {
   const BodyBC *bc = &b->bc[i];
 
-  if (b->rigid || bc->anchor) return b->loadFactor * bc->force[c];
+  if (bc->anchor) return 0.0;
   return (b->stage > 1 ? b->loadWeight[0] * bc->stage[b->stage - 2][c] : 0.0) + b->loadWeight[1] * bc->stage[b->stage - 1][c];
+}
+
+PetscReal BodyRigidControlForce(Body b, PetscInt q)
+{
+  const BodyRigid *r = b->rg;
+
+  if (q > 1 || !r->control[q]) return 0.0; /* held by the contact alone: force 0 */
+  for (PetscInt k = 0; k < b->bc[r->qbc[q]].ncomp; ++k)
+    if (b->bc[r->qbc[q]].comps[k] == q) return BodyControlForce(b, r->qbc[q], k);
+  return 0.0;
 }
 
 void BodyLoadResultant(Body b, PetscInt l, PetscReal f[2])

@@ -280,7 +280,7 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
     if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
     fc->R          = ProblemControlReaction(p, k); /* a rigid body's dPi/dq: the contact's force, or moment over L */
-    F              = fc->rigid ? b->loadFactor * fc->force : BodyControlForce(b, fc->bc, fc->c); /* at the load parameter (history.c) */
+    F              = fc->rigid ? BodyRigidControlForce(b, fc->c) : BodyControlForce(b, fc->bc, fc->c); /* at the load parameter (history.c) */
     gU[k]          = fc->R - F;
     *f -= F * fc->U;
   }
