@@ -12,30 +12,23 @@ import numpy as np
 from paraview import servermanager as sm
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkDataObjectTreeIterator
+
+from paraview_probe import leaves
 
 
 def largest_displacement(data):
-    it = vtkDataObjectTreeIterator()
-    it.SetDataSet(data)
-    it.VisitOnlyLeavesOn()
-    it.InitTraversal()
     m = 0.0
-    while not it.IsDoneWithTraversal():
-        a = it.GetCurrentDataObject().GetPointData().GetArray("displacement")
+    for _, block in leaves(data):
+        a = block.GetPointData().GetArray("displacement")
         if a is not None and a.GetNumberOfTuples():
             m = max(m, float(np.nanmax(np.abs(vtk_to_numpy(a)))))
-        it.GoToNextItem()
     return m
 
 
 def main(xdmf, out):
     result = {}
     for reader in ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT"):
-        if reader == "XDMFReader":
-            src = simple.XDMFReader(FileNames=[xdmf])
-        else:
-            src = getattr(simple, reader)(FileName=[xdmf])
+        src = simple.XDMFReader(FileNames=[xdmf]) if reader == "XDMFReader" else getattr(simple, reader)(FileName=[xdmf])
         src.UpdatePipelineInformation()
         times = [float(t) for t in (src.TimestepValues or [])]
         umax = []

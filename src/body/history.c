@@ -20,7 +20,10 @@
    rest: bit for bit today's lambda times the end). What every stage
    shares, a force control's displacement U (the unknown, the same in the
    start and the end vector) and a body's exact solution, is scaled by the
-   load factor w_0 + w_1: lambda in the first stage, 1 after. */
+   load factor w_0 + w_1: lambda in the first stage, 1 after. A rigid body
+   has no vectors: its prescribed translation and rotation take the same
+   weights on their stage ends (rigidbody.c), and its force controls' forces
+   the same interpolation as an elastic body's. */
 #include "history.h"
 #include "loads.h"
 #include "rigidbody.h"

@@ -11,14 +11,9 @@
 #include "xdmf.h"
 #include "stages.h"
 
-/* The XDMF file: one spatial collection of a grid per body (its second-order
-   cells, reference coordinates, displacement as a 3-component vector, stress
-   components and von Mises stress) and a line grid per contact surface with a
-   profile (EnergyTermWriteXDMF), all on the HDF5 file h5. ParaView's legacy
-   reader (XDMFReader) and its Xdmf3 readers read every item alike only as
-   plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
-   and the readers map the columns of a Tensor6 differently; so the HDF5 file
-   holds the displacement with z = 0 and each stress component on its own. */
+/* The XDMF grid of each body (rank 0): its cells and reference coordinates
+   from /bodies/<body>, its fields from the group fields/<body> of the HDF5
+   file base (/bodies, or a load stage's /stages/<k>/bodies). */
 static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], const char base[], const char fields[])
 {
   PetscFunctionBeginUser;
