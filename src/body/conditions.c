@@ -52,7 +52,7 @@ PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
   bc->values[0] = bc->values[1] = 0.0;
   PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
   help = (PetscBool)PetscOptionsObject->printhelp;
-  nv   = help ? 2 : 2 * CONTACT_MAX_STAGES + 1; /* -help shows the default of two components */
+  nv   = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1; /* -help shows two components a stage (PETSc lists nv entries where none are given) */
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
   PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (a force where -control force; default 0); with -load_stages S, S values per component, each stage's end after the last's", NULL, v, &nv, &setv));
   PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));

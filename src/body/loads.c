@@ -41,14 +41,17 @@ static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscB
 {
   char      lprefix[4 * CONTACT_NAME_LEN], opt[5 * CONTACT_NAME_LEN];
   PetscReal vt[2 * CONTACT_MAX_STAGES + 1] = {0}, vp[CONTACT_MAX_STAGES + 1] = {0};
-  PetscInt  nt = help ? 2 : 2 * CONTACT_MAX_STAGES + 1, np = help ? 1 : CONTACT_MAX_STAGES + 1; /* -help shows the default of one stage */
+  PetscInt  nt = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1, np = help ? b->nstages : CONTACT_MAX_STAGES + 1; /* -help: as many as a run reads */
   PetscBool setT, setP;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(lprefix, sizeof(lprefix), "%sload_%s_", prefix, L->group));
   PetscOptionsBegin(b->comm, lprefix, "Load on a boundary group", NULL);
   PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load); with -load_stages S, S pairs, each stage's end", NULL, vt, &nt, &setT));
-  PetscCall(PetscOptionsRealArray("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp, &np, &setP));
+  if (b->nstages == 1) { /* one value, shown with its default */
+    PetscCall(PetscOptionsReal("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp[0], &vp[0], &setP));
+    np = 1;
+  } else PetscCall(PetscOptionsRealArray("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp, &np, &setP));
   PetscOptionsEnd();
   if (help) PetscFunctionReturn(0); /* listed, not required */
   PetscCheck(setT || setP, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: group %s needs -%straction tx,ty or -%spressure p", prefix, L->group, lprefix, lprefix);
