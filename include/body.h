@@ -5,6 +5,7 @@
    gathers for the callers of the body. */
 #include "bodycore.h"
 #include "conditions.h"
+#include "history.h"
 #include "loads.h"
 #include "rigid.h"
 #include "rigidbody.h"
@@ -23,10 +24,6 @@ PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const P
 /* Global node number of a node point (owned or ghost). */
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);
-PetscErrorCode BodySetLoadFactor(Body, PetscReal);
-/* Moves Dirichlet condition i's component c (an index into its comps) to
-   the value U (a force-controlled component's displacement). */
-PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 PetscErrorCode BodyComputeEnergyGradient(Body, Vec Xl, PetscReal *energy, Vec Gl);
 /* Collective: how many energy evaluations found the body inverted (J <= 0
    at a quadrature point: +inf), and where one did (reference x, y). */

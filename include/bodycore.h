@@ -18,6 +18,7 @@ typedef struct {
   PetscBool control[2]; /* component c (of comps) is force-controlled */
   PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
   PetscReal force[2];   /* its force: the reaction it must have */
+  PetscReal stage[CONTACT_MAX_STAGES][2]; /* -load_stages: each stage's end value of each component (a displacement, or a force where controlled); values and force hold the active stage's (history.c) */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
   DMLabel   label;   /* faces of the group and their closure */
@@ -30,7 +31,9 @@ typedef struct {
   char      group[CONTACT_NAME_LEN];
   PetscBool isPressure;
   PetscReal traction[2], pressure;
-  PetscReal force[2]; /* its resultant at the full load, summed over ranks (BodyLoadsSetUp) */
+  PetscReal force[2]; /* its resultant at the active stage's end, summed over ranks (BodyLoadsSetUp) */
+  PetscReal forceFrom[2]; /* its resultant at the active stage's start */
+  PetscReal stageTraction[CONTACT_MAX_STAGES][2], stagePressure[CONTACT_MAX_STAGES]; /* -load_stages: each stage's end value; traction and pressure hold the active stage's */
 } BodyLoad;
 
 /* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
@@ -53,8 +56,11 @@ struct _n_Body {
   BodyBC    bc[CONTACT_MAX_BC];
   PetscInt  nload;
   BodyLoad  load[CONTACT_MAX_BC];
-  Vec       Fl;         /* the loads' consistent nodal forces at the full load (local vector; this rank's edges), or NULL */
-  PetscReal loadFactor; /* load stepping: the fraction of the Dirichlet values and loads applied */
+  Vec       Fl;         /* the loads' consistent nodal forces at the active stage's end (local vector; this rank's edges), or NULL */
+  Vec       FlFrom;     /* the same at the active stage's start (NULL in the first stage: rest) */
+  PetscInt  nstages, stage; /* -load_stages (set before BodySetFromOptions), and the active stage, 1..nstages (history.c) */
+  PetscReal loadWeight[2]; /* the weights of the active stage's start and end values at the load parameter (history.c) */
+  PetscReal loadFactor; /* the factor on what every stage shares (a force control's displacement, the exact solution): the load parameter in the first stage, then 1 */
   ExactSolution exact;
   PetscBool hasExact;
 
@@ -73,7 +79,7 @@ struct _n_Body {
   PetscReal *xq;   /* [ncells][nq][2] */
   PetscReal *xnode;/* [ncells][nb][2] node coordinates */
   const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
-  Vec       Xg, Gg, Xl, Gl, bcl, bclFull; /* bcl: Dirichlet values of the load step, bclFull: the scene's */
+  Vec       Xg, Gg, Xl, Gl, bcl, bclFull, bclFrom; /* bcl: Dirichlet values of the load step, bclFull: the active stage's end, bclFrom: its start (NULL in the first stage) */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
   PetscInt  pStart, pEnd;   /* chart */

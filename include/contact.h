@@ -7,6 +7,7 @@
 
 #define CONTACT_MAX_BODIES 8
 #define CONTACT_MAX_BC     8
+#define CONTACT_MAX_STAGES 64 /* -load_stages: the most stages of a load history */
 #define CONTACT_NAME_LEN   64
 /* Peak memory per dof of a run on one rank (measured: 3.5 GB at 1.07e6 dofs) */
 #define CONTACT_BYTES_PER_DOF 3.5e3

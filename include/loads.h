@@ -8,7 +8,10 @@ PetscErrorCode BodyLoadsSetFromOptions(Body, const char prefix[], PetscBool help
 PetscErrorCode BodyLoadGetEdges(Body, const BodyLoad *L, PetscInt *n, IS *is);
 /* Load L's consistent nodal forces fe[3][2] on boundary edge e, at its nodes pts (corner, corner, mid). */
 PetscErrorCode BodyLoadEdgeForces(Body, const BodyLoad *L, PetscInt e, PetscInt pts[3], PetscReal fe[3][2]);
+/* Collective: the consistent nodal forces of the loads as they are into F
+   (local), and their resultants into each load's force (forceFrom where from). */
+PetscErrorCode BodyLoadsAssemble(Body, Vec F, PetscBool from);
 /* Collective: the consistent nodal forces of the loads, once the mesh is read. */
 PetscErrorCode BodyLoadsSetUp(Body);
-/* Adds -f . u (times the load factor) to *energy and -f to g (local arrays). */
+/* Adds -f . u (at the load parameter, history.c) to *energy and -f to g (local arrays). */
 PetscErrorCode BodyLoadsAddEnergyGradient(Body, const PetscScalar x[], PetscReal *energy, PetscScalar g[]);

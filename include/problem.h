@@ -45,6 +45,9 @@ PetscBool      ProblemTangentReassembled(Problem);
 PetscBool      ProblemTangentChosen(Problem);
 /* P = K + the terms' Hessians at X, in their current order (exact or Gauss-Newton). */
 PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
+/* Collective: puts every body's conditions and loads at load parameter
+   lambda in [0, -load_stages] (history.c). */
+PetscErrorCode ProblemSetLoad(Problem, PetscReal lambda);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */
 PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
 /* Collective: the results at the converged state X (energy, gradient norm,

@@ -44,6 +44,7 @@ typedef struct {
   PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
   PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances; -1: not given, chosen with the solver) */
   PetscInt    loadSteps, penaltyStages;
+  PetscInt    loadStages; /* -load_stages: the stages of the load history (history.c), each in loadSteps increments */
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
   PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
@@ -99,11 +100,22 @@ typedef struct {
   PetscReal *load, *energy, *reaction; /* [cap], [cap], [cap][ngroups][2] */
 } LoadPath;
 
+/* -load_stages: the converged state at the end of each stage (staging.c),
+   and its figures (the driver's, after the solve): the energy, every
+   Dirichlet group's reaction (as LoadPath's) and each term's contact force. */
+typedef struct {
+  PetscInt  n;                           /* the stages whose end is recorded (1..n) */
+  Vec       X[CONTACT_MAX_STAGES];       /* X at each stage's end */
+  PetscReal reaction[CONTACT_MAX_STAGES][2 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
+  PetscReal force[CONTACT_MAX_STAGES][CONTACT_MAX_TERMS][2];
+} StageEnds;
+
 /* What a solve and its post-processing found. */
 typedef struct {
   PetscInt           nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
   PetscInt           stagesDone, cutbacks; /* the stages solved, and how many times the load was cut back */
-  PetscReal          loadDone;             /* the load factor of the last converged stage */
+  PetscReal          loadDone;             /* the load parameter of the last converged stage (0..-load_stages) */
+  PetscReal          load;                 /* the load parameter the bodies are at (ProblemSetLoad) */
   TaoConvergedReason reason;
   PetscReal          energy, gnorm;        /* at the solution (ProblemPostProcess) */
   PetscReal          bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
@@ -117,6 +129,7 @@ typedef struct {
   PetscInt           decrementFloor;  /* -lmvm_decrement_rtol: last stages ended at the decrement's round-off floor */
   char               why[256];      /* why the solve stopped short, if the problem itself knows ("" else) */
   LoadPath           path;          /* -load_path */
+  StageEnds          ends;          /* -load_stages */
 } ProblemResults;
 
 /* What the solve runs (staging.c): the options' load steps, penalty continuation and

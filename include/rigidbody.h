@@ -11,7 +11,8 @@
    prescribed or an unknown. Prescribed: a translation's component by a
    Dirichlet condition of the body (any of its groups, -<body>_bc_<group>_
    values), the rotation by -<body>_rigid_rotation (default 0: held), both
-   scaled by the load factor. An unknown (at most 3): a translation's
+   with -load_stages S given per stage and followed along the load
+   parameter as an elastic body's values are (history.c). An unknown (at most 3): a translation's
    component force-controlled by a condition (_control force: the contact's
    force on the body balances the condition's), or held by no condition,
    and the rotation where -<body>_rigid_rotation free: these two are held by
@@ -32,9 +33,9 @@ struct _n_BodyRigid {
   PetscInt  *enodes;    /* [ne][3] node indices: the ends, then the middle */
   PetscInt  *etag;      /* [ne] physical tag */
   PetscReal  centre[2]; /* reference point c */
-  PetscReal  rotation;  /* the rotation at the full load (radians) */
-  PetscReal  tFull[2];  /* the translation at the full load (the conditions' values) */
-  PetscReal  t[2], theta; /* the motion at the current load factor */
+  PetscReal  rotation[CONTACT_MAX_STAGES]; /* the rotation at each stage's end (radians) */
+  PetscReal  tEnd[CONTACT_MAX_STAGES][2];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
+  PetscReal  t[2], theta; /* the motion at the current load parameter */
   PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
   PetscReal  curl;      /* -sum g.(x - c - t) at the last evaluation: d2Pi/dtheta2 beyond the contact's Hessian */
   PetscReal  L;         /* the curves' size (their bounding box's diagonal): the rotation's unknown is L theta */
@@ -51,7 +52,8 @@ PetscErrorCode BodyRigidSetFromOptions(Body, const char prefix[]);
 /* Collective: reads the curves of b->msh (rank 0, broadcast), the reference
    point, the conditions' translation; b->nlocal = 0. */
 PetscErrorCode BodyRigidSetUp(Body);
-PetscErrorCode BodyRigidSetLoadFactor(Body, PetscReal);
+/* The prescribed motion at the load parameter b->stage and b->loadWeight say (history.c). */
+void           BodyRigidSetLoad(Body);
 /* Sets unknown q of the motion (x, y translation, or the arc L theta). */
 void           BodyRigidSetUnknown(Body, PetscInt q, PetscReal value);
 /* Unknown q's value, and its gradient dPi/dq at the last evaluation (the force, or the moment over L). */

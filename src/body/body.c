@@ -24,6 +24,8 @@ PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
   b->E  = 1.0;
   b->nu = 0.0;
   b->loadFactor = 1.0;
+  b->nstages    = 1;
+  b->loadWeight[1] = 1.0;
   *body = b;
   PetscFunctionReturn(0);
 }
@@ -371,6 +373,8 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(PetscLogStagePush(contactLog.mesh));
   if (b->rigid) { /* its curves and motion alone */
     PetscCall(BodyRigidSetUp(b));
+    b->stage = 0;
+    PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
     PetscCall(PetscLogStagePop());
     PetscCall(PetscTime(&t1));
     b->tmesh += t1 - t0;
@@ -411,30 +415,9 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(BodyBuildNodeData(b));
   PetscCall(BodyLoadsSetUp(b));
   PetscCall(BodyCheckConditions(b));
+  b->stage = 0;
+  PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
   PetscCall(PetscLogStagePop());
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodySetBCValue(Body b, PetscInt i, PetscInt c, PetscReal U)
-{
-  PetscFunctionBeginUser;
-  b->bc[i].values[c] = U;
-  PetscCall(VecSet(b->bclFull, 0.0));
-  PetscCall(DMPlexInsertBoundaryValues(b->dm, PETSC_TRUE, b->bclFull, 0.0, NULL, NULL, NULL));
-  PetscCall(VecAXPBY(b->bcl, b->loadFactor, 0.0, b->bclFull));
-  PetscFunctionReturn(0);
-}
-
-/* Load stepping: the Dirichlet values and the loads become f times the scene's. */
-PetscErrorCode BodySetLoadFactor(Body b, PetscReal f)
-{
-  PetscFunctionBeginUser;
-  b->loadFactor = f;
-  if (b->rigid) {
-    PetscCall(BodyRigidSetLoadFactor(b, f));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(VecAXPBY(b->bcl, f, 0.0, b->bclFull));
   PetscFunctionReturn(0);
 }
 
@@ -795,6 +778,8 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(VecDestroy(&b->Fl));
   PetscCall(VecDestroy(&b->bcl));
   PetscCall(VecDestroy(&b->bclFull));
+  PetscCall(VecDestroy(&b->bclFrom));
+  PetscCall(VecDestroy(&b->FlFrom));
   PetscCall(PetscFEDestroy(&b->fe));
   PetscCall(PetscFEDestroy(&b->feScalar));
   PetscCall(DMDestroy(&b->dm));

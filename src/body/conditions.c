@@ -37,20 +37,24 @@
      it, and the run goes on. */
 #include "conditions.h"
 #include "loads.h"
+#include "history.h"
 #include "options.h"
 
 PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
 {
-  char      opt[4 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
-  PetscInt  nc = 2, nv = 2, nctl = 2;
-  PetscBool setc, setv, setctl;
+  char      opt[5 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
+  PetscReal v[2 * CONTACT_MAX_STAGES + 1] = {0};
+  PetscInt  nc = 2, nv, nctl = 2;
+  PetscBool setc, setv, setctl, help;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
   bc->values[0] = bc->values[1] = 0.0;
   PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
+  help = (PetscBool)PetscOptionsObject->printhelp;
+  nv   = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1; /* -help shows two components a stage (PETSc lists nv entries where none are given) */
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
-  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (default 0)", NULL, bc->values, &nv, &setv));
+  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (a force where -control force; default 0); with -load_stages S, S values per component, each stage's end after the last's", NULL, v, &nv, &setv));
   PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
   PetscOptionsEnd();
@@ -69,11 +73,9 @@ PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
       PetscCall(PetscFree(comps[c]));
     }
   }
-  PetscCheck(!setv || nv == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%svalues: %" PetscInt_FMT " values for %" PetscInt_FMT " components", bprefix, nv, bc->ncomp);
-  for (PetscInt c = 0; c < bc->ncomp; ++c) {
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
-    PetscCheck(!PetscIsInfOrNanReal(bc->values[c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: value %g is not a finite number", opt, (double)bc->values[c]);
-  }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
+  if (setv && !help) PetscCall(BodyStagedValues(b, opt, nv, bc->ncomp, v, 2, &bc->stage[0][0]));
+  for (PetscInt c = 0; c < bc->ncomp; ++c) bc->values[c] = bc->stage[b->nstages - 1][c]; /* the last stage's, until the solve sets another */
   PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
   PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
   for (PetscInt c = 0; setctl && c < nctl; ++c) {

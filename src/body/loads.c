@@ -34,29 +34,36 @@
    exact with 3 points; its axial resultant is p times the area the group's
    ends sweep, pi (r_1^2 - r_0^2). */
 #include "loads.h"
+#include "history.h"
 #include "options.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)
 {
-  char      lprefix[4 * CONTACT_NAME_LEN];
-  PetscInt  nt = 2;
+  char      lprefix[4 * CONTACT_NAME_LEN], opt[5 * CONTACT_NAME_LEN];
+  PetscReal vt[2 * CONTACT_MAX_STAGES + 1] = {0}, vp[CONTACT_MAX_STAGES + 1] = {0};
+  PetscInt  nt = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1, np = help ? b->nstages : CONTACT_MAX_STAGES + 1; /* -help: as many as a run reads */
   PetscBool setT, setP;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(lprefix, sizeof(lprefix), "%sload_%s_", prefix, L->group));
   PetscOptionsBegin(b->comm, lprefix, "Load on a boundary group", NULL);
-  PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load)", NULL, L->traction, &nt, &setT));
-  PetscCall(PetscOptionsReal("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction)", NULL, L->pressure, &L->pressure, &setP));
+  PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load); with -load_stages S, S pairs, each stage's end", NULL, vt, &nt, &setT));
+  if (b->nstages == 1) { /* one value, shown with its default */
+    PetscCall(PetscOptionsReal("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp[0], &vp[0], &setP));
+    np = 1;
+  } else PetscCall(PetscOptionsRealArray("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp, &np, &setP));
   PetscOptionsEnd();
   if (help) PetscFunctionReturn(0); /* listed, not required */
   PetscCheck(setT || setP, b->comm, PETSC_ERR_USER_INPUT, "option -%sload: group %s needs -%straction tx,ty or -%spressure p", prefix, L->group, lprefix, lprefix);
   PetscCheck(!(setT && setP), b->comm, PETSC_ERR_USER_INPUT, "option -%spressure: group %s has -%straction too; give one of them", lprefix, L->group, lprefix);
-  PetscCheck(!setT || nt == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%straction: give two components tx,ty, got %" PetscInt_FMT, lprefix, nt);
-  for (PetscInt c = 0; c < (setT ? 2 : 1); ++c) {
-    const PetscReal v = setT ? L->traction[c] : L->pressure;
-    PetscCheck(!PetscIsInfOrNanReal(v), b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: must be finite, got %g", lprefix, setT ? "traction" : "pressure", (double)v);
-  }
-  L->isPressure = setP;
+  PetscCheck(!setT || nt % 2 == 0, b->comm, PETSC_ERR_USER_INPUT, "option -%straction: give two components tx,ty, got %" PetscInt_FMT, lprefix, nt);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", lprefix, setT ? "traction" : "pressure"));
+  if (setT) PetscCall(BodyStagedValues(b, opt, nt, 2, vt, 2, &L->stageTraction[0][0]));
+  else PetscCall(BodyStagedValues(b, opt, np, 1, vp, 1, L->stagePressure));
+  L->traction[0] = L->stageTraction[b->nstages - 1][0]; /* the last stage's, until the solve sets another */
+  L->traction[1] = L->stageTraction[b->nstages - 1][1];
+  L->pressure    = L->stagePressure[b->nstages - 1];
+  L->isPressure  = setP;
   PetscFunctionReturn(0);
 }
 
@@ -186,29 +193,36 @@ static PetscErrorCode BodyLoadAssemble(Body b, PetscSection s, const BodyLoad *L
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodyLoadsSetUp(Body b)
+PetscErrorCode BodyLoadsAssemble(Body b, Vec F, PetscBool from)
 {
   PetscSection s;
   PetscScalar *f;
 
   PetscFunctionBeginUser;
-  if (!b->nload) PetscFunctionReturn(0);
   PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(VecDuplicate(b->Xl, &b->Fl));
-  PetscCall(VecSet(b->Fl, 0.0));
-  PetscCall(VecGetArray(b->Fl, &f));
+  PetscCall(VecSet(F, 0.0));
+  PetscCall(VecGetArray(F, &f));
   for (PetscInt i = 0; i < b->nload; ++i) {
     PetscReal r[2] = {0, 0};
     PetscCall(BodyLoadAssemble(b, s, &b->load[i], f, r));
-    PetscCall(MPIU_Allreduce(r, b->load[i].force, 2, MPIU_REAL, MPIU_SUM, b->comm));
+    PetscCall(MPIU_Allreduce(r, from ? b->load[i].forceFrom : b->load[i].force, 2, MPIU_REAL, MPIU_SUM, b->comm));
   }
-  PetscCall(VecRestoreArray(b->Fl, &f));
+  PetscCall(VecRestoreArray(F, &f));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyLoadsSetUp(Body b)
+{
+  PetscFunctionBeginUser;
+  if (!b->nload) PetscFunctionReturn(0);
+  PetscCall(VecDuplicate(b->Xl, &b->Fl));
+  PetscCall(BodyLoadsAssemble(b, b->Fl, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BodyLoadsAddEnergyGradient(Body b, const PetscScalar x[], PetscReal *energy, PetscScalar g[])
 {
-  const PetscScalar *f;
+  const PetscScalar *f, *f0 = NULL;
   PetscInt           n;
   PetscReal          e = 0.0;
 
@@ -216,11 +230,13 @@ PetscErrorCode BodyLoadsAddEnergyGradient(Body b, const PetscScalar x[], PetscRe
   if (!b->Fl) PetscFunctionReturn(0);
   PetscCall(VecGetLocalSize(b->Fl, &n));
   PetscCall(VecGetArrayRead(b->Fl, &f));
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal fk = b->loadFactor * PetscRealPart(f[k]);
+  if (b->FlFrom) PetscCall(VecGetArrayRead(b->FlFrom, &f0));
+  for (PetscInt k = 0; k < n; ++k) { /* the load at the load parameter: w_1 Fl (+ w_0 FlFrom after the first stage; history.c) */
+    const PetscReal fk = b->loadWeight[1] * PetscRealPart(f[k]) + (f0 ? b->loadWeight[0] * PetscRealPart(f0[k]) : 0.0);
     e -= fk * PetscRealPart(x[k]);
     g[k] -= fk;
   }
+  if (f0) PetscCall(VecRestoreArrayRead(b->FlFrom, &f0));
   PetscCall(VecRestoreArrayRead(b->Fl, &f));
   *energy += e;
   PetscFunctionReturn(0);

@@ -40,6 +40,7 @@
    of the conditions that hold the translation, as the reaction of an
    elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
 #include "rigidbody.h"
+#include "history.h"
 #include "options.h"
 #include "mshcheck.h"
 #include "meshgen.h"
@@ -47,28 +48,33 @@
 PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
 {
   BodyRigid *r;
-  PetscReal  c[2] = {0, 0};
-  PetscInt   nc   = 2;
-  PetscBool  setc = PETSC_FALSE, free;
-  char       rot[64] = "0", *end;
+  PetscReal  c[2] = {0, 0}, v[CONTACT_MAX_STAGES + 1];
+  PetscInt   nc   = 2, nv = 0;
+  PetscBool  setc = PETSC_FALSE, setr, free;
+  char       rot[64 * CONTACT_MAX_STAGES] = "0", opt[2 * CONTACT_NAME_LEN], *tok, *save = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&r));
   b->rg = r;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
   PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves, weighted by length)", NULL, c, &nc, &setc));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held), or free (held by the contact alone: the contact's moment about the reference point is zero)", NULL, rot, rot, sizeof(rot), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; with -load_stages S, S values, each stage's end), or free (held by the contact alone: the contact's moment about the reference point is zero)", NULL, rot, rot, sizeof(rot), &setr));
   PetscOptionsEnd();
   PetscCall(PetscStrcmp(rot, "free", &free));
   PetscCheck(!free || !b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, and cannot turn freely", prefix);
   r->unknown[2] = free;
-  if (free) PetscCall(PetscStrcpy(rot, "0"));
-  r->rotation = strtod(rot, &end);
-  PetscCheck(end != rot && !*end, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be a number (radians), got '%s'", prefix, rot);
+  for (tok = strtok_r(rot, ",", &save); tok && !free && nv <= CONTACT_MAX_STAGES; tok = strtok_r(NULL, ",", &save)) {
+    char *end;
+    v[nv] = strtod(tok, &end);
+    PetscCheck(end != tok && !*end, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be a number (radians), got '%s'", prefix, tok);
+    PetscCheck(!PetscIsInfOrNanReal(v[nv]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be finite, got %g", prefix, (double)v[nv]);
+    PetscCheck(!b->axisym || v[nv] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, got %g", prefix, (double)v[nv]);
+    nv++;
+  }
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%srigid_rotation", prefix));
+  if (setr && !free) PetscCall(BodyStagedValues(b, opt, nv, 1, v, 1, r->rotation)); /* else 0 at every stage */
   PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
   for (PetscInt k = 0; k < 2 && setc; ++k) PetscCheck(!PetscIsInfOrNanReal(c[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: must be finite, got %g", prefix, (double)c[k]);
-  PetscCheck(!PetscIsInfOrNanReal(r->rotation), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: must be finite, got %g", prefix, (double)r->rotation);
-  PetscCheck(!b->axisym || r->rotation == 0.0, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, got %g", prefix, (double)r->rotation);
   if (setc) {
     r->centre[0] = c[0];
     r->centre[1] = c[1];
@@ -157,22 +163,25 @@ static PetscErrorCode RigidReadCurves(Body b, BodyRigid *r)
    by no condition (an unknown the contact holds). */
 static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
 {
-  PetscReal value[2] = {0, 0};
-  PetscInt  by[2]    = {-1, -1};
+  PetscReal value[CONTACT_MAX_STAGES][2];
+  PetscInt  by[2] = {-1, -1};
 
   PetscFunctionBeginUser;
   r->qbc[0] = r->qbc[1] = r->qbc[2] = -1;
+  PetscCall(PetscArrayzero(&value[0][0], 2 * CONTACT_MAX_STAGES));
   for (PetscInt i = 0; i < b->nbc; ++i) {
     const BodyBC *bc = &b->bc[i];
     PetscInt      tag;
     PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &tag));
     PetscCheck(!bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_exact: body %s is rigid: it has no exact solution", b->name, bc->group, b->name);
     for (PetscInt k = 0; k < bc->ncomp; ++k) {
-      const PetscInt c = bc->comps[k];
-      PetscCheck(by[c] < 0 || (!bc->control[k] && !r->control[c] && value[c] == bc->values[k]), b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s both give its translation in %s (%s %g, %s %g); give it once", b->name, b->bc[PetscMax(by[c], 0)].group, bc->group, c ? "y" : "x", by[c] >= 0 && r->control[c] ? "force" : "value", (double)value[c], bc->control[k] ? "force" : "value", (double)bc->values[k]);
+      const PetscInt c    = bc->comps[k];
+      PetscBool      same = PETSC_TRUE;
+      for (PetscInt s = 0; s < b->nstages; ++s) same = (PetscBool)(same && value[s][c] == bc->stage[s][k]);
+      PetscCheck(by[c] < 0 || (!bc->control[k] && !r->control[c] && same), b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s both give its translation in %s (%s %g, %s %g); give it once", b->name, b->bc[PetscMax(by[c], 0)].group, bc->group, c ? "y" : "x", by[c] >= 0 && r->control[c] ? "force" : "value", (double)value[b->nstages - 1][c], bc->control[k] ? "force" : "value", (double)(bc->control[k] ? bc->force[k] : bc->values[k]));
       PetscCheck(!(c == 0 && b->axisym && bc->control[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: body %s is rigid in r-z: it moves along the axis only, and a radial force control has nothing to move", b->name, bc->group, b->name);
-      by[c]    = i;
-      value[c] = bc->control[k] ? bc->force[k] : bc->values[k];
+      by[c] = i;
+      for (PetscInt s = 0; s < b->nstages; ++s) value[s][c] = bc->stage[s][k]; /* a displacement, or a control's force */
       if (bc->control[k]) {
         r->unknown[c] = r->control[c] = PETSC_TRUE;
         r->qforce[c]  = bc->force[k];
@@ -182,14 +191,15 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
   }
   for (PetscInt c = 0; c < 2; ++c) {
     if (c == 0 && b->axisym) { /* r-z: the body moves along the axis alone */
-      PetscCheck(by[0] < 0 || value[0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[0]);
+      for (PetscInt s = 0; s < b->nstages; ++s) PetscCheck(by[0] < 0 || value[s][0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[s][0]);
       continue;
     }
     if (by[c] < 0) r->unknown[c] = PETSC_TRUE; /* held by the contact alone */
   }
-  for (PetscInt c = 0; c < 2; ++c) r->tFull[c] = r->unknown[c] ? 0.0 : value[c];
-  r->t[0] = r->tFull[0]; /* at the full load until BodyRigidSetLoadFactor */
-  r->t[1] = r->tFull[1];
+  for (PetscInt s = 0; s < b->nstages; ++s)
+    for (PetscInt c = 0; c < 2; ++c) r->tEnd[s][c] = r->unknown[c] ? 0.0 : value[s][c];
+  r->t[0] = r->tEnd[b->nstages - 1][0]; /* at the last stage's end until BodySetLoad */
+  r->t[1] = r->tEnd[b->nstages - 1][1];
   PetscFunctionReturn(0);
 }
 
@@ -268,15 +278,15 @@ PetscErrorCode BodyRigidSetUp(Body b)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodyRigidSetLoadFactor(Body b, PetscReal f)
+void BodyRigidSetLoad(Body b)
 {
-  BodyRigid *r = b->rg;
+  BodyRigid      *r = b->rg;
+  const PetscInt  k = b->stage;
+  const PetscReal w0 = b->loadWeight[0], w1 = b->loadWeight[1];
 
-  PetscFunctionBeginUser;
   for (PetscInt c = 0; c < 2; ++c)
-    if (!r->unknown[c]) r->t[c] = f * r->tFull[c];
-  if (!r->unknown[2]) r->theta = f * r->rotation;
-  PetscFunctionReturn(0);
+    if (!r->unknown[c]) r->t[c] = (k > 1 ? w0 * r->tEnd[k - 2][c] : 0.0) + w1 * r->tEnd[k - 1][c];
+  if (!r->unknown[2]) r->theta = (k > 1 ? w0 * r->rotation[k - 2] : 0.0) + w1 * r->rotation[k - 1];
 }
 
 void BodyRigidSetUnknown(Body b, PetscInt q, PetscReal v)

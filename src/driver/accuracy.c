@@ -436,6 +436,7 @@ static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
 {
   PetscFunctionBeginUser;
   PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
+  PetscCheck(p->opt.loadStages == 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: with -load_stages %" PetscInt_FMT " it would refine for the last stage's end alone; -accuracy with a load history is not supported yet", p->opt.loadStages);
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->bodies[i]->rigid, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", p->bodies[i]->name, p->bodies[i]->name);
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscBool gpts;

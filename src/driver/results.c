@@ -9,6 +9,38 @@
 #include "outputset.h"
 #include "outputwrite.h"
 #include "xdmf.h"
+#include "stages.h"
+
+/* The XDMF grid of each body (rank 0): its cells and reference coordinates
+   from /bodies/<body>, its fields from the group fields/<body> of the HDF5
+   file base (/bodies, or a load stage's /stages/<k>/bodies). */
+static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], const char base[], const char fields[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    Body        b  = p->bodies[i];
+    const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
+    const char *g  = b->name;
+    PetscInt    N = F[i].nnodes, C = F[i].ncells;
+    char        path[PETSC_MAX_PATH_LEN];
+    if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
+    fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
+    fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
+    fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
+    fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s:%s/%s/displacement_xyz", base, fields, g));
+    XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
+    for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
+      const char *name = XdmfBodyScalarNames(b->axisym)[k];
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:%s/%s/%s", base, fields, g, name));
+      XdmfWriteAttribute(fp, name, (int)N, 1, path);
+    }
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
+    for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
+    fprintf(fp, "   </Grid>\n");
+  }
+  PetscFunctionReturn(0);
+}
 
 /* The XDMF file: one spatial collection of a grid per body (its second-order
    cells, reference coordinates, displacement as a 3-component vector, stress
@@ -17,9 +49,13 @@
    reader (XDMFReader) and its Xdmf3 readers read every item alike only as
    plain HDF datasets: the Xdmf3 readers skip Function and HyperSlab items,
    and the readers map the columns of a Tensor6 differently; so the HDF5 file
-   holds the displacement with z = 0 and each stress component on its own. */
+   holds the displacement with z = 0 and each stress component on its own.
+   With -load_stages S > 1 the collections are the time steps 1..S of a
+   temporal collection (ParaView's time slider): step k < S the bodies at
+   the end of stage k (/stages/k), step S the final state as above. */
 static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
 {
+  const PetscInt    S = p->opt.loadStages;
   PetscMPIInt       rank;
   const char       *base = strrchr(out->h5, '/');
   ContactOutputText text = {NULL, NULL, 0};
@@ -32,31 +68,21 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
     PetscCall(ContactOutputTextOpen(&text));
     fp = text.fp;
     fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", out->runId);
-    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
-    for (PetscInt i = 0; i < p->nbodies; ++i) {
-      Body        b  = p->bodies[i];
-      const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
-      const char *g  = b->name;
-      PetscInt    N = F[i].nnodes, C = F[i].ncells;
-      if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
-      fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
-      fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
-      fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
-      fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
-      char        path[PETSC_MAX_PATH_LEN];
-      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/displacement_xyz", base, g));
-      XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
-      for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
-        const char *name = XdmfBodyScalarNames(b->axisym)[k];
-        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, name));
-        XdmfWriteAttribute(fp, name, (int)N, 1, path);
-      }
-      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
-      for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
-      fprintf(fp, "   </Grid>\n");
+    if (S > 1) fprintf(fp, "  <Grid Name=\"%s_stages\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", p->opt.scene);
+    for (PetscInt k = 1; k < S; ++k) {
+      char fields[64];
+      PetscCall(PetscSNPrintf(fields, sizeof(fields), "/stages/%d/bodies", (int)k));
+      fprintf(fp, "  <Grid Name=\"%s_stage_%d\" GridType=\"Collection\" CollectionType=\"Spatial\">\n   <Time Value=\"%d\"/>\n", p->opt.scene, (int)k, (int)k);
+      PetscCall(WriteXDMFBodies(fp, p, F, base, fields));
+      fprintf(fp, "  </Grid>\n");
     }
+    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
+    if (S > 1) fprintf(fp, "   <Time Value=\"%d\"/>\n", (int)S);
+    PetscCall(WriteXDMFBodies(fp, p, F, base, "/bodies"));
     for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
-    fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
+    fprintf(fp, "  </Grid>\n");
+    if (S > 1) fprintf(fp, "  </Grid>\n");
+    fprintf(fp, " </Domain>\n</Xdmf>\n");
   }
   PetscCall(ContactOutputTextWrite(p->comm, &text, out->xtmp, out->xdmf));
   PetscFunctionReturn(0);
@@ -143,6 +169,57 @@ static PetscErrorCode WriteRigidOutline(Body b, PetscViewer v)
   PetscFunctionReturn(0);
 }
 
+/* A body's fields at a state (the group pushed): displacement, stress, von
+   Mises and their XDMF forms. */
+static PetscErrorCode WriteBodyFields(BodyNodalFields *F, PetscBool axisym, PetscViewer v)
+{
+  PetscFunctionBeginUser;
+  ContactOutputCall(v, VecView(F->disp, v));
+  ContactOutputCall(v, VecView(F->stress, v));
+  ContactOutputCall(v, VecView(F->vm, v));
+  PetscCall(WriteXDMFFields(F, axisym, v));
+  PetscFunctionReturn(0);
+}
+
+/* -load_stages S > 1: each stage's end, /stages/k/bodies/<body> (k = 1..S)
+   with the body's fields at it (the mesh is /bodies/<body>'s), and the
+   attributes /stages count = S and /stages/k load = k. Stage S's fields
+   are the final state's, F; the earlier ones are computed from the
+   recorded states, and the bodies are left holding the final state. */
+static PetscErrorCode WriteHDF5Stages(Problem p, BodyNodalFields F[], PetscViewer v)
+{
+  const PetscInt S = p->opt.loadStages;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5PushGroup(v, "/stages"));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/stages", "count", PETSC_INT, &S));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  for (PetscInt k = 1; k <= S; ++k) {
+    char      group[2 * CONTACT_NAME_LEN + 32];
+    PetscReal load = (PetscReal)k;
+    PetscCall(StagesSetState(p, k));
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d", (int)k));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "load", PETSC_REAL, &load));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      BodyNodalFields Fk;
+      if (p->bodies[i]->rigid) continue;
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/bodies/%s", (int)k, p->bodies[i]->name));
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      if (k == S) PetscCall(WriteBodyFields(&F[i], p->bodies[i]->axisym, v));
+      else {
+        PetscCall(PetscMemzero(&Fk, sizeof(Fk)));
+        PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &Fk));
+        PetscCall(WriteBodyFields(&Fk, p->bodies[i]->axisym, v));
+        PetscCall(BodyNodalFieldsDestroy(&Fk));
+      }
+      PetscCall(PetscViewerHDF5PopGroup(v));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNodalFields F[], const char runId[], PetscViewer v)
 {
   char       *opts, version[256];
@@ -169,10 +246,7 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
     }
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     ContactOutputCall(v, VecView(F[i].coords, v));
-    ContactOutputCall(v, VecView(F[i].disp, v));
-    ContactOutputCall(v, VecView(F[i].stress, v));
-    ContactOutputCall(v, VecView(F[i].vm, v));
-    PetscCall(WriteXDMFFields(&F[i], p->bodies[i]->axisym, v));
+    PetscCall(WriteBodyFields(&F[i], p->bodies[i]->axisym, v));
     ContactOutputCall(v, ISView(F[i].topo, v));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
@@ -180,6 +254,7 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteHDF5(p->terms[t], p->bodies, v));
+  if (p->opt.loadStages > 1) PetscCall(WriteHDF5Stages(p, F, v));
   PetscCall(PetscOptionsGetAll(NULL, &opts));
   PetscCall(PetscGetVersion(version, sizeof(version)));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
@@ -228,7 +303,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
     if (p->bodies[i]->rigid) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
-    bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) + (size_t)cells * sizeof(PetscInt);
+    bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) * (p->opt.loadStages > 1 ? p->opt.loadStages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
   }
   PetscCall(ContactOutputCheckRoom(p->comm, bytes));
   PetscFunctionReturn(0);
@@ -304,6 +379,25 @@ static void JSONLoadPath(FILE *fp, Problem p)
   fprintf(fp, "\n  ]");
 }
 
+/* -load_stages: each stage's end, its load parameter k (1..S), the
+   reaction of every Dirichlet group and each contact pair's force (on its
+   first surface, as the report's "contact force"). The last is the final
+   state's. */
+static void JSONLoadStages(FILE *fp, Problem p)
+{
+  const StageEnds *e = &p->res.ends;
+
+  fprintf(fp, ",\n  \"load_stages\": [");
+  for (PetscInt k = 1; k <= p->opt.loadStages; ++k) {
+    ContactJSONKeyReal(fp, k > 1 ? ",\n    {" : "\n    {", "load", (PetscReal)k);
+    JSONReactionSet(fp, p, ", ", " ", " ", e->reaction[k - 1]);
+    fprintf(fp, ", \"contact_force\": {");
+    for (PetscInt t = 0; t < p->nterms; ++t) ContactJSONKeyPair(fp, t ? ", " : "", p->terms[t]->name, e->force[k - 1][t]);
+    fprintf(fp, "}}");
+  }
+  fprintf(fp, "\n  ]");
+}
+
 /* Each load's resultant, at the load factor solved (only with loads). In
    r-z it is axial: the radial sum of a load's nodal forces is its rings'
    radial load, which cancels round the circle (as a contact pair's,
@@ -315,8 +409,10 @@ static void JSONLoads(FILE *fp, Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
       const BodyLoad *L = &p->bodies[i]->load[j];
-      const PetscReal f[2] = {p->opt.axisymmetric ? 0.0 : p->bodies[i]->loadFactor * L->force[0], p->bodies[i]->loadFactor * L->force[1]};
       char            key[2 * CONTACT_NAME_LEN + 2];
+      PetscReal       f[2];
+      BodyLoadResultant(p->bodies[i], j, f);
+      if (p->opt.axisymmetric) f[0] = 0.0;
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
       ContactJSONKeyPair(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, f);
     }
@@ -483,6 +579,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
     PetscCall(JSONReactions(fp, p));
     JSONLoadPath(fp, p);
+    JSONLoadStages(fp, p);
     JSONLoads(fp, p);
     JSONForceControl(fp, p);
     PetscCall(JSONContact(fp, p));
@@ -509,6 +606,7 @@ PetscErrorCode RunWriteResults(Problem p, RunRecord *rec)
   PetscCall(PetscLogStagePush(contactLog.output));
   PetscCall(PetscLogEventBegin(contactLog.writeOutput, 0, 0, 0, 0));
   PetscCall(PetscMemzero(F, sizeof(F)));
+  PetscCall(StagesComputeFigures(p)); /* -load_stages: each stage end's reactions and contact forces */
   PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
   if (out.h5[0]) {

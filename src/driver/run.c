@@ -113,7 +113,8 @@ static PetscErrorCode RunSayNotConverged(Problem p)
       break;
     }
   }
-  if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
+  if (p->res.cutbacks > 0 && p->opt.loadStages > 1) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of its %" PetscInt_FMT " stages", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone, p->opt.loadStages));
+  else if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));
   PetscFunctionReturn(0);
 }

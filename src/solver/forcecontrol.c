@@ -133,6 +133,7 @@ PetscErrorCode ProblemCollectControls(Problem p)
   if (p->fc.n && !p->fc.coupled && UnheldAny(&p->fc.unheld)) PetscCall(PetscInfo(NULL, "force control: a body held by contact: coupled, whatever -force_control_type\n"));
   PetscCheck(!p->fc.rigid || p->fc.coupled, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type %s: a rigid body's free motion is solved coupled only", p->opt.controlType);
   p->fc.coupled = (PetscBool)(p->fc.n > 0 && (p->fc.coupled || UnheldAny(&p->fc.unheld)));
+  PetscCheck(!p->fc.n || p->fc.coupled || p->opt.loadStages == 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: its iteration finds the controls' displacements at one load, not along -load_stages %" PetscInt_FMT "; use -force_control_type coupled", p->opt.loadStages);
   PetscFunctionReturn(0);
 }
 
@@ -150,7 +151,7 @@ PetscErrorCode ProblemControlSceneForce(Problem p, PetscReal *S)
     for (PetscInt j = 0; j < b->nbc; ++j) {
       *S = PetscMax(*S, PetscSqrtReal(PetscSqr(b->bc[j].reaction[0]) + PetscSqr(b->bc[j].reaction[1])));
       for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
-        if (b->bc[j].control[c]) *S = PetscMax(*S, PetscAbsReal(b->loadFactor * b->bc[j].force[c]));
+        if (b->bc[j].control[c]) *S = PetscMax(*S, PetscAbsReal(BodyControlForce(b, j, c)));
     }
   }
   PetscFunctionReturn(0);
@@ -275,11 +276,13 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     ForceControl *fc = &p->fc.c[k];
     Body          b  = p->bodies[fc->body];
+    PetscReal     F;
     if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
     fc->R          = ProblemControlReaction(p, k); /* a rigid body's dPi/dq: the contact's force, or moment over L */
-    gU[k]          = fc->R - b->loadFactor * fc->force;
-    *f -= b->loadFactor * fc->force * fc->U;
+    F              = fc->rigid ? BodyRigidControlForce(b, fc->c) : BodyControlForce(b, fc->bc, fc->c); /* at the load parameter (history.c) */
+    gU[k]          = fc->R - F;
+    *f -= F * fc->U;
   }
   PetscCall(PetscInfo(NULL, "force control: U_0 = %.10g, reaction %.10g, energy %.10g\n", (double)p->fc.c[0].U, (double)p->fc.c[0].R, (double)*f));
   if (held) PetscCall(UnheldSetGradient(&p->fc.unheld, S, gU)); /* the directions the contact does not hold, projected out */

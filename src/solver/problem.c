@@ -27,6 +27,8 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.decrementRtol = -1.0; /* chosen with the solver (lmvm.c) */
   p->opt.taylorScale = 1e-4;
   p->opt.loadSteps     = 1;
+  p->opt.loadStages    = 1;
+  p->res.load          = 1.0;
   p->opt.maxCutbacks   = 4;
   p->opt.schur         = PETSC_TRUE;
   p->opt.hessianType   = HESSIAN_AUTO;
@@ -165,6 +167,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->opt.schur, &p->opt.schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
+  PetscCall(PetscOptionsInt("-load_stages", "Load history: every -<body>_bc_<group>_values, -<body>_load_<group>_traction and _pressure gives this many end values per component, stage after stage; each stage ramps linearly from the last one's end in -load_steps increments", NULL, p->opt.loadStages, &p->opt.loadStages, NULL));
   PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
@@ -185,6 +188,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.hessianSwitch >= 0 && p->opt.hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->opt.hessianSwitch);
   p->exactHessian = (PetscBool)(p->opt.hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
   PetscCheck(p->opt.loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->opt.loadSteps);
+  PetscCheck(p->opt.loadStages >= 1 && p->opt.loadStages <= CONTACT_MAX_STAGES, p->comm, PETSC_ERR_USER_INPUT, "option -load_stages: must be in [1, %d], got %" PetscInt_FMT, CONTACT_MAX_STAGES, p->opt.loadStages);
   PetscCheck(p->opt.maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->opt.maxCutbacks);
   PetscCheck(p->opt.penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->opt.penaltyStages);
   PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
@@ -202,6 +206,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
     PetscCheck(solve, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type: unknown type '%s' (known: coupled, outer)", p->opt.controlType);
   }
   p->sched.loadSteps     = p->opt.loadSteps;
+  p->res.load            = (PetscReal)p->opt.loadStages; /* the bodies are set up at the last stage's end */
   p->sched.penaltyStages = p->opt.penaltyStages;
   p->sched.penaltyStart  = p->opt.penaltyStart;
   p->sched.decrementRtol = p->opt.decrementRtol;
@@ -224,7 +229,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
       PetscCheck(!same, p->comm, PETSC_ERR_USER_INPUT, "option -bodies: body '%s' given twice", names[i]);
     }
     PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
-    p->bodies[i]->axisym = p->opt.axisymmetric;
+    p->bodies[i]->axisym  = p->opt.axisymmetric;
+    p->bodies[i]->nstages = p->opt.loadStages;
     PetscCall(PetscFree(names[i]));
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->opt.meshSize));
@@ -507,11 +513,13 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     const Body b = p->bodies[i];
     for (PetscInt l = 0; l < b->nload; ++l)
-      if (b->load[l].isPressure ? b->load[l].pressure != 0 : b->load[l].traction[0] != 0 || b->load[l].traction[1] != 0) *loaded = PETSC_TRUE;
+      for (PetscInt st = 0; st < b->nstages; ++st)
+        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0) *loaded = PETSC_TRUE;
     for (PetscInt j = 0; j < b->nbc; ++j) {
       if (b->bc[j].exact) *loaded = PETSC_TRUE;
       for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
-        if (b->bc[j].control[c] ? b->bc[j].force[c] != 0 : b->bc[j].values[c] != 0) *loaded = PETSC_TRUE;
+        for (PetscInt st = 0; st < b->nstages; ++st)
+          if (b->bc[j].stage[st][c] != 0) *loaded = PETSC_TRUE;
     }
   }
   PetscFunctionReturn(0);
@@ -833,6 +841,14 @@ PetscErrorCode ProblemCheckUnusedOptions(Problem p, PetscBool final)
    term's results from X, computed here, with every sum over ranks taken where
    the value is made; then the report. An unconverged state is announced
    before any figure. */
+PetscErrorCode ProblemSetLoad(Problem p, PetscReal lambda)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoad(p->bodies[i], lambda));
+  p->res.load = lambda;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
 {
   PetscReal parts[CONTACT_MAX_BODIES + CONTACT_MAX_TERMS];
@@ -972,6 +988,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(VecDestroy(&p->Xb));
   PetscCall(VecDestroy(&p->G));
   PetscCall(PetscFree3(p->res.path.load, p->res.path.energy, p->res.path.reaction));
+  for (PetscInt k = 0; k < CONTACT_MAX_STAGES; ++k) PetscCall(VecDestroy(&p->res.ends.X[k]));
   PetscCall(PetscFree(p));
   *problem = NULL;
   PetscFunctionReturn(0);

@@ -77,7 +77,7 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   }
   if (p->fc.n) PetscCall(PetscPrintf(p->comm, " (force control: %" PetscInt_FMT " solves)", p->res.controlSolves));
   else if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
-  else if (p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->sched.loadSteps * p->sched.penaltyStages));
+  else if (p->opt.loadStages * p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->opt.loadStages * p->sched.loadSteps * p->sched.penaltyStages)); /* -load_stages: each load stage's -load_steps */
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);

@@ -1,8 +1,10 @@
-/* The staged solve: load steps (outer), penalty continuation (inner) and
+/* The staged solve: the load history's stages (-load_stages, history.c),
+   load steps within each (outer), penalty continuation (inner) and
    automatic cutback, each stage a TAO solve from the last converged state,
    and the stopping test of each stage (the last relative to the gradient
    of the full problem at rest, so that the result does not depend on the
-   staging). Below the orchestrator (solve.c) and force control's solves
+   staging). The load parameter lambda walks from 0 to S = -load_stages;
+   one stage is today's load factor. Below the orchestrator (solve.c) and force control's solves
    (forcesolve.c, forceouter.c); above the assembled system (problem.c) and
    L-BFGS's TAO solve (lmvm.c). */
 #include "staging.h"
@@ -14,39 +16,59 @@
 static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
 {
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetLoadFactor(p->bodies[i], load));
+  PetscCall(ProblemSetLoad(p, load));
   for (PetscInt t = 0; t < p->nterms; ++t)
     PetscCall(EnergyTermSetPenaltyFactor(p->terms[t], penalty));
   PetscFunctionReturn(0);
 }
 
-/* The gradient norm g0 of the full problem (load 1, the scene's penalty) at
-   rest, where a solve from rest starts and the last stage stops relative to;
-   the energy evaluation is not counted. Where the full load put on at rest
-   inverts an element (a neohookean body), the gradient there has no value:
-   g0 is then the gradient at load 1e-6 divided by 1e-6, its limit at small
-   load, which is the linear body's g0. */
+/* The gradient norm g0 of the full problem (the scene's penalty) at rest,
+   where a solve from rest starts and the last stage stops relative to; the
+   energy evaluations are not counted. The full problem is the load at each
+   stage's end, the largest of their norms (one stage: load 1; a stage that
+   unloads to rest then stops as the loading did). Where the full load put
+   on at rest inverts an element (a neohookean body), the gradient there has
+   no value: g0 is then the gradient at load 1e-6 divided by 1e-6, its limit
+   at small load, which is the linear body's g0. */
 static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
 {
   const PetscReal small = 1e-6;
-  PetscReal       f;
+  const PetscInt  S     = p->opt.loadStages;
+  PetscReal       f, g;
   Vec             X;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(p->X, &X));
-  PetscCall(ProblemSetStage(p, 1.0, 1.0));
-  PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
-  p->res.nEnergyEvals--;
-  PetscCall(VecNorm(p->G, NORM_2, g0));
-  if (PetscIsInfReal(f)) {
-    PetscCall(ProblemSetStage(p, small, 1.0));
+  *g0 = 0.0;
+  for (PetscInt k = 1; k <= S; ++k) {
+    PetscCall(ProblemSetStage(p, (PetscReal)k, 1.0));
     PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
     p->res.nEnergyEvals--;
-    PetscCall(VecNorm(p->G, NORM_2, g0));
-    *g0 /= small;
-    PetscCall(ProblemSetStage(p, 1.0, 1.0));
+    PetscCall(VecNorm(p->G, NORM_2, &g));
+    if (PetscIsInfReal(f) && k > 1) g = 0.0; /* a later stage's: the first's limit stands */
+    else if (PetscIsInfReal(f)) {
+      PetscCall(ProblemSetStage(p, small, 1.0));
+      PetscCall(ProblemComputeObjectiveGradient(p->tao, X, &f, p->G, p));
+      p->res.nEnergyEvals--;
+      PetscCall(VecNorm(p->G, NORM_2, &g));
+      g /= small;
+    }
+    *g0 = PetscMax(*g0, g);
   }
+  PetscCall(ProblemSetStage(p, (PetscReal)S, 1.0));
   PetscCall(VecDestroy(&X));
+  PetscFunctionReturn(0);
+}
+
+/* -load_stages: keeps X at the end of stage k (the converged state at load k). */
+static PetscErrorCode ProblemStageEndRecord(Problem p, PetscInt k)
+{
+  StageEnds *e = &p->res.ends;
+
+  PetscFunctionBeginUser;
+  if (!e->X[k - 1]) PetscCall(VecDuplicate(p->X, &e->X[k - 1]));
+  PetscCall(VecCopy(p->X, e->X[k - 1]));
+  e->n = PetscMax(e->n, k);
   PetscFunctionReturn(0);
 }
 
@@ -204,7 +226,7 @@ static PetscErrorCode LoadPathReserve(LoadPath *lp, PetscInt ngroups)
 static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool atRest)
 {
   LoadPath *lp = &p->res.path;
-  PetscReal f, *R, stage = p->nbodies ? p->bodies[0]->loadFactor : 1.0;
+  PetscReal f, *R, stage = p->res.load;
   PetscInt  ngroups = 0;
   Vec       X = p->X;
 
@@ -234,17 +256,18 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
 }
 
 /* The penalty stages at load factor load, each a TAO solve from the last;
-   the last stage of the last load (of every load with -load_path) stops at
+   the last stage of the last load (of every load with -load_path, of each
+   load stage's end) stops at
    the final tolerance, gttol times the gradient norm g0 of the full problem
    at rest, the others when their gradient norm has fallen by -stage_rtol. */
-static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
+static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool lastLoad, PetscBool stageEnd, const PetscReal tol[3], PetscReal g0, PetscInt *its, TaoConvergedReason *reason)
 {
   const ProblemSchedule *sc = &p->sched;
 
   PetscFunctionBeginUser;
   for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
     const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
-    const PetscBool tight   = (PetscBool)((lastLoad || p->opt.loadPath) && s == sc->penaltyStages); /* stops at the final tolerance */
+    const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->opt.loadPath) && s == sc->penaltyStages); /* stops at the final tolerance */
     const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
@@ -268,21 +291,25 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
 }
 
 /* Load stepping (outer), penalty continuation (inner) and automatic cutback.
-   The load factor walks from 0 to 1 in steps of 1/-load_steps; each load is
-   solved from the last converged state. Where a load's solve stops with a
-   failed line search the state goes back to the last converged one and the
-   step is halved (at most -load_cutbacks times in all): a smaller step of the
-   load starts Newton closer to the solution it tracks, as an implicit
-   analysis cuts back its increment. A single solve from rest (the default)
-   that fails starts this walk with a step of 1/2. The last stage stops
-   where a single solve from rest would, at -tao_gttol times the gradient
-   norm of the full problem at rest, which makes the result independent of
-   the staging (with -load_path every load's last stage stops there, and
-   each converged load is recorded). */
+   The load parameter walks from 0 to S = -load_stages, through each stage
+   in steps of 1/-load_steps (a step never crosses a stage's end); each load
+   is solved from the last converged state. Where a load's solve stops with
+   a failed line search the state goes back to the last converged one and
+   the step is halved (at most -load_cutbacks times in all): a smaller step
+   of the load starts Newton closer to the solution it tracks, as an
+   implicit analysis cuts back its increment. A single solve from rest (the
+   default, one stage) that fails starts this walk with a step of 1/2; a
+   given start (p->X0) is solved at the last stage's end at once. The last
+   stage stops where a single solve from rest would, at -tao_gttol times the
+   gradient norm of the full problem at rest, which makes the result
+   independent of the staging; so does each stage's end, which is recorded
+   (with -load_path every load's last stage stops there, and each converged
+   load is recorded). */
 static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscReal tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
-  Vec       Xs;
+  const PetscReal S = (PetscReal)p->opt.loadStages;
+  PetscReal       tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
+  Vec             Xs;
 
   PetscFunctionBeginUser;
   *its = 0;
@@ -293,19 +320,21 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   PetscCall(ProblemLMVMBeginStaged(p)); /* a single solve is the last stage */
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
   PetscCall(ProblemLoadPathAppend(p, 0.0, PETSC_TRUE));
-  if (p->sched.loadSteps * p->sched.penaltyStages == 1) { /* one solve, from rest or from the given start */
+  if (p->sched.loadSteps * p->sched.penaltyStages == 1 && (S == 1 || p->X0)) { /* one solve, from rest or from the given start */
     PetscBool cut;
     if (p->X0 || ProblemTangentVaries(p)) { /* a given start, or the tangent predictor's: the stop is relative to the gradient at rest */
       PetscCall(ProblemGradientAtRest(p, &g0));
       if (p->X0) PetscCall(VecCopy(p->X0, p->X));
       PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     }
-    PetscCall(ProblemStageSolve(p, p->X0 ? 1.0 : 0.0, 1.0, 1.0, its, reason));
+    PetscCall(ProblemSetStage(p, S, 1.0));
+    PetscCall(ProblemStageSolve(p, p->X0 ? S : 0.0, S, 1.0, its, reason));
     p->res.stagesDone = 1;
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
     if (!cut) {
-      if (*reason > 0) p->res.loadDone = 1.0;
-      if (*reason > 0) PetscCall(ProblemLoadPathAppend(p, 1.0, PETSC_FALSE));
+      if (*reason > 0) p->res.loadDone = S;
+      if (*reason > 0) PetscCall(ProblemLoadPathAppend(p, S, PETSC_FALSE));
+      if (*reason > 0) PetscCall(ProblemStageEndRecord(p, (PetscInt)S));
       PetscFunctionReturn(0);
     }
     PetscCall(PetscInfo(p->tao, "the solve from rest stopped (%s): load steps of 1/2 from rest\n", TaoConvergedReasons[*reason]));
@@ -317,12 +346,14 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   PetscCall(VecZeroEntries(p->X));
   PetscCall(VecDuplicate(p->X, &Xs));
   PetscCall(VecCopy(p->X, Xs));
-  while (p->res.loadDone < 1.0) {
-    const PetscReal next = p->res.loadDone + step, load = next > 1.0 - 1e-12 ? 1.0 : next; /* a step on from the last converged load */
-    PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == 1.0), tol, g0, its, reason));
+  while (p->res.loadDone < S) {
+    const PetscReal end = PetscFloorReal(p->res.loadDone + 1e-12) + 1.0; /* the end of the stage the load is in */
+    const PetscReal next = p->res.loadDone + step, load = next > end - 1e-12 ? end : next; /* a step on from the last converged load */
+    PetscCall(ProblemSolveLoad(p, load, (PetscBool)(load == S), (PetscBool)(load == end), tol, g0, its, reason));
     if (*reason > 0) {
       p->res.loadDone = load;
       PetscCall(ProblemLoadPathAppend(p, load, PETSC_FALSE));
+      if (load == end) PetscCall(ProblemStageEndRecord(p, (PetscInt)end));
       PetscCall(VecCopy(p->X, Xs));
       continue;
     }

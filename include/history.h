@@ -1,0 +1,26 @@
+#pragma once
+/* A body's load history (history.c): -load_stages S gives every Dirichlet
+   value, force control's force and load S end values, and the body's
+   conditions and loads are functions of the load parameter lambda in
+   [0, S] (stage k from lambda = k - 1 to k, linear between its start and
+   its end). */
+#include "bodycore.h"
+
+/* The stage k (1..S) and the fraction t in [0, 1] of it at load parameter lambda in [0, S]. */
+void LoadHistoryLocate(PetscInt S, PetscReal lambda, PetscInt *k, PetscReal *t);
+/* Checks the count n of the values given to option opt (per per stage, S
+   stages) and copies them, stage after stage, to out[s * stride + c]. */
+PetscErrorCode BodyStagedValues(Body, const char opt[], PetscInt n, PetscInt per, const PetscReal v[], PetscInt stride, PetscReal out[]);
+/* Collective: puts the body's conditions and loads (a rigid body's motion) at load parameter lambda. */
+PetscErrorCode BodySetLoad(Body, PetscReal lambda);
+/* Moves Dirichlet condition i's component c (an index into its comps) to
+   the value U (a force-controlled component's displacement, the same in
+   every stage: scaled by the load factor). */
+PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
+/* The force of condition i's force-controlled component c at the load parameter last set. */
+PetscReal BodyControlForce(Body, PetscInt i, PetscInt c);
+/* A rigid body's unknown q's force at the load parameter last set: its
+   condition's force where force-controlled, else 0 (held by the contact). */
+PetscReal BodyRigidControlForce(Body, PetscInt q);
+/* Load l's resultant at the load parameter last set, into f[2]. */
+void BodyLoadResultant(Body, PetscInt l, PetscReal f[2]);
