@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import HALF_MORTAR_H, run_contact
+from conftest import HALF_MORTAR_H, run_contact, is_force_key
 from test_contact import RANK_DEPENDENT, flatten
 
 import profile_metrics as pm
@@ -140,7 +140,7 @@ def test_ranks(tmp_path):
                 continue
             b = got[k]
             if isinstance(a, (int, float)) and not isinstance(a, bool):
-                floor = 1e-8 * scale if ".force." in f".{k}." or k.endswith(("force.0", "force.1")) else 0.0
+                floor = 1e-8 * scale if is_force_key(k) else 0.0
                 worst = max(worst, (abs(a - b) / (max(abs(a), abs(b)) + floor / 1e-8 or 1.0), k))
                 assert abs(a - b) <= 1e-8 * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
             else:

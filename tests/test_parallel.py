@@ -8,7 +8,7 @@ Expected values come from the other rank counts and the other Newton steps."""
 import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import run_contact, is_force_key
 from test_contact import RANK_DEPENDENT, flatten
 
 EPS = np.finfo(float).eps
@@ -33,7 +33,7 @@ def compare(ref, got, label, rtol=1e-11):
             continue
         y = b[k]
         if isinstance(x, (int, float)) and not isinstance(x, bool):
-            force = ".force." in f".{k}." or k.endswith(("force.0", "force.1")) or k.startswith("reactions.")
+            force = is_force_key(k)
             floor = rtol * scale if force else 0.0
             worst = max(worst, (abs(x - y) / (max(abs(x), abs(y)) + floor / rtol or 1.0), k))
             assert abs(x - y) <= rtol * max(abs(x), abs(y)) + floor, f"{label}: {k}: {x} against {y}"
