@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from conftest import ROOT, run_contact
+from conftest import HALF_MORTAR_FINE, ROOT, run_contact
 
 import accuracy_study
 
@@ -141,19 +141,20 @@ def test_gpts_refused(tmp_path):
 @pytest.mark.parametrize("tol", [0.01, 0.005])
 def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
     """-accuracy TOL on the half scene against an independent run: the uniform
-    h = 0.005 mesh (905,296 dofs, 24 to 40 times the adapted answer's), whose
-    own profile error is about 0.25 % (first order from its 0.49 % distance to
-    h = 0.015). The adapted answer's profile lies within TOL + 0.3 % of it
-    (measured 0.90 % at TOL = 1 % with an estimate of 0.93 %; 0.07 % at 0.5 %,
-    estimate 0.20 %) and its force within TOL / 4 (measured 8.3e-4, 7.1e-5)."""
+    h = 0.007 mesh (conftest.HALF_MORTAR_FINE: 462,642 dofs, 21 to 60 times
+    the adapted answer's), whose own profile error is below 0.5 % (its L2
+    distance to h = 0.015 is 0.49 %, as was that of h = 0.005). The adapted
+    answer's profile lies within TOL + 0.3 % of it (measured 0.86 % at
+    TOL = 1 % with an estimate of 0.93 %; 0.08 % at 0.5 %, estimate 0.20 %)
+    and its force within TOL / 4 (measured 7.6e-4, 1.3e-6)."""
     import profile_metrics as pm
-    ref = half_mortar_runs[0.005]
+    ref = half_mortar_runs[HALF_MORTAR_FINE]
     assert ref.returncode == 0, ref.stderr[-2000:]
     res = run_contact(scene_args("hertz-half", tmp_path) + ["-accuracy", tol], tmp_path)
     d = pm.l2_distance(pm.profiles(res.output_path)[0]["indenter_contact"], pm.profiles(ref.output_path)[0]["indenter_contact"])
     dP = abs(res.summary["contact_force"] / ref.summary["contact_force"] - 1)
     print(f"TOL {tol}: {res.summary['dofs']} dofs, estimate {res.summary['error_estimate']:.3g}, "
-          f"profile {d:.3g} and force {dP:.2g} from the uniform h = 0.005")
+          f"profile {d:.3g} and force {dP:.2g} from the uniform h = {HALF_MORTAR_FINE}")
     assert d <= tol + 0.003
     assert dP <= tol / 4
 
