@@ -126,12 +126,14 @@ def test_killed_run_lock_taken_over(tmp_path):
     (-progress), when it holds the lock: no waiting on the clock."""
     run = subprocess.Popen(command(tmp_path, 0.02, "-progress"), cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
                            stderr=subprocess.PIPE, text=True)
+    seen = []
     for line in run.stderr:
+        seen.append(line)
         if "solve: iteration   1," in line:
             run.kill()
             break
     run.wait()
-    assert run.returncode == -9, f"the first run was not killed while solving (exit {run.returncode})"
+    assert run.returncode == -9, f"the first run was not killed while solving (exit {run.returncode}):\n{''.join(seen)[-3000:]}"
     assert (tmp_path / "out.lock").exists()
     proc = subprocess.run(command(tmp_path, 0.2), cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0 and f"pid={run.pid}" in proc.stderr, proc.stderr
