@@ -4,13 +4,8 @@
    conditions and loads are functions of the load parameter lambda in
    [0, S] (stage k from lambda = k - 1 to k, linear between its start and
    its end). */
-#include "bodycore.h"
+#include "stagedvalues.h"
 
-/* The stage k (1..S) and the fraction t in [0, 1] of it at load parameter lambda in [0, S]. */
-void LoadHistoryLocate(PetscInt S, PetscReal lambda, PetscInt *k, PetscReal *t);
-/* Checks the count n of the values given to option opt (per per stage, S
-   stages) and copies them, stage after stage, to out[s * stride + c]. */
-PetscErrorCode BodyStagedValues(Body, const char opt[], PetscInt n, PetscInt per, const PetscReal v[], PetscInt stride, PetscReal out[]);
 /* Collective: puts the body's conditions and loads (a rigid body's motion) at load parameter lambda. */
 PetscErrorCode BodySetLoad(Body, PetscReal lambda);
 /* Moves Dirichlet condition i's component c (an index into its comps) to

@@ -37,7 +37,7 @@
      it, and the run goes on. */
 #include "conditions.h"
 #include "loads.h"
-#include "history.h"
+#include "stagedvalues.h"
 #include "options.h"
 
 PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)

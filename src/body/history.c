@@ -28,28 +28,6 @@
 #include "loads.h"
 #include "rigidbody.h"
 
-void LoadHistoryLocate(PetscInt S, PetscReal lambda, PetscInt *k, PetscReal *t)
-{
-  *k = (PetscInt)PetscCeilReal(lambda - 1e-12);
-  *k = PetscMin(PetscMax(*k, 1), S);
-  *t = PetscMin(PetscMax(lambda - (PetscReal)(*k - 1), 0.0), 1.0);
-}
-
-PetscErrorCode BodyStagedValues(Body b, const char opt[], PetscInt n, PetscInt per, const PetscReal v[], PetscInt stride, PetscReal out[])
-{
-  const PetscInt S = b->nstages;
-
-  PetscFunctionBeginUser;
-  PetscCheck(S > 1 || n == per, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components", opt, n, per);
-  PetscCheck(n == per * S, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components and -load_stages %" PetscInt_FMT " (give %" PetscInt_FMT ", each stage's end after the last's)", opt, n, per, S, per * S);
-  for (PetscInt s = 0; s < S; ++s)
-    for (PetscInt c = 0; c < per; ++c) {
-      PetscCheck(!PetscIsInfOrNanReal(v[s * per + c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: must be finite, got %g", opt, (double)v[s * per + c]);
-      out[s * stride + c] = v[s * per + c];
-    }
-  PetscFunctionReturn(0);
-}
-
 /* The conditions' displacement values (not the force-controlled
    components, whose value is the control's displacement) and the loads at
    the end of stage s (0: rest). */

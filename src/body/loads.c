@@ -34,7 +34,7 @@
    exact with 3 points; its axial resultant is p times the area the group's
    ends sweep, pi (r_1^2 - r_0^2). */
 #include "loads.h"
-#include "history.h"
+#include "stagedvalues.h"
 #include "options.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)

@@ -40,7 +40,7 @@
    of the conditions that hold the translation, as the reaction of an
    elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
 #include "rigidbody.h"
-#include "history.h"
+#include "stagedvalues.h"
 #include "options.h"
 #include "mshcheck.h"
 #include "meshgen.h"
