@@ -32,6 +32,8 @@ typedef struct {
   PetscReal   resultant[2]; /* the pair's force: force doubled across a mirror line and cancelled along it; P is its norm */
   PetscReal   hEdge; /* the shorter of the two surfaces' mean reference edge lengths */
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
+  PetscBool   friction;       /* the pair has Coulomb friction (spec->friction > 0) */
+  PetscReal   stickHalfWidth; /* with friction: the stick zone's half-width, from the nodes that stick */
   PetscBool   done;
 } ContactReport;
 

@@ -274,6 +274,8 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(spec)); /* k_p h / E*: 1000 auto, below 25 soft */
   ContactJSONKeyPair(fp, ", ", "force", R->force);
+  ContactJSONKeyReal(fp, ", ", "friction", spec->friction);
+  if (R->friction) ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {
