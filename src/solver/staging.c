@@ -134,13 +134,18 @@ static PetscBool ProblemHasState(Problem p)
    point), at most -contact_friction_lag_max_it solves in all. An
    intermediate stage (a penalty continuation's, stopped at -stage_rtol)
    updates the lag once and goes on: its solution is only the next stage's
-   start. */
-static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, PetscInt *its, TaoConvergedReason *reason)
+   start. The re-solves start close to their answer, so a stop relative to
+   their own first gradient (gttol) is one relative to the first solve's,
+   gstart. */
+static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, PetscReal gstart, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscInt k = 1;
+  PetscInt  k = 1;
+  PetscReal tol[3];
 
   PetscFunctionBeginUser;
   if (!ProblemHasState(p)) PetscFunctionReturn(0);
+  PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
+  PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * gstart), tol[1], 0.0)); /* a re-solve stops where the first did, not relative to its own start */
   while (*reason > 0) {
     PetscReal f, change = 0.0;
     PetscInt  n;
@@ -162,6 +167,7 @@ static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, Pet
     *its += n;
     k++;
   }
+  PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
   PetscFunctionReturn(0);
 }
 
@@ -213,7 +219,7 @@ static PetscErrorCode ProblemStateReset(Problem p)
    penalty stage). */
 static PetscErrorCode ProblemStageSolve(Problem p, PetscReal l0, PetscReal l1, PetscReal penalty, PetscBool last, PetscInt *its, TaoConvergedReason *reason)
 {
-  PetscReal f;
+  PetscReal f, gstart = 0.0;
 
   PetscFunctionBeginUser;
   if (ProblemTangentVaries(p)) { /* a material that can invert (neohookean) */
@@ -229,8 +235,12 @@ static PetscErrorCode ProblemStageSolve(Problem p, PetscReal l0, PetscReal l1, P
       PetscFunctionReturn(0);
     }
   }
+  if (ProblemHasState(p)) { /* the first gradient, for the lag's re-solves */
+    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+    PetscCall(VecNorm(p->G, NORM_2, &gstart));
+  }
   PetscCall(ProblemTaoSolve(p, its, reason));
-  PetscCall(ProblemStageSolveLagged(p, last, its, reason));
+  PetscCall(ProblemStageSolveLagged(p, last, gstart, its, reason));
   PetscFunctionReturn(0);
 }
 

@@ -1,0 +1,150 @@
+"""Coulomb friction (src/contact/friction.c on mortar's points, the state
+lifecycle of the energy terms driven by src/solver/staging.c):
+-contact_friction and -contact_<pair>_friction MU.
+
+The reference is Cattaneo-Mindlin on meshes/cattaneo: an elastically similar
+disc on a slab, force-controlled, the normal force P = 4.3 in the first load
+stage, then the tangential force Q = 0.5 mu P with P held (mu = 0.3). A
+central zone |x| < c sticks, c/a = sqrt(1 - Q/(mu P)) = 0.70711; where a node
+slips its shear is mu p, against its slip. The scene's bodies are finite (a
+wide slab, a/R = 0.1) and its contact edges hc = 0.0075 (a/hc = 13)."""
+import h5py
+import numpy as np
+import pytest
+
+from conftest import run_contact
+
+CATTANEO = ["-options_file", "meshes/cattaneo/cattaneo.opts"]
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
+MU, P, Q = 0.3, 4.3, 0.645
+SLAVE = "contact/interface/disc_contact"
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """The cattaneo scene on 1 and 2 ranks."""
+    tmp = tmp_path_factory.mktemp("cattaneo")
+    return {n: run_contact(CATTANEO, tmp, ranks=n, name=f"np{n}") for n in (1, 2)}
+
+
+def nodal(res):
+    """The slave surface's nodal sets: arc position, pressure, shear, slip, stick."""
+    with h5py.File(res.output_path, "r") as f:
+        g = f[SLAVE]
+        return {k: g[f"node_{k}"][:] for k in ("s", "pressure", "shear", "slip", "stick")}
+
+
+def test_cattaneo_stick_zone(runs):
+    """The stick zone's half-width c (the JSON's stick_half_width, from the
+    nodes node_stick marks, each end carried to where the shear reaches mu p)
+    over the contact's half-width a (the report's second-moment half-width,
+    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.71249
+    (+0.77 %; +2.5 % at hc = 0.01 on a slab [0, 1] x [-1, 1], +0.34 % at
+    hc = 0.0025, the error falling with the mesh). Bound 2 % (2.6 times).
+    The first stage's zone, under P alone, is nearly the whole contact
+    (measured 0.0937 against a = 0.0997): a finite disc and slab under a
+    normal load slip a little at the zone's edges; Mindlin's half-spaces do
+    not."""
+    s = runs[1].summary
+    pair = s["contact"]["interface"]
+    c, a = pair["stick_half_width"], pair["fem_a_moment"]
+    theory = np.sqrt(1 - Q / (MU * P))
+    print(f"c = {c:.6f}, a = {a:.6f}, c/a = {c / a:.5f}, Mindlin {theory:.5f}, {c / a / theory - 1:+.4f}")
+    assert pair["friction"] == MU
+    assert abs(c / a / theory - 1) <= 0.02
+    stages = [st["stick_half_width"]["interface"] for st in s["load_stages"]]
+    print("per stage", stages)
+    assert stages[1] == c
+    assert 0.9 * a <= stages[0] <= a     # measured 0.0937
+
+
+def test_cattaneo_forces_met(runs):
+    """The controlled group's reactions are P and Q: measured 2.7e-15 and
+    2.7e-14 of them (the issue's requirement 1e-8 is the bound)."""
+    fc = runs[1].summary["force_control"]
+    for entry, force in zip(fc, (P, Q)):
+        print(entry["component"], entry["reaction"], force, abs(entry["reaction"] - force) / force)
+        assert entry["force"] == force
+        assert abs(entry["reaction"] - force) <= 1e-8 * force
+
+
+def test_coulomb(runs):
+    """At every node |q| <= mu p, p the converged nodal pressure (node_pressure,
+    the mortar's at the solution, not friction's lagged one), to 1e-6 of
+    mu p_max (the issue's figure); where a node in contact slips, |q| = mu p
+    to the same, and q has the sign of its slip. Measured: the largest
+    |q| - mu p is 0 (the fixed point's last solve took no step, so the lagged
+    pressure is the converged one), and every slipping node slipped along +s
+    with q > 0 (Q pushes the disc along +y, which is +s on its arc)."""
+    n = nodal(runs[1])
+    p, q, stick, slip = n["pressure"], n["shear"], n["stick"], n["slip"]
+    bound = 1e-6 * MU * p.max()
+    excess = np.max(np.abs(q) - MU * p)
+    slipping = (p > 0) & (stick == 0)
+    print(f"max(|q| - mu p) = {excess:.3e}, slipping nodes {slipping.sum()}, stuck {int(stick.sum())}")
+    assert excess <= bound
+    assert slipping.sum() >= 4 and stick.sum() >= 10
+    assert np.max(np.abs(np.abs(q[slipping]) - MU * p[slipping])) <= bound
+    assert np.all(q[slipping] * slip[slipping] > 0)
+    assert np.all(q[p == 0] == 0)
+
+
+def test_ranks_agree(runs):
+    """1 and 2 ranks: the nodal shear agrees to 3.6e-11 of its largest, the
+    stick half-width to 2.3e-12 (measured); bounds 1e-10 and 1e-11 (about 3
+    times). The iterations differ (102 and 99), the sums' order with them."""
+    a, b = (nodal(runs[n]) for n in (1, 2))
+    ca, cb = (runs[n].summary["contact"]["interface"]["stick_half_width"] for n in (1, 2))
+    dq = np.abs(a["shear"] - b["shear"]).max() / np.abs(a["shear"]).max()
+    print(f"shear {dq:.2e}, stick half-width {abs(ca - cb) / ca:.2e}")
+    assert np.array_equal(a["stick"], b["stick"])
+    assert dq <= 1e-10
+    assert abs(ca - cb) <= 1e-11 * ca
+
+
+def test_taylor(tmp_path):
+    """The Taylor test at the cattaneo solution (the energy of the last
+    increment, whose slipping nodes are inside the slip branch, not on the
+    kink k_t |e| = mu p, which a step crosses only above eps = 1/16): the
+    energy's remainder falls at order 2 (measured 2.0000000), the
+    gradient's with the exact Hessian too (measured 1.999993, the
+    relative remainder 3.84e-6 at the smallest step). Bounds: orders within
+    1e-4 of 2, the smallest remainder 1.2e-5 (3 times)."""
+    t = run_contact(CATTANEO + ["-taylor_test"], tmp_path).summary["taylor"]
+    print(t["gradient_order"], t["hessian_order"], t["hessian_relative_remainder"][-1])
+    assert abs(t["gradient_order"] - 2.0) <= 1e-4
+    assert abs(t["hessian_order"] - 2.0) <= 1e-4
+    assert t["hessian_relative_remainder"][-1] <= 1.2e-5
+
+
+def test_mu_zero_is_frictionless(tmp_path):
+    """-contact_friction 0 is the frictionless run, bit for bit (the term has
+    no friction at all); a friction of 1e-13, which runs the friction's
+    machinery (the first solve with every node tied, then the fixed point)
+    gives the frictionless answer to 5.7e-15 in the energy and the same P
+    (measured); bound 1e-12."""
+    base = run_contact(HERTZ, tmp_path, name="base").summary
+    zero = run_contact(HERTZ + ["-contact_friction", "0"], tmp_path, name="zero").summary
+    tiny = run_contact(HERTZ + ["-contact_friction", "1e-13"], tmp_path, name="tiny").summary
+    for key in ("energy", "contact_force", "iterations", "max_displacement"):
+        assert zero[key] == base[key], key
+    for key in ("energy", "contact_force"):
+        print(key, base[key], tiny[key], abs(tiny[key] - base[key]) / abs(base[key]))
+        assert abs(tiny[key] - base[key]) <= 1e-12 * abs(base[key])
+
+
+@pytest.mark.parametrize("args,needle", [
+    (["-contact_formulation", "gpts", "-contact_friction", "0.2"], "formulation gpts has no friction"),
+    (["-contact_friction", "-0.1"], "option -contact_friction: must be a finite number >= 0"),
+    (["-contact_interface_friction", "nan"], "option -contact_interface_friction: must be a finite number >= 0"),
+    (["-contact_friction", "0.2", "-contact_mortar_slave", "both"], "friction needs one slave surface"),
+    (["-contact_friction", "0.2", "-contact_friction_penalty", "0"], "option -contact_friction_penalty"),
+])
+def test_bad_friction(args, needle, tmp_path):
+    """Friction where it cannot be: one line naming the option and value, status 1, nothing written."""
+    res = run_contact(HERTZ + ["-mesh_size", "0.3"] + args, tmp_path, check=False)
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    print(lines)
+    assert res.returncode == 1
+    assert len(lines) == 1 and lines[0].startswith("contact: error: ") and needle in lines[0]
+    assert not res.output_path.exists()
