@@ -58,6 +58,42 @@ def test_cattaneo_stick_zone(runs):
     assert 0.9 * a <= stages[0] <= a     # measured 0.0937
 
 
+@pytest.mark.parametrize("ratio,measured,bound", [(0.2, 0.0064, 0.02), (0.8, -0.0156, 0.04)])
+def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
+    """The same at Q/(mu P) = 0.2 and 0.8: c/a against sqrt(1 - Q/(mu P))
+    = 0.8944 and 0.4472 measured +0.64 % and -1.56 % (a/hc = 13; the small
+    stick zone of 0.8, 6 nodes across its half, is resolved the worse).
+    Bounds 2 % and 4 % (3 and 2.6 times). The report's mindlin_c (Hertz's a
+    and the shear force's Q, 1 % above the controlled force: the normal
+    force leans by 1.4e-3 and carries the rest) is 0.66 % below c in both
+    (measured); bound 2 %."""
+    q = ratio * MU * P
+    s = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{q!r}"], tmp_path).summary
+    pair = s["contact"]["interface"]
+    err = pair["stick_half_width"] / pair["fem_a_moment"] / np.sqrt(1 - ratio) - 1
+    print(f"Q/(mu P) = {ratio}: c/a {err:+.4f} (measured {measured:+.4f}), mindlin_c {pair['mindlin_c']:.5f}")
+    assert abs(err) <= bound
+    assert abs(pair["mindlin_c"] / pair["stick_half_width"] - 1) <= 0.02
+
+
+def test_mindlin_deresiewicz(tmp_path):
+    """Unloading from Q* = 0.6 mu P to 0 (a third stage): the edges slip
+    backwards and the stick zone of the last increment is Mindlin-
+    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84205
+    (+0.65 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.63822
+    (+0.91 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; about 3
+    times). The slip state is carried from stage to stage: a solve that
+    forgot it would stick everywhere after the unloading's first increment."""
+    qs = 0.6 * MU * P
+    s = run_contact(CATTANEO + ["-load_stages", "3", "-disc_bc_clamp_values", f"{P},0,{P},{qs!r},{P},0",
+                                "-slab_bc_push_values", "0,0,0,0,0,0"], tmp_path).summary
+    a = s["contact"]["interface"]["fem_a_moment"]
+    c = [st["stick_half_width"]["interface"] / a for st in s["load_stages"]]
+    print(f"c/a per stage {c}, theory {np.sqrt(0.4):.5f} and {np.sqrt(0.7):.5f}")
+    assert abs(c[1] / np.sqrt(0.4) - 1) <= 0.025
+    assert abs(c[2] / np.sqrt(0.7) - 1) <= 0.02
+
+
 def test_cattaneo_forces_met(runs):
     """The controlled group's reactions are P and Q: measured 2.7e-15 and
     2.7e-14 of them (the issue's requirement 1e-8 is the bound)."""

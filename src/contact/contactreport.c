@@ -181,6 +181,12 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCall(ContactForceString(R->resultant, spec->axisym, fs[0], sizeof(fs[0])));
   PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
+  if (R->friction) {
+    const PetscReal Q = PetscSqrtReal(PetscSqr(R->shearForce[0]) + PetscSqr(R->shearForce[1]));
+    PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e), Q = %.6e, Q/(mu P) = %.4f; stick zone half-width c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)Q, (double)(R->P > 0 ? Q / (spec->friction * R->P) : 0.0), (double)R->stickHalfWidth));
+    if (spec->hertz && R->mindlinC > 0) PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
+    PetscCall(PetscPrintf(comm, "\n"));
+  }
   {
     char why[PETSC_MAX_PATH_LEN];
     PetscCall(ContactReportDiagnose(R, spec, sizeof(why), why));
@@ -275,7 +281,11 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(spec)); /* k_p h / E*: 1000 auto, below 25 soft */
   ContactJSONKeyPair(fp, ", ", "force", R->force);
   ContactJSONKeyReal(fp, ", ", "friction", spec->friction);
-  if (R->friction) ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);
+  if (R->friction) {
+    ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);
+    ContactJSONKeyPair(fp, ", ", "shear_force", R->shearForce);
+    if (spec->hertz) ContactJSONKeyReal(fp, ", ", "mindlin_c", R->mindlinC);
+  }
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {

@@ -555,3 +555,14 @@ PetscErrorCode FrictionWriteHDF5(Friction f, const PetscReal A[], PetscViewer v)
   PetscCall(PetscFree(order));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode FrictionShearForce(Friction f, PetscReal F[2])
+{
+  PetscFunctionBeginUser;
+  F[0] = F[1] = 0.0;
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    F[0] -= f->A[j] * f->q[j] * f->tau[2 * j];
+    F[1] -= f->A[j] * f->q[j] * f->tau[2 * j + 1];
+  }
+  PetscFunctionReturn(0);
+}

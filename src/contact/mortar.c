@@ -1396,6 +1396,15 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
     PetscCall(FrictionStickHalfWidth(m->fr, &m->b.report.stickHalfWidth));
   }
   PetscCall(ContactReportFinish(&m->b.report, &m->b.spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
+  if (m->fr) {
+    ContactReport  *R  = &m->b.report;
+    const PetscReal mu = FrictionGetCoefficient(m->fr);
+    PetscReal       Q;
+    PetscCall(FrictionShearForce(m->fr, R->shearForce));
+    if (!m->slave[0]) R->shearForce[0] = -R->shearForce[0], R->shearForce[1] = -R->shearForce[1]; /* on the first surface's body, as the pair's force */
+    Q           = PetscSqrtReal(PetscSqr(R->shearForce[0]) + PetscSqr(R->shearForce[1]));
+    R->mindlinC = m->b.spec.hertz && Q < mu * R->P ? R->hertzA * PetscSqrtReal(1.0 - Q / (mu * R->P)) : 0.0;
+  }
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree2(rows[s], F[s]));
   PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
   PetscFunctionReturn(0);
