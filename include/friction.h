@@ -21,7 +21,7 @@ typedef struct {
   PetscReal N[3], W[3], wt, M7[7];
 } FrictionPoint;
 
-/* mu > 0, the tangential penalty k_t = ktScale k_p (k_p the pair's penalty in use). */
+/* mu > 0, the tangential penalty k_t = ktScale k_p (k_p the scene's penalty of the pair, not continued: the callers' kp). */
 PetscErrorCode FrictionCreate(MPI_Comm, PetscReal mu, PetscReal ktScale, Friction *);
 PetscErrorCode FrictionDestroy(Friction *);
 /* The slave surface s of the pair's surfaces S (after their set-up). */
@@ -64,3 +64,6 @@ PetscErrorCode FrictionWriteHDF5(Friction, const PetscReal A[], PetscViewer);
    -sum_j A_j q_j tau_j (the slave rows of b_j sum to tau_j: the shape
    functions sum to 1 and W_j / C_j integrates to 1). */
 PetscErrorCode FrictionShearForce(Friction, PetscReal F[2]);
+/* At the surfaces' current coordinates, within the increment: the nodes
+   that carry a bound (in contact at the lag) and those of them that stick. */
+PetscErrorCode FrictionCountStuck(Friction, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded);

@@ -1085,7 +1085,7 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
   PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(MortarAccumulateGradient(m, energy));
-  if (m->fr) PetscCall(FrictionAddEnergyGradient(m->fr, m->b.S, m->b.kp, energy));
+  if (m->fr) PetscCall(FrictionAddEnergyGradient(m->fr, m->b.S, m->b.spec.kp, energy)); /* the scene's k_p: k_t is not continued (friction.c) */
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -1204,7 +1204,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
   PetscCall(PetscLogEventBegin(MORTAR_Hessian, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(MortarAssembleHessian(m, H));
-  if (m->fr) PetscCall(FrictionAddHessian(m->fr, &m->b, m->b.kp, H));
+  if (m->fr) PetscCall(FrictionAddHessian(m->fr, &m->b, m->b.spec.kp, H)); /* the scene's k_p: k_t is not continued (friction.c) */
   PetscCall(PetscLogEventEnd(MORTAR_Hessian, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -1636,7 +1636,7 @@ static PetscErrorCode MortarFrictionAccept(EnergyTerm t, Body bodies[], PetscRea
 
   PetscFunctionBeginUser;
   PetscCall(MortarUpdate(m, bodies, t->comm));
-  PetscCall(FrictionAccept(m->fr, m->b.S, m->b.kp, load));
+  PetscCall(FrictionAccept(m->fr, m->b.S, m->b.spec.kp, load));
   PetscFunctionReturn(0);
 }
 
@@ -1687,6 +1687,22 @@ static PetscErrorCode MortarStickHalfWidth(EnergyTerm t, PetscInt k, PetscReal *
   PetscCall(FrictionGetStages(m->fr, &n, &cs));
   *has = (PetscBool)(k >= 1 && k <= n);
   *c   = *has ? cs[k - 1] : 0.0;
+  PetscFunctionReturn(0);
+}
+
+/* Why the solve may have stopped: the report's reason, else, with friction,
+   a contact of which no node sticks at the last iterate: the pair slides
+   (a tangential force above what friction holds has no equilibrium). */
+static PetscErrorCode MortarDiagnose(EnergyTerm t, size_t n, char why[])
+{
+  Mortar  *m = (Mortar *)t->data;
+  PetscInt stuck, loaded;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportDiagnose(&m->b.report, &m->b.spec, n, why));
+  if (why[0]) PetscFunctionReturn(0);
+  PetscCall(FrictionCountStuck(m->fr, m->b.S, m->b.spec.kp, &stuck, &loaded));
+  if (loaded > 0 && stuck == 0) PetscCall(PetscSNPrintf(why, n, "pair %s slides: none of its %" PetscInt_FMT " nodes in contact sticks under its friction mu = %g (the tangential load exceeds what friction holds, mu P; -contact_%s_friction)", t->name, loaded, (double)FrictionGetCoefficient(m->fr), t->name));
   PetscFunctionReturn(0);
 }
 
@@ -1766,6 +1782,7 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
     t->ops.reset   = MortarFrictionReset;
     t->ops.writehdf5 = MortarWriteHDF5;
     t->ops.stickhalfwidth = MortarStickHalfWidth;
+    t->ops.diagnose       = MortarDiagnose;
   }
   PetscFunctionReturn(0);
 }
