@@ -589,6 +589,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
     fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
+    if (p->res.lagSolves) fprintf(fp, "  \"friction_lags\": %d,\n", (int)p->res.lagSolves); /* friction: the fixed points' lag updates */
     if (p->res.h0Refreshes) fprintf(fp, "  \"h0_refreshes\": %d,\n", (int)p->res.h0Refreshes); /* -lmvm_h0 contact */
     if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_pairs_dropped\": %d,\n", (int)p->res.pairsDropped); /* -lmvm_pair_ratio */
     if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_restarts\": %d,\n", (int)p->res.lmvmRestarts); /* -lmvm_restarts */
