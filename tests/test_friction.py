@@ -230,3 +230,20 @@ def test_sliding_stops_in_one_line(tmp_path):
     assert res.returncode == 2
     assert len(lines) == 1 and "pair interface slides" in lines[0] and "-contact_interface_friction" in lines[0]
     assert not res.output_path.exists() and not res.summary_path.exists()
+
+
+def test_axisymmetric_runs(tmp_path):
+    """Friction in r-z (the sphere scene, a ball pressed on a flat of the same
+    material, mu = 0.3): the solve converges, the stick zone is a disc about
+    the axis whose radius c is the JSON's stick_half_width (measured 0.0922
+    against a = 0.1013, the edges slipping a little as the ball flattens),
+    the rings' radial shear has no resultant (written 0, as the pair's force)
+    and no Mindlin figure is given (plane strain's). Bounds: c between 0.8 a
+    and a."""
+    s = run_contact(["-options_file", "meshes/sphere/sphere.opts", "-contact_friction", "0.3"], tmp_path).summary
+    pair = s["contact"]["interface"]
+    c, a = pair["stick_half_width"], pair["fem_a_moment"]
+    print(f"c = {c:.5f}, a = {a:.5f}, shear force {pair['shear_force']}")
+    assert 0.8 * a <= c <= a
+    assert pair["shear_force"][0] == 0
+    assert "mindlin_c" not in pair

@@ -183,7 +183,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   if (R->friction) {
     const PetscReal Q = PetscSqrtReal(PetscSqr(R->shearForce[0]) + PetscSqr(R->shearForce[1]));
-    PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e), Q = %.6e, Q/(mu P) = %.4f; stick zone half-width c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)Q, (double)(R->P > 0 ? Q / (spec->friction * R->P) : 0.0), (double)R->stickHalfWidth));
+    PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e), Q = %.6e, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)Q, (double)(R->P > 0 ? Q / (spec->friction * R->P) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
     if (spec->hertz && R->mindlinC > 0) PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
     PetscCall(PetscPrintf(comm, "\n"));
   }
@@ -284,7 +284,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   if (R->friction) {
     ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);
     ContactJSONKeyPair(fp, ", ", "shear_force", R->shearForce);
-    if (spec->hertz) ContactJSONKeyReal(fp, ", ", "mindlin_c", R->mindlinC);
+    if (spec->hertz && !spec->axisym) ContactJSONKeyReal(fp, ", ", "mindlin_c", R->mindlinC);
   }
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");

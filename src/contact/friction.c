@@ -87,6 +87,7 @@ struct _n_Friction {
   PetscInt    slave, nn, nm;      /* the slave side, its nodes, the master's */
   PetscReal  *s;                  /* [nn] arc position of each slave node (reference) */
   PetscInt   *order;              /* [nn] the slave's nodes sorted by arc position */
+  PetscReal   sAxis;              /* axisymmetric: the arc position of the node on the axis, where the stick zone's radius starts (else -1) */
   PetscReal  *A;                  /* [nn] int_S W_j dS */
   PetscReal  *tau;                /* [nn][2] unit tangent along the arc at the lag */
   PetscReal  *bound;              /* [nn] mu p_j at the lag */
@@ -151,6 +152,7 @@ PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt sla
   PetscFunctionBeginUser;
   f->slave = slave;
   f->nn    = Ss->nn;
+  f->sAxis = -1.0;
   f->nm    = S[1 - slave].nn;
   PetscCall(PetscCalloc5(f->nn, &f->s, f->nn, &f->A, 2 * f->nn, &f->tau, f->nn, &f->bound, f->nn + 1, &f->rowStart));
   PetscCall(PetscMalloc1(f->nn, &f->order));
@@ -163,6 +165,8 @@ PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt sla
     f->s[en[1]]        = Ss->edir[e] > 0 ? Ss->s0[e] + Ss->elen[e] : Ss->s0[e];
     PetscCall(ContactSurfaceArc(Ss, e, 0.0, &f->s[en[2]]));
   }
+  for (PetscInt j = 0; j < f->nn && Ss->axisym; ++j)
+    if (PetscAbsReal(Ss->X[2 * j]) <= 1e-8 * ContactSurfaceLength(Ss)) f->sAxis = f->s[j];
   {
     PetscReal *key;
     PetscCall(PetscMalloc1(f->nn, &key));
@@ -480,7 +484,9 @@ static PetscReal FrictionStickEnd(Friction f, PetscInt i, PetscInt j, PetscInt o
 
 /* Half the arc length of the stick zone: from the first to the last stuck
    node along the arc, each end carried past its node to where the shear
-   reaches Coulomb's bound (FrictionStickEnd); 0 where no node sticks. */
+   reaches Coulomb's bound (FrictionStickEnd); in r-z, where the surface
+   starts on the axis, the zone's radius, its far end's arc distance from
+   the axis; 0 where no node sticks. */
 PetscErrorCode FrictionStickHalfWidth(Friction f, PetscReal *c)
 {
   PetscInt lo = -1, hi = -1;
@@ -496,7 +502,7 @@ PetscErrorCode FrictionStickHalfWidth(Friction f, PetscReal *c)
   {
     const PetscReal L = FrictionStickEnd(f, f->order[lo], lo < hi ? f->order[lo + 1] : -1, lo > 0 ? f->order[lo - 1] : -1);
     const PetscReal R = FrictionStickEnd(f, f->order[hi], hi > lo ? f->order[hi - 1] : -1, hi + 1 < f->nn ? f->order[hi + 1] : -1);
-    *c                = 0.5 * (R - L);
+    *c                = f->sAxis >= 0 ? PetscMax(PetscAbsReal(R - f->sAxis), PetscAbsReal(L - f->sAxis)) : 0.5 * (R - L); /* r-z: the zone's radius from the axis */
   }
   PetscFunctionReturn(0);
 }

@@ -1402,8 +1402,9 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
     PetscReal       Q;
     PetscCall(FrictionShearForce(m->fr, R->shearForce));
     if (!m->slave[0]) R->shearForce[0] = -R->shearForce[0], R->shearForce[1] = -R->shearForce[1]; /* on the first surface's body, as the pair's force */
+    if (m->b.spec.axisym) R->shearForce[0] = 0.0; /* the rings' radial shear has no resultant (as the pair's force) */
     Q           = PetscSqrtReal(PetscSqr(R->shearForce[0]) + PetscSqr(R->shearForce[1]));
-    R->mindlinC = m->b.spec.hertz && Q < mu * R->P ? R->hertzA * PetscSqrtReal(1.0 - Q / (mu * R->P)) : 0.0;
+    R->mindlinC = m->b.spec.hertz && !m->b.spec.axisym && Q < mu * R->P ? R->hertzA * PetscSqrtReal(1.0 - Q / (mu * R->P)) : 0.0; /* plane strain's Cattaneo-Mindlin */
   }
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree2(rows[s], F[s]));
   PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
