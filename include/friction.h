@@ -46,12 +46,9 @@ PetscErrorCode FrictionBegin(Friction);
 PetscErrorCode FrictionRestore(Friction);
 /* Back to rest: no slip, no pressure, the reference coordinates. */
 PetscErrorCode FrictionReset(Friction, const ContactSurface S[2]);
-/* The accepted state on the slave's nodes (every rank, arrays of nn owned by
-   the friction): shear traction q_j along the arc, accumulated slip, stick
-   (1 stuck, 0 slipping or open), the node's pressure; the stick zone's
-   half-width (its ends between nodes where the shear reaches Coulomb's
-   bound), and the number of stage ends recorded with the half-width at each. */
-PetscErrorCode FrictionGetNodal(Friction, const PetscReal **q, const PetscReal **slip, const PetscReal **stick, const PetscReal **p);
+/* The last converged increment's stick zone half-width (its ends between
+   nodes where the shear reaches Coulomb's bound; r-z: its radius), and the
+   number of stage ends recorded with the half-width at each. */
 PetscErrorCode FrictionStickHalfWidth(Friction, PetscReal *c);
 PetscErrorCode FrictionGetStages(Friction, PetscInt *n, const PetscReal **c);
 /* The friction coefficient. */

@@ -14,8 +14,8 @@
    point's closest point eta* on the master, and tau_j the unit tangent of
    the slave surface at node j, along its arc. Within one fixed-point
    iterate (below) the points, eta*, C_j and tau_j are those of the lag's
-   state: ds_j = b_j . (x - x_acc) is linear in the nodes' coordinates, with
-   b_j the sparse row of coefficients (FrictionLag; every rank holds every
+   state: ds_j = B_j . (x - x_acc) is linear in the nodes' coordinates, with
+   B_j the sparse row of coefficients (FrictionLag; every rank holds every
    node's row). This is small sliding per increment: the pairing follows
    the contact from lag to lag, and a point slides a fraction of an edge in
    an increment.
@@ -32,8 +32,8 @@
    C1: its derivative, the shear traction q_j = psi'(e_j) = clip(k_t e_j,
    -b_j, b_j), is the return map of a tangential penalty onto Coulomb's
    cone, and psi'' = k_t where the node sticks and 0 where it slips:
-     dPsi = sum_j A_j q_j b_j,   d2Psi = sum_{j stuck} A_j k_t b_j b_j^T,
-   both exact (b_j does not depend on u within the iterate). The nodal
+     dPsi = sum_j A_j q_j B_j,   d2Psi = sum_{j stuck} A_j k_t B_j B_j^T,
+   both exact (B_j and b_j do not depend on u within the iterate). The nodal
    shear q_j is per unit of the slave's reference measure, as p_j is.
 
    Fixed point. p_j depends on u, and Coulomb's cone is a bound that moves
@@ -50,9 +50,9 @@
    The tangential penalty. k_t = -contact_friction_penalty times the
    pair's k_p, 0.01 by default (with -contact_penalty auto, k_t = 10 E* / h),
    the scene's k_p: a penalty continuation does not soften it (that is for
-   the normal contact's closing; softened with it, the tangential stage of
-   the cattaneo scene at hc = 0.0075 took 102 Newton iterations, at the
-   full k_t from the start 60). On the cattaneo scene at hc = 0.01 the
+   the normal contact's closing; softened with it, the cattaneo scene at
+   hc = 0.0075 took 102 Newton iterations, at the full k_t from the start
+   60). On the cattaneo scene at hc = 0.01 the
    stick zone's half-width is the same to 4 digits with 0.1 and 0.01 (241
    and 81 Newton iterations, then softened) and 3 % wider with 0.001; with
    k_t = k_p the first solve at the full penalty had not converged after
@@ -448,16 +448,6 @@ PetscErrorCode FrictionAccept(Friction f, const ContactSurface S[2], PetscReal k
     PetscCall(FrictionStickHalfWidth(f, &f->stageC[k - 1]));
     f->nstage = PetscMax(f->nstage, k);
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode FrictionGetNodal(Friction f, const PetscReal **q, const PetscReal **slip, const PetscReal **stick, const PetscReal **p)
-{
-  PetscFunctionBeginUser;
-  if (q) *q = f->q;
-  if (slip) *slip = f->pending ? f->slipN : f->slip;
-  if (stick) *stick = f->stick;
-  if (p) *p = f->p;
   PetscFunctionReturn(0);
 }
 
