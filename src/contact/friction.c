@@ -251,6 +251,7 @@ static PetscErrorCode FrictionBuildRows(Friction f, const ContactSurface S[2], P
   PetscMPIInt          *counts, *displs, n4;
 
   PetscFunctionBeginUser;
+  PetscCheck((PetscReal)f->nn * stride < (PetscReal)PETSC_MAX_INT, f->comm, PETSC_ERR_SUP, "friction: %" PetscInt_FMT " slave nodes against %" PetscInt_FMT " master nodes overflow the rows' sort keys (PetscInt of %d bytes)", f->nn, f->nm, (int)sizeof(PetscInt));
   PetscCall(PetscMalloc1(4 * 30 * (size_t)np + 1, &loc));
   for (PetscInt k = 0; k < np; ++k) {
     const FrictionPoint *P  = &pts[k];
