@@ -20,6 +20,8 @@ typedef struct {
   PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
   PetscBool axisym;       /* the bodies are axisymmetric (-axisymmetric): Hertz's point contact of two spheres, P the force over the whole circle */
   PetscReal mirrorY;
+  PetscReal friction;        /* Coulomb's coefficient mu (-contact_<pair>_friction; 0: frictionless, the term has no friction at all) */
+  PetscReal frictionPenalty; /* the tangential penalty k_t over k_p (-contact_<pair>_friction_penalty) */
 } ContactPairSpec;
 
 /* The automatic penalty k_p = CONTACT_PENALTY_AUTO E* / h, h the shortest

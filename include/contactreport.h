@@ -32,6 +32,11 @@ typedef struct {
   PetscReal   resultant[2]; /* the pair's force: force doubled across a mirror line and cancelled along it; P is its norm */
   PetscReal   hEdge; /* the shorter of the two surfaces' mean reference edge lengths */
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
+  PetscBool   friction;       /* the pair has Coulomb friction (spec->friction > 0) */
+  PetscReal   stickHalfWidth; /* with friction: the stick zone's half-width, from the nodes that stick */
+  PetscReal   shearForce[2];  /* with friction: its force on the slave's body (the pair's force and P are the normal part's) */
+  PetscReal   normalLoad, tangentialLoad; /* with friction (rank 0): the pair's whole force (normal part and shear) along the contact zone's normal, and across it (P and Q of Cattaneo-Mindlin) */
+  PetscReal   mindlinC;       /* with friction and Hertz in plane strain: Mindlin's stick half-width a sqrt(1 - Q/(mu P)) (0: Q >= mu P, full sliding) */
   PetscBool   done;
 } ContactReport;
 

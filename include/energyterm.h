@@ -24,6 +24,12 @@ typedef struct {
   PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
   PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
   PetscErrorCode (*diagnose)(EnergyTerm, size_t, char[]);
+  PetscErrorCode (*lag)(EnergyTerm, Body[], PetscReal *change);
+  PetscErrorCode (*accept)(EnergyTerm, Body[], PetscReal load);
+  PetscErrorCode (*begin)(EnergyTerm);
+  PetscErrorCode (*stickhalfwidth)(EnergyTerm, PetscInt stage, PetscReal *c, PetscBool *has);
+  PetscErrorCode (*restore)(EnergyTerm, Body[]);
+  PetscErrorCode (*reset)(EnergyTerm, Body[]);
   PetscErrorCode (*destroy)(EnergyTerm);
 } EnergyTermOps;
 
@@ -70,5 +76,26 @@ PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
    not a slave, whose profile is transferred, or the term is no contact), and
    the contact force it transmits (x and y; its norm is the force P). */
 PetscErrorCode EnergyTermGetProfile(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
+/* State across load increments (a friction's slip; none for most terms):
+   whether the term has any. A term with state holds some quantity lagged
+   within an increment, updated by EnergyTermLag at the bodies' state (the
+   solve is repeated until the largest relative change is small: a fixed
+   point); EnergyTermAccept records the bodies' state (a converged
+   increment, at load parameter load), which EnergyTermBegin makes the
+   accepted one as the next increment begins (until then the term's energy
+   is still the converged increment's); EnergyTermRestore goes back to the
+   accepted state (a cut-back, a failed trial; the bodies hold it again);
+   EnergyTermReset goes back to rest (a solve from rest). Each is
+   collective, and a no-op for a term without state (change 0). */
+PetscBool      EnergyTermHasState(EnergyTerm);
+PetscErrorCode EnergyTermLag(EnergyTerm, Body[], PetscReal *change);
+PetscErrorCode EnergyTermAccept(EnergyTerm, Body[], PetscReal load);
+PetscErrorCode EnergyTermBegin(EnergyTerm);
+PetscErrorCode EnergyTermRestore(EnergyTerm, Body[]);
+PetscErrorCode EnergyTermReset(EnergyTerm, Body[]);
+/* A frictional term's stick zone half-width at the end of load stage k
+   (1..-load_stages; has: whether the term has friction and that end was
+   reached). */
+PetscErrorCode EnergyTermGetStickHalfWidth(EnergyTerm, PetscInt k, PetscReal *c, PetscBool *has);
 /* After the post-processing: why the term may have kept the solve from converging, or an empty string. */
 PetscErrorCode EnergyTermDiagnose(EnergyTerm, size_t n, char why[]);

@@ -47,6 +47,8 @@ typedef struct {
   PetscInt    loadStages; /* -load_stages: the stages of the load history (history.c), each in loadSteps increments */
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
+  PetscReal   lagRtol;  /* -contact_friction_lag_rtol: a term's lagged quantity (friction's pressure) is converged when its largest change is below this, relative */
+  PetscInt    lagMaxIt; /* -contact_friction_lag_max_it: the most solves of one increment's fixed point */
   PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
   PetscInt    tangentIts; /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */
   PetscBool   loadPath; /* -load_path: record each converged load (staging.c), each solved to the final tolerance */
@@ -114,6 +116,7 @@ typedef struct {
 typedef struct {
   PetscInt           nEnergyEvals, nHessianEvals, iterations; /* iterations: TAO's, over all stages */
   PetscInt           stagesDone, cutbacks; /* the stages solved, and how many times the load was cut back */
+  PetscInt           lagSolves; /* friction: the fixed points' lag updates, one per converged solve of an increment */
   PetscReal          loadDone;             /* the load parameter of the last converged stage (0..-load_stages) */
   PetscReal          load;                 /* the load parameter the bodies are at (ProblemSetLoad) */
   TaoConvergedReason reason;

@@ -70,7 +70,7 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
 {
   char     *names[64], formulation[CONTACT_NAME_LEN] = "mortar", penalty[64] = "auto";
   PetscInt  np = 64, nq = 4;
-  PetscReal kp = -1.0, blend = 0.05;
+  PetscReal kp = -1.0, blend = 0.05, mu = 0.0, ktScale = 0.01;
   PetscBool disable = PETSC_FALSE, kpAuto, setBlend, help;
 
   PetscFunctionBeginUser;
@@ -84,6 +84,8 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   PetscCall(ContactOptionsString(PetscOptionsObject, "-contact_penalty", "Penalty k_p of every pair: a number (pressure per unit penetration), or auto: 1000 E*/h, h the contact edges' size", NULL, penalty, penalty, sizeof(penalty), NULL));
   PetscCall(PetscOptionsInt("-contact_quadrature_points", "Gauss points per slave edge (gpts), per segment (mortar, at least 3)", NULL, nq, &nq, NULL));
   PetscCall(PetscOptionsReal("-contact_blend", "Fraction of a master edge, at each end, over which its tangent is blended into its neighbour's (0: quadratic edges meeting at corners; default 0.05 for gpts, 0 for mortar)", NULL, blend, &blend, &setBlend));
+  PetscCall(PetscOptionsReal("-contact_friction", "Coulomb friction coefficient mu of every pair (-contact_<pair>_friction overrides it per pair; 0: frictionless)", NULL, mu, &mu, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_penalty", "Tangential penalty k_t of every frictional pair over its normal penalty k_p (0.01: with -contact_penalty auto k_t = 10 E*/h)", NULL, ktScale, &ktScale, NULL));
   PetscCall(PetscOptionsBool("-contact_disable", "Ignore the scene's contact pairs", NULL, disable, &disable, NULL));
   PetscOptionsEnd();
   if (help && !np) { /* -help without pairs: a pair's options under a placeholder name */
@@ -93,6 +95,8 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
   PetscCheck(nq >= 1 && nq <= 8, comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);
   PetscCall(ParsePenalty(comm, "-contact_penalty", penalty, &kp, &kpAuto));
+  PetscCheck(!PetscIsInfOrNanReal(mu) && mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction: must be a finite number >= 0, got %g", (double)mu);
+  PetscCheck(!PetscIsInfOrNanReal(ktScale) && ktScale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_penalty: must be a finite number > 0, got %g", (double)ktScale);
   PetscCheck(np <= maxTerms, comm, PETSC_ERR_USER_INPUT, "option -contact_pairs: %" PetscInt_FMT " pairs, at most %" PetscInt_FMT, np, maxTerms);
   for (PetscInt i = 0; i < np; ++i) {
     ContactPairSpec spec;
@@ -114,6 +118,8 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     spec.kpAuto       = kpAuto;
     spec.nqp          = nq;
     spec.blend        = setBlend ? blend : -1.0;
+    spec.friction        = mu;
+    spec.frictionPenalty = ktScale;
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "contact_%s_", spec.name));
     PetscCall(PetscStrncpy(pairPenalty, penalty, sizeof(pairPenalty)));
     PetscOptionsBegin(comm, prefix, "Contact pair options", NULL);
@@ -122,7 +128,11 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(ContactOptionsString(PetscOptionsObject, "-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
     PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat): cylinders in plane strain, spheres with -axisymmetric", NULL, spec.radii, &nr, &spec.hertz));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
+    PetscCall(PetscOptionsReal("-friction", "Coulomb friction coefficient mu of this pair (default -contact_friction; 0: frictionless)", NULL, spec.friction, &spec.friction, NULL));
+    PetscCall(PetscOptionsReal("-friction_penalty", "Tangential penalty k_t of this pair over its normal penalty k_p (default -contact_friction_penalty)", NULL, spec.frictionPenalty, &spec.frictionPenalty, NULL));
     PetscOptionsEnd();
+    PetscCheck(!PetscIsInfOrNanReal(spec.friction) && spec.friction >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -%sfriction: must be a finite number >= 0, got %g", prefix, (double)spec.friction);
+    PetscCheck(!PetscIsInfOrNanReal(spec.frictionPenalty) && spec.frictionPenalty > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -%sfriction_penalty: must be a finite number > 0, got %g", prefix, (double)spec.frictionPenalty);
     if (help && !setPair) { /* -help: a pair without surfaces (the placeholder) is only listed */
       for (PetscInt s = 0; s < ns; ++s) PetscCall(PetscFree(surf[s]));
       continue;

@@ -181,6 +181,11 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCall(ContactForceString(R->resultant, spec->axisym, fs[0], sizeof(fs[0])));
   PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
+  if (R->friction) {
+    PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e); the whole force %.6e along the contact zone's normal, Q = %.6e across, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)R->normalLoad, (double)R->tangentialLoad, (double)(R->normalLoad > 0 ? R->tangentialLoad / (spec->friction * R->normalLoad) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
+    if (spec->hertz && R->mindlinC > 0) PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
+    PetscCall(PetscPrintf(comm, "\n"));
+  }
   {
     char why[PETSC_MAX_PATH_LEN];
     PetscCall(ContactReportDiagnose(R, spec, sizeof(why), why));
@@ -274,6 +279,13 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(spec)); /* k_p h / E*: 1000 auto, below 25 soft */
   ContactJSONKeyPair(fp, ", ", "force", R->force);
+  ContactJSONKeyReal(fp, ", ", "friction", spec->friction);
+  if (R->friction) {
+    ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);
+    ContactJSONKeyPair(fp, ", ", "shear_force", R->shearForce);
+    ContactJSONKeyReal(fp, ", ", "tangential_load", R->tangentialLoad);
+    if (spec->hertz && !spec->axisym) ContactJSONKeyReal(fp, ", ", "mindlin_c", R->mindlinC);
+  }
   PairFiguresJSON(fp, R, spec, ", ", "P");
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {

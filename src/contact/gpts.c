@@ -260,6 +260,7 @@ PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *spec, EnergyTerm t)
     PetscCall(PetscLogEventRegister("ContactHessian", id, &GPTS_Hessian));
     PetscCall(PetscLogEventRegister("ContactReport", id, &GPTS_Report));
   }
+  PetscCheck(spec->friction == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -contact_%s_friction (or -contact_friction) %g: formulation gpts has no friction (mortar has)", spec->name, (double)spec->friction);
   PetscCall(PetscNew(&cp));
   PetscCall(PetscDTGaussQuadrature(spec->nqp, -1.0, 1.0, cp->xi, cp->wxi));
   t->data = cp;

@@ -140,7 +140,9 @@
    and the forces themselves are written beside it. Where both surfaces are slaves, each
    shows its own pressure k_p <-g_j>_+, and F_j is the whole pair's force on
    the node (its slave half and its master half, each weighted 1/2). */
+#include <petscviewerhdf5.h>
 #include "contactterm.h"
+#include "friction.h"
 #include "edge.h"
 #include "gap.h"
 #include "options.h"
@@ -241,6 +243,9 @@ typedef struct {
   PetscBool   slave[2];    /* the surfaces that act as slave */
   PetscReal   c;           /* weight of each one-sided energy: 1 / the number of slaves */
   PetscMPIInt rank, size;
+  Friction    fr;          /* Coulomb friction on the slave surface (friction.c), or NULL */
+  FrictionPoint *fpts;     /* the slave's points as friction reads them */
+  PetscInt    nfmax;
 } Mortar;
 
 static PetscLogEvent MORTAR_EnergyGrad, MORTAR_Search, MORTAR_Segments, MORTAR_Hessian, MORTAR_Report;
@@ -1080,6 +1085,7 @@ static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscRea
   PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(MortarAccumulateGradient(m, energy));
+  if (m->fr) PetscCall(FrictionAddEnergyGradient(m->fr, m->b.S, m->b.spec.kp, energy)); /* the scene's k_p: k_t is not continued (friction.c) */
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceAddGradient(&m->b.S[s], bodies[m->b.S[s].body]));
   PetscCall(PetscLogEventEnd(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -1198,6 +1204,7 @@ static PetscErrorCode MortarHessian(EnergyTerm t, Body bodies[], Mat H)
   PetscCall(PetscLogEventBegin(MORTAR_Hessian, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(MortarAssembleHessian(m, H));
+  if (m->fr) PetscCall(FrictionAddHessian(m->fr, &m->b, m->b.spec.kp, H)); /* the scene's k_p: k_t is not continued (friction.c) */
   PetscCall(PetscLogEventEnd(MORTAR_Hessian, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -1354,6 +1361,39 @@ static PetscErrorCode MortarMasterRows(const Mortar *m, PetscInt s, const PetscR
   PetscFunctionReturn(0);
 }
 
+/* Rank 0, with friction: the pair's whole force (its normal part and the
+   shear) along the contact zone's normal and across it, Cattaneo-Mindlin's
+   P and Q. The zone's normal is that of the chord between its end nodes
+   on the slave surface (current positions): on a curved slave the shear
+   has a share along the normal part's direction, and under a tangential
+   load that direction leans more than the zone (1.4e-3 on the cattaneo
+   scene against the zone's 1.0e-3, whose slab tilts under the shear: Q
+   0.6512 and 0.6506 against the load 0.645 across the undeformed slab).
+   Elsewhere (and without contact) the normal part's direction. */
+static PetscErrorCode MortarContactLoads(ContactReport *R, PetscInt s)
+{
+  const ContactSide *S  = &R->side[s];
+  const PetscReal    Fn = PetscSqrtReal(PetscSqr(R->force[0]) + PetscSqr(R->force[1])), F[2] = {R->force[0] + R->shearForce[0], R->force[1] + R->shearForce[1]};
+  PetscReal          n[2] = {Fn > 0 ? R->force[0] / Fn : 0.0, Fn > 0 ? R->force[1] / Fn : 0.0}, Fp;
+  PetscInt           lo = -1, hi = -1;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < S->n; ++i)
+    if (S->rows[CONTACT_ROW_COLS * i + CONTACT_ROW_P] > 0) {
+      if (lo < 0) lo = i;
+      hi = i;
+    }
+  if (lo >= 0 && hi > lo) {
+    const PetscReal *a = &S->rows[CONTACT_ROW_COLS * lo], *b = &S->rows[CONTACT_ROW_COLS * hi];
+    const PetscReal  t[2] = {b[CONTACT_ROW_XC] - a[CONTACT_ROW_XC], b[CONTACT_ROW_YC] - a[CONTACT_ROW_YC]}, l = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+    if (l > 0) n[0] = t[1] / l, n[1] = -t[0] / l;
+  }
+  Fp                = F[0] * n[0] + F[1] * n[1];
+  R->normalLoad     = PetscAbsReal(Fp);
+  R->tangentialLoad = PetscSqrtReal(PetscSqr(F[0] - Fp * n[0]) + PetscSqr(F[1] - Fp * n[1]));
+  PetscFunctionReturn(0);
+}
+
 /* The nodal profile of each surface (its own for a slave, transferred for a
    master), the pair's force on each surface as the sum of its nodal forces,
    and the largest weighted penetration. */
@@ -1384,7 +1424,22 @@ static PetscErrorCode MortarPostProcess(EnergyTerm t, Body bodies[])
   }
   PetscCall(ContactTermReportBegin(&m->b, m->slave));
   m->b.report.nodal = PETSC_TRUE;
+  if (m->fr) {
+    m->b.report.friction = PETSC_TRUE;
+    PetscCall(FrictionStickHalfWidth(m->fr, &m->b.report.stickHalfWidth));
+  }
   PetscCall(ContactReportFinish(&m->b.report, &m->b.spec, t->comm, nrow, rows, (const PetscReal(*)[2])force, maxPen, L));
+  if (m->fr) {
+    ContactReport  *R  = &m->b.report;
+    const PetscReal mu = FrictionGetCoefficient(m->fr);
+    PetscReal       Q;
+    PetscCall(FrictionShearForce(m->fr, R->shearForce));
+    if (!m->slave[0]) R->shearForce[0] = -R->shearForce[0], R->shearForce[1] = -R->shearForce[1]; /* on the first surface's body, as the pair's force */
+    if (m->b.spec.axisym) R->shearForce[0] = 0.0; /* the rings' radial shear has no resultant (as the pair's force) */
+    PetscCall(MortarContactLoads(R, m->slave[0] ? 0 : 1));
+    Q           = R->tangentialLoad;
+    R->mindlinC = m->b.spec.hertz && !m->b.spec.axisym && Q < mu * R->normalLoad ? R->hertzA * PetscSqrtReal(1.0 - Q / (mu * R->normalLoad)) : 0.0; /* plane strain's Cattaneo-Mindlin */
+  }
   for (PetscInt s = 0; s < 2; ++s) PetscCall(PetscFree2(rows[s], F[s]));
   PetscCall(PetscLogEventEnd(MORTAR_Report, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -1568,6 +1623,131 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
     PetscCall(PetscFree2(wpos, cnt));
     MortarShareEdges(m, s);
   }
+  if (m->fr) {
+    PetscCheck(m->slave[0] + m->slave[1] == 1, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction needs one slave surface, not -contact_mortar_slave both", m->b.spec.name, (double)m->b.spec.friction);
+    PetscCheck(!m->b.rigid, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction against a rigid body is not implemented", m->b.spec.name, (double)m->b.spec.friction);
+    PetscCheck(!m->b.spec.mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction in a mirrored half model is not implemented (a tangential load breaks the symmetry)", m->b.spec.name, (double)m->b.spec.friction);
+    PetscCall(FrictionSetUp(m->fr, m->b.S, m->slave[0] ? 0 : 1));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Friction's fixed-point lag at the bodies' state: the slave's points of
+   this rank's edges, its weights and its nodal pressures p_j = k_p <-g_j>_+
+   (NULL change: the rows alone, the bound kept). */
+static PetscErrorCode MortarFrictionLag(EnergyTerm t, Body bodies[], PetscReal *change)
+{
+  Mortar           *m = (Mortar *)t->data;
+  const PetscInt    s = m->slave[0] ? 0 : 1;
+  const MortarSide *D = &m->side[s];
+  PetscReal        *p, dummy;
+
+  PetscFunctionBeginUser;
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  if (D->np > m->nfmax) {
+    PetscCall(PetscFree(m->fpts));
+    m->nfmax = 2 * D->np;
+    PetscCall(PetscMalloc1(m->nfmax, &m->fpts));
+  }
+  for (PetscInt k = 0; k < D->np; ++k) {
+    const MortarPoint *P = &D->pts[k];
+    FrictionPoint     *F = &m->fpts[k];
+    F->se                = P->se;
+    F->me                = P->G.me >= 0 && !P->G.ext && !P->G.mirror ? P->G.me : -1; /* the master surface itself */
+    F->wt                = P->wt;
+    for (PetscInt i = 0; i < 3; ++i) F->N[i] = P->N[i], F->W[i] = P->W[i];
+    for (PetscInt i = 0; i < 7; ++i) F->M7[i] = P->G.M7[i];
+  }
+  PetscCall(PetscMalloc1(m->b.S[s].nn, &p));
+  for (PetscInt j = 0; j < m->b.S[s].nn; ++j) p[j] = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
+  PetscCall(FrictionLag(m->fr, m->b.S, D->np, m->fpts, D->A, D->cover, change ? p : NULL, change ? change : &dummy));
+  PetscCall(PetscFree(p));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarFrictionAccept(EnergyTerm t, Body bodies[], PetscReal load)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(MortarUpdate(m, bodies, t->comm));
+  PetscCall(FrictionAccept(m->fr, m->b.S, m->b.spec.kp, load));
+  PetscFunctionReturn(0);
+}
+
+/* Back to the accepted state, the bodies holding it again: its bound, and
+   the rows rebuilt there. */
+static PetscErrorCode MortarFrictionRestore(EnergyTerm t, Body bodies[])
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionRestore(m->fr));
+  PetscCall(MortarFrictionLag(t, bodies, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarFrictionBegin(EnergyTerm t)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionBegin(m->fr));
+  PetscFunctionReturn(0);
+}
+
+/* The report's sets, and the slave surface's friction: node_shear, node_slip, node_stick. */
+static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
+{
+  Mortar        *m = (Mortar *)t->data;
+  const PetscInt s = m->slave[0] ? 0 : 1;
+  char           group[4 * CONTACT_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportWriteHDF5(&m->b.report, &m->b.spec, bodies, v));
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, bodies[m->b.S[s].body]->name, m->b.S[s].group));
+  PetscCall(PetscViewerHDF5PushGroup(v, group));
+  PetscCall(FrictionWriteHDF5(m->fr, m->side[s].A, v));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarStickHalfWidth(EnergyTerm t, PetscInt k, PetscReal *c, PetscBool *has)
+{
+  Mortar          *m = (Mortar *)t->data;
+  PetscInt         n;
+  const PetscReal *cs;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionGetStages(m->fr, &n, &cs));
+  *has = (PetscBool)(k >= 1 && k <= n);
+  *c   = *has ? cs[k - 1] : 0.0;
+  PetscFunctionReturn(0);
+}
+
+/* Why the solve may have stopped: the report's reason, else, with friction,
+   a contact of which no node sticks at the last iterate: the pair slides
+   (a tangential force above what friction holds has no equilibrium). */
+static PetscErrorCode MortarDiagnose(EnergyTerm t, size_t n, char why[])
+{
+  Mortar  *m = (Mortar *)t->data;
+  PetscInt stuck, loaded;
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactReportDiagnose(&m->b.report, &m->b.spec, n, why));
+  if (why[0]) PetscFunctionReturn(0);
+  PetscCall(FrictionCountStuck(m->fr, m->b.S, m->b.spec.kp, &stuck, &loaded));
+  if (loaded > 0 && stuck == 0) PetscCall(PetscSNPrintf(why, n, "pair %s slides: none of its %" PetscInt_FMT " nodes in contact sticks under its friction mu = %g (the tangential load exceeds what friction holds, mu P; -contact_%s_friction)", t->name, loaded, (double)FrictionGetCoefficient(m->fr), t->name));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarFrictionReset(EnergyTerm t, Body bodies[])
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(FrictionReset(m->fr, m->b.S));
   PetscFunctionReturn(0);
 }
 
@@ -1587,6 +1767,8 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
     PetscCall(PetscFree(D->cross.c));
     PetscCall(PetscFree2(D->cbeg, D->cend));
   }
+  PetscCall(FrictionDestroy(&m->fr));
+  PetscCall(PetscFree(m->fpts));
   PetscCall(ContactTermDestroy(&m->b));
   PetscCall(PetscFree(m));
   PetscFunctionReturn(0);
@@ -1626,5 +1808,16 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
   t->ops.hessian          = MortarHessian;
   t->ops.postprocess      = MortarPostProcess;
   t->ops.destroy          = MortarDestroy;
+  if (spec->friction > 0) {
+    PetscCall(FrictionCreate(t->comm, spec->friction, spec->frictionPenalty, &m->fr));
+    t->ops.lag     = MortarFrictionLag;
+    t->ops.accept  = MortarFrictionAccept;
+    t->ops.begin   = MortarFrictionBegin;
+    t->ops.restore = MortarFrictionRestore;
+    t->ops.reset   = MortarFrictionReset;
+    t->ops.writehdf5 = MortarWriteHDF5;
+    t->ops.stickhalfwidth = MortarStickHalfWidth;
+    t->ops.diagnose       = MortarDiagnose;
+  }
   PetscFunctionReturn(0);
 }

@@ -1,6 +1,6 @@
 /* The program: PETSc's start and end, the error handler, the log events and
    stages, and the pipeline (run.c) run once or under -accuracy (accuracy.c). */
-static const char help[] = "Frictionless contact between 2D linear-elastic bodies by the penalty method,\n"
+static const char help[] = "Contact between 2D elastic bodies by the penalty method, frictionless or with Coulomb friction,\n"
                            "minimised with TAO. A scene is an options file: see meshes/hertz/hertz.opts.\n"
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
 

@@ -379,10 +379,23 @@ static void JSONLoadPath(FILE *fp, Problem p)
   fprintf(fp, "\n  ]");
 }
 
+/* The terms with a stick half-width at the end of stage k. */
+static PetscInt ProblemFrictionalTerms(Problem p, PetscInt k)
+{
+  PetscInt n = 0;
+
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscReal c;
+    PetscBool has;
+    if (!EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) && has) n++;
+  }
+  return n;
+}
+
 /* -load_stages: each stage's end, its load parameter k (1..S), the
    reaction of every Dirichlet group and each contact pair's force (on its
-   first surface, as the report's "contact force"). The last is the final
-   state's. */
+   first surface, as the report's "contact force"), and each frictional
+   pair's stick zone half-width. The last is the final state's. */
 static void JSONLoadStages(FILE *fp, Problem p)
 {
   const StageEnds *e = &p->res.ends;
@@ -393,7 +406,15 @@ static void JSONLoadStages(FILE *fp, Problem p)
     JSONReactionSet(fp, p, ", ", " ", " ", e->reaction[k - 1]);
     fprintf(fp, ", \"contact_force\": {");
     for (PetscInt t = 0; t < p->nterms; ++t) ContactJSONKeyPair(fp, t ? ", " : "", p->terms[t]->name, e->force[k - 1][t]);
-    fprintf(fp, "}}");
+    fprintf(fp, "}");
+    for (PetscInt t = 0, n = 0; t < p->nterms; ++t) { /* frictional pairs: the stick zone's half-width */
+      PetscReal c;
+      PetscBool has;
+      if (EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) || !has) continue;
+      ContactJSONKeyReal(fp, n++ ? ", " : ", \"stick_half_width\": {", p->terms[t]->name, c);
+      if (n == ProblemFrictionalTerms(p, k)) fprintf(fp, "}");
+    }
+    fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");
 }
@@ -568,6 +589,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
     fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);
+    if (p->res.lagSolves) fprintf(fp, "  \"friction_lags\": %d,\n", (int)p->res.lagSolves); /* friction: the fixed points' lag updates */
     if (p->res.h0Refreshes) fprintf(fp, "  \"h0_refreshes\": %d,\n", (int)p->res.h0Refreshes); /* -lmvm_h0 contact */
     if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_pairs_dropped\": %d,\n", (int)p->res.pairsDropped); /* -lmvm_pair_ratio */
     if (p->res.h0Refreshes) fprintf(fp, "  \"lmvm_restarts\": %d,\n", (int)p->res.lmvmRestarts); /* -lmvm_restarts */

@@ -128,3 +128,53 @@ PetscErrorCode EnergyTermDiagnose(EnergyTerm t, size_t n, char why[])
   if (t->ops.diagnose) PetscCall(t->ops.diagnose(t, n, why));
   PetscFunctionReturn(0);
 }
+
+PetscBool EnergyTermHasState(EnergyTerm t)
+{
+  return (PetscBool)(t->ops.accept != NULL);
+}
+
+PetscErrorCode EnergyTermLag(EnergyTerm t, Body bodies[], PetscReal *change)
+{
+  PetscFunctionBeginUser;
+  *change = 0.0;
+  if (t->ops.lag) PetscCall(t->ops.lag(t, bodies, change));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermAccept(EnergyTerm t, Body bodies[], PetscReal load)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.accept) PetscCall(t->ops.accept(t, bodies, load));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermBegin(EnergyTerm t)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.begin) PetscCall(t->ops.begin(t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermRestore(EnergyTerm t, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.restore) PetscCall(t->ops.restore(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermReset(EnergyTerm t, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  if (t->ops.reset) PetscCall(t->ops.reset(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyTermGetStickHalfWidth(EnergyTerm t, PetscInt k, PetscReal *c, PetscBool *has)
+{
+  PetscFunctionBeginUser;
+  *c   = 0.0;
+  *has = PETSC_FALSE;
+  if (t->ops.stickhalfwidth) PetscCall(t->ops.stickhalfwidth(t, k, c, has));
+  PetscFunctionReturn(0);
+}

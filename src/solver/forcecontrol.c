@@ -134,6 +134,7 @@ PetscErrorCode ProblemCollectControls(Problem p)
   PetscCheck(!p->fc.rigid || p->fc.coupled, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type %s: a rigid body's free motion is solved coupled only", p->opt.controlType);
   p->fc.coupled = (PetscBool)(p->fc.n > 0 && (p->fc.coupled || UnheldAny(&p->fc.unheld)));
   PetscCheck(!p->fc.n || p->fc.coupled || p->opt.loadStages == 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: its iteration finds the controls' displacements at one load, not along -load_stages %" PetscInt_FMT "; use -force_control_type coupled", p->opt.loadStages);
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCheck(!p->fc.n || p->fc.coupled || !EnergyTermHasState(p->terms[t]), p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: each trial goes on from the last, whose slip pair %s's friction would keep; use -force_control_type coupled", p->terms[t]->name);
   PetscFunctionReturn(0);
 }
 

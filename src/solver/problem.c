@@ -36,6 +36,8 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.penaltyStages = 1;
   p->opt.penaltyStart  = 1e-2;
   p->opt.stageRtol     = 1e-3;
+  p->opt.lagRtol       = 1e-8;
+  p->opt.lagMaxIt      = 30;
   p->opt.controlMaxIt  = 40;
   p->opt.controlRtol   = 1e-9;
   p->opt.controlStep   = 0.3;
@@ -172,6 +174,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
+  PetscCall(PetscOptionsInt("-contact_friction_lag_max_it", "Friction: the most solves of one load increment's fixed point on the pressure", NULL, p->opt.lagMaxIt, &p->opt.lagMaxIt, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
   PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, p->opt.tangentIts, &p->opt.tangentIts, NULL));
   PetscCheck(p->opt.tangentIts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -tangent_at_rest_its: must be at least 0, got %" PetscInt_FMT, p->opt.tangentIts);
@@ -193,6 +197,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->opt.maxCutbacks);
   PetscCheck(p->opt.penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->opt.penaltyStages);
   PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
+  PetscCheck(p->opt.lagRtol > 0 && p->opt.lagRtol < 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_rtol: must be in (0, 1), got %g", (double)p->opt.lagRtol);
+  PetscCheck(p->opt.lagMaxIt >= 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.lagMaxIt);
   PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
   PetscCheck(p->opt.h0Refresh >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, p->opt.h0Refresh);
   PetscCheck(p->opt.lmvmRestarts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, p->opt.lmvmRestarts);

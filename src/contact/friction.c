@@ -1,0 +1,583 @@
+/* Coulomb friction on the slave surface of a mortar pair (-contact_friction,
+   -contact_<pair>_friction): a tangential penalty k_t with a return map, as
+   an incremental potential that TAO minimises with the rest of the energy.
+
+   Slip. On slave node j, with the weights W_j, the weight C_j = int_S' W_j dS
+   and the quadrature points of the pair's normal gaps (mortar.c: the same
+   segments, the same points, the same closest points of the master), the
+   weighted tangential relative displacement over the load increment is
+
+     ds_j = (1/C_j) int_S' W_j tau_j . (du_s - du_m(eta*)) dS,
+
+   du = u - u_acc the displacement since the last accepted state, du_s =
+   sum_i N_i du_i on the slave edge, du_m = sum_k M_k(eta*) du_k at the
+   point's closest point eta* on the master, and tau_j the unit tangent of
+   the slave surface at node j, along its arc. Within one fixed-point
+   iterate (below) the points, eta*, C_j and tau_j are those of the lag's
+   state: ds_j = B_j . (x - x_acc) is linear in the nodes' coordinates, with
+   B_j the sparse row of coefficients (FrictionLag; every rank holds every
+   node's row). This is small sliding per increment: the pairing follows
+   the contact from lag to lag, and a point slides a fraction of an edge in
+   an increment.
+
+   Return map as a potential. The trial elastic slip e_j = s_el,j + ds_j
+   (s_el,j: the elastic slip of the accepted state), the bound b_j = mu p_j
+   (p_j = k_p <-g_j>_+ the node's pressure, lagged), and
+
+     psi(e) = k_t/2 e^2                    k_t |e| <= b
+            = b |e| - b^2/(2 k_t)          k_t |e| >  b,
+     Psi = sum_j A_j psi(e_j),   A_j = int_S W_j dS
+
+   (psi = 0 where b = 0: an open node carries no shear). psi is convex and
+   C1: its derivative, the shear traction q_j = psi'(e_j) = clip(k_t e_j,
+   -b_j, b_j), is the return map of a tangential penalty onto Coulomb's
+   cone, and psi'' = k_t where the node sticks and 0 where it slips:
+     dPsi = sum_j A_j q_j B_j,   d2Psi = sum_{j stuck} A_j k_t B_j B_j^T,
+   both exact (B_j and b_j do not depend on u within the iterate). The nodal
+   shear q_j is per unit of the slave's reference measure, as p_j is.
+
+   Fixed point. p_j depends on u, and Coulomb's cone is a bound that moves
+   with it; the potential above holds p lagged. Within each load increment
+   the solve is repeated with p_j (and the points, C_j, tau_j) taken from
+   the last solution until the largest change of mu p_j is below
+   -contact_friction_lag_rtol times mu max p_j (FrictionLag's change). At
+   the fixed point q_j = clip(k_t e_j, -mu p_j, mu p_j) with the converged
+   p_j: |q_j| <= mu p_j, |q_j| = mu p_j where the node slips, against its
+   slip (q has the sign of e, the slip increment e - q/k_t too). The
+   remaining error is the tangential penalty's elastic slip q/k_t in the
+   stick zone, as the normal penalty's penetration is p/k_p.
+
+   The tangential penalty. k_t = -contact_friction_penalty times the
+   pair's k_p, 0.01 by default (with -contact_penalty auto, k_t = 10 E* / h),
+   the scene's k_p: a penalty continuation does not soften it (that is for
+   the normal contact's closing; softened with it, the cattaneo scene at
+   hc = 0.0075 took 102 Newton iterations, at the full k_t from the start
+   60). On the cattaneo scene at hc = 0.01 the
+   stick zone's half-width is the same to 4 digits with 0.1 and 0.01 (241
+   and 81 Newton iterations, then softened) and 3 % wider with 0.001; with
+   k_t = k_p the first solve at the full penalty had not converged after
+   500 iterations, Newton's steps overshooting where a stiff stuck node
+   turns to slip.
+
+   State. Accepting a converged increment keeps, per node, the elastic slip
+   q_j / k_t, the accumulated slip (+= e_j - q_j/k_t), stick (k_t |e_j| < b_j
+   with b_j > 0), the pressure and the shear, and the coordinates x_acc of
+   both surfaces. It becomes the state the energy is measured from when the
+   next increment begins (FrictionBegin), not before: until then the energy
+   at any state is the last increment's (at its solution, each stage end
+   re-evaluated for its figures, and the Taylor test, whose slipping nodes
+   are then inside the slip branch, not on the kink |k_t e| = b where a
+   just accepted slip would put them and psi'' jumps). A cut-back restores
+   the lagged bound of the accepted state and rebuilds the rows there.
+   A solve from rest starts from no slip and x_acc = X, and its first
+   iterate ties every node (b = infinity: psi = k_t/2 e^2): the pressure at
+   rest is 0, and a body whose tangential load is a force (Cattaneo-
+   Mindlin's disc before its shear) is held tangentially by friction alone,
+   which a zero bound would leave singular; the first lag puts the bound of
+   each node at mu p_j, open nodes at 0. */
+#include <petscviewerhdf5.h>
+#include "friction.h"
+#include "edge.h"
+#include "outputwrite.h"
+
+struct _n_Friction {
+  MPI_Comm    comm;
+  PetscMPIInt rank, size;
+  PetscReal   mu, ktScale;
+  PetscInt    slave, nn, nm;      /* the slave side, its nodes, the master's */
+  PetscReal  *s;                  /* [nn] arc position of each slave node (reference) */
+  PetscInt   *order;              /* [nn] the slave's nodes sorted by arc position */
+  PetscReal   sAxis;              /* axisymmetric: the arc position of the node on the axis, where the stick zone's radius starts (else -1) */
+  PetscReal  *A;                  /* [nn] int_S W_j dS */
+  PetscReal  *tau;                /* [nn][2] unit tangent along the arc at the lag */
+  PetscReal  *bound;              /* [nn] mu p_j at the lag */
+  PetscInt   *rowStart;           /* [nn + 1] b_j: entries rowStart[j] .. rowStart[j + 1] */
+  PetscInt   *eside, *enode;      /* [nent] the entry's surface and node */
+  PetscReal  *ecoef;              /* [nent] its coefficient */
+  PetscInt    nent, nentMax;
+  PetscReal  *xacc[2];            /* [nn][2] each surface's coordinates at the accepted state */
+  PetscReal  *sel, *slip;         /* [nn] accepted: elastic slip, accumulated slip */
+  PetscReal  *boundAcc;           /* [nn] the bound at the accepted state, where a restored increment starts */
+  PetscBool   pending;            /* an increment has converged, its state not yet the one the next starts from */
+  PetscReal  *xaccN[2], *selN, *slipN, *boundN; /* that state (FrictionBegin makes it the accepted one) */
+  PetscReal  *stick, *q, *p;      /* [nn] the last converged increment's stick, shear and pressure */
+  PetscReal   stageC[64];         /* stick half-width at each stage's end */
+  PetscInt    nstage;
+};
+
+static PetscLogEvent FRICTION_EnergyGrad, FRICTION_Hessian, FRICTION_Lag;
+
+PetscErrorCode FrictionCreate(MPI_Comm comm, PetscReal mu, PetscReal ktScale, Friction *fr)
+{
+  Friction f;
+
+  PetscFunctionBeginUser;
+  if (!FRICTION_EnergyGrad) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactFriction", &id));
+    PetscCall(PetscLogEventRegister("FrictionEnergyGrad", id, &FRICTION_EnergyGrad));
+    PetscCall(PetscLogEventRegister("FrictionHessian", id, &FRICTION_Hessian));
+    PetscCall(PetscLogEventRegister("FrictionLag", id, &FRICTION_Lag));
+  }
+  PetscCall(PetscNew(&f));
+  f->comm    = comm;
+  f->mu      = mu;
+  f->ktScale = ktScale;
+  PetscCallMPI(MPI_Comm_rank(comm, &f->rank));
+  PetscCallMPI(MPI_Comm_size(comm, &f->size));
+  *fr = f;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionDestroy(Friction *fr)
+{
+  Friction f = *fr;
+
+  PetscFunctionBeginUser;
+  if (!f) PetscFunctionReturn(0);
+  PetscCall(PetscFree5(f->s, f->A, f->tau, f->bound, f->rowStart));
+  PetscCall(PetscFree(f->order));
+  PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
+  PetscCall(PetscFree4(f->xacc[0], f->xacc[1], f->xaccN[0], f->xaccN[1]));
+  PetscCall(PetscFree6(f->sel, f->slip, f->stick, f->q, f->p, f->boundAcc));
+  PetscCall(PetscFree3(f->selN, f->slipN, f->boundN));
+  PetscCall(PetscFree(*fr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt slave)
+{
+  const ContactSurface *Ss = &S[slave];
+
+  PetscFunctionBeginUser;
+  f->slave = slave;
+  f->nn    = Ss->nn;
+  f->sAxis = -1.0;
+  f->nm    = S[1 - slave].nn;
+  PetscCall(PetscCalloc5(f->nn, &f->s, f->nn, &f->A, 2 * f->nn, &f->tau, f->nn, &f->bound, f->nn + 1, &f->rowStart));
+  PetscCall(PetscMalloc1(f->nn, &f->order));
+  PetscCall(PetscMalloc4(2 * S[0].nn, &f->xacc[0], 2 * S[1].nn, &f->xacc[1], 2 * S[0].nn, &f->xaccN[0], 2 * S[1].nn, &f->xaccN[1]));
+  PetscCall(PetscCalloc6(f->nn, &f->sel, f->nn, &f->slip, f->nn, &f->stick, f->nn, &f->q, f->nn, &f->p, f->nn, &f->boundAcc));
+  PetscCall(PetscCalloc3(f->nn, &f->selN, f->nn, &f->slipN, f->nn, &f->boundN));
+  for (PetscInt e = 0; e < Ss->ne; ++e) {
+    const PetscInt *en = &Ss->enodes[3 * e];
+    f->s[en[0]]        = Ss->edir[e] > 0 ? Ss->s0[e] : Ss->s0[e] + Ss->elen[e];
+    f->s[en[1]]        = Ss->edir[e] > 0 ? Ss->s0[e] + Ss->elen[e] : Ss->s0[e];
+    PetscCall(ContactSurfaceArc(Ss, e, 0.0, &f->s[en[2]]));
+  }
+  for (PetscInt j = 0; j < f->nn && Ss->axisym; ++j)
+    if (PetscAbsReal(Ss->X[2 * j]) <= 1e-8 * ContactSurfaceLength(Ss)) f->sAxis = f->s[j];
+  {
+    PetscReal *key;
+    PetscCall(PetscMalloc1(f->nn, &key));
+    PetscCall(PetscArraycpy(key, f->s, f->nn));
+    for (PetscInt j = 0; j < f->nn; ++j) f->order[j] = j;
+    PetscCall(PetscSortRealWithArrayInt(f->nn, key, f->order));
+    PetscCall(PetscFree(key));
+  }
+  PetscCall(FrictionReset(f, S));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionReset(Friction f, const ContactSurface S[2])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscArraycpy(f->xacc[k], S[k].X, 2 * S[k].nn));
+  PetscCall(PetscArrayzero(f->sel, f->nn));
+  PetscCall(PetscArrayzero(f->slip, f->nn));
+  PetscCall(PetscArrayzero(f->stick, f->nn));
+  PetscCall(PetscArrayzero(f->q, f->nn));
+  PetscCall(PetscArrayzero(f->p, f->nn));
+  for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY; /* tied: see above */
+  PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
+  f->nent    = 0;
+  f->nstage  = 0;
+  f->pending = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionBegin(Friction f)
+{
+  PetscFunctionBeginUser;
+  if (!f->pending) PetscFunctionReturn(0);
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscArraycpy(f->xacc[k], f->xaccN[k], 2 * (k == f->slave ? f->nn : f->nm)));
+  PetscCall(PetscArraycpy(f->sel, f->selN, f->nn));
+  PetscCall(PetscArraycpy(f->slip, f->slipN, f->nn));
+  PetscCall(PetscArraycpy(f->boundAcc, f->boundN, f->nn));
+  f->pending = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionRestore(Friction f)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscArraycpy(f->bound, f->boundAcc, f->nn));
+  PetscFunctionReturn(0);
+}
+
+/* Unit tangents along the arc at the slave's nodes, current configuration
+   (the edges' tangents averaged at a shared node). */
+static void FrictionTangents(Friction f, const ContactSurface *S)
+{
+  const PetscReal xi[3] = {-1.0, 1.0, 0.0};
+
+  for (PetscInt k = 0; k < 2 * f->nn; ++k) f->tau[k] = 0.0;
+  for (PetscInt e = 0; e < S->ne; ++e)
+    for (PetscInt i = 0; i < 3; ++i) {
+      const PetscInt j = S->enodes[3 * e + i];
+      PetscReal      x[2], t[2], l;
+      EdgeEval(S->x, &S->enodes[3 * e], xi[i], x, t);
+      l = S->edir[e] / PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      f->tau[2 * j] += t[0] * l;
+      f->tau[2 * j + 1] += t[1] * l;
+    }
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    const PetscReal l = PetscSqrtReal(f->tau[2 * j] * f->tau[2 * j] + f->tau[2 * j + 1] * f->tau[2 * j + 1]);
+    if (l > 0) {
+      f->tau[2 * j] /= l;
+      f->tau[2 * j + 1] /= l;
+    }
+  }
+}
+
+/* The rows b_j from this rank's points, gathered on every rank, sorted by
+   node and merged: entry (j, surface, node, coefficient). */
+static PetscErrorCode FrictionBuildRows(Friction f, const ContactSurface S[2], PetscInt np, const FrictionPoint pts[], const PetscReal cover[])
+{
+  const ContactSurface *Ss = &S[f->slave], *M = &S[1 - f->slave];
+  const PetscInt        stride = 2 * PetscMax(f->nn, f->nm) + 2;
+  PetscReal            *loc, *all;
+  PetscInt              nloc = 0, nall = 0, *key, *perm;
+  PetscMPIInt          *counts, *displs, n4;
+
+  PetscFunctionBeginUser;
+  PetscCheck((PetscReal)f->nn * stride < (PetscReal)PETSC_MAX_INT, f->comm, PETSC_ERR_SUP, "friction: %" PetscInt_FMT " slave nodes against %" PetscInt_FMT " master nodes overflow the rows' sort keys (PetscInt of %d bytes)", f->nn, f->nm, (int)sizeof(PetscInt));
+  PetscCall(PetscMalloc1(4 * 30 * (size_t)np + 1, &loc));
+  for (PetscInt k = 0; k < np; ++k) {
+    const FrictionPoint *P  = &pts[k];
+    const PetscInt      *sn = &Ss->enodes[3 * P->se], *mn;
+    if (P->me < 0) continue;
+    mn = &M->mnodes[7 * P->me];
+    for (PetscInt i = 0; i < 3; ++i) {
+      const PetscInt  j = sn[i];
+      const PetscReal w = cover[j] > 0 ? P->wt * P->W[i] / cover[j] : 0.0;
+      if (w == 0) continue;
+      for (PetscInt l = 0; l < 3; ++l) {
+        PetscReal *r = &loc[4 * nloc++];
+        r[0] = j, r[1] = f->slave, r[2] = sn[l], r[3] = w * P->N[l];
+      }
+      for (PetscInt l = 0; l < 7; ++l) {
+        PetscReal *r;
+        if (P->M7[l] == 0) continue;
+        r    = &loc[4 * nloc++];
+        r[0] = j, r[1] = 1 - f->slave, r[2] = mn[l], r[3] = -w * P->M7[l];
+      }
+    }
+  }
+  PetscCall(PetscMalloc2(f->size, &counts, f->size + 1, &displs));
+  PetscCall(PetscMPIIntCast(4 * nloc, &n4));
+  PetscCallMPI(MPI_Allgather(&n4, 1, MPI_INT, counts, 1, MPI_INT, f->comm));
+  displs[0] = 0;
+  for (PetscMPIInt r = 0; r < f->size; ++r) displs[r + 1] = displs[r] + counts[r];
+  nall = displs[f->size] / 4;
+  PetscCall(PetscMalloc3(4 * nall + 1, &all, nall + 1, &key, nall + 1, &perm));
+  PetscCallMPI(MPI_Allgatherv(loc, n4, MPIU_REAL, all, counts, displs, MPIU_REAL, f->comm));
+  for (PetscInt k = 0; k < nall; ++k) {
+    key[k]  = (PetscInt)all[4 * k] * stride + (PetscInt)all[4 * k + 1] * (stride / 2) + (PetscInt)all[4 * k + 2];
+    perm[k] = k;
+  }
+  PetscCall(PetscSortIntWithArray(nall, key, perm));
+  if (nall > f->nentMax) {
+    PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
+    f->nentMax = nall;
+    PetscCall(PetscMalloc3(nall, &f->eside, nall, &f->enode, nall, &f->ecoef));
+  }
+  PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
+  f->nent = 0;
+  for (PetscInt k = 0; k < nall; ++k) {
+    const PetscReal *r = &all[4 * perm[k]];
+    if (f->nent && k && key[k] == key[k - 1]) {
+      f->ecoef[f->nent - 1] += r[3];
+      continue;
+    }
+    f->eside[f->nent] = (PetscInt)r[1];
+    f->enode[f->nent] = (PetscInt)r[2];
+    f->ecoef[f->nent] = r[3];
+    f->nent++;
+    f->rowStart[(PetscInt)r[0] + 1]++;
+  }
+  for (PetscInt j = 0; j < f->nn; ++j) f->rowStart[j + 1] += f->rowStart[j];
+  PetscCall(PetscFree3(all, key, perm));
+  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree(loc));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionLag(Friction f, const ContactSurface S[2], PetscInt np, const FrictionPoint pts[], const PetscReal A[], const PetscReal cover[], const PetscReal p[], PetscReal *change)
+{
+  PetscReal dmax = 0.0, bmax = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(FRICTION_Lag, 0, 0, 0, 0));
+  FrictionTangents(f, &S[f->slave]);
+  PetscCall(FrictionBuildRows(f, S, np, pts, cover));
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    const PetscReal b = p ? f->mu * p[j] : f->bound[j];
+    dmax              = PetscIsInfReal(f->bound[j]) ? PETSC_INFINITY : PetscMax(dmax, PetscAbsReal(b - f->bound[j]));
+    bmax              = PetscMax(bmax, b);
+    f->bound[j]       = b;
+    f->A[j]           = A[j];
+  }
+  *change = bmax > 0 ? dmax / bmax : 0.0;
+  PetscCall(PetscLogEventEnd(FRICTION_Lag, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The trial elastic slip e_j at the surfaces' current coordinates. */
+static PetscReal FrictionTrial(Friction f, const ContactSurface S[2], PetscInt j)
+{
+  PetscReal d[2] = {0.0, 0.0};
+
+  for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k) {
+    const PetscInt   s = f->eside[k], v = f->enode[k];
+    const PetscReal *x = S[s].x, *xa = f->xacc[s];
+    d[0] += f->ecoef[k] * (x[2 * v] - xa[2 * v]);
+    d[1] += f->ecoef[k] * (x[2 * v + 1] - xa[2 * v + 1]);
+  }
+  return f->sel[j] + f->tau[2 * j] * d[0] + f->tau[2 * j + 1] * d[1];
+}
+
+/* psi(e), q = psi'(e), psi''(e) for the bound b and the tangential penalty kt. */
+static inline void FrictionPotential(PetscReal e, PetscReal b, PetscReal kt, PetscReal *psi, PetscReal *q, PetscReal *h)
+{
+  if (b <= 0) {
+    *psi = *q = *h = 0.0;
+  } else if (kt * PetscAbsReal(e) <= b) {
+    *psi = 0.5 * kt * e * e;
+    *q   = kt * e;
+    *h   = kt;
+  } else {
+    *psi = b * PetscAbsReal(e) - 0.5 * b * b / kt;
+    *q   = e > 0 ? b : -b;
+    *h   = 0.0;
+  }
+}
+
+static inline PetscBool FrictionMine(Friction f, PetscInt j)
+{
+  return (PetscBool)(j % f->size == f->rank);
+}
+
+PetscErrorCode FrictionAddEnergyGradient(Friction f, ContactSurface S[2], PetscReal kp, PetscReal *energy)
+{
+  const PetscReal kt = f->ktScale * kp;
+  PetscReal       E  = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(FRICTION_EnergyGrad, 0, 0, 0, 0));
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    PetscReal psi, q, h;
+    if (!FrictionMine(f, j) || f->bound[j] <= 0) continue;
+    FrictionPotential(FrictionTrial(f, S, j), f->bound[j], kt, &psi, &q, &h);
+    E += f->A[j] * psi;
+    if (q == 0) continue;
+    for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k) {
+      const PetscReal c = f->A[j] * q * f->ecoef[k];
+      PetscReal      *g = S[f->eside[k]].g;
+      g[2 * f->enode[k]] += c * f->tau[2 * j];
+      g[2 * f->enode[k] + 1] += c * f->tau[2 * j + 1];
+    }
+  }
+  *energy += E;
+  PetscCall(PetscLogEventEnd(FRICTION_EnergyGrad, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionAddHessian(Friction f, const ContactTerm *b, PetscReal kp, Mat H)
+{
+  const PetscReal kt = f->ktScale * kp;
+  PetscInt        nmax = 0, *idx;
+  PetscReal      *val;
+  PetscScalar    *K;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(FRICTION_Hessian, 0, 0, 0, 0));
+  for (PetscInt j = 0; j < f->nn; ++j) nmax = PetscMax(nmax, 2 * (f->rowStart[j + 1] - f->rowStart[j]));
+  PetscCall(PetscMalloc3(nmax + 1, &idx, nmax + 1, &val, (size_t)nmax * nmax + 1, &K));
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    PetscReal psi, q, h;
+    PetscInt  n = 0;
+    if (!FrictionMine(f, j) || f->bound[j] <= 0) continue;
+    FrictionPotential(FrictionTrial(f, b->S, j), f->bound[j], kt, &psi, &q, &h);
+    if (h == 0) continue;
+    for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k)
+      for (PetscInt d = 0; d < 2; ++d) {
+        const PetscInt i = b->S[f->eside[k]].big[2 * f->enode[k] + d];
+        if (i < 0) continue;
+        idx[n]   = i;
+        val[n++] = f->ecoef[k] * f->tau[2 * j + d];
+      }
+    for (PetscInt a = 0; a < n; ++a)
+      for (PetscInt c = 0; c < n; ++c) K[a * n + c] = f->A[j] * h * val[a] * val[c];
+    PetscCall(ContactTermAddHessian(b, H, n, idx, K));
+  }
+  PetscCall(PetscFree3(idx, val, K));
+  PetscCall(PetscLogEventEnd(FRICTION_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionAccept(Friction f, const ContactSurface S[2], PetscReal kp, PetscReal load)
+{
+  const PetscReal kt = f->ktScale * kp;
+
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    const PetscReal e = FrictionTrial(f, S, j);
+    PetscReal       psi, q, h;
+    FrictionPotential(e, f->bound[j], kt, &psi, &q, &h);
+    f->q[j]     = q;
+    f->selN[j]  = q / kt;
+    f->slipN[j] = f->slip[j] + e - q / kt;
+    f->stick[j] = f->bound[j] > 0 && kt * PetscAbsReal(e) < f->bound[j] ? 1.0 : 0.0;
+    f->p[j]     = f->bound[j] / f->mu;
+  }
+  PetscCall(PetscArraycpy(f->boundN, f->bound, f->nn));
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscArraycpy(f->xaccN[k], S[k].x, 2 * S[k].nn));
+  f->pending = PETSC_TRUE;
+  if (load > 0.5 && PetscAbsReal(load - PetscFloorReal(load + 0.5)) < 1e-12 && load < 64.5) {
+    const PetscInt k = (PetscInt)PetscFloorReal(load + 0.5);
+    PetscCall(FrictionStickHalfWidth(f, &f->stageC[k - 1]));
+    f->nstage = PetscMax(f->nstage, k);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The end of the stick zone beyond its outermost stuck node i (next inward
+   j, next outward o, in arc order; -1 where none): with r = |q| / (mu p),
+   1 - r vanishes like the square root of the distance to the zone's end
+   (the shear deficit of a stick zone's edge, as at a crack's tip: Mindlin's
+   q gives 1 - r ~ (c/a) sqrt(2 (c - x)/c) / sqrt(1 - c^2/a^2)), so (1 - r)^2
+   is extrapolated linearly from j and i to its zero, kept between i and o;
+   half-way to o where j is missing or the extrapolation does not apply. */
+static PetscReal FrictionStickEnd(Friction f, PetscInt i, PetscInt j, PetscInt o)
+{
+  const PetscReal so = o >= 0 ? f->s[o] : f->s[i];
+
+  if (j >= 0 && f->p[i] > 0 && f->p[j] > 0) {
+    const PetscReal yi = PetscSqr(1.0 - PetscAbsReal(f->q[i]) / (f->mu * f->p[i])), yj = PetscSqr(1.0 - PetscAbsReal(f->q[j]) / (f->mu * f->p[j]));
+    if (yj > yi) {
+      const PetscReal e = f->s[i] + (f->s[i] - f->s[j]) * yi / (yj - yi);
+      return f->s[i] < so ? PetscMin(e, so) : PetscMax(e, so);
+    }
+  }
+  return 0.5 * (f->s[i] + so);
+}
+
+/* Half the arc length of the stick zone: from the first to the last stuck
+   node along the arc, each end carried past its node to where the shear
+   reaches Coulomb's bound (FrictionStickEnd); in r-z, where the surface
+   starts on the axis, the zone's radius, its far end's arc distance from
+   the axis; 0 where no node sticks. */
+PetscErrorCode FrictionStickHalfWidth(Friction f, PetscReal *c)
+{
+  PetscInt lo = -1, hi = -1;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < f->nn; ++k)
+    if (f->stick[f->order[k]] > 0) {
+      if (lo < 0) lo = k;
+      hi = k;
+    }
+  *c = 0.0;
+  if (lo < 0) PetscFunctionReturn(0);
+  {
+    const PetscReal L = FrictionStickEnd(f, f->order[lo], lo < hi ? f->order[lo + 1] : -1, lo > 0 ? f->order[lo - 1] : -1);
+    const PetscReal R = FrictionStickEnd(f, f->order[hi], hi > lo ? f->order[hi - 1] : -1, hi + 1 < f->nn ? f->order[hi + 1] : -1);
+    *c                = f->sAxis >= 0 ? PetscMax(PetscAbsReal(R - f->sAxis), PetscAbsReal(L - f->sAxis)) : 0.5 * (R - L); /* r-z: the zone's radius from the axis */
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionGetStages(Friction f, PetscInt *n, const PetscReal **c)
+{
+  PetscFunctionBeginUser;
+  *n = f->nstage;
+  *c = f->stageC;
+  PetscFunctionReturn(0);
+}
+
+PetscReal FrictionGetCoefficient(Friction f)
+{
+  return f->mu;
+}
+
+/* Rank 0: the nodes with a weight (A[j] > 0, as the report's rows) sorted
+   by arc position, as the report writes its nodal sets. */
+static PetscErrorCode FrictionSortedNodes(Friction f, const PetscReal A[], PetscInt *n, PetscInt **order)
+{
+  PetscReal *key;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(f->nn + 1, order));
+  PetscCall(PetscMalloc1(f->nn + 1, &key));
+  *n = 0;
+  for (PetscInt j = 0; j < f->nn && !f->rank; ++j)
+    if (A[j] > 0) {
+      key[*n]      = f->s[j];
+      (*order)[*n] = j;
+      (*n)++;
+    }
+  PetscCall(PetscSortRealWithArrayInt(*n, key, *order));
+  PetscCall(PetscFree(key));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionWriteHDF5(Friction f, const PetscReal A[], PetscViewer v)
+{
+  const char      *names[3] = {"node_shear", "node_slip", "node_stick"};
+  const PetscReal *val[3]   = {f->q, f->pending ? f->slipN : f->slip, f->stick};
+  PetscInt         n, *order;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionSortedNodes(f, A, &n, &order));
+  for (PetscInt k = 0; k < 3; ++k) {
+    Vec          vec;
+    PetscScalar *a;
+    PetscCall(VecCreate(f->comm, &vec));
+    PetscCall(VecSetSizes(vec, n, PETSC_DETERMINE));
+    PetscCall(VecSetType(vec, VECSTANDARD));
+    PetscCall(PetscObjectSetName((PetscObject)vec, names[k]));
+    PetscCall(VecGetArray(vec, &a));
+    for (PetscInt i = 0; i < n; ++i) a[i] = val[k][order[i]];
+    PetscCall(VecRestoreArray(vec, &a));
+    ContactOutputCall(v, VecView(vec, v));
+    PetscCall(VecDestroy(&vec));
+  }
+  PetscCall(PetscFree(order));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionShearForce(Friction f, PetscReal F[2])
+{
+  PetscFunctionBeginUser;
+  F[0] = F[1] = 0.0;
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    F[0] -= f->A[j] * f->q[j] * f->tau[2 * j];
+    F[1] -= f->A[j] * f->q[j] * f->tau[2 * j + 1];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionCountStuck(Friction f, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded)
+{
+  const PetscReal kt = f->ktScale * kp;
+
+  PetscFunctionBeginUser;
+  *stuck = *loaded = 0;
+  for (PetscInt j = 0; j < f->nn; ++j) {
+    if (!(f->bound[j] > 0) || PetscIsInfReal(f->bound[j])) continue;
+    (*loaded)++;
+    if (kt * PetscAbsReal(FrictionTrial(f, S, j)) < f->bound[j]) (*stuck)++;
+  }
+  PetscFunctionReturn(0);
+}

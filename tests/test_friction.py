@@ -1,0 +1,282 @@
+"""Coulomb friction (src/contact/friction.c on mortar's points, the state
+lifecycle of the energy terms driven by src/solver/staging.c):
+-contact_friction and -contact_<pair>_friction MU.
+
+The reference is Cattaneo-Mindlin on meshes/cattaneo: an elastically similar
+disc on a slab, force-controlled, the normal force P = 4.3 in the first load
+stage, then the tangential force Q = 0.5 mu P with P held (mu = 0.3). A
+central zone |x| < c sticks, c/a = sqrt(1 - Q/(mu P)) = 0.70711; where a node
+slips its shear is mu p, against its slip. The scene's bodies are finite (a
+wide slab, a/R = 0.1) and its contact edges hc = 0.0075 (a/hc = 13)."""
+import h5py
+import numpy as np
+import pytest
+
+from conftest import run_contact
+
+CATTANEO = ["-options_file", "meshes/cattaneo/cattaneo.opts"]
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
+MU, P, Q = 0.3, 4.3, 0.645
+SLAVE = "contact/interface/disc_contact"
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """The cattaneo scene on 1 and 2 ranks."""
+    tmp = tmp_path_factory.mktemp("cattaneo")
+    return {n: run_contact(CATTANEO, tmp, ranks=n, name=f"np{n}") for n in (1, 2)}
+
+
+def nodal(res):
+    """The slave surface's nodal sets: arc position, pressure, shear, slip, stick."""
+    with h5py.File(res.output_path, "r") as f:
+        g = f[SLAVE]
+        return {k: g[f"node_{k}"][:] for k in ("s", "pressure", "shear", "slip", "stick")}
+
+
+def test_cattaneo_stick_zone(runs):
+    """The stick zone's half-width c (the JSON's stick_half_width, from the
+    nodes node_stick marks, each end carried to where the shear reaches mu p)
+    over the contact's half-width a (the report's second-moment half-width,
+    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.71249
+    (+0.77 %; +1.30 % at hc = 0.01 on a slab [0, 1] x [-1, 1], +0.49 % at
+    hc = 0.0025, the error falling with the mesh). Bound 2 % (2.6 times).
+    The first stage's zone, under P alone put on in one increment, is
+    nearly the whole contact (measured 0.0937 against a = 0.0997): the
+    increment from rest ties the surfaces where they do not touch yet, and
+    where they close the edges slip a little."""
+    s = runs[1].summary
+    pair = s["contact"]["interface"]
+    c, a = pair["stick_half_width"], pair["fem_a_moment"]
+    theory = np.sqrt(1 - Q / (MU * P))
+    print(f"c = {c:.6f}, a = {a:.6f}, c/a = {c / a:.5f}, Mindlin {theory:.5f}, {c / a / theory - 1:+.4f}")
+    assert pair["friction"] == MU
+    assert abs(c / a / theory - 1) <= 0.02
+    stages = [st["stick_half_width"]["interface"] for st in s["load_stages"]]
+    print("per stage", stages)
+    assert stages[1] == c
+    assert 0.9 * a <= stages[0] <= a     # measured 0.0937
+
+
+def test_cattaneo_load_steps(tmp_path):
+    """The same in 8 increments a stage (each solved to the final tolerance,
+    as every increment with friction): c/a -0.40 % from Mindlin's, and the
+    shear profile 6.0 % from his in relative L2 over the slave's nodes
+    (weights A_j), his drawn with the computed a (a_moment), p0 = 2 P / (pi a)
+    and c = a sqrt(1 - Q/(mu P)) about the pressure's centre. In 1, 2, 4 and
+    8 increments c/a is +0.77, -1.99, -1.03, -0.40 % off and the profile
+    11.8, 10.3, 7.9, 6.0 %: the normal load put on in fewer increments ties
+    the surfaces before they touch and leaves slip at the zone's edges,
+    which Mindlin's half-spaces do not have. Bounds: c/a 1.2 % (3 times),
+    the profile 10 % (the issue's figure; 1.7 times)."""
+    res = run_contact(CATTANEO + ["-load_steps", "8"], tmp_path)
+    pair = res.summary["contact"]["interface"]
+    surf = pair["surfaces"][0]
+    a, c = surf["a_moment"], pair["stick_half_width"]
+    n = nodal(res)
+    x, w = n["s"] - surf["centre"], None
+    with h5py.File(res.output_path, "r") as f:
+        w = f[SLAVE]["node_weight"][:]
+    p0, cm = 2 * P / (np.pi * a), a * np.sqrt(1 - Q / (MU * P))
+    qm = MU * p0 * (np.sqrt(np.clip(1 - x**2 / a**2, 0, None)) - np.where(np.abs(x) < cm, cm / a * np.sqrt(np.clip(1 - x**2 / cm**2, 0, None)), 0))
+    m = (np.abs(x) < a) | (n["pressure"] > 0)
+    l2 = np.sqrt(np.sum(w[m] * (n["shear"][m] - qm[m])**2) / np.sum(w[m] * qm[m]**2))
+    err = c / a / np.sqrt(1 - Q / (MU * P)) - 1
+    print(f"c/a {err:+.4f}, shear profile L2 {l2:.4f}, iterations {res.summary['iterations']}")
+    assert abs(err) <= 0.012
+    assert l2 <= 0.10
+
+
+@pytest.mark.parametrize("ratio,measured,bound", [(0.2, 0.0064, 0.02), (0.8, -0.0156, 0.04)])
+def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
+    """The same at Q/(mu P) = 0.2 and 0.8: c/a against sqrt(1 - Q/(mu P))
+    = 0.8944 and 0.4472 measured +0.64 % and -1.56 % (a/hc = 13; the small
+    stick zone of 0.8, 6 nodes across its half, is resolved the worse).
+    Bounds 2 % and 4 % (3 and 2.6 times). The report's mindlin_c (Hertz's a,
+    the whole force across the contact zone's chord as Q, 0.6 % above the
+    load: the slab's face tilts under the shear) is 0.62 % and 0.38 % below
+    c (measured); bound 2 %."""
+    q = ratio * MU * P
+    s = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{q!r}"], tmp_path).summary
+    pair = s["contact"]["interface"]
+    err = pair["stick_half_width"] / pair["fem_a_moment"] / np.sqrt(1 - ratio) - 1
+    print(f"Q/(mu P) = {ratio}: c/a {err:+.4f} (measured {measured:+.4f}), mindlin_c {pair['mindlin_c']:.5f}")
+    assert abs(err) <= bound
+    assert abs(pair["mindlin_c"] / pair["stick_half_width"] - 1) <= 0.02
+
+
+def test_mindlin_deresiewicz(tmp_path):
+    """Unloading from Q* = 0.6 mu P to 0 (a third stage): the edges slip
+    backwards and the stick zone of the last increment is Mindlin-
+    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84205
+    (+0.65 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.63822
+    (+0.91 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; about 3
+    times). The slip state is carried from stage to stage: a solve that
+    forgot it would stick everywhere after the unloading's first increment."""
+    qs = 0.6 * MU * P
+    s = run_contact(CATTANEO + ["-load_stages", "3", "-disc_bc_clamp_values", f"{P},0,{P},{qs!r},{P},0",
+                                "-slab_bc_push_values", "0,0,0,0,0,0"], tmp_path).summary
+    a = s["contact"]["interface"]["fem_a_moment"]
+    c = [st["stick_half_width"]["interface"] / a for st in s["load_stages"]]
+    print(f"c/a per stage {c}, theory {np.sqrt(0.4):.5f} and {np.sqrt(0.7):.5f}")
+    assert abs(c[1] / np.sqrt(0.4) - 1) <= 0.025
+    assert abs(c[2] / np.sqrt(0.7) - 1) <= 0.02
+
+
+def test_cattaneo_forces_met(runs):
+    """The controlled group's reactions are P and Q: measured 1.0e-15 of
+    each (the issue's requirement 1e-8 is the bound)."""
+    fc = runs[1].summary["force_control"]
+    for entry, force in zip(fc, (P, Q)):
+        print(entry["component"], entry["reaction"], force, abs(entry["reaction"] - force) / force)
+        assert entry["force"] == force
+        assert abs(entry["reaction"] - force) <= 1e-8 * force
+
+
+def test_coulomb(runs):
+    """At every node |q| <= mu p, p the converged nodal pressure (node_pressure,
+    the mortar's at the solution, not friction's lagged one), to 1e-6 of
+    mu p_max (the issue's figure); where a node in contact slips, |q| = mu p
+    to the same, and q has the sign of its slip. Measured: the largest
+    |q| - mu p is 0 (the fixed point's last solve took no step, so the lagged
+    pressure is the converged one), and every slipping node slipped along +s
+    with q > 0 (Q pushes the disc along +y, which is +s on its arc): the
+    accumulated slip node_slip has the tangential stage's sign here, whose
+    slip is larger than the normal stage's at the zone's edges (in one
+    increment a stage; in 8, the normal stage's slip outweighs it at one
+    edge, and the sign of the last increment's slip is not written)."""
+    n = nodal(runs[1])
+    p, q, stick, slip = n["pressure"], n["shear"], n["stick"], n["slip"]
+    bound = 1e-6 * MU * p.max()
+    excess = np.max(np.abs(q) - MU * p)
+    slipping = (p > 0) & (stick == 0)
+    print(f"max(|q| - mu p) = {excess:.3e}, slipping nodes {slipping.sum()}, stuck {int(stick.sum())}")
+    assert excess <= bound
+    assert slipping.sum() >= 4 and stick.sum() >= 10
+    assert np.max(np.abs(np.abs(q[slipping]) - MU * p[slipping])) <= bound
+    assert np.all(q[slipping] * slip[slipping] > 0)
+    assert np.all(q[p == 0] == 0)
+
+
+def test_ranks_agree(runs):
+    """1 and 2 ranks: the nodal shear agrees to 1.9e-11 of its largest, the
+    stick half-width to 4.8e-13, the stick flags exactly (measured; 4.5e-9
+    and 2.1e-10 with an earlier schedule of the fixed point: each answer is
+    its own solve's to the gradient test, and the sums' order differs);
+    bounds 1.5e-8 and 6e-10, 3 times the larger figures."""
+    a, b = (nodal(runs[n]) for n in (1, 2))
+    ca, cb = (runs[n].summary["contact"]["interface"]["stick_half_width"] for n in (1, 2))
+    dq = np.abs(a["shear"] - b["shear"]).max() / np.abs(a["shear"]).max()
+    print(f"shear {dq:.2e}, stick half-width {abs(ca - cb) / ca:.2e}")
+    assert np.array_equal(a["stick"], b["stick"])
+    assert dq <= 1.5e-8
+    assert abs(ca - cb) <= 6e-10 * ca
+
+
+def test_taylor(tmp_path):
+    """The Taylor test at the cattaneo solution (the energy of the last
+    increment, whose slipping nodes are inside the slip branch, not on the
+    kink k_t |e| = mu p, which a step crosses only above eps = 1/16): the
+    energy's remainder falls at order 2 (measured 1.9999999), the
+    gradient's with the exact Hessian too (measured 2.0000034, the
+    relative remainder 3.84e-6 at the smallest step). Bounds: orders within
+    1e-4 of 2, the smallest remainder 1.2e-5 (3 times)."""
+    t = run_contact(CATTANEO + ["-taylor_test"], tmp_path).summary["taylor"]
+    print(t["gradient_order"], t["hessian_order"], t["hessian_relative_remainder"][-1])
+    assert abs(t["gradient_order"] - 2.0) <= 1e-4
+    assert abs(t["hessian_order"] - 2.0) <= 1e-4
+    assert t["hessian_relative_remainder"][-1] <= 1.2e-5
+
+
+def test_mu_zero_is_frictionless(tmp_path):
+    """-contact_friction 0 is the frictionless run, bit for bit (the term has
+    no friction at all); a friction of 1e-13, which runs the friction's
+    machinery (the first solve with every node tied, then the fixed point)
+    gives the frictionless answer to 5.7e-15 in the energy and the same P
+    (measured); bound 1e-12."""
+    base = run_contact(HERTZ, tmp_path, name="base").summary
+    zero = run_contact(HERTZ + ["-contact_friction", "0"], tmp_path, name="zero").summary
+    tiny = run_contact(HERTZ + ["-contact_friction", "1e-13"], tmp_path, name="tiny").summary
+    for key in ("energy", "contact_force", "iterations", "max_displacement"):
+        assert zero[key] == base[key], key
+    for key in ("energy", "contact_force"):
+        print(key, base[key], tiny[key], abs(tiny[key] - base[key]) / abs(base[key]))
+        assert abs(tiny[key] - base[key]) <= 1e-12 * abs(base[key])
+
+
+@pytest.mark.parametrize("args,needle", [
+    (["-contact_formulation", "gpts", "-contact_friction", "0.2"], "formulation gpts has no friction"),
+    (["-contact_friction", "-0.1"], "option -contact_friction: must be a finite number >= 0"),
+    (["-contact_interface_friction", "nan"], "option -contact_interface_friction: must be a finite number >= 0"),
+    (["-contact_friction", "0.2", "-contact_mortar_slave", "both"], "friction needs one slave surface"),
+    (["-contact_friction", "0.2", "-contact_friction_penalty", "0"], "option -contact_friction_penalty"),
+])
+def test_bad_friction(args, needle, tmp_path):
+    """Friction where it cannot be: one line naming the option and value, status 1, nothing written."""
+    res = run_contact(HERTZ + ["-mesh_size", "0.3"] + args, tmp_path, check=False)
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    print(lines)
+    assert res.returncode == 1
+    assert len(lines) == 1 and lines[0].startswith("contact: error: ") and needle in lines[0]
+    assert not res.output_path.exists()
+
+
+@pytest.mark.parametrize("args,needle", [
+    (["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", "0.3", "-contact_friction", "0.2"],
+     "friction in a mirrored half model is not implemented"),
+    (["-options_file", "meshes/rigid-hertz/rigid-hertz.opts", "-mesh_size", "0.3", "-contact_friction", "0.2"],
+     "friction against a rigid body is not implemented"),
+])
+def test_bad_friction_scene(args, needle, tmp_path):
+    """Friction where the formulation lacks it as yet (a mirrored half model, a rigid body's surface): one line, status 1."""
+    res = run_contact(args, tmp_path, check=False)
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    print(lines)
+    assert res.returncode == 1
+    assert len(lines) == 1 and needle in lines[0]
+    assert not res.output_path.exists()
+
+
+@pytest.mark.parametrize("args,needle", [
+    (["-load_stages", "1", "-disc_bc_clamp_values", "4.3,0.5", "-slab_bc_push_values", "0,0", "-force_control_type", "outer"],
+     "option -force_control_type outer: each trial goes on from the last"),
+])
+def test_bad_friction_cattaneo(args, needle, tmp_path):
+    """Force control's outer type, whose trials go on from one another, with friction: one line, status 1."""
+    res = run_contact(CATTANEO + args, tmp_path, check=False)
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    print(lines)
+    assert res.returncode == 1
+    assert len(lines) == 1 and needle in lines[0]
+
+
+def test_sliding_stops_in_one_line(tmp_path):
+    """A tangential force above mu P (Q/(mu P) = 1.16) has no equilibrium: the
+    disc slides. The solve stops (status 2, nothing written) with one line
+    that says the pair slides, no node of its contact sticking at the last
+    iterate, and names the friction. Without cutbacks and with 60 Newton
+    iterations the stop costs 2 s (with the defaults, 3 cutbacks and 21 s)."""
+    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},1.5", "-load_cutbacks", "0", "-tao_max_it", "60"],
+                      tmp_path, check=False)
+    lines = [l for l in res.stderr.splitlines() if l.strip()]
+    print(lines)
+    assert res.returncode == 2
+    assert len(lines) == 1 and "pair interface slides" in lines[0] and "-contact_interface_friction" in lines[0]
+    assert not res.output_path.exists() and not res.summary_path.exists()
+
+
+def test_axisymmetric_runs(tmp_path):
+    """Friction in r-z (the sphere scene, a ball pressed on a flat of the same
+    material, mu = 0.3): the solve converges, the stick zone is a disc about
+    the axis whose radius c is the JSON's stick_half_width (measured 0.0922
+    against a = 0.1013, the edges slipping a little as the ball flattens),
+    the rings' radial shear has no resultant (written 0, as the pair's force)
+    and no Mindlin figure is given (plane strain's). Bounds: c between 0.8 a
+    and a."""
+    s = run_contact(["-options_file", "meshes/sphere/sphere.opts", "-contact_friction", "0.3"], tmp_path).summary
+    pair = s["contact"]["interface"]
+    c, a = pair["stick_half_width"], pair["fem_a_moment"]
+    print(f"c = {c:.5f}, a = {a:.5f}, shear force {pair['shear_force']}")
+    assert 0.8 * a <= c <= a
+    assert pair["shear_force"][0] == 0
+    assert "mindlin_c" not in pair
