@@ -101,8 +101,8 @@ struct _n_Friction {
   PetscBool   pending;            /* an increment has converged, its state not yet the one the next starts from */
   PetscReal  *xaccN[2], *selN, *slipN, *boundN; /* that state (FrictionBegin makes it the accepted one) */
   PetscReal  *stick, *q, *p;      /* [nn] the last converged increment's stick, shear and pressure */
-  PetscReal   stageC[64];         /* stick half-width at each stage's end */
-  PetscInt    nstage;
+  PetscReal  *stageC;             /* [nstageMax] stick half-width at each stage's end */
+  PetscInt    nstage, nstageMax;
 };
 
 static PetscLogEvent FRICTION_EnergyGrad, FRICTION_Hessian, FRICTION_Lag;
@@ -137,6 +137,7 @@ PetscErrorCode FrictionDestroy(Friction *fr)
   if (!f) PetscFunctionReturn(0);
   PetscCall(PetscFree5(f->s, f->A, f->tau, f->bound, f->rowStart));
   PetscCall(PetscFree(f->order));
+  PetscCall(PetscFree(f->stageC));
   PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
   PetscCall(PetscFree4(f->xacc[0], f->xacc[1], f->xaccN[0], f->xaccN[1]));
   PetscCall(PetscFree6(f->sel, f->slip, f->stick, f->q, f->p, f->boundAcc));
@@ -444,8 +445,13 @@ PetscErrorCode FrictionAccept(Friction f, const ContactSurface S[2], PetscReal k
   PetscCall(PetscArraycpy(f->boundN, f->bound, f->nn));
   for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscArraycpy(f->xaccN[k], S[k].x, 2 * S[k].nn));
   f->pending = PETSC_TRUE;
-  if (load > 0.5 && PetscAbsReal(load - PetscFloorReal(load + 0.5)) < 1e-12 && load < 64.5) {
+  if (load > 0.5 && PetscAbsReal(load - PetscFloorReal(load + 0.5)) < 1e-12) {
     const PetscInt k = (PetscInt)PetscFloorReal(load + 0.5);
+    if (k > f->nstageMax) {
+      const PetscInt n = PetscMax(2 * k, 8);
+      PetscCall(PetscRealloc(sizeof(PetscReal) * (size_t)n, &f->stageC));
+      f->nstageMax = n;
+    }
     PetscCall(FrictionStickHalfWidth(f, &f->stageC[k - 1]));
     f->nstage = PetscMax(f->nstage, k);
   }
