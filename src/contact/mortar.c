@@ -1702,7 +1702,8 @@ static PetscErrorCode MortarFrictionBegin(EnergyTerm t)
    slave's is -q tau_s on itself, the master's the opposite), into t[2]: q
    interpolated linearly node to node along the slave's edge at x's closest
    point, as the pressure (MortarSlavePressureAt), with tau_s the slave's
-   unit tangent along its arc there; 0 where x's closest point is none. */
+   unit tangent along its arc there; 0 where x's closest point is none or
+   lies past an end of the slave surface (as the pressure's). */
 static void MortarSlaveShearAt(const Mortar *m, PetscInt s, const PetscReal q[], const PetscReal x[2], PetscReal t[2])
 {
   const ContactSurface *S = &m->b.S[s];
@@ -1713,7 +1714,12 @@ static void MortarSlaveShearAt(const Mortar *m, PetscInt s, const PetscReal q[],
   t[0] = t[1] = 0.0;
   ContactSearchFindClosest(m->b.search[s], x, &e, &eta);
   if (e < 0) return;
-  en  = &S->enodes[3 * e];
+  en = &S->enodes[3 * e];
+  if (PetscAbsReal(eta) >= 1.0) { /* past an end of the slave surface (not a half model's cut): nothing, as the pressure */
+    const PetscInt v = en[eta > 0 ? 1 : 0];
+    EdgeEval(S->x, en, eta > 0 ? 1.0 : -1.0, xe, te);
+    if (S->endNode[v] && ContactSurfaceCutSide(S, v) == 0 && (eta > 0 ? 1.0 : -1.0) * ((x[0] - xe[0]) * te[0] + (x[1] - xe[1]) * te[1]) > 1e-6 * S->elen[e] * PetscSqrtReal(te[0] * te[0] + te[1] * te[1])) return;
+  }
   eta = PetscMax(-1.0, PetscMin(1.0, eta));
   qe  = eta < 0 ? -eta * q[en[0]] + (1.0 + eta) * q[en[2]] : (1.0 - eta) * q[en[2]] + eta * q[en[1]];
   EdgeEval(S->x, en, eta, xe, te);
