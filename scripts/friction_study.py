@@ -120,7 +120,7 @@ def run(args, tmp, name, h5=False):
     inc = increments(res.stdout)
     if not inc:   # one load, one penalty stage: the TAO line alone
         inc = [dict(load=1.0, iterations=parse_tao_line(res.stdout)["iterations"], solves=res.summary.get("friction_lags", 0) or 1)]
-    return dict(command="bin/contact " + " ".join(args), summary=res.summary, increments=inc, h5=res.h5)
+    return dict(command="bin/contact " + " ".join(list(args) + INFO), summary=res.summary, increments=inc, h5=res.h5)
 
 
 def scene_params(body, hc):
@@ -274,7 +274,7 @@ def its_list(incs):
 def cost_table(rows):
     """The cost table: Newton iterations of each increment with friction and
     without, their largest ratio, the fixed point's solves."""
-    out = ["| increments of | a stage in | iterations per increment: with friction | without | largest ratio | solves per increment (fixed point) | the run's solve time: with / without |",
+    out = ["| run, stage | increments a stage | iterations per increment: with friction | without | largest ratio | solves per increment (fixed point) | the run's solve time: with / without |",
            "|---|---|---|---|---|---|---|"]
     for r in rows:
         fr, nf = r["friction"], r["without"]
