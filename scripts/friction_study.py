@@ -215,8 +215,8 @@ def measure_cost():
                                  without=stage_increments(nf["increments"], stage) if nf else None,
                                  solve=fr["summary"]["time"]["solve"], solve_without=nf["summary"]["time"]["solve"] if nf else None))
         newton = run(CATTANEO, tmp, "newton")
-        for label, args, stage in (("cattaneo, normal stage", CATTANEO + NORMAL + ["-disc_bc_clamp_values", f"{P},0"], 1),
-                                   ("cattaneo, both stages", CATTANEO, None)):
+        lbfgs = [(label, args, 1) for label, _, args, _, _ in COST_CASES[:2]] + [("cattaneo, both stages", CATTANEO, None)]
+        for label, args, stage in lbfgs:
             fr = run(args + ["-tao_type", "lmvm"], tmp, "lf")
             nf = run(args + ["-tao_type", "lmvm", "-contact_interface_friction", "0"], tmp, "ln") if stage else None
             c = fr["summary"]["contact"][PAIR]["stick_half_width"]
