@@ -237,7 +237,7 @@ def pct(x):
 def table(rows):
     """The accuracy table: one row per reference and load, 1 and 8
     increments a stage side by side."""
-    out = ["| case | reference | c/a: 1 increment a stage | 8 increments | shear profile L2 from the reference: 1 / 8 | Newton iterations: 1 / 8 |",
+    out = ["| case | reference | c/a: 1 increment a stage | 8 increments | shear profile L2 from the reference: 1 / 8 | Newton iterations of the run: 1 / 8 |",
            "|---|---|---|---|---|---|"]
     by = {}
     for r in rows:
