@@ -145,8 +145,8 @@ def brief(r):
 
 def measure():
     """The accuracy rows: Cattaneo-Mindlin at each ratio in 1 and 8
-    increments a stage, Mindlin-Deresiewicz's unloading likewise, c/a at
-    three contact edge sizes."""
+    increments a stage, Mindlin-Deresiewicz's unloading likewise, and
+    Q/(mu P) = 0.5 at three contact edge sizes likewise."""
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for ratio in RATIOS:
@@ -161,10 +161,12 @@ def measure():
             rows.append(dict(brief(r), case="deresiewicz", ratio=QSTAR, steps=n,
                              l2=shear_l2(r["h5"], r["summary"], QSTAR, unload=0.0)))
         for hc in HC:
-            args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc), "-slab_geo_params", scene_params("slab", hc)]
-            r = run(args, tmp, "hc", h5=True)
-            rows.append(dict(brief(r), case="refinement", ratio=0.5, steps=1, hc=hc,
-                             l2=shear_l2(r["h5"], r["summary"], 0.5)))
+            for n in STEPS:
+                args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc), "-slab_geo_params", scene_params("slab", hc),
+                                   "-load_steps", str(n)]
+                r = run(args, tmp, "hc", h5=True)
+                rows.append(dict(brief(r), case="refinement", ratio=0.5, steps=n, hc=hc,
+                                 l2=shear_l2(r["h5"], r["summary"], 0.5)))
     return rows
 
 
@@ -258,12 +260,13 @@ def table(rows):
                        f"at Q*: {refs:.4f} | " + " | ".join(cells)
                        + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
     ref = math.sqrt(0.5)
-    fine = sorted((r for r in rows if r["case"] == "refinement"), key=lambda r: -r["hc"])
-    cells = [f"hc = {r['hc']:g} (a/hc = {r['a'] / r['hc']:.0f}, {r['dofs']:,} dofs): {r['c_over_a'][-1]:.4f} "
-             f"({pct(r['c_over_a'][-1] / ref - 1)})" for r in fine]
-    out.append(f"| Cattaneo-Mindlin, Q/(mu P) = 0.5, under refinement (the scene: hc = 0.0075) | {ref:.4f} | "
-               + "; ".join(cells) + " | | " + " / ".join(f"{100 * r['l2']:.1f} %" for r in fine) + " (1 increment) | "
-               + " / ".join(str(r["iterations"]) for r in fine) + " (1 increment) |")
+    fine = {n: sorted((r for r in rows if r["case"] == "refinement" and r["steps"] == n), key=lambda r: -r["hc"]) for n in STEPS}
+    cells = [", ".join(f"{r['c_over_a'][-1]:.4f} ({pct(r['c_over_a'][-1] / ref - 1)})" for r in fine[n]) for n in STEPS]
+    out.append(f"| Cattaneo-Mindlin, Q/(mu P) = 0.5, contact edges hc = "
+               + ", ".join(f"{r['hc']:g} (a/hc = {r['a'] / r['hc']:.0f}, {r['dofs']:,} dofs)" for r in fine[1])
+               + f" | {ref:.4f} | " + " | ".join(cells) + " | "
+               + " / ".join(", ".join(f"{100 * r['l2']:.1f} %" for r in fine[n]) for n in STEPS) + " | "
+               + " / ".join(", ".join(str(r["iterations"]) for r in fine[n]) for n in STEPS) + " |")
     return "\n".join(out) + "\n"
 
 
