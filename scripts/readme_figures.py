@@ -12,6 +12,8 @@ quoting them, generated from committed results, and the README's picture.
     python3 scripts/readme_figures.py --measure model [--update]
     python3 scripts/readme_figures.py --measure squeeze [--update]
     python3 scripts/readme_figures.py --measure squeeze-newton [--update]
+    python3 scripts/readme_figures.py --measure friction [--update]
+    python3 scripts/readme_figures.py --measure friction-cost [--update]
     python3 scripts/readme_figures.py --measure squeeze-picture
                                                    # redraw docs/img/rubber-squeeze.png
     python3 scripts/readme_figures.py --measure picture
@@ -59,6 +61,13 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   --measure squeeze-newton re-measures the Newton rows of the cost alone);
   the phrase squeeze-cost-ratio: the neo-Hookean solve over the linear one
   at small strain, from the same file;
+- friction, friction-cost: bench/friction/results.json (written by --measure
+  friction: friction_study.py's Cattaneo-Mindlin and Mindlin-Deresiewicz runs
+  on meshes/cattaneo, in 1 and 8 increments a stage, and c/a under
+  refinement, about a minute; --measure friction-cost: Newton's iterations
+  per increment with friction and without, and L-BFGS with friction, about
+  a minute); the phrase friction-cost-ratio: the range of those ratios, the
+  increments above 3, and L-BFGS's iterations and stick zone, from the same file;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -626,6 +635,35 @@ def render_squeeze_cost_ratio():
             f"{squeeze_study.cost_ratio(rows, 'rubber-squeeze', full):.2f} times")
 
 
+def measure_friction():
+    """Friction against Cattaneo-Mindlin and Mindlin-Deresiewicz (friction_study.measure), its cost kept."""
+    import friction_study
+    old = load("friction") if os.path.exists(os.path.join(ROOT, "bench", "friction", "results.json")) else {}
+    save("friction", dict(old, accuracy=friction_study.measure()))
+
+
+def measure_friction_cost():
+    """Friction's cost in iterations per increment (friction_study.measure_cost), its accuracy rows kept."""
+    import friction_study
+    old = load("friction") if os.path.exists(os.path.join(ROOT, "bench", "friction", "results.json")) else {}
+    save("friction", dict(old, cost=friction_study.measure_cost()))
+
+
+def render_friction():
+    import friction_study
+    return friction_study.table(load("friction")["accuracy"])
+
+
+def render_friction_cost():
+    import friction_study
+    return friction_study.cost_table(load("friction")["cost"])
+
+
+def render_friction_cost_ratio():
+    import friction_study
+    return friction_study.cost_phrase(load("friction")["cost"])
+
+
 def render_rigid_adequacy():
     import rigid_study
     return rigid_study.adequacy_table(load("rigid")["adequacy"])
@@ -927,7 +965,8 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "speed": render_speed, "accuracy": render_accuracy, "oscillation": render_oscillation,
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty, "claims": render_claims, "model": render_model,
-          "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost}
+          "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost,
+          "friction": render_friction, "friction-cost": render_friction_cost}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
            "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
@@ -938,7 +977,7 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
-           "squeeze-cost-ratio": render_squeeze_cost_ratio}
+           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio}
 
 
 def kind(name):
@@ -1035,7 +1074,7 @@ def main():
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
     ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model",
-                                          "squeeze", "squeeze-newton", "squeeze-picture"], action="append",
+                                          "squeeze", "squeeze-newton", "squeeze-picture", "friction", "friction-cost"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -1062,6 +1101,10 @@ def main():
         measure_squeeze()
     if "squeeze-picture" in args.measure:
         measure_squeeze_picture()
+    if "friction" in args.measure:
+        measure_friction()
+    if "friction-cost" in args.measure:
+        measure_friction_cost()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:

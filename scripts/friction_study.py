@@ -1,0 +1,322 @@
+"""Coulomb friction (src/contact/friction.c) against its analytical references
+on meshes/cattaneo, and its cost in Newton iterations against the same
+increments without friction. Used by readme_figures.py --measure friction
+and --measure friction-cost, which write bench/friction/results.json and the
+tables of README.md (friction) and docs/scenes.md (friction-cost) from it.
+
+The references, plane strain, elastically similar bodies (docs/scenes.md#friction):
+Cattaneo-Mindlin under the normal force P then the tangential Q < mu P,
+c/a = sqrt(1 - Q/(mu P)) and the shear
+
+    q_C(x; c) = mu p0 [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)]   (the second term for |x| < c only);
+
+Mindlin-Deresiewicz, Q brought back from Q* to Q: c'/a = sqrt(1 - (Q* - Q)/(2 mu P)),
+q = q_C(x; c) - 2 q_C(x; c'). Each curve is drawn with the computed a (the
+pressure's second moment, a_moment), p0 = 2 P / (pi a) and x from the
+pressure's centre; the shear profile's distance from it is relative L2 over
+the slave's nodes (weights A_j, node_weight) within |x| < a or in contact:
+shear_l2, the measure tests/test_friction.py's load-steps test states.
+
+Iterations per increment are read from the program's -info lines of its
+staging (a load increment's penalty stages summed, its friction's fixed
+point solves counted); every run here is given -load_path, so that each
+increment stops at the final tolerance with friction or without (with
+friction every increment does anyway).
+
+    python3 scripts/friction_study.py [--cost]    # measures and prints the table(s)
+"""
+import math
+import os
+import re
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+
+SCENE = "meshes/cattaneo/cattaneo.opts"
+CATTANEO = ["-options_file", SCENE]
+HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
+SPHERE = ["-options_file", "meshes/sphere/sphere.opts"]
+MU, P = 0.3, 4.3           # the scene's friction and normal force
+PAIR = "interface"
+SLAVE = "contact/interface/disc_contact"
+RATIOS = (0.2, 0.5, 0.8)   # Q / (mu P)
+QSTAR = 0.6                # Mindlin-Deresiewicz: Q* / (mu P), then back to 0
+STEPS = (1, 8)             # -load_steps
+HC = (0.015, 0.0075, 0.00375)   # the contact edges' size of the refinement rows (the scene's is the middle one)
+HERTZ_SLIDE = 0.08         # the hertz scene's block moved along the contact in a second stage (Q/(mu P) about 0.4)
+INFO = ["-info", ":tao", "-load_path"]
+STAGE_LINE = re.compile(r"stage \d+: load (\S+), penalty factor (\S+): (\S+) after (\d+) iterations")
+FIXED_POINT = re.compile(r"fixed point (\d+): ")
+
+
+def cattaneo_shear(x, a, p0, c):
+    """Cattaneo-Mindlin's shear q_C(x; c) (0 outside |x| < a)."""
+    outer = np.sqrt(np.clip(1 - x**2 / a**2, 0, None))
+    inner = np.where(np.abs(x) < c, c / a * np.sqrt(np.clip(1 - x**2 / c**2, 0, None)), 0)
+    return MU * p0 * (outer - inner)
+
+
+def reference_shear(x, a, p0, ratio, unload=None):
+    """Mindlin's shear at Q/(mu P) = ratio, or, with unload = Q/(mu P) at the
+    end, Mindlin-Deresiewicz's after Q was brought back from ratio to it."""
+    q = cattaneo_shear(x, a, p0, a * math.sqrt(1 - ratio))
+    if unload is None:
+        return q
+    return q - 2 * cattaneo_shear(x, a, p0, a * math.sqrt(1 - (ratio - unload) / 2))
+
+
+def shear_l2(h5, summary, ratio, unload=None, force=P):
+    """The slave's nodal shear's relative L2 distance from the reference
+    curve (reference_shear), drawn with the computed a (a_moment), p0 =
+    2 P / (pi a) and x from the pressure's centre, over the nodes within
+    |x| < a or in contact, weights A_j."""
+    import h5py
+    surf = summary["contact"][PAIR]["surfaces"][0]
+    a = surf["a_moment"]
+    with h5py.File(h5, "r") as f:
+        g = f[SLAVE]
+        s, p, q, w = (g[f"node_{k}"][:] for k in ("s", "pressure", "shear", "weight"))
+    x = s - surf["centre"]
+    qm = reference_shear(x, a, 2 * force / (np.pi * a), ratio, unload)
+    m = (np.abs(x) < a) | (p > 0)
+    return float(np.sqrt(np.sum(w[m] * (q[m] - qm[m])**2) / np.sum(w[m] * qm[m]**2)))
+
+
+def increments(text):
+    """The increments of a run from its -info lines: [{load, iterations,
+    solves}], a load's penalty stages summed, solves the friction's fixed
+    point solves of its last stage (1 without friction)."""
+    out, solves = [], 0
+    for line in (text or "").splitlines():
+        m = FIXED_POINT.search(line)
+        if m:
+            solves = int(m.group(1))
+            continue
+        m = STAGE_LINE.search(line)
+        if not m:
+            continue
+        load, its = float(m.group(1)), int(m.group(4))
+        if out and out[-1]["load"] == load:
+            out[-1]["iterations"] += its
+        else:
+            out.append(dict(load=load, iterations=its, solves=1))
+        if solves:
+            out[-1]["solves"] = solves
+        solves = 0
+    return out
+
+
+def run(args, tmp, name, h5=False):
+    """One run with the staging's -info lines and every increment at the
+    final tolerance; its summary, increments, HDF5 path and command."""
+    from contactrun import run_case, parse_tao_line
+    res = run_case(list(args) + INFO, tmp, name, h5=h5)
+    if res.returncode != 0:
+        raise SystemExit(f"{' '.join(res.cmd)} failed:\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
+    inc = increments(res.stdout)
+    if not inc:   # one load, one penalty stage: the TAO line alone
+        inc = [dict(load=1.0, iterations=parse_tao_line(res.stdout)["iterations"], solves=res.summary.get("friction_lags", 0) or 1)]
+    return dict(command="bin/contact " + " ".join(list(args) + INFO), summary=res.summary, increments=inc, h5=res.h5)
+
+
+def scene_params(body, hc):
+    """The scene's -<body>_geo_params with its hc replaced."""
+    with open(os.path.join(ROOT, SCENE)) as f:
+        line = next(l for l in f if l.startswith(f"-{body}_geo_params "))
+    return re.sub(r"hc=[0-9.e-]+", f"hc={hc!r}", line.split(None, 1)[1].strip())
+
+
+def stage_c(s):
+    """Each load stage's stick half-width over the last stage's a_moment."""
+    a = s["contact"][PAIR]["fem_a_moment"]
+    return [st["stick_half_width"][PAIR] / a for st in s["load_stages"]]
+
+
+def brief(r):
+    """The figures a row keeps of a run."""
+    s = r["summary"]
+    return dict(command=r["command"], dofs=s["dofs"], iterations=s["iterations"], solve=s["time"]["solve"],
+                increments=r["increments"], c_over_a=stage_c(s), a=s["contact"][PAIR]["fem_a_moment"])
+
+
+def measure():
+    """The accuracy rows: Cattaneo-Mindlin at each ratio in 1 and 8
+    increments a stage, Mindlin-Deresiewicz's unloading likewise, and
+    Q/(mu P) = 0.5 at three contact edge sizes likewise."""
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for ratio in RATIOS:
+            for n in STEPS:
+                args = CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{ratio * MU * P!r}", "-load_steps", str(n)]
+                r = run(args, tmp, "cm", h5=True)
+                rows.append(dict(brief(r), case="cattaneo", ratio=ratio, steps=n, l2=shear_l2(r["h5"], r["summary"], ratio)))
+        for n in STEPS:
+            args = CATTANEO + ["-load_stages", "3", "-disc_bc_clamp_values", f"{P},0,{P},{QSTAR * MU * P!r},{P},0",
+                               "-slab_bc_push_values", "0,0,0,0,0,0", "-load_steps", str(n)]
+            r = run(args, tmp, "md", h5=True)
+            rows.append(dict(brief(r), case="deresiewicz", ratio=QSTAR, steps=n,
+                             l2=shear_l2(r["h5"], r["summary"], QSTAR, unload=0.0)))
+        for hc in HC:
+            for n in STEPS:
+                args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc), "-slab_geo_params", scene_params("slab", hc),
+                                   "-load_steps", str(n)]
+                r = run(args, tmp, "hc", h5=True)
+                rows.append(dict(brief(r), case="refinement", ratio=0.5, steps=n, hc=hc,
+                                 l2=shear_l2(r["h5"], r["summary"], 0.5)))
+    return rows
+
+
+NORMAL = ["-load_stages", "1", "-slab_bc_push_values", "0,0"]
+# each case: its label, the short name the README's sentence uses (None: left
+# out of it: without friction the disc's y is held by no contact, and its
+# increments take 10 to 480 iterations), the run with friction, the
+# frictionless one's arguments added (None: none), the load stage measured;
+# a case without arguments is the next stage of the case above it, the same runs
+COST_CASES = [
+    ("cattaneo, normal stage (P; the disc's y force-controlled, 0, as in the scene)", None,
+     CATTANEO + NORMAL + ["-disc_bc_clamp_values", f"{P},0"], ["-contact_interface_friction", "0"], 1),
+    ("cattaneo, normal stage (P; the disc's y held, u_y = 0)", "cattaneo's normal stage",
+     CATTANEO + NORMAL + ["-disc_bc_clamp_control", "force,displacement", "-disc_bc_clamp_values", f"{P},0"],
+     ["-contact_interface_friction", "0"], 1),
+    ("cattaneo, tangential stage (Q = 0.5 mu P)", None, CATTANEO, None, 2),
+    ("hertz (h = 0.1, mu = 0.3), normal stage (push 0.15)", "hertz's normal stage",
+     HERTZ + ["-contact_friction", "0.3", "-load_stages", "2", "-block_bc_push_values", f"-0.15,0,-0.15,{HERTZ_SLIDE!r}",
+              "-indenter_bc_clamp_values", "0,0,0,0"], ["-contact_friction", "0"], 1),
+    ("hertz (h = 0.1, mu = 0.3), tangential stage (the block moved 0.08 along the contact)", "hertz's tangential stage",
+     None, None, 2),
+    ("sphere (r-z, mu = 0.3), normal", "the sphere (r-z)", SPHERE + ["-contact_friction", "0.3"], ["-contact_friction", "0"], 1),
+]
+
+
+def stage_increments(incs, stage):
+    """The increments of load stage stage (loads in (stage - 1, stage])."""
+    return [i for i in incs if stage - 1 < i["load"] <= stage + 1e-12]
+
+
+def measure_cost():
+    """Newton iterations per increment with friction and without, in 1 and 8
+    increments a stage; L-BFGS with friction on the cattaneo scene."""
+    rows, runs = [], {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, short, args, frictionless, stage in COST_CASES:
+            for n in STEPS:
+                if args is None:   # the stage of the case above, same runs
+                    fr, nf = runs[n]
+                else:
+                    steps = ["-load_steps", str(n)]
+                    fr = run(args + steps, tmp, "f")
+                    nf = run(args + steps + frictionless, tmp, "n") if frictionless else None
+                    runs[n] = (fr, nf)
+                rows.append(dict(case=label, short=short, steps=n, command=fr["command"],
+                                 frictionless=nf["command"] if nf else None,
+                                 friction=stage_increments(fr["increments"], stage),
+                                 without=stage_increments(nf["increments"], stage) if nf else None,
+                                 solve=fr["summary"]["time"]["solve"], solve_without=nf["summary"]["time"]["solve"] if nf else None))
+        newton = run(CATTANEO, tmp, "newton")
+        lbfgs = [(label, args, 1) for label, _, args, _, _ in COST_CASES[:2]] + [("cattaneo, both stages", CATTANEO, None)]
+        for label, args, stage in lbfgs:
+            fr = run(args + ["-tao_type", "lmvm"], tmp, "lf")
+            nf = run(args + ["-tao_type", "lmvm", "-contact_interface_friction", "0"], tmp, "ln") if stage else None
+            c = fr["summary"]["contact"][PAIR]["stick_half_width"]
+            cn = newton["summary"]["contact"][PAIR]["stick_half_width"] if stage is None else None
+            rows.append(dict(case=f"L-BFGS (-tao_type lmvm): {label}", steps=1, command=fr["command"],
+                             frictionless=nf["command"] if nf else None,
+                             friction=fr["increments"], without=nf["increments"] if nf else None,
+                             newton=newton["increments"] if stage is None else None,
+                             solve=fr["summary"]["time"]["solve"], solve_without=nf["summary"]["time"]["solve"] if nf else None,
+                             stick=c, stick_newton=cn))
+    return rows
+
+
+def pct(x):
+    return f"{100 * x:+.2f} %"
+
+
+def table(rows):
+    """The accuracy table: one row per reference and load, 1 and 8
+    increments a stage side by side."""
+    out = ["| case | reference | c/a: 1 increment a stage | 8 increments | shear profile L2 from the reference: 1 / 8 | Newton iterations of the run: 1 / 8 |",
+           "|---|---|---|---|---|---|"]
+    by = {}
+    for r in rows:
+        if r["case"] != "refinement":
+            by.setdefault((r["case"], r["ratio"]), {})[r["steps"]] = r
+    for (case, ratio), d in by.items():
+        one, eight = d[1], d[8]
+        if case == "cattaneo":
+            ref = math.sqrt(1 - ratio)
+            cells = [f"{x['c_over_a'][-1]:.4f} ({pct(x['c_over_a'][-1] / ref - 1)})" for x in (one, eight)]
+            out.append(f"| Cattaneo-Mindlin, Q/(mu P) = {ratio:g} | c/a = sqrt(1 - Q/(mu P)) = {ref:.4f} | " + " | ".join(cells)
+                       + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
+        else:
+            ref, refs = math.sqrt(1 - ratio / 2), math.sqrt(1 - ratio)
+            cells = [f"{x['c_over_a'][-1]:.4f} ({pct(x['c_over_a'][-1] / ref - 1)}); at Q*: {x['c_over_a'][1]:.4f} "
+                     f"({pct(x['c_over_a'][1] / refs - 1)})" for x in (one, eight)]
+            out.append(f"| Mindlin-Deresiewicz, Q* = {ratio:g} mu P, then 0 | c'/a = sqrt(1 - Q*/(2 mu P)) = {ref:.4f}; "
+                       f"at Q*: {refs:.4f} | " + " | ".join(cells)
+                       + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
+    ref = math.sqrt(0.5)
+    fine = {n: sorted((r for r in rows if r["case"] == "refinement" and r["steps"] == n), key=lambda r: -r["hc"]) for n in STEPS}
+    cells = [", ".join(f"{r['c_over_a'][-1]:.4f} ({pct(r['c_over_a'][-1] / ref - 1)})" for r in fine[n]) for n in STEPS]
+    out.append(f"| Cattaneo-Mindlin, Q/(mu P) = 0.5, contact edges hc = "
+               + ", ".join(f"{r['hc']:g} (a/hc = {r['a'] / r['hc']:.0f}, {r['dofs']:,} dofs)" for r in fine[1])
+               + f" | {ref:.4f} | " + " | ".join(cells) + " | "
+               + " / ".join(", ".join(f"{100 * r['l2']:.1f} %" for r in fine[n]) for n in STEPS) + " | "
+               + " / ".join(", ".join(str(r["iterations"]) for r in fine[n]) for n in STEPS) + " |")
+    return "\n".join(out) + "\n"
+
+
+def its_list(incs):
+    return " ".join(str(i["iterations"]) for i in incs)
+
+
+def cost_table(rows):
+    """The cost table: Newton iterations of each increment with friction and
+    without, their largest ratio, the fixed point's solves."""
+    out = ["| run, stage | increments a stage | iterations per increment: with friction | without | largest ratio | solves per increment (fixed point) | the run's solve time: with / without |",
+           "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        fr, nf = r["friction"], r["without"]
+        ratio = f"{max(f['iterations'] / n['iterations'] for f, n in zip(fr, nf)):.2f}" if nf else "none without friction"
+        solves = " ".join(str(f["solves"]) for f in fr)
+        times = f"{r['solve']:.2f} s / {r['solve_without']:.2f} s" if r["solve_without"] is not None else f"{r['solve']:.2f} s"
+        case = r["case"]
+        without = its_list(nf) if nf else "no equilibrium: the disc slides"
+        if r.get("newton"):
+            case += f": its stick half-width {r['stick']:.6g}, Newton's {r['stick_newton']:.6g} ({r['stick'] / r['stick_newton'] - 1:+.1e})"
+            without = f"Newton with friction: {its_list(r['newton'])}"
+            ratio = f"{max(f['iterations'] / n['iterations'] for f, n in zip(fr, r['newton'])):.1f} (Newton's)"
+        out.append(f"| {case} | {r['steps']} | {its_list(fr)} | {without} | {ratio} | {solves} | {times} |")
+    return "\n".join(out) + "\n"
+
+
+def cost_phrase(rows):
+    """The README's sentence on the cost: the range of the Newton rows'
+    ratios per increment, the rows above 3, and L-BFGS with friction."""
+    ratios = []
+    for r in rows:
+        if r["without"] and r.get("short"):
+            ratios += [(f["iterations"] / n["iterations"], r["short"], r["steps"]) for f, n in zip(r["friction"], r["without"])]
+    above = {}
+    for x, short, steps in ratios:
+        if x > 3:
+            key = f"{short} in {steps} increment{'s' if steps > 1 else ''} a stage"
+            above[key] = max(above.get(key, 0), x)
+    lb = [r for r in rows if r.get("newton")][0]
+    text = (f"a frictional increment took {min(ratios)[0]:.2f} to {max(ratios)[0]:.2f} times the Newton iterations of the same "
+            f"increment without friction")
+    text += ("; above 3: " + "; ".join(f"{k} ({v:.2f})" for k, v in above.items())) if above else ", never above 3"
+    n_lb, n_newton = sum(i["iterations"] for i in lb["friction"]), sum(i["iterations"] for i in lb["newton"])
+    return (text + f". L-BFGS (-tao_type lmvm) with friction finds Newton's stick zone to {abs(lb['stick'] / lb['stick_newton'] - 1):.0e} "
+            f"in {n_lb} iterations against Newton's {n_newton}")
+
+
+if __name__ == "__main__":
+    if "--cost" in sys.argv:
+        print(cost_table(measure_cost()))
+    else:
+        print(table(measure()))
