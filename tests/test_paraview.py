@@ -271,3 +271,47 @@ def test_axisymmetric_hoop_stress(tmp_path, display):
         solid, n = colours(out / f"{reader}-solid.png"), colours(out / f"{reader}-stress_hoop.png")
         print(f"{reader} stress_hoop: {n} colours, solid {solid}: {n / solid:.2f} times")
         assert n >= 2 * solid, (reader, n, solid)
+
+
+SHEAR = ROOT / "tests" / "paraview_shear.py"
+
+
+def test_friction_shear(tmp_path, display):
+    """A scene with friction (cattaneo: two load stages, so the file's last
+    time step) shows the slave surface's shear, slip and stick in every
+    reader: the disc's contact line carries the HDF5's node_shear, node_slip
+    and node_stick bit for bit, every other block (the bodies, the master's
+    line) the three as NaN, so that Xdmf3ReaderS and OpenDataFile colour by
+    them. The shear's range in ParaView's data information, and the colour
+    map's once a view is coloured by the shear and rescaled to the data, is
+    the HDF5's (min, max) of node_shear exactly (ParaView skips the NaN;
+    measured 0 and 5.8663, the largest shear where the stick zone meets the
+    slip at 0.71 mu p_max). The shear shown is no trivial array: its sum
+    with the HDF5's weights A_j is the JSON's tangential load Q to 1e-2
+    (measured +1.4e-3: Q is the whole force across the chord's normal)."""
+    run = run_contact(["-options_file", "meshes/cattaneo/cattaneo.opts"], tmp_path, name="cattaneo")
+    out = tmp_path / "shear.json"
+    run_pvpython(SHEAR, [run.output_path.with_suffix(".xdmf"), out], tmp_path, display)
+    got = json.loads(out.read_text())
+    with run.h5() as h5:
+        g = h5["contact/interface/disc_contact"]
+        want = {f: g[f"node_{f}"][...] for f in ("shear", "slip", "stick")}
+        w = g["node_weight"][...]
+        sizes = [len(h5["bodies/disc/geometry"]), len(h5["bodies/slab/geometry"]), len(w),
+                 len(h5["contact/interface/slab_contact/node_s"])]
+    Q = run.summary["contact"]["interface"]["tangential_load"]
+    print(f"int q ds / Q - 1 = {np.sum(w * want['shear']) / Q - 1:+.2e}, shear range {want['shear'].min()} .. {want['shear'].max()}")
+    assert abs(np.sum(w * want["shear"]) / Q - 1) <= 1e-2
+    for reader, r in got.items():
+        assert r["times"] == [1.0, 2.0], reader
+        assert [b["points"] for b in r["blocks"]] == sizes, reader
+        for k, b in enumerate(r["blocks"]):
+            for f, values in want.items():
+                a = b["arrays"][f]
+                assert a is not None, (reader, k, f)
+                if k == 2:   # the disc's contact line, the slave's
+                    same(a, values)
+                else:
+                    assert np.all(np.isnan(a)), (reader, k, f)
+        expected = [float(want["shear"].min()), float(want["shear"].max())]
+        assert r["range"] == expected and r["colour_range"] == expected, (reader, r["range"], r["colour_range"])
