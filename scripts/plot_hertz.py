@@ -610,8 +610,9 @@ def plot_shear(f, axes, units, zoom=None):
         ax.plot(to(t), sign * mu * pi_, "--", lw=0.9, color="0.45", zorder=2,
                 label="Coulomb's bound mu p (computed p)")
         c = attr(g, "stick_half_width", 0.0)
-        text = [f"mu = {mu:g}, P = {units.value(attr(g, 'P'), 'force', axisym)}, "
-                f"Q = {units.value(attr(g, 'tangential_load'), 'force', axisym)}"]
+        text = [f"mu = {mu:g}, P = {units.value(attr(g, 'P'), 'force', axisym)}"
+                + (" (the whole circle)" if axisym else
+                   f", Q = {units.value(attr(g, 'tangential_load'), 'force', axisym)}")]
         if stick.any() and c > 0:
             mid = 0.5 * (s[stick].min() + s[stick].max())
             lo, hi = (0.0, c) if axisym else (mid - c, mid + c)
