@@ -12,7 +12,9 @@ samples (quadratic edges), where the master surface (the block's edge, mortar)
 shows the pressure transferred from the slave, so that no contact edge is
 empty. Every grid carries every field (a body's contact fields NaN, a contact
 line's stress NaN and its displacement zero), and each reader renders the
-bodies coloured by each body field (test_readers_show_colours)."""
+bodies coloured by each body field (test_readers_show_colours). A scene with
+friction adds the slave's shear, slip and stick to every grid, and the shear
+ParaView colours by has the HDF5's range (test_friction_shear)."""
 import json
 import os
 import select
