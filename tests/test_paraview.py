@@ -289,8 +289,9 @@ def test_friction_shear(tmp_path, display):
     the HDF5's (min, max) of node_shear exactly (ParaView skips the NaN;
     measured 0 and 5.8663, the largest shear where the stick zone meets the
     slip at 0.71 mu p_max). The shear shown is no trivial array: its sum
-    with the HDF5's weights A_j is the JSON's tangential load Q to 1e-2
-    (measured +1.4e-3: Q is the whole force across the chord's normal)."""
+    with the HDF5's weights A_j is the JSON's tangential load Q to 4e-3
+    (measured +1.43e-3, 2.8 times: Q is the whole force across the normal
+    of the zone's chord, the sum runs along the curved arc)."""
     run = run_contact(["-options_file", "meshes/cattaneo/cattaneo.opts"], tmp_path, name="cattaneo")
     out = tmp_path / "shear.json"
     run_pvpython(SHEAR, [run.output_path.with_suffix(".xdmf"), out], tmp_path, display)
@@ -303,7 +304,7 @@ def test_friction_shear(tmp_path, display):
                  len(h5["contact/interface/slab_contact/node_s"])]
     Q = run.summary["contact"]["interface"]["tangential_load"]
     print(f"int q ds / Q - 1 = {np.sum(w * want['shear']) / Q - 1:+.2e}, shear range {want['shear'].min()} .. {want['shear'].max()}")
-    assert abs(np.sum(w * want["shear"]) / Q - 1) <= 1e-2
+    assert abs(np.sum(w * want["shear"]) / Q - 1) <= 4e-3
     for reader, r in got.items():
         assert r["times"] == [1.0, 2.0], reader
         assert [b["points"] for b in r["blocks"]] == sizes, reader
