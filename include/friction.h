@@ -53,6 +53,9 @@ PetscErrorCode FrictionStickHalfWidth(Friction, PetscReal *c);
 PetscErrorCode FrictionGetStages(Friction, PetscInt *n, const PetscReal **c);
 /* The friction coefficient. */
 PetscReal FrictionGetCoefficient(Friction);
+/* The last converged increment's shear q_j of each slave node (per unit of
+   the slave's reference measure; the slave's traction is -q_j tau_j). */
+const PetscReal *FrictionGetShear(Friction);
 /* Collective: node_shear, node_slip and node_stick of the slave's nodes
    with a weight (A[j] > 0), sorted by arc position as the report's nodal
    sets, into the viewer's current group. */

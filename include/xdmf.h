@@ -20,8 +20,9 @@ static inline const char *const *XdmfBodyScalarNames(int axisym)
 }
 static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
 /* In a scene with friction, also on every grid: a frictional pair's slave
-   surface has them (its node_shear, node_slip, node_stick), every other grid
-   NaN. A frictionless scene's file has none. */
+   surface has them (its node_shear, node_slip, node_stick), its master the
+   shear (transferred), every other grid NaN. A frictionless scene's file has
+   none. */
 #define XDMF_FRICTION_SCALARS 3
 static const char *const XdmfFrictionScalars[XDMF_FRICTION_SCALARS] = {"shear", "slip", "stick"};
 

@@ -6,9 +6,10 @@ arrays (shear, slip, stick: their values, or null where the block has none),
 the shear's range as ParaView's data information gives it, and the range of
 the colour map after colouring a view by the shear and rescaling it to the
 data, and the points and cells that Threshold on the shear keeps (the NaN
-dropped: the slave's line alone), to a JSON file. Given a directory, it also
-saves that line as a user sees it, framed from +z, in one solid colour and
-coloured by the shear: <dir>/<reader>-{solid,shear}.png.
+dropped: the contact lines alone), to a JSON file. Given a directory, it
+also saves those lines as a user sees them, framed from +z on their loaded
+part, in one solid colour and coloured by the shear:
+<dir>/<reader>-{solid,shear}.png.
 
     xvfb-run -a pvpython tests/paraview_shear.py out/cattaneo.xdmf shear.json [pngdir]
 """
@@ -40,7 +41,7 @@ def loaded_box(data):
 
 
 def render_line(line, t, box, pngdir, reader):
-    """The thresholded line, 6 pixels wide, from +z, framed on its loaded
+    """The thresholded lines, 6 pixels wide, from +z, framed on their loaded
     part (its box enlarged 1.3 times)."""
     view = simple.CreateRenderView()
     view.ViewTime = t

@@ -436,7 +436,8 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
    pressure, the gap (weighted, for nodes) and the arc position s at its
    points; the grid is named <pair>:<body>:<group>. In a scene with friction
    (friction) also the shear, slip and stick: a frictional pair's slave
-   surface's node_shear, node_slip and node_stick, NaN on any other. */
+   surface's node_shear, node_slip and node_stick, its master's node_shear
+   (transferred) and NaN for the other two, NaN on any other surface. */
 PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, const char h5[], PetscBool friction)
 {
   const char *pre = R->nodal ? "node_" : "";
@@ -461,7 +462,7 @@ PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairS
       XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)S->n, 1, path);
     }
     for (PetscInt k = 0; k < XDMF_FRICTION_SCALARS && friction; ++k) {
-      if (R->friction && S->slave) PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, XdmfFrictionScalars[k]));
+      if (R->friction && (S->slave || k == 0)) PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, XdmfFrictionScalars[k])); /* the master has the shear alone, transferred */
       else PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_nan", h5, spec->name, body, grp));
       XdmfWriteAttribute(fp, XdmfFrictionScalars[k], (int)S->n, 1, path);
     }

@@ -517,6 +517,11 @@ PetscReal FrictionGetCoefficient(Friction f)
   return f->mu;
 }
 
+const PetscReal *FrictionGetShear(Friction f)
+{
+  return f->q;
+}
+
 /* Rank 0: the nodes with a weight (A[j] > 0, as the report's rows) sorted
    by arc position, as the report writes its nodal sets. */
 static PetscErrorCode FrictionSortedNodes(Friction f, const PetscReal A[], PetscInt *n, PetscInt **order)

@@ -146,6 +146,7 @@
 #include "edge.h"
 #include "gap.h"
 #include "options.h"
+#include "outputwrite.h"
 
 #define MORTAR_MAX_SEG   64
 #define MORTAR_MAX_DEPTH 12
@@ -1696,7 +1697,90 @@ static PetscErrorCode MortarFrictionBegin(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
-/* The report's sets, and the slave surface's friction: node_shear, node_slip, node_stick. */
+/* The slave's shear (surface s as slave) at point x of the other surface,
+   as the traction it puts there per unit current measure, -q tau_s (the
+   slave's is -q tau_s on itself, the master's the opposite), into t[2]: q
+   interpolated linearly node to node along the slave's edge at x's closest
+   point, as the pressure (MortarSlavePressureAt), with tau_s the slave's
+   unit tangent along its arc there; 0 where x's closest point is none. */
+static void MortarSlaveShearAt(const Mortar *m, PetscInt s, const PetscReal q[], const PetscReal x[2], PetscReal t[2])
+{
+  const ContactSurface *S = &m->b.S[s];
+  const PetscInt       *en;
+  PetscReal             eta, qe, xe[2], te[2], l;
+  PetscInt              e;
+
+  t[0] = t[1] = 0.0;
+  ContactSearchFindClosest(m->b.search[s], x, &e, &eta);
+  if (e < 0) return;
+  en  = &S->enodes[3 * e];
+  eta = PetscMax(-1.0, PetscMin(1.0, eta));
+  qe  = eta < 0 ? -eta * q[en[0]] + (1.0 + eta) * q[en[2]] : (1.0 - eta) * q[en[2]] + eta * q[en[1]];
+  EdgeEval(S->x, en, eta, xe, te);
+  l = PetscSqrtReal(te[0] * te[0] + te[1] * te[1]);
+  if (!(l > 0)) return;
+  qe /= MortarStretch(S, e, eta);
+  t[0] = -qe * S->edir[e] * te[0] / l;
+  t[1] = -qe * S->edir[e] * te[1] / l;
+}
+
+/* Rank 0, with friction: the master surface's node_shear, the slave's shear
+   transferred as its pressure is (MortarMasterRows): at each master node
+   with a weight, in the report's order (by arc position), the slave's
+   traction at the node's closest point of the slave (MortarSlaveShearAt),
+   opposite on the master, per unit of the master's reference measure, and
+   signed as the slave's: the master's traction is -q_m tau_m, tau_m its
+   unit tangent along its own arc at the node (the mean over its edges). */
+static PetscErrorCode MortarWriteMasterShear(const Mortar *m, PetscInt ms, PetscViewer v, MPI_Comm comm)
+{
+  const ContactSurface *S = &m->b.S[ms];
+  const MortarSide     *D = &m->side[ms];
+  const PetscReal      *q = FrictionGetShear(m->fr), xi[3] = {-1.0, 1.0, 0.0};
+  PetscMPIInt           rank;
+  PetscReal            *key, *val;
+  PetscInt             *order, n = 0;
+  Vec                   vec;
+  PetscScalar          *a;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMalloc3(S->nn + 1, &key, S->nn + 1, &val, S->nn + 1, &order));
+  for (PetscInt j = 0; j < S->nn && !rank; ++j) {
+    PetscReal t[2], tau[2] = {0.0, 0.0}, l;
+    if (D->AN[j] <= 0) continue;
+    for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
+      const PetscInt e = D->nodeEdge[k];
+      for (PetscInt i = 0; i < 3; ++i)
+        if (S->enodes[3 * e + i] == j) {
+          PetscReal xe[2], te[2];
+          EdgeEval(S->x, &S->enodes[3 * e], xi[i], xe, te);
+          l = PetscSqrtReal(te[0] * te[0] + te[1] * te[1]);
+          if (l > 0) tau[0] += S->edir[e] * te[0] / l, tau[1] += S->edir[e] * te[1] / l;
+        }
+    }
+    l = PetscSqrtReal(tau[0] * tau[0] + tau[1] * tau[1]);
+    MortarSlaveShearAt(m, 1 - ms, q, &S->x[2 * j], t);
+    key[n]   = D->s[j];
+    order[n] = n;
+    val[n]   = l > 0 ? (t[0] * tau[0] + t[1] * tau[1]) / l * MortarNodeStretch(m, ms, j) : 0.0; /* -(-t) . tau_m */
+    n++;
+  }
+  PetscCall(PetscSortRealWithArrayInt(n, key, order));
+  PetscCall(VecCreate(comm, &vec));
+  PetscCall(VecSetSizes(vec, n, PETSC_DETERMINE));
+  PetscCall(VecSetType(vec, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)vec, "node_shear"));
+  PetscCall(VecGetArray(vec, &a));
+  for (PetscInt i = 0; i < n; ++i) a[i] = val[order[i]];
+  PetscCall(VecRestoreArray(vec, &a));
+  ContactOutputCall(v, VecView(vec, v));
+  PetscCall(VecDestroy(&vec));
+  PetscCall(PetscFree3(key, val, order));
+  PetscFunctionReturn(0);
+}
+
+/* The report's sets, and the slave surface's friction: node_shear, node_slip, node_stick, and the
+   master's node_shear transferred. */
 static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
 {
   Mortar        *m = (Mortar *)t->data;
@@ -1709,6 +1793,12 @@ static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v
   PetscCall(PetscViewerHDF5PushGroup(v, group));
   PetscCall(FrictionWriteHDF5(m->fr, m->side[s].A, v));
   PetscCall(PetscViewerHDF5PopGroup(v));
+  if (m->fr) {
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, bodies[m->b.S[1 - s].body]->name, m->b.S[1 - s].group));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    PetscCall(MortarWriteMasterShear(m, 1 - s, v, t->comm));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+  }
   PetscFunctionReturn(0);
 }
 
