@@ -13,7 +13,8 @@ Usage:
     python3 scripts/plot_hertz.py out/cattaneo.h5 --shear -o out/cattaneo-shear.png
         the shear traction q of each pair with friction along its slave
         surface (node_shear), with Coulomb's bound mu p, the stick zone
-        (node_stick; shaded, half-width stick_half_width) and, where the pair
+        (node_stick; shaded, half-width stick_half_width), the master's
+        transferred shear drawn as the slave's and, where the pair
         declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
         with the computed a (second moment) and p0 = 2 P / (pi a) and his
         stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
@@ -557,6 +558,35 @@ def frictional_pairs(f):
     return out
 
 
+def loaded_direction(side):
+    """The unit chord from the first to the last loaded node (pressure > 0) of
+    a surface, current positions, in the order of its arc; None without two."""
+    x, p = sample(side, "x"), sample(side, "pressure")
+    on = np.flatnonzero(p > 0)
+    if len(on) < 2:
+        return None
+    t = x[on[-1]] - x[on[0]]
+    n = np.hypot(*t)
+    return t / n if n > 0 else None
+
+
+def master_shear_as_slave(g, slave):
+    """The pair's master surface with a transferred shear, its samples
+    mapped onto the slave's plot: (side, x, q) with x its arc position from
+    its centre and q its shear as the slave's, both turned where the arcs
+    run opposite ways. The master's traction is the slave's opposite, so
+    q_m tau_m = -q_s tau_s: along the same direction q_s = -q_m, else q_m;
+    None without a master shear."""
+    for side, role in surface_roles(g):
+        if role != "master" or "node_shear" not in side:
+            continue
+        tm, ts = loaded_direction(side), loaded_direction(slave)
+        d = 1.0 if tm is None or ts is None or np.dot(tm, ts) >= 0 else -1.0
+        x = sample(side, "s") - attr(side, "centre", 0.0)
+        return side, d * x, -d * side["node_shear"][()]
+    return None
+
+
 def mindlin_shear(x, a, p0, mu, c):
     """Cattaneo-Mindlin's shear traction at x (from the contact's centre):
     mu p0 sqrt(1 - x^2/a^2) in the slip zones c < |x| < a, less
@@ -587,7 +617,8 @@ def mindlin_figures(g):
 def plot_shear(f, axes, units, zoom=None):
     """Each frictional pair's shear traction q on its slave surface against
     the arc position from the pressure's centre (in r-z against the current
-    radius), with Coulomb's bound mu p of the computed pressure, the computed
+    radius), with Coulomb's bound mu p of the computed pressure, the master's
+    transferred shear drawn as the slave's (plane strain), the computed
     stick zone shaded (its nodes marked filled, the slipping and open ones
     hollow) and, where the pair has Hertz radii in plane strain, Mindlin's
     curve drawn with the computed a and p0 = 2 P / (pi a) and his stick zone
@@ -609,6 +640,14 @@ def plot_shear(f, axes, units, zoom=None):
         t, pi_ = nodal_curve(s, p)
         ax.plot(to(t), sign * mu * pi_, "--", lw=0.9, color="0.45", zorder=2,
                 label="Coulomb's bound mu p (computed p)")
+        master = None if axisym else master_shear_as_slave(g, side)
+        if master is not None:
+            mside, xm, qm_ = master
+            order = np.argsort(xm)
+            t, qi = nodal_curve(xm[order], qm_[order])
+            ax.plot(t, qi, "--", lw=0.9, color=ROLE_COLOURS["master"], zorder=2.2,
+                    label=f"{attr(mside, 'body')}:{attr(mside, 'group')}, master: transferred, as the slave's")
+            marked += ax.plot(xm, qm_, "s", ms=3.5, mfc="none", mew=0.8, color=ROLE_COLOURS["master"], zorder=2.2)
         c = attr(g, "stick_half_width", 0.0)
         text = [f"mu = {mu:g}, P = {units.value(attr(g, 'P'), 'force', axisym)}"
                 + (" (the whole circle)" if axisym else
