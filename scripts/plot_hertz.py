@@ -607,14 +607,14 @@ def mindlin_figures(g):
     if "mindlin_c" not in g.attrs:
         return None
     a, P, mu = attr(g, "fem_a_moment"), attr(g, "P"), attr(g, "friction")
-    ratio = attr(g, "tangential_load") / (mu * attr(g, "normal_load", P))
     if not (a > 0 and P > 0 and mu > 0):
         return None
+    ratio = attr(g, "tangential_load") / (mu * attr(g, "normal_load", P))
     return dict(a=a, p0=2 * P / (np.pi * a), mu=mu, ratio=ratio,
                 c=a * np.sqrt(1 - ratio) if ratio < 1 else 0.0)
 
 
-def plot_shear(f, axes, units, zoom=None):
+def plot_shear(f, axes, units, zoom=None, axis="s"):
     """Each frictional pair's shear traction q on its slave surface against
     the arc position from the pressure's centre (in r-z against the current
     radius), with Coulomb's bound mu p of the computed pressure, the master's
@@ -622,10 +622,14 @@ def plot_shear(f, axes, units, zoom=None):
     stick zone shaded (its nodes marked filled, the slipping and open ones
     hollow) and, where the pair has Hertz radii in plane strain, Mindlin's
     curve drawn with the computed a and p0 = 2 P / (pi a) and his stick zone
-    |x| < c. Mindlin's curve takes the sign of the computed shear's sum."""
+    |x| < c. Mindlin's curve takes the sign of the computed shear's sum.
+    With axis "x" or "y" against the current coordinate instead, as the
+    pressure plot: the master's at its own nodes' coordinates."""
     axisym = "metadata" in f and bool(attr(f["metadata"], "axisymmetric", 0))
+    if axisym:
+        axis = "x"
     for ax, (pair, g, side) in zip(axes, frictional_pairs(f)):
-        (u, to), s = abscissa(side, "x" if axisym else "s"), sample(side, "s") - attr(side, "centre", 0.0)
+        (u, to), s = abscissa(side, axis), sample(side, "s") - attr(side, "centre", 0.0)
         q, p, w = side["node_shear"][()], sample(side, "pressure"), sample(side, "weight")
         stick = side["node_stick"][()] > 0.5
         mu = attr(g, "friction")
@@ -643,6 +647,8 @@ def plot_shear(f, axes, units, zoom=None):
         master = None if axisym else master_shear_as_slave(g, side)
         if master is not None:
             mside, xm, qm_ = master
+            if axis != "s":
+                xm = sample(mside, "x")[:, "xy".index(axis)]
             order = np.argsort(xm)
             t, qi = nodal_curve(xm[order], qm_[order])
             ax.plot(t, qi, "--", lw=0.9, color=ROLE_COLOURS["master"], zorder=2.2,
@@ -654,11 +660,11 @@ def plot_shear(f, axes, units, zoom=None):
                    f", Q = {units.value(attr(g, 'tangential_load'), 'force', axisym)}")]
         if stick.any() and c > 0:
             mid = 0.5 * (s[stick].min() + s[stick].max())
-            lo, hi = (0.0, c) if axisym else (mid - c, mid + c)
-            ax.axvspan(float(to(lo)) if not axisym else lo, float(to(hi)) if not axisym else hi,
-                       color=colour, alpha=0.12, zorder=1, label=f"computed stick zone ({'radius' if axisym else 'half-width'} c)")
+            lo, hi = (0.0, c) if axisym else sorted((float(to(mid - c)), float(to(mid + c))))
+            ax.axvspan(lo, hi, color=colour, alpha=0.12, zorder=1,   # in r-z from the axis
+                       label=f"computed stick zone ({'radius' if axisym else 'half-width'} c)")
         mf = None if axisym else mindlin_figures(g)
-        xr = None if axisym else pressure_range(g, zoom, mf["a"] if mf else 0.0)
+        xr = pressure_range(g, zoom, mf["a"] if mf else 0.0) if axis == "s" else None
         if mf:
             a, cm = mf["a"], mf["c"]
             x = np.unique(np.r_[np.linspace(-a, a, 801), [-cm, cm]])
@@ -680,8 +686,12 @@ def plot_shear(f, axes, units, zoom=None):
             text += [f"stick zone {'radius' if axisym else 'half-width'}: c = {units.value(c, 'length')}"]
         if xr is not None:
             ax.set_xlim(*xr)
-        if axisym:
+        elif axisym:
             ax.set_xlim(0, 1.5 * max(attr(g, "fem_a", 0.0), np.max(u[p > 0], initial=0.0)) or None)
+        else:   # against a coordinate: the arc's range mapped to it
+            xs = pressure_range(g, zoom, mf["a"] if mf else 0.0)
+            if xs is not None:
+                ax.set_xlim(*sorted((float(to(xs[0])), float(to(xs[1])))))
         thin_markers(ax, marked)
         lo, hi = ax.get_ylim()
         ax.set_ylim(lo - 0.45 * (hi - lo) * (sign < 0), hi + 0.45 * (hi - lo) * (sign > 0))
@@ -690,7 +700,7 @@ def plot_shear(f, axes, units, zoom=None):
                 va="top" if sign > 0 else "bottom", fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
         ax.legend(loc="upper right" if sign > 0 else "lower right", fontsize=7)
         ax.grid(alpha=0.3)
-        ax.set_xlabel(units.label("radius r (current)" if axisym else "arc position s - s_c", "length"))
+        ax.set_xlabel(units.label("radius r (current)" if axisym else "arc position s - s_c" if axis == "s" else f"current position {axis}", "length"))
         ax.set_ylabel(units.label("shear traction q (along the arc)", "stress"))
         ax.set_title(f"shear traction, pair '{pair}' (friction mu = {mu:g})")
 
@@ -774,7 +784,7 @@ def main():
                     return 0
                 fig, axes = plt.subplots(len(pairs), 1, figsize=(8, 5 * len(pairs)), squeeze=False,
                                          layout="constrained")
-                plot_shear(f, axes[:, 0], units, args.zoom)
+                plot_shear(f, axes[:, 0], units, args.zoom, args.axis)
                 fig.suptitle(label)
             else:
                 if "contact" not in f or not len(f["contact"]):
