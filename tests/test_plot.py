@@ -581,3 +581,26 @@ def test_shear_master_drawn_as_slave(cattaneo):
     print(f"master's largest {np.max(-qm):.4f}, slave's {np.max(qs):.4f}: {np.max(-qm) / np.max(qs) - 1:+.4f}")
     assert abs(np.max(-qm) / np.max(qs) - 1) <= 0.005
     plt.close(fig)
+
+
+def test_shear_against_coordinate(cattaneo):
+    """--axis y: the slave's markers are its nodes' current y (node_x's
+    column) and node_shear, exactly; the master's its own nodes' y; the x
+    range holds the loaded nodes (pressure > 0)."""
+    import matplotlib.pyplot as plt
+    mod = load_module()
+    fig, ax = plt.subplots()
+    with h5py.File(cattaneo, "r") as f:
+        mod.plot_shear(f, [ax], mod.Units(), axis="y")
+        sl, m = f["contact/interface/disc_contact"], f["contact/interface/slab_contact"]
+        y, q, stick, p = sl["node_x"][()][:, 1], sl["node_shear"][()], sl["node_stick"][()] > 0.5, sl["node_pressure"][()]
+        ym, qm = m["node_x"][()][:, 1], m["node_shear"][()]
+    lines = {l.get_label(): l for l in ax.get_lines()}
+    for label, keep in (("stuck node", stick), ("slipping or open node", ~stick)):
+        assert np.array_equal(lines[label].get_xdata(), y[keep]) and np.array_equal(lines[label].get_ydata(), q[keep]), label
+    (master,) = [l for l in ax.get_lines() if l.get_marker() == "s"]
+    assert np.array_equal(master.get_xdata(), ym) and np.array_equal(master.get_ydata(), -qm)
+    lo, hi = ax.get_xlim()
+    assert lo <= y[p > 0].min() and y[p > 0].max() <= hi
+    assert ax.get_xlabel() == "current position y"
+    plt.close(fig)
