@@ -43,12 +43,14 @@ meshes: bin/contact
 	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only
 
 # the figures listed are those this run wrote (a scene without contact has no
-# pressure plot; an earlier one would be stale)
-FIGURES = out/$(SCENE)-pressure.png out/$(SCENE)-vonmises.png
+# pressure plot, one without friction no shear plot; an earlier one would be
+# stale)
+FIGURES = out/$(SCENE)-pressure.png out/$(SCENE)-shear.png out/$(SCENE)-vonmises.png
 run: bin/contact meshes
 	$(MPIEXEC) ./bin/contact -options_file meshes/$(SCENE)/$(SCENE).opts
 	@rm -f $(FIGURES)
 	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 -o out/$(SCENE)-pressure.png
+	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 --shear -o out/$(SCENE)-shear.png
 	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 --field -o out/$(SCENE)-vonmises.png
 	@figs=""; for f in $(FIGURES); do if [ -f "$$f" ]; then figs="$$figs $$f"; fi; done; \
 	echo "Figures:$${figs:- none}; data: out/$(SCENE).h5 (ParaView: out/$(SCENE).xdmf), out/$(SCENE).json"

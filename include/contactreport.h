@@ -51,7 +51,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *, const ContactPairSp
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *, const ContactPairSpec *, Body[], PetscViewer);
 /* Rank 0: each surface with a profile as a line grid of the XDMF file, on the
    datasets ContactReportWriteHDF5 wrote into h5. */
-PetscErrorCode ContactReportWriteXDMF(const ContactReport *, const ContactPairSpec *, Body[], FILE *, const char h5[]);
+PetscErrorCode ContactReportWriteXDMF(const ContactReport *, const ContactPairSpec *, Body[], FILE *, const char h5[], PetscBool friction);
 PetscErrorCode ContactReportReset(ContactReport *);
 
 /* Hertz's line contact (plane strain) from the force per unit thickness P:

@@ -21,7 +21,7 @@ typedef struct {
   PetscErrorCode (*view)(EnergyTerm, Body[]);
   PetscErrorCode (*writejson)(EnergyTerm, Body[], FILE *, PetscBool summary);
   PetscErrorCode (*writehdf5)(EnergyTerm, Body[], PetscViewer);
-  PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[]);
+  PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[], PetscBool friction);
   PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
   PetscErrorCode (*diagnose)(EnergyTerm, size_t, char[]);
   PetscErrorCode (*lag)(EnergyTerm, Body[], PetscReal *change);
@@ -68,8 +68,9 @@ PetscErrorCode EnergyTermWriteJSON(EnergyTerm, Body[], FILE *, PetscBool summary
 /* Collective: the results into an open HDF5 viewer. */
 PetscErrorCode EnergyTermWriteHDF5(EnergyTerm, Body[], PetscViewer);
 /* Rank 0: XDMF grids of what EnergyTermWriteHDF5 wrote into the file h5 (its
-   name as the XDMF file refers to it). */
-PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[]);
+   name as the XDMF file refers to it); friction: the scene has friction, so
+   every grid carries the friction's fields (xdmf.h). */
+PetscErrorCode EnergyTermWriteXDMF(EnergyTerm, Body[], FILE *, const char h5[], PetscBool friction);
 /* Rank 0, after EnergyTermPostProcess: the pressure profile of the term's
    one-sided surface side (0 or 1), n samples sorted by arc position s with
    their pressure p and weight w (PetscFree each; n = 0 where the surface is

@@ -19,6 +19,12 @@ static inline const char *const *XdmfBodyScalarNames(int axisym)
   return axisym ? XdmfBodyScalarsAxisym : XdmfBodyScalars;
 }
 static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
+/* In a scene with friction, also on every grid: a frictional pair's slave
+   surface has them (its node_shear, node_slip, node_stick), its master the
+   shear (transferred), every other grid NaN. A frictionless scene's file has
+   none. */
+#define XDMF_FRICTION_SCALARS 3
+static const char *const XdmfFrictionScalars[XDMF_FRICTION_SCALARS] = {"shear", "slip", "stick"};
 
 /* One node-centred attribute: n tuples of 1 or 3 components in dataset path. */
 static inline void XdmfWriteAttribute(FILE *fp, const char name[], int n, int components, const char path[])

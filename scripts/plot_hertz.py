@@ -10,6 +10,15 @@ Usage:
         Hertz curve centred on the axis) with the Hertz curve when the scene
         declares one;
         a scene without contact pairs is skipped with one line (exit status 0)
+    python3 scripts/plot_hertz.py out/cattaneo.h5 --shear -o out/cattaneo-shear.png
+        the shear traction q of each pair with friction along its slave
+        surface (node_shear), with Coulomb's bound mu p, the stick zone
+        (node_stick; shaded, half-width stick_half_width), the master's
+        transferred shear drawn as the slave's and, where the pair
+        declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
+        with the computed a (second moment) and p0 = 2 P / (pi a) and his
+        stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
+        skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
         cells are subdivided through their shape functions so that curved edges
@@ -538,6 +547,164 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
         ax.set_title(f"contact pressure, pair '{pair}'")
 
 
+def frictional_pairs(f):
+    """(pair name, group, slave side) of each pair whose slave surface has a
+    shear (node_shear: a pair with friction)."""
+    out = []
+    for pair, g in f.get("contact", {}).items():
+        for side, role in surface_roles(g):
+            if role == "slave" and "node_shear" in side:
+                out.append((pair, g, side))
+    return out
+
+
+def loaded_direction(side):
+    """The unit chord from the first to the last loaded node (pressure > 0) of
+    a surface, current positions, in the order of its arc; None without two."""
+    x, p = sample(side, "x"), sample(side, "pressure")
+    on = np.flatnonzero(p > 0)
+    if len(on) < 2:
+        return None
+    t = x[on[-1]] - x[on[0]]
+    n = np.hypot(*t)
+    return t / n if n > 0 else None
+
+
+def master_shear_as_slave(g, slave):
+    """The pair's master surface with a transferred shear, its samples
+    mapped onto the slave's plot: (side, x, q) with x its arc position from
+    its centre and q its shear as the slave's, both turned where the arcs
+    run opposite ways. The master's traction is the slave's opposite, so
+    q_m tau_m = -q_s tau_s: along the same direction q_s = -q_m, else q_m;
+    None without a master shear."""
+    for side, role in surface_roles(g):
+        if role != "master" or "node_shear" not in side:
+            continue
+        tm, ts = loaded_direction(side), loaded_direction(slave)
+        d = 1.0 if tm is None or ts is None or np.dot(tm, ts) >= 0 else -1.0
+        x = sample(side, "s") - attr(side, "centre", 0.0)
+        return side, d * x, -d * side["node_shear"][()]
+    return None
+
+
+def mindlin_shear(x, a, p0, mu, c):
+    """Cattaneo-Mindlin's shear traction at x (from the contact's centre):
+    mu p0 sqrt(1 - x^2/a^2) in the slip zones c < |x| < a, less
+    mu p0 (c/a) sqrt(1 - x^2/c^2) in the stick zone |x| < c; 0 outside."""
+    q = mu * p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    if c > 0:
+        q = q - np.where(np.abs(x) < c, mu * p0 * (c / a) * np.sqrt(np.clip(1 - (x / c) ** 2, 0, None)), 0.0)
+    return q
+
+
+def mindlin_figures(g):
+    """Mindlin's curve's parameters from the pair's attributes, or None where
+    the pair has no Mindlin figure (no Hertz radii, or r-z): the computed
+    half-width a (the second moment's, fem_a_moment), p0 = 2 P / (pi a),
+    mu, and c = a sqrt(1 - Q/(mu P)) with Q the tangential load and P the
+    normal load across and along the contact zone (the report's Q/(mu P);
+    c = 0 at Q >= mu P, full sliding)."""
+    if "mindlin_c" not in g.attrs:
+        return None
+    a, P, mu = attr(g, "fem_a_moment"), attr(g, "P"), attr(g, "friction")
+    if not (a > 0 and P > 0 and mu > 0):
+        return None
+    ratio = attr(g, "tangential_load") / (mu * attr(g, "normal_load", P))
+    return dict(a=a, p0=2 * P / (np.pi * a), mu=mu, ratio=ratio,
+                c=a * np.sqrt(1 - ratio) if ratio < 1 else 0.0)
+
+
+def plot_shear(f, axes, units, zoom=None, axis="s"):
+    """Each frictional pair's shear traction q on its slave surface against
+    the arc position from the pressure's centre (in r-z against the current
+    radius), with Coulomb's bound mu p of the computed pressure, the master's
+    transferred shear drawn as the slave's (plane strain), the computed
+    stick zone shaded (its nodes marked filled, the slipping and open ones
+    hollow) and, where the pair has Hertz radii in plane strain, Mindlin's
+    curve drawn with the computed a and p0 = 2 P / (pi a) and his stick zone
+    |x| < c. Mindlin's curve takes the sign of the computed shear's sum.
+    With axis "x" or "y" against the current coordinate instead, as the
+    pressure plot: the master's at its own nodes' coordinates."""
+    axisym = "metadata" in f and bool(attr(f["metadata"], "axisymmetric", 0))
+    if axisym:
+        axis = "x"
+    for ax, (pair, g, side) in zip(axes, frictional_pairs(f)):
+        (u, to), s = abscissa(side, axis), sample(side, "s") - attr(side, "centre", 0.0)
+        q, p, w = side["node_shear"][()], sample(side, "pressure"), sample(side, "weight")
+        stick = side["node_stick"][()] > 0.5
+        mu = attr(g, "friction")
+        sign = 1.0 if np.sum(w * q) >= 0 else -1.0
+        name, colour = f"{attr(side, 'body')}:{attr(side, 'group')}", ROLE_COLOURS["slave"]
+        t, qi = nodal_curve(s, q)
+        ax.plot(to(t), qi, "-", lw=1.4, color=colour, zorder=3,
+                label=f"{name}, nodal shear q (quadratic interpolant)")
+        marked = ax.plot(u[stick], q[stick], "o", ms=4, color=colour, zorder=3, label="stuck node")
+        marked += ax.plot(u[~stick], q[~stick], "o", ms=4.5, mfc="w", mew=1.0, color=colour, zorder=3,
+                          label="slipping or open node")
+        t, pi_ = nodal_curve(s, p)
+        ax.plot(to(t), sign * mu * pi_, "--", lw=0.9, color="0.45", zorder=2,
+                label="Coulomb's bound mu p (computed p)")
+        master = None if axisym else master_shear_as_slave(g, side)
+        if master is not None:
+            mside, xm, qm_ = master
+            if axis != "s":
+                xm = sample(mside, "x")[:, "xy".index(axis)]
+            order = np.argsort(xm)
+            t, qi = nodal_curve(xm[order], qm_[order])
+            ax.plot(t, qi, "--", lw=0.9, color=ROLE_COLOURS["master"], zorder=2.2,
+                    label=f"{attr(mside, 'body')}:{attr(mside, 'group')}, master: transferred, as the slave's")
+            marked += ax.plot(xm, qm_, "s", ms=3.5, mfc="none", mew=0.8, color=ROLE_COLOURS["master"], zorder=2.2)
+        c = attr(g, "stick_half_width", 0.0)
+        text = [f"mu = {mu:g}, P = {units.value(attr(g, 'P'), 'force', axisym)}"
+                + (" (the whole circle)" if axisym else
+                   f", Q = {units.value(attr(g, 'tangential_load'), 'force', axisym)}")]
+        if stick.any() and c > 0:
+            mid = 0.5 * (s[stick].min() + s[stick].max())
+            lo, hi = (0.0, c) if axisym else sorted((float(to(mid - c)), float(to(mid + c))))
+            ax.axvspan(lo, hi, color=colour, alpha=0.12, zorder=1,   # in r-z from the axis
+                       label=f"computed stick zone ({'radius' if axisym else 'half-width'} c)")
+        mf = None if axisym else mindlin_figures(g)
+        xr = pressure_range(g, zoom, mf["a"] if mf else 0.0) if axis == "s" else None
+        if mf:
+            a, cm = mf["a"], mf["c"]
+            x = np.unique(np.r_[np.linspace(-a, a, 801), [-cm, cm]])
+            ends = (min(-a, xr[0]), max(a, xr[1])) if xr else (-1.5 * a, 1.5 * a)
+            ax.plot(to(np.r_[ends[0], x, ends[1]]),
+                    sign * np.r_[0, mindlin_shear(x, a, mf["p0"], mf["mu"], cm), 0],
+                    "k-", lw=1.5, zorder=2.5, label="Mindlin (computed a, p0 = 2P/(pi a))")
+            for xc in (-cm, cm):
+                ax.axvline(float(to(xc)), color="k", ls=":", lw=1.0, zorder=2)
+            m = (np.abs(s) < a) | (p > 0)
+            qm = sign * mindlin_shear(s, a, mf["p0"], mf["mu"], cm)
+            l2 = np.sqrt(np.sum(w[m] * (q[m] - qm[m]) ** 2) / np.sum(w[m] * qm[m] ** 2))
+            text += [f"Q/(mu P) = {mf['ratio']:.4f}; a = {units.value(a, 'length')} (second moment), "
+                     f"mu p0 = {units.value(mf['mu'] * mf['p0'], 'stress')}",
+                     f"stick zone: c/a = {c / a:.4f}, Mindlin's {cm / a:.4f} ({100 * (c / cm - 1):+.2f} %; dotted)"
+                     if cm > 0 else f"stick zone: c/a = {c / a:.4f}, Mindlin's 0 (full sliding)",
+                     f"relative L2 of q against Mindlin's: {100 * l2:.2f} %"]
+        else:
+            text += [f"stick zone {'radius' if axisym else 'half-width'}: c = {units.value(c, 'length')}"]
+        if xr is not None:
+            ax.set_xlim(*xr)
+        elif axisym:
+            ax.set_xlim(0, 1.5 * max(attr(g, "fem_a", 0.0), np.max(u[p > 0], initial=0.0)) or None)
+        else:   # against a coordinate: the arc's range mapped to it
+            xs = pressure_range(g, zoom, mf["a"] if mf else 0.0)
+            if xs is not None:
+                ax.set_xlim(*sorted((float(to(xs[0])), float(to(xs[1])))))
+        thin_markers(ax, marked)
+        lo, hi = ax.get_ylim()
+        ax.set_ylim(lo - 0.45 * (hi - lo) * (sign < 0), hi + 0.45 * (hi - lo) * (sign > 0))
+        ax.axhline(0.0, color="0.6", lw=0.6, zorder=1)
+        ax.text(0.02, 0.97 if sign > 0 else 0.03, "\n".join(text), transform=ax.transAxes,
+                va="top" if sign > 0 else "bottom", fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
+        ax.legend(loc="upper right" if sign > 0 else "lower right", fontsize=7)
+        ax.grid(alpha=0.3)
+        ax.set_xlabel(units.label("radius r (current)" if axisym else "arc position s - s_c" if axis == "s" else f"current position {axis}", "length"))
+        ax.set_ylabel(units.label("shear traction q (along the arc)", "stress"))
+        ax.set_title(f"shear traction, pair '{pair}' (friction mu = {mu:g})")
+
+
 def save(fig, path):
     """Write the figure to a temporary file next to ``path``, then rename it.
 
@@ -568,6 +735,9 @@ def main():
     parser.add_argument("-o", "--output", required=True, help="PNG file to write")
     parser.add_argument("--field", action="store_true",
                         help="plot von Mises stress on the deformed bodies instead")
+    parser.add_argument("--shear", action="store_true",
+                        help="plot the shear traction of each pair with friction, "
+                             "with Mindlin's curve, instead")
     parser.add_argument("--scale", type=float, default=1.0, metavar="S",
                         help="--field: magnify each body's deformation S times; its "
                              "best-fit rigid motion (translation, rotation) is drawn "
@@ -606,6 +776,16 @@ def main():
                 note = plot_field(f, args.scale, ax, label, units, args.zoom)
                 if note:
                     print(f"{PROG}: note: {note}", file=sys.stderr)
+            elif args.shear:
+                pairs = frictional_pairs(f)
+                if not pairs:
+                    print(f"{PROG}: {args.file} has no pair with friction: shear plot "
+                          f"skipped, nothing written")
+                    return 0
+                fig, axes = plt.subplots(len(pairs), 1, figsize=(8, 5 * len(pairs)), squeeze=False,
+                                         layout="constrained")
+                plot_shear(f, axes[:, 0], units, args.zoom, args.axis)
+                fig.suptitle(label)
             else:
                 if "contact" not in f or not len(f["contact"]):
                     print(f"{PROG}: {args.file} has no contact pairs: pressure plot "

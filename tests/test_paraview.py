@@ -12,7 +12,9 @@ samples (quadratic edges), where the master surface (the block's edge, mortar)
 shows the pressure transferred from the slave, so that no contact edge is
 empty. Every grid carries every field (a body's contact fields NaN, a contact
 line's stress NaN and its displacement zero), and each reader renders the
-bodies coloured by each body field (test_readers_show_colours)."""
+bodies coloured by each body field (test_readers_show_colours). A scene with
+friction adds the slave's shear, slip and stick to every grid, and the shear
+ParaView colours by has the HDF5's range (test_friction_shear)."""
 import json
 import os
 import select
@@ -271,3 +273,67 @@ def test_axisymmetric_hoop_stress(tmp_path, display):
         solid, n = colours(out / f"{reader}-solid.png"), colours(out / f"{reader}-stress_hoop.png")
         print(f"{reader} stress_hoop: {n} colours, solid {solid}: {n / solid:.2f} times")
         assert n >= 2 * solid, (reader, n, solid)
+
+
+SHEAR = ROOT / "tests" / "paraview_shear.py"
+
+
+def test_friction_shear(tmp_path, display):
+    """A scene with friction (cattaneo: two load stages, so the file's last
+    time step) shows the friction's fields in every reader: the disc's
+    contact line (the slave's) carries the HDF5's node_shear, node_slip and
+    node_stick bit for bit, the slab's (the master's) its node_shear, the
+    slave's transferred, and the other two as NaN, the bodies all three as
+    NaN, so that Xdmf3ReaderS and OpenDataFile colour by them. The shear's
+    range in ParaView's data information, and the colour map's once a view
+    is coloured by the shear and rescaled to the data, is the HDF5's (min,
+    max) over both lines, exactly (the colour map's to 4 ulp: measured 1 ulp
+    above the largest, its end points rescaled), ParaView skipping the NaN (measured -5.8769,
+    the master's, signed along its own arc, to 5.8663, the slave's largest
+    where its stick zone meets the slip at 0.71 mu p_max). The shear shown
+    is no trivial array: the slave's sum with the HDF5's weights A_j is the
+    JSON's tangential load Q to 4e-3 (measured +1.43e-3, 2.8 times: Q is the
+    whole force across the normal of the zone's chord, the sum runs along
+    the curved arc). Threshold on the shear keeps the two contact lines
+    alone (their points and cells, the bodies' NaN dropped), and they,
+    framed on their loaded part, coloured by the shear show at least 3
+    times the colours of the same view in one solid colour (measured 6.95
+    to 7.05 times: 431 to 437 colours against 62; the lines lie on each
+    other, the legacy reader draws the master's on top, the Xdmf3 readers
+    the slave's)."""
+    run = run_contact(["-options_file", "meshes/cattaneo/cattaneo.opts"], tmp_path, name="cattaneo")
+    out, png = tmp_path / "shear.json", tmp_path / "png"
+    run_pvpython(SHEAR, [run.output_path.with_suffix(".xdmf"), out, png], tmp_path, display)
+    got = json.loads(out.read_text())
+    with run.h5() as h5:
+        g = h5["contact/interface/disc_contact"]
+        want = {f: g[f"node_{f}"][...] for f in ("shear", "slip", "stick")}
+        w = g["node_weight"][...]
+        m = h5["contact/interface/slab_contact"]
+        master = m["node_shear"][...]
+        sizes = [len(h5["bodies/disc/geometry"]), len(h5["bodies/slab/geometry"]), len(w), len(master)]
+        lines = [len(w) + len(master), len(g["node_cells"]) + len(m["node_cells"])]
+    Q = run.summary["contact"]["interface"]["tangential_load"]
+    both = np.r_[want["shear"], master]
+    print(f"int q ds / Q - 1 = {np.sum(w * want['shear']) / Q - 1:+.2e}, shear range {both.min()} .. {both.max()}")
+    assert abs(np.sum(w * want["shear"]) / Q - 1) <= 4e-3
+    for reader, r in got.items():
+        assert r["times"] == [1.0, 2.0], reader
+        assert [b["points"] for b in r["blocks"]] == sizes, reader
+        for k, b in enumerate(r["blocks"]):
+            for f, values in want.items():
+                a = b["arrays"][f]
+                assert a is not None, (reader, k, f)
+                if k == 2:   # the disc's contact line, the slave's
+                    same(a, values)
+                elif k == 3 and f == "shear":   # the slab's, the master's: the shear transferred
+                    same(a, master)
+                else:
+                    assert np.all(np.isnan(a)), (reader, k, f)
+        expected = [float(both.min()), float(both.max())]
+        assert r["range"] == expected, (reader, r["range"])
+        np.testing.assert_allclose(r["colour_range"], expected, rtol=4 * np.finfo(float).eps, atol=0)
+        assert r["threshold"] == lines, (reader, r["threshold"], lines)
+        solid, n = colours(png / f"{reader}-solid.png"), colours(png / f"{reader}-shear.png")
+        print(f"{reader} shear: {n} colours, solid {solid}: {n / solid:.2f} times")
+        assert n >= 3 * solid, (reader, n, solid)

@@ -32,20 +32,25 @@ def test_console_no_l2_error_without_exact_solution(contact):
 
 
 @pytest.mark.skipif(not (ROOT / "build/.deps-installed").exists(), reason="make run would install dependencies first")
-@pytest.mark.parametrize("scene", ["disc", "hertz"])
+@pytest.mark.parametrize("scene", ["disc", "hertz", "cattaneo"])
 def test_make_run_lists_the_figures_written(scene):
     """The Figures line names the PNGs this run wrote: no pressure plot for a
-    scene without contact, and no stale one from before."""
+    scene without contact, no shear plot for one without friction (the
+    shear's for cattaneo), and no stale one from before."""
     stale = ROOT / "out" / f"{scene}-pressure.png"
     stale.parent.mkdir(exist_ok=True)
     stale.write_bytes(b"stale")
+    stale_shear = ROOT / "out" / f"{scene}-shear.png"
+    stale_shear.write_bytes(b"stale")
     proc = subprocess.run(["make", "--no-print-directory", "run", f"SCENE={scene}"], cwd=ROOT, env=ENV,
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
     line = [l for l in proc.stdout.splitlines() if l.startswith("Figures:")][-1]
     figures = line.split(";")[0].split()[1:]
-    expected = ([f"out/{scene}-pressure.png"] if scene == "hertz" else []) + [f"out/{scene}-vonmises.png"]
+    expected = ([f"out/{scene}-pressure.png"] if scene != "disc" else []) \
+        + ([f"out/{scene}-shear.png"] if scene == "cattaneo" else []) + [f"out/{scene}-vonmises.png"]
     assert figures == expected, line
     for f in figures:
         assert (ROOT / f).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert stale.exists() == (scene == "hertz")
+    assert stale.exists() == (scene != "disc")
+    assert stale_shear.exists() == (scene == "cattaneo")

@@ -324,8 +324,10 @@ static void ContactSideLineCells(const ContactSide *S, PetscBool nodal, PetscInt
    too), and the line cells through them (cells or node_cells,
    ContactSideLineCells); empty datasets and no cells for a surface without
    a profile; as attributes its body, group, centre, samples, slave and
-   surface_index. The pair's figures as attributes of /contact/<pair>
-   (collective). */
+   surface_index. The pair's figures as attributes of /contact/<pair>,
+   with friction also mu (friction), stick_half_width, normal_load,
+   tangential_load and, where Hertz radii are declared in plane strain,
+   mindlin_c, as the JSON has them (collective). */
 PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], PetscViewer v)
 {
   MPI_Comm    comm;
@@ -420,14 +422,23 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "hertz_pmax", PETSC_REAL, &R->hertzPmax));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "pressure_l2_error", PETSC_REAL, &R->l2err));
   }
+  if (R->friction) { /* the JSON's friction figures, as rank 0 has them, for plot_hertz.py's Mindlin curve */
+    const char *names[5] = {"friction", "stick_half_width", "normal_load", "tangential_load", "mindlin_c"};
+    PetscReal   val[5]   = {spec->friction, R->stickHalfWidth, R->normalLoad, R->tangentialLoad, R->mindlinC};
+    PetscCallMPI(MPI_Bcast(val, 5, MPIU_REAL, 0, comm));
+    for (PetscInt k = 0; k < (spec->hertz && !spec->axisym ? 5 : 4); ++k) ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[k], PETSC_REAL, &val[k]));
+  }
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
 }
 
 /* Rank 0. A surface as a line mesh on its current positions (x), with the
    pressure, the gap (weighted, for nodes) and the arc position s at its
-   points; the grid is named <pair>:<body>:<group>. */
-PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, const char h5[])
+   points; the grid is named <pair>:<body>:<group>. In a scene with friction
+   (friction) also the shear, slip and stick: a frictional pair's slave
+   surface's node_shear, node_slip and node_stick, its master's node_shear
+   (transferred) and NaN for the other two, NaN on any other surface. */
+PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], FILE *fp, const char h5[], PetscBool friction)
 {
   const char *pre = R->nodal ? "node_" : "";
 
@@ -449,6 +460,11 @@ PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairS
     for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) {
       PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, XdmfSurfaceScalars[k]));
       XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)S->n, 1, path);
+    }
+    for (PetscInt k = 0; k < XDMF_FRICTION_SCALARS && friction; ++k) {
+      if (R->friction && (S->slave || k == 0)) PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, XdmfFrictionScalars[k])); /* the master has the shear alone, transferred */
+      else PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_nan", h5, spec->name, body, grp));
+      XdmfWriteAttribute(fp, XdmfFrictionScalars[k], (int)S->n, 1, path);
     }
     /* the bodies' fields (xdmf.h): no displacement to apply (the grid is at the current positions), no stress */
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/contact/%s/%s_%s/xdmf_zero_xyz", h5, spec->name, body, grp));

@@ -217,12 +217,12 @@ static PetscErrorCode ContactTermWriteHDF5(EnergyTerm t, Body bodies[], PetscVie
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ContactTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+static PetscErrorCode ContactTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[], PetscBool friction)
 {
   const ContactTerm *b = (const ContactTerm *)t->data;
 
   PetscFunctionBeginUser;
-  PetscCall(ContactReportWriteXDMF(&b->report, &b->spec, bodies, fp, h5));
+  PetscCall(ContactReportWriteXDMF(&b->report, &b->spec, bodies, fp, h5, friction));
   PetscFunctionReturn(0);
 }
 

@@ -11,10 +11,24 @@
 #include "xdmf.h"
 #include "stages.h"
 
+/* The terms with a stick half-width at the end of stage k. */
+static PetscInt ProblemFrictionalTerms(Problem p, PetscInt k)
+{
+  PetscInt n = 0;
+
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscReal c;
+    PetscBool has;
+    if (!EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) && has) n++;
+  }
+  return n;
+}
+
 /* The XDMF grid of each body (rank 0): its cells and reference coordinates
    from /bodies/<body>, its fields from the group fields/<body> of the HDF5
-   file base (/bodies, or a load stage's /stages/<k>/bodies). */
-static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], const char base[], const char fields[])
+   file base (/bodies, or a load stage's /stages/<k>/bodies); NaN for the
+   contact fields, the friction's too in a scene with friction. */
+static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], const char base[], const char fields[], PetscBool friction)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
@@ -37,6 +51,7 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
     }
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
     for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
+    for (PetscInt k = 0; k < XDMF_FRICTION_SCALARS && friction; ++k) XdmfWriteAttribute(fp, XdmfFrictionScalars[k], (int)N, 1, path);
     fprintf(fp, "   </Grid>\n");
   }
   PetscFunctionReturn(0);
@@ -55,7 +70,8 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
    the end of stage k (/stages/k), step S the final state as above. */
 static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
 {
-  const PetscInt    S = p->opt.loadStages;
+  const PetscInt    S        = p->opt.loadStages;
+  const PetscBool   friction = (PetscBool)(ProblemFrictionalTerms(p, 1) > 0); /* every grid carries the friction's fields (xdmf.h) */
   PetscMPIInt       rank;
   const char       *base = strrchr(out->h5, '/');
   ContactOutputText text = {NULL, NULL, 0};
@@ -73,13 +89,13 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
       char fields[64];
       PetscCall(PetscSNPrintf(fields, sizeof(fields), "/stages/%d/bodies", (int)k));
       fprintf(fp, "  <Grid Name=\"%s_stage_%d\" GridType=\"Collection\" CollectionType=\"Spatial\">\n   <Time Value=\"%d\"/>\n", p->opt.scene, (int)k, (int)k);
-      PetscCall(WriteXDMFBodies(fp, p, F, base, fields));
+      PetscCall(WriteXDMFBodies(fp, p, F, base, fields, friction));
       fprintf(fp, "  </Grid>\n");
     }
     fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
     if (S > 1) fprintf(fp, "   <Time Value=\"%d\"/>\n", (int)S);
-    PetscCall(WriteXDMFBodies(fp, p, F, base, "/bodies"));
-    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base));
+    PetscCall(WriteXDMFBodies(fp, p, F, base, "/bodies", friction));
+    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base, friction));
     fprintf(fp, "  </Grid>\n");
     if (S > 1) fprintf(fp, "  </Grid>\n");
     fprintf(fp, " </Domain>\n</Xdmf>\n");
@@ -377,19 +393,6 @@ static void JSONLoadPath(FILE *fp, Problem p)
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");
-}
-
-/* The terms with a stick half-width at the end of stage k. */
-static PetscInt ProblemFrictionalTerms(Problem p, PetscInt k)
-{
-  PetscInt n = 0;
-
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscReal c;
-    PetscBool has;
-    if (!EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) && has) n++;
-  }
-  return n;
 }
 
 /* -load_stages: each stage's end, its load parameter k (1..S), the

@@ -96,10 +96,10 @@ PetscErrorCode EnergyTermWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode EnergyTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[])
+PetscErrorCode EnergyTermWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[], PetscBool friction)
 {
   PetscFunctionBeginUser;
-  if (t->ops.writexdmf) PetscCall(t->ops.writexdmf(t, bodies, fp, h5));
+  if (t->ops.writexdmf) PetscCall(t->ops.writexdmf(t, bodies, fp, h5, friction));
   PetscFunctionReturn(0);
 }
 
