@@ -42,7 +42,7 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   k_p = 1e10 (stress-lmvm-gttol11, stress-lmvm-decrement), against Newton's;
 - penalty: bench/penalty/results.json (scripts/penalty_study.py: the automatic
   penalty's error against the mesh's);
-- rigid, rigid-adequacy, rigid-free: bench/rigid/results.json (written by
+- rigid, rigid-adequacy, rigid-free and the phrase rigid-adequacy-phrase: bench/rigid/results.json (written by
   --measure rigid: rigid_study.py's scenes, each run once but the timed
   pairs, alternated 3 times; the reference scene with the disc E2/E1 times
   stiffer against the disc rigid; the rigid bodies' unknowns: force control,
@@ -669,6 +669,11 @@ def render_rigid_adequacy():
     return rigid_study.adequacy_table(load("rigid")["adequacy"])
 
 
+def render_rigid_adequacy_phrase():
+    import rigid_study
+    return rigid_study.adequacy_phrase(load("rigid")["adequacy"])
+
+
 def and_list(items):
     """'a', 'a and b', 'a, b and c'."""
     return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else "".join(items)
@@ -977,7 +982,8 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
-           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio}
+           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio,
+           "rigid-adequacy-phrase": render_rigid_adequacy_phrase}
 
 
 def kind(name):

@@ -96,6 +96,13 @@ def adequacy_table(rows):
     return "\n".join(out) + "\n"
 
 
+def adequacy_phrase(rows):
+    """The adequacy table in a phrase: the rigid disc's error in P at each E2/E1."""
+    ratios = " / ".join(f"{r['ratio']:g}" for r in rows)
+    dP = " / ".join(f"{100 * (r['P_rigid'] / r['P'] - 1):+.2f}" for r in rows)
+    return f"a disc {ratios} times stiffer than the block taken as rigid errs P by {dP} %"
+
+
 def sadowsky_l2(h5, P):
     """(slave surface, relative L2 distance of its nodal pressure from
     Sadowsky's p = P / (pi sqrt(b^2 - x^2)) over |x| < 0.6 b, node weights)."""
