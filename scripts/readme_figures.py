@@ -576,7 +576,7 @@ def measure_rigid():
 
 def render_rigid():
     import rigid_study
-    return rigid_study.table(load("rigid")["scenes"])
+    return rigid_study.table(load("rigid")["scenes"], load("rigid")["free"])
 
 
 def measure_rigid_free():

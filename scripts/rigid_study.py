@@ -219,7 +219,8 @@ def free_table(rows):
     return "\n".join(out) + "\n"
 
 
-def table(rows):
+def table(rows, free=()):
+    """The scenes' rows, then the rigid unknowns' cases with mortar (free: measure_free's rows; gpts beside them in free_table)."""
     out = ["| run | dofs | Newton iterations | solve | P | against its reference |", "|---|---|---|---|---|---|"]
     rigidP = rows[0]["P"]
     for r in rows:
@@ -236,6 +237,9 @@ def table(rows):
             ref = (f"Hertz: p_max {100 * (r['fem_pmax'] / r['hertz_pmax'] - 1):+.2f} %, second-moment a "
                    f"{100 * (r['fem_a'] / r['hertz_a'] - 1):+.2f} %")
         out.append(f"| {r['scene']} | {r['dofs']:,} | {r['iterations']} | {r['solve']:.2f} s | {r['P']:.6g} | {ref} |")
+    for r in free:
+        if r["scene"].endswith(", mortar"):
+            out.append(f"| {r['scene']} | {r['dofs']:,} | {r['iterations']} | {r['solve']:.2f} s | {r['P']:.6g} | {r['ref']} |")
     return "\n".join(out) + "\n"
 
 
