@@ -62,7 +62,8 @@ run: bin/contact meshes
 # tests/conftest.py, and 2-rank runs on 4 workers oversubscribe the cores):
 # 777 tests in clean clones of 07a0451 on the quiet machine, make test on 4
 # workers 6 min 26 s (674 s of CPU), on 3 6 min 10 s (634 s); 896 tests in
-# clean clones of f362485 on 3, 5 min 32 s and 5 min 56 s (docs/testing.md).
+# clean clones of d5cd858 and f362485 on 3, 5 min 32 s and 5 min 56 s
+# (docs/testing.md).
 # --dist loadgroup
 # keeps the tests that share a module- or session-scoped fixture on one worker
 # (tests/conftest.py), so each shared run is made once.
