@@ -60,6 +60,8 @@ const PetscReal *FrictionGetShear(Friction);
    with a weight (A[j] > 0), sorted by arc position as the report's nodal
    sets, into the viewer's current group. */
 PetscErrorCode FrictionWriteHDF5(Friction, const PetscReal A[], PetscViewer);
+/* Collective: the same sets at the end of load stage k (1..FrictionGetStages' n). */
+PetscErrorCode FrictionWriteStageHDF5(Friction, PetscInt k, const PetscReal A[], PetscViewer);
 /* The last converged increment's friction force on the slave's body,
    -sum_j A_j q_j tau_j (the slave rows of b_j sum to tau_j: the shape
    functions sum to 1 and W_j / C_j integrates to 1). */

@@ -102,6 +102,7 @@ struct _n_Friction {
   PetscReal  *xaccN[2], *selN, *slipN, *boundN; /* that state (FrictionBegin makes it the accepted one) */
   PetscReal  *stick, *q, *p;      /* [nn] the last converged increment's stick, shear and pressure */
   PetscReal  *stageC;             /* [nstageMax] stick half-width at each stage's end */
+  PetscReal  *stageSet;           /* [nstageMax][3][nn] shear, accumulated slip and stick at each stage's end */
   PetscInt    nstage, nstageMax;
 };
 
@@ -138,6 +139,7 @@ PetscErrorCode FrictionDestroy(Friction *fr)
   PetscCall(PetscFree5(f->s, f->A, f->tau, f->bound, f->rowStart));
   PetscCall(PetscFree(f->order));
   PetscCall(PetscFree(f->stageC));
+  PetscCall(PetscFree(f->stageSet));
   PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
   PetscCall(PetscFree4(f->xacc[0], f->xacc[1], f->xaccN[0], f->xaccN[1]));
   PetscCall(PetscFree6(f->sel, f->slip, f->stick, f->q, f->p, f->boundAcc));
@@ -447,11 +449,17 @@ PetscErrorCode FrictionAccept(Friction f, const ContactSurface S[2], PetscReal k
   f->pending = PETSC_TRUE;
   if (load > 0.5 && PetscAbsReal(load - PetscFloorReal(load + 0.5)) < 1e-12) {
     const PetscInt k = (PetscInt)PetscFloorReal(load + 0.5);
+    PetscReal     *set;
     if (k > f->nstageMax) {
       const PetscInt n = PetscMax(2 * k, 8);
       PetscCall(PetscRealloc(sizeof(PetscReal) * (size_t)n, &f->stageC));
+      PetscCall(PetscRealloc(sizeof(PetscReal) * (size_t)n * 3 * (size_t)f->nn + 1, &f->stageSet));
       f->nstageMax = n;
     }
+    set = &f->stageSet[(k - 1) * 3 * f->nn];
+    PetscCall(PetscArraycpy(set, f->q, f->nn));
+    PetscCall(PetscArraycpy(set + f->nn, f->slipN, f->nn));
+    PetscCall(PetscArraycpy(set + 2 * f->nn, f->stick, f->nn));
     PetscCall(FrictionStickHalfWidth(f, &f->stageC[k - 1]));
     f->nstage = PetscMax(f->nstage, k);
   }
@@ -543,11 +551,11 @@ static PetscErrorCode FrictionSortedNodes(Friction f, const PetscReal A[], Petsc
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionWriteHDF5(Friction f, const PetscReal A[], PetscViewer v)
+/* node_shear, node_slip and node_stick of the values val[3] (per slave node) into the viewer's current group. */
+static PetscErrorCode FrictionWriteSets(Friction f, const PetscReal A[], const PetscReal *val[3], PetscViewer v)
 {
-  const char      *names[3] = {"node_shear", "node_slip", "node_stick"};
-  const PetscReal *val[3]   = {f->q, f->pending ? f->slipN : f->slip, f->stick};
-  PetscInt         n, *order;
+  const char *names[3] = {"node_shear", "node_slip", "node_stick"};
+  PetscInt    n, *order;
 
   PetscFunctionBeginUser;
   PetscCall(FrictionSortedNodes(f, A, &n, &order));
@@ -565,6 +573,26 @@ PetscErrorCode FrictionWriteHDF5(Friction f, const PetscReal A[], PetscViewer v)
     PetscCall(VecDestroy(&vec));
   }
   PetscCall(PetscFree(order));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionWriteHDF5(Friction f, const PetscReal A[], PetscViewer v)
+{
+  const PetscReal *val[3] = {f->q, f->pending ? f->slipN : f->slip, f->stick};
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionWriteSets(f, A, val, v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionWriteStageHDF5(Friction f, PetscInt k, const PetscReal A[], PetscViewer v)
+{
+  const PetscReal *set    = &f->stageSet[(k - 1) * 3 * f->nn];
+  const PetscReal *val[3] = {set, set + f->nn, set + 2 * f->nn};
+
+  PetscFunctionBeginUser;
+  PetscCheck(k >= 1 && k <= f->nstage, f->comm, PETSC_ERR_PLIB, "friction: stage %" PetscInt_FMT " of %" PetscInt_FMT " recorded", k, f->nstage);
+  PetscCall(FrictionWriteSets(f, A, val, v));
   PetscFunctionReturn(0);
 }
 

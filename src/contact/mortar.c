@@ -1786,7 +1786,8 @@ static PetscErrorCode MortarWriteMasterShear(const Mortar *m, PetscInt ms, Petsc
 }
 
 /* The report's sets, and the slave surface's friction: node_shear, node_slip, node_stick, and the
-   master's node_shear transferred. */
+   master's node_shear transferred; with -load_stages, the slave's friction sets at each earlier
+   stage's end under /stages/<k>/contact/<pair>/<surface>. */
 static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
 {
   Mortar        *m = (Mortar *)t->data;
@@ -1800,10 +1801,19 @@ static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v
   PetscCall(FrictionWriteHDF5(m->fr, m->side[s].A, v));
   PetscCall(PetscViewerHDF5PopGroup(v));
   if (m->fr) {
+    PetscInt         n;
+    const PetscReal *c;
     PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, bodies[m->b.S[1 - s].body]->name, m->b.S[1 - s].group));
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     PetscCall(MortarWriteMasterShear(m, 1 - s, v, t->comm));
     PetscCall(PetscViewerHDF5PopGroup(v));
+    PetscCall(FrictionGetStages(m->fr, &n, &c));
+    for (PetscInt k = 1; k < n; ++k) { /* -load_stages: each earlier stage's end (the last is the sets above) */
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/contact/%s/%s_%s", (int)k, m->b.spec.name, bodies[m->b.S[s].body]->name, m->b.S[s].group));
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      PetscCall(FrictionWriteStageHDF5(m->fr, k, m->side[s].A, v));
+      PetscCall(PetscViewerHDF5PopGroup(v));
+    }
   }
   PetscFunctionReturn(0);
 }
