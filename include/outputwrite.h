@@ -35,4 +35,7 @@ PetscErrorCode ContactOutputLibraryWriteBegin(void);
    the next collective call and wait there for the rank that failed. */
 PetscErrorCode ContactOutputCollective(PetscViewer, PetscErrorCode ierr);
 #define ContactOutputCall(v, call) PetscCall(ContactOutputCollective((v), (call)))
+/* Collective, between Begin and End: this rank's n values val[order[i]]
+   (order NULL: val[i]) as a dataset name in v's current group. */
+PetscErrorCode ContactOutputWriteValues(PetscViewer v, MPI_Comm, const char name[], PetscInt n, const PetscReal val[], const PetscInt order[]);
 PetscErrorCode ContactOutputLibraryWriteEnd(MPI_Comm, PetscErrorCode ierr, PetscErrorCode (*close)(void *), void *ctx, const char tmp[], const char name[]);

@@ -76,5 +76,9 @@ PetscErrorCode ContactSurfaceAddGradient(ContactSurface *, Body);
 PetscErrorCode ContactSurfaceArc(const ContactSurface *, PetscInt e, PetscReal xi, PetscReal *s);
 /* Outward unit normal n[nn][2] at each node, current configuration (edge normals averaged at a shared node). */
 void ContactSurfaceNodalNormals(const ContactSurface *, PetscReal n[]);
+/* Unit tangent t[nn][2] at each node along the arc (increasing arc position), current configuration (averaged alike). */
+void ContactSurfaceNodalTangents(const ContactSurface *, PetscReal t[]);
+/* Arc position s[nn] (reference length) of each node. */
+PetscErrorCode ContactSurfaceNodeArcs(const ContactSurface *, PetscReal s[]);
 /* Length of the whole surface (the end of the arc). */
 PetscReal ContactSurfaceLength(const ContactSurface *);

@@ -162,12 +162,7 @@ PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt sla
   PetscCall(PetscMalloc4(2 * S[0].nn, &f->xacc[0], 2 * S[1].nn, &f->xacc[1], 2 * S[0].nn, &f->xaccN[0], 2 * S[1].nn, &f->xaccN[1]));
   PetscCall(PetscCalloc6(f->nn, &f->sel, f->nn, &f->slip, f->nn, &f->stick, f->nn, &f->q, f->nn, &f->p, f->nn, &f->boundAcc));
   PetscCall(PetscCalloc3(f->nn, &f->selN, f->nn, &f->slipN, f->nn, &f->boundN));
-  for (PetscInt e = 0; e < Ss->ne; ++e) {
-    const PetscInt *en = &Ss->enodes[3 * e];
-    f->s[en[0]]        = Ss->edir[e] > 0 ? Ss->s0[e] : Ss->s0[e] + Ss->elen[e];
-    f->s[en[1]]        = Ss->edir[e] > 0 ? Ss->s0[e] + Ss->elen[e] : Ss->s0[e];
-    PetscCall(ContactSurfaceArc(Ss, e, 0.0, &f->s[en[2]]));
-  }
+  PetscCall(ContactSurfaceNodeArcs(Ss, f->s));
   for (PetscInt j = 0; j < f->nn && Ss->axisym; ++j)
     if (PetscAbsReal(Ss->X[2 * j]) <= 1e-8 * ContactSurfaceLength(Ss)) f->sAxis = f->s[j];
   {
@@ -216,31 +211,6 @@ PetscErrorCode FrictionRestore(Friction f)
   PetscFunctionBeginUser;
   PetscCall(PetscArraycpy(f->bound, f->boundAcc, f->nn));
   PetscFunctionReturn(0);
-}
-
-/* Unit tangents along the arc at the slave's nodes, current configuration
-   (the edges' tangents averaged at a shared node). */
-static void FrictionTangents(Friction f, const ContactSurface *S)
-{
-  const PetscReal xi[3] = {-1.0, 1.0, 0.0};
-
-  for (PetscInt k = 0; k < 2 * f->nn; ++k) f->tau[k] = 0.0;
-  for (PetscInt e = 0; e < S->ne; ++e)
-    for (PetscInt i = 0; i < 3; ++i) {
-      const PetscInt j = S->enodes[3 * e + i];
-      PetscReal      x[2], t[2], l;
-      EdgeEval(S->x, &S->enodes[3 * e], xi[i], x, t);
-      l = S->edir[e] / PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
-      f->tau[2 * j] += t[0] * l;
-      f->tau[2 * j + 1] += t[1] * l;
-    }
-  for (PetscInt j = 0; j < f->nn; ++j) {
-    const PetscReal l = PetscSqrtReal(f->tau[2 * j] * f->tau[2 * j] + f->tau[2 * j + 1] * f->tau[2 * j + 1]);
-    if (l > 0) {
-      f->tau[2 * j] /= l;
-      f->tau[2 * j + 1] /= l;
-    }
-  }
 }
 
 /* The rows b_j from this rank's points, gathered on every rank, sorted by
@@ -322,7 +292,7 @@ PetscErrorCode FrictionLag(Friction f, const ContactSurface S[2], PetscInt np, c
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(FRICTION_Lag, 0, 0, 0, 0));
-  FrictionTangents(f, &S[f->slave]);
+  ContactSurfaceNodalTangents(&S[f->slave], f->tau);
   PetscCall(FrictionBuildRows(f, S, np, pts, cover));
   for (PetscInt j = 0; j < f->nn; ++j) {
     const PetscReal b = p ? f->mu * p[j] : f->bound[j];
@@ -534,20 +504,11 @@ const PetscReal *FrictionGetShear(Friction f)
    by arc position, as the report writes its nodal sets. */
 static PetscErrorCode FrictionSortedNodes(Friction f, const PetscReal A[], PetscInt *n, PetscInt **order)
 {
-  PetscReal *key;
-
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(f->nn + 1, order));
-  PetscCall(PetscMalloc1(f->nn + 1, &key));
   *n = 0;
-  for (PetscInt j = 0; j < f->nn && !f->rank; ++j)
-    if (A[j] > 0) {
-      key[*n]      = f->s[j];
-      (*order)[*n] = j;
-      (*n)++;
-    }
-  PetscCall(PetscSortRealWithArrayInt(*n, key, *order));
-  PetscCall(PetscFree(key));
+  for (PetscInt k = 0; k < f->nn && !f->rank; ++k)
+    if (A[f->order[k]] > 0) (*order)[(*n)++] = f->order[k]; /* f->order: by arc position */
   PetscFunctionReturn(0);
 }
 
@@ -555,23 +516,11 @@ static PetscErrorCode FrictionSortedNodes(Friction f, const PetscReal A[], Petsc
 static PetscErrorCode FrictionWriteSets(Friction f, const PetscReal A[], const PetscReal *val[3], PetscViewer v)
 {
   const char *names[3] = {"node_shear", "node_slip", "node_stick"};
-  PetscInt    n, *order;
+  PetscInt    n = 0, *order;
 
   PetscFunctionBeginUser;
   PetscCall(FrictionSortedNodes(f, A, &n, &order));
-  for (PetscInt k = 0; k < 3; ++k) {
-    Vec          vec;
-    PetscScalar *a;
-    PetscCall(VecCreate(f->comm, &vec));
-    PetscCall(VecSetSizes(vec, n, PETSC_DETERMINE));
-    PetscCall(VecSetType(vec, VECSTANDARD));
-    PetscCall(PetscObjectSetName((PetscObject)vec, names[k]));
-    PetscCall(VecGetArray(vec, &a));
-    for (PetscInt i = 0; i < n; ++i) a[i] = val[k][order[i]];
-    PetscCall(VecRestoreArray(vec, &a));
-    ContactOutputCall(v, VecView(vec, v));
-    PetscCall(VecDestroy(&vec));
-  }
+  for (PetscInt k = 0; k < 3; ++k) PetscCall(ContactOutputWriteValues(v, f->comm, names[k], n, val[k], order));
   PetscCall(PetscFree(order));
   PetscFunctionReturn(0);
 }

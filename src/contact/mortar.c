@@ -1258,6 +1258,20 @@ static PetscReal MortarStretch(const ContactSurface *S, PetscInt e, PetscReal xi
   return S->axisym && X[0] > 0 ? l * x[0] / X[0] : l;
 }
 
+/* Whether x, whose closest point of surface S is (e, eta), lies past an end
+   of S (not a half model's cut, which its image continues) by more than a
+   millionth of the end edge. */
+static PetscBool MortarPastEnd(const ContactSurface *S, PetscInt e, PetscReal eta, const PetscReal x[2])
+{
+  const PetscInt *en = &S->enodes[3 * e];
+  const PetscInt  v  = en[eta > 0 ? 1 : 0];
+  PetscReal       xe[2], t[2];
+
+  if (PetscAbsReal(eta) < 1.0 || !S->endNode[v] || ContactSurfaceCutSide(S, v) != 0) return PETSC_FALSE;
+  EdgeEval(S->x, en, eta > 0 ? 1.0 : -1.0, xe, t);
+  return (PetscBool)((eta > 0 ? 1.0 : -1.0) * ((x[0] - xe[0]) * t[0] + (x[1] - xe[1]) * t[1]) > 1e-6 * S->elen[e] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]));
+}
+
 /* The slave's pressure (surface s as slave) at point x of the other
    surface, per unit current measure: the slave's nodal pressures k_p
    <-g_j>_+ (per unit of its own reference measure) interpolated linearly,
@@ -1277,14 +1291,8 @@ static PetscReal MortarSlavePressureAt(const Mortar *m, PetscInt s, const PetscR
   PetscInt              e;
 
   ContactSearchFindClosest(m->b.search[s], x, &e, &eta);
-  if (e < 0) return 0.0;
+  if (e < 0 || MortarPastEnd(S, e, eta, x)) return 0.0;
   en = &S->enodes[3 * e];
-  if (PetscAbsReal(eta) >= 1.0) {
-    const PetscInt v = en[eta > 0 ? 1 : 0];
-    PetscReal      xe[2], t[2];
-    EdgeEval(S->x, en, eta > 0 ? 1.0 : -1.0, xe, t);
-    if (S->endNode[v] && ContactSurfaceCutSide(S, v) == 0 && (eta > 0 ? 1.0 : -1.0) * ((x[0] - xe[0]) * t[0] + (x[1] - xe[1]) * t[1]) > 1e-6 * S->elen[e] * PetscSqrtReal(t[0] * t[0] + t[1] * t[1])) return 0.0;
-  }
   for (PetscInt i = 0; i < 3; ++i) {
     const PetscReal g = D->gj[en[i]];
     p[i]              = D->A[en[i]] > 0 && !PetscIsInfOrNanReal(g) ? (g < 0 ? -m->b.kp * g : 0.0) : -1.0;
@@ -1601,10 +1609,8 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
         if (D->first[en[i]] < 0 || wpos[e] < wpos[D->first[en[i]]]) D->first[en[i]] = e;
         D->nodeEdgeStart[en[i] + 1]++;
       }
-      D->s[en[0]] = S->edir[e] > 0 ? S->s0[e] : S->s0[e] + S->elen[e];
-      D->s[en[1]] = S->edir[e] > 0 ? S->s0[e] + S->elen[e] : S->s0[e];
-      PetscCall(ContactSurfaceArc(S, e, 0.0, &D->s[en[2]]));
     }
+    PetscCall(ContactSurfaceNodeArcs(S, D->s));
     if (S->axisym) { /* a corner on the axis carries no gap: its weight
                         int N_j 2 pi r dS is 0 on a straight edge from r = 0
                         (N_j r has zero mean there) and a sliver of its
@@ -1713,13 +1719,8 @@ static void MortarSlaveShearAt(const Mortar *m, PetscInt s, const PetscReal q[],
 
   t[0] = t[1] = 0.0;
   ContactSearchFindClosest(m->b.search[s], x, &e, &eta);
-  if (e < 0) return;
+  if (e < 0 || MortarPastEnd(S, e, eta, x)) return;
   en = &S->enodes[3 * e];
-  if (PetscAbsReal(eta) >= 1.0) { /* past an end of the slave surface (not a half model's cut): nothing, as the pressure */
-    const PetscInt v = en[eta > 0 ? 1 : 0];
-    EdgeEval(S->x, en, eta > 0 ? 1.0 : -1.0, xe, te);
-    if (S->endNode[v] && ContactSurfaceCutSide(S, v) == 0 && (eta > 0 ? 1.0 : -1.0) * ((x[0] - xe[0]) * te[0] + (x[1] - xe[1]) * te[1]) > 1e-6 * S->elen[e] * PetscSqrtReal(te[0] * te[0] + te[1] * te[1])) return;
-  }
   eta = PetscMax(-1.0, PetscMin(1.0, eta));
   qe  = eta < 0 ? -eta * q[en[0]] + (1.0 + eta) * q[en[2]] : (1.0 - eta) * q[en[2]] + eta * q[en[1]];
   EdgeEval(S->x, en, eta, xe, te);
@@ -1741,47 +1742,27 @@ static PetscErrorCode MortarWriteMasterShear(const Mortar *m, PetscInt ms, Petsc
 {
   const ContactSurface *S = &m->b.S[ms];
   const MortarSide     *D = &m->side[ms];
-  const PetscReal      *q = FrictionGetShear(m->fr), xi[3] = {-1.0, 1.0, 0.0};
+  const PetscReal      *q = FrictionGetShear(m->fr);
   PetscMPIInt           rank;
-  PetscReal            *key, *val;
+  PetscReal            *key, *val, *tau;
   PetscInt             *order, n = 0;
-  Vec                   vec;
-  PetscScalar          *a;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscMalloc3(S->nn + 1, &key, S->nn + 1, &val, S->nn + 1, &order));
+  PetscCall(PetscMalloc4(S->nn + 1, &key, S->nn + 1, &val, S->nn + 1, &order, 2 * S->nn + 1, &tau));
+  if (!rank) ContactSurfaceNodalTangents(S, tau);
   for (PetscInt j = 0; j < S->nn && !rank; ++j) {
-    PetscReal t[2], tau[2] = {0.0, 0.0}, l;
+    PetscReal t[2];
     if (D->AN[j] <= 0) continue;
-    for (PetscInt k = D->nodeEdgeStart[j]; k < D->nodeEdgeStart[j + 1]; ++k) {
-      const PetscInt e = D->nodeEdge[k];
-      for (PetscInt i = 0; i < 3; ++i)
-        if (S->enodes[3 * e + i] == j) {
-          PetscReal xe[2], te[2];
-          EdgeEval(S->x, &S->enodes[3 * e], xi[i], xe, te);
-          l = PetscSqrtReal(te[0] * te[0] + te[1] * te[1]);
-          if (l > 0) tau[0] += S->edir[e] * te[0] / l, tau[1] += S->edir[e] * te[1] / l;
-        }
-    }
-    l = PetscSqrtReal(tau[0] * tau[0] + tau[1] * tau[1]);
     MortarSlaveShearAt(m, 1 - ms, q, &S->x[2 * j], t);
     key[n]   = D->s[j];
     order[n] = n;
-    val[n]   = l > 0 ? (t[0] * tau[0] + t[1] * tau[1]) / l * MortarNodeStretch(m, ms, j) : 0.0; /* -(-t) . tau_m */
+    val[n]   = (t[0] * tau[2 * j] + t[1] * tau[2 * j + 1]) * MortarNodeStretch(m, ms, j); /* -(-t) . tau_m */
     n++;
   }
   PetscCall(PetscSortRealWithArrayInt(n, key, order));
-  PetscCall(VecCreate(comm, &vec));
-  PetscCall(VecSetSizes(vec, n, PETSC_DETERMINE));
-  PetscCall(VecSetType(vec, VECSTANDARD));
-  PetscCall(PetscObjectSetName((PetscObject)vec, "node_shear"));
-  PetscCall(VecGetArray(vec, &a));
-  for (PetscInt i = 0; i < n; ++i) a[i] = val[order[i]];
-  PetscCall(VecRestoreArray(vec, &a));
-  ContactOutputCall(v, VecView(vec, v));
-  PetscCall(VecDestroy(&vec));
-  PetscCall(PetscFree3(key, val, order));
+  PetscCall(ContactOutputWriteValues(v, comm, "node_shear", n, val, order));
+  PetscCall(PetscFree4(key, val, order, tau));
   PetscFunctionReturn(0);
 }
 

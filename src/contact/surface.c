@@ -624,27 +624,52 @@ PetscErrorCode ContactSurfaceArc(const ContactSurface *S, PetscInt e, PetscReal 
    mid-edge node its edge's, on a node shared by two edges the mean of their
    two normals there (the bisector: the edges of a finite element surface
    meet at a small corner), normalised. */
-void ContactSurfaceNodalNormals(const ContactSurface *S, PetscReal n[])
+/* Unit vectors u[nn][2] at the nodes, current configuration: each edge's
+   unit tangent times sign[e], turned a quarter (normal) or not, summed at
+   a shared node and normalised. */
+static void SurfaceNodalUnitVectors(const ContactSurface *S, const PetscReal sign[], PetscBool normal, PetscReal u[])
 {
   const PetscReal xi[3] = {-1.0, 1.0, 0.0};
 
-  for (PetscInt k = 0; k < 2 * S->nn; ++k) n[k] = 0.0;
+  for (PetscInt k = 0; k < 2 * S->nn; ++k) u[k] = 0.0;
   for (PetscInt e = 0; e < S->ne; ++e)
     for (PetscInt i = 0; i < 3; ++i) {
       const PetscInt j = S->enodes[3 * e + i];
       PetscReal      p[2], t[2], l;
       EdgeEval(S->x, &S->enodes[3 * e], xi[i], p, t);
-      l = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
-      n[2 * j] += S->esign[e] * t[1] / l;
-      n[2 * j + 1] -= S->esign[e] * t[0] / l;
+      l = sign[e] / PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+      u[2 * j] += (normal ? t[1] : t[0]) * l;
+      u[2 * j + 1] += (normal ? -t[0] : t[1]) * l;
     }
   for (PetscInt j = 0; j < S->nn; ++j) {
-    const PetscReal l = PetscSqrtReal(n[2 * j] * n[2 * j] + n[2 * j + 1] * n[2 * j + 1]);
+    const PetscReal l = PetscSqrtReal(u[2 * j] * u[2 * j] + u[2 * j + 1] * u[2 * j + 1]);
     if (l > 0) {
-      n[2 * j] /= l;
-      n[2 * j + 1] /= l;
+      u[2 * j] /= l;
+      u[2 * j + 1] /= l;
     }
   }
+}
+
+void ContactSurfaceNodalNormals(const ContactSurface *S, PetscReal n[])
+{
+  SurfaceNodalUnitVectors(S, S->esign, PETSC_TRUE, n);
+}
+
+void ContactSurfaceNodalTangents(const ContactSurface *S, PetscReal t[])
+{
+  SurfaceNodalUnitVectors(S, S->edir, PETSC_FALSE, t);
+}
+
+PetscErrorCode ContactSurfaceNodeArcs(const ContactSurface *S, PetscReal s[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < S->ne; ++e) {
+    const PetscInt *en = &S->enodes[3 * e];
+    s[en[0]]           = S->edir[e] > 0 ? S->s0[e] : S->s0[e] + S->elen[e];
+    s[en[1]]           = S->edir[e] > 0 ? S->s0[e] + S->elen[e] : S->s0[e];
+    PetscCall(ContactSurfaceArc(S, e, 0.0, &s[en[2]]));
+  }
+  PetscFunctionReturn(0);
 }
 
 PetscReal ContactSurfaceLength(const ContactSurface *S)

@@ -11,19 +11,6 @@
 #include "xdmf.h"
 #include "stages.h"
 
-/* The terms with a stick half-width at the end of stage k. */
-static PetscInt ProblemFrictionalTerms(Problem p, PetscInt k)
-{
-  PetscInt n = 0;
-
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscReal c;
-    PetscBool has;
-    if (!EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) && has) n++;
-  }
-  return n;
-}
-
 /* The XDMF grid of each body (rank 0): its cells and reference coordinates
    from /bodies/<body>, its fields from the group fields/<body> of the HDF5
    file base (/bodies, or a load stage's /stages/<k>/bodies); NaN for the
@@ -71,12 +58,13 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
 static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
 {
   const PetscInt    S        = p->opt.loadStages;
-  const PetscBool   friction = (PetscBool)(ProblemFrictionalTerms(p, 1) > 0); /* every grid carries the friction's fields (xdmf.h) */
+  PetscBool         friction = PETSC_FALSE; /* a term with state (friction): every grid carries its fields (xdmf.h) */
   PetscMPIInt       rank;
   const char       *base = strrchr(out->h5, '/');
   ContactOutputText text = {NULL, NULL, 0};
 
   PetscFunctionBeginUser;
+  for (PetscInt t = 0; t < p->nterms; ++t) friction = (PetscBool)(friction || EnergyTermHasState(p->terms[t]));
   PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
   base = base ? base + 1 : out->h5;
   if (rank == 0) {
@@ -399,10 +387,12 @@ static void JSONLoadPath(FILE *fp, Problem p)
    reaction of every Dirichlet group and each contact pair's force (on its
    first surface, as the report's "contact force"), and each frictional
    pair's stick zone half-width. The last is the final state's. */
-static void JSONLoadStages(FILE *fp, Problem p)
+static PetscErrorCode JSONLoadStages(FILE *fp, Problem p)
 {
   const StageEnds *e = &p->res.ends;
+  PetscInt         n;
 
+  PetscFunctionBeginUser;
   fprintf(fp, ",\n  \"load_stages\": [");
   for (PetscInt k = 1; k <= p->opt.loadStages; ++k) {
     ContactJSONKeyReal(fp, k > 1 ? ",\n    {" : "\n    {", "load", (PetscReal)k);
@@ -410,16 +400,17 @@ static void JSONLoadStages(FILE *fp, Problem p)
     fprintf(fp, ", \"contact_force\": {");
     for (PetscInt t = 0; t < p->nterms; ++t) ContactJSONKeyPair(fp, t ? ", " : "", p->terms[t]->name, e->force[k - 1][t]);
     fprintf(fp, "}");
-    for (PetscInt t = 0, n = 0; t < p->nterms; ++t) { /* frictional pairs: the stick zone's half-width */
+    n = 0;
+    for (PetscInt t = 0; t < p->nterms; ++t) { /* frictional pairs: the stick zone's half-width */
       PetscReal c;
       PetscBool has;
-      if (EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has) || !has) continue;
-      ContactJSONKeyReal(fp, n++ ? ", " : ", \"stick_half_width\": {", p->terms[t]->name, c);
-      if (n == ProblemFrictionalTerms(p, k)) fprintf(fp, "}");
+      PetscCall(EnergyTermGetStickHalfWidth(p->terms[t], k, &c, &has));
+      if (has) ContactJSONKeyReal(fp, n++ ? ", " : ", \"stick_half_width\": {", p->terms[t]->name, c);
     }
-    fprintf(fp, "}");
+    fprintf(fp, n ? "}}" : "}");
   }
   fprintf(fp, "\n  ]");
+  PetscFunctionReturn(0);
 }
 
 /* Each load's resultant, at the load factor solved (only with loads). In
@@ -604,7 +595,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
     PetscCall(JSONReactions(fp, p));
     JSONLoadPath(fp, p);
-    JSONLoadStages(fp, p);
+    PetscCall(JSONLoadStages(fp, p));
     JSONLoads(fp, p);
     JSONForceControl(fp, p);
     PetscCall(JSONContact(fp, p));

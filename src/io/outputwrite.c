@@ -33,6 +33,7 @@
      it back. If that write succeeds, the cause is PETSc's message of the
      call that failed ("Error in HDF5 call H5Fflush() Status -1"). */
 #define _GNU_SOURCE /* memfd_create() */
+#include <petscvec.h>
 #include "outputwrite.h"
 #include "outputset.h"
 #include <errno.h>
@@ -122,6 +123,24 @@ PetscErrorCode ContactOutputCollective(PetscViewer v, PetscErrorCode ierr)
 
   if (MPI_Allreduce(&e, &any, 1, MPI_INT, MPI_MAX, PetscObjectComm((PetscObject)v)) != MPI_SUCCESS) return PETSC_ERR_MPI;
   return any ? (ierr ? ierr : PETSC_ERR_FILE_WRITE) : 0;
+}
+
+PetscErrorCode ContactOutputWriteValues(PetscViewer v, MPI_Comm comm, const char name[], PetscInt n, const PetscReal val[], const PetscInt order[])
+{
+  Vec          vec;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, &vec));
+  PetscCall(VecSetSizes(vec, n, PETSC_DETERMINE));
+  PetscCall(VecSetType(vec, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)vec, name));
+  PetscCall(VecGetArray(vec, &a));
+  for (PetscInt i = 0; i < n; ++i) a[i] = val[order ? order[i] : i];
+  PetscCall(VecRestoreArray(vec, &a));
+  ContactOutputCall(v, VecView(vec, v));
+  PetscCall(VecDestroy(&vec));
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode ContactOutputLibraryWriteBegin(void)
