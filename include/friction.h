@@ -18,7 +18,7 @@ typedef struct _n_Friction *Friction;
    shape functions M7 of its closest point (nodes M->mnodes[7 me + k]). */
 typedef struct {
   PetscInt  se, me;
-  PetscReal N[3], W[3], wt, M7[7];
+  PetscReal N[3], W[3], wt, M7[7], dM7[7];
 } FrictionPoint;
 
 /* mu > 0, the tangential penalty k_t = ktScale k_p (k_p the scene's penalty of the pair, not continued: the callers' kp). */

@@ -38,13 +38,13 @@ def test_cattaneo_stick_zone(runs):
     """The stick zone's half-width c (the JSON's stick_half_width, from the
     nodes node_stick marks, each end carried to where the shear reaches mu p)
     over the contact's half-width a (the report's second-moment half-width,
-    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.71249
-    (+0.77 %; +1.30 % at hc = 0.01 on a slab [0, 1] x [-1, 1], +0.49 % at
-    hc = 0.0025, the error falling with the mesh). Bound 2 % (2.6 times).
-    The first stage's zone, under P alone put on in one increment, is
-    nearly the whole contact (measured 0.0937 against a = 0.0997): the
-    increment from rest ties the surfaces where they do not touch yet, and
-    where they close the edges slip a little."""
+    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.70352
+    (-0.51 %; +0.08 % at hc = 0.015 and -0.08 % at hc = 0.00375: the README's
+    friction table). Bound 2 % (the issue's; 3.9 times). The first stage's
+    zone, under P alone put on in one increment, is nearly the whole
+    contact (measured 0.0947 against a = 0.0998): the finite disc and slab
+    are not Dundurs' half-spaces, and their surfaces spread a little
+    differently at the zone's edges, which slip."""
     s = runs[1].summary
     pair = s["contact"]["interface"]
     c, a = pair["stick_half_width"], pair["fem_a_moment"]
@@ -55,21 +55,19 @@ def test_cattaneo_stick_zone(runs):
     stages = [st["stick_half_width"]["interface"] for st in s["load_stages"]]
     print("per stage", stages)
     assert stages[1] == c
-    assert 0.9 * a <= stages[0] <= a     # measured 0.0937
+    assert 0.9 * a <= stages[0] <= a     # measured 0.0947
 
 
 def test_cattaneo_load_steps(tmp_path):
     """The same in 8 increments a stage (each solved to the final tolerance,
-    as every increment with friction): c/a -0.40 % from Mindlin's, and the
-    shear profile 6.0 % from his in relative L2 over the slave's nodes
+    as every increment with friction): c/a -0.85 % from Mindlin's, and the
+    shear profile 4.6 % from his in relative L2 over the slave's nodes
     (weights A_j), his drawn with the computed a (a_moment), p0 = 2 P / (pi a)
     and c = a sqrt(1 - Q/(mu P)) about the pressure's centre. In 1, 2, 4 and
-    8 increments c/a is +0.77, -1.99, -1.03, -0.40 % off and the profile
-    11.8, 10.3, 7.9, 6.0 %: the normal load put on in fewer increments ties
-    the surfaces before they touch and leaves slip at the zone's edges,
-    which Mindlin's half-spaces do not have (the distance:
-    friction_study.shear_l2, the README table's). Bounds: c/a 1.2 % (3
-    times), the profile 10 % (the issue's figure; 1.7 times)."""
+    8 increments c/a is -0.51, +1.79, +0.51, -0.85 % off and the profile
+    6.3, 6.2, 4.6, 4.6 % (the distance: friction_study.shear_l2, the README
+    table's). Bounds: c/a 2 % (the issue's; 2.4 times), the profile 10 %
+    (the issue's; 2.2 times)."""
     import friction_study
     res = run_contact(CATTANEO + ["-load_steps", "8"], tmp_path)
     pair = res.summary["contact"]["interface"]
@@ -77,19 +75,21 @@ def test_cattaneo_load_steps(tmp_path):
     l2 = friction_study.shear_l2(res.output_path, res.summary, Q / (MU * P))
     err = c / a / np.sqrt(1 - Q / (MU * P)) - 1
     print(f"c/a {err:+.4f}, shear profile L2 {l2:.4f}, iterations {res.summary['iterations']}")
-    assert abs(err) <= 0.012
+    assert abs(err) <= 0.02
     assert l2 <= 0.10
 
 
-@pytest.mark.parametrize("ratio,measured,bound", [(0.2, 0.0064, 0.02), (0.8, -0.0156, 0.04)])
+@pytest.mark.parametrize("ratio,measured,bound", [(0.2, 0.0074, 0.02), (0.8, -0.0292, 0.04)])
 def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
     """The same at Q/(mu P) = 0.2 and 0.8: c/a against sqrt(1 - Q/(mu P))
-    = 0.8944 and 0.4472 measured +0.64 % and -1.56 % (a/hc = 13; the small
-    stick zone of 0.8, 6 nodes across its half, is resolved the worse).
-    Bounds 2 % and 4 % (3 and 2.6 times). The report's mindlin_c (Hertz's a,
-    the whole force across the contact zone's chord as Q, 0.6 % above the
-    load: the slab's face tilts under the shear) is 0.62 % and 0.38 % below
-    c (measured); bound 2 %."""
+    = 0.8944 and 0.4472 measured +0.74 % and -2.92 % (a/hc = 13; the small
+    stick zone of 0.8, 6 nodes across its half, is resolved the worse: at
+    hc = 0.015, 0.0075, 0.00375 -0.69, -2.92, -2.31 %; in 8 increments a
+    stage -1.72 %, the README's friction table). Bounds 2 % and 4 % (2.7 and
+    1.4 times; the 0.8 case's three meshes within 3 %). The report's
+    mindlin_c (Hertz's a, the whole force across the contact zone's chord
+    as Q, 0.6 % above the load: the slab's face tilts under the shear) is
+    0.73 % below and 1.02 % above c (measured); bound 2 %."""
     q = ratio * MU * P
     s = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{q!r}"], tmp_path).summary
     pair = s["contact"]["interface"]
@@ -102,9 +102,9 @@ def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
 def test_mindlin_deresiewicz(tmp_path):
     """Unloading from Q* = 0.6 mu P to 0 (a third stage): the edges slip
     backwards and the stick zone of the last increment is Mindlin-
-    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84205
-    (+0.65 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.63822
-    (+0.91 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; about 3
+    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84192
+    (+0.63 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.62813
+    (-0.68 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; about 3
     times). The slip state is carried from stage to stage: a solve that
     forgot it would stick everywhere after the unloading's first increment.
     Each stage's end has its friction sets in the HDF5."""
@@ -119,7 +119,7 @@ def test_mindlin_deresiewicz(tmp_path):
     assert abs(c[2] / np.sqrt(0.7) - 1) <= 0.02
     # each stage's end in the HDF5 (/stages/k/contact/...; the last is /contact's): the stuck
     # nodes' half extent against the JSON's half-width, within a node spacing (hc / 2 = 0.00375;
-    # measured 4.5e-4, 2.3e-4, 1.9e-3: the JSON's ends are carried between nodes)
+    # measured 1.5e-3, 1.1e-3, 1.9e-3: the JSON's ends are carried between nodes)
     with h5py.File(res.output_path, "r") as f:
         arc = f[SLAVE]["node_s"][:]
         for k, st in enumerate(s["load_stages"], 1):
@@ -373,12 +373,12 @@ def test_similar_bodies_carry_no_shear(tmp_path):
     """Dundurs: between elastically similar bodies (beta = 0) a normal load
     makes no tangential displacement mismatch, so friction has nothing to
     resist. The cattaneo scene's normal force alone, in 8 increments with
-    mu = 0.3 from the first: the shear is 0.86 % of the pressure (relative
-    L2; its largest 4.8 % of mu p_max, at the zone's edges, where the finite
+    mu = 0.3 from the first: the shear is 0.61 % of the pressure (relative
+    L2; its largest 3.6 % of mu p_max, at the zone's edges, where the finite
     disc and slab depart from half-spaces). The neighbour: the slab 5 times
     softer (Dundurs beta = 0.19), the same load: 8.7 % (the slab's largest shear
-    32 % of mu p_max). Bounds: 2 % for the similar pair (2.3 times), and
-    the dissimilar one at least 5 times the similar one (measured 10)."""
+    32 % of mu p_max). Bounds: 2 % for the similar pair (3.3 times), and
+    the dissimilar one at least 5 times the similar one (measured 14)."""
     base = CATTANEO + ["-load_stages", "1", "-disc_bc_clamp_values", f"{P},0", "-slab_bc_push_values", "0,0",
                        "-load_steps", "8"]
     similar = shear_over_pressure(run_contact(base, tmp_path, name="similar"))
@@ -389,33 +389,42 @@ def test_similar_bodies_carry_no_shear(tmp_path):
 
 
 def radial_slip(res):
-    """(X, slip, weight) of the slave's nodes by radius, within r < 0.15 (the contact's a = 0.1)."""
+    """(X, slip, shear, pressure, stick) of the slave's nodes by radius."""
     with h5py.File(res.output_path, "r") as f:
         (g,) = [g for g in f["contact/interface"].values() if "node_stick" in g]
-        X, s, w = g["node_X"][:, 0], g["node_slip"][:], g["node_weight"][:]
-    o = np.argsort(X)
-    m = X[o] < 0.15
-    return X[o][m], s[o][m], w[o][m]
+        X, s, q, p, st = (g[k][:] for k in ("node_X", "node_slip", "node_shear", "node_pressure", "node_stick"))
+    o = np.argsort(X[:, 0])
+    return X[o, 0], s[o], q[o], p[o], st[o]
 
 
 def test_axisymmetric_radial_slip_converges(tmp_path):
     """r-z, dissimilar bodies (the sphere scene with the flat 5 times softer
-    than the ball, mu = 0.3, 4 increments): under a normal load alone the
-    flat's surface spreads radially more than the ball's, and the edges of
-    the contact slip. The accumulated radial slip's profile converges with
-    the mesh: its relative L2 distance between h = 0.02 and 0.01 measured
-    3.07 %, between 0.01 and 0.005 0.84 % (order 1.87; to h = 0.0025,
-    2.5, 0.93, 0.28 %). Bound: the second at most half the first (order 1).
-    mu = 0 is the frictionless run (the same P to the last digit)."""
+    than the ball, Dundurs beta = -0.19, mu = 0.3, 4 increments): under a
+    normal load alone the flat's surface spreads radially more than the
+    ball's, and the edges of the contact slip. The stick zone's radius c
+    (stick_half_width) converges with the mesh: 0.09565, 0.09265, 0.09253
+    at h = 0.02, 0.01, 0.005 (0.09276 at 0.0025), the second change 0.04
+    times the first; bound 0.25 times. Where a loaded node slips its
+    accumulated radial slip has the sign of its shear (Coulomb: the shear
+    opposes the slip; measured at every such node). The slip accumulated
+    inside the stick zone is the history of the increments in which the
+    contact grew over the node: it alternates node to node and follows the
+    load steps (with 16 increments at h = 0.005, c = 0.0988), so its
+    profile is not compared across meshes. mu = 0 is the frictionless run
+    (the same P to the last digit)."""
     base = ["-options_file", "meshes/sphere/sphere.opts", "-flat_E", "200", "-load_steps", "4"]
-    prof = {h: radial_slip(run_contact(base + ["-contact_friction", "0.3", "-ball_mesh_size", h, "-flat_mesh_size", h],
-                                       tmp_path, name=f"h{h}")) for h in (0.02, 0.01, 0.005)}
-    def dist(a, b):
-        r = np.interp(a[0], b[0], b[1])
-        return float(np.sqrt(np.sum(a[2] * (a[1] - r) ** 2) / np.sum(a[2] * r ** 2)))
-    d1, d2 = dist(prof[0.02], prof[0.01]), dist(prof[0.01], prof[0.005])
-    print(f"radial slip: L2 distances {d1:.4f} (0.02 to 0.01), {d2:.4f} (0.01 to 0.005), order {np.log2(d1 / d2):.2f}")
-    assert d2 <= 0.5 * d1
+    c, slips = {}, 0
+    for h in (0.02, 0.01, 0.005):
+        res = run_contact(base + ["-contact_friction", "0.3", "-ball_mesh_size", h, "-flat_mesh_size", h], tmp_path, name=f"h{h}")
+        c[h] = res.summary["contact"]["interface"]["stick_half_width"]
+        X, slip, q, p, stick = radial_slip(res)
+        slipping = (p > 0) & (stick < 0.5) & (q != 0)
+        assert np.all(np.sign(slip[slipping]) == np.sign(q[slipping])), h
+        slips += int(np.count_nonzero(slipping))
+    d1, d2 = abs(c[0.02] - c[0.01]), abs(c[0.01] - c[0.005])
+    print(f"stick radius: {c[0.02]:.5f}, {c[0.01]:.5f}, {c[0.005]:.5f}; changes {d1:.2e}, {d2:.2e} ({d2 / d1:.3f}); {slips} slipping nodes")
+    assert slips > 0
+    assert d2 <= 0.25 * d1
     coarse = base + ["-ball_mesh_size", "0.02", "-flat_mesh_size", "0.02"]
     zero = run_contact(coarse + ["-contact_friction", "0"], tmp_path, name="mu0").summary
     none = run_contact(coarse, tmp_path, name="frictionless").summary
@@ -429,7 +438,7 @@ def test_master_shear_transferred(runs):
     reference length, signed as the slave's (its traction is -q tau along
     its own arc; both arcs run the same way here, so the two profiles have
     opposite signs). The master's shear force against the slave's: measured
-    1.2e-4 apart (the linear interpolation between the slave's nodes; the
+    2.3e-4 apart (the linear interpolation between the slave's nodes; the
     pressures' forces 3.9e-5), bound 4e-4. Coulomb on the master: |q| <= mu p
     at every node to 1e-6 of mu p_max (measured equality where the slave
     slips). 1 and 2 ranks: measured 1e-11 of the peak, bound 1e-9."""

@@ -5,20 +5,33 @@
    Slip. On slave node j, with the weights W_j, the weight C_j = int_S' W_j dS
    and the quadrature points of the pair's normal gaps (mortar.c: the same
    segments, the same points, the same closest points of the master), the
-   weighted tangential relative displacement over the load increment is
+   weighted tangential slip over the load increment is
 
-     ds_j = (1/C_j) int_S' W_j tau_j . (du_s - du_m(eta*)) dS,
+     ds_j = (1/C_j) int_S' W_j [tau_j . (x_s - x_m(eta*))
+                                - t_j . (xa_s - xa_m(eta*))] dS,
 
-   du = u - u_acc the displacement since the last accepted state, du_s =
-   sum_i N_i du_i on the slave edge, du_m = sum_k M_k(eta*) du_k at the
-   point's closest point eta* on the master, and tau_j the unit tangent of
-   the slave surface at node j, along its arc. Within one fixed-point
-   iterate (below) the points, eta*, C_j and tau_j are those of the lag's
-   state: ds_j = B_j . (x - x_acc) is linear in the nodes' coordinates, with
-   B_j the sparse row of coefficients (FrictionLag; every rank holds every
-   node's row). This is small sliding per increment: the pairing follows
-   the contact from lag to lag, and a point slides a fraction of an edge in
-   an increment.
+   x_s = sum_i N_i x_i on the slave edge, x_m = sum_k M_k(eta*) x_k at the
+   point's closest point eta* on the master, xa the same at the last
+   accepted state, tau_j the unit tangent of the slave surface at node j
+   along its arc, and t_j the master's unit tangent at the accepted state
+   where node j's points meet it (sum_k dM_k/deta(eta*) xa_k weighted as the
+   points are, oriented along tau_j). The first term is the tangential part
+   of the current gap vector, about 0 where the surfaces touch; the second
+   is the accepted offset between the slave's point and the master's
+   material point it meets now, read along the master as it was: the slip.
+   Projecting both on tau_j instead, ds_j = tau_j . (du_s - du_m(eta*)),
+   counts the closing of a gap as slip where the surface turns during the
+   increment: a ball pressed from rest turns its surface by about x/R, which
+   reads the gap x^2/2R it closes as a slip of about (x/R)(x^2/2R) (on the
+   sphere scene 7.7e-5 at r = 0.06, 8 times the stick range mu p_j / k_t,
+   so that the first re-solve of the fixed point met 40 of 41 nodes
+   slipping, then took 9 Newton iterations to stick 37 of them again).
+   Within one fixed-point iterate (below) the points, eta*, C_j, tau_j and
+   t_j are those of the lag's state: ds_j = B_j . x - o_j is affine in the
+   nodes' coordinates, with B_j the sparse row of coefficients (FrictionLag;
+   every rank holds every node's row). This is small sliding per increment:
+   the pairing follows the contact from lag to lag, and a point slides a
+   fraction of an edge in an increment.
 
    Return map as a potential. The trial elastic slip e_j = s_el,j + ds_j
    (s_el,j: the elastic slip of the accepted state), the bound b_j = mu p_j
@@ -60,7 +73,8 @@
    turns to slip.
 
    State. Accepting a converged increment keeps, per node, the elastic slip
-   q_j / k_t, the accumulated slip (+= e_j - q_j/k_t), stick (k_t |e_j| < b_j
+   q_j / k_t, the accumulated slip (+= e_j - q_j/k_t where b_j > 0: an open
+   node does not slip), stick (k_t |e_j| < b_j
    with b_j > 0), the pressure and the shear, and the coordinates x_acc of
    both surfaces. It becomes the state the energy is measured from when the
    next increment begins (FrictionBegin), not before: until then the energy
@@ -94,6 +108,7 @@ struct _n_Friction {
   PetscInt   *rowStart;           /* [nn + 1] b_j: entries rowStart[j] .. rowStart[j + 1] */
   PetscInt   *eside, *enode;      /* [nent] the entry's surface and node */
   PetscReal  *ecoef;              /* [nent] its coefficient */
+  PetscReal  *edcoef;             /* [nent] a master entry's coefficient of the tangent (dM/deta at the closest points), else 0 */
   PetscInt    nent, nentMax;
   PetscReal  *xacc[2];            /* [nn][2] each surface's coordinates at the accepted state */
   PetscReal  *sel, *slip;         /* [nn] accepted: elastic slip, accumulated slip */
@@ -140,7 +155,7 @@ PetscErrorCode FrictionDestroy(Friction *fr)
   PetscCall(PetscFree(f->order));
   PetscCall(PetscFree(f->stageC));
   PetscCall(PetscFree(f->stageSet));
-  PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
+  PetscCall(PetscFree4(f->eside, f->enode, f->ecoef, f->edcoef));
   PetscCall(PetscFree4(f->xacc[0], f->xacc[1], f->xaccN[0], f->xaccN[1]));
   PetscCall(PetscFree6(f->sel, f->slip, f->stick, f->q, f->p, f->boundAcc));
   PetscCall(PetscFree3(f->selN, f->slipN, f->boundN));
@@ -225,7 +240,7 @@ static PetscErrorCode FrictionBuildRows(Friction f, const ContactSurface S[2], P
 
   PetscFunctionBeginUser;
   PetscCheck((PetscReal)f->nn * stride < (PetscReal)PETSC_MAX_INT, f->comm, PETSC_ERR_SUP, "friction: %" PetscInt_FMT " slave nodes against %" PetscInt_FMT " master nodes overflow the rows' sort keys (PetscInt of %d bytes)", f->nn, f->nm, (int)sizeof(PetscInt));
-  PetscCall(PetscMalloc1(4 * 30 * (size_t)np + 1, &loc));
+  PetscCall(PetscMalloc1(5 * 30 * (size_t)np + 1, &loc));
   for (PetscInt k = 0; k < np; ++k) {
     const FrictionPoint *P  = &pts[k];
     const PetscInt      *sn = &Ss->enodes[3 * P->se], *mn;
@@ -236,46 +251,48 @@ static PetscErrorCode FrictionBuildRows(Friction f, const ContactSurface S[2], P
       const PetscReal w = cover[j] > 0 ? P->wt * P->W[i] / cover[j] : 0.0;
       if (w == 0) continue;
       for (PetscInt l = 0; l < 3; ++l) {
-        PetscReal *r = &loc[4 * nloc++];
-        r[0] = j, r[1] = f->slave, r[2] = sn[l], r[3] = w * P->N[l];
+        PetscReal *r = &loc[5 * nloc++];
+        r[0] = j, r[1] = f->slave, r[2] = sn[l], r[3] = w * P->N[l], r[4] = 0.0;
       }
       for (PetscInt l = 0; l < 7; ++l) {
         PetscReal *r;
-        if (P->M7[l] == 0) continue;
-        r    = &loc[4 * nloc++];
-        r[0] = j, r[1] = 1 - f->slave, r[2] = mn[l], r[3] = -w * P->M7[l];
+        if (P->M7[l] == 0 && P->dM7[l] == 0) continue;
+        r    = &loc[5 * nloc++];
+        r[0] = j, r[1] = 1 - f->slave, r[2] = mn[l], r[3] = -w * P->M7[l], r[4] = w * P->dM7[l];
       }
     }
   }
   PetscCall(PetscMalloc2(f->size, &counts, f->size + 1, &displs));
-  PetscCall(PetscMPIIntCast(4 * nloc, &n4));
+  PetscCall(PetscMPIIntCast(5 * nloc, &n4));
   PetscCallMPI(MPI_Allgather(&n4, 1, MPI_INT, counts, 1, MPI_INT, f->comm));
   displs[0] = 0;
   for (PetscMPIInt r = 0; r < f->size; ++r) displs[r + 1] = displs[r] + counts[r];
-  nall = displs[f->size] / 4;
-  PetscCall(PetscMalloc3(4 * nall + 1, &all, nall + 1, &key, nall + 1, &perm));
+  nall = displs[f->size] / 5;
+  PetscCall(PetscMalloc3(5 * nall + 1, &all, nall + 1, &key, nall + 1, &perm));
   PetscCallMPI(MPI_Allgatherv(loc, n4, MPIU_REAL, all, counts, displs, MPIU_REAL, f->comm));
   for (PetscInt k = 0; k < nall; ++k) {
-    key[k]  = (PetscInt)all[4 * k] * stride + (PetscInt)all[4 * k + 1] * (stride / 2) + (PetscInt)all[4 * k + 2];
+    key[k]  = (PetscInt)all[5 * k] * stride + (PetscInt)all[5 * k + 1] * (stride / 2) + (PetscInt)all[5 * k + 2];
     perm[k] = k;
   }
   PetscCall(PetscSortIntWithArray(nall, key, perm));
   if (nall > f->nentMax) {
-    PetscCall(PetscFree3(f->eside, f->enode, f->ecoef));
+    PetscCall(PetscFree4(f->eside, f->enode, f->ecoef, f->edcoef));
     f->nentMax = nall;
-    PetscCall(PetscMalloc3(nall, &f->eside, nall, &f->enode, nall, &f->ecoef));
+    PetscCall(PetscMalloc4(nall, &f->eside, nall, &f->enode, nall, &f->ecoef, nall, &f->edcoef));
   }
   PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
   f->nent = 0;
   for (PetscInt k = 0; k < nall; ++k) {
-    const PetscReal *r = &all[4 * perm[k]];
+    const PetscReal *r = &all[5 * perm[k]];
     if (f->nent && k && key[k] == key[k - 1]) {
       f->ecoef[f->nent - 1] += r[3];
+      f->edcoef[f->nent - 1] += r[4];
       continue;
     }
     f->eside[f->nent] = (PetscInt)r[1];
     f->enode[f->nent] = (PetscInt)r[2];
-    f->ecoef[f->nent] = r[3];
+    f->ecoef[f->nent]  = r[3];
+    f->edcoef[f->nent] = r[4];
     f->nent++;
     f->rowStart[(PetscInt)r[0] + 1]++;
   }
@@ -309,15 +326,24 @@ PetscErrorCode FrictionLag(Friction f, const ContactSurface S[2], PetscInt np, c
 /* The trial elastic slip e_j at the surfaces' current coordinates. */
 static PetscReal FrictionTrial(Friction f, const ContactSurface S[2], PetscInt j)
 {
-  PetscReal d[2] = {0.0, 0.0};
+  PetscReal d[2] = {0.0, 0.0}, o[2] = {0.0, 0.0}, t[2] = {0.0, 0.0}, tn;
 
   for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k) {
     const PetscInt   s = f->eside[k], v = f->enode[k];
     const PetscReal *x = S[s].x, *xa = f->xacc[s];
-    d[0] += f->ecoef[k] * (x[2 * v] - xa[2 * v]);
-    d[1] += f->ecoef[k] * (x[2 * v + 1] - xa[2 * v + 1]);
+    d[0] += f->ecoef[k] * x[2 * v];
+    d[1] += f->ecoef[k] * x[2 * v + 1];
+    o[0] += f->ecoef[k] * xa[2 * v];
+    o[1] += f->ecoef[k] * xa[2 * v + 1];
+    t[0] += f->edcoef[k] * xa[2 * v];
+    t[1] += f->edcoef[k] * xa[2 * v + 1];
   }
-  return f->sel[j] + f->tau[2 * j] * d[0] + f->tau[2 * j + 1] * d[1];
+  tn = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  if (tn > 0) {
+    if (t[0] * f->tau[2 * j] + t[1] * f->tau[2 * j + 1] < 0) tn = -tn;
+    t[0] /= tn, t[1] /= tn;
+  } else t[0] = f->tau[2 * j], t[1] = f->tau[2 * j + 1];
+  return f->sel[j] + f->tau[2 * j] * d[0] + f->tau[2 * j + 1] * d[1] - (t[0] * o[0] + t[1] * o[1]);
 }
 
 /* psi(e), q = psi'(e), psi''(e) for the bound b and the tangential penalty kt. */
@@ -410,7 +436,7 @@ PetscErrorCode FrictionAccept(Friction f, const ContactSurface S[2], PetscReal k
     FrictionPotential(e, f->bound[j], kt, &psi, &q, &h);
     f->q[j]     = q;
     f->selN[j]  = q / kt;
-    f->slipN[j] = f->slip[j] + e - q / kt;
+    f->slipN[j] = f->slip[j] + (f->bound[j] > 0 ? e - q / kt : 0.0); /* slip where the node touches */
     f->stick[j] = f->bound[j] > 0 && kt * PetscAbsReal(e) < f->bound[j] ? 1.0 : 0.0;
     f->p[j]     = f->bound[j] / f->mu;
   }

@@ -1663,7 +1663,7 @@ static PetscErrorCode MortarFrictionLag(EnergyTerm t, Body bodies[], PetscReal *
     F->me                = P->G.me >= 0 && !P->G.ext && !P->G.mirror ? P->G.me : -1; /* the master surface itself */
     F->wt                = P->wt;
     for (PetscInt i = 0; i < 3; ++i) F->N[i] = P->N[i], F->W[i] = P->W[i];
-    for (PetscInt i = 0; i < 7; ++i) F->M7[i] = P->G.M7[i];
+    for (PetscInt i = 0; i < 7; ++i) F->M7[i] = P->G.M7[i], F->dM7[i] = P->G.dM7[i];
   }
   PetscCall(PetscMalloc1(m->b.S[s].nn, &p));
   for (PetscInt j = 0; j < m->b.S[s].nn; ++j) p[j] = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
