@@ -168,6 +168,25 @@ static PetscErrorCode ContactForceString(const PetscReal f[2], PetscBool axisym,
   PetscFunctionReturn(0);
 }
 
+/* Dundurs' second constant of two bodies in plane strain:
+   beta = [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)],
+   a rigid body's terms 0; 0 for elastically similar bodies, where a normal
+   load makes no tangential mismatch (Cattaneo-Mindlin's assumption). */
+static PetscReal ContactDundursBeta(Body a, Body b)
+{
+  PetscReal n = 0.0, d = 0.0;
+  Body      ab[2] = {a, b};
+
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscReal G;
+    if (ab[k]->rigid || !(ab[k]->E > 0)) continue;
+    G = ab[k]->E / (2.0 * (1.0 + ab[k]->nu));
+    n += (k == 0 ? 1.0 : -1.0) * (1.0 - 2.0 * ab[k]->nu) / G;
+    d += 2.0 * (1.0 - ab[k]->nu) / G;
+  }
+  return d > 0 ? n / d : 0.0;
+}
+
 PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *spec, Body bodies[], MPI_Comm comm)
 {
   const PetscInt C = CONTACT_ROW_COLS;
@@ -183,7 +202,11 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   if (R->friction) {
     PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e); the whole force %.6e along the contact zone's normal, Q = %.6e across, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)R->normalLoad, (double)R->tangentialLoad, (double)(R->normalLoad > 0 ? R->tangentialLoad / (spec->friction * R->normalLoad) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
-    if (spec->hertz && R->mindlinC > 0) PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
+    if (spec->hertz && R->mindlinC > 0) {
+      const PetscReal beta = ContactDundursBeta(bodies[spec->body[0]], bodies[spec->body[1]]);
+      PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
+      if (PetscAbsReal(beta) > 1e-3) PetscCall(PetscPrintf(comm, " (his is for elastically similar bodies; these have Dundurs' beta = %.3g)", (double)beta));
+    }
     PetscCall(PetscPrintf(comm, "\n"));
   }
   {
