@@ -64,10 +64,13 @@ are missing, doubled or unclosed is an error naming the page. The tables:
 - friction, friction-cost: bench/friction/results.json (written by --measure
   friction: friction_study.py's Cattaneo-Mindlin and Mindlin-Deresiewicz runs
   on meshes/cattaneo, in 1 and 8 increments a stage, and c/a under
-  refinement, about a minute; --measure friction-cost: Newton's iterations
+  refinement at Q/(mu P) = 0.5 and 0.8, and 0.8 with the contact half as
+  wide, about two minutes; --measure friction-cost: Newton's iterations
   per increment with friction and without, and L-BFGS with friction, about
   a minute); the phrase friction-cost-ratio: the range of those ratios, the
   increments above 3, and L-BFGS's iterations and stick zone, from the same file;
+  the phrase friction-finite (docs/scenes.md): c/a at Q/(mu P) = 0.8 under
+  refinement and with the contact half as wide;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -659,6 +662,11 @@ def render_friction_cost():
     return friction_study.cost_table(load("friction")["cost"])
 
 
+def render_friction_finite():
+    import friction_study
+    return friction_study.finite_phrase(load("friction")["accuracy"])
+
+
 def render_friction_cost_ratio():
     import friction_study
     return friction_study.cost_phrase(load("friction")["cost"])
@@ -982,7 +990,7 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
-           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio,
+           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio, "friction-finite": render_friction_finite,
            "rigid-adequacy-phrase": render_rigid_adequacy_phrase}
 
 

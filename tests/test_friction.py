@@ -85,8 +85,10 @@ def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
     = 0.8944 and 0.4472 measured +0.74 % and -2.92 % (a/hc = 13; the small
     stick zone of 0.8, 6 nodes across its half, is resolved the worse: at
     hc = 0.015, 0.0075, 0.00375 -0.69, -2.92, -2.31 %; in 8 increments a
-    stage -1.72 %, the README's friction table). Bounds 2 % and 4 % (2.7 and
-    1.4 times; the 0.8 case's three meshes within 3 %). The report's
+    stage -1.72 %, the README's friction table; with the contact half as
+    wide against the bodies, a/R = 0.05, -1.13 %: the finite bodies' part,
+    docs/scenes.md#friction). Bounds 2 % and 4 % (2.7 and 1.4 times; the
+    0.8 case's three meshes within 3 %). The report's
     mindlin_c (Hertz's a, the whole force across the contact zone's chord
     as Q, 0.6 % above the load: the slab's face tilts under the shear) is
     0.73 % below and 1.02 % above c (measured); bound 2 %."""
