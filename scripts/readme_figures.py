@@ -70,7 +70,8 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   a minute); the phrase friction-cost-ratio: the range of those ratios, the
   increments above 3, and L-BFGS's iterations and stick zone, from the same file;
   the phrase friction-finite (docs/scenes.md): c/a at Q/(mu P) = 0.8 under
-  refinement and with the contact half as wide;
+  refinement; the table friction-narrow (docs/scenes.md): each load ratio on
+  the scene and with the contact half as wide against the bodies;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -667,6 +668,11 @@ def render_friction_finite():
     return friction_study.finite_phrase(load("friction")["accuracy"])
 
 
+def render_friction_narrow():
+    import friction_study
+    return friction_study.narrow_table(load("friction")["accuracy"])
+
+
 def render_friction_cost_ratio():
     import friction_study
     return friction_study.cost_phrase(load("friction")["cost"])
@@ -979,7 +985,7 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty, "claims": render_claims, "model": render_model,
           "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost,
-          "friction": render_friction, "friction-cost": render_friction_cost}
+          "friction": render_friction, "friction-cost": render_friction_cost, "friction-narrow": render_friction_narrow}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
            "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
