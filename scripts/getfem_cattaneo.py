@@ -74,6 +74,7 @@ LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
 R_DISC, XC, YC = 1.0, -1.0, 0.0
 THETA0 = -math.pi / 3          # where the disc's contact arc starts (xcontact = -0.5): s = R (theta - THETA0)
 PROGRAM_NODES = {"disc": 2607, "slab": 2645}   # the program's summary on this scene (bodies.<name>.nodes)
+RELEASE = 0.05                 # the large sliding brick's release distance (the contact zone's gaps are below 0.006)
 EPS = 1e-4                     # a soft spring on U (force 1e-6 of P at the answer): the disc is free until it touches
 STICK_MARGIN = 0.01            # a node sticks where |q| < mu p (1 - STICK_MARGIN)
 CONTACT_FLOOR = 1e-3           # in contact: p > CONTACT_FLOOR max p
@@ -136,11 +137,12 @@ def msh_info(msh):
     return nodes, types, names
 
 
-def solve(gf, disc, slab, steps, r, kmul, normal_friction):
-    """One load path; the multipliers at their nodes and the solver's figures."""
+def solve(gf, disc, slab, steps, r, kmul, normal_friction, formulation):
+    """One load path; the multipliers at their nodes and the solver's figures. formulation: "small_sliding"
+    (the weak form above) or "large_sliding" (GetFEM's raytracing large sliding brick)."""
     m1, m2 = gf.Mesh("import", "gmsh", disc), gf.Mesh("import", "gmsh", slab)
     r1, r2 = msh_info(disc)[2], msh_info(slab)[2]
-    CONTACT1, CLAMP, PUSH = r1["contact"], r1["clamp"], r2["push"]
+    CONTACT1, CLAMP, CONTACT2, PUSH = r1["contact"], r1["clamp"], r2["contact"], r2["push"]
     mfu1, mfu2 = gf.MeshFem(m1, 2), gf.MeshFem(m2, 2)
     mfu1.set_classical_fem(2)
     mfu2.set_classical_fem(2)
@@ -166,29 +168,59 @@ def solve(gf, disc, slab, steps, r, kmul, normal_friction):
     md.add_initialized_data("eps", [EPS])
     md.add_source_term(mim1, "F.Test_U / Lc", CLAMP)
     md.add_linear_term(mim1, "eps * U.Test_U / Lc", CLAMP)
-    # contact and friction: the multipliers on the disc's arc
-    mfl = gf.MeshFem(m1, 1)
-    mfl.set_classical_fem(kmul)
-    md.add_filtered_fem_variable("ln", mfl, CONTACT1)
-    md.add_filtered_fem_variable("lt", mfl, CONTACT1)
     md.add_initialized_data("r", [r])
     md.add_initialized_data("f", [MU_F])
     md.add_initialized_fem_data("w1", mfu1, np.zeros(mfu1.nbdof()))   # the displacements of the last accepted increment
     md.add_initialized_fem_data("w2", mfu2, np.zeros(mfu2.nbdof()))
-    md.add_interpolate_transformation_from_expression("Pair", m1, m2, "[0; X(2)]")
-    gap = "(-X(1) - u1(1) + Interpolate(u2,Pair)(1))"
-    slip = "((u1(2) - Interpolate(u2,Pair)(2)) - (w1(2) - Interpolate(w2,Pair)(2)))"
-    bound = "(f*pos_part(ln - r*%s))" % gap
-    trial = "(lt - r*%s)" % slip
-    proj = "(%s - pos_part(%s - %s) + pos_part(-%s - %s))" % (trial, trial, bound, trial, bound)
-    # the virtual work of the traction (-ln, lt) on the disc and its opposite on the slab (left-hand side: minus it)
-    md.add_nonlinear_term(mim1, "(ln*Test_u1(1) - lt*Test_u1(2))"
-                                " - (ln*Interpolate(Test_u2,Pair)(1) - lt*Interpolate(Test_u2,Pair)(2))", CONTACT1)
-    md.add_nonlinear_term(mim1, "(ln - pos_part(ln - r*%s))*Test_ln/r + (lt - %s)*Test_lt/r" % (gap, proj), CONTACT1)
+    mfl = gf.MeshFem(m1, 1)     # the multipliers' scalar space on the arc (their nodes and weights)
+    mfl.set_classical_fem(kmul)
+    if formulation == "small_sliding":
+        md.add_filtered_fem_variable("ln", mfl, CONTACT1)
+        md.add_filtered_fem_variable("lt", mfl, CONTACT1)
+        md.add_interpolate_transformation_from_expression("Pair", m1, m2, "[0; X(2)]")
+        gap = "(-X(1) - u1(1) + Interpolate(u2,Pair)(1))"
+        slip = "((u1(2) - Interpolate(u2,Pair)(2)) - (w1(2) - Interpolate(w2,Pair)(2)))"
+        bound = "(f*pos_part(ln - r*%s))" % gap
+        trial = "(lt - r*%s)" % slip
+        proj = "(%s - pos_part(%s - %s) + pos_part(-%s - %s))" % (trial, trial, bound, trial, bound)
+        # the virtual work of the traction (-ln, lt) on the disc and its opposite on the slab (left-hand side: minus it)
+        md.add_nonlinear_term(mim1, "(ln*Test_u1(1) - lt*Test_u1(2))"
+                                    " - (ln*Interpolate(Test_u2,Pair)(1) - lt*Interpolate(Test_u2,Pair)(2))", CONTACT1)
+        md.add_nonlinear_term(mim1, "(ln - pos_part(ln - r*%s))*Test_ln/r + (lt - %s)*Test_lt/r" % (gap, proj), CONTACT1)
+    else:
+        # GetFEM's own large sliding brick: rays from the disc's arc to the slab's edge in the current
+        # configuration, the multiplier lam the traction on the disc (a vector), slip (u - w) of both surfaces
+        mfv = gf.MeshFem(m1, 2)
+        mfv.set_classical_fem(kmul)
+        md.add_filtered_fem_variable("lam", mfv, CONTACT1)
+        md.add_initialized_data("alpha", [1.0])
+        ib = md.add_integral_large_sliding_contact_brick_raytracing("r", RELEASE, "f", "alpha", 0)
+        md.add_master_contact_boundary_to_large_sliding_contact_brick(ib, mim2, CONTACT2, "u2", "w2")
+        md.add_slave_contact_boundary_to_large_sliding_contact_brick(ib, mim1, CONTACT1, "u1", "lam", "w1")
+        # a start within the rays' release distance (from rest the disc, free until it touches, would fly off)
+        u0 = np.zeros(mfu1.nbdof())
+        u0[0::2] = 0.01
+        md.set_variable("u1", u0)
+        md.set_variable("U", [0.01, 0.0])
+    dofs = mfl.basic_dof_on_region(CONTACT1)      # sorted: the filtered variables' order
+    X = mfl.basic_dof_nodes()[:, dofs]
+
+    def traction():
+        """p and q at the nodes: (ln, -lt); for the large sliding brick the traction on the disc decomposed
+        on the slab's current edge (its slope du2_x/dy at (0, Y) by central differences)."""
+        if formulation == "small_sliding":
+            return np.array(md.variable("ln")), -np.array(md.variable("lt"))
+        lam, u2, h = md.variable("lam"), md.variable("u2"), 1e-4
+        k = (gf.compute_interpolate_on(mfu2, u2, np.vstack([0 * X[0], X[1] + h]))[0]
+             - gf.compute_interpolate_on(mfu2, u2, np.vstack([0 * X[0], X[1] - h]))[0]) / (2 * h)
+        n = np.sqrt(1 + k * k)
+        lx, ly = lam[0::2], lam[1::2]
+        return (-lx + k * ly) / n, -(k * lx + ly) / n
+
     path = [(P * k / steps, 0.0, MU_F if normal_friction else 0.0) for k in range(1, steps + 1)] \
         + [(P, Q * k / steps, MU_F) for k in range(1, steps + 1)]
-    t0, its, converged = time.time(), [], True
-    for Fx, Fy, fr in path:
+    t0, its, converged, q_normal, du_normal = time.time(), [], True, None, None
+    for k, (Fx, Fy, fr) in enumerate(path):
         md.set_variable("F", [Fx, Fy])
         md.set_variable("f", [fr])
         n = int(np.ravel(md.solve("max_res", 1e-9, "max_iter", 100, "lsearch", "default"))[0])
@@ -196,11 +228,14 @@ def solve(gf, disc, slab, steps, r, kmul, normal_friction):
         converged = converged and n < 100
         md.set_variable("w1", md.variable("u1"))
         md.set_variable("w2", md.variable("u2"))
+        if k == steps - 1:
+            q_normal = traction()[1]     # the shear left by the normal stage
+            du_normal = gf.compute_interpolate_on(mfu1, md.variable("u1"), X)[1] \
+                - gf.compute_interpolate_on(mfu2, md.variable("u2"), np.vstack([0 * X[0], X[1]]))[1]
     seconds = time.time() - t0
-    dofs = mfl.basic_dof_on_region(CONTACT1)      # sorted: the filtered variables' order
-    X = mfl.basic_dof_nodes()[:, dofs]
     w = gf.asm_generic(mim1, 1, "Test_t", CONTACT1, "t", 1, mfl, np.zeros(mfl.nbdof()))[dofs]
-    return dict(X=X, w=w, p=np.array(md.variable("ln")), q=-np.array(md.variable("lt")), iterations=its,
+    p, q = traction()
+    return dict(X=X, w=w, p=p, q=q, q_normal=q_normal, du_normal=du_normal, iterations=its,
                 converged=converged, seconds=seconds, U=[float(v) for v in md.variable("U")])
 
 
@@ -238,7 +273,7 @@ def analyse(res):
     X, w, p, q = res["X"], res["w"], res["p"], res["q"]
     s = R_DISC * (np.arctan2(X[1] - YC, X[0] - XC) - THETA0)
     o = np.argsort(s)
-    s, w, p, q = s[o], w[o], p[o], q[o]
+    s, w, p, q, qn, du = s[o], w[o], p[o], q[o], res["q_normal"][o], res["du_normal"][o]
     sc = np.sum(w * p * s) / np.sum(w * p)
     a = 2 * math.sqrt(np.sum(w * p * (s - sc) ** 2) / np.sum(w * p))
     p0 = 2 * P / (math.pi * a)
@@ -252,13 +287,15 @@ def analyse(res):
     ratio = np.where(on, np.abs(q) / (MU_F * np.where(on, p, 1)), 0)
     out = dict(P_met=float(np.sum(w * p)), Q_met=float(np.sum(w * q)), a=a, centre=float(sc), p0=p0,
                pmax=float(p.max()), contact_nodes=int(on.sum()),
-               shear_l2=l2, shear_l2_pct=100 * l2, mindlin_c_over_a=c_m / a)
+               shear_l2=l2, shear_l2_pct=100 * l2, mindlin_c_over_a=c_m / a,
+               normal_stage_shear_pct=100 * math.sqrt(np.sum(w[m] * qn[m] ** 2) / np.sum(w[m] * qm[m] ** 2)),
+               normal_stage_tangential_stretch=float(np.sum(w[on] * x[on] * du[on]) / np.sum(w[on] * x[on] ** 2)))
     out.update(stick_zone(s - sc, p, q, on, ratio, STICK_MARGIN, a, c_m))
     out["c_over_a_error_pct_by_margin"] = {str(mg): stick_zone(s - sc, p, q, on, ratio, mg, a, c_m).get("c_over_a_error_pct")
                                            for mg in (0.002, 0.005, 0.01, 0.02, 0.05)}
     out["profile"] = dict(x=[round(float(v), 7) for v in x[m]], w=[round(float(v), 8) for v in w[m]],
                           p=[round(float(v), 5) for v in p[m]], q=[round(float(v), 5) for v in q[m]],
-                          q_mindlin=[round(float(v), 5) for v in qm[m]],
+                          q_mindlin=[round(float(v), 5) for v in qm[m]], q_normal_stage=[round(float(v), 5) for v in qn[m]],
                           stuck=[int(v) for v in (on & (ratio < 1 - STICK_MARGIN))[m]])
     return out
 
@@ -283,32 +320,37 @@ def main():
         paths[body] = msh
         meshes[body] = dict(msh=os.path.relpath(msh, ROOT), gmsh=cmd.replace(ROOT + "/", ""), nodes=nodes,
                             gmsh_element_types=types)
+    SETTINGS = {
+        "small_sliding": "GetFEM's weak form language (generic assembly), written here: integral Alart-Curnier, "
+                         "non-symmetric, the arc's point X paired with the slab's (0, X_2), normal +x, slip from "
+                         "the last accepted increment",
+        "large_sliding": "GetFEM's add_integral_large_sliding_contact_brick_raytracing (version 0, non-symmetric; "
+                         f"release distance {RELEASE}; alpha = 1, w = the last accepted increment's displacements): "
+                         "current configuration; p, q the traction on the disc along the slab's current normal and edge"}
+    plan = [("small_sliding", 2, True), ("small_sliding", 2, False), ("small_sliding", 1, True),
+            ("large_sliding", 2, True), ("large_sliding", 2, False)]
     variants = []
-    for kmul in (2, 1):
-        for normal_friction in (True, False):
-            if kmul == 1 and not normal_friction:
+    for formulation, kmul, normal_friction in plan:
+        for steps in (1, 8):
+            name = f"{formulation}_P{kmul}_{'friction_from_start' if normal_friction else 'frictionless_normal_stage'}_{steps}"
+            if args.only and args.only != name:
                 continue
-            for steps in (1, 8):
-                name = f"P{kmul}_{'friction_from_start' if normal_friction else 'frictionless_normal_stage'}_{steps}"
-                if args.only and args.only != name:
-                    continue
-                res = solve(gf, paths["disc"], paths["slab"], steps, args.r, kmul, normal_friction)
-                v = dict(name=name, steps_per_stage=steps, friction_in_normal_stage=normal_friction,
-                         settings=dict(formulation="weak form language (generic assembly): integral Alart-Curnier, "
-                                                   "non-symmetric, slip from the last accepted increment",
-                                       multiplier=f"P{kmul} on the disc's contact arc (ln, lt scalar)",
-                                       displacements="P2 (Tri6 disc, Quad9 slab)", r=args.r,
-                                       newton="GetFEM Model.solve, max_res 1e-9, lsearch default, max_iter 100"),
-                         iterations=res["iterations"], iterations_total=int(sum(res["iterations"])),
-                         converged=res["converged"], seconds=round(res["seconds"], 2), U=res["U"])
-                v.update(analyse(res))
-                if normal_friction and kmul == 2:
-                    v["program"] = PROGRAM[str(steps)]
-                variants.append(v)
-                print(f"{name}: its {v['iterations']}, {v['seconds']} s, P {v['P_met']:.4f}, Q {v['Q_met']:.4f}, "
-                      f"a {v['a']:.5f}, c/a {v.get('c_over_a', float('nan')):.4f} "
-                      f"({v.get('c_over_a_error_pct', float('nan')):+.2f} %), shear L2 {v['shear_l2_pct']:.2f} %",
-                      flush=True)
+            res = solve(gf, paths["disc"], paths["slab"], steps, args.r, kmul, normal_friction, formulation)
+            v = dict(name=name, steps_per_stage=steps, friction_in_normal_stage=normal_friction,
+                     settings=dict(formulation=SETTINGS[formulation],
+                                   multiplier=f"P{kmul} on the disc's contact arc",
+                                   displacements="P2 (Tri6 disc, Quad9 slab), linear elasticity", r=args.r,
+                                   newton="GetFEM Model.solve, max_res 1e-9, lsearch default, max_iter 100"),
+                     iterations=res["iterations"], iterations_total=int(sum(res["iterations"])),
+                     converged=res["converged"], seconds=round(res["seconds"], 2), U=res["U"])
+            v.update(analyse(res))
+            if normal_friction and kmul == 2:
+                v["program"] = PROGRAM[str(steps)]
+            variants.append(v)
+            print(f"{name}: its {v['iterations']}, {v['seconds']} s, P {v['P_met']:.4f}, Q {v['Q_met']:.4f}, "
+                  f"a {v['a']:.5f}, c/a {v.get('c_over_a', float('nan')):.4f} "
+                  f"({v.get('c_over_a_error_pct', float('nan')):+.2f} %), shear L2 {v['shear_l2_pct']:.2f} %, "
+                  f"normal stage's shear {v['normal_stage_shear_pct']:.2f} %", flush=True)
     out = dict(problem="meshes/cattaneo/cattaneo.opts: disc R = 1 on a slab, E = 1000, nu = 0.3, plane strain, "
                        "P = 4.3 then Q = 0.645 with P held, mu = 0.3",
                getfem=gf.__version__ if hasattr(gf, "__version__") else "5.4 (Debian python3-getfem)",
