@@ -14,22 +14,37 @@ The meshes are made here as the program makes them (src/mesh/meshgen.c):
 <geo> -o <msh>` with the scene's -<body>_geo, -<body>_geo_params and
 -<body>_mesh_size; the node counts are checked against the program's.
 
-Contact and friction are written in GetFEM's weak form language (its
-generic assembly), an integral Alart-Curnier augmented Lagrangian with two
-scalar multipliers on the disc's contact arc: ln, the pressure, and lt, the
-disc's shear traction along +y (the traction on the disc is (-ln, lt)). A
-point X of the arc is paired with the slab's point (0, X_2) (small
-deformations: the slab's contact edge is x = 0, the normal +x); the gap is
-g = -X_1 - u1_x + u2_x(0, X_2), the slip increment s = [u1_y - u2_y] minus
-its value at the last accepted increment, and
+Two contact formulations, both converged (Newton, max_res 1e-9):
+
+small_sliding: written here in GetFEM's weak form language (its generic
+assembly), an integral Alart-Curnier augmented Lagrangian with two scalar
+multipliers on the disc's contact arc: ln, the pressure, and lt, the disc's
+shear traction along +y (the traction on the disc is (-ln, lt)). A point X
+of the arc is paired with the slab's point (0, X_2) (linearised kinematics,
+as Mindlin's theory: the slab's contact edge is x = 0, the normal +x); the
+gap is g = -X_1 - u1_x + u2_x(0, X_2), the slip increment s = [u1_y - u2_y]
+minus its value at the last accepted increment, and
 
     ln = max(0, ln - r g),   lt = proj_[-f b, f b](lt - r s),  b = max(0, ln - r g)
 
 hold in the L2 sense on the arc (tested by the multipliers' shape
-functions), r = E by default. The multiplier is P2 on the arc (its nodes
-are the program's slave nodes, its weights the program's A_j) or P1 (the
-triangles' vertices only). GetFEM's built-in bricks were tried first (see
-FAILED below and the JSON's "failed" entries).
+functions), r = E by default (r = 100 and 1e4 give the same answer). The
+multiplier is P2 on the arc (its nodes are the program's slave nodes, its
+weights the program's A_j) or P1 (the triangles' vertices only).
+
+large_sliding: GetFEM's own add_integral_large_sliding_contact_brick_raytracing
+(current configuration, as the program's mortar pairs), a vector multiplier
+(P2) on the arc, the slip from the last accepted increment (alpha = 1,
+w = its displacements); p and q are its traction decomposed on the slab's
+current edge. It is started with the disc moved 0.01 towards the slab (from
+rest the free disc flies past the rays' release distance).
+
+Each is run with friction from the first increment and with a frictionless
+normal stage (f = 0 for P, then mu for Q; the disc's y, free without
+friction, is then held by a spring of stiffness 1 on U_y, whose force,
+|U_y| < 1e-5, is recorded as U_normal_stage), 1 and 8 increments a stage.
+GetFEM's built-in bricks for two meshes were tried first (FAILED below, the
+JSON's "failed").
 
 The figures are the program's definitions: p = ln and q = -lt (the shear
 opposing Q, positive, as the program's node_shear) at the multiplier's
@@ -42,12 +57,23 @@ relative L2 distance sqrt(sum w (q - q_M)^2 / sum w q_M^2) over the nodes
 with |x| < a or in contact (p > 1e-3 max p: the integral formulation leaves
 multiplier values of 1e-3 of max p or less outside the zone). A node sticks
 where p > 1e-3 max p and |q| < mu p (1 - 0.01): slipping nodes meet
-|q| = mu p to within the "slip_ratio_spread" recorded (0.2 % or less), stuck
-ones are well below (the largest ratio is recorded too). The stick zone's
+|q| = mu p to within the "slip_ratio_spread" recorded (0.7 % or less: the
+conditions hold in the L2 sense), stuck ones below (the largest ratio is
+recorded as stuck_ratio_max, and c/a for other margins as
+c_over_a_error_pct_by_margin). The stick zone's
 ends are carried past the outermost stuck nodes as the program does
 (FrictionStickEnd in src/contact/friction.c: (1 - |q|/(mu p))^2 extrapolated
 linearly to zero from the last two stuck nodes, kept before the next node);
 "c_nodes" is half the distance between the outermost stuck nodes.
+
+What it found (bench/friction/getfem.json): the pressure is the program's
+to 0.7-0.8 % (L2 over the same nodes); the shear left by a frictional
+normal stage depends on the contact kinematics (the linearised pairing,
+GetFEM's rays and the program's mortar pairs give different shapes, of
+different signs near the zone's ends), and it
+dominates the distance from Mindlin's curve when friction acts from the
+first increment; with a frictionless normal stage both GetFEM formulations
+come within 2.5-3.9 % of Mindlin's shear and -0.55 to -1.4 % of his c/a.
 
 Run from the repository root (about 1 min on one core):
 
@@ -74,6 +100,7 @@ LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
 R_DISC, XC, YC = 1.0, -1.0, 0.0
 THETA0 = -math.pi / 3          # where the disc's contact arc starts (xcontact = -0.5): s = R (theta - THETA0)
 PROGRAM_NODES = {"disc": 2607, "slab": 2645}   # the program's summary on this scene (bodies.<name>.nodes)
+EPS_Y = 1.0                    # without friction the disc's y is free: a y spring in a frictionless stage (its force |U_y|, recorded)
 RELEASE = 0.05                 # the large sliding brick's release distance (the contact zone's gaps are below 0.006)
 EPS = 1e-4                     # a soft spring on U (force 1e-6 of P at the answer): the disc is free until it touches
 STICK_MARGIN = 0.01            # a node sticks where |q| < mu p (1 - STICK_MARGIN)
@@ -87,7 +114,8 @@ FAILED = [
          result="converges in 3 + 1 Newton iterations but the multiplier is not the traction: with P1 and r = 1e4, "
                 "1 increment a stage, it is nonzero over 5 vertices only (|y| < 0.015, peaks -199 and -203 against "
                 "Hertz's 27.4) and alternates in sign with decaying amplitude beyond; the stick zone and shear "
-                "profile cannot be read from it (measured c/a 1.0, shear L2 98 %)"),
+                "profile cannot be read from it (the earlier script's measure, a from the support and p0 = max p: "
+                "c/a 1.0, shear L2 98 %)"),
     dict(name="builtin_penalized_nonmatching",
          settings="Model.add_penalized_contact_between_nonmatching_meshes_brick with friction (earlier attempt)",
          result="no convergence in 200 Newton iterations"),
@@ -97,6 +125,23 @@ FAILED = [
                 "a string' for every form of the frictional call (regions as ints or lists, with or without the "
                 "optional arguments); its friction has no previous-state argument (dummy_wt in its C++), so its slip "
                 "would be total, not incremental, anyway"),
+    dict(name="large_sliding frictionless normal stage, the disc's y held by the 1e-4 spring only",
+         settings="add_integral_large_sliding_contact_brick_raytracing with f = 0 in the normal stage",
+         result="8 increments: no convergence in 100 Newton iterations in every normal increment; 1 increment: a "
+                "wrong contact zone (a = 0.073); cured by the y spring EPS_Y during the frictionless stage"),
+]
+NOTES = [
+    "P1 multiplier (vertices only, twice the node spacing): the shear alternates near the stick zone's ends and an "
+    "edge node's |q|/(mu p) can fall below 1 - margin, so its c moves with the margin (see c_over_a_error_pct_by_margin); "
+    "the P2 variants are the comparison on the program's own nodes.",
+    "The stick rule's margin: slipping nodes meet |q| = mu p within slip_ratio_spread (up to 0.7 % in the integral "
+    "formulations), so margins of 0.2 % misclassify them; 0.5 to 2 % give the same c except where a stuck node sits "
+    "near the bound (stuck_ratio_max).",
+    "The shear left by the normal stage (normal_stage_shear_pct, over Mindlin's final shear's norm) is what separates "
+    "friction-from-the-start from a frictionless normal stage: for elastically similar half-spaces it would be 0; "
+    "here the finite disc stretches along the arc relative to the slab (normal_stage_tangential_stretch, "
+    "d(u1_y - u2_y)/dy = 1.8e-3 without friction, linearised) and the current-configuration kinematics add terms "
+    "of the gap times the surfaces' slopes.",
 ]
 
 
@@ -165,9 +210,9 @@ def solve(gf, disc, slab, steps, r, kmul, normal_friction, formulation):
     Lc = gf.asm_generic(mim1, 0, "1", CLAMP)
     md.add_initialized_data("F", [0.0, 0.0])
     md.add_initialized_data("Lc", [Lc])
-    md.add_initialized_data("eps", [EPS])
+    md.add_initialized_data("eps", [EPS, EPS])
     md.add_source_term(mim1, "F.Test_U / Lc", CLAMP)
-    md.add_linear_term(mim1, "eps * U.Test_U / Lc", CLAMP)
+    md.add_linear_term(mim1, "(eps(1) * U(1) * Test_U(1) + eps(2) * U(2) * Test_U(2)) / Lc", CLAMP)
     md.add_initialized_data("r", [r])
     md.add_initialized_data("f", [MU_F])
     md.add_initialized_fem_data("w1", mfu1, np.zeros(mfu1.nbdof()))   # the displacements of the last accepted increment
@@ -223,6 +268,7 @@ def solve(gf, disc, slab, steps, r, kmul, normal_friction, formulation):
     for k, (Fx, Fy, fr) in enumerate(path):
         md.set_variable("F", [Fx, Fy])
         md.set_variable("f", [fr])
+        md.set_variable("eps", [EPS, EPS if fr > 0 else EPS_Y])
         n = int(np.ravel(md.solve("max_res", 1e-9, "max_iter", 100, "lsearch", "default"))[0])
         its.append(n)
         converged = converged and n < 100
@@ -230,13 +276,14 @@ def solve(gf, disc, slab, steps, r, kmul, normal_friction, formulation):
         md.set_variable("w2", md.variable("u2"))
         if k == steps - 1:
             q_normal = traction()[1]     # the shear left by the normal stage
+            U_normal = [float(v) for v in md.variable("U")]
             du_normal = gf.compute_interpolate_on(mfu1, md.variable("u1"), X)[1] \
                 - gf.compute_interpolate_on(mfu2, md.variable("u2"), np.vstack([0 * X[0], X[1]]))[1]
     seconds = time.time() - t0
     w = gf.asm_generic(mim1, 1, "Test_t", CONTACT1, "t", 1, mfl, np.zeros(mfl.nbdof()))[dofs]
     p, q = traction()
     return dict(X=X, w=w, p=p, q=q, q_normal=q_normal, du_normal=du_normal, iterations=its,
-                converged=converged, seconds=seconds, U=[float(v) for v in md.variable("U")])
+                converged=converged, seconds=seconds, U=[float(v) for v in md.variable("U")], U_normal=U_normal)
 
 
 def stick_end(s, p, q, i, j, o):
@@ -342,7 +389,8 @@ def main():
                                    displacements="P2 (Tri6 disc, Quad9 slab), linear elasticity", r=args.r,
                                    newton="GetFEM Model.solve, max_res 1e-9, lsearch default, max_iter 100"),
                      iterations=res["iterations"], iterations_total=int(sum(res["iterations"])),
-                     converged=res["converged"], seconds=round(res["seconds"], 2), U=res["U"])
+                     converged=res["converged"], seconds=round(res["seconds"], 2), U=res["U"],
+                     U_normal_stage=res["U_normal"])
             v.update(analyse(res))
             if normal_friction and kmul == 2:
                 v["program"] = PROGRAM[str(steps)]
@@ -357,7 +405,7 @@ def main():
                command="/usr/bin/python3 scripts/getfem_cattaneo.py -o bench/friction/getfem.json",
                meshes=meshes, mindlin_c_over_a=math.sqrt(1 - Q / (MU_F * P)),
                stick_rule=f"p > {CONTACT_FLOOR} max p and |q| < mu p (1 - {STICK_MARGIN}); ends as friction.c's FrictionStickEnd",
-               variants=variants, failed=FAILED)
+               variants=variants, failed=FAILED, notes=NOTES)
     if args.output:
         with open(args.output, "w") as f:
             json.dump(out, f, indent=1)
