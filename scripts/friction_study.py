@@ -364,6 +364,45 @@ def cost_phrase(rows):
             f"in {n_lb} iterations against Newton's {n_newton}")
 
 
+GETFEM_KIND = {"small_sliding": "GetFEM, small sliding (its weak form language: integral Alart-Curnier, linearised pairing)",
+               "large_sliding": "GetFEM, large sliding (its raytracing brick: current configuration, as ours)"}
+
+
+def getfem_rows(rows, gf):
+    """(label, increments, friction in the normal stage, c/a error %, shear L2 %,
+    Newton iterations, seconds) of the program's Q = 0.5 mu P runs and of
+    each GetFEM variant (bench/friction/getfem.json) on the same meshes."""
+    ref = math.sqrt(1 - 0.5)
+    out = [("the program (mortar, -contact_friction)", r["steps"], True, 100 * (r["c_over_a"][-1] / ref - 1), 100 * r["l2"],
+            r["iterations"], r["solve"]) for r in rows if r["case"] == "cattaneo" and r["ratio"] == 0.5]
+    for v in gf["variants"]:
+        kind = next(k for k in GETFEM_KIND if v["name"].startswith(k))
+        mult = "P1" if "_P1_" in v["name"] else "P2"
+        out.append((f"{GETFEM_KIND[kind]}, {mult} multiplier", v["steps_per_stage"], v["friction_in_normal_stage"],
+                    v["c_over_a_error_pct"], v["shear_l2_pct"], v["iterations_total"], v["seconds"]))
+    return out
+
+
+def getfem_table(rows, gf):
+    """docs/scenes.md's table: the program against GetFEM on the cattaneo meshes."""
+    out = ["| code, formulation | increments a stage | friction in the normal stage | c/a from Mindlin's | shear profile L2 from Mindlin's | Newton iterations | solve |",
+           "|---|---|---|---|---|---|---|"]
+    for label, n, fr, ca, l2, its, t in getfem_rows(rows, gf):
+        out.append(f"| {label} | {n} | {'yes' if fr else 'no (mu = 0, then mu)'} | {ca:+.2f} % | {l2:.1f} % | {its} | {t:.2f} s |")
+    return "\n".join(out) + "\n"
+
+
+def getfem_phrase(rows, gf):
+    """The README's sentence: the program's shear profile against GetFEM's
+    large-sliding brick's, both with friction from the first increment."""
+    got = getfem_rows(rows, gf)
+    ours = {n: l2 for label, n, fr, ca, l2, its, t in got if label.startswith("the program")}
+    theirs = {n: l2 for label, n, fr, ca, l2, its, t in got if label.startswith(GETFEM_KIND["large_sliding"]) and fr}
+    return (f"on the same meshes, friction from the first increment, GetFEM's frictional brick is "
+            f"{theirs[1]:.1f} % / {theirs[8]:.1f} % from Mindlin's shear in 1 / 8 increments a stage, ours "
+            f"{ours[1]:.1f} % / {ours[8]:.1f} %")
+
+
 if __name__ == "__main__":
     if "--cost" in sys.argv:
         print(cost_table(measure_cost()))

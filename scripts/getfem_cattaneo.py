@@ -105,7 +105,6 @@ RELEASE = 0.05                 # the large sliding brick's release distance (the
 EPS = 1e-4                     # a soft spring on U (force 1e-6 of P at the answer): the disc is free until it touches
 STICK_MARGIN = 0.01            # a node sticks where |q| < mu p (1 - STICK_MARGIN)
 CONTACT_FLOOR = 1e-3           # in contact: p > CONTACT_FLOOR max p
-PROGRAM = {"1": dict(c_over_a_error_pct=-0.51, shear_l2_pct=6.3), "8": dict(c_over_a_error_pct=-0.85, shear_l2_pct=4.6)}
 
 FAILED = [
     dict(name="builtin_integral_nonmatching",
@@ -392,8 +391,6 @@ def main():
                      converged=res["converged"], seconds=round(res["seconds"], 2), U=res["U"],
                      U_normal_stage=res["U_normal"])
             v.update(analyse(res))
-            if normal_friction and kmul == 2:
-                v["program"] = PROGRAM[str(steps)]
             variants.append(v)
             print(f"{name}: its {v['iterations']}, {v['seconds']} s, P {v['P_met']:.4f}, Q {v['Q_met']:.4f}, "
                   f"a {v['a']:.5f}, c/a {v.get('c_over_a', float('nan')):.4f} "

@@ -72,6 +72,11 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   the phrase friction-finite (docs/scenes.md): c/a at Q/(mu P) = 0.8 under
   refinement; the table friction-narrow (docs/scenes.md): each load ratio on
   the scene and with the contact half as wide against the bodies;
+- friction-getfem (docs/scenes.md) and the phrase friction-getfem-phrase
+  (README.md): GetFEM on the cattaneo meshes, bench/friction/getfem.json
+  (written by --measure friction-getfem: scripts/getfem_cattaneo.py run by
+  /usr/bin/python3 with python3-getfem, about a minute), beside the
+  program's rows of bench/friction/results.json;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
   (mortar), and Newton with gpts, interleaved, median of 3 solve times; about
@@ -673,6 +678,28 @@ def render_friction_narrow():
     return friction_study.narrow_table(load("friction")["accuracy"])
 
 
+def measure_friction_getfem():
+    """GetFEM on the cattaneo meshes (scripts/getfem_cattaneo.py, run by the system's python3 with python3-getfem)."""
+    import subprocess
+    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "getfem_cattaneo.py"), "-o",
+                    os.path.join(ROOT, "bench", "friction", "getfem.json")], cwd=ROOT, check=True)
+
+
+def getfem_friction():
+    with open(os.path.join(ROOT, "bench", "friction", "getfem.json")) as f:
+        return json.load(f)
+
+
+def render_friction_getfem():
+    import friction_study
+    return friction_study.getfem_table(load("friction")["accuracy"], getfem_friction())
+
+
+def render_friction_getfem_phrase():
+    import friction_study
+    return friction_study.getfem_phrase(load("friction")["accuracy"], getfem_friction())
+
+
 def render_friction_cost_ratio():
     import friction_study
     return friction_study.cost_phrase(load("friction")["cost"])
@@ -985,7 +1012,8 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty, "claims": render_claims, "model": render_model,
           "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost,
-          "friction": render_friction, "friction-cost": render_friction_cost, "friction-narrow": render_friction_narrow}
+          "friction": render_friction, "friction-cost": render_friction_cost, "friction-narrow": render_friction_narrow,
+          "friction-getfem": render_friction_getfem}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
            "solver-speed": render_solver_speed, "lmvm-ratio": render_lmvm_ratio, "lmvm-iterations": render_lmvm_iterations,
@@ -997,6 +1025,7 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
            "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio, "friction-finite": render_friction_finite,
+           "friction-getfem-phrase": render_friction_getfem_phrase,
            "rigid-adequacy-phrase": render_rigid_adequacy_phrase}
 
 
@@ -1094,7 +1123,7 @@ def main():
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
     ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model",
-                                          "squeeze", "squeeze-newton", "squeeze-picture", "friction", "friction-cost"], action="append",
+                                          "squeeze", "squeeze-newton", "squeeze-picture", "friction", "friction-cost", "friction-getfem"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -1125,6 +1154,8 @@ def main():
         measure_friction()
     if "friction-cost" in args.measure:
         measure_friction_cost()
+    if "friction-getfem" in args.measure:
+        measure_friction_getfem()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:

@@ -8,6 +8,9 @@ stage, then the tangential force Q = 0.5 mu P with P held (mu = 0.3). A
 central zone |x| < c sticks, c/a = sqrt(1 - Q/(mu P)) = 0.70711; where a node
 slips its shear is mu p, against its slip. The scene's bodies are finite (a
 wide slab, a/R = 0.1) and its contact edges hc = 0.0075 (a/hc = 13)."""
+import json
+import os
+
 import h5py
 import numpy as np
 import pytest
@@ -468,3 +471,48 @@ def test_master_shear_transferred(runs):
     assert abs(abs(Qm / Qs) - 1) <= 4e-4 and Qm * Qs < 0
     assert excess <= 1e-6
     assert ranks <= 1e-9
+
+
+GETFEM_PYTHON = "/usr/bin/python3"
+
+
+def getfem_available():
+    import subprocess
+    return os.path.exists(GETFEM_PYTHON) and subprocess.run([GETFEM_PYTHON, "-c", "import getfem"],
+                                                            capture_output=True).returncode == 0
+
+
+@pytest.mark.skipif(not getfem_available(), reason="python3-getfem is not installed (apt-get install python3-getfem)")
+def test_getfem_same_mesh(runs, tmp_path):
+    """GetFEM 5.4 on the scene's own meshes (scripts/getfem_cattaneo.py: its
+    large-sliding frictional brick, the current configuration as ours,
+    friction from the first increment, one increment a stage, the disc
+    driven by the same forces), measured as ours (friction_study.shear_l2's
+    definitions). The pressures at the same slave nodes: measured 0.65 %
+    apart (relative L2), bound 1.5 %. Both stick zones within 2 % of
+    Mindlin's (measured: ours -0.51 %, GetFEM's +0.58 %). Our shear profile
+    nearer Mindlin's than GetFEM's on the same mesh, as the issue asks:
+    measured 6.3 % against 12.3 %."""
+    import subprocess
+    import friction_study
+    out = tmp_path / "getfem.json"
+    subprocess.run([GETFEM_PYTHON, os.path.join(str(ROOT), "scripts", "getfem_cattaneo.py"), "--only",
+                    "large_sliding_P2_friction_from_start_1", "--mesh-dir", str(tmp_path), "-o", str(out)],
+                   cwd=str(ROOT), check=True, capture_output=True, timeout=300)
+    (g,) = json.loads(out.read_text())["variants"]
+    res = runs[1]
+    ours = friction_study.shear_l2(res.output_path, res.summary, Q / (MU * P))
+    pair = res.summary["contact"]["interface"]
+    surf = pair["surfaces"][0]
+    with h5py.File(res.output_path, "r") as f:
+        s, p = f[SLAVE]["node_s"][:], f[SLAVE]["node_pressure"][:]
+    x = s - surf["centre"]
+    gx, gp, gw = (np.array(g["profile"][k]) for k in ("x", "p", "w"))
+    mine = np.interp(gx + g["centre"] - surf["centre"], x, p)    # GetFEM's nodes are ours (the same mesh)
+    dp = float(np.sqrt(np.sum(gw * (mine - gp) ** 2) / np.sum(gw * gp ** 2)))
+    ca = pair["stick_half_width"] / surf["a_moment"] / np.sqrt(1 - Q / (MU * P)) - 1
+    print(f"pressure {dp:.4f} apart; c/a ours {ca:+.4f}, GetFEM's {g['c_over_a_error_pct'] / 100:+.4f}; "
+          f"shear L2 ours {ours:.4f}, GetFEM's {g['shear_l2']:.4f}")
+    assert dp <= 0.015
+    assert abs(ca) <= 0.02 and abs(g["c_over_a_error_pct"]) <= 2
+    assert ours < g["shear_l2"]
