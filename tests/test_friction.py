@@ -202,7 +202,7 @@ def test_taylor(tmp_path):
 def test_mu_zero_is_frictionless(tmp_path):
     """-contact_friction 0 is the frictionless run, bit for bit (the term has
     no friction at all); a friction of 1e-13, which runs the friction's
-    machinery (the first solve with every node tied, then the fixed point)
+    machinery (the lag at the softer penalty stage's answer, the fixed point)
     gives the frictionless answer to 5.7e-15 in the energy and the same P
     (measured); bound 1e-12."""
     base = run_contact(HERTZ, tmp_path, name="base").summary

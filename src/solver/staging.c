@@ -384,6 +384,10 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     }
     if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
+    if (s > 1 && s == sc->penaltyStages && p->res.loadDone == 0.0 && !p->X0 && ProblemHasState(p)) { /* from rest: the lag at the softer stage's answer (friction.c) */
+      PetscReal c;
+      for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermLag(p->terms[t], p->bodies, &c));
+    }
     PetscCall(ProblemStageSolve(p, p->res.loadDone, load, penalty, (PetscBool)(s == sc->penaltyStages), &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
     *its += n;
