@@ -385,7 +385,8 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
     if (s > 1 && s == sc->penaltyStages && p->res.loadDone == 0.0 && !p->X0 && ProblemHasState(p)) { /* from rest: the lag at the softer stage's answer (friction.c) */
-      PetscReal c;
+      PetscReal c, f;
+      PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL)); /* the bodies at that answer */
       for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermLag(p->terms[t], p->bodies, &c));
     }
     PetscCall(ProblemStageSolve(p, p->res.loadDone, load, penalty, (PetscBool)(s == sc->penaltyStages), &n, reason));
