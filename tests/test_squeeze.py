@@ -60,18 +60,23 @@ def test_energy_is_work_of_reactions(coarse):
 
 def test_two_ranks(coarse):
     """1 and 2 ranks: the final force and energy, and the reactions along the
-    path. Measured: the final P 3.8e-13 and the energy 1.0e-11 apart
-    (relative); the intermediate reactions up to 9.7e-8 of the final force
-    (each increment stops at the same absolute gradient, -tao_gttol times
-    the full problem's at rest, which is looser relative to an early
-    increment's force). Bounds 1e-10 and 3e-7."""
+    path. Two ranks add the contributions from the other rank in the order
+    their messages arrive, so their round-off differs from run to run, and
+    each run stops somewhere within the final tolerance (each increment at
+    the same absolute gradient, -tao_gttol times the full problem's at
+    rest). Measured over six 2-rank runs against the 1-rank one: the final P
+    3e-13 to 1.1e-12 apart (relative) and once 8.3e-9; the energy, at its
+    minimum and so second order in the stop, 1e-15; the intermediate
+    reactions up to 9.7e-8 of the final force (the stop is looser relative
+    to an early increment's force). Bounds: P 1e-7, the energy 1e-10, the
+    path 3e-7."""
     one, two = coarse[1], coarse[2]
     d1, F1, E1 = squeeze_study.path_arrays(one)
     d2, F2, E2 = squeeze_study.path_arrays(two)
     print(one["iterations"], two["iterations"], abs(one["contact_force"] / two["contact_force"] - 1),
           np.max(np.abs(F1 - F2)) / F1[-1])
     assert np.array_equal(d1, d2)
-    assert abs(one["contact_force"] - two["contact_force"]) <= 1e-10 * one["contact_force"]
+    assert abs(one["contact_force"] - two["contact_force"]) <= 1e-7 * one["contact_force"]
     assert abs(one["energy"] - two["energy"]) <= 1e-10 * one["energy"]
     assert np.max(np.abs(F1 - F2)) <= 3e-7 * F1[-1]
 
