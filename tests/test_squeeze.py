@@ -60,9 +60,11 @@ def test_energy_is_work_of_reactions(coarse):
 
 def test_two_ranks(coarse):
     """1 and 2 ranks: the final force and energy, and the reactions along the
-    path. Two ranks' runs are not bitwise alike from run to run (whatever
-    orders their sums differently; not traced), and each run stops
-    somewhere within the final tolerance (each increment at
+    path. Two ranks' runs are not bitwise alike from run to run (the
+    neohookean tangent's Newton step is a Cholesky factorisation by MUMPS
+    across the ranks, whose parallel factorisation varies in its last bits:
+    with -newton_iterative instead four 2-rank runs were bit-identical), and
+    each run stops somewhere within the final tolerance (each increment at
     the same absolute gradient, -tao_gttol times the full problem's at
     rest). Measured over six 2-rank runs against the 1-rank one: the final P
     3e-13 to 1.1e-12 apart (relative) and once 8.3e-9; the energy, at its
