@@ -170,19 +170,19 @@ static PetscErrorCode ContactForceString(const PetscReal f[2], PetscBool axisym,
 
 /* Dundurs' second constant of two bodies in plane strain:
    beta = [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)],
-   a rigid body's terms 0; 0 for elastically similar bodies, where a normal
-   load makes no tangential mismatch (Cattaneo-Mindlin's assumption). */
+   G the shear modulus (the body's Lame mu, param[1]), a rigid body's terms
+   0; 0 for elastically similar bodies, where a normal load makes no
+   tangential mismatch (Cattaneo-Mindlin's assumption). */
 static PetscReal ContactDundursBeta(Body a, Body b)
 {
   PetscReal n = 0.0, d = 0.0;
   Body      ab[2] = {a, b};
 
   for (PetscInt k = 0; k < 2; ++k) {
-    PetscReal G;
-    if (ab[k]->rigid || !(ab[k]->E > 0)) continue;
-    G = ab[k]->E / (2.0 * (1.0 + ab[k]->nu));
-    n += (k == 0 ? 1.0 : -1.0) * (1.0 - 2.0 * ab[k]->nu) / G;
-    d += 2.0 * (1.0 - ab[k]->nu) / G;
+    const PetscReal G = ab[k]->param[1], nu = ab[k]->nu;
+    if (ab[k]->rigid || !(G > 0)) continue;
+    n += (k == 0 ? 1.0 : -1.0) * (1.0 - 2.0 * nu) / G;
+    d += 2.0 * (1.0 - nu) / G;
   }
   return d > 0 ? n / d : 0.0;
 }

@@ -139,6 +139,24 @@ static PetscBool ProblemHasState(Problem p)
    (the normal stage 41 in all; lagged from the full penalty alone, 32). The re-solves start close to their answer, so a stop relative to
    their own first gradient (gttol) is one relative to the first solve's,
    gstart. */
+/* The terms' lag at the bodies' state p->X (evaluated there first, so that
+   the bodies hold it and not a line search's last trial); change: the
+   largest relative change of what they lag. */
+static PetscErrorCode ProblemStateLag(Problem p, PetscReal *change)
+{
+  PetscReal f;
+
+  PetscFunctionBeginUser;
+  *change = 0.0;
+  PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscReal c;
+    PetscCall(EnergyTermLag(p->terms[t], p->bodies, &c));
+    *change = PetscMax(*change, c);
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, PetscReal gstart, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscInt  k = 1;
@@ -149,14 +167,9 @@ static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, Pet
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
   PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * gstart), tol[1], 0.0)); /* a re-solve stops where the first did, not relative to its own start */
   while (*reason > 0) {
-    PetscReal f, change = 0.0;
+    PetscReal change;
     PetscInt  n;
-    PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
-    for (PetscInt t = 0; t < p->nterms; ++t) {
-      PetscReal c;
-      PetscCall(EnergyTermLag(p->terms[t], p->bodies, &c));
-      change = PetscMax(change, c);
-    }
+    PetscCall(ProblemStateLag(p, &change));
     PetscCall(PetscInfo(p->tao, "fixed point %" PetscInt_FMT ": the lagged pressure changed by %g (%" PetscInt_FMT " iterations so far)\n", k, (double)change, *its));
     p->res.lagSolves++;
     if (change <= p->opt.lagRtol) break;
@@ -385,9 +398,8 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
     if (s > 1 && s == sc->penaltyStages && p->res.loadDone == 0.0 && !p->X0 && ProblemHasState(p)) { /* from rest: the lag at the softer stage's answer (friction.c) */
-      PetscReal c, f;
-      PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL)); /* the bodies at that answer */
-      for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermLag(p->terms[t], p->bodies, &c));
+      PetscReal change;
+      PetscCall(ProblemStateLag(p, &change));
     }
     PetscCall(ProblemStageSolve(p, p->res.loadDone, load, penalty, (PetscBool)(s == sc->penaltyStages), &n, reason));
     PetscCall(PetscInfo(p->tao, "stage %" PetscInt_FMT ": load %g, penalty factor %g: %s after %" PetscInt_FMT " iterations\n", p->res.stagesDone + 1, (double)load, (double)penalty, TaoConvergedReasons[*reason], n));
