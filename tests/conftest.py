@@ -51,6 +51,16 @@ class RunResult:
         return h5py.File(self.output_path, "r")
 
 
+# GetFEM (python3-getfem), an independent code the squeeze and the friction
+# are compared with, runs under the system's interpreter
+GETFEM_PYTHON = "/usr/bin/python3"
+
+
+def getfem_available():
+    return os.path.exists(GETFEM_PYTHON) and subprocess.run([GETFEM_PYTHON, "-c", "import getfem"],
+                                                            capture_output=True).returncode == 0
+
+
 def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, env=None):
     """Runs bin/contact from the repository root with outputs in tmp_path
     (env: variables added to the environment)."""

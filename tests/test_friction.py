@@ -15,7 +15,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_contact
+from conftest import GETFEM_PYTHON, ROOT, getfem_available, run_contact
 
 CATTANEO = ["-options_file", "meshes/cattaneo/cattaneo.opts"]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
@@ -471,15 +471,6 @@ def test_master_shear_transferred(runs):
     assert abs(abs(Qm / Qs) - 1) <= 4e-4 and Qm * Qs < 0
     assert excess <= 1e-6
     assert ranks <= 1e-9
-
-
-GETFEM_PYTHON = "/usr/bin/python3"
-
-
-def getfem_available():
-    import subprocess
-    return os.path.exists(GETFEM_PYTHON) and subprocess.run([GETFEM_PYTHON, "-c", "import getfem"],
-                                                            capture_output=True).returncode == 0
 
 
 @pytest.mark.skipif(not getfem_available(), reason="python3-getfem is not installed (apt-get install python3-getfem)")

@@ -22,13 +22,12 @@ import sys
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_contact
+from conftest import GETFEM_PYTHON, ROOT, getfem_available, run_contact
 
 sys.path.insert(0, os.path.join(str(ROOT), "scripts"))
 import squeeze_study  # noqa: E402
 
 COARSE = squeeze_study.SCENE + ["-mesh_size", "0.1", "-output", "none"] + squeeze_study.PATH
-GETFEM_PYTHON = "/usr/bin/python3"
 
 
 @pytest.fixture(scope="module")
@@ -100,11 +99,6 @@ def test_finer_mesh(coarse, tmp_path):
     print(diff, Ff[-1], strain)
     assert diff < 3e-3
     assert strain > 0.4
-
-
-def getfem_available():
-    return os.path.exists(GETFEM_PYTHON) and subprocess.run([GETFEM_PYTHON, "-c", "import getfem"],
-                                                            capture_output=True).returncode == 0
 
 
 @pytest.mark.skipif(not getfem_available(), reason="python3-getfem is not installed (apt-get install python3-getfem)")
