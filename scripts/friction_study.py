@@ -123,11 +123,32 @@ def run(args, tmp, name, h5=False):
     return dict(command="bin/contact " + " ".join(list(args) + INFO), summary=res.summary, increments=inc, h5=res.h5)
 
 
-def scene_params(body, hc):
-    """The scene's -<body>_geo_params with its hc replaced."""
+def scene_params(body, hc, rc_scale=1.0):
+    """The scene's -<body>_geo_params with its hc replaced and its rc (the
+    graded zone's radius) scaled by rc_scale."""
     with open(os.path.join(ROOT, SCENE)) as f:
         line = next(l for l in f if l.startswith(f"-{body}_geo_params "))
-    return re.sub(r"hc=[0-9.e-]+", f"hc={hc!r}", line.split(None, 1)[1].strip())
+    params = re.sub(r"hc=[0-9.e-]+", f"hc={hc!r}", line.split(None, 1)[1].strip())
+    if rc_scale != 1.0:
+        params = re.sub(r"rc=([0-9.e-]+)", lambda m: f"rc={float(m.group(1)) * rc_scale!r}", params)
+    return params
+
+
+def cattaneo_row(tmp, case, ratio, steps, hc=None, scale=1.0):
+    """One Cattaneo-Mindlin run and its row: the normal force P scale^2, then
+    Q = ratio mu P, in steps increments a stage; with hc, the contact edges
+    hc and the graded zone's radius scaled by scale (the contact scale times
+    as wide against the bodies, where hc scales with it too)."""
+    force = P * scale**2
+    args = list(CATTANEO)
+    if hc is not None:
+        args += ["-disc_geo_params", scene_params("disc", hc, scale), "-slab_geo_params", scene_params("slab", hc, scale)]
+    args += ["-disc_bc_clamp_values", f"{force!r},0,{force!r},{ratio * MU * force!r}", "-load_steps", str(steps)]
+    r = run(args, tmp, case, h5=True)
+    row = dict(brief(r), case=case, ratio=ratio, steps=steps, l2=shear_l2(r["h5"], r["summary"], ratio, force=force))
+    if hc is not None:
+        row["hc"] = hc
+    return row
 
 
 def stage_c(s):
@@ -145,48 +166,23 @@ def brief(r):
 
 def measure():
     """The accuracy rows: Cattaneo-Mindlin at each ratio in 1 and 8
-    increments a stage, Mindlin-Deresiewicz's unloading likewise, and
-    Q/(mu P) = 0.5 and 0.8 at three contact edge sizes likewise, and 0.8
-    with the contact half as wide against the bodies."""
+    increments a stage, Mindlin-Deresiewicz's unloading likewise,
+    Q/(mu P) = 0.5 and 0.8 at three contact edge sizes likewise, and each
+    ratio with the contact half as wide against the bodies."""
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for ratio in RATIOS:
-            for n in STEPS:
-                args = CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{ratio * MU * P!r}", "-load_steps", str(n)]
-                r = run(args, tmp, "cm", h5=True)
-                rows.append(dict(brief(r), case="cattaneo", ratio=ratio, steps=n, l2=shear_l2(r["h5"], r["summary"], ratio)))
+        rows += [cattaneo_row(tmp, "cattaneo", ratio, n) for ratio in RATIOS for n in STEPS]
         for n in STEPS:
             args = CATTANEO + ["-load_stages", "3", "-disc_bc_clamp_values", f"{P},0,{P},{QSTAR * MU * P!r},{P},0",
                                "-slab_bc_push_values", "0,0,0,0,0,0", "-load_steps", str(n)]
             r = run(args, tmp, "md", h5=True)
             rows.append(dict(brief(r), case="deresiewicz", ratio=QSTAR, steps=n,
                              l2=shear_l2(r["h5"], r["summary"], QSTAR, unload=0.0)))
-        for hc in HC:
-            for n in STEPS:
-                args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc), "-slab_geo_params", scene_params("slab", hc),
-                                   "-load_steps", str(n)]
-                r = run(args, tmp, "hc", h5=True)
-                rows.append(dict(brief(r), case="refinement", ratio=0.5, steps=n, hc=hc,
-                                 l2=shear_l2(r["h5"], r["summary"], 0.5)))
-        q = RATIOS[-1] * MU * P
-        for hc in HC:
-            for n in STEPS:
-                args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc), "-slab_geo_params", scene_params("slab", hc),
-                                   "-disc_bc_clamp_values", f"{P},0,{P},{q!r}", "-load_steps", str(n)]
-                r = run(args, tmp, "hc8", h5=True)
-                rows.append(dict(brief(r), case="refinement-high", ratio=RATIOS[-1], steps=n, hc=hc,
-                                 l2=shear_l2(r["h5"], r["summary"], RATIOS[-1])))
-        # the same load ratio with the contact half as wide against the disc (a/R = 0.05: P / 4,
-        # the mesh's contact edges and graded zone scaled with a): nearer Mindlin's half-spaces
-        ps, hc = P / 4, HC[1] / 2
-        for ratio in RATIOS:
-            for n in STEPS:
-                args = CATTANEO + ["-disc_geo_params", scene_params("disc", hc).replace("rc=0.11", "rc=0.055"),
-                                   "-slab_geo_params", scene_params("slab", hc).replace("rc=0.11", "rc=0.055"),
-                                   "-disc_bc_clamp_values", f"{ps!r},0,{ps!r},{ratio * MU * ps!r}", "-load_steps", str(n)]
-                r = run(args, tmp, "small", h5=True)
-                rows.append(dict(brief(r), case="narrow", ratio=ratio, steps=n, hc=hc,
-                                 l2=shear_l2(r["h5"], r["summary"], ratio, force=ps)))
+        rows += [cattaneo_row(tmp, "refinement", 0.5, n, hc) for hc in HC for n in STEPS]
+        rows += [cattaneo_row(tmp, "refinement-high", RATIOS[-1], n, hc) for hc in HC for n in STEPS]
+        # each ratio with the contact half as wide against the disc (a/R = 0.05: P / 4, the
+        # mesh's contact edges and graded zone scaled with a): nearer Mindlin's half-spaces
+        rows += [cattaneo_row(tmp, "narrow", ratio, n, HC[1] / 2, 0.5) for ratio in RATIOS for n in STEPS]
     return rows
 
 
