@@ -40,13 +40,22 @@ SCENE = "meshes/cattaneo/cattaneo.opts"
 CATTANEO = ["-options_file", SCENE]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
 SPHERE = ["-options_file", "meshes/sphere/sphere.opts"]
-MU, P = 0.3, 4.3           # the scene's friction and normal force
+
+
+def scene_option(name):
+    """The value of -name in the scene's options file."""
+    with open(os.path.join(ROOT, SCENE)) as f:
+        return next(l.split(None, 1)[1].strip() for l in f if l.startswith(f"-{name} "))
+
+
+MU = float(scene_option("contact_interface_friction"))     # the scene's friction
+P = float(scene_option("disc_bc_clamp_values").split(",")[0])   # and normal force
 PAIR = "interface"
 SLAVE = "contact/interface/disc_contact"
 RATIOS = (0.2, 0.5, 0.8)   # Q / (mu P)
 QSTAR = 0.6                # Mindlin-Deresiewicz: Q* / (mu P), then back to 0
 STEPS = (1, 8)             # -load_steps
-HC = (0.015, 0.0075, 0.00375)   # the contact edges' size of the refinement rows (the scene's is the middle one)
+HC = (0.0075, 0.00375, 0.001875)   # the contact edges' size of the refinement rows (the scene's is the middle one)
 HERTZ_SLIDE = 0.08         # the hertz scene's block moved along the contact in a second stage (Q/(mu P) about 0.4)
 INFO = ["-info", ":tao", "-load_path"]
 STAGE_LINE = re.compile(r"stage \d+: load (\S+), penalty factor (\S+): (\S+) after (\d+) iterations")
@@ -110,11 +119,14 @@ def increments(text):
     return out
 
 
-def run(args, tmp, name, h5=False):
+def run(args, tmp, name, h5=False, may_fail=False):
     """One run with the staging's -info lines and every increment at the
-    final tolerance; its summary, increments, HDF5 path and command."""
+    final tolerance; its summary, increments, HDF5 path and command (with
+    may_fail, a run that does not converge gives its error line instead)."""
     from contactrun import run_case, parse_tao_line
     res = run_case(list(args) + INFO, tmp, name, h5=h5)
+    if res.returncode != 0 and may_fail:
+        return dict(command="bin/contact " + " ".join(list(args) + INFO), failed=res.stderr.strip().splitlines()[-1])
     if res.returncode != 0:
         raise SystemExit(f"{' '.join(res.cmd)} failed:\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
     inc = increments(res.stdout)
@@ -126,25 +138,28 @@ def run(args, tmp, name, h5=False):
 def scene_params(body, hc, rc_scale=1.0):
     """The scene's -<body>_geo_params with its hc replaced and its rc (the
     graded zone's radius) scaled by rc_scale."""
-    with open(os.path.join(ROOT, SCENE)) as f:
-        line = next(l for l in f if l.startswith(f"-{body}_geo_params "))
-    params = re.sub(r"hc=[0-9.e-]+", f"hc={hc!r}", line.split(None, 1)[1].strip())
+    params = re.sub(r"hc=[0-9.e-]+", f"hc={hc!r}", scene_option(f"{body}_geo_params"))
     if rc_scale != 1.0:
         params = re.sub(r"rc=([0-9.e-]+)", lambda m: f"rc={float(m.group(1)) * rc_scale!r}", params)
     return params
 
 
-def cattaneo_row(tmp, case, ratio, steps, hc=None, scale=1.0):
-    """One Cattaneo-Mindlin run and its row: the normal force P scale^2, then
-    Q = ratio mu P, in steps increments a stage; with hc, the contact edges
-    hc and the graded zone's radius scaled by scale (the contact scale times
-    as wide against the bodies, where hc scales with it too)."""
+def cattaneo_args(ratio, steps, hc=None, scale=1.0):
+    """The arguments of a Cattaneo-Mindlin run: the normal force P scale^2,
+    then Q = ratio mu P, in steps increments a stage; with hc, the contact
+    edges hc and the graded zone's radius scaled by scale (the contact scale
+    times as wide against the bodies, where hc scales with it too)."""
     force = P * scale**2
     args = list(CATTANEO)
     if hc is not None:
         args += ["-disc_geo_params", scene_params("disc", hc, scale), "-slab_geo_params", scene_params("slab", hc, scale)]
-    args += ["-disc_bc_clamp_values", f"{force!r},0,{force!r},{ratio * MU * force!r}", "-load_steps", str(steps)]
-    r = run(args, tmp, case, h5=True)
+    return args + ["-disc_bc_clamp_values", f"{force!r},0,{force!r},{ratio * MU * force!r}", "-load_steps", str(steps)]
+
+
+def cattaneo_row(tmp, case, ratio, steps, hc=None, scale=1.0):
+    """One Cattaneo-Mindlin run (cattaneo_args) and its row."""
+    force = P * scale**2
+    r = run(cattaneo_args(ratio, steps, hc, scale), tmp, case, h5=True)
     row = dict(brief(r), case=case, ratio=ratio, steps=steps, l2=shear_l2(r["h5"], r["summary"], ratio, force=force))
     if hc is not None:
         row["hc"] = hc
@@ -161,14 +176,15 @@ def brief(r):
     """The figures a row keeps of a run."""
     s = r["summary"]
     return dict(command=r["command"], dofs=s["dofs"], iterations=s["iterations"], solve=s["time"]["solve"],
-                increments=r["increments"], c_over_a=stage_c(s), a=s["contact"][PAIR]["fem_a_moment"])
+                increments=r["increments"], c_over_a=stage_c(s), a=s["contact"][PAIR]["fem_a_moment"],
+                pressure_l2=s["contact"][PAIR]["pressure_l2_error"])
 
 
 def measure():
     """The accuracy rows: Cattaneo-Mindlin at each ratio in 1 and 8
-    increments a stage, Mindlin-Deresiewicz's unloading likewise,
-    Q/(mu P) = 0.5 and 0.8 at three contact edge sizes likewise, and each
-    ratio with the contact half as wide against the bodies."""
+    increments a stage, Mindlin-Deresiewicz's unloading likewise, each
+    ratio at contact edges twice and half the scene's likewise, and each
+    ratio with the contact twice as wide against the bodies."""
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         rows += [cattaneo_row(tmp, "cattaneo", ratio, n) for ratio in RATIOS for n in STEPS]
@@ -178,40 +194,27 @@ def measure():
             r = run(args, tmp, "md", h5=True)
             rows.append(dict(brief(r), case="deresiewicz", ratio=QSTAR, steps=n,
                              l2=shear_l2(r["h5"], r["summary"], QSTAR, unload=0.0)))
-        rows += [cattaneo_row(tmp, "refinement", 0.5, n, hc) for hc in HC for n in STEPS]
-        rows += [cattaneo_row(tmp, "refinement-high", RATIOS[-1], n, hc) for hc in HC for n in STEPS]
-        # each ratio with the contact half as wide against the disc (a/R = 0.05: P / 4, the
-        # mesh's contact edges and graded zone scaled with a): nearer Mindlin's half-spaces
-        rows += [cattaneo_row(tmp, "narrow", ratio, n, HC[1] / 2, 0.5) for ratio in RATIOS for n in STEPS]
+        rows += [cattaneo_row(tmp, "refinement", ratio, n, hc) for ratio in RATIOS for hc in (HC[0], HC[2]) for n in STEPS]
+        # each ratio with the contact twice as wide against the disc (a/R = 0.1: 4 P, the
+        # mesh's contact edges and graded zone scaled with a): further from Mindlin's half-spaces
+        rows += [cattaneo_row(tmp, "wider", ratio, n, 2 * HC[1], 2.0) for ratio in RATIOS for n in STEPS]
     return rows
 
 
-def finite_phrase(rows):
-    """docs/scenes.md's sentence on the high load ratio's c/a against
-    Mindlin's under refinement, in 1 and 8 increments a stage."""
-    ratio = RATIOS[-1]
-    ref = math.sqrt(1 - ratio)
-    def errs(n):
-        sel = sorted((r for r in rows if r["case"] == "refinement-high" and r["steps"] == n), key=lambda r: -r["hc"])
-        return ", ".join(f"{100 * (r['c_over_a'][-1] / ref - 1):+.2f}" for r in sel)
-    return (f"at Q/(mu P) = {ratio:g} c/a is {errs(1)} % from Mindlin's at hc = {', '.join(f'{h:g}' for h in HC)} in one "
-            f"increment a stage, {errs(8)} % in 8")
-
-
-def narrow_table(rows):
-    """docs/scenes.md's table: each load ratio on the scene (a/R = 0.1) and
-    with the contact half as wide against the bodies (a/R = 0.05), c/a's
+def wider_table(rows):
+    """docs/scenes.md's table: each load ratio on the scene (a/R = 0.05) and
+    with the contact twice as wide against the bodies (a/R = 0.1), c/a's
     distance from Mindlin's and the shear profile's, 1 / 8 increments."""
-    out = ["| Q/(mu P) | c/a from Mindlin's, a/R = 0.1 (the scene): 1 / 8 increments | a/R = 0.05 | shear profile L2 from Mindlin's, a/R = 0.1: 1 / 8 | a/R = 0.05 |",
+    out = ["| Q/(mu P) | c/a from Mindlin's, a/R = 0.05 (the scene): 1 / 8 increments | a/R = 0.1 | shear profile L2 from Mindlin's, a/R = 0.05: 1 / 8 | a/R = 0.1 |",
            "|---|---|---|---|---|"]
     for ratio in RATIOS:
         ref = math.sqrt(1 - ratio)
         cell = {}
-        for case in ("cattaneo", "narrow"):
+        for case in ("cattaneo", "wider"):
             d = {r["steps"]: r for r in rows if r["case"] == case and r["ratio"] == ratio}
             cell[case] = (" / ".join(pct(d[n]["c_over_a"][-1] / ref - 1) for n in STEPS),
                           " / ".join(f"{100 * d[n]['l2']:.1f} %" for n in STEPS))
-        out.append(f"| {ratio:g} | {cell['cattaneo'][0]} | {cell['narrow'][0]} | {cell['cattaneo'][1]} | {cell['narrow'][1]} |")
+        out.append(f"| {ratio:g} | {cell['cattaneo'][0]} | {cell['wider'][0]} | {cell['cattaneo'][1]} | {cell['wider'][1]} |")
     return "\n".join(out) + "\n"
 
 
@@ -265,14 +268,15 @@ def measure_cost():
         lbfgs = [(label, args, 1) for label, _, args, _, _ in COST_CASES[:2]] + [("cattaneo, both stages", CATTANEO, None)]
         for label, args, stage in lbfgs:
             fr = run(args + ["-tao_type", "lmvm"], tmp, "lf")
-            nf = run(args + ["-tao_type", "lmvm", "-contact_interface_friction", "0"], tmp, "ln") if stage else None
+            nf = run(args + ["-tao_type", "lmvm", "-contact_interface_friction", "0"], tmp, "ln", may_fail=True) if stage else None
+            failed = nf.pop("failed", None) if nf else None
             c = fr["summary"]["contact"][PAIR]["stick_half_width"]
             cn = newton["summary"]["contact"][PAIR]["stick_half_width"] if stage is None else None
-            rows.append(dict(case=f"L-BFGS (-tao_type lmvm): {label}", steps=1, command=fr["command"],
-                             frictionless=nf["command"] if nf else None,
-                             friction=fr["increments"], without=nf["increments"] if nf else None,
+            rows.append(dict(case=f"L-BFGS (-tao_type lmvm): {label}", steps=int(scene_option("load_steps")), command=fr["command"],
+                             frictionless=nf["command"] if nf else None, frictionless_failed=failed,
+                             friction=fr["increments"], without=nf["increments"] if nf and not failed else None,
                              newton=newton["increments"] if stage is None else None,
-                             solve=fr["summary"]["time"]["solve"], solve_without=nf["summary"]["time"]["solve"] if nf else None,
+                             solve=fr["summary"]["time"]["solve"], solve_without=nf["summary"]["time"]["solve"] if nf and not failed else None,
                              stick=c, stick_newton=cn))
     return rows
 
@@ -282,36 +286,38 @@ def pct(x):
 
 
 def table(rows):
-    """The accuracy table: one row per reference and load, 1 and 8
-    increments a stage side by side."""
-    out = ["| case | reference | c/a: 1 increment a stage | 8 increments | shear profile L2 from the reference: 1 / 8 | Newton iterations of the run: 1 / 8 |",
+    """The accuracy table: one row per reference and load; c/a and the shear
+    profile at the three contact edge sizes (Mindlin-Deresiewicz: the
+    scene's alone), 1 and 8 increments a stage side by side."""
+    scene = next(r for r in rows if r["case"] == "cattaneo")
+    sizes = ", ".join(f"{hc:g} (a/hc = {scene['a'] / hc:.0f}{', the scene' if hc == HC[1] else ''})" for hc in HC)
+    out = [f"| case | reference | c/a, 1 increment a stage, at contact edges hc = {sizes} | 8 increments a stage (the scene's), the same sizes "
+           "| shear profile L2 from the reference: 1 / 8 increments | Newton iterations, the scene's mesh: 1 / 8 |",
            "|---|---|---|---|---|---|"]
-    by = {}
-    for r in rows:
-        if r["case"] in ("cattaneo", "deresiewicz"):
-            by.setdefault((r["case"], r["ratio"]), {})[r["steps"]] = r
-    for (case, ratio), d in by.items():
-        one, eight = d[1], d[8]
-        if case == "cattaneo":
-            ref = math.sqrt(1 - ratio)
-            cells = [f"{x['c_over_a'][-1]:.4f} ({pct(x['c_over_a'][-1] / ref - 1)})" for x in (one, eight)]
-            out.append(f"| Cattaneo-Mindlin, Q/(mu P) = {ratio:g} | c/a = sqrt(1 - Q/(mu P)) = {ref:.4f} | " + " | ".join(cells)
-                       + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
-        else:
-            ref, refs = math.sqrt(1 - ratio / 2), math.sqrt(1 - ratio)
-            cells = [f"{x['c_over_a'][-1]:.4f} ({pct(x['c_over_a'][-1] / ref - 1)}); at Q*: {x['c_over_a'][1]:.4f} "
-                     f"({pct(x['c_over_a'][1] / refs - 1)})" for x in (one, eight)]
-            out.append(f"| Mindlin-Deresiewicz, Q* = {ratio:g} mu P, then 0 | c'/a = sqrt(1 - Q*/(2 mu P)) = {ref:.4f}; "
-                       f"at Q*: {refs:.4f} | " + " | ".join(cells)
-                       + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
-    ref = math.sqrt(0.5)
-    fine = {n: sorted((r for r in rows if r["case"] == "refinement" and r["steps"] == n), key=lambda r: -r["hc"]) for n in STEPS}
-    cells = [", ".join(f"{r['c_over_a'][-1]:.4f} ({pct(r['c_over_a'][-1] / ref - 1)})" for r in fine[n]) for n in STEPS]
-    out.append(f"| Cattaneo-Mindlin, Q/(mu P) = 0.5, contact edges hc = "
-               + ", ".join(f"{r['hc']:g} (a/hc = {r['a'] / r['hc']:.0f}, {r['dofs']:,} dofs)" for r in fine[1])
-               + f" | {ref:.4f} | " + " | ".join(cells) + " | "
-               + " / ".join(", ".join(f"{100 * r['l2']:.1f} %" for r in fine[n]) for n in STEPS) + " | "
-               + " / ".join(", ".join(str(r["iterations"]) for r in fine[n]) for n in STEPS) + " |")
+
+    def sized(ratio, n):
+        """The runs of one ratio and step count, coarsest contact edges first."""
+        got = [r for r in rows if r["ratio"] == ratio and r["steps"] == n
+               and (r["case"] == "refinement" or r["case"] == "cattaneo")]
+        return sorted(got, key=lambda r: -r.get("hc", HC[1]))
+
+    for ratio in RATIOS:
+        ref = math.sqrt(1 - ratio)
+        runs = {n: sized(ratio, n) for n in STEPS}
+        cells = [", ".join(f"{r['c_over_a'][-1]:.4f} ({pct(r['c_over_a'][-1] / ref - 1)})" for r in runs[n]) for n in STEPS]
+        l2 = " / ".join(", ".join(f"{100 * r['l2']:.1f}" for r in runs[n]) + " %" for n in STEPS)
+        its = " / ".join(str(next(r for r in runs[n] if r["case"] == "cattaneo")["iterations"]) for n in STEPS)
+        out.append(f"| Cattaneo-Mindlin, Q/(mu P) = {ratio:g} | c/a = sqrt(1 - Q/(mu P)) = {ref:.4f} | " + " | ".join(cells)
+                   + f" | {l2} | {its} |")
+    d = {r["steps"]: r for r in rows if r["case"] == "deresiewicz"}
+    one, eight = d[1], d[8]
+    ratio = one["ratio"]
+    ref, refs = math.sqrt(1 - ratio / 2), math.sqrt(1 - ratio)
+    cells = [f"the scene's mesh: {x['c_over_a'][-1]:.4f} ({pct(x['c_over_a'][-1] / ref - 1)}); at Q*: {x['c_over_a'][1]:.4f} "
+             f"({pct(x['c_over_a'][1] / refs - 1)})" for x in (one, eight)]
+    out.append(f"| Mindlin-Deresiewicz, Q* = {ratio:g} mu P, then 0 | c'/a = sqrt(1 - Q*/(2 mu P)) = {ref:.4f}; "
+               f"at Q*: {refs:.4f} | " + " | ".join(cells)
+               + f" | {100 * one['l2']:.1f} % / {100 * eight['l2']:.1f} % | {one['iterations']} / {eight['iterations']} |")
     return "\n".join(out) + "\n"
 
 
@@ -326,11 +332,12 @@ def cost_table(rows):
            "|---|---|---|---|---|---|---|"]
     for r in rows:
         fr, nf = r["friction"], r["without"]
-        ratio = f"{max(f['iterations'] / n['iterations'] for f, n in zip(fr, nf)):.2f}" if nf else "none without friction"
+        ratio = f"{max(f['iterations'] / n['iterations'] for f, n in zip(fr, nf)):.2f}" if nf else "none"
         solves = " ".join(str(f["solves"]) for f in fr)
         times = f"{r['solve']:.2f} s / {r['solve_without']:.2f} s" if r["solve_without"] is not None else f"{r['solve']:.2f} s"
         case = r["case"]
-        without = its_list(nf) if nf else "no equilibrium: the disc slides"
+        without = its_list(nf) if nf else (f"not converged: {r['frictionless_failed']}" if r.get("frictionless_failed")
+                                           else "no equilibrium: the disc slides")
         if r.get("newton"):
             case += f": its stick half-width {r['stick']:.6g}, Newton's {r['stick_newton']:.6g} ({r['stick'] / r['stick_newton'] - 1:+.1e})"
             without = f"Newton with friction: {its_list(r['newton'])}"
@@ -364,13 +371,18 @@ GETFEM_KIND = {"small_sliding": "GetFEM, small sliding (its weak form language: 
                "large_sliding": "GetFEM, large sliding (its raytracing brick: current configuration, as ours)"}
 
 
+def getfem_case(gf):
+    """The program's rows run on GetFEM's meshes: the scene's, or the contact twice as wide."""
+    return "cattaneo" if gf.get("scale", 1.0) == 1.0 else "wider"
+
+
 def getfem_rows(rows, gf):
     """(label, increments, friction in the normal stage, c/a error %, shear L2 %,
     Newton iterations, seconds) of the program's Q = 0.5 mu P runs and of
-    each GetFEM variant (bench/friction/getfem.json) on the same meshes."""
+    each GetFEM variant (bench/friction/getfem*.json) on the same meshes."""
     ref = math.sqrt(1 - 0.5)
     out = [("the program (mortar, -contact_friction)", r["steps"], True, 100 * (r["c_over_a"][-1] / ref - 1), 100 * r["l2"],
-            r["iterations"], r["solve"]) for r in rows if r["case"] == "cattaneo" and r["ratio"] == 0.5]
+            r["iterations"], r["solve"]) for r in rows if r["case"] == getfem_case(gf) and r["ratio"] == 0.5]
     for v in gf["variants"]:
         kind = next(k for k in GETFEM_KIND if v["name"].startswith(k))
         mult = "P1" if "_P1_" in v["name"] else "P2"
@@ -394,9 +406,38 @@ def getfem_phrase(rows, gf):
     got = getfem_rows(rows, gf)
     ours = {n: l2 for label, n, fr, ca, l2, its, t in got if label.startswith("the program")}
     theirs = {n: l2 for label, n, fr, ca, l2, its, t in got if label.startswith(GETFEM_KIND["large_sliding"]) and fr}
-    return (f"on the same meshes, friction from the first increment, GetFEM's frictional brick is "
-            f"{theirs[1]:.1f} % / {theirs[8]:.1f} % from Mindlin's shear in 1 / 8 increments a stage, ours "
+    return (f"on the same meshes (the contact twice as wide, a/R = 0.1), friction from the first increment, GetFEM's "
+            f"frictional brick is {theirs[1]:.1f} % / {theirs[8]:.1f} % from Mindlin's shear in 1 / 8 increments a stage, ours "
             f"{ours[1]:.1f} % / {ours[8]:.1f} %")
+
+
+def hertz_pressure_l2(v, scale):
+    """A GetFEM variant's pressure's relative L2 distance from Hertz's (his a
+    and p_max, about the pressure's centre, weights w), as the program's
+    pressure_l2_error (src/contact/hertz.c)."""
+    E, nu = float(scene_option("disc_E")), float(scene_option("disc_nu"))
+    estar = E / (2 * (1 - nu**2))              # two bodies of the same E and nu; R* = the disc's radius 1
+    force = P * scale**2
+    a = math.sqrt(4 * force / (math.pi * estar))
+    x, p, w = (np.array(v["profile"][k]) for k in ("x", "p", "w"))
+    ph = 2 * force / (math.pi * a) * np.sqrt(np.clip(1 - x**2 / a**2, 0, None))
+    return float(np.sqrt(np.sum(w * (p - ph) ** 2) / np.sum(w * ph**2)))
+
+
+def getfem_scene_phrase(rows, gf):
+    """docs/scenes.md's sentence on GetFEM on the scene's own meshes
+    (bench/friction/getfem-scene.json): its pressures' distance from Hertz's
+    against ours, and the shear profiles' from Mindlin's."""
+    ours = {r["steps"]: r for r in rows if r["case"] == "cattaneo" and r["ratio"] == 0.5}
+    v = {(x["name"].split("_P")[0], x["friction_in_normal_stage"], x["steps_per_stage"]): x
+         for x in gf["variants"] if "_P2_" in x["name"]}
+    ph = [hertz_pressure_l2(x, 1.0) for x in v.values()]
+    big = v[("large_sliding", True, 1)], v[("large_sliding", True, 8)]
+    return (f"on the scene's own meshes GetFEM's P2 multiplier alternates from node to node: its pressures are "
+            f"{100 * min(ph):.1f} to {100 * max(ph):.1f} % from Hertz's in L2 (ours {100 * ours[1]['pressure_l2']:.2f} %), "
+            f"its large-sliding brick's shear {big[0]['shear_l2_pct']:.1f} % / {big[1]['shear_l2_pct']:.1f} % from Mindlin's "
+            f"in 1 / 8 increments a stage (ours {100 * ours[1]['l2']:.1f} % / {100 * ours[8]['l2']:.1f} %), and its slipping "
+            f"nodes meet |q| = mu p only to {100 * max(x['slip_ratio_spread'] for x in big):.1f} %")
 
 
 if __name__ == "__main__":

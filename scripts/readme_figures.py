@@ -63,19 +63,20 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   at small strain, from the same file;
 - friction, friction-cost: bench/friction/results.json (written by --measure
   friction: friction_study.py's Cattaneo-Mindlin and Mindlin-Deresiewicz runs
-  on meshes/cattaneo, in 1 and 8 increments a stage, and c/a under
-  refinement at Q/(mu P) = 0.5 and 0.8, and 0.8 with the contact half as
-  wide, about two minutes; --measure friction-cost: Newton's iterations
+  on meshes/cattaneo, in 1 and 8 increments a stage, each load ratio at
+  contact edges twice and half the scene's, and each with the contact twice
+  as wide, about three minutes; --measure friction-cost: Newton's iterations
   per increment with friction and without, and L-BFGS with friction, about
   a minute); the phrase friction-cost-ratio: the range of those ratios, the
   increments above 3, and L-BFGS's iterations and stick zone, from the same file;
-  the phrase friction-finite (docs/scenes.md): c/a at Q/(mu P) = 0.8 under
-  refinement; the table friction-narrow (docs/scenes.md): each load ratio on
-  the scene and with the contact half as wide against the bodies;
+  the table friction-wider (docs/scenes.md): each load ratio on the scene
+  and with the contact twice as wide against the bodies;
 - friction-getfem (docs/scenes.md) and the phrase friction-getfem-phrase
-  (README.md): GetFEM on the cattaneo meshes, bench/friction/getfem.json
-  (written by --measure friction-getfem: scripts/getfem_cattaneo.py run by
-  /usr/bin/python3 with python3-getfem, about a minute), beside the
+  (README.md): GetFEM on the cattaneo meshes with the contact twice as wide,
+  bench/friction/getfem.json, and the phrase friction-getfem-scene
+  (docs/scenes.md): on the scene's own, bench/friction/getfem-scene.json
+  (both written by --measure friction-getfem: scripts/getfem_cattaneo.py run
+  by /usr/bin/python3 with python3-getfem, about two minutes), beside the
   program's rows of bench/friction/results.json;
 - solver: bench/solver/results.json (written by --measure solver: the solver
   strategies on the reference scene at h = 0.06 with the default formulation
@@ -668,25 +669,23 @@ def render_friction_cost():
     return friction_study.cost_table(load("friction")["cost"])
 
 
-def render_friction_finite():
+def render_friction_wider():
     import friction_study
-    return friction_study.finite_phrase(load("friction")["accuracy"])
-
-
-def render_friction_narrow():
-    import friction_study
-    return friction_study.narrow_table(load("friction")["accuracy"])
+    return friction_study.wider_table(load("friction")["accuracy"])
 
 
 def measure_friction_getfem():
-    """GetFEM on the cattaneo meshes (scripts/getfem_cattaneo.py, run by the system's python3 with python3-getfem)."""
+    """GetFEM on the cattaneo meshes with the contact twice as wide (getfem.json) and on the
+    scene's own (getfem-scene.json) (scripts/getfem_cattaneo.py, run by the system's python3
+    with python3-getfem)."""
     import subprocess
-    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "getfem_cattaneo.py"), "-o",
-                    os.path.join(ROOT, "bench", "friction", "getfem.json")], cwd=ROOT, check=True)
+    for extra, name in ((["--scale", "2"], "getfem.json"), ([], "getfem-scene.json")):
+        subprocess.run(["/usr/bin/python3", os.path.join("scripts", "getfem_cattaneo.py")] + extra
+                       + ["-o", os.path.join("bench", "friction", name)], cwd=ROOT, check=True)
 
 
-def getfem_friction():
-    with open(os.path.join(ROOT, "bench", "friction", "getfem.json")) as f:
+def getfem_friction(name="getfem.json"):
+    with open(os.path.join(ROOT, "bench", "friction", name)) as f:
         return json.load(f)
 
 
@@ -698,6 +697,11 @@ def render_friction_getfem():
 def render_friction_getfem_phrase():
     import friction_study
     return friction_study.getfem_phrase(load("friction")["accuracy"], getfem_friction())
+
+
+def render_friction_getfem_scene():
+    import friction_study
+    return friction_study.getfem_scene_phrase(load("friction")["accuracy"], getfem_friction("getfem-scene.json"))
 
 
 def render_friction_cost_ratio():
@@ -1012,7 +1016,7 @@ RENDER = {"scenes": render_scenes, "axisymmetric": render_axisymmetric, "rigid":
           "stress": render_stress, "stress-solvers": render_stress_solvers, "parallel": render_parallel, "parallel-stages": render_parallel_stages,
           "penalty": render_penalty, "claims": render_claims, "model": render_model,
           "squeeze": render_squeeze, "squeeze-cost": render_squeeze_cost,
-          "friction": render_friction, "friction-cost": render_friction_cost, "friction-narrow": render_friction_narrow,
+          "friction": render_friction, "friction-cost": render_friction_cost, "friction-wider": render_friction_wider,
           "friction-getfem": render_friction_getfem}
 # the phrases: figures inside a sentence of the README, each a line of text without its line breaks
 PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_parallel,
@@ -1024,8 +1028,8 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-search": render_sweep_search, "sweep-mortar-cost": render_sweep_mortar_cost,
            "sweep-profile": render_sweep_profile, "sweep-cheapest": render_sweep_cheapest,
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
-           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio, "friction-finite": render_friction_finite,
-           "friction-getfem-phrase": render_friction_getfem_phrase,
+           "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio,
+           "friction-getfem-phrase": render_friction_getfem_phrase, "friction-getfem-scene": render_friction_getfem_scene,
            "rigid-adequacy-phrase": render_rigid_adequacy_phrase}
 
 

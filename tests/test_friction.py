@@ -3,11 +3,12 @@ lifecycle of the energy terms driven by src/solver/staging.c):
 -contact_friction and -contact_<pair>_friction MU.
 
 The reference is Cattaneo-Mindlin on meshes/cattaneo: an elastically similar
-disc on a slab, force-controlled, the normal force P = 4.3 in the first load
-stage, then the tangential force Q = 0.5 mu P with P held (mu = 0.3). A
-central zone |x| < c sticks, c/a = sqrt(1 - Q/(mu P)) = 0.70711; where a node
-slips its shear is mu p, against its slip. The scene's bodies are finite (a
-wide slab, a/R = 0.1) and its contact edges hc = 0.0075 (a/hc = 13)."""
+disc on a slab, force-controlled, the normal force P = 1.075 in the first load
+stage, then the tangential force Q = 0.5 mu P with P held (mu = 0.3), 8
+increments a stage. A central zone |x| < c sticks, c/a = sqrt(1 - Q/(mu P)) =
+0.70711; where a node slips its shear is mu p, against its slip. The scene's
+bodies are finite (a wide slab, a/R = 0.05) and its contact edges
+hc = 0.00375 (a/hc = 13)."""
 import json
 import os
 
@@ -15,11 +16,13 @@ import h5py
 import numpy as np
 import pytest
 
+import friction_study
 from conftest import GETFEM_PYTHON, ROOT, getfem_available, run_contact
 
 CATTANEO = ["-options_file", "meshes/cattaneo/cattaneo.opts"]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
-MU, P, Q = 0.3, 4.3, 0.645
+MU, P = friction_study.MU, friction_study.P      # the scene's friction and normal force
+Q = float(friction_study.scene_option("disc_bc_clamp_values").split(",")[-1])   # and tangential force, 0.5 mu P
 SLAVE = "contact/interface/disc_contact"
 
 
@@ -41,13 +44,13 @@ def test_cattaneo_stick_zone(runs):
     """The stick zone's half-width c (the JSON's stick_half_width, from the
     nodes node_stick marks, each end carried to where the shear reaches mu p)
     over the contact's half-width a (the report's second-moment half-width,
-    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.70352
-    (-0.51 %; +0.08 % at hc = 0.015 and -0.08 % at hc = 0.00375: the README's
-    friction table). Bound 2 % (the issue's; 3.9 times). The first stage's
-    zone, under P alone put on in one increment, is nearly the whole
-    contact (measured 0.0947 against a = 0.0998): the finite disc and slab
-    are not Dundurs' half-spaces, and their surfaces spread a little
-    differently at the zone's edges, which slip."""
+    a_moment) is Mindlin's sqrt(1 - Q/(mu P)) = 0.70711: measured 0.70966
+    (+0.36 %; +0.43 % at hc = 0.0075 and +0.34 % at hc = 0.001875: the
+    README's friction table). Bound 2 % (the issue's; 5.6 times). The first
+    stage's zone, under P alone, is nearly the whole contact (measured
+    0.04987 against a = 0.04990): the finite disc and slab are not Dundurs'
+    half-spaces, and their surfaces spread a little differently at the
+    zone's edges, which slip."""
     s = runs[1].summary
     pair = s["contact"]["interface"]
     c, a = pair["stick_half_width"], pair["fem_a_moment"]
@@ -58,21 +61,24 @@ def test_cattaneo_stick_zone(runs):
     stages = [st["stick_half_width"]["interface"] for st in s["load_stages"]]
     print("per stage", stages)
     assert stages[1] == c
-    assert 0.9 * a <= stages[0] <= a     # measured 0.0947
+    assert 0.9 * a <= stages[0] <= a     # measured 0.04987
 
 
-def test_cattaneo_load_steps(tmp_path):
-    """The same in 8 increments a stage (each solved to the final tolerance,
-    as every increment with friction): c/a -0.85 % from Mindlin's, and the
-    shear profile 4.6 % from his in relative L2 over the slave's nodes
-    (weights A_j), his drawn with the computed a (a_moment), p0 = 2 P / (pi a)
-    and c = a sqrt(1 - Q/(mu P)) about the pressure's centre. In 1, 2, 4 and
-    8 increments c/a is -0.51, +1.79, +0.51, -0.85 % off and the profile
-    6.3, 6.2, 4.6, 4.6 % (the distance: friction_study.shear_l2, the README
-    table's). Bounds: c/a 2 % (the issue's; 2.4 times), the profile 10 %
-    (the issue's; 2.2 times)."""
-    import friction_study
-    res = run_contact(CATTANEO + ["-load_steps", "8"], tmp_path)
+def test_cattaneo_load_steps(runs, tmp_path):
+    """The shear profile of the scene (8 increments a stage, each solved to
+    the final tolerance, as every increment with friction) 2.7 % from
+    Mindlin's in relative L2 over the slave's nodes (weights A_j), his drawn
+    with the computed a (a_moment), p0 = 2 P / (pi a) and c = a sqrt(1 -
+    Q/(mu P)) about the pressure's centre; in one increment a stage c/a
+    +0.52 % and the profile 4.1 %. In 1, 2, 4, 8 and 16 increments c/a is
+    +0.52, +0.90, +0.42, +0.36, +0.34 % off and the profile 4.1, 4.5, 2.9,
+    2.7, 2.8 % (the distance: friction_study.shear_l2, the README table's).
+    Bounds: c/a 2 % (the issue's; 3.8 times), the profile 10 % (the issue's;
+    2.4 times in one increment, 3.7 in 8)."""
+    l2 = friction_study.shear_l2(runs[1].output_path, runs[1].summary, Q / (MU * P))
+    print(f"the scene: shear profile L2 {l2:.4f}")
+    assert l2 <= 0.10
+    res = run_contact(CATTANEO + ["-load_steps", "1"], tmp_path)
     pair = res.summary["contact"]["interface"]
     a, c = pair["surfaces"][0]["a_moment"], pair["stick_half_width"]
     l2 = friction_study.shear_l2(res.output_path, res.summary, Q / (MU * P))
@@ -82,34 +88,38 @@ def test_cattaneo_load_steps(tmp_path):
     assert l2 <= 0.10
 
 
-@pytest.mark.parametrize("ratio,measured,bound", [(0.2, 0.0074, 0.02), (0.8, -0.0292, 0.04)])
-def test_cattaneo_other_loads(ratio, measured, bound, tmp_path):
+@pytest.mark.parametrize("ratio,measured,shear", [(0.2, 0.0034, 0.062), (0.8, -0.0129, 0.021)])
+def test_cattaneo_other_loads(ratio, measured, shear, tmp_path):
     """The same at Q/(mu P) = 0.2 and 0.8: c/a against sqrt(1 - Q/(mu P))
-    = 0.8944 and 0.4472 measured +0.74 % and -2.92 % (a/hc = 13; the small
-    stick zone of 0.8, 6 nodes across its half, is resolved the worse: at
-    hc = 0.015, 0.0075, 0.00375 -0.69, -2.92, -2.31 %; in 8 increments a
-    stage -1.72 %, the README's friction table; with the contact half as
-    wide against the bodies, a/R = 0.05, -1.13 %: the finite bodies' part,
-    docs/scenes.md#friction). Bounds 2 % and 4 % (2.7 and 1.4 times; the
-    0.8 case's three meshes within 3 %). The report's
-    mindlin_c (Hertz's a, the whole force across the contact zone's chord
-    as Q, 0.6 % above the load: the slab's face tilts under the shear) is
-    0.73 % below and 1.02 % above c (measured); bound 2 %."""
+    = 0.8944 and 0.4472 measured +0.34 % and -1.29 %, the shear profile 6.2
+    and 2.1 % from Mindlin's (a/hc = 13; the small stick zone of 0.8 has 6
+    nodes across its half; at hc = 0.0075, 0.00375, 0.001875 c/a is +0.01,
+    +0.34, -0.12 % and +1.31, -1.29, -1.20 %, the profile 9.9, 6.2, 5.4 %
+    and 1.8, 2.1, 1.7 %: the README's friction table; with the contact
+    twice as wide against the bodies, a/R = 0.1, -1.72 % at 0.8 and 10.3 %
+    at 0.2: the finite bodies' part, docs/scenes.md#friction). Bounds: c/a
+    2 % (the issue's; 5.9 and 1.6 times), the profile 10 % (the issue's;
+    1.6 and 4.8 times). The report's mindlin_c (Hertz's a, the whole force
+    across the contact zone's chord as Q, 0.5 % above the load: the slab's
+    face tilts under the shear) is within 2 % of c (measured below)."""
     q = ratio * MU * P
-    s = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{q!r}"], tmp_path).summary
-    pair = s["contact"]["interface"]
+    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{q!r}"], tmp_path)
+    pair = res.summary["contact"]["interface"]
     err = pair["stick_half_width"] / pair["fem_a_moment"] / np.sqrt(1 - ratio) - 1
-    print(f"Q/(mu P) = {ratio}: c/a {err:+.4f} (measured {measured:+.4f}), mindlin_c {pair['mindlin_c']:.5f}")
-    assert abs(err) <= bound
+    l2 = friction_study.shear_l2(res.output_path, res.summary, ratio)
+    print(f"Q/(mu P) = {ratio}: c/a {err:+.4f} (measured {measured:+.4f}), shear profile {l2:.4f} (measured {shear}), "
+          f"mindlin_c / c - 1 = {pair['mindlin_c'] / pair['stick_half_width'] - 1:+.4f}")
+    assert abs(err) <= 0.02
+    assert l2 <= 0.10
     assert abs(pair["mindlin_c"] / pair["stick_half_width"] - 1) <= 0.02
 
 
 def test_mindlin_deresiewicz(tmp_path):
     """Unloading from Q* = 0.6 mu P to 0 (a third stage): the edges slip
     backwards and the stick zone of the last increment is Mindlin-
-    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84192
-    (+0.63 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.62813
-    (-0.68 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; about 3
+    Deresiewicz's c'/a = sqrt(1 - Q*/(2 mu P)) = 0.83666: measured 0.84000
+    (+0.40 %); Q*'s own zone, sqrt(0.4) = 0.63246, measured 0.63615
+    (+0.58 %). Bounds 2 % and 2.5 % (the issue's 3 % for c'; 5 and 4.3
     times). The slip state is carried from stage to stage: a solve that
     forgot it would stick everywhere after the unloading's first increment.
     Each stage's end has its friction sets in the HDF5."""
@@ -123,20 +133,20 @@ def test_mindlin_deresiewicz(tmp_path):
     assert abs(c[1] / np.sqrt(0.4) - 1) <= 0.025
     assert abs(c[2] / np.sqrt(0.7) - 1) <= 0.02
     # each stage's end in the HDF5 (/stages/k/contact/...; the last is /contact's): the stuck
-    # nodes' half extent against the JSON's half-width, within a node spacing (hc / 2 = 0.00375;
-    # measured 1.5e-3, 1.1e-3, 1.9e-3: the JSON's ends are carried between nodes)
+    # nodes' half extent against the JSON's half-width, within a node spacing (hc / 2 = 0.001875;
+    # measured 9.1e-4, 9.3e-4, 2.2e-4: the JSON's ends are carried between nodes)
     with h5py.File(res.output_path, "r") as f:
         arc = f[SLAVE]["node_s"][:]
         for k, st in enumerate(s["load_stages"], 1):
             stuck = f[f"stages/{k}/{SLAVE}" if k < 3 else SLAVE]["node_stick"][:] > 0.5
             half = (arc[stuck].max() - arc[stuck].min()) / 2
             print(f"stage {k}: stuck nodes' half extent {half:.5f}, JSON {st['stick_half_width']['interface']:.5f}")
-            assert abs(half - st["stick_half_width"]["interface"]) <= 0.00375
+            assert abs(half - st["stick_half_width"]["interface"]) <= 0.001875
 
 
 def test_cattaneo_forces_met(runs):
-    """The controlled group's reactions are P and Q: measured 1.0e-15 of
-    each (the issue's requirement 1e-8 is the bound)."""
+    """The controlled group's reactions are P and Q: measured 2.1e-16 and
+    4.1e-15 of each (the issue's requirement 1e-8 is the bound)."""
     fc = runs[1].summary["force_control"]
     for entry, force in zip(fc, (P, Q)):
         print(entry["component"], entry["reaction"], force, abs(entry["reaction"] - force) / force)
@@ -151,11 +161,12 @@ def test_coulomb(runs):
     to the same, and q has the sign of its slip. Measured: the largest
     |q| - mu p is 0 (the fixed point's last solve took no step, so the lagged
     pressure is the converged one), and every slipping node slipped along +s
-    with q > 0 (Q pushes the disc along +y, which is +s on its arc): the
-    accumulated slip node_slip has the tangential stage's sign here, whose
-    slip is larger than the normal stage's at the zone's edges (in one
-    increment a stage; in 8, the normal stage's slip outweighs it at one
-    edge, and the sign of the last increment's slip is not written)."""
+    with q > 0 (Q pushes the disc along +y, which is +s on its arc; 16
+    nodes slip, 40 stick): the accumulated slip node_slip has the
+    tangential stage's sign here, whose slip is larger than the normal
+    stage's at the zone's edges (with the contact twice as wide, a/R = 0.1,
+    in 8 increments the normal stage's slip outweighed it at one edge; the
+    sign of the last increment's slip is not written)."""
     n = nodal(runs[1])
     p, q, stick, slip = n["pressure"], n["shear"], n["stick"], n["slip"]
     bound = 1e-6 * MU * p.max()
@@ -170,7 +181,7 @@ def test_coulomb(runs):
 
 
 def test_ranks_agree(runs):
-    """1 and 2 ranks: the nodal shear agrees to 1.9e-11 of its largest, the
+    """1 and 2 ranks: the nodal shear agrees to 1.6e-11 of its largest, the
     stick half-width to 4.8e-13, the stick flags exactly (measured; 4.5e-9
     and 2.1e-10 with an earlier schedule of the fixed point: each answer is
     its own solve's to the gradient test, and the sums' order differs);
@@ -186,17 +197,20 @@ def test_ranks_agree(runs):
 
 def test_taylor(tmp_path):
     """The Taylor test at the cattaneo solution (the energy of the last
-    increment, whose slipping nodes are inside the slip branch, not on the
-    kink k_t |e| = mu p, which a step crosses only above eps = 1/16): the
-    energy's remainder falls at order 2 (measured 1.9999999), the
-    gradient's with the exact Hessian too (measured 2.0000034, the
-    relative remainder 3.84e-6 at the smallest step). Bounds: orders within
-    1e-4 of 2, the smallest remainder 1.2e-5 (3 times)."""
-    t = run_contact(CATTANEO + ["-taylor_test"], tmp_path).summary["taylor"]
+    increment), along a direction of 2e-5 of max |u| (-taylor_scale): its
+    steps up to eps = 1/32 stay inside each slipping node's slip branch,
+    where the default 1e-4 crosses the kink k_t |e| = mu p at all but the
+    smallest step (the contact is small against the disc: a = 0.05). The
+    energy's remainder falls at order 2 (measured 2.0000009), the
+    gradient's with the exact Hessian too (measured 1.99992, the relative
+    remainder 5.8e-7 at the smallest step, round-off showing below it).
+    Bounds: orders within 2.5e-4 of 2, the smallest remainder 1.8e-6
+    (3 times)."""
+    t = run_contact(CATTANEO + ["-taylor_test", "-taylor_scale", "2e-5"], tmp_path).summary["taylor"]
     print(t["gradient_order"], t["hessian_order"], t["hessian_relative_remainder"][-1])
-    assert abs(t["gradient_order"] - 2.0) <= 1e-4
-    assert abs(t["hessian_order"] - 2.0) <= 1e-4
-    assert t["hessian_relative_remainder"][-1] <= 1.2e-5
+    assert abs(t["gradient_order"] - 2.0) <= 2.5e-4
+    assert abs(t["hessian_order"] - 2.0) <= 2.5e-4
+    assert t["hessian_relative_remainder"][-1] <= 1.8e-6
 
 
 def test_mu_zero_is_frictionless(tmp_path):
@@ -249,7 +263,7 @@ def test_bad_friction_scene(args, needle, tmp_path):
 
 
 @pytest.mark.parametrize("args,needle", [
-    (["-load_stages", "1", "-disc_bc_clamp_values", "4.3,0.5", "-slab_bc_push_values", "0,0", "-force_control_type", "outer"],
+    (["-load_stages", "1", "-disc_bc_clamp_values", "1,0.1", "-slab_bc_push_values", "0,0", "-force_control_type", "outer"],
      "option -force_control_type outer: each trial goes on from the last"),
 ])
 def test_bad_friction_cattaneo(args, needle, tmp_path):
@@ -267,7 +281,7 @@ def test_sliding_stops_in_one_line(tmp_path):
     that says the pair slides, no node of its contact sticking at the last
     iterate, and names the friction. Without cutbacks and with 60 Newton
     iterations the stop costs 2 s (with the defaults, 3 cutbacks and 21 s)."""
-    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},1.5", "-load_cutbacks", "0", "-tao_max_it", "60"],
+    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{1.16 * MU * P!r}", "-load_cutbacks", "0", "-tao_max_it", "60"],
                       tmp_path, check=False)
     lines = [l for l in res.stderr.splitlines() if l.strip()]
     print(lines)
@@ -378,12 +392,12 @@ def test_similar_bodies_carry_no_shear(tmp_path):
     """Dundurs: between elastically similar bodies (beta = 0) a normal load
     makes no tangential displacement mismatch, so friction has nothing to
     resist. The cattaneo scene's normal force alone, in 8 increments with
-    mu = 0.3 from the first: the shear is 0.61 % of the pressure (relative
-    L2; its largest 3.6 % of mu p_max, at the zone's edges, where the finite
-    disc and slab depart from half-spaces). The neighbour: the slab 5 times
-    softer (Dundurs beta = 0.19), the same load: 8.7 % (the slab's largest shear
-    32 % of mu p_max). Bounds: 2 % for the similar pair (3.3 times), and
-    the dissimilar one at least 5 times the similar one (measured 14).
+    mu = 0.3 from the first: the shear is 0.33 % of the pressure (relative
+    L2; at the zone's edges, where the finite disc and slab depart from
+    half-spaces; 0.61 % with the contact twice as wide, a/R = 0.1). The
+    neighbour: the slab 5 times softer (Dundurs beta = 0.19), the same
+    load: 11.7 %. Bounds: 2 % for the similar pair (6 times), and the
+    dissimilar one at least 5 times the similar one (measured 35).
     The report's stick zone beside Mindlin's names Dundurs' beta (-0.19)
     where the bodies are not similar, his being for similar bodies."""
     base = CATTANEO + ["-load_stages", "1", "-disc_bc_clamp_values", f"{P},0", "-slab_bc_push_values", "0,0",
@@ -452,8 +466,8 @@ def test_master_shear_transferred(runs):
     reference length, signed as the slave's (its traction is -q tau along
     its own arc; both arcs run the same way here, so the two profiles have
     opposite signs). The master's shear force against the slave's: measured
-    2.3e-4 apart (the linear interpolation between the slave's nodes; the
-    pressures' forces 3.9e-5), bound 4e-4. Coulomb on the master: |q| <= mu p
+    1.0e-3 apart (the linear interpolation between the slave's nodes; in one
+    increment a stage 2.4e-4; the pressures' forces 7.0e-4), bound 3e-3. Coulomb on the master: |q| <= mu p
     at every node to 1e-6 of mu p_max (measured equality where the slave
     slips). 1 and 2 ranks: measured 1e-11 of the peak, bound 1e-9."""
     sets = {}
@@ -468,31 +482,34 @@ def test_master_shear_transferred(runs):
     excess = np.max(np.abs(master["node_shear"]) - MU * master["node_pressure"]) / (MU * master["node_pressure"].max())
     ranks = np.max(np.abs(sets[2]["slab_contact"]["node_shear"] - master["node_shear"])) / np.abs(master["node_shear"]).max()
     print(f"shear force: slave {Qs:.6f}, master {Qm:.6f} ({abs(Qm / Qs) - 1:+.2e}); master's Coulomb excess {excess:.1e}; ranks {ranks:.1e}")
-    assert abs(abs(Qm / Qs) - 1) <= 4e-4 and Qm * Qs < 0
+    assert abs(abs(Qm / Qs) - 1) <= 3e-3 and Qm * Qs < 0
     assert excess <= 1e-6
     assert ranks <= 1e-9
 
 
 @pytest.mark.skipif(not getfem_available(), reason="python3-getfem is not installed (apt-get install python3-getfem)")
-def test_getfem_same_mesh(runs, tmp_path):
-    """GetFEM 5.4 on the scene's own meshes (scripts/getfem_cattaneo.py: its
+def test_getfem_same_mesh(tmp_path):
+    """GetFEM 5.4 on the same meshes (scripts/getfem_cattaneo.py --scale 2: its
     large-sliding frictional brick, the current configuration as ours,
     friction from the first increment, one increment a stage, the disc
     driven by the same forces), measured as ours (friction_study.shear_l2's
-    definitions). The pressures at the same slave nodes: measured 0.65 %
-    apart (relative L2), bound 1.5 %. Both stick zones within 2 % of
-    Mindlin's (measured: ours -0.51 %, GetFEM's +0.58 %). Our shear profile
-    nearer Mindlin's than GetFEM's on the same mesh, as the issue asks:
-    measured 6.3 % against 12.3 %."""
+    definitions), with the contact twice as wide as the scene's (a/R = 0.1,
+    4 P, hc and the graded zone twice the scene's): on the scene's own
+    meshes GetFEM's P2 multiplier alternates from node to node (its
+    pressure 4.5 % from ours, whatever its r; docs/scenes.md#friction).
+    The pressures at the same slave nodes: measured 0.65 % apart (relative
+    L2), bound 1.5 %. Both stick zones within 2 % of Mindlin's (measured:
+    ours -0.51 %, GetFEM's +0.58 %). Our shear profile nearer Mindlin's
+    than GetFEM's on the same mesh, as the issue asks: measured 6.3 %
+    against 12.3 %."""
     import subprocess
-    import friction_study
     out = tmp_path / "getfem.json"
-    subprocess.run([GETFEM_PYTHON, os.path.join(str(ROOT), "scripts", "getfem_cattaneo.py"), "--only",
+    subprocess.run([GETFEM_PYTHON, os.path.join(str(ROOT), "scripts", "getfem_cattaneo.py"), "--scale", "2", "--only",
                     "large_sliding_P2_friction_from_start_1", "--mesh-dir", str(tmp_path), "-o", str(out)],
                    cwd=str(ROOT), check=True, capture_output=True, timeout=300)
     (g,) = json.loads(out.read_text())["variants"]
-    res = runs[1]
-    ours = friction_study.shear_l2(res.output_path, res.summary, Q / (MU * P))
+    res = run_contact(friction_study.cattaneo_args(0.5, 1, 2 * friction_study.HC[1], 2.0), tmp_path)
+    ours = friction_study.shear_l2(res.output_path, res.summary, 0.5, force=4 * P)
     pair = res.summary["contact"]["interface"]
     surf = pair["surfaces"][0]
     with h5py.File(res.output_path, "r") as f:
@@ -501,7 +518,7 @@ def test_getfem_same_mesh(runs, tmp_path):
     gx, gp, gw = (np.array(g["profile"][k]) for k in ("x", "p", "w"))
     mine = np.interp(gx + g["centre"] - surf["centre"], x, p)    # GetFEM's nodes are ours (the same mesh)
     dp = float(np.sqrt(np.sum(gw * (mine - gp) ** 2) / np.sum(gw * gp ** 2)))
-    ca = pair["stick_half_width"] / surf["a_moment"] / np.sqrt(1 - Q / (MU * P)) - 1
+    ca = pair["stick_half_width"] / surf["a_moment"] / np.sqrt(0.5) - 1
     print(f"pressure {dp:.4f} apart; c/a ours {ca:+.4f}, GetFEM's {g['c_over_a_error_pct'] / 100:+.4f}; "
           f"shear L2 ours {ours:.4f}, GetFEM's {g['shear_l2']:.4f}")
     assert dp <= 0.015

@@ -288,19 +288,19 @@ def test_friction_shear(tmp_path, display):
     range in ParaView's data information, and the colour map's once a view
     is coloured by the shear and rescaled to the data, is the HDF5's (min,
     max) over both lines, exactly (the colour map's to 4 ulp: measured 1 ulp
-    above the largest, its end points rescaled), ParaView skipping the NaN (measured -5.8769,
-    the master's, signed along its own arc, to 5.8663, the slave's largest
-    where its stick zone meets the slip at 0.71 mu p_max). The shear shown
+    above the largest, its end points rescaled), ParaView skipping the NaN (measured -2.7788,
+    the master's, signed along its own arc, to 2.8226, the slave's largest
+    where its stick zone meets the slip at 0.69 mu p_max). The shear shown
     is no trivial array: the slave's sum with the HDF5's weights A_j is the
-    JSON's tangential load Q to 4e-3 (measured +1.43e-3, 2.8 times: Q is the
-    whole force across the normal of the zone's chord, the sum runs along
-    the curved arc). Threshold on the shear keeps the two contact lines
-    alone (their points and cells, the bodies' NaN dropped), and they,
-    framed on their loaded part, coloured by the shear show at least 3
-    times the colours of the same view in one solid colour (measured 6.95
-    to 7.05 times: 431 to 437 colours against 62; the lines lie on each
-    other, the legacy reader draws the master's on top, the Xdmf3 readers
-    the slave's)."""
+    JSON's tangential load Q to 4e-3 (measured +2.2e-4, 18 times; with the
+    contact twice as wide +1.43e-3: Q is the whole force across the normal
+    of the zone's chord, the sum runs along the curved arc). Threshold on
+    the shear keeps the two contact lines alone (their points and cells,
+    the bodies' NaN dropped), and they, framed on their loaded part,
+    coloured by the shear show at least 3 times the colours of the same
+    view in one solid colour (measured 9.87 to 10.80 times: 296 to 324
+    colours against 30; the lines lie on each other, the legacy reader
+    draws the master's on top, the Xdmf3 readers the slave's)."""
     run = run_contact(["-options_file", "meshes/cattaneo/cattaneo.opts"], tmp_path, name="cattaneo")
     out, png = tmp_path / "shear.json", tmp_path / "png"
     run_pvpython(SHEAR, [run.output_path.with_suffix(".xdmf"), out, png], tmp_path, display)

@@ -480,7 +480,7 @@ def test_role_colours_two_pairs(tmp_path):
 
 @pytest.fixture(scope="module")
 def cattaneo(tmp_path_factory):
-    """meshes/cattaneo: Cattaneo-Mindlin, friction mu = 0.3, Q = 0.5 mu P (one increment a stage)."""
+    """meshes/cattaneo: Cattaneo-Mindlin, friction mu = 0.3, Q = 0.5 mu P (8 increments a stage)."""
     d = tmp_path_factory.mktemp("cattaneo")
     return run_contact(["-options_file", "meshes/cattaneo/cattaneo.opts"], d, name="cattaneo").output_path
 
@@ -518,9 +518,9 @@ def test_shear_curves_are_the_hdf5_and_mindlin(cattaneo):
     c = a sqrt(1 - Q/(mu P)) with the HDF5's friction, tangential_load and
     normal_load, computed here independently (to 1e-12 of mu p0), whose c/a
     is the report's mindlin_c / hertz_a to 1e-12 (the same Q/(mu P)); and
-    the box's L2 of the shear against Mindlin's, 5.99 % measured (one
-    increment a stage: test_friction.py's 6.3 % with the applied P and Q),
-    is this test's own sum to the 2 decimals shown and below 25 % (4.2
+    the box's L2 of the shear against Mindlin's, 2.68 % measured (with the
+    report's P and Q; test_friction.py's 2.7 % with the applied ones), is
+    this test's own sum to the 2 decimals shown and below 25 % (9.3
     times)."""
     import re
     import matplotlib.pyplot as plt
@@ -567,8 +567,8 @@ def test_shear_master_drawn_as_slave(cattaneo):
     axes as the slave's: its open squares are the HDF5's s - centre and
     -node_shear exactly, both arcs running the same way on cattaneo (up
     the slab's face: the loaded chords' dot product measured +1.0); its
-    largest is the slave's to 1.5 % (measured 5.7381 against 5.7719,
-    -0.59 %, 2.5 times: the transfer's interpolation between the slave's
+    largest is the slave's to 4 % (measured 2.7788 against 2.8226,
+    -1.55 %, 2.6 times: the transfer's interpolation between the slave's
     nodes flattens the peak at the stick zone's edge)."""
     import matplotlib.pyplot as plt
     fig, ax = shear_axes(cattaneo)
@@ -580,7 +580,7 @@ def test_shear_master_drawn_as_slave(cattaneo):
     assert len(drawn) == 1
     assert np.array_equal(drawn[0].get_xdata(), xm) and np.array_equal(drawn[0].get_ydata(), -qm)
     print(f"master's largest {np.max(-qm):.4f}, slave's {np.max(qs):.4f}: {np.max(-qm) / np.max(qs) - 1:+.4f}")
-    assert abs(np.max(-qm) / np.max(qs) - 1) <= 0.015
+    assert abs(np.max(-qm) / np.max(qs) - 1) <= 0.04
     plt.close(fig)
 
 

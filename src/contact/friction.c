@@ -64,8 +64,8 @@
    pair's k_p, 0.01 by default (with -contact_penalty auto, k_t = 10 E* / h),
    the scene's k_p: a penalty continuation does not soften it (that is for
    the normal contact's closing; softened with it, the cattaneo scene at
-   hc = 0.0075 took 102 Newton iterations, at the full k_t from the start
-   60). On the cattaneo scene at hc = 0.01 the
+   a/R = 0.1, hc = 0.0075 took 102 Newton iterations, at the full k_t from the start
+   60). On the cattaneo scene at a/R = 0.1, hc = 0.01 the
    stick zone's half-width is the same to 4 digits with 0.1 and 0.01 (241
    and 81 Newton iterations, then softened) and 3 % wider with 0.001; with
    k_t = k_p the first solve at the full penalty had not converged after

@@ -1376,7 +1376,7 @@ static PetscErrorCode MortarMasterRows(const Mortar *m, PetscInt s, const PetscR
    on the slave surface (current positions): on a curved slave the shear
    has a share along the normal part's direction, and under a tangential
    load that direction leans more than the zone (1.4e-3 on the cattaneo
-   scene against the zone's 1.0e-3, whose slab tilts under the shear: Q
+   scene at a/R = 0.1, P = 4.3, against the zone's 1.0e-3, whose slab tilts under the shear: Q
    0.6512 and 0.6506 against the load 0.645 across the undeformed slab).
    Elsewhere (and without contact) the normal part's direction. */
 static PetscErrorCode MortarContactLoads(ContactReport *R, PetscInt s)

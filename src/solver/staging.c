@@ -136,7 +136,7 @@ static PetscBool ProblemHasState(Problem p)
    leaves the lag as it is: its solution is only the next stage's start,
    and a pressure lagged from a soft penalty's wider zone made the first
    solve at the full one take 24 Newton iterations on the cattaneo scene
-   (the normal stage 41 in all; lagged from the full penalty alone, 32). The re-solves start close to their answer, so a stop relative to
+   at a/R = 0.1 (P = 4.3; the normal stage 41 in all; lagged from the full penalty alone, 32). The re-solves start close to their answer, so a stop relative to
    their own first gradient (gttol) is one relative to the first solve's,
    gstart. */
 /* The terms' lag at the bodies' state p->X (evaluated there first, so that
