@@ -417,12 +417,12 @@ def test_similar_bodies_carry_no_shear(tmp_path):
 
 
 def radial_slip(res):
-    """(X, slip, shear, pressure, stick) of the slave's nodes by radius."""
+    """(X, slip, shear, pressure, stick, weight) of the slave's nodes by radius."""
     with h5py.File(res.output_path, "r") as f:
         (g,) = [g for g in f["contact/interface"].values() if "node_stick" in g]
-        X, s, q, p, st = (g[k][:] for k in ("node_X", "node_slip", "node_shear", "node_pressure", "node_stick"))
+        X, s, q, p, st, w = (g[k][:] for k in ("node_X", "node_slip", "node_shear", "node_pressure", "node_stick", "node_weight"))
     o = np.argsort(X[:, 0])
-    return X[o, 0], s[o], q[o], p[o], st[o]
+    return X[o, 0], s[o], q[o], p[o], st[o], w[o]
 
 
 def test_axisymmetric_radial_slip_converges(tmp_path):
@@ -432,20 +432,25 @@ def test_axisymmetric_radial_slip_converges(tmp_path):
     ball's, and the edges of the contact slip. The stick zone's radius c
     (stick_half_width) converges with the mesh: 0.09565, 0.09265, 0.09253
     at h = 0.02, 0.01, 0.005 (0.09276 at 0.0025), the second change 0.04
-    times the first; bound 0.25 times. Where a loaded node slips its
-    accumulated radial slip has the sign of its shear (Coulomb: the shear
-    opposes the slip; measured at every such node). The slip accumulated
-    inside the stick zone is the history of the increments in which the
-    contact grew over the node: it alternates node to node and follows the
-    load steps (with 16 increments at h = 0.005, c = 0.0988), so its
-    profile is not compared across meshes. mu = 0 is the frictionless run
-    (the same P to the last digit)."""
+    times the first; bound 0.25 times. The radial slip converges in its
+    integral over the loaded surface (sum of node_weight times node_slip
+    over the nodes in contact: -5.40e-7, -6.43e-7, -6.39e-7, the second
+    change 0.04 times the first) and in its largest (3.81e-5, 6.78e-5,
+    6.50e-5, at the contact's edge: 0.09 times); bounds 0.25 times. Where
+    a loaded node slips its accumulated radial slip has the sign of its
+    shear (Coulomb: the shear opposes the slip; measured at every such
+    node). Node by node the slip accumulated inside the stick zone is the
+    history of the increments in which the contact grew over the node: it
+    alternates node to node and follows the load steps (with 16 increments
+    at h = 0.005, c = 0.0988), so its profile is not compared node by node.
+    mu = 0 is the frictionless run (the same P to the last digit)."""
     base = ["-options_file", "meshes/sphere/sphere.opts", "-flat_E", "200", "-load_steps", "4"]
-    c, slips = {}, 0
+    c, total, largest, slips = {}, {}, {}, 0
     for h in (0.02, 0.01, 0.005):
         res = run_contact(base + ["-contact_friction", "0.3", "-ball_mesh_size", h, "-flat_mesh_size", h], tmp_path, name=f"h{h}")
         c[h] = res.summary["contact"]["interface"]["stick_half_width"]
-        X, slip, q, p, stick = radial_slip(res)
+        X, slip, q, p, stick, w = radial_slip(res)
+        total[h], largest[h] = np.sum(w[p > 0] * slip[p > 0]), np.max(np.abs(slip[p > 0]))
         slipping = (p > 0) & (stick < 0.5) & (q != 0)
         assert np.all(np.sign(slip[slipping]) == np.sign(q[slipping])), h
         slips += int(np.count_nonzero(slipping))
@@ -453,6 +458,10 @@ def test_axisymmetric_radial_slip_converges(tmp_path):
     print(f"stick radius: {c[0.02]:.5f}, {c[0.01]:.5f}, {c[0.005]:.5f}; changes {d1:.2e}, {d2:.2e} ({d2 / d1:.3f}); {slips} slipping nodes")
     assert slips > 0
     assert d2 <= 0.25 * d1
+    for name, v in (("integral", total), ("largest", largest)):
+        e1, e2 = abs(v[0.02] - v[0.01]), abs(v[0.01] - v[0.005])
+        print(f"slip {name}: {v[0.02]:.3e}, {v[0.01]:.3e}, {v[0.005]:.3e}; changes {e1:.2e}, {e2:.2e} ({e2 / e1:.3f})")
+        assert e2 <= 0.25 * e1, name
     coarse = base + ["-ball_mesh_size", "0.02", "-flat_mesh_size", "0.02"]
     zero = run_contact(coarse + ["-contact_friction", "0"], tmp_path, name="mu0").summary
     none = run_contact(coarse, tmp_path, name="frictionless").summary
