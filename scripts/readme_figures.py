@@ -57,7 +57,8 @@ are missing, doubled or unclosed is an error naming the page. The tables:
   squeeze: squeeze_study.py's force-squeeze curves on 4 meshes, against
   GetFEM's, bench/squeeze/getfem-h*.json, and the cost of neo-Hookean
   bodies; it also draws docs/img/rubber-squeeze.png, which --measure
-  squeeze-picture redraws from the committed curves; about 5 minutes;
+  squeeze-picture redraws from the committed curves; about 7 minutes,
+  5 of them L-BFGS with Armijo's line search, which does not converge;
   --measure squeeze-newton re-measures the Newton rows of the cost alone);
   the phrase squeeze-cost-ratio: the neo-Hookean solve over the linear one
   at small strain, from the same file;

@@ -16,7 +16,8 @@ the tables of docs/scenes.md and docs/img/rubber-squeeze.png from it.
   interleaved 3 times, median solve times; the squeeze by Newton in one
   solve, in 20 load steps and with -tangent_at_rest, and by L-BFGS
   (-tao_type lmvm; and with H0 without the contact's Hessian, as before
-  -tangent_at_rest, which does not converge).
+  -tangent_at_rest, which does not converge); the squeeze's rows on the
+  scene's own mesh (scene_h(), the options file's).
 
     python3 scripts/squeeze_study.py            # measures and prints the tables
     python3 scripts/squeeze_study.py --getfem   # and first reruns GetFEM on the meshes of
@@ -30,12 +31,24 @@ import tempfile
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENE = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts"]
+OPTS = "meshes/rubber-squeeze/rubber-squeeze.opts"
+SCENE = ["-options_file", OPTS]
 PUSH = 0.3                      # the plate's travel: the quarter's half of the squeeze, 30 % of the diameter 2
 H = (0.1, 0.05, 0.025, 0.0125)  # the curve's meshes (the last the finest, for the convergence)
 PATH = ["-load_steps", "20", "-load_path"]
 GETFEM_H = (0.1, 0.05, 0.025)   # GetFEM's meshes (h = 0.0125 would take it half an hour)
 HERTZ_SMALL = ["-options_file", "meshes/hertz/hertz.opts", "-block_bc_push_values", "-0.01,0"]
+
+
+def scene_h():
+    """The disc's mesh size in the scene's options file (-disc_mesh_size):
+    the mesh the scene runs on without -mesh_size."""
+    with open(os.path.join(ROOT, OPTS)) as f:
+        for line in f:
+            words = line.split()
+            if words[:1] == ["-disc_mesh_size"]:
+                return float(words[1])
+    raise SystemExit(f"{OPTS} gives no -disc_mesh_size")
 
 
 def path_arrays(summary):
@@ -226,8 +239,9 @@ def cost_ratio(rows, scene, variant=""):
 
 def draw(rows, gf, h5path, png):
     """The force-squeeze curves (each mesh, GetFEM's), inset the distance of
-    each from the finest mesh's, and the deformed disc (h5path: a run at
-    h = 0.05, mirrored to the whole disc, von Mises), side by side."""
+    each from the finest mesh's, and the deformed disc (h5path: a run of
+    the scene on its own mesh, mirrored to the whole disc, von Mises), side
+    by side."""
     import h5py
     import matplotlib
     matplotlib.use("Agg")
@@ -260,14 +274,15 @@ def draw(rows, gf, h5path, png):
             for c in cells:   # Tri6: corners 0-2, mid-edges 3-5 (0-1, 1-2, 2-0)
                 polys.append(x[[c[0], c[3], c[1], c[4], c[2], c[5]]] * [sx, sy])
                 vals.append(vm[c[:3]].mean())
-    pc = PolyCollection(polys, array=np.array(vals), cmap="viridis", edgecolors="k", linewidths=0.15)
+    # the elements' edges thinner as the mesh is finer (0.15 pt at h = 0.05), so that the colours show through
+    pc = PolyCollection(polys, array=np.array(vals), cmap="viridis", edgecolors="k", linewidths=3 * scene_h())
     bx.add_collection(pc)
     for y in (1 - PUSH, PUSH - 1):
         bx.plot([-1.5, 1.5], [y, y], "r-", lw=2)
     bx.set_xlim(-1.5, 1.5)
     bx.set_ylim(-1.05, 1.05)
     bx.set_aspect("equal")
-    bx.set_title("squeezed by 30 % (h = 0.05; the quarter mirrored)", fontsize=10)
+    bx.set_title(f"squeezed by 30 % (h = {scene_h():g}; the quarter mirrored)", fontsize=10)
     fig.colorbar(pc, ax=bx, label="von Mises (Cauchy) / E", shrink=0.8)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
@@ -276,7 +291,7 @@ def draw(rows, gf, h5path, png):
 
 def redraw(curves, png):
     """The figure from the measured curves, the deformed disc from a run of
-    the scene at its own mesh (h = 0.05)."""
+    the scene on its own mesh (scene_h(), the options file's)."""
     from contactrun import run_checked
     with tempfile.TemporaryDirectory() as tmp:
         draw(curves, getfem_results(), run_checked(SCENE, tmp, "scene").h5, png)
