@@ -404,6 +404,42 @@ def test_held_by_contact_refused(tmp_path):
     assert lines[0].startswith("contact: error: body roller: held by its contacts alone") and "-roller_material neohookean" in lines[0]
 
 
+@pytest.mark.parametrize("args,needle", [
+    (["-indenter_material", "rubber"], "option -indenter_material: unknown material 'rubber' (known: linear, neohookean)"),
+    (["-indenter_material", "neohookean", "-indenter_nu", "0.5"], "option -indenter_nu: Poisson's ratio must be in (-1, 0.5), got 0.5"),
+])
+def test_bad_material(args, needle, tmp_path):
+    """An unknown material names the known ones; nu = 0.5 with a neo-Hookean
+    body (lambda infinite) is refused: one line each, status 1, nothing
+    written."""
+    r = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.3"] + args, tmp_path, check=False)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    print(lines)
+    assert r.returncode == 1 and len(lines) == 1 and lines[0] == "contact: error: " + needle
+    assert not r.output_path.exists()
+
+
+def test_inversion_stops_in_one_line(tmp_path):
+    """A step that cannot avoid inversion: the unit square on rollers with
+    its right edge moved to x = -0.1, through the left one, so that every
+    admissible state has J <= 0 somewhere and the energy is +infinity there.
+    The line search backs off, the load is cut back (4 times: solved up to
+    0.5 of it, the edge at x = 0.45, not beyond) and the run stops with one line
+    naming the body and where it inverts (measured: J <= 0 near (0.25,
+    0.96) in 13 energy evaluations), status 2, nothing written; no crash
+    from a log of a negative J."""
+    args = ["-scene", "uni", "-bodies", "b", "-b_geo", "tests/meshes/plate.geo", "-b_geo_params", "L=1,H=1,quads=0",
+            "-b_mesh_size", 0.25, "-b_E", E, "-b_nu", NU, "-b_material", "neohookean",
+            "-b_bc", "left,bottom,right", "-b_bc_left_components", "x", "-b_bc_bottom_components", "y",
+            "-b_bc_right_components", "x", "-b_bc_right_values", "-1.1"]
+    r = run_contact(args, tmp_path, check=False)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    print(r.returncode, lines)
+    assert r.returncode == 2 and len(lines) == 1
+    assert lines[0].startswith("contact: the solve did not converge") and "body b inverts: J <= 0 near" in lines[0]
+    assert not r.output_path.exists() and not r.summary_path.exists()
+
+
 def test_tangent_chosen_by_convergence(tmp_path):
     """Newton without -tangent_at_rest takes the stiffness at rest while its
     steps divide the gradient by more than 2, then the tangent: on the
