@@ -419,7 +419,7 @@ PetscErrorCode FrictionAddHessian(Friction f, const ContactTerm *b, PetscReal kp
     for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k)
       for (PetscInt d = 0; d < 2; ++d) {
         const PetscInt i = b->S[f->eside[k]].big[2 * f->enode[k] + d];
-        if (i < 0) continue;
+        if (i == -1) continue; /* a constrained dof; a rigid body's surface dofs (below -1) go to the body's through ContactTermAddHessian */
         idx[n]   = i;
         val[n++] = f->ecoef[k] * f->tau[2 * j + d];
       }

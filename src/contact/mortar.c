@@ -1632,7 +1632,6 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
   }
   if (m->fr) {
     PetscCheck(m->slave[0] + m->slave[1] == 1, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction needs one slave surface, not -contact_mortar_slave both", m->b.spec.name, (double)m->b.spec.friction);
-    PetscCheck(!m->b.rigid, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction against a rigid body is not implemented", m->b.spec.name, (double)m->b.spec.friction);
     PetscCheck(!m->b.spec.mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction in a mirrored half model is not implemented (a tangential load breaks the symmetry)", m->b.spec.name, (double)m->b.spec.friction);
     PetscCall(FrictionSetUp(m->fr, m->b.S, m->slave[0] ? 0 : 1));
   }
