@@ -93,7 +93,7 @@ def test_cattaneo_other_loads(ratio, measured, shear, tmp_path):
     """The same at Q/(mu P) = 0.2 and 0.8: c/a against sqrt(1 - Q/(mu P))
     = 0.8944 and 0.4472 measured +0.34 % and -1.29 %, the shear profile 6.2
     and 2.1 % from Mindlin's (a/hc = 13; the small stick zone of 0.8 has 6
-    nodes across its half; at hc = 0.0075, 0.00375, 0.001875 c/a is +0.01,
+    edges, 12 nodes, across its half; at hc = 0.0075, 0.00375, 0.001875 c/a is +0.01,
     +0.34, -0.12 % and +1.31, -1.29, -1.20 %, the profile 9.9, 6.2, 5.4 %
     and 1.8, 2.1, 1.7 %: the README's friction table; with the contact
     twice as wide against the bodies, a/R = 0.1, -1.72 % at 0.8 and 10.3 %
