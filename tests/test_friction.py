@@ -387,6 +387,24 @@ def test_full_sliding(H, measured, bound, tmp_path):
         assert frictionless["contact"]["interface"]["P"] > 0
 
 
+def test_accuracy_with_friction(tmp_path):
+    """-accuracy on a scene with friction (hertz, mu = 0.3, one load stage):
+    each refined mesh's solve is its own from rest, the friction's state at
+    rest, so the warm start (the last step's answer interpolated) changes
+    only its first iterate: with -accuracy_warm_start 1 and 0 the stick
+    half-width agrees to 2.7e-11 and the energy to 6e-16 (measured; bounds
+    1e-8 and 1e-10); the target (1 %, the pressure's and the force's
+    estimate) reached in 3 steps."""
+    args = HERTZ[:2] + ["-contact_friction", "0.3", "-accuracy", "0.01", "-output", "none"]
+    runs = {w: run_contact(args + ["-accuracy_warm_start", w], tmp_path, name=f"warm{w}") for w in ("1", "0")}
+    c = {w: r.summary["contact"]["interface"]["stick_half_width"] for w, r in runs.items()}
+    e = {w: r.summary["energy"] for w, r in runs.items()}
+    print(c, e)
+    assert "target 1 % reached" in runs["1"].stdout
+    assert abs(c["1"] - c["0"]) <= 1e-8 * c["0"]
+    assert abs(e["1"] - e["0"]) <= 1e-10 * abs(e["0"])
+
+
 def rigid_plane_layer(tmp_path):
     """sliding_patch's layer (H = 0.2) with the lower block rigid (-lower_rigid,
     its E and nu dropped): a rigid plane the layer is pressed on and slid along."""
