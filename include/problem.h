@@ -19,6 +19,8 @@ PetscErrorCode ProblemAddTerm(Problem, EnergyTerm);
 /* Penalty continuation for a term whose penalty the program chose: stages
    and the first stage's fraction, where the user gave none. */
 PetscErrorCode ProblemSetPenaltyContinuation(Problem, PetscInt stages, PetscReal start);
+PetscErrorCode ProblemGetPenaltyStiffness(Problem, PetscReal *stiff);
+PetscErrorCode ProblemSetNewtonContinuation(Problem);
 /* The first iterate of ProblemSolve (after ProblemSetUp; referenced). */
 PetscErrorCode ProblemSetInitialGuess(Problem, Vec X0);
 PetscErrorCode ProblemSetUp(Problem);

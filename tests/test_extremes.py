@@ -118,9 +118,29 @@ def test_penalty_extremes(tmp_path):
     assert abs(100 * stiff["max_penetration"] / ref["max_penetration"] - 1) < 1e-6
 
 
+def test_stiff_penalty_continues(tmp_path):
+    """A penalty given far stiffer than the automatic one (k_p = 1e12 on the
+    reference scene at h = 0.1: k_p h / E* = 1.7e8, above 1e7): Newton
+    reaches it in two stages, the first at the automatic penalty's 1000 E* /
+    h (from rest at 1e12 its steps overshot the contact zone and its line
+    search crawled: no answer in 500 iterations). Measured 24 iterations;
+    P and the penetration 9.9e-8 and 2.3e-7 from the explicit four-stage
+    continuation (-penalty_stages 4 -penalty_start 1e-4), each solve's stop
+    at this stiffness; bounds 1e-6. A given -penalty_stages wins (the
+    explicit run's 4 stages)."""
+    auto = solve(tmp_path, HERTZ + ["-contact_penalty", "1e12"], "auto")
+    four = solve(tmp_path, HERTZ + ["-contact_penalty", "1e12", "-penalty_stages", "4", "-penalty_start", "1e-4"], "four")
+    a, f = auto.summary, four.summary
+    dP, dpen = abs(a["contact_force"] / f["contact_force"] - 1), abs(a["max_penetration"] / f["max_penetration"] - 1)
+    print(a["iterations"], dP, dpen)
+    assert "(2 of 2 stages)" in auto.stdout and "(4 of 4 stages)" in four.stdout
+    assert dP <= 1e-6 and dpen <= 1e-6
+
+
 @pytest.mark.stress
 def test_penalty_full_range(tmp_path):
-    """k_p = 1e1 ... 1e12 with the default solver, no continuation."""
+    """k_p = 1e1 ... 1e12 with the default solver (from k_p h / E* = 1e7 on,
+    1e11 and 1e12 here, two penalty stages: test_stiff_penalty_continues)."""
     res = penalty_sweep(tmp_path, [1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12])
     # the stiff end resolution-limited (the stopping test leaves about 1e-7 of
     # P at k_p = 1e12, where the initial gradient is huge): not re-measured

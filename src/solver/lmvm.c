@@ -450,20 +450,6 @@ static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
   PetscFunctionReturn(0);
 }
 
-/* The stiffest pair's k_p h / E*. After the terms' set-up. */
-static PetscErrorCode ProblemGetPenaltyStiffness(Problem p, PetscReal *stiff)
-{
-  PetscReal s;
-
-  PetscFunctionBeginUser;
-  *stiff = 0.0;
-  for (PetscInt t = 0; t < p->nterms; ++t) {
-    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
-    *stiff = PetscMax(*stiff, s);
-  }
-  PetscFunctionReturn(0);
-}
-
 /* Penalty continuation where the user and the scene chose none: stages a
    factor of at most LMVM_STAGE_FACTOR apart from 1e-3 k_p, or from where
    k_p h / E* is LMVM_START_STIFFNESS if that is softer (see the derivation). */

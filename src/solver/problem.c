@@ -171,7 +171,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
   PetscCall(PetscOptionsInt("-load_stages", "Load history: every -<body>_bc_<group>_values, -<body>_load_<group>_traction and _pressure gives this many end values per component, stage after stage; each stage ramps linearly from the last one's end in -load_steps increments", NULL, p->opt.loadStages, &p->opt.loadStages, NULL));
   PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
-  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
+  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with Newton where k_p h / E* exceeds 1e7: 2, the first at 1000; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
@@ -272,6 +272,43 @@ PetscErrorCode ProblemSetPenaltyContinuation(Problem p, PetscInt stages, PetscRe
   PetscFunctionBeginUser;
   if (!p->opt.penaltyStagesSet) p->sched.penaltyStages = stages;
   if (!p->opt.penaltyStartSet) p->sched.penaltyStart = start;
+  PetscFunctionReturn(0);
+}
+
+/* The stiffest pair's k_p h / E*. After the terms' set-up. */
+PetscErrorCode ProblemGetPenaltyStiffness(Problem p, PetscReal *stiff)
+{
+  PetscReal s;
+
+  PetscFunctionBeginUser;
+  *stiff = 0.0;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
+    *stiff = PetscMax(*stiff, s);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Newton where a pair's penalty is given far stiffer than the automatic one
+   (k_p h / E* above NEWTON_STIFF_PENALTY, 1e4 times the automatic 1000) and
+   no continuation is: from rest at that penalty its steps overshoot the whole
+   contact zone and the line search crawls (hertz at h = 0.1 and k_p = 1e12,
+   k_p h / E* = 1.7e8: no answer in 500 iterations; at 1e11, 1.7e7, 52
+   iterations), where two stages, the first at the automatic penalty's
+   stiffness, take 24 to the same answer (P to 7e-8). -penalty_stages 1 keeps
+   the one stage. */
+#define NEWTON_STIFF_PENALTY 1e7
+#define NEWTON_FIRST_STAGE   1e3 /* k_p h / E* of the first stage: the automatic penalty's */
+PetscErrorCode ProblemSetNewtonContinuation(Problem p)
+{
+  PetscReal stiff;
+
+  PetscFunctionBeginUser;
+  if (p->opt.penaltyStagesSet || p->opt.penaltyStartSet || p->sched.penaltyStages > 1) PetscFunctionReturn(0);
+  PetscCall(ProblemGetPenaltyStiffness(p, &stiff));
+  if (!(stiff > NEWTON_STIFF_PENALTY)) PetscFunctionReturn(0);
+  PetscCall(ProblemSetPenaltyContinuation(p, 2, NEWTON_FIRST_STAGE / stiff));
+  PetscCall(PetscInfo(NULL, "Newton: k_p h / E* = %g: 2 penalty stages from %g k_p\n", (double)stiff, (double)(NEWTON_FIRST_STAGE / stiff)));
   PetscFunctionReturn(0);
 }
 

@@ -33,6 +33,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
   /* scale-free default: stop when |g| falls by 1e-8 from its initial value */
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-8));
   if (newton) PetscCall(ProblemSetNewtonDefaults(p));
+  if (newton) PetscCall(ProblemSetNewtonContinuation(p));
   if (p->X) {
     if (!p->Htao && p->fc.coupled) PetscCall(ForceBorderMatCreate(p, p->H, NULL, &p->Htao));
     else if (!p->Htao) {
