@@ -342,6 +342,22 @@ def sliding_patch(tmp_path, H):
     return ["-options_file", opts, "-mesh_dir", tmp_path / "meshes"]
 
 
+def sliding_figures(res):
+    """A sliding run's slave (its name), its nodal shear and stick, the nodes
+    in contact, the largest ||q| - mu p| over mu p_max there, the pair's
+    |shear force| / (mu P) - 1 and its whole force (the pressure's and the
+    shear's)."""
+    pair = res.summary["contact"]["interface"]
+    with h5py.File(res.output_path, "r") as f:
+        (name,) = [k for k, g in f["contact/interface"].items() if "node_stick" in g]
+        g = f[f"contact/interface/{name}"]
+        p, q, stick = g["node_pressure"][:], g["node_shear"][:], g["node_stick"][:]
+    on = p > 0
+    dev = np.max(np.abs(np.abs(q[on]) - MU * p[on])) / (MU * p.max())
+    ratio = np.hypot(*pair["shear_force"]) / (MU * pair["P"]) - 1
+    return name, q, stick, on, dev, ratio, np.array(pair["force"]) + np.array(pair["shear_force"])
+
+
 @pytest.mark.parametrize("H,measured,bound", [(0.2, 1.6e-7, 1e-6), (1, 2.9e-5, 1e-4)], ids=["layer", "block"])
 def test_full_sliding(H, measured, bound, tmp_path):
     """A non-matching block patch (meshes/patch: E 1300 / 800, nu 0.3 / 0.2)
@@ -365,15 +381,8 @@ def test_full_sliding(H, measured, bound, tmp_path):
     res = run_contact(args, tmp_path, name=f"H{H}")
     s = res.summary
     pair = s["contact"]["interface"]
-    with h5py.File(res.output_path, "r") as f:
-        (name,) = [k for k, g in f["contact/interface"].items() if "node_stick" in g]
-        g = f[f"contact/interface/{name}"]
-        p, q, stick = g["node_pressure"][:], g["node_shear"][:], g["node_stick"][:]
-    on = p > 0
-    dev = np.max(np.abs(np.abs(q[on]) - MU * p[on])) / (MU * p.max())
-    ratio = np.hypot(*pair["shear_force"]) / (MU * pair["P"]) - 1
+    name, q, stick, on, dev, ratio, total = sliding_figures(res)
     push = np.array(s["reactions"]["upper:push"])
-    total = np.array(pair["force"]) + np.array(pair["shear_force"])
     balance = np.max(np.abs(push - total)) / pair["P"]
     print(f"H = {H}: {on.sum()} nodes in contact, {int(stick[on].sum())} stuck; max ||q| - mu p| / (mu p_max) {dev:.2e}; "
           f"|shear force| / (mu P) - 1 = {ratio:.2e} (measured {measured:.1e}); push reaction {push} against the pair's {total}: {balance:.1e} of P")
@@ -431,15 +440,8 @@ def test_rigid_full_sliding(tmp_path):
     res = run_contact(rigid_plane_layer(tmp_path), tmp_path, name="rigid-layer")
     s = res.summary
     pair = s["contact"]["interface"]
-    with h5py.File(res.output_path, "r") as f:
-        (name,) = [k for k, g in f["contact/interface"].items() if "node_stick" in g]
-        g = f[f"contact/interface/{name}"]
-        p, q, stick = g["node_pressure"][:], g["node_shear"][:], g["node_stick"][:]
-    on = p > 0
-    dev = np.max(np.abs(np.abs(q[on]) - MU * p[on])) / (MU * p.max())
-    ratio = np.hypot(*pair["shear_force"]) / (MU * pair["P"]) - 1
+    name, q, stick, on, dev, ratio, total = sliding_figures(res)
     rigid = np.array(s["bodies"]["lower"]["force"])
-    total = np.array(pair["force"]) + np.array(pair["shear_force"])
     print(f"slave {name}: {on.sum()} nodes in contact, {int(stick[on].sum())} stuck; ||q| - mu p| {dev:.1e}; "
           f"|shear force| / (mu P) - 1 = {ratio:.2e}; the plane's force {rigid} against the pair's {total}: "
           f"{np.max(np.abs(rigid + total)) / pair['P']:.1e} of P")
