@@ -620,10 +620,6 @@ PetscErrorCode ContactSurfaceArc(const ContactSurface *S, PetscInt e, PetscReal 
   PetscFunctionReturn(0);
 }
 
-/* The outward unit normal at each node in the current configuration: on a
-   mid-edge node its edge's, on a node shared by two edges the mean of their
-   two normals there (the bisector: the edges of a finite element surface
-   meet at a small corner), normalised. */
 /* Unit vectors u[nn][2] at the nodes, current configuration: each edge's
    unit tangent times sign[e], turned a quarter (normal) or not, summed at
    a shared node and normalised. */
@@ -650,6 +646,10 @@ static void SurfaceNodalUnitVectors(const ContactSurface *S, const PetscReal sig
   }
 }
 
+/* The outward unit normal at each node in the current configuration: on a
+   mid-edge node its edge's, on a node shared by two edges the mean of their
+   two normals there (the bisector: the edges of a finite element surface
+   meet at a small corner), normalised. */
 void ContactSurfaceNodalNormals(const ContactSurface *S, PetscReal n[])
 {
   SurfaceNodalUnitVectors(S, S->esign, PETSC_TRUE, n);

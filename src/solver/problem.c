@@ -954,6 +954,7 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   Vec         U, V, W, G0, G1, HV;
   PetscRandom rnd;
   PetscReal   f0, f1, gv, umax, hvn;
+  PetscBool   roundE, roundH;
   const PetscInt n = 8;
 
   PetscFunctionBeginUser;
@@ -998,13 +999,15 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   p->res.taylorRates[0] = PetscLog2Real(p->res.taylorRemainders[0][n - 2] / p->res.taylorRemainders[0][n - 1]);
   p->res.taylorRates[1] = 1.0 + PetscLog2Real(p->res.taylorRemainders[1][n - 2] / p->res.taylorRemainders[1][n - 1]);
   PetscCall(PetscPrintf(p->comm, "  observed orders: gradient remainder %.3f, Hessian remainder %.3f\n", (double)p->res.taylorRates[0], (double)p->res.taylorRates[1]));
-  /* a direction whose steps cross a kink of the energy (a node entering the
-     contact, or turning from stick to slip) leaves the remainders off order 2
-     at the larger steps: say what keeps it inside */
-  if ((PetscAbsReal(p->res.taylorRates[0] - 2.0) > 0.1 && p->res.taylorRemainders[0][n - 1] > 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0)) || (PetscAbsReal(p->res.taylorRates[1] - 2.0) > 0.1 && p->res.taylorRemainders[1][0] > 1e-9)) PetscCall(PetscPrintf(p->comm, "  note: an order off 2 may be the direction's steps crossing a kink of the energy (a node entering the contact, or turning from stick to slip): a smaller -taylor_scale (now %g) keeps them inside\n", (double)p->opt.taylorScale));
-  /* where a remainder is round-off its order means nothing: say so */
-  if (p->res.taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0)) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->res.taylorRemainders[0][n - 1], (double)f0));
-  if (p->res.taylorRemainders[1][0] <= 1e-9) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->res.taylorRemainders[1][0]));
+  /* where a remainder is round-off its order means nothing: say so; a
+     direction whose steps cross a kink of the energy (a node entering the
+     contact, or turning from stick to slip) leaves an order off 2 at the
+     larger steps: say what keeps it inside */
+  roundE = (PetscBool)(p->res.taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0));
+  roundH = (PetscBool)(p->res.taylorRemainders[1][0] <= 1e-9);
+  if ((!roundE && PetscAbsReal(p->res.taylorRates[0] - 2.0) > 0.1) || (!roundH && PetscAbsReal(p->res.taylorRates[1] - 2.0) > 0.1)) PetscCall(PetscPrintf(p->comm, "  note: an order off 2 may be the direction's steps crossing a kink of the energy (a node entering the contact, or turning from stick to slip): a smaller -taylor_scale (now %g) keeps them inside\n", (double)p->opt.taylorScale));
+  if (roundE) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->res.taylorRemainders[0][n - 1], (double)f0));
+  if (roundH) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->res.taylorRemainders[1][0]));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p)); /* the bodies back at the answer: a rigid body's force is its last evaluation's */
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&U));
