@@ -89,6 +89,19 @@ def stop(p):
         return p.communicate()
 
 
+def options_file(path):
+    """{option: value} of a PETSc options file (comments dropped; the option
+    without its '-'; a flag's value '')."""
+    opts = {}
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("-"):
+                key, _, val = line.partition(" ")
+                opts[key[1:]] = val.strip()
+    return opts
+
+
 def read_summary(path):
     """The JSON summary at path, or None where there is none (or it does not
     parse)."""

@@ -44,8 +44,8 @@ SPHERE = ["-options_file", "meshes/sphere/sphere.opts"]
 
 def scene_option(name):
     """The value of -name in the scene's options file."""
-    with open(os.path.join(ROOT, SCENE)) as f:
-        return next(l.split(None, 1)[1].strip() for l in f if l.startswith(f"-{name} "))
+    from contactrun import options_file
+    return options_file(os.path.join(ROOT, SCENE))[name]
 
 
 MU = float(scene_option("contact_interface_friction"))     # the scene's friction

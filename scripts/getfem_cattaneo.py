@@ -104,20 +104,10 @@ import time
 
 import numpy as np
 
+from contactrun import options_file
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(ROOT, "meshes", "cattaneo", "cattaneo.opts")
-
-
-def scene_options():
-    """{option: value} of the scene's options file."""
-    opts = {}
-    with open(SCENE) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if line.startswith("-"):
-                key, _, val = line.partition(" ")
-                opts[key[1:]] = val.strip()
-    return opts
 
 
 def geo_param(opts, body, name):
@@ -125,7 +115,7 @@ def geo_param(opts, body, name):
     return float(dict(kv.split("=") for kv in opts[body + "_geo_params"].split(","))[name])
 
 
-OPTS = scene_options()
+OPTS = options_file(SCENE)
 # the scene's materials (both bodies alike), friction and forces: the last stage's clamp force (P, Q)
 E, NU, MU_F = float(OPTS["disc_E"]), float(OPTS["disc_nu"]), float(OPTS["contact_interface_friction"])
 P, Q = (float(v) for v in OPTS["disc_bc_clamp_values"].split(",")[-2:])

@@ -43,12 +43,11 @@ HERTZ_SMALL = ["-options_file", "meshes/hertz/hertz.opts", "-block_bc_push_value
 def scene_h():
     """The disc's mesh size in the scene's options file (-disc_mesh_size):
     the mesh the scene runs on without -mesh_size."""
-    with open(os.path.join(ROOT, OPTS)) as f:
-        for line in f:
-            words = line.split()
-            if words[:1] == ["-disc_mesh_size"]:
-                return float(words[1])
-    raise SystemExit(f"{OPTS} gives no -disc_mesh_size")
+    from contactrun import options_file
+    h = options_file(os.path.join(ROOT, OPTS)).get("disc_mesh_size")
+    if h is None:
+        raise SystemExit(f"{OPTS} gives no -disc_mesh_size")
+    return float(h)
 
 
 def path_arrays(summary):
