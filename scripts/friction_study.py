@@ -49,7 +49,7 @@ def scene_option(name):
 
 
 MU = float(scene_option("contact_interface_friction"))     # the scene's friction
-P = float(scene_option("disc_bc_clamp_values").split(",")[0])   # and normal force
+P, Q = (float(scene_option("disc_bc_clamp_values").split(",")[k]) for k in (0, -1))   # normal and tangential force
 PAIR = "interface"
 SLAVE = "contact/interface/disc_contact"
 RATIOS = (0.2, 0.5, 0.8)   # Q / (mu P)

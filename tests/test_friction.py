@@ -21,8 +21,7 @@ from conftest import GETFEM_PYTHON, ROOT, getfem_available, run_contact
 
 CATTANEO = ["-options_file", "meshes/cattaneo/cattaneo.opts"]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"]
-MU, P = friction_study.MU, friction_study.P      # the scene's friction and normal force
-Q = float(friction_study.scene_option("disc_bc_clamp_values").split(",")[-1])   # and tangential force, 0.5 mu P
+MU, P, Q = friction_study.MU, friction_study.P, friction_study.Q   # the scene's friction, normal and tangential force (0.5 mu P)
 SLAVE = "contact/interface/disc_contact"
 
 
