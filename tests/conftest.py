@@ -76,6 +76,26 @@ def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, en
     return res
 
 
+# A figure a test measured, recorded by name: printed (pytest -s, or a
+# failure's captured output shows it) and, where CONTACT_FIGURES names a file,
+# appended to it as one JSON line {"test", "name", "value", "kernel"}.
+# make test-kernels (scripts/test_kernels.py) records every kernel's figures
+# and prints their ranges; make check-figures (scripts/check_figures.py)
+# compares each figure a docstring quotes as `name` = VALUE (or `name` = LO to
+# HI) with the figures recorded, flagging a factor over 3. A figure's name is
+# local to its test function (parametrised cases share the docstring).
+def figure(name, value):
+    value = float(value)
+    test = os.environ.get("PYTEST_CURRENT_TEST", "?").split(" ")[0]
+    print(f"figure {name} = {value:.6g}")
+    path = os.environ.get("CONTACT_FIGURES")
+    if path:
+        rec = {"test": test, "name": name, "value": value, "kernel": os.environ.get("OPENBLAS_CORETYPE", "auto")}
+        with open(path, "a") as f:
+            f.write(json.dumps(rec) + "\n")
+    return value
+
+
 def is_force_key(k):
     """Whether a flattened summary key is a force or a reaction component
     (the top level's, a pair's, a surface's, a load stage's): compared
