@@ -13,6 +13,12 @@
    ContactOptionsFinalize(). */
 int  ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[], size_t len);
 void ContactOptionsFinalize(void);
+/* Before MPI_Init(): the value of the last "name" on the command line with
+   its options files expanded (as ContactOptionsExpandFiles() will read it),
+   for a choice that must be made before the libraries start (-blas_kernel).
+   Returns 1 if given (value empty if given without one), 0 if not or if the
+   files cannot be read (ContactOptionsExpandFiles() reports that later). */
+int ContactOptionsPeek(int argc, char **argv, const char name[], char value[], size_t len);
 
 /* A path option's value (option pre + opt, its value in path) resolved where
    it was given: a relative path from an options file is relative to that

@@ -5,6 +5,7 @@ static const char help[] = "Contact between 2D elastic bodies by the penalty met
                            "  mpiexec -n 2 bin/contact -options_file meshes/hertz/hertz.opts -tao_monitor\n\n";
 
 #include "accuracy.h"
+#include "blaskernel.h"
 #include "progress.h"
 #include "contactpair.h"
 #include "options.h"
@@ -99,6 +100,7 @@ static PetscErrorCode Run(int *status)
   PetscCall(MaterialRegisterAll());
   PetscCall(ForceControlRegisterAll());
   PetscCall(PetscOptionsHasHelp(NULL, &help));
+  PetscCall(BlasKernelSetFromOptions(PETSC_COMM_WORLD));
   PetscCall(ContactProgressSetUp(PETSC_COMM_WORLD));
   PetscCall(AccuracyCreate(PETSC_COMM_WORLD, &acc));
   PetscCall(AccuracySetFromOptions(acc));
@@ -133,14 +135,19 @@ static PetscErrorCode Run(int *status)
   PetscFunctionReturn(0);
 }
 
-/* MPI is started before PETSc so that the options files can be read first
-   (options.c): a bad file is one line, not a traceback from PetscInitialize(). */
+/* The BLAS kernel is chosen first (blaskernel.c: the program may start
+   again on another). MPI is started before PETSc so that the options files
+   can be read first (options.c): a bad file is one line, not a traceback from
+   PetscInitialize(). -log_view's summary, printed by PetscFinalize(), is
+   headed by the BLAS kernel's line. */
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   int            status = 1, provided;
   char           err[4096];
+  PetscBool      logView = PETSC_FALSE;
 
+  BlasKernelSelect(argc, argv);
   MPI_Init_thread(&argc, &argv, PETSC_MPI_THREAD_REQUIRED, &provided);
   if (ContactOptionsExpandFiles(MPI_COMM_WORLD, &argc, &argv, err, sizeof(err))) {
     int rank;
@@ -167,6 +174,8 @@ int main(int argc, char **argv)
   PetscCall(ExactSolutionFinalize());
   PetscCall(MaterialFinalize());
   PetscCall(ContactFormulationFinalize());
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-log_view", &logView));
+  if (logView) PetscCall(BlasKernelView(PETSC_COMM_WORLD));
   PetscCall(PetscFinalize());
   ContactOptionsFinalize();
   MPI_Finalize();

@@ -3,6 +3,7 @@
    node order), displacement, stress (xx, yy, zz, xy) and von Mises stress
    averaged at the nodes, in one HDF5 file with an XDMF file beside it, and a
    JSON summary of the run; each contact term adds its own. */
+#include "blaskernel.h"
 #include <petscviewerhdf5.h>
 #include "run.h"
 #include "forcecontrol.h"
@@ -580,6 +581,9 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     fp = text.fp;
     fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, out->runId, (int)dofs, (int)size, type);
     fprintf(fp, "  \"axisymmetric\": %s,\n", p->opt.axisymmetric ? "true" : "false");
+    /* the BLAS kernel, how it was chosen, and the one it replaced (null: none) */
+    fprintf(fp, "  \"blas_kernel\": {\"name\": \"%s\", \"source\": \"%s\", \"replaced\": ", BlasKernelName(), BlasKernelSource());
+    fprintf(fp, BlasKernelFallback()[0] ? "\"%s\"},\n" : "null},\n", BlasKernelFallback());
     fprintf(fp, "  \"tao_reason\": \"%s\",\n  \"converged\": %s,\n  \"iterations\": %d,\n", TaoConvergedReasons[reason], rec->converged ? "true" : "false", (int)p->res.iterations);
     fprintf(fp, "  \"function_evaluations\": %d,\n  \"hessian_evaluations\": %d,\n", (int)p->res.nEnergyEvals, (int)p->res.nHessianEvals);
     fprintf(fp, "  \"stages\": %d,\n  \"load_cutbacks\": %d,\n", (int)p->res.stagesDone, (int)p->res.cutbacks);

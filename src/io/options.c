@@ -478,6 +478,25 @@ int ContactOptionsExpandFiles(MPI_Comm comm, int *argc, char ***argv, char err[]
   return 0;
 }
 
+int ContactOptionsPeek(int argc, char **argv, const char name[], char value[], size_t len)
+{
+  Args a     = {{0, 0, NULL}, NULL, {0, 0, NULL}};
+  char err[256];
+  int  found = 0;
+
+  value[0] = 0;
+  if (!ExpandArgs(&a, argc, argv, err, sizeof(err))) {
+    for (int i = 1; i < a.tok.n; ++i) {
+      if (strcasecmp(a.tok.s[i], name)) continue;
+      found = 1;
+      if (i + 1 < a.tok.n && a.tok.s[i + 1][0] != '-') snprintf(value, len, "%s", a.tok.s[i + 1]);
+      else value[0] = 0;
+    }
+  }
+  ArgsFree(&a);
+  return found;
+}
+
 void ContactOptionsFinalize(void)
 {
   ArgsFree(&expanded);
