@@ -22,7 +22,7 @@ MPIEXEC = mpiexec --oversubscribe -n $(NP)
 # first: 14 s instead of 23 s on 2 cores)
 MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps meshes run test check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
+.PHONY: all deps meshes run test test-kernels check-figures check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -71,6 +71,22 @@ TEST_JOBS ?= 3
 PYTEST_PARALLEL = -n $(TEST_JOBS) --dist loadgroup
 test: bin/contact meshes
 	$(PYTHON) -m pytest -q --durations=10 -m "not stress" $(PYTEST_PARALLEL) tests
+
+# the tests whose figures depend on round-off (pytest's roundoff mark) under
+# each of OpenBLAS's kernels Prescott, Nehalem, Sandybridge, Haswell and
+# SkylakeX (OPENBLAS_CORETYPE): a table of verdicts and of the figures' ranges
+# (out/test-kernels/table.md), and the docstrings' quoted figures checked
+# against them (docs/testing.md, "The same verdict under every kernel")
+test-kernels: bin/contact meshes
+	$(PYTHON) scripts/test_kernels.py -n $(TEST_JOBS)
+
+# the suite on this machine's kernel, recording every figure the tests
+# measure, then each figure a docstring quotes checked against them (a factor
+# over 3 is flagged)
+check-figures: bin/contact meshes
+	@mkdir -p out/figures; rm -f out/figures/suite.jsonl
+	CONTACT_FIGURES=$(CURDIR)/out/figures/suite.jsonl $(PYTHON) -m pytest -q -m "not stress" $(PYTEST_PARALLEL) tests || true
+	$(PYTHON) scripts/check_figures.py out/figures/suite.jsonl
 
 # the same sources built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (build/san, bin/contact-sanitize), then a fast subset of the suite run with

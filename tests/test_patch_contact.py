@@ -267,6 +267,7 @@ def test_patch_report(variant, formulation, solve):
                                    ("flush", "mortar"): 7e-6, ("sliding", "mortar"): 1e-3}[variant, formulation]
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", STRICT)
 def test_patch_exact(formulation, solve):
     """A formulation that passes the contact patch test: pressure p and
