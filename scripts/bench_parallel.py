@@ -48,6 +48,12 @@ CONFIGS = {
     "1:mumps": (1, ["-newton_schur_type", "mumps"]),
     "1:substructure": (1, ["-newton_schur_type", "substructure"]),
     "2:factor": (2, ["-newton_schur", "0"]),
+    # the BLAS kernel (-blas_kernel): OpenBLAS's Prescott fallback, and the
+    # AVX-512 kernels that the program's auto choice runs on such CPUs
+    "1:prescott": (1, ["-blas_kernel", "Prescott"]),
+    "2:prescott": (2, ["-blas_kernel", "Prescott"]),
+    "1:skylakex": (1, ["-blas_kernel", "SkylakeX"]),
+    "2:skylakex": (2, ["-blas_kernel", "SkylakeX"]),
 }
 EVENTS = ["MeshPartition", "ElasHessian", "ElasEnergyGrad", "ContactEnergyGrad", "ContactSearch", "ContactHessian",
           "MortarEnergyGrad", "MortarSegments", "MortarHessian", "MatCopy", "SubstrFactor", "SubstrInterface", "SubstrStep", "SubstrSolve", "SchurFactorK", "SchurStep", "MatSolve",
