@@ -42,12 +42,13 @@ bin/contact: $(OBJS)
 meshes: bin/contact
 	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only
 
+# ARGS: options added to the scene's (make run SCENE=cattaneo ARGS="-load_steps 1")
 # the figures listed are those this run wrote (a scene without contact has no
 # pressure plot, one without friction no shear plot; an earlier one would be
 # stale)
 FIGURES = out/$(SCENE)-pressure.png out/$(SCENE)-shear.png out/$(SCENE)-vonmises.png
 run: bin/contact meshes
-	$(MPIEXEC) ./bin/contact -options_file meshes/$(SCENE)/$(SCENE).opts
+	$(MPIEXEC) ./bin/contact -options_file meshes/$(SCENE)/$(SCENE).opts $(ARGS)
 	@rm -f $(FIGURES)
 	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 -o out/$(SCENE)-pressure.png
 	$(PYTHON) scripts/plot_hertz.py out/$(SCENE).h5 --shear -o out/$(SCENE)-shear.png
