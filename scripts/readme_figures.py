@@ -14,6 +14,7 @@ quoting them, generated from committed results, and the README's picture.
     python3 scripts/readme_figures.py --measure squeeze-newton [--update]
     python3 scripts/readme_figures.py --measure friction [--update]
     python3 scripts/readme_figures.py --measure friction-cost [--update]
+    python3 scripts/readme_figures.py --measure ranks [--update]
     python3 scripts/readme_figures.py --measure squeeze-picture
                                                    # redraw docs/img/rubber-squeeze.png
     python3 scripts/readme_figures.py --measure picture
@@ -98,6 +99,10 @@ likes; --update writes a stale one on one line. The phrases of README.md:
   times at h = 0.06, from the solver table (bench/solver/results.json);
 - lmvm-ratio: the least and greatest L-BFGS solve time over Newton's in the
   lmvm table (bench/lmvm/results.json), up to its largest k_p;
+- ranks-agree: the largest relative differences of P and of the energy over
+  the reference scene's runs on 1 to 4 ranks under five OpenBLAS kernels, and
+  their largest gradient norm (bench/ranks/results.json, written by
+  --measure ranks);
 - parallel-speedup: the parallel table's solve-time speed-ups, its largest
   mesh's dofs, and the whole run's speed-up where bench_parallel.py sets it a
   target (bench/parallel/results.csv);
@@ -756,6 +761,42 @@ def render_lmvm_iterations():
             f"{max(lm)} iterations whatever h and k_p, Newton {min(nl)} to {max(nl)}")
 
 
+RANK_KERNELS = ["Prescott", "Nehalem", "Sandybridge", "Haswell", "SkylakeX"]
+
+
+def measure_ranks():
+    """The reference scene (its own options: h = 0.1, mortar, Newton's
+    default stop) on 1 to 4 ranks under each of the five OpenBLAS kernels
+    (-blas_kernel): bench/ranks/results.json, one row per run."""
+    import contactrun
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for kernel in RANK_KERNELS:
+            for n in (1, 2, 3, 4):
+                r = contactrun.run_case(["-options_file", "meshes/hertz/hertz.opts", "-blas_kernel", kernel], tmp,
+                                        f"{kernel}-{n}", ranks=n, h5=False)
+                if r.returncode != 0 or not r.summary:
+                    raise SystemExit(f"{' '.join(r.cmd)} failed:\n{(r.stdout or '')[-2000:]}")
+                s = r.summary
+                rows.append({"kernel": kernel, "ranks": n, "P": s["contact_force"], "energy": s["energy"],
+                             "gradient_norm": s["gradient_norm"], "dofs": s["dofs"]})
+    save("ranks", rows)
+
+
+def render_ranks_agree():
+    """The largest relative difference in P and in the energy between any two of
+    bench/ranks/results.json's runs (1 to 4 ranks, five kernels)."""
+    rows = load("ranks")
+    P = [r["P"] for r in rows]
+    E = [r["energy"] for r in rows]
+    dP = (max(P) - min(P)) / max(abs(p) for p in P)
+    dE = (max(E) - min(E)) / max(abs(e) for e in E)
+    g = max(r["gradient_norm"] for r in rows)
+    return (f"On the reference scene (h = 0.1, Newton's default stop, gradient norm at most {g:.1e}) "
+            f"{min(r['ranks'] for r in rows)} to {max(r['ranks'] for r in rows)} ranks under {len(set(r['kernel'] for r in rows))} "
+            f"OpenBLAS kernels give P within {dP:.1e} of each other and the energy within {dE:.1e}")
+
+
 def render_parallel_speedup():
     """The parallel table's solve-time speed-ups and their h, the largest mesh's dofs, and the whole run's
     speed-up where it has a target (bench_parallel.WALL_TARGETS)."""
@@ -1031,7 +1072,7 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
            "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio,
            "friction-getfem-phrase": render_friction_getfem_phrase, "friction-getfem-scene": render_friction_getfem_scene,
-           "rigid-adequacy-phrase": render_rigid_adequacy_phrase}
+           "rigid-adequacy-phrase": render_rigid_adequacy_phrase, "ranks-agree": render_ranks_agree}
 
 
 def kind(name):
@@ -1128,7 +1169,7 @@ def main():
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--update", action="store_true")
     ap.add_argument("--measure", choices=["scenes", "solver", "lmvm", "picture", "axisymmetric", "rigid", "rigid-free", "claims", "model",
-                                          "squeeze", "squeeze-newton", "squeeze-picture", "friction", "friction-cost", "friction-getfem"], action="append",
+                                          "squeeze", "squeeze-newton", "squeeze-picture", "friction", "friction-cost", "friction-getfem", "ranks"], action="append",
                     default=[])
     args = ap.parse_args()
     if "scenes" in args.measure:
@@ -1161,6 +1202,8 @@ def main():
         measure_friction_cost()
     if "friction-getfem" in args.measure:
         measure_friction_getfem()
+    if "ranks" in args.measure:
+        measure_ranks()
     texts = {}
     for page in pages():
         with open(os.path.join(ROOT, page)) as f:
