@@ -103,6 +103,9 @@ likes; --update writes a stale one on one line. The phrases of README.md:
   the reference scene's runs on 1 to 4 ranks under five OpenBLAS kernels, and
   their largest gradient norm (bench/ranks/results.json, written by
   --measure ranks);
+- blas-speed (docs/solver.md): the reference scene's solve time on 1 and 2
+  ranks with the program's BLAS kernel, with Prescott's and with SkylakeX's
+  (bench/blas/results.csv, from scripts/bench_parallel.py);
 - parallel-speedup: the parallel table's solve-time speed-ups, its largest
   mesh's dofs, and the whole run's speed-up where bench_parallel.py sets it a
   target (bench/parallel/results.csv);
@@ -761,6 +764,30 @@ def render_lmvm_iterations():
             f"{max(lm)} iterations whatever h and k_p, Newton {min(nl)} to {max(nl)}")
 
 
+def render_blas_speed():
+    """The reference scene's median solve time on 1 and 2 ranks with the
+    program's own kernel choice, with -blas_kernel Prescott (OpenBLAS's
+    fallback) and with -blas_kernel SkylakeX, and each 2-rank speed-up
+    (bench/blas/results.csv, scripts/bench_parallel.py's configurations 1, 2,
+    1:prescott, 2:prescott, 1:skylakex, 2:skylakex)."""
+    import bench_parallel
+    rows = bench_parallel.load_rows(os.path.join(ROOT, "bench", "blas", "results.csv"))
+    h = max(r["h"] for r in rows)
+    rows = [r for r in rows if r["h"] == h]
+
+    def med(config):
+        return bench_parallel.med([r for r in rows if r["config"] == config], "time_solve")
+    out = []
+    for label, one, two in (("the program's choice", "1", "2"), ("Prescott", "1:prescott", "2:prescott"),
+                            ("SkylakeX", "1:skylakex", "2:skylakex")):
+        a, b = med(one), med(two)
+        out.append(f"{label} {a:.2f} s on 1 rank and {b:.2f} s on 2 ({a / b:.2f} times)")
+    reps = max(r["repeat"] for r in rows)
+    return (f"the reference scene at h = {h:g} solves (median of {reps}, interleaved) in " + "; ".join(out)
+            + " (`python3 scripts/bench_parallel.py --sizes 0.015 --repeat 5 --configs "
+            "1,2,1:prescott,2:prescott,1:skylakex,2:skylakex --out bench/blas`)")
+
+
 RANK_KERNELS = ["Prescott", "Nehalem", "Sandybridge", "Haswell", "SkylakeX"]
 
 
@@ -1072,7 +1099,8 @@ PHRASES = {"claims-lmvm": render_claims_lmvm, "claims-parallel": render_claims_p
            "sweep-half": render_sweep_half, "formulations-cost": render_formulations_cost,
            "squeeze-cost-ratio": render_squeeze_cost_ratio, "friction-cost-ratio": render_friction_cost_ratio,
            "friction-getfem-phrase": render_friction_getfem_phrase, "friction-getfem-scene": render_friction_getfem_scene,
-           "rigid-adequacy-phrase": render_rigid_adequacy_phrase, "ranks-agree": render_ranks_agree}
+           "rigid-adequacy-phrase": render_rigid_adequacy_phrase, "ranks-agree": render_ranks_agree,
+           "blas-speed": render_blas_speed}
 
 
 def kind(name):
