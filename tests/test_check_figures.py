@@ -1,0 +1,53 @@
+"""scripts/check_figures.py: a docstring's quoted figure against the figures
+the tests recorded (conftest.figure), on a test file and records of its own."""
+import json
+import subprocess
+import sys
+
+from conftest import ROOT
+
+SCRIPT = ROOT / "scripts" / "check_figures.py"
+TEST = '''
+def test_a():
+    """P apart `dP` = 1.1e-8 to 3.0e-7 over the kernels, the energy `dE` = 2e-15."""
+
+
+def test_b():
+    """Nothing quoted."""
+'''
+
+
+def check(tmp_path, records):
+    tests = tmp_path / "tests"
+    tests.mkdir(exist_ok=True)
+    (tests / "test_x.py").write_text(TEST)
+    rec = tmp_path / "r.jsonl"
+    rec.write_text("".join(json.dumps({"test": f"tests/test_x.py::{t}", "name": n, "value": v, "kernel": k}) + "\n"
+                           for t, n, v, k in records))
+    return subprocess.run([sys.executable, str(SCRIPT), "--tests", str(tests), str(rec)], capture_output=True, text=True)
+
+
+def test_within_factor_passes(tmp_path):
+    """Values inside [LO/3, 3 HI] (signs ignored) pass; a parametrised case's
+    id is stripped."""
+    p = check(tmp_path, [("test_a[1]", "dP", 4e-9, "Prescott"), ("test_a[2]", "dP", -8.9e-7, "Haswell"),
+                         ("test_a", "dE", 6e-15, "auto"), ("test_b", "other", 1.0, "auto")])
+    assert p.returncode == 0, p.stdout
+    assert "2 quoted figures of tests that ran, 0 flagged" in p.stdout
+
+
+def test_outside_factor_flagged(tmp_path):
+    """A value 3.4 times the top of the range, one 3.1 times below its
+    bottom, and a quoted figure the test did not record are each flagged."""
+    p = check(tmp_path, [("test_a", "dP", 1.02e-6, "Prescott"), ("test_a", "dE", 6e-16, "auto")])
+    assert p.returncode == 1
+    flags = [l for l in p.stdout.splitlines() if l.startswith("FLAG")]
+    assert len(flags) == 2 and "1.02e-06 (Prescott)" in flags[0] + flags[1] and "6e-16" in flags[0] + flags[1], p.stdout
+    p = check(tmp_path, [("test_a", "dP", 1e-7, "auto")])
+    assert p.returncode == 1 and "`dE` = 2e-15: not recorded" in p.stdout, p.stdout
+
+
+def test_not_run_not_flagged(tmp_path):
+    """A test with no records did not run: its quotes are not flagged."""
+    p = check(tmp_path, [("test_b", "other", 1.0, "auto")])
+    assert p.returncode == 0 and "0 quoted figures" in p.stdout, p.stdout
