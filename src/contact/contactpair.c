@@ -45,19 +45,27 @@ static PetscErrorCode ParsePenalty(MPI_Comm comm, const char option[], const cha
   PetscFunctionReturn(0);
 }
 
-/* The term of a pair in formulation spec->formulation; an unknown name is an
-   error that lists the known ones. */
+/* A formulation's constructor; an unknown name is an error that names the
+   option and lists the known ones. */
+static PetscErrorCode ContactFormulationFind(MPI_Comm comm, const char name[], const char option[], ContactFormulationCreate *create)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListFind(ContactFormulationList, name, create));
+  if (!*create) {
+    char known[256];
+    PetscCall(ContactOptionsListNames(ContactFormulationList, known, sizeof(known)));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "option %s: unknown contact formulation '%s' (known: %s)", option, name, known);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The term of a pair in formulation spec->formulation. */
 static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactPairSpec *spec, const char option[], EnergyTerm *term)
 {
   ContactFormulationCreate create;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscFunctionListFind(ContactFormulationList, spec->formulation, &create));
-  if (!create) {
-    char known[256];
-    PetscCall(ContactOptionsListNames(ContactFormulationList, known, sizeof(known)));
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "option %s: unknown contact formulation '%s' (known: %s)", option, spec->formulation, known);
-  }
+  PetscCall(ContactFormulationFind(comm, spec->formulation, option, &create));
   PetscCall(EnergyTermCreate(comm, spec->name, term));
   PetscCall(PetscStrncpy((*term)->type, spec->formulation, sizeof((*term)->type)));
   (*term)->couples[spec->body[0]] = PETSC_TRUE;
@@ -91,6 +99,10 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   if (help && !np) { /* -help without pairs: a pair's options under a placeholder name */
     PetscCall(PetscStrallocpy("<pair>", &names[0]));
     np = 1;
+  }
+  { /* checked even where every pair gives its own */
+    ContactFormulationCreate create;
+    PetscCall(ContactFormulationFind(comm, formulation, "-contact_formulation", &create));
   }
   PetscCheck(blend >= 0 && blend <= 0.5, comm, PETSC_ERR_USER_INPUT, "option -contact_blend: must be in [0, 0.5], got %g", (double)blend);
   PetscCheck(nq >= 1 && nq <= 8, comm, PETSC_ERR_USER_INPUT, "option -contact_quadrature_points: must be in [1, 8], got %" PetscInt_FMT, nq);

@@ -64,11 +64,14 @@ static PetscErrorCode ContactErrorHandler(MPI_Comm comm, int line, const char *f
       PetscMPIInt rank = 0;
       char        option[2048];
 
-      /* a bad option value: the same on every rank, so reported once */
+      /* a bad option value, or an unknown choice of an enumerated option
+         (PETSc raises it on PETSC_COMM_SELF): the same on every rank, so
+         reported once */
       if (ContactOptionsDescribeValueError(fun, mess, option, sizeof(option))) {
         MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
         mess = option;
-      } else if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
+      } else if (n == PETSC_ERR_USER && mess && strstr(mess, "Unknown option")) MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+      else if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
       if (!rank) {
         fprintf(stderr, "contact: error: %s\n", mess ? mess : "unknown");
         fflush(stderr);
