@@ -89,6 +89,7 @@ struct _n_Body {
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
   PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
   PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
+  PetscInt  npairs;     /* the contact pairs it takes part in (ProblemAddTerm) */
   PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
   PetscBool rigid;      /* -<body>_rigid: a rigid body (rigidbody.c): no cells, no dofs; rg its curves and motion */
   BodyRigid *rg;

@@ -35,4 +35,10 @@ PetscErrorCode ContactTermReportBegin(ContactTerm *, const PetscBool slave[2]);
    surface dofs are left out) and a rigid body's part to its unknowns'
    border (BodyRigidAddHessian). */
 PetscErrorCode ContactTermAddHessian(const ContactTerm *, Mat H, PetscInt n, const PetscInt idx[], const PetscScalar K[]);
+/* Collective, before solving (givenforces.c): a body held by this frictional
+   pair alone against a flat partner, whose scene gives it a force that friction
+   cannot hold (its part along the partner's surface above mu times its part
+   across it) at some stage, is one line naming the pair, the body, the stage
+   and the forces. */
+PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *, Body[]);
 PetscErrorCode ContactTermDestroy(ContactTerm *);

@@ -264,6 +264,8 @@ PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
   PetscCheck(p->nterms < CONTACT_MAX_TERMS, p->comm, PETSC_ERR_USER_INPUT, "more than %d contact pairs", CONTACT_MAX_TERMS);
   PetscCall(EnergyTermSetHessianExact(t, p->exactHessian));
   p->terms[p->nterms++] = t;
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (t->couples[i]) p->bodies[i]->npairs++;
   PetscFunctionReturn(0);
 }
 

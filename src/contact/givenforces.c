@@ -1,0 +1,91 @@
+/* The forces a scene gives against what friction can hold, checked before
+   solving (contactterm.h).
+
+   A body whose only support along its partner is one frictional pair, and
+   whose scene gives it forces alone (every condition force-controlled, no
+   displacement held, no pressure or traction: the body of a Cattaneo-Mindlin
+   scene pressed by P and pulled by Q), is in equilibrium only if the
+   contact's force balances the force given, F. Against a flat partner of
+   outward normal n the contact's force has its normal part -(F.n) n and its
+   tangential part -(F - (F.n) n), and Coulomb's law bounds the second by mu
+   times the first: |F - (F.n) n| <= mu |F.n| (Q <= mu P). Where the scene
+   asks more at some stage, no state holds it: the body slides along the
+   partner without end, and the solve learns it only by failing, after its
+   cutbacks (a minute on the cattaneo scene). So it is said here, before
+   meshing is paid for twice: one line naming the pair, the body, the stage
+   and both forces.
+
+   Only where the answer is certain: a plane-strain pair (in r-z a body's
+   force is axial alone), a partner surface flat in the reference
+   configuration (its edges' chords parallel to 1e-9: a curved partner's
+   normal depends on where the contact lands), the body in no other pair
+   (another pair may hold what this one cannot), and every one of its
+   Dirichlet components force-controlled with no load on it (a displacement
+   held anywhere reacts any force). A rigid body's components that no
+   condition holds are forces of zero, as in the solve. */
+#include "contactterm.h"
+#include "bodycore.h"
+
+/* Whether the body is given forces alone, and their sum at each stage. */
+static PetscBool GivenForcesAlone(const Body B, PetscReal F[][2])
+{
+  PetscBool any = PETSC_FALSE;
+
+  if (B->nload > 0 || B->npairs != 1) return PETSC_FALSE;
+  for (PetscInt k = 0; k < B->nstages; ++k) F[k][0] = F[k][1] = 0.0;
+  for (PetscInt i = 0; i < B->nbc; ++i) {
+    const BodyBC *bc = &B->bc[i];
+    for (PetscInt j = 0; j < bc->ncomp; ++j) {
+      if (!bc->control[j]) return PETSC_FALSE; /* a displacement held */
+      any = PETSC_TRUE;
+      for (PetscInt k = 0; k < B->nstages; ++k) F[k][bc->comps[j]] += bc->stage[k][j];
+    }
+  }
+  return any;
+}
+
+/* The outward unit normal of a flat surface, or PETSC_FALSE if it is not. */
+static PetscBool FlatNormal(const ContactSurface *M, PetscReal n[2])
+{
+  PetscReal t[2] = {0, 0};
+
+  for (PetscInt e = 0; e < M->ne; ++e) {
+    const PetscReal *a = &M->X[2 * M->enodes[3 * e]], *b = &M->X[2 * M->enodes[3 * e + 1]];
+    PetscReal        d[2] = {b[0] - a[0], b[1] - a[1]}, l = PetscSqrtReal(d[0] * d[0] + d[1] * d[1]);
+
+    if (l <= 0) return PETSC_FALSE;
+    d[0] /= l;
+    d[1] /= l;
+    if (!e) {
+      t[0] = d[0];
+      t[1] = d[1];
+      n[0] = d[1] * M->esign[e];
+      n[1] = -d[0] * M->esign[e];
+    } else if (PetscAbsReal(t[0] * d[1] - t[1] * d[0]) > 1e-9) return PETSC_FALSE;
+  }
+  return M->ne > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
+{
+  const ContactPairSpec *spec = &b->spec;
+  const PetscReal        mu   = spec->friction;
+
+  PetscFunctionBeginUser;
+  if (mu <= 0 || spec->axisym || spec->mirror) PetscFunctionReturn(0);
+  for (PetscInt s = 0; s < 2; ++s) {
+    const Body B = bodies[b->S[s].body];
+    PetscReal  F[CONTACT_MAX_STAGES][2], n[2];
+
+    if (!GivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue;
+    for (PetscInt k = 0; k < B->nstages; ++k) {
+      const PetscReal Fn = F[k][0] * n[0] + F[k][1] * n[1];
+      const PetscReal Ft = PetscSqrtReal(PetscSqr(F[k][0] - Fn * n[0]) + PetscSqr(F[k][1] - Fn * n[1]));
+
+      PetscCheck(Ft <= mu * PetscAbsReal(Fn) * (1.0 + 1e-12), B->comm, PETSC_ERR_USER_INPUT,
+                 "pair %s: the forces given on body %s at stage %" PetscInt_FMT " are %g along %s:%s and %g across it, more than friction holds (mu = %g times %g = %g; Q/(mu P) = %.6g): it would slide without end; lower the tangential force or raise -contact_%s_friction",
+                 spec->name, B->name, k + 1, (double)Ft, bodies[b->S[1 - s].body]->name, b->S[1 - s].group, (double)PetscAbsReal(Fn), (double)mu, (double)PetscAbsReal(Fn), (double)(mu * PetscAbsReal(Fn)), (double)(Ft / (mu * PetscAbsReal(Fn))), spec->name);
+    }
+  }
+  PetscFunctionReturn(0);
+}
