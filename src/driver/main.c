@@ -127,7 +127,7 @@ static PetscErrorCode Run(int *status)
       PetscCall(RunSolve(problem, &rec, &rec.converged));
       PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
       PetscCall(RunPostProcess(problem, rec.converged));
-      PetscCall(ProblemView(problem));
+      if (rec.converged) PetscCall(ProblemView(problem)); /* the contact report: of a solution, or none */
       rec.status = rec.converged ? 0 : 2;
       PetscCall(RunFinish(problem, &rec));
     }
