@@ -11,6 +11,7 @@ below its least; a fraction or a unit interval's number outside it; a choice
 an unknown name; a switch neither true nor false) make 288 cases, all run by
 `make stress`. `make test` runs a pairwise selection of them (FAST, 95 runs),
 one run per bad value, since the program stops at the first:
+
 - every option at least once, with a value its own check must refuse (own_values:
   NaN, Inf, the edge of its domain; an integer below its least; an unknown
   name; a non-boolean). The options of a kind take these classes in turn, the
@@ -25,6 +26,7 @@ one run per bad value, since the program stops at the first:
   arrays and the program's penalty parser (auto or a number); "abc" and "2.5"
   through its integer parser. The error handler turns each into the option's
   line in one place (ParseValueError), the same for every option.
+
 Left to `make stress`: below an option's least by more than the edge (-Inf,
 -1e300, -1, -0.5 and 1.5 for a fraction: refused by the comparison the edge
 tests), a non-number given to the other options of a parser, and an option's
@@ -210,8 +212,11 @@ def test_selection_within_the_class():
     assert {n for n, _ in CASES} == {n for n, _ in FAST}
 
 
-@pytest.mark.parametrize("name,value", [pytest.param(n, v, marks=() if (n, v) in FAST else pytest.mark.stress) for n, v in CASES],
-                         ids=[f"{n}={v}" for n, v in CASES])
+# CASES, those not in FAST marked stress
+MARKED = [pytest.param(n, v, marks=() if (n, v) in FAST else pytest.mark.stress, id=f"{n}={v}") for n, v in CASES]
+
+
+@pytest.mark.parametrize("name,value", MARKED)
 def test_bad_value(name, value, tmp_path, mesh_dir):
     """Status 1, one line naming the option, no output: a value taken
     silently (atof's 0 for "abc", a NaN that propagates, a negative size that
