@@ -1,12 +1,36 @@
 """Bad values, the whole class: every option of the program that -help lists
-is given each invalid value of its kind (a number: non-numeric, NaN, Inf and,
-where its domain excludes them, negative and zero; an integer: non-integer
-and below its least; a choice: an unknown name; a switch: neither true nor
-false), and each must stop the run with status 1 and one line naming the
-option. The domain of every option is declared here (DOMAINS); an option that
--help lists without one fails the completeness test, so that a new option is
-classified when it is added. PETSc's own options (-tao_*, -ksp_*, ...) are
-PETSc's."""
+is given invalid values of its kind, and each must stop the run with status 1
+and one line naming the option. The domain of every option is declared here
+(DOMAINS); an option that -help lists without one fails the completeness test,
+so that a new option is classified when it is added. PETSc's own options
+(-tao_*, -ksp_*, ...) are PETSc's.
+
+The values of a kind (bad_values: a number non-numeric, NaN, Inf, -Inf and,
+where its domain excludes them, below its least; an integer non-integer and
+below its least; a fraction or a unit interval's number outside it; a choice
+an unknown name; a switch neither true nor false) make 288 cases, all run by
+`make stress`. `make test` runs a pairwise selection of them (FAST, 95 runs),
+one run per bad value, since the program stops at the first:
+
+- every option at least once, with a value its own check must refuse (own_values:
+  NaN, Inf, the edge of its domain; an integer below its least; an unknown
+  name; a non-boolean). The options of a kind take these classes in turn, the
+  same option of the two bodies (block_E, indenter_E: one line of body.c) and
+  a pair's option beside the global one (contact_interface_friction,
+  contact_friction) one after the other so that they take different classes;
+  a kind with fewer options than classes gives its options a second run, so
+  that every class of every kind is run at least once;
+- the values a shared parser refuses before any option's check, once per
+  parser (PARSERS): "abc" through PETSc's real (PetscOptionsReal and the
+  program's ContactOptionsRealNoDefault, both PetscOptionsGetReal), its real
+  arrays and the program's penalty parser (auto or a number); "abc" and "2.5"
+  through its integer parser. The error handler turns each into the option's
+  line in one place (ParseValueError), the same for every option.
+
+Left to `make stress`: below an option's least by more than the edge (-Inf,
+-1e300, -1, -0.5 and 1.5 for a fraction: refused by the comparison the edge
+tests), a non-number given to the other options of a parser, and an option's
+other own classes (mesh_size runs Inf here, its 0 and NaN in stress)."""
 import re
 import subprocess
 
@@ -123,13 +147,76 @@ def bad_values(kind):
 CASES = [(name, v) for name, kind in sorted(DOMAINS.items()) for v in bad_values(kind)]
 
 
+def own_values(kind):
+    """The classes of bad values that reach an option's own check (past the
+    parser): non-finite, the edge of its domain, an unknown name."""
+    k = kind[0]
+    if k == "real":
+        least, strict = kind[1], kind[2]
+        if least is None:
+            return ["nan", "inf", "-inf"]
+        return ["nan", "inf", repr(least) if strict else repr(least - 1.0)]
+    if k == "reals":
+        return ["nan", "1,inf"] + ([repr(kind[1] - 1.0)] if kind[1] is not None else [])
+    if k == "int":
+        return [str(kind[1] - 1)]
+    if k == "fraction":
+        return ["nan", "inf", "0", "1"]
+    if k == "unit":
+        return ["nan", "inf", "-0.5", "1.5"]
+    return bad_values(kind)  # choice, bool: the one class
+
+
+# A value a shared parser refuses, once per parser (the docstring)
+PARSERS = [("mesh_size", "abc"), ("contact_friction", "abc"), ("block_bc_push_values", "abc"),
+           ("contact_penalty", "abc"), ("load_steps", "abc"), ("load_steps", "2.5")]
+
+
+def base_name(name):
+    """block_E and indenter_E, contact_interface_friction and
+    contact_friction side by side in a kind's order."""
+    return re.sub(r"^(block|indenter)_", "", name).replace("contact_interface_", "contact_")
+
+
+def fast_cases():
+    """The selection make test runs (the docstring): per kind, its options
+    (in base_name order) take its own classes in turn until every option and
+    every class has run; then PARSERS."""
+    kinds = {}
+    for name, kind in DOMAINS.items():
+        if own_values(kind):
+            kinds.setdefault(kind, []).append(name)
+    fast = set()
+    for kind, names in kinds.items():
+        names.sort(key=lambda n: (base_name(n), n))
+        own = own_values(kind)
+        for i in range(max(len(names), len(own))):
+            fast.add((names[i % len(names)], own[i % len(own)]))
+    return fast | set(PARSERS)
+
+
+FAST = fast_cases()
+
+
 @pytest.fixture(scope="module")
 def mesh_dir(tmp_path_factory):
     """One mesh cache for the module: a value checked after meshing costs Gmsh once."""
     return tmp_path_factory.mktemp("meshes")
 
 
-@pytest.mark.parametrize("name,value", CASES, ids=[f"{n}={v}" for n, v in CASES])
+def test_selection_within_the_class():
+    """Every case make test runs is one of the whole class's (a value of
+    own_values or PARSERS that bad_values no longer lists would run only
+    here), and every option with bad values is among them."""
+    assert FAST <= set(CASES), sorted(FAST - set(CASES))
+    assert {n for n, _ in CASES} == {n for n, _ in FAST}
+
+
+# CASES, those not in FAST marked stress
+MARKED = [pytest.param(n, v, marks=() if (n, v) in FAST else pytest.mark.stress, id=f"{n}={v}") for n, v in CASES]
+
+
+@pytest.mark.parametrize("name,value", MARKED)
 def test_bad_value(name, value, tmp_path, mesh_dir):
     """Status 1, one line naming the option, no output: a value taken
     silently (atof's 0 for "abc", a NaN that propagates, a negative size that
