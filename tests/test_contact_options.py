@@ -152,28 +152,21 @@ BAD = {
     "hessian_switch_above": (["-contact_hessian_switch", "1.5"], "-contact_hessian_switch", 1),
     # the pair's own option, not the global one, is named
     "pair_formulation": (["-contact_formulation", "gpts", "-contact_interface_formulation", "nosuch"], "-contact_interface_formulation", 1),
-}
-# bugs of the program, found here: each case passes once it is fixed (strict)
-XFAIL = {
-    "global_formulation_overridden": (["-contact_formulation", "nosuch", "-contact_interface_formulation", "mortar"], "-contact_formulation", 1,
-                                      "an unknown -contact_formulation is taken silently (status 0) where every pair has its own"),
-    "partitioner_two_ranks": (["-partitioner", "nosuch"], "-partitioner", 2,
-                              "an unknown value of a PetscOptionsEnum option (-partitioner, -contact_hessian, -lmvm_h0, ...) "
-                              "is PETSc's line, raised on PETSC_COMM_SELF: once per rank"),
+    # found here and fixed: an unknown global formulation was taken silently
+    # where every pair has its own; an unknown value of an enumerated option
+    # (PETSc raises it on PETSC_COMM_SELF) was printed once per rank
+    "global_formulation_overridden": (["-contact_formulation", "nosuch", "-contact_interface_formulation", "mortar"], "-contact_formulation", 1),
+    "partitioner_two_ranks": (["-partitioner", "nosuch"], "-partitioner", 2),
 }
 
 
-CASES = list(BAD) + [pytest.param(c, marks=pytest.mark.xfail(strict=True, reason=v[3]), id=c) for c, v in XFAIL.items()]
-
-
-@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("case", list(BAD))
 def test_bad_value(case, tmp_path):
     """Status 1, one line (on 2 ranks too) naming the option, no output.
-    Two cases are bugs found here, strict xfails (XFAIL): an unknown
-    -contact_formulation is taken (status 0) where every pair has its own
-    formulation; an unknown value of an enumerated option (-partitioner
-    nosuch) is PETSc's line, printed by every rank."""
-    args, option, ranks = {**BAD, **XFAIL}[case][:3]
+    Two cases were bugs found here: an unknown -contact_formulation was taken
+    (status 0) where every pair has its own formulation; an unknown value of
+    an enumerated option (-partitioner nosuch) was printed by every rank."""
+    args, option, ranks = BAD[case][:3]
     r = run_contact(HERTZ + args, tmp_path, ranks=ranks, check=False, timeout=120)
     lines = [l for l in r.stderr.splitlines() if l.strip() and (ranks == 1 or l.startswith("contact: "))]
     assert r.returncode == 1, f"exit {r.returncode}\n{r.stderr[-2000:]}"

@@ -62,7 +62,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
   PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
-  PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (exact on straight cells from 2)", NULL, qdeg, &qdeg, NULL));
+  PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (the stiffness exact on straight Tri6 cells from 2, on rectangular Quad9 cells from 4: (degree + 2)/2 Gauss points a direction)", NULL, qdeg, &qdeg, NULL));
   PetscOptionsEnd();
   b->ngeoparams = ngp;
   b->qdeg       = qdeg;
