@@ -90,6 +90,8 @@ struct _n_Body {
   PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
   PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
   PetscInt  npairs;     /* the contact pairs it takes part in (ProblemAddTerm) */
+  PetscInt  nsupport;   /* the inward unit normals of its contact surfaces ([nsupport][2], reference configuration) and the largest friction of their pairs (support.c) */
+  PetscReal *support, supportMu;
   PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
   PetscBool rigid;      /* -<body>_rigid: a rigid body (rigidbody.c): no cells, no dofs; rg its curves and motion */
   BodyRigid *rg;

@@ -41,4 +41,7 @@ PetscErrorCode ContactTermAddHessian(const ContactTerm *, Mat H, PetscInt n, con
    across it) at some stage, is one line naming the pair, the body, the stage
    and the forces. */
 PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *, Body[]);
+/* Each surface's inward normals handed to its body, for the check of what
+   holds it (support.h), before solving. */
+PetscErrorCode ContactTermAddSupport(const ContactTerm *, Body[]);
 PetscErrorCode ContactTermDestroy(ContactTerm *);

@@ -4,6 +4,7 @@
    elasticity.c, neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
    take what they share from bodycore.c and rigid.c, below them all. */
+#include "support.h"
 #include "body.h"
 #include "anchors.h"
 #include "axis.h"
@@ -763,6 +764,7 @@ PetscErrorCode BodyDestroy(Body *body)
 
   PetscFunctionBeginUser;
   if (!b) PetscFunctionReturn(0);
+  PetscCall(BodySupportDestroy(b));
   for (PetscInt i = 0; i < b->ngeoparams; ++i) PetscCall(PetscFree(b->geoparams[i]));
   for (PetscInt i = 0; i < b->nphys; ++i) PetscCall(PetscFree(b->physNames[i]));
   PetscCall(PetscFree(b->physNames));

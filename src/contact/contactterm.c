@@ -92,6 +92,7 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
   PetscCall(ContactTermSetPenalty(b));
   PetscCall(ContactTermCheckOverlap(b, bodies));
   PetscCall(ContactTermCheckGivenForces(b, bodies));
+  PetscCall(ContactTermAddSupport(b, bodies));
   if (!b->spec.kpAuto && ContactPairPenaltyStiffness(&b->spec) < CONTACT_PENALTY_SOFT) {
     const ContactPairSpec *spec = &b->spec;
     PetscCall(PetscFPrintf(bodies[b->S[0].body]->comm, PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)ContactPairPenaltyStiffness(spec), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));

@@ -24,7 +24,7 @@
    held anywhere reacts any force). A rigid body's components that no
    condition holds are forces of zero, as in the solve. */
 #include "contactterm.h"
-#include "bodycore.h"
+#include "support.h"
 
 /* Whether the body is given forces alone, and their sum at each stage. */
 static PetscBool GivenForcesAlone(const Body B, PetscReal F[][2])
@@ -86,6 +86,37 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
                  "pair %s: the forces given on body %s at stage %" PetscInt_FMT " are %g along %s:%s and %g across it, more than friction holds (mu = %g times %g = %g; Q/(mu P) = %.6g): it would slide without end; lower the tangential force or raise -contact_%s_friction",
                  spec->name, B->name, k + 1, (double)Ft, bodies[b->S[1 - s].body]->name, b->S[1 - s].group, (double)PetscAbsReal(Fn), (double)mu, (double)PetscAbsReal(Fn), (double)(mu * PetscAbsReal(Fn)), (double)(Ft / (mu * PetscAbsReal(Fn))), spec->name);
     }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Each surface's inward unit normals at its edges' ends and middles
+   (reference configuration), handed to its body (support.c). On a
+   quadratic edge x(eta) = N0 X0 + N1 X1 + N2 Xm, the tangent is
+   (eta - 1/2) X0 + (eta + 1/2) X1 - 2 eta Xm. */
+PetscErrorCode ContactTermAddSupport(const ContactTerm *b, Body bodies[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    const ContactSurface *S = &b->S[s];
+    PetscReal            *nrm;
+    PetscInt              n = 0;
+
+    PetscCall(PetscMalloc1(6 * S->ne, &nrm));
+    for (PetscInt e = 0; e < S->ne; ++e) {
+      const PetscReal *X0 = &S->X[2 * S->enodes[3 * e]], *X1 = &S->X[2 * S->enodes[3 * e + 1]], *Xm = &S->X[2 * S->enodes[3 * e + 2]];
+      for (PetscInt q = 0; q < 3; ++q) {
+        const PetscReal eta = (PetscReal)(q - 1);
+        const PetscReal t[2] = {(eta - 0.5) * X0[0] + (eta + 0.5) * X1[0] - 2.0 * eta * Xm[0], (eta - 0.5) * X0[1] + (eta + 0.5) * X1[1] - 2.0 * eta * Xm[1]};
+        const PetscReal l = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+        if (l <= 0) continue;
+        nrm[2 * n]     = -t[1] * S->esign[e] / l; /* inward: the outward (t_y, -t_x) esign reversed */
+        nrm[2 * n + 1] = t[0] * S->esign[e] / l;
+        ++n;
+      }
+    }
+    PetscCall(BodyAddContactNormals(bodies[S->body], n, nrm, b->spec.friction));
+    PetscCall(PetscFree(nrm));
   }
   PetscFunctionReturn(0);
 }

@@ -6,6 +6,7 @@
    bodies' elastic terms without touching them. The solve that minimises Pi
    (solve.c, and its stages, L-BFGS and force control) sits above this file;
    force control's part of the system (forcecontrol.c) below it. */
+#include "support.h"
 #include "problem.h"
 #include "partition.h"
 #include "options.h"
@@ -606,6 +607,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(VecDuplicate(p->X, &p->G));
   PetscCall(ProblemBuildIndexMaps(p));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermSetUp(p->terms[t], p->bodies));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyCheckSupport(p->bodies[i])); /* forces its contacts can react */
   if (p->nterms) PetscCall(ProblemGetSurfaceDofs(p, &p->surfaceDofs));
   /* the elastic stiffness does not depend on u: assembled once; the Hessian
      copies it and adds the contact terms into the reserved surface block */

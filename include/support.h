@@ -1,0 +1,13 @@
+#pragma once
+#include "bodycore.h"
+
+/* What holds a body that no displacement holds (support.c). */
+/* Adds n inward unit normals nrm[n][2] of a contact surface of the body, in
+   a pair of friction mu (the contact formulations' set-up). */
+PetscErrorCode BodyAddContactNormals(Body, PetscInt n, const PetscReal nrm[], PetscReal mu);
+/* Collective, before solving: a body given forces alone (no displacement
+   held, no load) whose contacts cannot react them (a force pulling it off
+   its contacts, or none at all where its contacts can only push it one way)
+   is one line naming the body and the motion nothing holds. */
+PetscErrorCode BodyCheckSupport(Body);
+PetscErrorCode BodySupportDestroy(Body);
