@@ -403,16 +403,17 @@ def test_axisymmetric_runs(tmp_path):
     """Friction in r-z (the sphere scene, a ball pressed on a flat of the same
     material, mu = 0.3): the solve converges, the stick zone is a disc about
     the axis whose radius c is the JSON's stick_half_width (`c_over_a` =
-    0.91 of a = 0.1013, the edges slipping a little as the ball flattens),
+    0.989 of a = 0.1013, the edges slipping a little as the ball flattens),
     the rings' radial shear has no resultant (written 0, as the pair's force)
-    and no Mindlin figure is given (plane strain's). Bounds: c between 0.8 a
-    and a."""
+    and no Mindlin figure is given (plane strain's). Bounds: c at least
+    0.8 a, and within the contact: at most a plus the contact's mesh size
+    (0.005; a, the second moment's half-width, estimates the edge)."""
     s = run_contact(["-options_file", "meshes/sphere/sphere.opts", "-contact_friction", "0.3"], tmp_path).summary
     pair = s["contact"]["interface"]
     c, a = pair["stick_half_width"], pair["fem_a_moment"]
     print(f"c = {c:.5f}, a = {a:.5f}, shear force {pair['shear_force']}")
     figure("c_over_a", c / a)
-    assert 0.8 * a <= c <= a
+    assert 0.8 * a <= c <= a + 0.005
     assert pair["shear_force"][0] == 0
     assert "mindlin_c" not in pair
 
@@ -478,10 +479,9 @@ def test_full_sliding(H, bound, tmp_path):
     balances the pair's forces (the shear's plus the pressure's:
     `balance_1` = 4.4e-9 of P on the block, `balance_0.2` = 1e-9 on the
     layer, the solve's stopping tolerance; bound 1.5e-8). The same path without
-    friction converges too (the block: 8 Newton iterations in the second
-    stage). With both blocks W = 1 the upper one slides off the lower one's
-    end, whose corner then cuts into it: Newton stalls at a residual of
-    1e-3, with friction or without (not tested)."""
+    friction converges too (the block). With both blocks W = 1 the upper
+    one slides off the lower one's end, whose corner then cuts into it:
+    Newton stalls, with friction or without (not tested)."""
     args = sliding_patch(tmp_path, H)
     res = run_contact(args, tmp_path, name=f"H{H}")
     s = res.summary
