@@ -309,17 +309,18 @@ def test_bad_friction_cattaneo(args, needle, tmp_path):
 
 
 def test_sliding_stops_in_one_line(tmp_path):
-    """A tangential force above mu P (Q/(mu P) = 1.16) has no equilibrium: the
-    disc slides. The solve stops (status 2, nothing written) with one line
-    that says the pair slides, no node of its contact sticking at the last
-    iterate, and names the friction. Without cutbacks and with 60 Newton
-    iterations the stop is quick (with the defaults it cuts back 3 times)."""
-    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{1.16 * MU * P!r}", "-load_cutbacks", "0", "-tao_max_it", "60"],
-                      tmp_path, check=False)
+    """A tangential force above mu P (Q/(mu P) = 1.16) on the disc pressed by
+    a force: no equilibrium, and the scene's forces say so before any solve
+    (src/contact/givenforces.c): status 1, one line naming the pair, the
+    body, the stage and the friction, nothing written. The solve's own
+    detection, where the forces given do not decide it, is
+    test_rigid_punch_slides'; the check's cases, tests/test_given_forces.py."""
+    res = run_contact(CATTANEO + ["-disc_bc_clamp_values", f"{P},0,{P},{1.16 * MU * P!r}"], tmp_path, check=False)
     lines = [l for l in res.stderr.splitlines() if l.strip()]
     print(lines)
-    assert res.returncode == 2
-    assert len(lines) == 1 and "pair interface slides" in lines[0] and "-contact_interface_friction" in lines[0]
+    assert res.returncode == 1
+    assert len(lines) == 1 and "pair interface: the forces given on body disc at stage 2" in lines[0] \
+        and "-contact_interface_friction" in lines[0]
     assert not res.output_path.exists() and not res.summary_path.exists()
 
 
@@ -634,9 +635,12 @@ def test_rigid_punch_taylor(tmp_path):
 
 
 def test_rigid_punch_slides(tmp_path):
-    """Q = 0.06 above mu P = 0.045 on the rigid punch: no equilibrium, one line
-    naming the pair's friction, status 2, nothing written."""
-    res = run_contact(RIGID_PUNCH + ["-punch_bc_push_values", "0,-0.15,0.06,-0.15", "-load_cutbacks", "0",
+    """The rigid punch pressed by a displacement (y, 0.002: P = 0.150, mu P =
+    0.045) and pulled by a force Q = 0.06 in x: no equilibrium, which only
+    the solve can find (P comes from the displacement): one line saying the
+    pair slides and naming its friction, status 2, nothing written."""
+    res = run_contact(RIGID_PUNCH + ["-punch_bc_push_control", "force,displacement",
+                                     "-punch_bc_push_values", "0,-0.002,0.06,-0.002", "-load_cutbacks", "0",
                                      "-tao_max_it", "60"], tmp_path, check=False)
     lines = [l for l in res.stderr.splitlines() if l.strip()]
     print(lines)
