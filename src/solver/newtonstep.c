@@ -21,9 +21,10 @@
    PETSc marks the factor failed (FACTOR_OUTMEMORY) and Newton's step is
    lost. TAO then takes gradient steps, which zigzag and stop: a rigid
    cylinder on a neohookean pad at -tangent_at_rest 0, h = 0.06, diverged on
-   2 ranks with -partitioner simple (the first exact-Hessian step of the last
-   stage), and at h = 0.03 with friction with metis, where 1 rank and
-   ptscotch converged. 100 % leaves room enough (30 % already passed there);
+   2 ranks with -partitioner simple (at the first exact-Hessian step of its
+   last stage) where 1 rank, metis and ptscotch converged
+   (tests/test_ranks_neohookean.py). 100 % leaves room enough (30 % already
+   passed there);
    -<prefix>mat_mumps_icntl_14 sets another. Set as the option's default
    (MUMPS reads its controls from the options when it creates the factor)
    and marked read, so that a run that never factors does not report it
