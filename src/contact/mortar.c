@@ -1860,6 +1860,32 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+/* Mortar's own options, shared by every mortar pair: the slave surface and
+   the weight functions of the nodal gaps. */
+static PetscErrorCode MortarOptionsRead(MPI_Comm comm, MortarSlave *slave, MortarBasis *basis)
+{
+  PetscEnum which = (PetscEnum)*slave, w = (PetscEnum)*basis;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Mortar contact options", NULL);
+  PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: auto (one that ends on the other, else the softer body's, else the first), the pair's first, its second, or both (each one-sided energy weighted 1/2)", NULL, MortarSlaves, which, &which, NULL));
+  PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: dual (biorthogonal to the quadratic basis), quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, w, &w, NULL));
+  PetscOptionsEnd();
+  *slave = (MortarSlave)which;
+  *basis = (MortarBasis)w;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactMortarOptionsHelp(MPI_Comm comm)
+{
+  MortarSlave slave = MORTAR_SLAVE_AUTO;
+  MortarBasis basis = MORTAR_BASIS_DUAL;
+
+  PetscFunctionBeginUser;
+  PetscCall(MortarOptionsRead(comm, &slave, &basis));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm t)
 {
   Mortar *m;
@@ -1878,12 +1904,9 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
   PetscCall(PetscNew(&m));
   m->basis = MORTAR_BASIS_DUAL;
   {
-    PetscEnum which = (PetscEnum)MORTAR_SLAVE_AUTO;
-    PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Mortar contact options", NULL);
-    PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: auto (one that ends on the other, else the softer body's, else the first), the pair's first, its second, or both (each one-sided energy weighted 1/2)", NULL, MortarSlaves, which, &which, NULL));
-    PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: dual (biorthogonal to the quadratic basis), quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, (PetscEnum)m->basis, (PetscEnum *)&m->basis, NULL));
-    PetscOptionsEnd();
-    m->slaveChoice = (PetscInt)which;
+    MortarSlave slave = MORTAR_SLAVE_AUTO;
+    PetscCall(MortarOptionsRead(PETSC_COMM_WORLD, &slave, &m->basis));
+    m->slaveChoice = (PetscInt)slave;
   }
   m->nq = spec->nqp;
   PetscCall(PetscDTGaussQuadrature(m->nq, -1.0, 1.0, m->xq, m->wq));
