@@ -52,3 +52,31 @@ def test_help_lists_mortar_options(scene, tmp_path):
     assert option_line(proc.stdout, "-contact_mortar_basis").startswith("-contact_mortar_basis <now dual : formerly dual>")
     assert {"-contact_mortar_slave", "-contact_mortar_basis"} <= options_table("docs/scenes.md")
     assert not list(tmp_path.iterdir())
+
+
+PLATE = ROOT / "tests/meshes/plate.geo"
+
+
+def test_load_stages_stage_major(tmp_path):
+    """-load_stages S: the values are stage-major (x1,y1,x2,y2), as -help's
+    text and docs/scenes.md say. A plate held at its bottom, its top moved
+    by (0.01, 0) at stage 1's end and (0, -0.02) at stage 2's
+    (-a_bc_top_values 0.01,0,0,-0.02): each stage's top displacement, read
+    from the HDF5's /stages, is that stage's pair (to 1e-12 of the values:
+    imposed, not solved for)."""
+    proc = run_bin(["-help", "-bodies", "a", "-a_geo", PLATE], tmp_path)
+    for name in ("-load_stages", "-a_bc_<group>_values"):
+        assert "stage-major" in option_line(proc.stdout, name) and "x1,y1,x2,y2" in option_line(proc.stdout, name)
+    assert "tx1,ty1,tx2,ty2" in option_line(proc.stdout, "-a_load_<group>_traction")
+    assert "stage-major" in (ROOT / "docs/scenes.md").read_text()
+    r = run_contact(["-bodies", "a", "-a_geo", PLATE, "-a_geo_params", "quads=1", "-a_mesh_size", "0.25",
+                     "-a_E", 1, "-a_nu", 0.3, "-a_bc", "bottom,top", "-load_stages", 2,
+                     "-a_bc_top_values", "0.01,0,0,-0.02", "-mesh_dir", tmp_path / "m"], tmp_path)
+    with r.h5() as f:
+        X = f["bodies/a/geometry"][:]
+        top = abs(X[:, 1] - 1.0) < 1e-12
+        assert top.sum() >= 3
+        for k, want in ((1, (0.01, 0.0)), (2, (0.0, -0.02))):
+            u = f[f"stages/{k}/bodies/a/displacement"][:]
+            for c in range(2):
+                assert abs(u[top, c] - want[c]).max() < 1e-12, (k, c, u[top])
