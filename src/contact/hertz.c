@@ -79,11 +79,14 @@ void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, 
   F->sc = den > 0 && !axisym ? num / den : 0.0;
   for (PetscInt i = 0; i < n; ++i) m2 += rows[C * i + CONTACT_ROW_P] * rows[C * i + CONTACT_ROW_W] * PetscSqr(rows[C * i + col] - F->sc);
   F->am = den > 0 ? (axisym ? PetscSqrtReal(2.5 * m2 / den) : 2.0 * PetscSqrtReal(m2 / den)) : 0.0;
-  F->a  = 0.0;
+  F->a       = 0.0;
+  F->zone[0] = F->zone[1] = 0.0;
   if (i0 >= 0) {
     const PetscReal lo = i0 > 0 ? ContactZoneEnd(&rows[C * i0], &rows[C * (i0 - 1)], nodal, col) : rows[C * i0 + col];
     const PetscReal hi = i1 < n - 1 ? ContactZoneEnd(&rows[C * i1], &rows[C * (i1 + 1)], nodal, col) : rows[C * i1 + col];
     F->a               = axisym ? PetscMax(lo, hi) : 0.5 * (hi - lo);
+    F->zone[0]         = lo;
+    F->zone[1]         = hi;
   }
   F->l2err = (PetscReal)NAN; /* no Hertz profile to compare with */
   if (hertz && hertzA > 0) {
