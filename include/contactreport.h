@@ -10,6 +10,13 @@
    contact force on the node (else 0). */
 enum { CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_Y, CONTACT_ROW_XC, CONTACT_ROW_YC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_FX, CONTACT_ROW_FY, CONTACT_ROW_COLS };
 
+/* The gap of a sample that nothing faces (a point whose closest point is on
+   no edge of the other surface, a node its slave's points do not cover):
+   undefined, so NaN in the rows and the HDF5's gap, "unpaired" in the
+   report. Not PETSc's PETSC_INFINITY, which is a finite number (the largest
+   real over 4, 4.49e307) that would be read as a gap. */
+#define CONTACT_GAP_NONE ((PetscReal)NAN)
+
 /* A profile's figures: largest pressure, half-width (half the loaded length,
    to half the spacing of the samples), half-width from the second moment,
    pressure centroid, integral of the pressure, relative L2 distance from

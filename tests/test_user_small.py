@@ -193,3 +193,53 @@ def test_ring_pressure_plot_range(ring, zoom, tmp_path):
     out = tmp_path / "ring.png"
     proc = subprocess.run([sys.executable, ROOT / "scripts/plot_hertz.py", h5, *args, "-o", out], capture_output=True, text=True)
     assert proc.returncode == 0 and out.exists(), proc.stderr
+
+
+# A short flat punch (width 0.5) pressed on a long block (width 2): the
+# punch's bottom ends on the block's top, so most of the block's top faces
+# nothing (tests/meshes/plate.geo for both)
+PUNCH_ON_BLOCK = ["-bodies", "punch,block",
+                  "-punch_geo", PLATE, "-punch_geo_params", "x0=-0.25,y0=0,L=0.5,H=0.3", "-punch_mesh_size", 0.05,
+                  "-punch_E", 1000, "-punch_nu", 0.3, "-punch_bc", "top", "-punch_bc_top_values", "0,-0.002",
+                  "-block_geo", PLATE, "-block_geo_params", "x0=-1,y0=-1,L=2,H=1", "-block_mesh_size", 0.1,
+                  "-block_E", 1000, "-block_nu", 0.3, "-block_bc", "bottom",
+                  "-contact_pairs", "tool", "-contact_tool_surfaces", "punch:bottom,block:top"]
+
+
+def huge_numbers(obj):
+    """Every number in a JSON document above 1e300 in magnitude."""
+    if isinstance(obj, dict):
+        return [x for v in obj.values() for x in huge_numbers(v)]
+    if isinstance(obj, list):
+        return [x for v in obj for x in huge_numbers(v)]
+    return [obj] if isinstance(obj, float) and abs(obj) > 1e300 else []
+
+
+@pytest.mark.parametrize("formulation, ranks", [("mortar", 1), ("mortar", 2), ("gpts", 1)])
+def test_unpaired_gap(formulation, ranks, tmp_path):
+    """A sample that nothing faces has no gap: the report's table prints
+    "unpaired" (it printed 4.4942e+307, PETSc's PETSC_INFINITY, the largest
+    real over 4, a finite number), the HDF5's gap is NaN there, and no
+    number above 1e300 is left in the report, the JSON or any HDF5 gap. With
+    mortar, the block's (the master's) nodes further than an edge (h = 0.1)
+    from the punch's ends have no gap, those under the punch (within 0.25 - h
+    of its middle) have one."""
+    r = run_contact(PUNCH_ON_BLOCK + ["-contact_formulation", formulation, "-mesh_dir", tmp_path / "m"],
+                    tmp_path, ranks=ranks)
+    assert not re.search(r"e\+30[0-9]", r.stdout), r.stdout
+    assert "unpaired" in r.stdout
+    assert not huge_numbers(r.summary)
+    with r.h5() as f:
+        g = f["contact/tool"]
+        for side in g.values():
+            for k in ("gap", "node_gap"):
+                if k in side:
+                    v = side[k][...]
+                    assert not np.any(np.abs(v[np.isfinite(v)]) > 1e300), (side.name, k)
+        if formulation == "mortar":
+            m = g["block_top"]
+            assert m.attrs["slave"] == 0
+            x, gap = m["node_X"][:, 0], m["node_gap"][...]
+            assert np.all(np.isnan(gap[np.abs(x) > 0.25 + 0.1]))
+            assert np.all(np.isfinite(gap[np.abs(x) < 0.25 - 0.1]))
+            assert np.isnan(gap).sum() >= 20

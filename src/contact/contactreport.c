@@ -246,8 +246,10 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
       for (PetscInt i = first; i <= last; i += step) {
         const PetscReal *r  = &S->rows[C * i];
         const PetscReal  ds = spec->axisym ? r[CONTACT_ROW_X] : r[CONTACT_ROW_S] - S->fig.sc;
-        if (spec->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12.6g %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0), (double)r[CONTACT_ROW_GAP]));
-        else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], "", (double)r[CONTACT_ROW_GAP]));
+        char             hz[32] = "", gap[32] = "unpaired"; /* a sample nothing faces has no gap (CONTACT_GAP_NONE) */
+        if (spec->hertz) PetscCall(PetscSNPrintf(hz, sizeof(hz), "%12.6g", (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0)));
+        if (!PetscIsInfOrNanReal(r[CONTACT_ROW_GAP])) PetscCall(PetscSNPrintf(gap, sizeof(gap), "%.4e", (double)r[CONTACT_ROW_GAP]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12s\n", (double)ds, (double)r[CONTACT_ROW_P], hz, gap));
       }
     }
   }

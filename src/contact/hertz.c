@@ -53,7 +53,7 @@ static PetscReal ContactZoneEnd(const PetscReal in[], const PetscReal out[], Pet
 {
   const PetscReal gi = in[CONTACT_ROW_GAP], go = out[CONTACT_ROW_GAP];
 
-  if (nodal && gi < 0 && go >= 0 && go < PETSC_INFINITY) return in[col] + (out[col] - in[col]) * gi / (gi - go);
+  if (nodal && gi < 0 && go >= 0 && !PetscIsInfOrNanReal(go)) return in[col] + (out[col] - in[col]) * gi / (gi - go);
   return 0.5 * (in[col] + out[col]);
 }
 
