@@ -243,3 +243,18 @@ def test_unpaired_gap(formulation, ranks, tmp_path):
             assert np.all(np.isnan(gap[np.abs(x) > 0.25 + 0.1]))
             assert np.all(np.isfinite(gap[np.abs(x) < 0.25 - 0.1]))
             assert np.isnan(gap).sum() >= 20
+
+
+def test_progress_after_failed_solve(tmp_path):
+    """The progress line says "post-processing the converged state" only after
+    a solve that converged; after one that did not (a Newton iteration
+    allowed, no cutback) it says the last iterate is post-processed and
+    nothing will be written, and the run exits 2 with nothing written."""
+    base = PUNCH_ON_BLOCK + ["-mesh_dir", tmp_path / "m", "-progress"]
+    ok = run_contact(base, tmp_path, name="ok")
+    assert "post-processing the converged state" in ok.stderr and "last iterate" not in ok.stderr
+    bad = run_contact(base + ["-tao_max_it", 1, "-load_cutbacks", 0], tmp_path, name="bad", check=False)
+    assert bad.returncode == 2, bad.stderr[-2000:]
+    assert "converged state" not in bad.stderr, bad.stderr
+    assert "post-processing the last iterate (the solve did not converge: nothing will be written)" in bad.stderr
+    assert not bad.summary_path.exists() and not bad.output_path.exists()
