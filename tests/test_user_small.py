@@ -292,3 +292,40 @@ def test_strain_warning_at_punch_edge(tmp_path):
                      "-a_bc_bottom_components", "y", "-a_bc_left_components", "x",
                      "-a_bc_top_components", "y", "-a_bc_top_values", -0.03, "-mesh_dir", tmp_path / "m"], tmp_path, name="plate")
     assert "warning: body a is linear at a strain of" in u.stdout and "-a_material neohookean models it" in u.stdout, u.stdout
+
+
+BOX = """// a unit cube: the square extruded along z
+If (!Exists(h)) h = 0.25; EndIf
+Point(1) = {0, 0, 0, h}; Point(2) = {1, 0, 0, h}; Point(3) = {1, 1, 0, h}; Point(4) = {0, 1, 0, h};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+out[] = Extrude {0, 0, 1} { Surface{1}; };
+Mesh.ElementOrder = 2;
+"""
+GROUPS_3D = {
+    # a volume and its bottom face as groups, as a 3D scene declares them
+    "volume": 'Physical Surface("base") = {1};\nPhysical Volume("body") = {out[1]};\n',
+    # no volume group, but a face off the plane z = 0 as the body and one of its edges as a curve
+    "top face": 'Physical Surface("body") = {out[0]};\nPhysical Curve("base") = {Boundary{Surface{out[0]};}};\n',
+}
+
+
+@pytest.mark.parametrize("ranks", [1, 2])
+@pytest.mark.parametrize("groups", list(GROUPS_3D))
+def test_3d_geo_refused(groups, ranks, tmp_path):
+    """A 3D .geo (a cube) is refused in one line naming the body, the mesh
+    file and what makes it 3D (a physical volume; a node off the plane
+    z = 0), saying 3D bodies are not supported yet: status 1, nothing
+    written (it said "no physical curve 'base' (it has:)" or "line element
+    ... is not an edge of any 2D element")."""
+    geo = tmp_path / "cube.geo"
+    geo.write_text(BOX + GROUPS_3D[groups])
+    r = run_contact(["-bodies", "a", "-a_geo", geo, "-a_E", 1000, "-a_nu", 0.3, "-a_bc", "base",
+                     "-mesh_dir", tmp_path / "m"], tmp_path, ranks=ranks, check=False)
+    assert r.returncode == 1, r.stderr
+    lines = [l for l in r.stderr.splitlines() if l.startswith("contact:")]   # (mpiexec adds its own lines)
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith("contact: error: body a: the mesh is 3D (mesh ") and "cube" in lines[0], lines[0]
+    assert "3D bodies are not supported yet" in lines[0]
+    assert ("physical volume" in lines[0]) if groups == "volume" else ("off the plane z = 0" in lines[0]), lines[0]
+    assert not r.summary_path.exists() and not r.output_path.exists()
