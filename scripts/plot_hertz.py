@@ -18,7 +18,8 @@ Usage:
         declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
         with the computed a (second moment) and p0 = 2 P / (pi a) and his
         stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
-        skipped with one line (exit status 0)
+        skipped with one line (exit status 0; with --quiet without it, as
+        make run does)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
         cells are subdivided through their shape functions so that curved edges
@@ -764,6 +765,9 @@ def main():
                         help="the pressure plot's abscissa: the arc position from the "
                              "contact centre (s, the default) or the current x or y "
                              "coordinate (the Hertz curve centred at the slave's centre)")
+    parser.add_argument("--quiet", action="store_true",
+                        help="skip a file with nothing to draw (no contact pairs; no pair "
+                             "with friction for --shear) without a line")
     parser.add_argument("--units", type=parse_units, default=None, metavar="LENGTH,STRESS",
                         help="unit labels for the axes, e.g. mm,MPa (either may be "
                              "empty), or none; default: /metadata attributes "
@@ -792,8 +796,9 @@ def main():
             elif args.shear:
                 pairs = frictional_pairs(f)
                 if not pairs:
-                    print(f"{PROG}: {args.file} has no pair with friction: shear plot "
-                          f"skipped, nothing written")
+                    if not args.quiet:
+                        print(f"{PROG}: {args.file} has no pair with friction: shear plot "
+                              f"skipped, nothing written")
                     return 0
                 fig, axes = plt.subplots(len(pairs), 1, figsize=(8, 5 * len(pairs)), squeeze=False,
                                          layout="constrained")
@@ -801,8 +806,9 @@ def main():
                 fig.suptitle(label)
             else:
                 if "contact" not in f or not len(f["contact"]):
-                    print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
-                          f"skipped, nothing written (--field plots the stress)")
+                    if not args.quiet:
+                        print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
+                              f"skipped, nothing written (--field plots the stress)")
                     return 0
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,
