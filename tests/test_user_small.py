@@ -139,10 +139,10 @@ def test_ring_contact_zone(ring):
 @pytest.mark.roundoff
 def test_ring_contact_zone_ranks(ring):
     """On 2 ranks the ring's zone (gathered on rank 0, broadcast for the HDF5's
-    attributes) is the 1-rank one: `ring_zone_ranks` = 4.1e-14 of the width,
-    bound 1e-6 (the zone's ends are interpolated from the nodal gaps, which two
-    runs stopped by the same test leave within the stop's tolerance of each
-    other, 1e-10 of the gaps' scale here, well below the bound)."""
+    attributes) is the 1-rank one: `ring_zone_ranks` = 1.0e-14 to 4.1e-14
+    of the width (OpenBLAS Prescott, the default kernel), bound 1e-6 (the
+    zone's ends are interpolated from the nodal gaps, which two runs stopped
+    by the same test leave within the stop's tolerance of each other)."""
     z1, z2 = (ring[n].summary["contact"]["seat"]["zone"] for n in (1, 2))
     d = figure("ring_zone_ranks", np.abs(np.subtract(z2, z1)).max() / (z1[1] - z1[0]))
     assert d < 1e-6, (z1, z2)
@@ -272,7 +272,8 @@ RIGID_PUNCH = ["-bodies", "punch,block",
 
 def test_strain_warning_at_punch_edge(tmp_path):
     """The strain under a flat punch's edge is a singular point's (it grows as
-    the mesh is refined there: 3.97, 5.15, 5.46 % at h = 0.02, 0.01, 0.005):
+    the mesh is refined there: 3.97, 5.15, 5.46 % at h = 0.02, 0.01, 0.005;
+    here `punch_edge_strain_percent` = 5.15):
     the warning says it is concentrated there and does not advise a
     neo-Hookean material, which would not remove it. The peak it names lies
     at the punch's edge (|x| within 0.02 of 0.25, just under the surface).
