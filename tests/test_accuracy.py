@@ -5,11 +5,12 @@ import json
 
 import pytest
 
-from conftest import HALF_MORTAR_FINE, ROOT, run_contact
+from conftest import HALF_MORTAR_FINE, ROOT, figure, run_contact
 
 import accuracy_study
 
 MORTAR = ["-contact_formulation", "mortar"]
+TIGHT = ["-tao_gttol", "1e-12"]
 
 
 def scene_args(scene, tmp_path):
@@ -96,35 +97,40 @@ def test_bad_target(value, tmp_path):
     assert not res.summary_path.exists()
 
 
+@pytest.mark.roundoff
 def test_ranks_agree(tmp_path):
-    """2 ranks reach 1 rank's answer: results, not the refinement path. Where
-    the last meshes are the same (same dofs; measured so with each of the
-    OpenBLAS kernels Nehalem, Sandybridge, Haswell and SkylakeX), P and p_max
-    agree to 3e-12 (measured up to 1.2e-12, p_max with Nehalem) and the
-    estimate, a difference of two meshes' answers, to 2.5e-11 (measured up
-    to 8.0e-12), so that a figure or an
+    """2 ranks reach 1 rank's answer: results, not the refinement path. Both
+    solved to -tao_gttol 1e-12, where Newton's every solve ends at round-off
+    on any path (at the default 1e-8 the kernels stopped where a cell's
+    marking flipped on the last bit: 7686 dofs at the last step with
+    Nehalem and Haswell, 7718 with the others). Where the last meshes are
+    the same (same dofs: measured so under each of the five OpenBLAS
+    kernels), P and p_max agree to BOUND (measured `dP` = LO to HI and
+    `dpmax` = LO to HI) and the estimate, a difference of two meshes'
+    answers, to BOUND (measured `dest` = LO to HI), so that a figure or an
     estimate that is one rank's share fails. Should a cell's marking flip on
-    the last bit on another machine (the kernels do flip it: the last step
-    has 7686 dofs with Nehalem and Haswell, 7718 with the others), the two
-    answers, each on its own mesh, agree to within the larger of their
-    estimates, which is what a user is promised; and each run meets the
-    target it was given."""
-    args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05]
+    another machine nonetheless, the two answers, each on its own mesh,
+    agree to within the larger of their estimates, which is what a user is
+    promised; and each run meets the target it was given."""
+    args = scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, "-tao_gttol", "1e-12"]
     one = run_contact(args, tmp_path, name="one").summary
     two = run_contact(args, tmp_path, ranks=2, name="two").summary
     same_mesh = one["adapt_steps"][-1]["dofs"] == two["adapt_steps"][-1]["dofs"]
     print("last dofs", one["adapt_steps"][-1]["dofs"], two["adapt_steps"][-1]["dofs"])
     for s in (one, two):
         assert s["error_estimate"] <= 0.05
+    dP = abs(two["contact_force"] / one["contact_force"] - 1)
+    dpmax = abs(two["fem_pmax"] / one["fem_pmax"] - 1)
+    dest = abs(two["error_estimate"] / one["error_estimate"] - 1)
+    print(f"P {dP:.2e}, p_max {dpmax:.2e}, estimate {dest:.2e} apart")
     if same_mesh:
+        figure("dP", dP), figure("dpmax", dpmax), figure("dest", dest)
         rtol = 3e-12
-        print(f"estimate {one['error_estimate']!r} against {two['error_estimate']!r}: {two['error_estimate'] / one['error_estimate'] - 1:.2e}")
-        assert two["error_estimate"] == pytest.approx(one["error_estimate"], rel=2.5e-11)
+        assert dest <= 2.5e-11
     else:
         rtol = max(one["error_estimate"], two["error_estimate"])
-    print(f"P {two['contact_force'] / one['contact_force'] - 1:.2e}, p_max {two['fem_pmax'] / one['fem_pmax'] - 1:.2e}")
-    assert two["contact_force"] == pytest.approx(one["contact_force"], rel=rtol)
-    assert two["fem_pmax"] == pytest.approx(one["fem_pmax"], rel=rtol)
+    assert dP <= rtol
+    assert dpmax <= rtol
 
 
 def test_gpts_refused(tmp_path):
@@ -139,20 +145,22 @@ def test_gpts_refused(tmp_path):
 
 
 @pytest.mark.parametrize("tol", [0.01, 0.005])
-def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
+def test_against_uniform_fine(tol, half_mortar_reference, tmp_path):
     """-accuracy TOL on the half scene against an independent run: the uniform
-    h = 0.007 mesh (conftest.HALF_MORTAR_FINE: 462,642 dofs, 21 to 60 times
-    the adapted answer's), whose own profile error is below 0.5 % (its L2
-    distance to h = 0.015 is 0.49 %, as was that of h = 0.005). The adapted
-    answer's profile lies within TOL + 0.3 % of it (measured 0.86 % at
-    TOL = 1 % with an estimate of 0.93 %; 0.08 % at 0.5 %, estimate 0.20 %)
-    and its force within TOL / 4 (measured 7.6e-4, 1.3e-6)."""
+    h = 0.007 mesh (conftest.HALF_MORTAR_FINE, committed as
+    conftest.HALF_MORTAR_REF: 462,642 dofs, 21 to 60 times the adapted
+    answer's), whose own profile error is below 0.5 % (its L2 distance to
+    h = 0.015 is 0.49 %, as was that of h = 0.005). The adapted answer's
+    profile lies within TOL + 0.3 % of it (measured `d_tol0.01` = 0.0086 at
+    TOL = 1 % with an estimate of `est_tol0.01` = 0.0093; `d_tol0.005` = 8e-4
+    at 0.5 %, estimate `est_tol0.005` = 0.0020) and its force within TOL / 4
+    (measured `dP_tol0.01` = 7.6e-4, `dP_tol0.005` = 1.3e-6)."""
     import profile_metrics as pm
-    ref = half_mortar_runs[HALF_MORTAR_FINE]
-    assert ref.returncode == 0, ref.stderr[-2000:]
+    ref = half_mortar_reference
     res = run_contact(scene_args("hertz-half", tmp_path) + ["-accuracy", tol], tmp_path)
-    d = pm.l2_distance(pm.profiles(res.output_path)[0]["indenter_contact"], pm.profiles(ref.output_path)[0]["indenter_contact"])
-    dP = abs(res.summary["contact_force"] / ref.summary["contact_force"] - 1)
+    d = figure(f"d_tol{tol}", pm.l2_distance(pm.profiles(res.output_path)[0]["indenter_contact"], ref.profile))
+    dP = figure(f"dP_tol{tol}", abs(res.summary["contact_force"] / ref.summary["contact_force"] - 1))
+    figure(f"est_tol{tol}", res.summary["error_estimate"])
     print(f"TOL {tol}: {res.summary['dofs']} dofs, estimate {res.summary['error_estimate']:.3g}, "
           f"profile {d:.3g} and force {dP:.2g} from the uniform h = {HALF_MORTAR_FINE}")
     assert d <= tol + 0.003
@@ -162,9 +170,10 @@ def test_against_uniform_fine(tol, half_mortar_runs, tmp_path):
 @pytest.fixture(scope="module")
 def half_default(tmp_path_factory):
     """-accuracy 0.05 on the half scene with its defaults (bulk 0.5, grading
-    0.3, warm start): measured steps of 2454, 4308 and 7718 dofs."""
+    0.3, warm start), solved to -tao_gttol 1e-12 (each step's Newton ends at
+    round-off, whatever its start): steps of 2454, 4308 and 7718 dofs."""
     tmp = tmp_path_factory.mktemp("acc-default")
-    return summary(run_contact(scene_args("hertz-half", tmp) + MORTAR + ["-accuracy", 0.05], tmp))
+    return summary(run_contact(scene_args("hertz-half", tmp) + MORTAR + TIGHT + ["-accuracy", 0.05], tmp))
 
 
 @pytest.mark.parametrize("option,value", [("-accuracy_bulk", 0.8), ("-accuracy_grading", 0.1)])
@@ -172,35 +181,56 @@ def test_marking_options(option, value, half_default, tmp_path):
     """-accuracy_bulk 0.8 marks the cells making up 80 % of the indicators'
     total instead of 50 %, and -accuracy_grading 0.1 lets the mesh size grow
     0.1 per unit distance from the contact instead of 0.3: from the same
-    first solve (its mesh and dofs equal), each refines more, so the second
-    step has more dofs (measured 4416 and 4810 against 4308). Each meets the
-    target, and the two answers, on their own meshes, agree within the
-    larger of their estimates (measured P 7.2e-5 and 2.8e-4 apart, estimates
-    0.0087 and 0.0124)."""
-    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, option, value], tmp_path))
+    first solve (its mesh and dofs equal: the scene's own), each refines
+    more, so the second step has more dofs: a bound on a count, the options'
+    purpose (measured `dofs1_bulk` = LO to HI and `dofs1_grading` = LO to HI
+    times the default's second step over the five OpenBLAS kernels; a
+    marking flipped by round-off moves a few cells, 32 dofs at 7700). Each
+    meets the target, and the two answers, on their own meshes, agree within
+    the larger of their estimates (measured P `dP_bulk` = LO to HI and
+    `dP_grading` = LO to HI apart, estimates `est_bulk` = LO to HI and
+    `est_grading` = LO to HI)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + TIGHT + ["-accuracy", 0.05, option, value],
+                            tmp_path))
     d0, d = [x["dofs"] for x in half_default["adapt_steps"]], [x["dofs"] for x in s["adapt_steps"]]
-    print(f"{option} {value}: dofs {d} against {d0}; estimate {s['error_estimate']:.4g}; "
-          f"P {s['contact_force'] / half_default['contact_force'] - 1:.2e} from the default's")
-    assert d[0] == d0[0] and d[1] > d0[1]
+    name = option.split("_")[1]
+    figure(f"dofs1_{name}", d[1] / d0[1])
+    figure(f"est_{name}", s["error_estimate"])
+    dP = figure(f"dP_{name}", abs(s["contact_force"] / half_default["contact_force"] - 1))
+    print(f"{option} {value}: dofs {d} against {d0}; estimate {s['error_estimate']:.4g}; P {dP:.2e} from the default's")
+    assert d[0] == d0[0]
+    assert d[1] > d0[1]
     assert s["error_estimate"] <= 0.05
     tol = max(s["error_estimate"], half_default["error_estimate"])
     for key in ("contact_force", "fem_pmax"):
         assert abs(s[key] / half_default[key] - 1) <= tol, key
 
 
+@pytest.mark.roundoff
 def test_cold_start(half_default, tmp_path):
     """-accuracy_warm_start 0 solves each step from rest instead of from the
     last step's answer interpolated onto the new mesh: the same answer (P
-    and p_max to 1e-6, what the solver's stop leaves between two solves;
-    measured 3.8e-7 and 6e-9) in more Newton iterations (measured 11 a step
-    against 11, 3 and 2: 33 against 16)."""
-    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + ["-accuracy", 0.05, "-accuracy_warm_start", 0],
-                            tmp_path))
+    and p_max to BOUND, both solved to -tao_gttol 1e-12: measured
+    `dP` = LO to HI and `dpmax` = LO to HI over the five OpenBLAS kernels)
+    in more Newton iterations, the warm start's purpose: a bound on a count,
+    cold at least BOUND times warm (measured `ratio` = LO to HI: from rest
+    each step takes what the first does, from the interpolated answer the
+    later steps a few)."""
+    s = summary(run_contact(scene_args("hertz-half", tmp_path) + MORTAR + TIGHT +
+                            ["-accuracy", 0.05, "-accuracy_warm_start", 0], tmp_path))
     warm = sum(x["iterations"] for x in half_default["adapt_steps"])
     cold = sum(x["iterations"] for x in s["adapt_steps"])
-    print(f"iterations {cold} cold against {warm} warm; P {s['contact_force'] / half_default['contact_force'] - 1:.2e}, "
-          f"p_max {s['fem_pmax'] / half_default['fem_pmax'] - 1:.2e}")
+    dP = abs(s["contact_force"] / half_default["contact_force"] - 1)
+    dpmax = abs(s["fem_pmax"] / half_default["fem_pmax"] - 1)
+    ratio = figure("ratio", cold / warm)
+    print(f"iterations {cold} cold against {warm} warm; P {dP:.2e}, p_max {dpmax:.2e}; "
+          f"steps {[(x['dofs'], x['iterations']) for x in s['adapt_steps']]} against "
+          f"{[(x['dofs'], x['iterations']) for x in half_default['adapt_steps']]}")
     assert s["error_estimate"] <= 0.05
-    for key in ("contact_force", "fem_pmax"):
-        assert abs(s[key] / half_default[key] - 1) <= 1e-6, key
-    assert cold > warm
+    if s["dofs"] == half_default["dofs"]:   # the same meshes (measured so under every kernel)
+        figure("dP", dP), figure("dpmax", dpmax)
+        rtol = 1e-6
+    else:                                   # a marking flipped by round-off: each answer on its own mesh
+        rtol = max(s["error_estimate"], half_default["error_estimate"])
+    assert dP <= rtol and dpmax <= rtol
+    assert cold >= 1.5 * warm

@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import HALF_MORTAR_FINE, run_contact
+from conftest import HALF_MORTAR_FINE, figure, run_contact
 from fe_reference import internal_forces
 
 NEWTON_LU = ["-tao_type", "nls", "-tao_nls_ksp_type", "preonly", "-tao_nls_pc_type", "lu"]
@@ -122,7 +122,7 @@ def half_runs(tmp_path_factory):
                                name=f"{f}{hi}").summary["contact_force"] for hi in h] for f in ("mortar", "gpts")}
 
 
-def test_force_richardson(half_runs, half_mortar_runs):
+def test_force_richardson(half_runs, half_mortar_reference):
     """Mortar's contact force P against its Richardson limit from h = 0.05,
     0.025, 0.0125. The order known here is that of the scene, not of the
     contact: where the disc's clamp ends the boundary condition changes from
@@ -132,29 +132,32 @@ def test_force_richardson(half_runs, half_mortar_runs):
     wobble. The contact's own error is not what limits P: gpts and mortar,
     which share the bodies' discretisation, differ by 2e-5 at h = 0.0125, a
     twentieth of mortar's distance to its limit (test below). So P is not
-    faster than first order here. Measured P = 54.865302, 54.829609, 54.810076: order
-    0.87 (over 0.025, 0.0125, 0.00625: 0.80; 0.0354, 0.0177, 0.00884: 0.81;
-    0.0707, 0.0354, 0.0177: 1.23; a least-squares fit of P = P_inf + C h^p
-    through the ten meshes from 0.05 to 0.005: 0.74, scatter 6e-5 rms), limit
-    54.7865, the finest run 4.3e-4 above it. The limit and order predict P at
-    h = 0.007 (a run 1.8 times finer, not used: the session's, conftest.py) to
-    1.9e-5 (at h = 0.005, 2.3e-5). (test_mortar's 0.06, 0.03, 0.015 do not serve: P(0.03) lies 1.7e-4
-    above that fit.) An O(h^1/2) error in the contact force (a weight lost at
+    faster than first order here. Measured P = 54.865302, 54.829609,
+    54.810076: order `order` = 0.87 (over 0.025, 0.0125, 0.00625: 0.80;
+    0.0354, 0.0177, 0.00884: 0.81; 0.0707, 0.0354, 0.0177: 1.23; a
+    least-squares fit of P = P_inf + C h^p through the ten meshes from 0.05
+    to 0.005: 0.74, scatter 6e-5 rms), limit 54.7865, the finest run
+    `above_limit` = 4.3e-4 above it. The limit and order predict P at
+    h = 0.007 (a mesh 1.8 times finer, not used for the fit: the committed
+    reference conftest.HALF_MORTAR_REF, whose freshness make stress checks)
+    to `predicted` = 1.9e-5 (at h = 0.005, 2.3e-5). (test_mortar's 0.06,
+    0.03, 0.015 do not serve: P(0.03) lies 1.7e-4 above that fit.) An O(h^1/2) error in the contact force (a weight lost at
     the zone's ends) or a force that stops converging (a penalty scaled with h)
     breaks the order and the prediction; a larger error constant the bound."""
     h, P = half_runs
     P = P["mortar"]
     p = math.log((P[0] - P[1]) / (P[1] - P[2])) / math.log(h[0] / h[1])
     limit = P[2] + (P[2] - P[1]) / ((h[1] / h[2]) ** p - 1)
-    fine = half_mortar_runs[HALF_MORTAR_FINE]
-    assert fine.returncode == 0, fine.stderr[-2000:]
+    fine = half_mortar_reference.summary["contact_force"]
     predicted = limit + (P[2] - limit) * (HALF_MORTAR_FINE / h[2]) ** p
     print(f"P {P}, observed order {p:.3f}, Richardson limit {limit:.6f}, finest {(P[2] - limit) / limit:.2e} from it; "
-          f"at h = {HALF_MORTAR_FINE} {fine.summary['contact_force']!r}, predicted {predicted!r}")
+          f"at h = {HALF_MORTAR_FINE} {fine!r}, predicted {predicted!r}")
+    figure("order", p)
+    above, off = figure("above_limit", (P[2] - limit) / limit), figure("predicted", (fine - predicted) / limit)
     assert P[0] > P[1] > P[2]
-    assert 0.6 <= p <= 1.4                                                     # measured 0.870
-    assert abs(P[2] - limit) <= 1.2e-3 * limit                                 # measured 4.3e-4
-    assert abs(fine.summary["contact_force"] - predicted) <= 1.2e-4 * limit    # measured 1.9e-5; twice the meshes' scatter
+    assert 0.6 <= p <= 1.4
+    assert abs(above) <= 1.2e-3
+    assert abs(off) <= 1.2e-4     # twice the meshes' scatter
 
 
 def test_gpts_mortar_agree(half_runs):
