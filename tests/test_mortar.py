@@ -131,16 +131,21 @@ def test_hertz_small(n, tmp_path):
         assert abs(s["fem_pmax"] / s["hertz_pmax"] - 1) <= 0.006
 
 
+RANKS_RTOL = 1.5e-11
+
+
 @pytest.mark.roundoff
 def test_ranks(tmp_path):
     """1, 2, 3 and 4 ranks: every number of the JSON summary (but timings, the
     run id, the rank count, the stopping residual and the solver's path)
-    agrees to 1e-8 (a near-zero force component to 1e-8 of the pair's
-    force), solved to -tao_gttol 1e-13. Measured over the five OpenBLAS
-    kernels: the largest relative difference `worst_np2` = LO to HI,
-    `worst_np3` = LO to HI, `worst_np4` = LO to HI, a y reaction (4.5e-7 of P,
-    a sum that cancels) relative to itself. Catches a figure that is one
-    rank's share or sums a shared node twice."""
+    agrees to 1.5e-11, a force or a reaction component to 1.5e-11 of the
+    pair's force (a y reaction is a sum that cancels, 4.5e-7 of P), all
+    solved to -tao_gttol 1e-13. Measured over the five OpenBLAS kernels, the
+    largest relative difference (a profile's L2 error against Hertz, a
+    difference of two profiles) `worst_np2` = 8.0e-13 to 4.2e-12,
+    `worst_np3` = 5.4e-13 to 3.4e-12, `worst_np4` = 4.4e-13 to 2.6e-12
+    (the bound was 1e-8). Catches a figure that is one rank's share or sums
+    a shared node twice."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-13"]
     runs = [run_contact(base, tmp_path, ranks=n, name=f"np{n}") for n in (1, 2, 3, 4)]
     ref = flatten(runs[0].summary)
@@ -154,9 +159,9 @@ def test_ranks(tmp_path):
                 continue
             b = got[k]
             if isinstance(a, (int, float)) and not isinstance(a, bool):
-                floor = 1e-8 * scale if is_force_key(k) else 0.0
-                worst = max(worst, (abs(a - b) / (max(abs(a), abs(b)) + floor / 1e-8 or 1.0), k))
-                assert abs(a - b) <= 1e-8 * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
+                floor = RANKS_RTOL * scale if is_force_key(k) else 0.0
+                worst = max(worst, (abs(a - b) / (max(abs(a), abs(b)) + floor / RANKS_RTOL or 1.0), k))
+                assert abs(a - b) <= RANKS_RTOL * max(abs(a), abs(b)) + floor, f"{k}: {a} at 1 rank, {b} at {n}"
             else:
                 assert a == b, f"{k}: {a} at 1 rank, {b} at {n}"
         figure(f"worst_np{n}", worst[0])
@@ -170,16 +175,17 @@ def test_schur_step(tmp_path):
     answer: the mortar Hessian stays in the surface block (an entry outside
     it, dropped by the Schur step, gives another Newton path, which stops
     elsewhere within the stopping test). Both solved to -tao_gttol 1e-12.
-    Measured over the five OpenBLAS kernels: P `dP` = LO to HI apart, bound
-    BOUND; the energy `dE` = LO to HI, bound 100 EPS = 2.2e-14."""
+    Measured over the five OpenBLAS kernels: P `dP` = 3.7e-15 to 3.0e-13
+    apart (Prescott's the largest), bound 1e-12 (was 5e-13); the energy
+    `dE` = 2.2e-16 to 6.7e-16, 3 EPS, bound 10 EPS (was 100 EPS)."""
     base = ["-options_file", "meshes/hertz/hertz.opts"] + MORTAR + ["-tao_gttol", "1e-12", "-output", "none"]
     a = run_contact(base, tmp_path, name="schur").summary
     b = run_contact(base + ["-newton_schur", "0"], tmp_path, name="full").summary
     dP = figure("dP", abs(a["contact_force"] / b["contact_force"] - 1))
     dE = figure("dE", abs(a["energy"] / b["energy"] - 1))
     print(a["iterations"], b["iterations"], a["contact_force"], b["contact_force"], f"P {dP:.2e}, energy {dE:.2e}")
-    assert dP <= 5e-13
-    assert dE <= 100 * EPS
+    assert dP <= 1e-12
+    assert dE <= 10 * EPS
 
 
 # The kernel the blas test compares the environment's with: Prescott, the one
@@ -201,8 +207,10 @@ def test_blas_kernels(tmp_path):
     would). Before the search lost its reach limit and the master's ends
     their cut-off, Nehalem's, Sandybridge's and Haswell's failed at
     h = 0.005. Both solved to -tao_gttol 1e-12, where every path ends at
-    round-off: measured P `dP` = LO to HI apart, bound BOUND; the energy
-    `dE` = LO to HI, bound BOUND."""
+    round-off: measured under the five kernels and unset, P `dP` = 1.3e-14
+    to 1.2e-13 apart, bound 4e-13; the energy `dE` = 1.6e-15 to 1.6e-14,
+    bound 6e-14. (It was run at h = 0.007 against the session's run with
+    the machine's kernel, 14 s: make test-kernels now runs it under each.)"""
     env = os.environ.get("OPENBLAS_CORETYPE", "")
     other = OTHER_KERNEL.get(env.lower(), "Prescott")
     args = half_mortar_args(0.03) + ["-output", "none"]
@@ -213,8 +221,8 @@ def test_blas_kernels(tmp_path):
     dP = figure("dP", abs(b["contact_force"] / a["contact_force"] - 1))
     dE = figure("dE", abs(b["energy"] / a["energy"] - 1))
     print(f"{env or 'auto'} against {other}: P {dP:.2e}, energy {dE:.2e}")
-    assert dP <= 2e-13
-    assert dE <= 4e-13
+    assert dP <= 4e-13
+    assert dE <= 6e-14
 
 
 @pytest.mark.stress
@@ -256,10 +264,13 @@ def test_energy_continuous_at_mirror_line(tao_type, tmp_path):
     max |u| (-taylor_scale 1e-11) measures that: for a continuous energy the
     remainder is round-off, the eps^2 term far below it (before, the jump
     showed at 2 of the 8 steps with nls, 1 with lmvm, 6 at the iterate where
-    the line search failed): the largest remainder at most 1e-13 of |E|,
-    measured `rem_nls` = LO to HI and `rem_lmvm` = LO to HI of |E|. The solve
-    converges (no cutback measured: `cutbacks_lmvm` = LO to HI, in
-    `iterations_lmvm` = LO to HI L-BFGS iterations; not asserted, the path)."""
+    the line search failed): the largest remainder at most 30 EPS of |E|
+    (|E| = 4.9e-3), measured `rem_nls` = 8.8e-16 to 1.6e-15 and
+    `rem_lmvm` = 7.0e-16 to 1.9e-15 of |E| over the five OpenBLAS kernels
+    (the bound was 1e-13). The solve converges, without a cutback
+    (`cutbacks_nls` = 0 to 0, `cutbacks_lmvm` = 0 to 0) in
+    `iterations_nls` = 4 to 4 Newton and `iterations_lmvm` = 12 to 12
+    L-BFGS iterations: the path, printed, not asserted."""
     s = run_contact(HALF + ["-mesh_size", "0.25", "-contact_penalty", "1e10", "-block_bc_push_values", "-0.01,0",
                             "-tao_type", tao_type, "-taylor_test", "-taylor_scale", "1e-11", "-output", "none"], tmp_path).summary
     rem = s["taylor"]["gradient_remainder"]
@@ -267,4 +278,4 @@ def test_energy_continuous_at_mirror_line(tao_type, tmp_path):
     figure(f"cutbacks_{tao_type}", s["load_cutbacks"])
     figure(f"iterations_{tao_type}", s["iterations"])
     print(tao_type, s["iterations"], s["load_cutbacks"], s["energy"], rem)
-    assert max(rem) <= 1e-13 * abs(s["energy"])
+    assert max(rem) <= 30 * EPS * abs(s["energy"])

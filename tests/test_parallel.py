@@ -8,14 +8,15 @@ Expected values come from the other rank counts and the other Newton steps."""
 import numpy as np
 import pytest
 
-from conftest import run_contact, is_force_key
+from conftest import figure, is_force_key, run_contact
 from test_contact import RANK_DEPENDENT, flatten
 
 EPS = np.finfo(float).eps
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
+RTOL = 1e-11
 
 
-def compare(ref, got, label, rtol=1e-11):
+def compare(ref, got, label, name, rtol=RTOL):
     """Every number of two JSON summaries (but the rank-dependent ones) to
     rtol, a force or a reaction to rtol of the pair's force (a y reaction is a
     sum that cancels to 4.5e-7 of P: relative to itself it differed by up to
@@ -40,10 +41,12 @@ def compare(ref, got, label, rtol=1e-11):
             compared += 1
         else:
             assert x == y, f"{label}: {k}: {x} against {y}"
+    figure(name, worst[0])
     print(f"{label}: largest relative difference {worst[0]:.2e} ({worst[1]})")
     return compared
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", ["gpts", "mortar"])
 def test_substructure_ranks(formulation, tmp_path):
     """h = 0.1: 1, 2, 3 and 4 ranks on the substructured step, the one-rank
@@ -57,13 +60,14 @@ def test_substructure_ranks(formulation, tmp_path):
         assert "contact Schur by substructuring" in r.stdout, f"{n} ranks did not take the substructured step"
     ref = runs[1].summary
     for n in (2, 3, 4):
-        assert compare(ref, runs[n].summary, f"{n} ranks") > 40
+        assert compare(ref, runs[n].summary, f"{n} ranks", f"{formulation}_np{n}") > 40
     mumps = run_contact(base + ["-newton_schur_type", "mumps"], tmp_path, name="mumps").summary
     full = run_contact(base + ["-newton_schur", "0"], tmp_path, ranks=2, name="full").summary
-    compare(ref, mumps, "MUMPS Schur step")
-    compare(ref, full, "full factorisation")
+    compare(ref, mumps, "MUMPS Schur step", f"{formulation}_mumps")
+    compare(ref, full, "full factorisation", f"{formulation}_full")
 
 
+@pytest.mark.roundoff
 def test_substructure_exact_hessian(tmp_path):
     """The exact contact Hessian from rest (indefinite while the active set
     settles; penalty continuation keeps the iterations few): the surface
@@ -77,12 +81,15 @@ def test_substructure_exact_hessian(tmp_path):
     one = run_contact(base, tmp_path, name="np1").summary
     two = run_contact(base, tmp_path, ranks=2, name="np2").summary
     mumps = run_contact(base + ["-newton_schur_type", "mumps"], tmp_path, name="mumps").summary
-    for s, label in ((two, "2 ranks"), (mumps, "MUMPS Schur step")):
-        print(f"{label}: P {s['contact_force'] / one['contact_force'] - 1:.2e}, energy {s['energy'] / one['energy'] - 1:.2e}")
-        assert abs(s["contact_force"] / one["contact_force"] - 1) <= 6e-13, label
-        assert abs(s["energy"] / one["energy"] - 1) <= 100 * EPS, label
+    for s, label, name in ((two, "2 ranks", "np2"), (mumps, "MUMPS Schur step", "mumps")):
+        dP = figure(f"dP_{name}", abs(s["contact_force"] / one["contact_force"] - 1))
+        dE = figure(f"dE_{name}", abs(s["energy"] / one["energy"] - 1))
+        print(f"{label}: P {dP:.2e}, energy {dE:.2e}")
+        assert dP <= 6e-13, label
+        assert dE <= 100 * EPS, label
 
 
+@pytest.mark.roundoff
 def test_substructure_tiny_subdomains(tmp_path):
     """h = 0.5 (320 dofs) on 24 ranks: subdomains of a few dofs, empty ones and
     ones without an interior dof, some whose MUMPS workspace estimate falls
@@ -96,7 +103,7 @@ def test_substructure_tiny_subdomains(tmp_path):
     assert len(sizes) == 24
     assert any(s.strip().startswith("0 dofs") for s in sizes)
     assert any(", 0 interior" in s and not s.strip().startswith("0 dofs") for s in sizes)
-    compare(one, many.summary, "24 ranks")
+    compare(one, many.summary, "24 ranks", "worst_np24")
 
 
 def test_mumps_schur_one_rank_only(tmp_path):
@@ -107,6 +114,7 @@ def test_mumps_schur_one_rank_only(tmp_path):
     assert "contact: error: option -newton_schur_type mumps: one rank only" in r.stderr
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation,ranks", [("gpts", 1), ("gpts", 2), ("mortar", 2)])
 def test_iterative_step(formulation, ranks, tmp_path):
     """-newton_iterative (CG preconditioned by GAMG with the bodies' rigid
@@ -125,6 +133,8 @@ def test_iterative_step(formulation, ranks, tmp_path):
     direct = run_contact(base, tmp_path, name="direct").summary
     assert " CG iterations" in it.stdout
     s = it.summary
-    print(f"P {s['contact_force'] / direct['contact_force'] - 1:.2e}, energy {s['energy'] / direct['energy'] - 1:.2e}")
-    assert abs(s["contact_force"] / direct["contact_force"] - 1) <= 6e-13
-    assert abs(s["energy"] / direct["energy"] - 1) <= 50 * EPS
+    dP = figure("dP", abs(s["contact_force"] / direct["contact_force"] - 1))
+    dE = figure("dE", abs(s["energy"] / direct["energy"] - 1))
+    print(f"P {dP:.2e}, energy {dE:.2e}")
+    assert dP <= 6e-13
+    assert dE <= 50 * EPS

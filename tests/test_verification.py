@@ -210,6 +210,7 @@ def cross(r, F):
     return r[:, 0] * F[:, 1] - r[:, 1] * F[:, 0]
 
 
+@pytest.mark.roundoff
 def test_moment_balance(tmp_path):
     """Each body of the reference scene, pushed obliquely (D = (-0.15, 0.03),
     so that the block's contact zone is off its centre in reference
@@ -256,51 +257,64 @@ def test_moment_balance(tmp_path):
             dirichlet = on_group(X)
             free = ~dirichlet
             free[contact] = False
-            print(f"{body}: free {np.abs(Ku[free]).max() / P:.2e}, contact {np.abs(Ku[contact] - FC).max() / P:.2e}, "
-                  f"reactions {np.abs(Ku[dirichlet].sum(axis=0) - s['reactions'][group]).max() / P:.2e} of P")
-            assert np.abs(Ku[free]).max() <= 3e-14 * P
-            assert np.abs(Ku[contact] - FC).max() <= 1e-10 * P  # the stopping residual: gttol 1e-12 allows 3.3e-11 of P
-            assert np.abs(Ku[dirichlet].sum(axis=0) - s["reactions"][group]).max() <= 3e-13 * P
+            free_f = figure(f"free_{body}", np.abs(Ku[free]).max() / P)
+            contact_f = figure(f"contact_{body}", np.abs(Ku[contact] - FC).max() / P)
+            reactions_f = figure(f"reactions_{body}", np.abs(Ku[dirichlet].sum(axis=0) - s["reactions"][group]).max() / P)
+            print(f"{body}: free {free_f:.2e}, contact {contact_f:.2e}, reactions {reactions_f:.2e} of P")
+            assert free_f <= 3e-14
+            assert contact_f <= 1e-10  # the stopping residual: gttol 1e-12 allows 3.3e-11 of P
+            assert reactions_f <= 3e-13
             Mc, Mr = cross(XC - c, FC).sum(), cross(X[dirichlet] - c, Ku[dirichlet]).sum()
-            print(f"{body}: moment of the contact forces {Mc!r}, of the reactions {Mr!r}, imbalance {(Mc + Mr) / Mc:.1e}")
-            assert abs(Mc + Mr) <= 1.5e-12 * abs(Mc)
+            moment_f = figure(f"moment_{body}", abs(Mc + Mr) / abs(Mc))
+            print(f"{body}: moment of the contact forces {Mc!r}, of the reactions {Mr!r}, imbalance {moment_f:.1e}")
+            assert moment_f <= 1.5e-12
             pair += cross(cs["node_x"][...] - c, FC).sum()
-    print(f"the pair's moment {pair!r}, {abs(pair) / P:.2e} of P")
-    assert abs(pair) <= 100 * np.finfo(float).eps * P
+    pair_f = figure("pair", abs(pair) / P)
+    print(f"the pair's moment {pair!r}, {pair_f:.2e} of P")
+    assert pair_f <= 100 * np.finfo(float).eps
 
 
 @pytest.fixture(scope="module")
 def taylor_runs(tmp_path_factory):
     """The reference scene with the exact contact Hessian, stopped by
     -tao_gatol 1000 (the gradient at rest is 1806) so that the Taylor test runs
-    at an iterate: mortar's third, gpts' fourth, with the contact active and
-    deep (P = 710 and 1581 against 55 at the solution, penetration 2.8e-3 and
-    3.4e-3 against 5e-5). -tao_max_it would stop there too, but an unconverged
-    run writes no JSON."""
+    at an iterate with the contact active and deep (its figures:
+    test_taylor_away_from_minimiser). -tao_max_it would stop there too, but
+    an unconverged run writes no JSON."""
     tmp = tmp_path_factory.mktemp("taylor")
     return {f: run_contact(HERTZ + ["-contact_formulation", f, "-contact_hessian", "exact", "-tao_gatol", "1000",
                                     "-taylor_test", "-output", "none"], tmp, name=f).summary for f in ("mortar", "gpts")}
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", ["mortar", "gpts"])
 def test_taylor_away_from_minimiser(formulation, taylor_runs):
     """The Taylor test at an iterate far from the minimiser (the existing cases
     run at the solution, where the gradient is ~0 and the contact shallow):
-    the energy's remainder falls at order 2 (measured 2.000 both; a wrong
-    gradient gives 1), and so does the gradient's with the exact Hessian
-    (measured 2.000 both; gpts' Gauss-Newton Hessian gives 1.000, mortar's
-    exact one gave 0.997 before the Gauss points' motion with the crossings
-    was differentiated: see the next test)."""
+    the run stopped at -tao_gatol 1000 away from it, the gradient at least
+    100 (measured `gradient_norm_mortar` = LO to HI and
+    `gradient_norm_gpts` = LO to HI; 6e-9 at the solution) and the contact
+    deep, the penetration at least 1e-3 (measured `penetration_mortar` = LO
+    to HI and `penetration_gpts` = LO to HI; 5e-5 at the solution). There
+    the energy's remainder falls at order 2 (measured
+    `gradient_order_mortar` = LO to HI and `gradient_order_gpts` = LO to HI;
+    a wrong gradient gives 1), and so does the gradient's with the exact
+    Hessian (measured `hessian_order_mortar` = LO to HI and
+    `hessian_order_gpts` = LO to HI; gpts' Gauss-Newton Hessian gives 1.000,
+    mortar's exact one gave 0.997 before the Gauss points' motion with the
+    crossings was differentiated: see the next test)."""
     s = taylor_runs[formulation]
     t = s["taylor"]
+    figure(f"gradient_order_{formulation}", t["gradient_order"]), figure(f"hessian_order_{formulation}", t["hessian_order"])
+    figure(f"gradient_norm_{formulation}", s["gradient_norm"]), figure(f"penetration_{formulation}", s["max_penetration"])
     print(formulation, {k: s[k] for k in ("iterations", "gradient_norm", "contact_force", "max_penetration")}, t)
-    assert s["tao_reason"] == "CONVERGED_GATOL"
-    assert s["gradient_norm"] >= 100        # measured 645, 862 (6e-9 at the solution)
-    assert s["max_penetration"] >= 1e-3     # measured 2.8e-3, 3.4e-3 (5e-5 at the solution)
+    assert s["gradient_norm"] >= 100
+    assert s["max_penetration"] >= 1e-3
     assert 1.8 <= t["gradient_order"] <= 2.3
     assert 1.8 <= t["hessian_order"] <= 2.2
 
 
+@pytest.mark.roundoff
 def test_taylor_mortar_hessian_exact_away_from_minimiser(taylor_runs):
     """Mortar's exact Hessian at the deep iterate of the fixture: the
     gradient's relative remainder falls like eps, from 2.2177e-4 at the
@@ -319,6 +333,8 @@ def test_taylor_mortar_hessian_exact_away_from_minimiser(taylor_runs):
     linear 5.6e-3, sublinear, whose cut at mid-edge halves the segments,
     order 2 already): a floor that does not fall."""
     t = taylor_runs["mortar"]["taylor"]
+    figure("order_deviation", t["hessian_order"] - 2.0)
+    figure("first", t["hessian_relative_remainder"][0]), figure("last", t["hessian_relative_remainder"][-1])
     print(t["hessian_order"], t["hessian_relative_remainder"])
     assert abs(t["hessian_order"] - 2.0) <= 6e-5
     assert t["hessian_relative_remainder"][-1] <= 5e-6
