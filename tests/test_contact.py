@@ -72,46 +72,48 @@ def test_symmetry(tmp_path):
 def test_hertz_small(tmp_path):
     """hertz-small (a/R = 0.1, graded meshes, size 0.004 at the contact), where
     Hertz holds to 0.4 % in the profile: with the default formulation (mortar)
-    p_max within 0.6 % of Hertz (measured +0.24 %), the half-width from the
-    profile's second moment within 0.7 % (measured -0.28 %; the one from the
-    zone's ends is -3.4 %, an element's width), the profile within 0.6 % in L2
-    (measured 0.25 %)."""
+    p_max within 0.6 % of Hertz (measured `dpmax` = 0.0024), the half-width
+    from the profile's second moment within 0.7 % (measured `da` = -0.0028;
+    the one from the zone's ends is -3.4 %, an element's width), the profile
+    within 0.6 % in L2 (measured `L2` = 0.0025)."""
     s = run_contact(["-options_file", "meshes/hertz-small/hertz-small.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
     print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a", "fem_a_moment", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
     assert s["contact"]["interface"]["formulation"] == "mortar"
     # the scene is where Hertz holds (a/R = 0.1; a scene file or a load that
     # changed would leave it): Hertz's a from the computed P measured 0.1035
     assert 0.08 <= s["hertz_a"] <= 0.12
+    figure("dpmax", s["fem_pmax"] / s["hertz_pmax"] - 1), figure("da", s["fem_a_moment"] / s["hertz_a"] - 1)
     assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.006
     assert rel(s["fem_a_moment"], s["hertz_a"]) <= 0.007
-    assert s["pressure_l2_error"] <= 0.006
+    assert figure("L2", s["pressure_l2_error"]) <= 0.006
 
 
 def test_twodiscs(tmp_path):
     """Two discs of radii 1 and 2, E 1000 and 3000, nu 0.3 and 0.25: E* and R*
     as Hertz defines them (to round-off), and the default formulation against
     Hertz with them (a/R* = 0.08, where Hertz holds): p_max within 1.3 %
-    (measured -0.52 %), the second-moment half-width within 1.8 % (+0.73 %),
-    the profile within 2 % in L2 (0.77 %)."""
+    (measured `dpmax` = -0.0052), the second-moment half-width within 1.8 %
+    (`da` = 0.0073), the profile within 2 % in L2 (`L2` = 0.0077). The
+    report's E* and R* from the bodies' moduli and radii to 100 EPS (a wrong
+    combination rule; measured 0 and 0)."""
     s = run_contact(["-options_file", "meshes/twodiscs/twodiscs.opts"] + NEWTON + ["-output", "none"], tmp_path).summary
     c = s["contact"]["interface"]
     estar = 1.0 / ((1 - 0.3 ** 2) / 1000 + (1 - 0.25 ** 2) / 3000)
     print(f"E* {rel(c['E_star'], estar):.2e}, R* {rel(c['R_star'], 2.0 / 3.0):.2e} from Hertz's")
-    # the report's E* and R* from the bodies' moduli and radii (a wrong
-    # combination rule): measured 0 and 0, bound 100 EPS (was 1e-12)
     assert rel(c["E_star"], estar) <= 100 * EPS and rel(c["R_star"], 2.0 / 3.0) <= 100 * EPS
     print({k: s[k] for k in ("contact_force", "hertz_a", "fem_a_moment", "hertz_pmax", "fem_pmax", "pressure_l2_error")})
+    figure("dpmax", s["fem_pmax"] / s["hertz_pmax"] - 1), figure("da", s["fem_a_moment"] / s["hertz_a"] - 1)
     assert rel(s["fem_pmax"], s["hertz_pmax"]) <= 0.013
     assert rel(s["fem_a_moment"], s["hertz_a"]) <= 0.018
-    assert s["pressure_l2_error"] <= 0.02
+    assert figure("L2", s["pressure_l2_error"]) <= 0.02
 
 
 def test_reference_against_finer(tmp_path):
     """The reference scene at h = 0.06 against a finer mesh of the same model
     (its mirrored half at h = 0.015, 4 times finer; P there is 3.2e-4 from the
     Richardson limit of h = 0.03, 0.015, 0.0075): P within 0.3 % (measured
-    0.11 %), the disc's pressure profile within 4.5 % in L2 (measured 1.93 %,
-    with either Newton step).
+    `dP` = 0.0011), the disc's pressure profile within 4.5 % in L2 (measured
+    `L2` = 0.0193, with either Newton step).
     Hertz is not the reference here (a/R = 0.36 and a block of width 1: Hertz
     is itself 4.9 % from the finest profile). The fine run takes the program's
     default Newton step (the contact Schur complement, checked against a full
@@ -121,8 +123,9 @@ def test_reference_against_finer(tmp_path):
     import profile_metrics as pm
     coarse = run_contact(HERTZ + ["-mesh_size", "0.06"], tmp_path, name="coarse")
     fine = run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", "0.015"], tmp_path, name="fine")
-    d = pm.l2_distance(pm.profiles(coarse.output_path)[0]["indenter_contact"], pm.profiles(fine.output_path)[0]["indenter_contact"])
-    dP = rel(coarse.summary["contact_force"], fine.summary["contact_force"])
+    d = figure("L2", pm.l2_distance(pm.profiles(coarse.output_path)[0]["indenter_contact"],
+                                    pm.profiles(fine.output_path)[0]["indenter_contact"]))
+    dP = figure("dP", rel(coarse.summary["contact_force"], fine.summary["contact_force"]))
     print(f"h = 0.06 against h = 0.015: P {dP:.2e}, profile {100 * d:.2f} %")
     assert dP <= 3e-3
     assert d <= 0.045
@@ -230,17 +233,17 @@ def test_half_model(tmp_path):
     peak pressure and profile error, from half the dofs. The disc's half mesh
     is Gmsh's own, not a cut of the full one, so they agree to the
     discretisation error (P changes by 2e-3 from h = 0.1 to 0.06). Measured
-    at h = 0.1 with mortar: P 1.5e-4 apart (bound 4e-4), p_max 4.8e-4 (bound
-    1.2e-3), the profile errors against Hertz 4.6e-5 apart (bound 1.2e-4), the
-    half's dofs 0.488 of the full's (bound 0.55: half the cells, and the cut's
-    nodes once)."""
+    at h = 0.1 with mortar: P `dP` = 1.5e-4 apart (bound 4e-4), p_max
+    `dpmax` = 4.8e-4 (bound 1.2e-3), the profile errors against Hertz
+    `dL2` = 4.6e-5 apart (bound 1.2e-4), the half's dofs `dofs` = 0.488 of
+    the full's (bound 0.55: half the cells, and the cut's nodes once)."""
     half = run_contact(["-options_file", "meshes/hertz-half/hertz-half.opts", "-mesh_size", "0.1"], tmp_path, name="half").summary
     full = run_contact(["-options_file", "meshes/hertz/hertz.opts", "-mesh_size", "0.1"], tmp_path, name="full").summary
     print("P", half["contact_force"], full["contact_force"], "dofs", half["dofs"], full["dofs"])
-    assert abs(half["contact_force"] / full["contact_force"] - 1) < 4e-4
-    assert abs(half["fem_pmax"] / full["fem_pmax"] - 1) < 1.2e-3
-    assert abs(half["pressure_l2_error"] - full["pressure_l2_error"]) < 1.2e-4
-    assert half["dofs"] < 0.55 * full["dofs"]
+    assert abs(figure("dP", half["contact_force"] / full["contact_force"] - 1)) < 4e-4
+    assert abs(figure("dpmax", half["fem_pmax"] / full["fem_pmax"] - 1)) < 1.2e-3
+    assert abs(figure("dL2", half["pressure_l2_error"] - full["pressure_l2_error"])) < 1.2e-4
+    assert figure("dofs", half["dofs"] / full["dofs"]) < 0.55
 
 
 def test_half_model_profile(tmp_path):
@@ -251,11 +254,14 @@ def test_half_model_profile(tmp_path):
     the same nodal samples: the same count (the node on the mirror line
     once, with both halves' weight; before, twice with half each: 46 and 42
     rows against 45 and 41), one sample on the line, s and the weights to
-    1e-10 (measured 1e-14 and 0 on the disc; 3.5e-12 and 9.7e-12 on the
-    block, whose structured grid Gmsh places to round-off differently in the
-    half and the whole) and the pressure to 1e-6 of its peak (measured
-    1.5e-12 on the disc, 1.9e-8 on the block: its 3.5e-12 times k_p = 2e6 is
-    7e-6 of pressure, 7e-8 of the peak), solved to -tao_gttol 1e-12."""
+    1e-10 (measured `ds_indenter_contact` = 1e-14 and
+    `dw_indenter_contact` = 0 on the disc; `ds_block_contact` = 3.5e-12 and
+    `dw_block_contact` = 9.7e-12 on the block, whose structured grid Gmsh
+    places to round-off differently in the half and the whole) and the
+    pressure to 1e-6 of its peak (measured `dp_indenter_contact` = 1.5e-12
+    on the disc, `dp_block_contact` = 1.9e-8 on the block: its 3.5e-12 times
+    k_p = 2e6 is 7e-6 of pressure, 7e-8 of the peak), solved to -tao_gttol
+    1e-12."""
     msh = tmp_path / "disc.msh"
     build(msh, 0.1)
     tight = ["-mesh_size", 0.1, "-tao_gttol", "1e-12"]
@@ -266,10 +272,10 @@ def test_half_model_profile(tmp_path):
             h = fh["contact/interface"][k]
             sf, sh = g["node_s"][...], h["node_s"][...]
             assert sf.shape == sh.shape, (k, sf.shape, sh.shape)
-            ds = np.abs((sf - g.attrs["centre"]) - (sh - h.attrs["centre"])).max()
-            dw = np.abs(g["node_weight"][...] - h["node_weight"][...]).max() / g["node_weight"][...].max()
+            ds = figure(f"ds_{k}", np.abs((sf - g.attrs["centre"]) - (sh - h.attrs["centre"])).max())
+            dw = figure(f"dw_{k}", np.abs(g["node_weight"][...] - h["node_weight"][...]).max() / g["node_weight"][...].max())
             pf, ph = g["node_pressure"][...], h["node_pressure"][...]
-            dp = np.abs(pf - ph).max() / pf.max()
+            dp = figure(f"dp_{k}", np.abs(pf - ph).max() / pf.max())
             at_line = int(np.sum(np.abs(h["node_X"][...].reshape(-1, 2)[:, 1]) < 1e-12))
             print(f"{k}: {sh.size} samples, s {ds:.1e}, weight {dw:.1e}, pressure {dp:.1e}; {at_line} at the line")
             assert ds <= 1e-10 and dw <= 1e-10 and dp <= 1e-6 and at_line == 1

@@ -93,8 +93,12 @@ def test_deep_overlap_named(tmp_path):
     may meet the saddles of a non-convex discrete energy): the report says so,
     with the overlap against the contact edges' length and the option to
     raise. Here (half scene, h = 0.05, k_p = 1e3, push 0.3) the overlap is
-    0.10, about two edges; the default penalty (2e6) overlaps by 5e-5 and
-    gets no warning."""
+    `overlap` = 0.10, `ratio` = 2.0 edges; the default penalty (2e6) overlaps
+    by 5e-5 into each other, `stiff_edges` = 1.0e-3 edges of 0.05 (bound
+    3e-3), and gets no warning. The JSON's overlap_edges (unrounded; the
+    program's edges are arcs, the test's two chords through the mid-edge
+    node, shorter on the disc by (theta/2)^2/6 = 2.6e-5 at theta = h/R = 0.05)
+    is the test's to 7e-5 (measured `json_off` = 2.6e-5)."""
     r = run_contact(HALF + ["-mesh_size", 0.05, "-contact_penalty", "1e3", "-block_bc_push_values", "-0.3,0"],
                     tmp_path, name="soft")
     warn = [ln for ln in r.stdout.splitlines() if "bodies overlap" in ln]
@@ -102,19 +106,19 @@ def test_deep_overlap_named(tmp_path):
         "-contact_interface_penalty" in warn[0], warn
     ratio = float(warn[0].split(", ")[1].split(" times")[0])
     h_edge = min(_edge_length(r.output_path, "interface", s) for s in ("indenter_contact", "block_contact"))
-    expected = r.summary["contact"]["interface"]["max_penetration"] / h_edge
+    expected = figure("ratio", r.summary["contact"]["interface"]["max_penetration"] / h_edge)
+    figure("overlap", r.summary["contact"]["interface"]["max_penetration"])
     print(f"overlap {r.summary['contact']['interface']['max_penetration']:.4g}, edges {h_edge:.4g}: "
           f"ratio {expected:.4g}, printed {ratio}")
     assert expected > 1.5
     assert abs(ratio - expected) <= 0.005 * expected   # printed to 3 digits
     for figures in (r.summary, r.summary["contact"]["interface"]):
-        # the JSON's, unrounded; the program's edges are arcs, the test's two chords through the mid-edge
-        # node, shorter on the disc by (theta/2)^2/6 = 2.6e-5 (theta = h/R = 0.05): measured 2.6e-5
+        figure("json_off", figures["overlap_edges"] / expected - 1)
         print(f"JSON overlap_edges {figures['overlap_edges']!r}, {figures['overlap_edges'] / expected - 1:.1e} off")
         assert abs(figures["overlap_edges"] - expected) <= 7e-5 * expected
     stiff = run_contact(HALF + ["-mesh_size", 0.05], tmp_path, name="stiff")
     assert "bodies overlap" not in stiff.stdout
-    assert stiff.summary["overlap_edges"] <= 3e-3   # measured 1.0e-3: 5e-5 into each other, edges of 0.05
+    assert figure("stiff_edges", stiff.summary["overlap_edges"]) <= 3e-3
 
 
 def test_deep_overlap_names_the_stop(tmp_path):

@@ -68,11 +68,14 @@ def test_disc_convergence(cells, tmp_path):
     node) against the exact stress there falls at O(h^2) too (RMS over the
     nodes). A wrong gradient of the basis or of the exact solution stalls
     them; a nodal stress written in the wrong order or component does not
-    converge. Measured orders over the two halvings, each held to at least
-    its bound (DISC): L2 2.957, 3.011 (Tri6; bound 2.65) and 2.820, 3.022
-    (Quad9; 2.5); energy norm 1.939, 1.995 (1.7) and 1.809, 2.008 (1.6);
-    stress 1.932, 1.991 (1.7) and 1.789, 2.009 (1.6); the HDF5's nodal
-    stress 1.886, 1.982 (1.65) and 1.790, 1.985 (1.6).
+    converge. The smaller of the two halvings' orders, each held to at
+    least its bound (DISC): L2 `l2_error_tri6` = 2.957 (bound 2.65) and
+    `l2_error_quad9` = 2.820 (2.5); energy norm `energy_error_tri6` = 1.939
+    (1.7) and `energy_error_quad9` = 1.809 (1.6); stress
+    `stress_l2_error_tri6` = 1.932 (1.7) and `stress_l2_error_quad9` = 1.789
+    (1.6); the HDF5's nodal stress `nodal_tri6` = 1.886 (1.65) and
+    `nodal_quad9` = 1.790 (1.6). (The second halving: 3.011, 3.022; 1.995,
+    2.008; 1.991, 2.009; 1.982, 1.985.)
 
     The errors above cannot see the geometry: the manufactured solution is
     imposed on the whole boundary, so a mesh with straight edges has the same
@@ -80,9 +83,10 @@ def test_disc_convergence(cells, tmp_path):
     Mesh.SecondOrderLinear = 1: 2.94, 3.00 in L2, 1.93, 1.99 in energy). What
     sees it is the exact solution's norms integrated over the cells, against
     their closed forms over the disc: curved P2/Q2 edges leave an O(h^4) area
-    error (measured orders 3.94 to 4.08, both norms, Tri6 and Quad9; bound
-    3.4), straight ones O(h^2) (measured 1.99 to 2.00), as would a quadrature
-    that ignored the curved cells' Jacobian."""
+    error (the smaller order: `l2_norm_tri6` = 3.99, `energy_norm_tri6` = 4.00,
+    `l2_norm_quad9` = 3.94, `energy_norm_quad9` = 4.00; bound 3.4), straight
+    ones O(h^2) (measured 1.99 to 2.00), as would a quadrature that ignored
+    the curved cells' Jacobian."""
     c = DISC[cells]
     h = [0.2, 0.1, 0.05]
     A, k, E, nu = 0.01, 2.0, 1000.0, 0.3
@@ -102,12 +106,13 @@ def test_disc_convergence(cells, tmp_path):
         d = s - trig_stress(x, A, k, E, nu)
         err["nodal"].append(np.sqrt(np.mean(np.sum(d[:, :3] ** 2, axis=1) + 2 * d[:, 3] ** 2)))
     orders = {key: order(v, h) for key, v in err.items()}
+    for key, v in orders.items():
+        figure(f"{key}_{cells}", min(v))
     print(cells, {key: (v, orders[key]) for key, v in err.items()})
     assert min(orders["l2_error"]) >= c["l2"]
     assert min(orders["energy_error"]) >= c["energy"]
     assert min(orders["stress_l2_error"]) >= c["stress"]
     assert min(orders["nodal"]) >= c["nodal"]
-    # measured: Tri6 3.99, 4.00 (L2) and 4.00, 4.00 (energy); Quad9 3.94, 4.00 and 4.08, 4.00; straight edges 2.00
     assert min(orders["energy_norm"]) >= 3.4
     assert min(orders["l2_norm"]) >= 3.4
 
@@ -132,8 +137,8 @@ def test_force_richardson(half_runs, half_mortar_reference):
     wobble. The contact's own error is not what limits P: gpts and mortar,
     which share the bodies' discretisation, differ by 2e-5 at h = 0.0125, a
     twentieth of mortar's distance to its limit (test below). So P is not
-    faster than first order here. Measured P = 54.865302, 54.829609,
-    54.810076: order `order` = 0.87 (over 0.025, 0.0125, 0.00625: 0.80;
+    faster than first order here. Measured P `P_h0.05` = 54.865302,
+    `P_h0.025` = 54.829609, `P_h0.0125` = 54.810076: order `order` = 0.87 (over 0.025, 0.0125, 0.00625: 0.80;
     0.0354, 0.0177, 0.00884: 0.81; 0.0707, 0.0354, 0.0177: 1.23; a
     least-squares fit of P = P_inf + C h^p through the ten meshes from 0.05
     to 0.005: 0.74, scatter 6e-5 rms), limit 54.7865, the finest run
@@ -146,6 +151,8 @@ def test_force_richardson(half_runs, half_mortar_reference):
     breaks the order and the prediction; a larger error constant the bound."""
     h, P = half_runs
     P = P["mortar"]
+    for hi, Pi in zip(h, P):
+        figure(f"P_h{hi}", Pi)
     p = math.log((P[0] - P[1]) / (P[1] - P[2])) / math.log(h[0] / h[1])
     limit = P[2] + (P[2] - P[1]) / ((h[1] / h[2]) ** p - 1)
     fine = half_mortar_reference.summary["contact_force"]
@@ -164,12 +171,12 @@ def test_gpts_mortar_agree(half_runs):
     """gpts and mortar share the bodies' discretisation and differ in the
     contact's: their forces must approach each other as h falls, and agree at
     the finest h to much less than either's distance to the limit (4.3e-4).
-    Measured |P_gpts - P_mortar| / P = 7.5e-5, 4.4e-5, 2.0e-5 (the sign
-    alternates). A formulation whose force converges to another limit (a
+    Measured |P_gpts - P_mortar| / P `d_h0.05` = 7.5e-5, `d_h0.025` = 4.4e-5,
+    `d_h0.0125` = 2.0e-5 (the sign alternates), bound 6e-5 at the finest. A formulation whose force converges to another limit (a
     pressure integrated with the wrong weights, a one-sided force halved)
     stops shrinking."""
     h, P = half_runs
-    d = [abs(g - m) / m for g, m in zip(P["gpts"], P["mortar"])]
+    d = [figure(f"d_h{hi}", abs(g - m) / m) for hi, g, m in zip(h, P["gpts"], P["mortar"])]
     print(f"gpts {P['gpts']}, mortar {P['mortar']}, relative differences {d}")
     assert d[0] > d[1] > d[2]
     assert d[2] <= 6e-5
@@ -184,8 +191,10 @@ def test_reaction_is_energy_derivative(formulation, bound, tmp_path):
     D = -0.15 +- delta converge to it at O(delta^2), the penalty energy being
     smooth enough (C^1 with a Lipschitz derivative, and no active-set change in
     such small steps). Measured relative differences at delta = 1e-3, 1e-4:
-    mortar 1.42e-7, 1.42e-9 (order 2.000), gpts 5.11e-7, 5.03e-9 (2.006); at
-    1e-5 the round-off of the energies (3.7, to 1e-16) is 2e-11. A reaction
+    mortar `err3_mortar` = 1.42e-7, `err4_mortar` = 1.42e-9 (order
+    `order_mortar` = 2.000), gpts `err3_gpts` = 5.11e-7, `err4_gpts` = 5.03e-9
+    (`order_gpts` = 2.006); at 1e-5 the round-off of the energies (3.7, to
+    1e-16) is 2e-11. A reaction
     summed over the wrong dofs or ranks, or an energy that is not the one
     minimised (a contact term counted once in the energy and twice in the
     gradient), is off by O(1)."""
@@ -200,7 +209,8 @@ def test_reaction_is_energy_derivative(formulation, bound, tmp_path):
     for delta in (1e-3, 1e-4):
         (ep, _), (em, _) = run(delta, f"p{delta}"), run(-delta, f"m{delta}")
         errs.append(abs((ep - em) / (2 * delta) - R) / abs(R))
-    p = math.log10(errs[0] / errs[1])
+    p = figure(f"order_{formulation}", math.log10(errs[0] / errs[1]))
+    figure(f"err3_{formulation}", errs[0]), figure(f"err4_{formulation}", errs[1])
     print(f"{formulation}: reaction {R!r}, relative differences {errs}, order {p:.3f}")
     assert errs[1] <= bound
     assert 1.8 <= p <= 2.2
