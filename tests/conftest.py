@@ -150,8 +150,10 @@ class HalfMortarReference:
         self.profile = tuple(np.array(c[k]) for k in ("s", "pressure", "weight", "gap"))
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture
 def half_mortar_reference():
+    """The committed reference (function-scoped: reading it is cheap, and a
+    session scope would put its readers in one xdist group)."""
     return HalfMortarReference()
 
 
