@@ -196,8 +196,7 @@ OTHER_KERNEL = {"prescott": "Nehalem"}
 
 @pytest.mark.roundoff
 def test_blas_kernels(tmp_path):
-    """The half scene at h = 0.03 (the first Newton step from rest pushes the
-    disc about 0.1 into the block) converges to the same answer with the
+    """The half scene at h = 0.03 converges to the same answer with the
     environment's OpenBLAS kernel (OPENBLAS_CORETYPE, or the machine's own
     where unset; make test-kernels runs this test under each of five) and
     with Prescott's, the kernel Debian's OpenBLAS falls back to on a CPU it
