@@ -190,8 +190,8 @@ def test_ranks(tmp_path):
     every number of the JSON summary (but timings, the run id, the rank
     count, the stopping residual, the solver's path and the Taylor test's
     random direction) agrees to 2e-11, a force or a reaction to 2e-11 of P
-    (a y reaction is a sum that cancels to 4.5e-7 of P; relative to itself
-    it differed by up to 1.1e-9 over the OpenBLAS kernels), so that a figure
+    (a y reaction is a sum that cancels to 4.5e-7 of P: relative to itself
+    it differs by round-off of P, far above the bound), so that a figure
     that is one rank's share fails here (the largest relative difference, a
     profile's L2 error against Hertz's, measured over the five OpenBLAS
     kernels `worst_np2` = 1.6e-12 to 4.8e-12 and `worst_np3` = 5.2e-13 to

@@ -1,8 +1,9 @@
 """The mortar formulation (-contact_formulation mortar) on curved contact: its
 pressure converges under refinement, without oscillation, to Hertz where Hertz
-holds, the same at every rank count and through either Newton step. Expected
-values come from a finer mesh of the same model, from Hertz's solution at
-a/R = 0.1, and from other rank counts. (The contact patch test, exact to
+holds, the same at every rank count, through either Newton step and with
+other OpenBLAS kernels. Expected values come from a finer mesh of the same
+model (h = 0.007, its profile committed: tests/data/half-mortar-h0.007.json),
+from Hertz's solution at a/R = 0.1, and from other rank counts and kernels. (The contact patch test, exact to
 round-off, is tests/test_patch_contact.py.)"""
 import math
 import os
@@ -230,10 +231,12 @@ def test_reference_is_fresh(half_mortar_reference, tmp_path):
     tests/data/half_mortar_reference.py) is what the program computes now: a
     fresh run of the same command (solved to -tao_gttol 1e-12, the stop at
     round-off on every kernel) gives the same samples (s to 1e-12), P and
-    the energy to BOUND (measured `dP` = LO to HI, `dE` = LO to HI) and
-    every nodal pressure to BOUND of p_max (measured `dp` = LO to HI). A
-    regression pin: it fails when a change to the discretisation moves the
-    reference, which is then written again by that script."""
+    the energy to 2e-13 (measured against the reference, written with this
+    machine's own kernel (SkylakeX), under the five OpenBLAS kernels and
+    unset: `dP` = 0 to 5.0e-14, `dE` = 0 to 5.8e-14) and every nodal
+    pressure to 6e-12 of p_max (measured `dp` = 0 to 1.6e-12). A regression
+    pin: it fails when a change to the discretisation moves the reference,
+    which is then written again by that script (12 to 35 s)."""
     ref = half_mortar_reference
     r = run_contact(half_mortar_args(HREF), tmp_path, name="fresh", timeout=1800)
     s, p, w, g = indenter(r)
@@ -246,8 +249,8 @@ def test_reference_is_fresh(half_mortar_reference, tmp_path):
     print(f"against the reference ({ref.kernel}): s {ds:.1e}, P {dP:.2e}, energy {dE:.2e}, pressure {dp:.2e} of p_max")
     assert ds <= 1e-12
     assert dP <= 2e-13, "regression pin: P moved from the committed reference"
-    assert dE <= 4e-13, "regression pin: the energy moved from the committed reference"
-    assert dp <= 1e-9, "regression pin: the profile moved from the committed reference"
+    assert dE <= 2e-13, "regression pin: the energy moved from the committed reference"
+    assert dp <= 6e-12, "regression pin: the profile moved from the committed reference"
 
 
 @pytest.mark.roundoff

@@ -19,8 +19,8 @@ RTOL = 2e-11
 def compare(ref, got, label, name, rtol=RTOL):
     """Every number of two JSON summaries (but the rank-dependent ones) to
     rtol, a force or a reaction to rtol of the pair's force (a y reaction is a
-    sum that cancels to 4.5e-7 of P: relative to itself it differed by up to
-    1.6e-9 over the OpenBLAS kernels, relative to P by 7e-16). The largest
+    sum that cancels to 4.5e-7 of P: relative to itself it differs by
+    round-off of P, far above rtol). The largest
     difference (name: the figure recorded) is mostly a pressure profile's L2
     error, a difference of the computed and Hertz's profiles; RTOL = 2e-11
     is 3.6 times the largest measured over the five OpenBLAS kernels (5.5e-12,

@@ -235,17 +235,23 @@ def test_moment_balance(tmp_path):
     pair's forces have no net moment about any point (E is unchanged by a
     rigid rotation of both surfaces). The reassembly is checked first: K u
     vanishes at the free nodes, equals node_force at the contact nodes and
-    sums to the JSON's reactions. Measured over the OpenBLAS kernels Nehalem,
-    Sandybridge, Haswell and SkylakeX (each bound 2-3 times the largest; the
-    former bounds, 1e-10, 1e-9, 1e-10, 1e-10 and 1e-12, were what the
-    stopping test -tao_gttol 1e-12 would allow, |g| <= 2e-9, which Newton's
-    last step undercuts by far): free nodes 1.8e-15 to 1.07e-14 of P, bound
-    3e-14; contact nodes 1.86e-12 to 2.11e-12 of P (the contact's residual),
-    bound 1e-10 (3 times what gttol 1e-12 allows, 3.3e-11); reactions 4.1e-15 to 1.34e-13 of P, bound 3e-13; moment
-    imbalance 2.9e-13 to 6.5e-13 of the moment, bound 1.5e-12 (at the default
-    gttol 1e-8 it is 7e-10; the block's forces mirrored about its zone are
-    8 % off, taken at the current positions 4 %); the pair's moment 0 to
-    1.3e-16 of P, bound 100 EPS. gpts writes no nodal forces (its
+    sums to the JSON's reactions. Measured over the five OpenBLAS kernels
+    and unset (each bound 3 to 4 times the largest; the former bounds, 1e-10,
+    1e-9, 1e-10, 1e-10 and 1e-12, were what the stopping test -tao_gttol
+    1e-12 would allow, |g| <= 2e-9, which Newton's last step undercuts by
+    far): free nodes `free_block` = 5.0e-15 to 1.06e-14 and
+    `free_indenter` = 1.8e-15 to 3.7e-15 of P, bound 4e-14 (was 3e-14, 2.8
+    times the largest); contact nodes `contact_block` = 2.08e-12 to 2.11e-12
+    and `contact_indenter` = 1.87e-12 to 1.91e-12 of P (the contact's
+    residual), bound 1e-10 (3 times what gttol 1e-12 allows, 3.3e-11);
+    reactions `reactions_block` = 1.2e-14 to 1.36e-13 and
+    `reactions_indenter` = 3.7e-15 to 1.0e-14 of P, bound 5e-13 (was 3e-13,
+    2.2 times); moment imbalance `moment_block` = 2.5e-13 to 4.6e-13 and
+    `moment_indenter` = 4.6e-13 to 6.6e-13 of the moment, bound 2.5e-12 (was
+    1.5e-12, 2.3 times; at the default gttol 1e-8 it is 7e-10; the block's
+    forces mirrored about its zone are 8 % off, taken at the current
+    positions 4 %); the pair's moment `pair` = 0 to 1.3e-16 of P, bound
+    100 EPS. gpts writes no nodal forces (its
     Gauss-point samples carry the pressure, not the master's normal), so only
     mortar is checked. Catches nodal forces written at the wrong nodes or
     positions or from another state, a force with the wrong line of action, and
@@ -271,13 +277,13 @@ def test_moment_balance(tmp_path):
             contact_f = figure(f"contact_{body}", np.abs(Ku[contact] - FC).max() / P)
             reactions_f = figure(f"reactions_{body}", np.abs(Ku[dirichlet].sum(axis=0) - s["reactions"][group]).max() / P)
             print(f"{body}: free {free_f:.2e}, contact {contact_f:.2e}, reactions {reactions_f:.2e} of P")
-            assert free_f <= 3e-14
+            assert free_f <= 4e-14
             assert contact_f <= 1e-10  # the stopping residual: gttol 1e-12 allows 3.3e-11 of P
-            assert reactions_f <= 3e-13
+            assert reactions_f <= 5e-13
             Mc, Mr = cross(XC - c, FC).sum(), cross(X[dirichlet] - c, Ku[dirichlet]).sum()
             moment_f = figure(f"moment_{body}", abs(Mc + Mr) / abs(Mc))
             print(f"{body}: moment of the contact forces {Mc!r}, of the reactions {Mr!r}, imbalance {moment_f:.1e}")
-            assert moment_f <= 1.5e-12
+            assert moment_f <= 2.5e-12
             pair += cross(cs["node_x"][...] - c, FC).sum()
     pair_f = figure("pair", abs(pair) / P)
     print(f"the pair's moment {pair!r}, {pair_f:.2e} of P")
@@ -302,15 +308,16 @@ def test_taylor_away_from_minimiser(formulation, taylor_runs):
     """The Taylor test at an iterate far from the minimiser (the existing cases
     run at the solution, where the gradient is ~0 and the contact shallow):
     the run stopped at -tao_gatol 1000 away from it, the gradient at least
-    100 (measured `gradient_norm_mortar` = LO to HI and
-    `gradient_norm_gpts` = LO to HI; 6e-9 at the solution) and the contact
-    deep, the penetration at least 1e-3 (measured `penetration_mortar` = LO
-    to HI and `penetration_gpts` = LO to HI; 5e-5 at the solution). There
-    the energy's remainder falls at order 2 (measured
-    `gradient_order_mortar` = LO to HI and `gradient_order_gpts` = LO to HI;
-    a wrong gradient gives 1), and so does the gradient's with the exact
-    Hessian (measured `hessian_order_mortar` = LO to HI and
-    `hessian_order_gpts` = LO to HI; gpts' Gauss-Newton Hessian gives 1.000,
+    100 (measured over the five OpenBLAS kernels `gradient_norm_mortar` =
+    645 to 645 and `gradient_norm_gpts` = 862 to 862; 6e-9 at the solution)
+    and the contact deep, the penetration at least 1e-3 (measured
+    `penetration_mortar` = 2.8e-3 to 2.8e-3 and `penetration_gpts` = 3.4e-3
+    to 3.4e-3; 5e-5 at the solution). There the energy's remainder falls at
+    order 2 (measured `gradient_order_mortar` = 2.000 to 2.000 and
+    `gradient_order_gpts` = 2.000 to 2.000; a wrong gradient gives 1), and
+    so does the gradient's with the exact Hessian (measured
+    `hessian_order_mortar` = 2.000 to 2.000 and `hessian_order_gpts` = 2.000
+    to 2.000; gpts' Gauss-Newton Hessian gives 1.000,
     mortar's exact one gave 0.997 before the Gauss points' motion with the
     crossings was differentiated: see the next test)."""
     s = taylor_runs[formulation]
@@ -327,13 +334,13 @@ def test_taylor_away_from_minimiser(formulation, taylor_runs):
 @pytest.mark.roundoff
 def test_taylor_mortar_hessian_exact_away_from_minimiser(taylor_runs):
     """Mortar's exact Hessian at the deep iterate of the fixture: the
-    gradient's relative remainder falls like eps, from 2.2177e-4 at the
-    largest step to 1.7320e-6 at the smallest (2^-7: the falling term alone
-    gives 2.2177e-4 / 2^7 = 1.7326e-6), order 1.999982 to 2.000021 over the
-    OpenBLAS kernels Nehalem, Sandybridge, Haswell and SkylakeX (gpts 1.999992
-    to 2.000006). Bounds: the order within 6e-5 of 2 (3 times the largest
-    deviation measured), the smallest remainder at most 5e-6 (3 times the
-    measured). The Gauss points of the two segments beside a crossing (where
+    gradient's relative remainder falls like eps, from `first` = 2.2177e-4
+    to 2.2177e-4 at the largest step to `last` = 1.7320e-6 to 1.7320e-6 at
+    the smallest (2^-7: the falling term alone gives 2.2177e-4 / 2^7 =
+    1.7326e-6), the order's deviation from 2 `order_deviation` = 4.9e-6 to
+    2.1e-5 over the five OpenBLAS kernels. Bounds: the order within 8e-5 of
+    2 (was 6e-5, 2.8 times the largest deviation), the smallest remainder at
+    most 6e-6 (3.5 times the measured). The Gauss points of the two segments beside a crossing (where
     the closest point passes from one master edge to the next) move with it;
     before their motion was differentiated (mortar.c's header, "the Gauss
     points move"), the gradient was not the energy's (off by up to 2.4e-2 on
@@ -346,5 +353,5 @@ def test_taylor_mortar_hessian_exact_away_from_minimiser(taylor_runs):
     figure("order_deviation", t["hessian_order"] - 2.0)
     figure("first", t["hessian_relative_remainder"][0]), figure("last", t["hessian_relative_remainder"][-1])
     print(t["hessian_order"], t["hessian_relative_remainder"])
-    assert abs(t["hessian_order"] - 2.0) <= 6e-5
-    assert t["hessian_relative_remainder"][-1] <= 5e-6
+    assert abs(t["hessian_order"] - 2.0) <= 8e-5
+    assert t["hessian_relative_remainder"][-1] <= 6e-6
