@@ -138,16 +138,18 @@ def test_force_richardson(half_runs, half_mortar_reference):
     which share the bodies' discretisation, differ by 2e-5 at h = 0.0125, a
     twentieth of mortar's distance to its limit (test below). So P is not
     faster than first order here. Measured P `P_h0.05` = 54.865302,
-    `P_h0.025` = 54.829609, `P_h0.0125` = 54.810076: order `order` = 0.87 (over 0.025, 0.0125, 0.00625: 0.80;
-    0.0354, 0.0177, 0.00884: 0.81; 0.0707, 0.0354, 0.0177: 1.23; a
-    least-squares fit of P = P_inf + C h^p through the ten meshes from 0.05
-    to 0.005: 0.74, scatter 6e-5 rms), limit 54.7865, the finest run
-    `above_limit` = 4.3e-4 above it. The limit and order predict P at
-    h = 0.007 (a mesh 1.8 times finer, not used for the fit: the committed
-    reference conftest.HALF_MORTAR_REF, whose freshness make stress checks)
-    to `predicted` = 1.9e-5 (at h = 0.005, 2.3e-5). (test_mortar's 0.06,
-    0.03, 0.015 do not serve: P(0.03) lies 1.7e-4 above that fit.) An O(h^1/2) error in the contact force (a weight lost at
-    the zone's ends) or a force that stops converging (a penalty scaled with h)
+    `P_h0.025` = 54.829609, `P_h0.0125` = 54.810076: order `order` = 0.87
+    (over 0.025, 0.0125, 0.00625: 0.80; 0.0354, 0.0177, 0.00884: 0.81;
+    0.0707, 0.0354, 0.0177: 1.23; a least-squares fit of P = P_inf + C h^p
+    through the ten meshes from 0.05 to 0.005: 0.74, scatter 6e-5 rms),
+    limit `limit` = 54.7865, the finest run `above_limit` = 4.3e-4 above it.
+    The limit and order predict P at h = 0.007 (a mesh 1.8 times finer, not
+    used for the fit: the committed reference conftest.HALF_MORTAR_REF,
+    whose freshness make stress checks) to `predicted` = 1.9e-5 (at
+    h = 0.005, 2.3e-5). (test_mortar's 0.06, 0.03, 0.015 do not serve:
+    P(0.03) lies 1.7e-4 above that fit.) An O(h^1/2) error in the contact
+    force (a weight lost at the zone's ends) or a force that stops
+    converging (a penalty scaled with h)
     breaks the order and the prediction; a larger error constant the bound."""
     h, P = half_runs
     P = P["mortar"]
@@ -159,7 +161,7 @@ def test_force_richardson(half_runs, half_mortar_reference):
     predicted = limit + (P[2] - limit) * (HALF_MORTAR_FINE / h[2]) ** p
     print(f"P {P}, observed order {p:.3f}, Richardson limit {limit:.6f}, finest {(P[2] - limit) / limit:.2e} from it; "
           f"at h = {HALF_MORTAR_FINE} {fine!r}, predicted {predicted!r}")
-    figure("order", p)
+    figure("order", p), figure("limit", limit)
     above, off = figure("above_limit", (P[2] - limit) / limit), figure("predicted", (fine - predicted) / limit)
     assert P[0] > P[1] > P[2]
     assert 0.6 <= p <= 1.4
