@@ -154,9 +154,12 @@ def test_against_uniform_fine(tol, half_mortar_reference, tmp_path):
     answer's), whose own profile error is below 0.5 % (its L2 distance to
     h = 0.015 is 0.49 %, as was that of h = 0.005). The adapted answer's
     profile lies within TOL + 0.3 % of it (measured `d_tol0.01` = 0.0086 at
-    TOL = 1 % with an estimate of `est_tol0.01` = 0.0093; `d_tol0.005` = 8e-4
-    at 0.5 %, estimate `est_tol0.005` = 0.0020) and its force within TOL / 4
-    (measured `dP_tol0.01` = 7.6e-4, `dP_tol0.005` = 1.3e-6)."""
+    TOL = 1 % with an estimate of `est_tol0.01` = 0.0093;
+    `d_tol0.005` = 8.2e-4 to 8.5e-4 at 0.5 %, estimate
+    `est_tol0.005` = 0.0020 to 0.0021) and its force within TOL / 4
+    (measured `dP_tol0.01` = 7.6e-4, `dP_tol0.005` = 3e-7 to 1.3e-6; the
+    ranges over this machine's OpenBLAS kernel and Prescott's: the adapted
+    solve stops at the default -tao_gttol)."""
     import profile_metrics as pm
     ref = half_mortar_reference
     res = run_contact(scene_args("hertz-half", tmp_path) + ["-accuracy", tol], tmp_path)
