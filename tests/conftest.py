@@ -121,7 +121,7 @@ def contact(tmp_path):
 
 
 # The mirrored half of the reference scene with mortar at these mesh sizes, run
-# once per session for the tests that read them (test_mortar, test_verification).
+# once per session for the tests that read them (test_mortar).
 HALF_MORTAR_H = (0.1, 0.06, 0.03, 0.015)
 # The finest, h = 0.007 (462,642 dofs, 12 to 15 s), is not solved in the
 # suite: its profile and figures are committed (HALF_MORTAR_REF, written by
