@@ -35,8 +35,7 @@ def test_estimate_is_honest(scene, tmp_path):
     estimate / true error `ratio_hertz` = 0.93, `ratio_twodiscs` = 0.80,
     `ratio_other` = 1.09, against 0.5 to 2 (the lower bound 2.5 times the
     largest deviation from 1; catches an estimate from the wrong pair of
-    steps or with a wrong rate, off by a factor of 2 or more). (The
-    docstring had quoted 0.0155 and 0.86 for "other", a stale measurement.)"""
+    steps or with a wrong rate, off by a factor of 2 or more)."""
     base = scene_args(scene, tmp_path) + MORTAR
     answers = {}
     for tol in (0.05, 0.02):
