@@ -100,7 +100,7 @@ def test_deep_overlap_named(tmp_path):
     3e-3), and gets no warning. The JSON's overlap_edges (unrounded; the
     program's edges are arcs, the test's two chords through the mid-edge
     node, shorter on the disc by (theta/2)^2/6 = 2.6e-5 at theta = h/R = 0.05)
-    is the test's to 7e-5 (measured `json_off` = 2.6e-5)."""
+    is the test's to 7e-5 (measured `json_off` = -2.6e-5)."""
     r = run_contact(HALF + ["-mesh_size", 0.05, "-contact_penalty", "1e3", "-block_bc_push_values", "-0.3,0"],
                     tmp_path, name="soft")
     warn = [ln for ln in r.stdout.splitlines() if "bodies overlap" in ln]
