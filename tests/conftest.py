@@ -171,7 +171,7 @@ def half_mortar_runs(tmp_path_factory):
 
 # `make test` runs the suite on both cores (pytest-xdist, -n 2 --dist
 # loadgroup). A test that uses a module- or session-scoped fixture of this
-# directory (the runs a module shares, half_mortar_runs shared by two modules,
+# directory (the runs a module shares, half_mortar_runs,
 # the X server of test_paraview) runs on the worker that runs every other test
 # using that fixture, so that each is computed once, as in a serial run; the
 # other tests are handed out one by one. Each worker has its own basetemp, so
