@@ -47,11 +47,11 @@ def hertz_errors(s):
 
 @pytest.mark.parametrize("formulation", ["mortar", "gpts"])
 def test_hertz(formulation, rigid, tmp_path):
-    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 - nu^2)
-    (the block's alone: 1098.9), at a / h of 10: p_max and the second-moment
-    half-width within 1 % of it (measured mortar `dp_mortar` = XX and
-    `da_mortar` = XX, gpts `dp_gpts` = XX and `da_gpts` = XX over the five
-    kernels)."""
+    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 -
+    nu^2) (the block's alone: 1098.9), at a / h of 10: p_max and the
+    second-moment half-width within 1 % of it (measured mortar
+    `dp_mortar` = -0.0033 and `da_mortar` = 0.0041, gpts `dp_gpts` = 0.0043 and
+    `da_gpts` = -0.0036 over the five kernels)."""
     s = rigid if formulation == "mortar" else run_contact(SCENE + ["-contact_formulation", formulation, "-output", "none"], tmp_path).summary
     assert s["E_star"] == pytest.approx(1000 / (1 - 0.3 ** 2), rel=1e-12)
     dp, da = hertz_errors(s)
@@ -62,11 +62,11 @@ def test_hertz(formulation, rigid, tmp_path):
 def test_rigid_slave(tmp_path):
     """The rigid surface as mortar's slave (-contact_mortar_slave first; the
     automatic choice takes the softer body, the block): p_max and the
-    half-width within 3 % of Hertz (measured `dp` = XX and `da` = XX over the
-    five kernels; the bound twice the larger), looser than the block as
-    slave's 1 % (test_hertz). A rigid slave finer than its master oscillates
-    (its nodes ask more than the master's can give: at the disc's hc =
-    0.0038 p_max came out 13.9 % high, measured once, not run here)."""
+    half-width within 3 % of Hertz (measured `dp` = 0.014 and `da` = -0.014
+    over the five kernels; the bound twice the larger), looser than the block
+    as slave's 1 % (test_hertz). A rigid slave finer than its master oscillates
+    (its nodes ask more than the master's can give: at the disc's hc = 0.0038
+    p_max came out 13.9 % high, measured once, not run here)."""
     s = run_contact(SCENE + ["-contact_mortar_slave", "first", "-output", "none"], tmp_path).summary
     dp, da = hertz_errors(s)
     figure("dp", dp), figure("da", da)
@@ -75,11 +75,11 @@ def test_rigid_slave(tmp_path):
 
 def test_stiff_limit(rigid, tmp_path):
     """The rigid answer is the limit of the elastic disc made stiffer: at
-    E = 1e8 (1e5 times the block's) P is `dP_1e8` = XX from the rigid one,
-    at 1e10 `dP_1e10` = XX, the O(1/E) of the disc's own compliance and the
-    stiff disc's solve (bounds 4e-5 and 2e-6); p_max alike (`dp_1e8` = XX,
-    `dp_1e10` = XX). The rigid disc has no dofs: `dofs_rigid` = 6672 against
-    `dofs_elastic` = 14028."""
+    E = 1e8 (1e5 times the block's) P is `dP_1e8` = 1.5e-5 from the rigid one,
+    at 1e10 `dP_1e10` = 4.7e-7, the O(1/E) of the disc's own compliance and the
+    stiff disc's solve (bounds 4e-5 and 2e-6); p_max alike (`dp_1e8` = 1.3e-5,
+    `dp_1e10` = 7.3e-7). The rigid disc has no dofs: `dofs_rigid` = 6672
+    against `dofs_elastic` = 14028."""
     for E, bound in (("1e8", 4e-5), ("1e10", 2e-6)):
         s = run_contact(["-options_file", stiff_options(tmp_path, float(E)), "-output", "none"], tmp_path, name=f"E{E}").summary
         dP = figure(f"dP_{E}", rigid["contact_force"] / s["contact_force"] - 1)
@@ -91,13 +91,13 @@ def test_stiff_limit(rigid, tmp_path):
 
 @pytest.mark.roundoff
 def test_motion_given_to_the_rigid_body(rigid_run, tmp_path):
-    """The same relative motion given to the rigid disc (translated by
-    +0.0095) with the block held gives the same answer, both solved to
-    gttol 1e-12: P `dP` = XX apart over the five kernels (bound 1e-10), and
-    the block's displacement is the fixture's plus the disc's 0.0095 in x
-    (the same state seen from the disc; largest difference `du` = XX of
-    0.0095, bound 1e-9: a translation applied to the rigid body's outline
-    but not to its contact, or twice, shows)."""
+    """The same relative motion given to the rigid disc (translated by +0.0095)
+    with the block held gives the same answer, both solved to gttol 1e-12: P
+    `dP` = -1.8e-11 to -2.2e-11 apart over the five kernels (bound 1e-10), and
+    the block's displacement is the fixture's plus the disc's 0.0095 in x (the
+    same state seen from the disc; largest difference `du` = 1.9e-12 of 0.0095,
+    bound 1e-9: a translation applied to the rigid body's outline but not to
+    its contact, or twice, shows)."""
     r = run_contact(SCENE + TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "0.0095,0"], tmp_path)
     d = figure("dP", r.summary["contact_force"] / rigid_run.summary["contact_force"] - 1)
     with r.h5() as f, rigid_run.h5() as g:
@@ -111,13 +111,13 @@ def test_motion_given_to_the_rigid_body(rigid_run, tmp_path):
 def test_rotation_about_centre(rigid_run, tmp_path):
     """A circle turned about its centre is the same circle: the rigid disc
     rotated by 0.05 rad about (-1, 0) gives the same P, both solved to gttol
-    1e-12 (its nodes move along the arc, which their quadratic edges
-    follow: measured `dP` = XX over the five kernels, bound 1e-8), and the
+    1e-12 (its nodes move along the arc, which their quadratic edges follow:
+    measured `dP` = -1.4e-9 over the five kernels, bound 1e-8), and the
     contact's moment about the centre is nil beside P R (frictionless: every
-    normal passes through the centre; measured `moment` = XX, bound 1e-8).
-    The outline the HDF5 holds is the fixture's turned by 0.05 about (-1, 0)
-    (largest distance `turned` = XX of R, bound 1e-12): the rotation was
-    applied, not only reported."""
+    normal passes through the centre; measured `moment` = -6.9e-10, bound
+    1e-8). The outline the HDF5 holds is the fixture's turned by 0.05 about
+    (-1, 0) (largest distance `turned` = 2.2e-16 of R, bound 1e-12): the
+    rotation was applied, not only reported."""
     r = run_contact(SCENE + TIGHT + ["-indenter_rigid_centre", "-1,0", "-indenter_rigid_rotation", "0.05"], tmp_path)
     s = r.summary
     ind = s["bodies"]["indenter"]
@@ -136,17 +136,17 @@ def test_rotation_about_centre(rigid_run, tmp_path):
 @pytest.mark.roundoff
 def test_balance(rigid):
     """The rigid body's force is the contact's (its reaction, through the
-    condition that holds it), to round-off (`force` = XX of P, bound 1e-12);
-    its default reference point is the circle's centre (the curves' centroid
-    by length, whatever the grading: x `centre_x` = XX off, the quadratic
-    edges' departure from the circle, bound 2e-7; y `centre_y` = XX, bound
-    1e-12), about which the contact's moment is nil (`moment` = XX of P,
-    bound 1e-9: every normal passes through the centre); and the block's
+    condition that holds it), to round-off (`force` = 0 of P, bound 1e-12); its
+    default reference point is the circle's centre (the curves' centroid by
+    length, whatever the grading: x `centre_x` = 4.8e-8 off, the quadratic
+    edges' departure from the circle, bound 2e-7; y `centre_y` = -1.2e-15,
+    bound 1e-12), about which the contact's moment is nil (`moment` = -6.7e-12
+    of P, bound 1e-9: every normal passes through the centre); and the block's
     support carries it back to what the solver's stop allows: the block's
-    energy is invariant under its translation, so the imbalance is a sum of
-    the gradient over the block's free dofs, at most sqrt(n) ||g||
-    (test_robustness) plus 1000 EPS of P for the sums (measured `imbalance`
-    = XX of that bound over the five kernels)."""
+    energy is invariant under its translation, so the imbalance is a sum of the
+    gradient over the block's free dofs, at most sqrt(n) ||g||
+    (test_robustness) plus 1000 EPS of P for the sums (measured
+    `imbalance` = 0.0072 to 0.019 of that bound over the five kernels)."""
     P = rigid["contact_force"]
     ind = rigid["bodies"]["indenter"]
     r_ind, r_block = rigid["reactions"]["indenter:back"], rigid["reactions"]["block:push"]
@@ -165,9 +165,11 @@ def test_balance(rigid):
 
 @pytest.mark.roundoff
 def test_ranks(rigid, tmp_path):
-    """2 ranks give the 1-rank answer, both solved to gttol 1e-12: P, p_max
-    and the disc's force in x `dP` = XX, `dpmax` = XX and `dF` = XX apart over
-    the five kernels, bound 1e-11."""
+    """2 ranks give the 1-rank answer, both solved to gttol 1e-12: P, p_max and
+    the disc's force in x `dP` = 2.0e-14 to 5.7e-13 in magnitude,
+    `dpmax` = 1.1e-15 to 7.7e-15 in magnitude and
+    `dF` = 2.0e-14 to 5.7e-13 in magnitude apart over the five kernels, bound
+    1e-11."""
     s = run_contact(SCENE + TIGHT, tmp_path, ranks=2).summary
     for k, name in (("contact_force", "dP"), ("fem_pmax", "dpmax")):
         assert abs(figure(name, s[k] / rigid[k] - 1)) <= 1e-11
@@ -211,14 +213,14 @@ def test_no_curves(tmp_path):
 
 @pytest.mark.parametrize("slave", ["auto", "second"])
 def test_punch_sadowsky(slave, tmp_path):
-    """A rigid flat punch (its four sides alone, square corners) pressed into
-    a soft block: the slave's pressure within 3 % of Sadowsky's over
-    |x| < 0.6 b, either slave (auto: the punch, whose face ends on the
-    block, `sadowsky_auto` = XX; the block, `sadowsky_second` = XX over the
-    five kernels). P is a regression pin: 0.150331 is the program's own
-    rigid P (auto slave) when this test was written, held to 0.5 % (measured
-    `dP_auto` = XX and `dP_second` = XX from it); no closed form gives the
-    force of a punch pushed by a displacement into a finite block. (An
+    """A rigid flat punch (its four sides alone, square corners) pressed into a
+    soft block: the slave's pressure within 3 % of Sadowsky's over |x| < 0.6 b,
+    either slave (auto: the punch, whose face ends on the block,
+    `sadowsky_auto` = 0.0085; the block, `sadowsky_second` = 0.0039 over the
+    five kernels). P is a regression pin: 0.150331 is the program's own rigid P
+    (auto slave) when this test was written, held to 0.5 % (measured
+    `dP_auto` = 1.1e-6 and `dP_second` = -0.0015 from it); no closed form gives
+    the force of a punch pushed by a displacement into a finite block. (An
     elastic punch at E = 1e5 to 1e7 solved to gttol 1e-14 tended to it,
     0.150262, 0.150320, 0.150326: measured once, not run here.)"""
     r = run_contact(PUNCH + ["-contact_mortar_slave", slave], tmp_path)
@@ -235,9 +237,9 @@ def test_punch_sadowsky(slave, tmp_path):
 def test_sphere_rz(tmp_path):
     """A rigid ball (its meridian's curves) on an elastic flat in r-z: Hertz's
     point contact with E* = E / (1 - nu^2), p_max and the second-moment a
-    within 1 % (measured `dp` = XX and `da` = XX over the five kernels); the
-    ball moves along the axis alone (its condition names y only: the
-    program holds its radial translation at 0), and its force is the
+    within 1 % (measured `dp` = 0.0044 and `da` = -8.5e-4 over the five
+    kernels); the ball moves along the axis alone (its condition names y only:
+    the program holds its radial translation at 0), and its force is the
     contact's, along the axis (pressing it up)."""
     s = run_contact(SPHERE + ["-output", "none"], tmp_path).summary
     dp, da = hertz_errors(s)
@@ -253,10 +255,10 @@ def test_sphere_rz(tmp_path):
 def test_ssnv104_rigid_plane(tmp_path):
     """SSNV104 with its plane of symmetry rigid (the line y = 0 alone) gives
     the stiff flat's figures with half the dofs (`dofs_rigid` = 9044 against
-    `dofs_stiff` = 18228): P `dP` = XX above it (the flat, 10^4 times stiffer
-    than the sphere, gives way by about 1e-4 of the approach; bound 2e-4),
-    p_max and the second-moment a within 3e-4 of it (measured `dp` = XX and
-    `da` = XX over the five kernels)."""
+    `dofs_stiff` = 18228): P `dP` = 8.8e-5 above it (the flat, 10^4 times
+    stiffer than the sphere, gives way by about 1e-4 of the approach; bound
+    2e-4), p_max and the second-moment a within 3e-4 of it (measured
+    `dp` = 1.0e-4 and `da` = -5.0e-6 over the five kernels)."""
     r = run_contact(["-options_file", "meshes/ssnv104-rigid/ssnv104-rigid.opts", "-output", "none"], tmp_path, name="rigid").summary
     e = run_contact(["-options_file", "meshes/ssnv104/ssnv104.opts", "-output", "none"], tmp_path, name="stiff").summary
     dP = figure("dP", r["contact_force"] / e["contact_force"] - 1)
@@ -291,13 +293,15 @@ def test_output(rigid_run, tmp_path):
 
 @pytest.mark.roundoff
 def test_force_controlled(rigid, tmp_path):
-    """The disc force-controlled in x by the force the displaced block gave
-    it (the fixture's P), the block held, all solved to gttol 1e-12 and
+    """The disc force-controlled in x by the force the displaced block gave it
+    (the fixture's P), the block held, all solved to gttol 1e-12 and
     -force_control_rtol 1e-11: the disc moves by the block's 0.0095
-    (`dt` = XX of it over the five kernels, bound 1e-8), the profile's p_max
-    is the fixture's (`dpmax` = XX, bound 1e-8), the reaction is the force
-    asked (`reaction` = XX, bound 1e-10, the force control's tolerance), and 2
-    ranks find the same motion (`dt_ranks` = XX, bound 1e-10)."""
+    (`dt` = 1.2e-13 to 3.8e-13 in magnitude of it over the five kernels, bound
+    1e-8), the profile's p_max is the fixture's
+    (`dpmax` = 1.1e-12 to 8.2e-12 in magnitude, bound 1e-8), the reaction is
+    the force asked (`reaction` = 2.6e-13 to 3.2e-12 in magnitude, bound 1e-10,
+    the force control's tolerance), and 2 ranks find the same motion
+    (`dt_ranks` = 0 to 4.4e-16 in magnitude, bound 1e-10)."""
     F = rigid["bodies"]["indenter"]["force"][0]
     args = SCENE + FORCE_TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
                                   "-indenter_bc_back_values", f"{F!r},0", "-output", "none"]
@@ -315,10 +319,11 @@ def test_force_controlled(rigid, tmp_path):
 @pytest.mark.roundoff
 def test_force_controlled_rz(tmp_path):
     """In r-z: the ball force-controlled along the axis by the force the
-    displacement run (ball moved by -0.01) gave it, the flat's base moved
-    up by 0.01 instead: the ball stays where it is, to 1e-9 of 0.01
-    (measured `t` = XX over the five kernels, both solved to a gradient of
-    1e-11), and p_max is the displacement run's to 1e-9 (`dpmax` = XX)."""
+    displacement run (ball moved by -0.01) gave it, the flat's base moved up by
+    0.01 instead: the ball stays where it is, to 1e-9 of 0.01 (measured
+    `t` = 2.9e-13 to 8.6e-13 in magnitude over the five kernels, both solved to
+    a gradient of 1e-11), and p_max is the displacement run's to 1e-9
+    (`dpmax` = 1.4e-14 to 1.7e-12 in magnitude)."""
     tight = ["-tao_gatol", "1e-11", "-tao_grtol", "0", "-tao_gttol", "0", "-output", "none"]
     d = run_contact(SPHERE + tight, tmp_path, name="disp").summary
     F = d["bodies"]["ball"]["force"][1]
@@ -336,22 +341,23 @@ def roller(tmp_path_factory):
 
 def test_roller_held_by_contact(roller):
     """meshes/rigid-roller: a rigid roller between two races, held by its two
-    contacts alone (no condition: its x and y are unknowns of force zero),
-    the upper race pushed by 1000. By symmetry the roller moves by half
-    the upper race's displacement (to 1e-9; measured `sym` = XX over the five
-    kernels). Each contact carries the 1000 to what the stop allows (no
-    tighter stop can be asked: the roller's free x keeps the gradient from
-    falling further): the upper race's energy is invariant under its
-    translation, so the force on it less its back's reaction is at most
-    sqrt(n) ||g|| (test_robustness), and that reaction is the force asked to
-    the force control's tolerance; the lower contact differs from the upper
-    by the force left on the roller in y, itself within that allowance
-    (measured `dP` = XX and `fy` = XX of it). Each contact matches Hertz's
-    rigid cylinder on a flat with E* = E / (1 - nu^2): p_max and the
-    second-moment a within 1 % (measured `dp` = XX and `da` = XX); the force
-    left on the roller in x is within the allowance of a motion the contacts
-    do not hold (along the flat races: 1e-3 of the load; measured `fx` = XX
-    of it)."""
+    contacts alone (no condition: its x and y are unknowns of force zero), the
+    upper race pushed by 1000. By symmetry the roller moves by half the upper
+    race's displacement (to 1e-9; measured
+    `sym` = 8.5e-15 to 2.0e-14 in magnitude over the five kernels). Each
+    contact carries the 1000 to what the stop allows (no tighter stop can be
+    asked: the roller's free x keeps the gradient from falling further): the
+    upper race's energy is invariant under its translation, so the force on it
+    less its back's reaction is at most sqrt(n) ||g|| (test_robustness), and
+    that reaction is the force asked to the force control's tolerance; the
+    lower contact differs from the upper by the force left on the roller in y,
+    itself within that allowance (measured `dP` = 0.0032 to 0.024 in magnitude
+    and `fy` = 0.0049 to 0.036 in magnitude of it). Each contact matches
+    Hertz's rigid cylinder on a flat with E* = E / (1 - nu^2): p_max and the
+    second-moment a within 1 % (measured `dp` = -0.0026 and `da` = 0.0031); the
+    force left on the roller in x is within the allowance of a motion the
+    contacts do not hold (along the flat races: 1e-3 of the load; measured
+    `fx` = 7.9e-7 of it)."""
     t = roller["bodies"]["roller"]["translation"]
     U = roller["force_control"][0]["displacement"]
     print(f"roller t = {t}, upper race U = {U}")
@@ -369,17 +375,17 @@ def test_roller_held_by_contact(roller):
 
 @pytest.mark.roundoff
 def test_roller_ranks_and_gpts(roller, tmp_path):
-    """The rigid roller on 2 ranks: the same motion in y (x, which the
-    contacts do not hold, is not compared; nor can a tighter stop be asked:
-    the roller's free x keeps the gradient from falling further, and the run
-    ends unconverged). The bound is the stops': the force each run leaves
-    unbalanced in y (the roller's force and the race's reaction less the
-    1000 asked), relative to the load, moves the motion by as much relative
-    to it (the contacts' force grows about in proportion to the approach,
-    which is most of the motion), taken 3 times: measured `dt` = XX of that
-    bound over the five kernels. With gpts the symmetry holds (1e-9;
-    `sym_gpts` = XX) and Hertz within 2.5 % (measured `dp_gpts` = XX, `da_gpts`
-    = XX)."""
+    """The rigid roller on 2 ranks: the same motion in y (x, which the contacts
+    do not hold, is not compared; nor can a tighter stop be asked: the roller's
+    free x keeps the gradient from falling further, and the run ends
+    unconverged). The bound is the stops': the force each run leaves unbalanced
+    in y (the roller's force and the race's reaction less the 1000 asked),
+    relative to the load, moves the motion by as much relative to it (the
+    contacts' force grows about in proportion to the approach, which is most of
+    the motion), taken 3 times: measured `dt` = 1.3e-5 to 1.8e-4 of that bound
+    over the five kernels. With gpts the symmetry holds (1e-9;
+    `sym_gpts` = 1.0e-14 to 6.5e-14 in magnitude) and Hertz within 2.5 %
+    (measured `dp_gpts` = 0.011, `da_gpts` = -8.6e-4)."""
     s = run_contact(ROLLER + ["-output", "none"], tmp_path, ranks=2, name="two").summary
     t1, t2 = roller["bodies"]["roller"]["translation"][1], s["bodies"]["roller"]["translation"][1]
     unbalanced = sum(abs(x["bodies"]["roller"]["force"][1]) + abs(x["force_control"][0]["reaction"] - x["force_control"][0]["force"])
@@ -400,23 +406,22 @@ TILT = ["-options_file", "meshes/rigid-punch/rigid-punch.opts", "-output", "none
 @pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", ["mortar", "gpts"])
 def test_free_rotation_tilt(formulation, tmp_path):
-    """The rigid flat punch (half-width b = 0.25) pushed by a force
-    P = 0.15 through the point 0.1 right of its axis, free to turn about
-    it: the punch tilts until the contact's moment about that point is zero
-    (to 1e-6 of P e; measured `moment` = XX over both formulations and the
-    five kernels), by Johnson's tilted punch on a half-space (Contact
-    Mechanics, 2.8) alpha = 4 P e / (pi E* b^2) = 2.781e-3 with E* = E /
-    (1 - nu^2), within 3 % (the block is finite; measured `dalpha_mortar` =
-    XX, `dalpha_gpts` = XX; e < b / 2, so the whole face stays in contact);
-    the punch's force is the one asked (`force` = XX, bound 1e-7). The
-    Taylor test at the answer, the rigid body's unknowns included: the
-    gradient's remainder second order, and the Hessian's (the rotation's
-    second derivative and the contact's coupling through J) second order
-    (measured `order_gradient` = XX and `order_hessian` = XX; bound 1.9, a
-    first-order remainder, a wrong term, gives 1). (With the block as
-    mortar's slave the Hessian's order was 1.0, as with an elastic punch:
-    the master's corners, not the rigid body; measured once, not run
-    here.)"""
+    """The rigid flat punch (half-width b = 0.25) pushed by a force P = 0.15
+    through the point 0.1 right of its axis, free to turn about it: the punch
+    tilts until the contact's moment about that point is zero (to 1e-6 of P e;
+    measured `moment` = -2.0e-8 to -4.0e-8 over both formulations and the five
+    kernels), by Johnson's tilted punch on a half-space (Contact Mechanics,
+    2.8) alpha = 4 P e / (pi E* b^2) = 2.781e-3 with E* = E / (1 - nu^2),
+    within 3 % (the block is finite; measured `dalpha_mortar` = -0.0079,
+    `dalpha_gpts` = -0.013; e < b / 2, so the whole face stays in contact); the
+    punch's force is the one asked (`force` = 3.5e-9 to 1.9e-8, bound 1e-7).
+    The Taylor test at the answer, the rigid body's unknowns included: the
+    gradient's remainder second order, and the Hessian's (the rotation's second
+    derivative and the contact's coupling through J) second order (measured
+    `order_gradient` = 2 and `order_hessian` = 2.01 to 2.39; bound 1.9, a
+    first-order remainder, a wrong term, gives 1). (With the block as mortar's
+    slave the Hessian's order was 1.0, as with an elastic punch: the master's
+    corners, not the rigid body; measured once, not run here.)"""
     args = TILT + ["-contact_formulation", formulation, "-taylor_test"]
     r = run_contact(args, tmp_path)
     s = r.summary
@@ -436,11 +441,11 @@ def test_border_from_the_surfaces(tmp_path):
     """A rigid body's unknowns border the Hessian with columns that change at
     each Hessian and live on the contact surfaces alone: the substructuring
     condenses them anew with no interior solve (one solve of the bodies'
-    Hessian a step), where -force_control_border_solves makes m + 1 solves.
-    The disc force-controlled in x, free to turn, both solved to gttol 1e-12
+    Hessian a step), where -force_control_border_solves makes m + 1 solves. The
+    disc force-controlled in x, free to turn, both solved to gttol 1e-12
     (-force_control_rtol 1e-11 is not reached with the rotation free: 40
-    solves): the two give the same motion to 1e-10
-    (measured `dt` = XX over the five kernels)."""
+    solves): the two give the same motion to 1e-10 (measured
+    `dt` = 2.2e-16 to 5.6e-16 in magnitude over the five kernels)."""
     args = SCENE + TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
                     "-indenter_bc_back_values", "5.0234614148,0", "-indenter_rigid_rotation", "free", "-output", "none"]
     fast = run_contact(args + ["-info", ":sys"], tmp_path, name="fast")
@@ -480,13 +485,13 @@ def test_help(scene, tmp_path):
 
 @pytest.mark.roundoff
 def test_force_controlled_plate_on_rubber(tmp_path):
-    """meshes/rubber-squeeze (h = 0.1) with its rigid plate pushed by the
-    force the displaced plate (0.3) gave it, in place of the displacement:
-    the plate moves by that 0.3 to 1e-9 (measured `dt` = XX over the five
-    kernels, both solved to a gradient of 1e-12) and p_max is the displaced
-    run's to 1e-9 (`dpmax` = XX): a rigid body's force control on a
-    neo-Hookean partner, whose contact Hessian the border carries at every
-    step."""
+    """meshes/rubber-squeeze (h = 0.1) with its rigid plate pushed by the force
+    the displaced plate (0.3) gave it, in place of the displacement: the plate
+    moves by that 0.3 to 1e-9 (measured `dt` = 5.3e-14 to 3.2e-13 in magnitude
+    over the five kernels, both solved to a gradient of 1e-12) and p_max is the
+    displaced run's to 1e-9 (`dpmax` = 2.3e-13 to 3.0e-12): a rigid body's
+    force control on a neo-Hookean partner, whose contact Hessian the border
+    carries at every step."""
     scene = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts", "-output", "none", "-mesh_size", "0.1",
              "-tao_gatol", "1e-12", "-tao_grtol", "0", "-tao_gttol", "0"]
     d = run_contact(scene, tmp_path, name="disp").summary
