@@ -45,7 +45,7 @@ def test_force_finds_the_push(by_displacement, tmp_path):
     with its force and displacement, and the energy includes the force's
     potential -F U: the displacement run's energy at the push U_d = -0.15
     minus F U_d, to second order in U - U_d (the energy's slope in U is the
-    reaction, F; measured `dE` = LO to HI of it, bound 50 EPS)."""
+    reaction, F; measured `dE` = LO to HI of it, bound 15 EPS = 3.3e-15)."""
     F = by_displacement["reactions"]["block:push"][0]
     s = by_force(F, tmp_path)
     (fc,) = s["force_control"]
@@ -60,24 +60,34 @@ def test_force_finds_the_push(by_displacement, tmp_path):
     assert figure("balance_of_bound", abs(s["contact_force"] - abs(F)) / bound) <= 1
     de = s["energy"] - (by_displacement["energy"] + F * PUSH)
     print(f"energy: {s['energy']!r} against {by_displacement['energy'] + F * PUSH!r}: {de:.2e}")
-    assert figure("dE", abs(de) / abs(s["energy"])) <= 50 * EPS
+    assert figure("dE", abs(de) / abs(s["energy"])) <= 15 * EPS
 
 
 @pytest.mark.roundoff
 def test_force_control_ranks(by_displacement, tmp_path):
-    """1 and 2 ranks find the same displacement, reaction and contact force
-    (the coupled type): measured `dU` = LO to HI, `dR` = LO to HI and `dP` =
-    LO to HI apart (relative) over the five kernels, bound 1e-8 (each run
-    within the control's -force_control_rtol 1e-11 of the force, the
-    displacement within the stop's error of the push: test_force_finds_the_push's
-    1e-6 is the reference's own error, far above what the ranks differ by)."""
+    """1 and 2 ranks find the same reaction, contact force and displacement
+    (the coupled type), within what each run's stop guarantees: each
+    reaction within the control's tolerance (-force_control_rtol 1e-11) of
+    the force, so 2e-11 apart (measured `dR` = LO to HI relative over the
+    five kernels); each P within sqrt(n) ||g|| + 1e-11 |F| of the force
+    (test_force_finds_the_push), so the two within the sum of those bounds
+    (measured `dP` = LO to HI relative, `dP_of_bound` = LO to HI of that
+    sum); the displacements within what that P difference moves the push,
+    at most 2 U / F per unit force (the approach grows as the force times a
+    logarithm and the block's own compliance: its slope is below U / F;
+    measured `dU` = LO to HI relative, `dU_of_bound` = LO to HI)."""
     F = by_displacement["reactions"]["block:push"][0]
     one = by_force(F, tmp_path, name="np1")
     two = by_force(F, tmp_path, ranks=2, name="np2")
-    for key, name in (("displacement", "dU"), ("reaction", "dR")):
-        a, b = one["force_control"][0][key], two["force_control"][0][key]
-        assert figure(name, abs(a - b) / abs(a)) <= 1e-8, (key, a, b)
-    assert figure("dP", abs(one["contact_force"] - two["contact_force"]) / one["contact_force"]) <= 1e-8
+    Pbound = sum(np.sqrt(s["dofs"]) * s["gradient_norm"] + 1e-11 * abs(F) for s in (one, two))
+    R1, R2 = one["force_control"][0]["reaction"], two["force_control"][0]["reaction"]
+    assert figure("dR", abs(R1 - R2) / abs(F)) <= 2e-11, (R1, R2)
+    dP = abs(one["contact_force"] - two["contact_force"])
+    figure("dP", dP / one["contact_force"])
+    assert figure("dP_of_bound", dP / Pbound) <= 1
+    U1, U2 = one["force_control"][0]["displacement"], two["force_control"][0]["displacement"]
+    figure("dU", abs(U1 - U2) / abs(U1))
+    assert figure("dU_of_bound", abs(U1 - U2) / (2 * abs(U1) / abs(F) * Pbound)) <= 1, (U1, U2)
 
 
 FINE = ["-disc_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.0007,dc=1",
@@ -106,7 +116,7 @@ def test_coupled_finds_the_displacement(scene, ranks, tmp_path):
     difference. Measured over the scenes, 1 and 2 ranks and the five
     kernels: displacements `dU` = LO to HI (bound 1.5e-13), reactions
     against the forces `dR` = LO to HI (bound 1e-11, the control's
-    tolerance), energies `dE` = LO to HI relative (bound 1e-14)."""
+    tolerance), energies `dE` = LO to HI relative (bound 5e-15)."""
     args, controls = SCENES[scene]
     d = run_contact(args + ["-output", "none", "-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name="disp").summary
     opts, work = [], 0.0
@@ -130,7 +140,7 @@ def test_coupled_finds_the_displacement(scene, ranks, tmp_path):
     de = f["energy"] - (d["energy"] - work)
     print(f"energy {f['energy']!r} against {d['energy'] - work!r}: {de / abs(f['energy']):.1e}; "
           f"iterations {f['iterations']} against {d['iterations']}")
-    assert figure("dE", abs(de) / abs(f["energy"])) <= 1e-14
+    assert figure("dE", abs(de) / abs(f["energy"])) <= 5e-15
 
 
 @pytest.mark.roundoff
@@ -172,13 +182,12 @@ def test_border_from_the_surfaces(ranks, tmp_path):
     forces, each run reports S = D - B^T H^-1 B at every Hessian it
     assembles, and at the first (at rest, the same H in both runs) the two
     agree: measured `dS` = LO to HI of max D_kk over 1 and 2 ranks and the
-    five kernels, bound 1e-13 (round-off of the m solves). Both solved to a
-    tight stop (-tao_gttol 1e-12), they find the same displacements and
-    contact force: measured `dU` = LO to HI and `dP` = LO to HI apart
-    (relative), bound 1e-12. A step without the substructuring
-    (-newton_schur 0, Cholesky) falls back on the m solves and finds the
-    same (1 rank: `dU_chol` = LO to HI, `dP_chol` = LO to HI, bound
-    1e-12)."""
+    five kernels, bound 5e-15. Both solved to a tight stop (-tao_gttol
+    1e-12), they find the same displacements and contact force: measured
+    `dU` = LO to HI and `dP` = LO to HI apart (relative), bounds 1e-14 and
+    1e-13. A step without the substructuring (-newton_schur 0, Cholesky)
+    falls back on the m solves and finds the same (1 rank: `dU_chol` = LO to
+    HI, `dP_chol` = LO to HI, the same bounds)."""
     tight = PINCH + ["-tao_gttol", "1e-12"]
     # -info into a file per rank, rank 0's read: on stdout two ranks' lines can interleave (one of 10 lost under load)
     fast = run_contact(tight + ["-info", f"{tmp_path}/fast.info:sys"], tmp_path, ranks=ranks, name="fast")
@@ -192,15 +201,15 @@ def test_border_from_the_surfaces(ranks, tmp_path):
     dev = max(abs(a - b) for a, b in zip(sf[0][0], ss[0][0])) / d
     print(f"np{ranks}: S at rest apart by {dev:.1e} of max D_kk = {d:.6g}; "
           f"{fast.summary['iterations']} and {slow.summary['iterations']} iterations")
-    assert figure("dS", dev) <= 1e-13
+    assert figure("dS", dev) <= 5e-15
 
     def apart(a, b, tag):
         dU = max(abs(x["displacement"] - y["displacement"]) / abs(y["displacement"])
                  for x, y in zip(a["force_control"], b["force_control"]))
         dP = abs(a["contact_force"] - b["contact_force"]) / b["contact_force"]
         print(f"  {tag}: U {dU:.1e}, P {dP:.1e} apart")
-        assert figure(f"dU{tag}", dU) <= 1e-12
-        assert figure(f"dP{tag}", dP) <= 1e-12
+        assert figure(f"dU{tag}", dU) <= 1e-14
+        assert figure(f"dP{tag}", dP) <= 1e-13
 
     apart(fast.summary, slow.summary, "")
     if ranks == 1:

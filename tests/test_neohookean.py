@@ -345,6 +345,7 @@ def test_manufactured_convergence(cells, tmp_path):
     assert figure(f"grad_order_{cells}", min(orders[1])) >= MMS_ORDERS[cells][1]
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("material", ["linear", "neohookean"])
 def test_largest_strain_reported(material, tmp_path):
     """Each body's largest principal Green-Lagrange strain, in the report and
@@ -521,6 +522,7 @@ def check_tangent_rule(solves, its=TANGENT_ITS):
     return judged
 
 
+@pytest.mark.roundoff
 def test_tangent_chosen_by_convergence(tmp_path):
     """Newton without -tangent_at_rest takes the stiffness at rest while its
     steps divide the gradient by more than 2, then the tangent: on the
