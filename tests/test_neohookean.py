@@ -376,13 +376,13 @@ def test_two_ranks(tmp_path):
     (-tao_gttol 1e-12, which Newton's quadratic convergence reaches in one
     or two more iterations): the same energy and contact force. Measured
     `dE` = LO to HI and `dP` = LO to HI apart (relative) over the five
-    kernels; bounds 1e-11, above 3 times the largest."""
+    kernels; bounds 1.5e-14 and 4e-13, about 3 times the largest."""
     args = ["-options_file", "meshes/hertz/hertz.opts", "-indenter_material", "neohookean", "-block_material", "neohookean",
             "-output", "none", "-tao_gttol", "1e-12"]
     one, two = (run_contact(args, tmp_path, ranks=n, name=f"r{n}").summary for n in (1, 2))
     print(one["iterations"], two["iterations"], one["energy"], two["energy"], one["contact_force"], two["contact_force"])
-    assert figure("dE", abs(one["energy"] - two["energy"]) / one["energy"]) <= 1e-11
-    assert figure("dP", abs(one["contact_force"] - two["contact_force"]) / one["contact_force"]) <= 1e-11
+    assert figure("dE", abs(one["energy"] - two["energy"]) / one["energy"]) <= 1.5e-14
+    assert figure("dP", abs(one["contact_force"] - two["contact_force"]) / one["contact_force"]) <= 4e-13
 
 
 def residuals(out):
@@ -401,9 +401,9 @@ def test_tangent_at_rest(tmp_path):
     stop (-tao_gttol 1e-12): the two take different paths (their monitored
     gradient norms differ: modified Newton's converge linearly, Newton's
     quadratically) to the same answer, P `dP` = LO to HI and the energy `dE`
-    = LO to HI apart (relative) over the five kernels, bounds 1e-10 and
-    1e-12; -tangent_at_rest on 2 ranks gives it too (P `dP_ranks` = LO to
-    HI, energy `dE_ranks` = LO to HI apart; bounds 1e-10 and 1e-11)."""
+    = LO to HI apart (relative) over the five kernels, bounds 2.5e-12 and
+    1.2e-14; -tangent_at_rest on 2 ranks gives it too (P `dP_ranks` = LO to
+    HI, energy `dE_ranks` = LO to HI apart; bounds 4e-13 and 1.5e-14)."""
     args = ["-options_file", "meshes/hertz/hertz.opts", "-indenter_material", "neohookean", "-block_material", "neohookean",
             "-block_bc_push_values", "-0.01,0", "-output", "none", "-tao_gttol", "1e-12", "-tao_monitor"]
     full = run_contact(args + ["-tangent_at_rest", "0"], tmp_path, name="full")
@@ -415,10 +415,10 @@ def test_tangent_at_rest(tmp_path):
     print(full["iterations"], rest["iterations"], rest2["iterations"], rest["contact_force"] / full["contact_force"] - 1,
           rest["energy"] / full["energy"] - 1, rest2["contact_force"] / rest["contact_force"] - 1)
     assert len(gf) > 1 and len(gr) > 1 and gf != gr, "the same path: -tangent_at_rest 0 changed nothing"
-    assert figure("dP", abs(rest["contact_force"] - full["contact_force"]) / full["contact_force"]) <= 1e-10
-    assert figure("dE", abs(rest["energy"] - full["energy"]) / full["energy"]) <= 1e-12
-    assert figure("dP_ranks", abs(rest2["contact_force"] - rest["contact_force"]) / rest["contact_force"]) <= 1e-10
-    assert figure("dE_ranks", abs(rest2["energy"] - rest["energy"]) / rest["energy"]) <= 1e-11
+    assert figure("dP", abs(rest["contact_force"] - full["contact_force"]) / full["contact_force"]) <= 2.5e-12
+    assert figure("dE", abs(rest["energy"] - full["energy"]) / full["energy"]) <= 1.2e-14
+    assert figure("dP_ranks", abs(rest2["contact_force"] - rest["contact_force"]) / rest["contact_force"]) <= 4e-13
+    assert figure("dE_ranks", abs(rest2["energy"] - rest["energy"]) / rest["energy"]) <= 1.5e-14
 
 
 def test_held_by_contact_refused(tmp_path):
@@ -533,10 +533,10 @@ def test_tangent_chosen_by_convergence(tmp_path):
     runs' (-tangent_at_rest 0), all solved to a gradient of 1e-12 at 1 %
     and 1e-10 at the full push (its round-off floor is near 1e-11): P
     measured `dP_small` = LO to HI and `dP_full` = LO to HI apart over the
-    five kernels, bound 1e-8."""
+    five kernels, bounds 1e-9 and 4e-12."""
     scene = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts", "-mesh_size", "0.1", "-output", "none",
              "-tao_grtol", "0", "-tao_gttol", "0"]
-    for push, gatol, tag in (("0,-0.003", "1e-12", "small"), ("0,-0.3", "1e-10", "full")):
+    for push, gatol, tag, bound in (("0,-0.003", "1e-12", "small", 1e-9), ("0,-0.3", "1e-10", "full", 4e-12)):
         args = scene + ["-plate_bc_contact_values", push, "-tao_gatol", gatol]
         r = run_contact(args + ["-info", ":sys", "-tao_monitor"], tmp_path, name="auto")
         solves = tangent_choices(r.stdout + r.stderr)
@@ -547,4 +547,4 @@ def test_tangent_chosen_by_convergence(tmp_path):
         full = run_contact(args + ["-tangent_at_rest", "0"], tmp_path, name="full").summary
         dP = abs(r.summary["contact_force"] / full["contact_force"] - 1)
         print(push, [(len(g), sum(c.values())) for g, c in solves], judged, dP)
-        assert figure(f"dP_{tag}", dP) <= 1e-8
+        assert figure(f"dP_{tag}", dP) <= bound
