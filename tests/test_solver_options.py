@@ -17,7 +17,6 @@ run for the neo-Hookean body, a tight final stop for the continuation."""
 import math
 import re
 
-import numpy as np
 import pytest
 
 from conftest import figure, run_contact
@@ -25,7 +24,6 @@ from test_neohookean import check_tangent_rule, tangent_choices
 
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts", "-output", "none"]
 PUSH = 0.15
-EPS = np.finfo(float).eps
 # the block [0, 1] x [-1, 1] (meshes/hertz/hertz.opts): its size, the diagonal of its box
 BLOCK_SIZE = math.hypot(1.0, 2.0)
 
