@@ -34,18 +34,19 @@ def by_force(F, tmp_path, ranks=1, name="force"):
 @pytest.mark.roundoff
 def test_force_finds_the_push(by_displacement, tmp_path):
     """Driven by the reaction of the push 0.15 (-55.04 in x), the pushed edge
-    moves by -0.15: measured `dU` = LO to HI of it with the coupled type
-    over the five kernels (the displacement run's own stop, -tao_gttol 1e-8,
-    is most of it; the outer iteration: test_solver_options.py), bound 1e-6
-    (the issue's). Solved with -force_control_rtol 1e-11, so that the
-    control's stop adds nothing; the contact force then balances the force
-    to the solve's residual: F - P is the gradient summed over the block's
-    free x-dofs, at most sqrt(n) times the gradient norm (measured
-    `balance_of_bound` = LO to HI of that bound). The JSON lists the control
-    with its force and displacement, and the energy includes the force's
-    potential -F U: the displacement run's energy at the push U_d = -0.15
-    minus F U_d, to second order in U - U_d (the energy's slope in U is the
-    reaction, F; measured `dE` = LO to HI of it, bound 15 EPS = 3.3e-15)."""
+    moves by -0.15: measured `dU` = 7.2e-13 to 7.3e-13 of it with the coupled
+    type over the five kernels (the displacement run's own stop, -tao_gttol
+    1e-8, is most of it; the outer iteration: test_solver_options.py), bound
+    1e-6 (the issue's). Solved with -force_control_rtol 1e-11, so that the
+    control's stop adds nothing; the contact force then balances the force to
+    the solve's residual: F - P is the gradient summed over the block's free
+    x-dofs, at most sqrt(n) times the gradient norm (measured
+    `balance_of_bound` = 2.4e-3 to 6.9e-3 of that bound). The JSON lists the
+    control with its force and displacement, and the energy includes the
+    force's potential -F U: the displacement run's energy at the push U_d =
+    -0.15 minus F U_d, to second order in U - U_d (the energy's slope in U is
+    the reaction, F; measured `dE` = 2.0e-16 to 9.8e-16 of it, bound 15 EPS =
+    3.3e-15)."""
     F = by_displacement["reactions"]["block:push"][0]
     s = by_force(F, tmp_path)
     (fc,) = s["force_control"]
@@ -66,16 +67,17 @@ def test_force_finds_the_push(by_displacement, tmp_path):
 @pytest.mark.roundoff
 def test_force_control_ranks(by_displacement, tmp_path):
     """1 and 2 ranks find the same reaction, contact force and displacement
-    (the coupled type), within what each run's stop guarantees: each
-    reaction within the control's tolerance (-force_control_rtol 1e-11) of
-    the force, so 2e-11 apart (measured `dR` = LO to HI relative over the
-    five kernels); each P within sqrt(n) ||g|| + 1e-11 |F| of the force
+    (the coupled type), within what each run's stop guarantees: each reaction
+    within the control's tolerance (-force_control_rtol 1e-11) of the force, so
+    2e-11 apart (measured `dR` = 2.2e-15 to 2.4e-14 relative over the five
+    kernels); each P within sqrt(n) ||g|| + 1e-11 |F| of the force
     (test_force_finds_the_push), so the two within the sum of those bounds
-    (measured `dP` = LO to HI relative, `dP_of_bound` = LO to HI of that
-    sum); the displacements within what that P difference moves the push,
-    at most 2 U / F per unit force (the approach grows as the force times a
-    logarithm and the block's own compliance: its slope is below U / F;
-    measured `dU` = LO to HI relative, `dU_of_bound` = LO to HI)."""
+    (measured `dP` = 3.0e-14 to 1.4e-13 relative,
+    `dP_of_bound` = 7.5e-4 to 3.6e-3 of that sum); the displacements within
+    what that P difference moves the push, at most 2 U / F per unit force (the
+    approach grows as the force times a logarithm and the block's own
+    compliance: its slope is below U / F; measured `dU` = 0 to 3.7e-16
+    relative, `dU_of_bound` = 0 to 4.7e-6)."""
     F = by_displacement["reactions"]["block:push"][0]
     one = by_force(F, tmp_path, name="np1")
     two = by_force(F, tmp_path, ranks=2, name="np2")
@@ -109,14 +111,14 @@ def test_coupled_finds_the_displacement(scene, ranks, tmp_path):
     on its fine mesh (hc = 0.0007), the axisymmetric ball on a flat, and a
     block pinched by two discs driven by two forces at once, each force the
     reaction of the displacement-controlled run (its gradient tolerance
-    -tao_gttol 1e-12, so that its reaction is the force of its displacement
-    to round-off; the force run's too, and -force_control_rtol 1e-11): the
-    displacements found are the imposed ones, and the
-    energy is the displacement run's minus F . U to second order in their
-    difference. Measured over the scenes, 1 and 2 ranks and the five
-    kernels: displacements `dU` = LO to HI (bound 1.5e-13), reactions
-    against the forces `dR` = LO to HI (bound 1e-11, the control's
-    tolerance), energies `dE` = LO to HI relative (bound 5e-15)."""
+    -tao_gttol 1e-12, so that its reaction is the force of its displacement to
+    round-off; the force run's too, and -force_control_rtol 1e-11): the
+    displacements found are the imposed ones, and the energy is the
+    displacement run's minus F . U to second order in their difference.
+    Measured over the scenes, 1 and 2 ranks and the five kernels: displacements
+    `dU` = 1.7e-16 to 4.5e-14 (bound 1.5e-13), reactions against the forces
+    `dR` = 8.0e-16 to 1.5e-13 (bound 1e-11, the control's tolerance), energies
+    `dE` = 0 to 1.5e-15 relative (bound 5e-15)."""
     args, controls = SCENES[scene]
     d = run_contact(args + ["-output", "none", "-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name="disp").summary
     opts, work = [], 0.0
@@ -146,11 +148,10 @@ def test_coupled_finds_the_displacement(scene, ranks, tmp_path):
 @pytest.mark.roundoff
 def test_coupled_lbfgs(by_displacement, tmp_path):
     """L-BFGS (-tao_type lmvm, its H0 bordered by the control as Newton's
-    Hessian is) finds the reference scene's push too: measured `dU` = LO to
-    HI of 0.15 over the five kernels (Newton's is the displacement run's
-    own error; L-BFGS stops at its own -tao_gttol 1e-10, relative to the
-    displacement run's gradient at rest once it has found U), bound
-    1e-11."""
+    Hessian is) finds the reference scene's push too: measured `dU` = 3.0e-12
+    of 0.15 over the five kernels (Newton's is the displacement run's own
+    error; L-BFGS stops at its own -tao_gttol 1e-10, relative to the
+    displacement run's gradient at rest once it has found U), bound 1e-11."""
     F = by_displacement["reactions"]["block:push"][0]
     s = run_contact(HERTZ + ["-block_bc_push_control", "force,displacement", "-block_bc_push_values", f"{F!r},0",
                              "-output", "none", "-tao_type", "lmvm"], tmp_path).summary
@@ -176,18 +177,19 @@ def border_info(out):
 @pytest.mark.parametrize("ranks", [1, 2])
 def test_border_from_the_surfaces(ranks, tmp_path):
     """The substructuring eliminates the border itself (SubBorder* in
-    substructure.c: B^T H^-1 B from the contact surfaces, one solve a step)
-    and gives what the m solves of H per Hessian give
-    (-force_control_border_solves): on the pinched block driven by two
-    forces, each run reports S = D - B^T H^-1 B at every Hessian it
-    assembles, and at the first (at rest, the same H in both runs) the two
-    agree: measured `dS` = LO to HI of max D_kk over 1 and 2 ranks and the
-    five kernels, bound 5e-15. Both solved to a tight stop (-tao_gttol
-    1e-12), they find the same displacements and contact force: measured
-    `dU` = LO to HI and `dP` = LO to HI apart (relative), bounds 1e-14 and
-    1e-13. A step without the substructuring (-newton_schur 0, Cholesky)
-    falls back on the m solves and finds the same (1 rank: `dU_chol` = LO to
-    HI, `dP_chol` = LO to HI, the same bounds)."""
+    substructure.c: B^T H^-1 B from the contact surfaces, one solve a step) and
+    gives what the m solves of H per Hessian give
+    (-force_control_border_solves): on the pinched block driven by two forces,
+    each run reports S = D - B^T H^-1 B at every Hessian it assembles, and at
+    the first (at rest, the same H in both runs) the two agree: measured
+    `dS` = 3.0e-16 to 1.3e-15 of max D_kk over 1 and 2 ranks and the five
+    kernels, bound 5e-15. Both solved to a tight stop (-tao_gttol 1e-12), they
+    find the same displacements and contact force: measured
+    `dU` = 1.7e-16 to 1.5e-15 and `dP` = 3.8e-15 to 3.1e-14 apart (relative),
+    bounds 1e-14 and 1e-13. A step without the substructuring (-newton_schur 0,
+    Cholesky) falls back on the m solves and finds the same (1 rank:
+    `dU_chol` = 1.0e-15 to 2.7e-15, `dP_chol` = 5.0e-15 to 3.5e-14, the same
+    bounds)."""
     tight = PINCH + ["-tao_gttol", "1e-12"]
     # -info into a file per rank, rank 0's read: on stdout two ranks' lines can interleave (one of 10 lost under load)
     fast = run_contact(tight + ["-info", f"{tmp_path}/fast.info:sys"], tmp_path, ranks=ranks, name="fast")

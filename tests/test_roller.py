@@ -98,18 +98,18 @@ def by_force(tmp_path_factory):
 
 @pytest.mark.roundoff
 def test_force_both_contacts_carry_it(by_force):
-    """Pushed by a force of 1000 from rest: each contact carries it to what
-    the stop guarantees (balance_bound: sqrt(n) ||g|| plus the y anchors'
-    reactions; measured `balance` = LO to HI of the load, `balance_of_bound`
-    = LO to HI of that bound over the five kernels), and each matches Hertz
-    within 0.2 % (`hertz_pmax` = LO to HI, `hertz_a` = LO to HI; the
-    discretisation's, the same on every kernel). The roller's anchors end
-    with a y reaction `anchor_y` = LO to HI of the load, `anchor_y_of_bound`
-    = LO to HI of sqrt(n) ||g|| (the contact holds the squeeze, so the solve
-    converges it: the anchor's reaction is its control's gradient) and x
-    reactions `anchor_x` = LO to HI of the load (the roller's sliding, which
-    the flat races cannot hold, frozen within what unheld.c allows there:
-    the bound, 1e-3 of the load)."""
+    """Pushed by a force of 1000 from rest: each contact carries it to what the
+    stop guarantees (balance_bound: sqrt(n) ||g|| plus the y anchors'
+    reactions; measured `balance` = 3.5e-10 to 6.8e-10 of the load,
+    `balance_of_bound` = 2.5e-3 to 4.2e-3 of that bound over the five kernels),
+    and each matches Hertz within 0.2 % (`hertz_pmax` = 6.6e-4,
+    `hertz_a` = 5.3e-4; the discretisation's, the same on every kernel). The
+    roller's anchors end with a y reaction `anchor_y` = 2.9e-11 of the load,
+    `anchor_y_of_bound` = 1.8e-4 to 2.2e-4 of sqrt(n) ||g|| (the contact holds
+    the squeeze, so the solve converges it: the anchor's reaction is its
+    control's gradient) and x reactions `anchor_x` = 1.2e-7 of the load (the
+    roller's sliding, which the flat races cannot hold, frozen within what
+    unheld.c allows there: the bound, 1e-3 of the load)."""
     s = by_force
     print({n: repr(c["P"]) for n, c in contacts(s).items()}, s["force_control_solves"], s["iterations"])
     check_balance(s)
@@ -127,17 +127,17 @@ def test_force_both_contacts_carry_it(by_force):
 def test_displacement_is_the_force_runs_reference(by_force, tmp_path):
     """Pushed by the displacement the force-driven run found (U = -0.0443925),
     the race's reaction is the force, 1000, and each contact carries it, to
-    1e-5 (measured `reaction` = LO to HI, `dP` = LO to HI of the load): the
-    two runs differ where the roller sits, which nothing holds along the
-    races (the force-driven run's first steps, before any contact, move it
-    to the side; the displacement-driven one stays near where it started),
-    and the contacts then meet other elements (p_max measured `dpmax` = LO
-    to HI apart, bound 1e-3). Within the displacement run, the contacts
-    carry its reaction to what its stop guarantees (balance_bound; `balance`
-    = LO to HI of the load, `balance_of_bound` = LO to HI). The cost claim of issue 33: the force run takes at most
-    1.5 times the displacement run's Newton iterations plus 2 (measured
-    `iterations_ratio` = LO to HI of that allowance, the force run's over
-    1.5 d + 2)."""
+    1e-5 (measured `reaction` = 7.7e-7, `dP` = 7.7e-7 of the load): the two
+    runs differ where the roller sits, which nothing holds along the races (the
+    force-driven run's first steps, before any contact, move it to the side;
+    the displacement-driven one stays near where it started), and the contacts
+    then meet other elements (p_max measured `dpmax` = 5.7e-5 apart, bound
+    1e-3). Within the displacement run, the contacts carry its reaction to what
+    its stop guarantees (balance_bound; `balance` = 3.0e-10 to 6.6e-10 of the
+    load, `balance_of_bound` = 2.1e-3 to 4.6e-3). The cost claim of issue 33:
+    the force run takes at most 1.5 times the displacement run's Newton
+    iterations plus 2 (measured `iterations_ratio` = 0.591 of that allowance,
+    the force run's over 1.5 d + 2)."""
     (U,) = [c["displacement"] for c in by_force["force_control"] if not c["anchor"]]
     d = run_contact(ROLLER + ["-upper_bc_back_control", "displacement,displacement", "-upper_bc_back_values", f"0,{U!r}"],
                     tmp_path).summary
@@ -159,10 +159,10 @@ def test_displacement_is_the_force_runs_reference(by_force, tmp_path):
 def test_pressure_both_contacts_carry_it(tmp_path):
     """A pressure of 100 on the upper race's back (held there in x only, so
     that it is held by contact along y as the roller is): the load is the
-    pressure times the width, 1000 to round-off, both contacts carry it to
-    what the stop guarantees (balance_bound; measured `balance` = LO to HI of
-    the load, `balance_of_bound` = LO to HI), Hertz within 0.2 % (measured
-    `hertz_pmax` = LO to HI, `hertz_a` = LO to HI)."""
+    pressure times the width, 1000 to round-off, both contacts carry it to what
+    the stop guarantees (balance_bound; measured `balance` = 5.8e-10 to 2.7e-9
+    of the load, `balance_of_bound` = 3.8e-3 to 2.3e-2), Hertz within 0.2 %
+    (measured `hertz_pmax` = 6.6e-4, `hertz_a` = 5.3e-4)."""
     s = run_contact(ROLLER + PRESSURE, tmp_path).summary
     print({n: repr(c["P"]) for n, c in contacts(s).items()}, s["force_control_solves"], s["iterations"])
     assert abs(s["loads"]["upper:back"][1] + LOAD) <= 1e-12 * LOAD
@@ -172,15 +172,15 @@ def test_pressure_both_contacts_carry_it(tmp_path):
 
 @pytest.mark.roundoff
 def test_roller_ranks(by_force, tmp_path):
-    """2 ranks against 1: each contact's P within what the two stops
-    guarantee together (balance_bound of each run, summed: measured `dP` =
-    LO to HI of the load, `dP_of_bound` = LO to HI of that bound), the
-    race's displacement within what that P difference moves it, its
-    compliance U / P (the Hertz approach grows as P times a logarithm, so
-    its slope dU/dP is below 2 U / P: the bound is 2 U / P times the P
-    bound; measured `dU` = LO to HI relative, `dU_of_bound` = LO to HI), and
-    the Hertz figures (p_max and the second-moment a) to 2e-8 (measured
-    `dpmax` = LO to HI)."""
+    """2 ranks against 1: each contact's P within what the two stops guarantee
+    together (balance_bound of each run, summed: measured
+    `dP` = 3.7e-11 to 7.6e-10 of the load, `dP_of_bound` = 1.3e-4 to 2.3e-3 of
+    that bound), the race's displacement within what that P difference moves
+    it, its compliance U / P (the Hertz approach grows as P times a logarithm,
+    so its slope dU/dP is below 2 U / P: the bound is 2 U / P times the P
+    bound; measured `dU` = 9.4e-16 to 7.2e-15 relative,
+    `dU_of_bound` = 1.6e-9 to 1.2e-8), and the Hertz figures (p_max and the
+    second-moment a) to 2e-8 (measured `dpmax` = 5.5e-10 to 6.2e-9)."""
     two = run_contact(ROLLER, tmp_path, ranks=2).summary
     bound = balance_bound(by_force) + balance_bound(two)
     dP = dpmax = 0.0
@@ -206,10 +206,10 @@ def test_neighbour_mesh(tmp_path):
     """The neighbouring mesh size h = 0.03 (a/h = 8; the scene's is 0.02),
     pushed by a pressure: both contacts carry the load to what the stop
     guarantees (balance_bound: the frozen motion of the race rocking on the
-    sliding roller carries a little of the load through the roller's y
-    anchor, which the bound includes; measured `balance` = LO to HI of the
-    load, `balance_of_bound` = LO to HI) and Hertz within 0.5 % (measured
-    `hertz_pmax` = LO to HI, `hertz_a` = LO to HI)."""
+    sliding roller carries a little of the load through the roller's y anchor,
+    which the bound includes; measured `balance` = 6.2e-8 of the load,
+    `balance_of_bound` = 0.359 to 0.435) and Hertz within 0.5 % (measured
+    `hertz_pmax` = 7.6e-4, `hertz_a` = 4.4e-4)."""
     s = run_contact(ROLLER + PRESSURE + ["-mesh_size", "0.03"], tmp_path).summary
     print({n: repr(c["P"]) for n, c in contacts(s).items()}, s["force_control_solves"], s["iterations"], s["dofs"])
     check_balance(s)
@@ -231,16 +231,15 @@ def ball_options(tmp_path, pressure):
 @pytest.mark.parametrize("P", [0.7, 0.7e-3])
 def test_ball_on_a_plate(P, tmp_path):
     """A ball (R = 1) resting on a plate in r-z, pressed by a pressure on its
-    equator face (P = p pi R^2 over the whole circle), held along the axis
-    by the contact alone: the contact carries P to what the stop guarantees
-    (balance_bound, the ball's y anchor for the roller's: measured `dP` = LO
-    to HI relative over both loads and the five kernels, `dP_of_bound` = LO
-    to HI of that bound) and, at P = 0.7
-    (h = 0.01, a/h = 10), matches Hertz for a sphere on a flat within 1 %
-    (measured `hertz_pmax` = LO to HI, `hertz_a` = LO to HI); at P = 7e-4
-    (a/h = 1) only the force is checked. The anchor's tolerance scales with
-    the force: the same test at a load 1000 times smaller converges as
-    well."""
+    equator face (P = p pi R^2 over the whole circle), held along the axis by
+    the contact alone: the contact carries P to what the stop guarantees
+    (balance_bound, the ball's y anchor for the roller's: measured
+    `dP` = 2.0e-11 to 1.3e-9 relative over both loads and the five kernels,
+    `dP_of_bound` = 5.0e-3 to 5.3e-3 of that bound) and, at P = 0.7 (h = 0.01,
+    a/h = 10), matches Hertz for a sphere on a flat within 1 % (measured
+    `hertz_pmax` = 3.7e-3, `hertz_a` = 1.1e-4); at P = 7e-4 (a/h = 1) only the
+    force is checked. The anchor's tolerance scales with the force: the same
+    test at a load 1000 times smaller converges as well."""
     s = run_contact(["-options_file", ball_options(tmp_path, P / math.pi), "-mesh_size", "0.01", "-output", "none"],
                     tmp_path).summary
     c = s["contact"]["interface"]

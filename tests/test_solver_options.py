@@ -41,15 +41,13 @@ def monitored_solves(out):
 
 @pytest.mark.roundoff
 def test_stage_rtol(tmp_path):
-    """The reference scene with a penalty continuation (-penalty_stages 3)
-    and -stage_rtol 0.1, then 1e-6: each of the two intermediate stages
-    stops at its first iterate whose gradient norm is at most stage_rtol
-    times its first (every earlier one above it; monitored to 6 digits,
-    judged with a margin of 1e-5), so the looser stages end at gradients
-    above 1e-6 of their start and the tighter ones below. The last stage
-    stops at the final tolerance (-tao_gttol 1e-12) and the two runs reach
-    the same P: measured `dP` = LO to HI apart over the five kernels,
-    bound 1e-12."""
+    """The reference scene with a penalty continuation (-penalty_stages 3) and
+    -stage_rtol 0.1, then 1e-6: each of the two intermediate stages stops at
+    its first iterate whose gradient norm is at most stage_rtol times its first
+    (every earlier one above it; monitored to 6 digits, judged with a margin of
+    1e-5). The last stage stops at the final tolerance
+    (-tao_gttol 1e-12) and the two runs reach the same P: measured
+    `dP` = 1.2e-13 to 3.2e-13 apart over the five kernels, bound 1e-12."""
     P = {}
     for rtol in (0.1, 1e-6):
         r = run_contact(HERTZ + ["-penalty_stages", 3, "-stage_rtol", rtol, "-tao_gttol", "1e-12", "-tao_monitor"],
@@ -72,15 +70,15 @@ def squeeze(push, gatol):
 
 @pytest.mark.roundoff
 def test_tangent_at_rest_its(tmp_path):
-    """The rubber squeeze at 1 % of its push (neo-Hookean, two penalty
-    stages, each converging fast with the stiffness at rest) with
-    -tangent_at_rest_its 2 and 0: every Hessian's choice (-info) follows
-    the rule with that limit (test_neohookean's check_tangent_rule: the
-    tangent from iteration 2, resp. at every Hessian; the stiffness at rest
-    before), so each run takes the tangent, and P is the tangent-every-step
-    run's (-tangent_at_rest 0), all solved to a gradient of 1e-12: measured
-    `dP` = LO to HI apart over both limits and the five kernels (0 with
-    limit 0: the same steps as the reference's), bound 5e-10."""
+    """The rubber squeeze at 1 % of its push (neo-Hookean, two stages, each
+    converging fast with the stiffness at rest) with -tangent_at_rest_its
+    2 and 0: every Hessian's choice (-info) follows the rule with that limit
+    (test_neohookean's check_tangent_rule: the tangent from iteration 2, resp.
+    at every Hessian; the stiffness at rest before), so each run takes the
+    tangent, and P is the tangent-every-step run's (-tangent_at_rest 0), all
+    solved to a gradient of 1e-12: measured `dP` = 0 to 1.5e-10 apart over both
+    limits and the five kernels (0 with limit 0: the same steps as the
+    reference's), bound 5e-10."""
     args = squeeze("0,-0.003", "1e-12")
     ref = run_contact(args + ["-tangent_at_rest", "0"], tmp_path, name="ref").summary
     for its in (2, 0):
@@ -107,13 +105,13 @@ def driven(F, extra, tmp_path, name):
 
 
 def test_force_control_step(push_force, tmp_path):
-    """-force_control_step 0.01 and 0.003 on the reference scene driven by
-    its push's reaction: every step of the controlled displacement that the
-    cap (or S's conditioning) regularises reports |dU| at most its cap (-info),
-    and the cap is the option times the block's size sqrt(5) (from the
-    scene's geometry, to the 6 digits printed); each run finds the push 0.15
-    (measured `dU` = LO to HI of it over both caps and the five kernels,
-    bound 1e-6, the displacement run's own stop being most of it)."""
+    """-force_control_step 0.01 and 0.003 on the reference scene driven by its
+    push's reaction: every step of the controlled displacement that the cap (or
+    S's conditioning) regularises reports |dU| at most its cap (-info), and the
+    cap is the option times the block's size sqrt(5) (from the scene's
+    geometry, to the 6 digits printed); each run finds the push 0.15 (measured
+    `dU` = 7.2e-13 to 7.3e-13 of it over both caps and the five kernels, bound
+    1e-6, the displacement run's own stop being most of it)."""
     for step in (0.01, 0.003):
         r = driven(push_force, ["-force_control_step", step, "-info", ":sys"], tmp_path, f"step{step}")
         steps = [(float(m[1]), float(m[2])) for m in
@@ -129,13 +127,12 @@ def test_force_control_step(push_force, tmp_path):
 
 def test_force_control_outer(push_force, tmp_path):
     """-force_control_type outer: an outer iteration of solves of u, each
-    displacement-controlled (the JSON's force_control_solves counts them:
-    more than one, where the coupled type's one minimisation is one), finds
-    the push 0.15 driven by its reaction (measured `dU` = LO to HI of it over
-    the five kernels, bound 1e-6), and the contact force balances the force
-    to what the last solve's stop and the control's tolerance guarantee:
-    sqrt(n) ||g|| + 1e-11 |F| (measured `balance_of_bound` = LO to HI of
-    that bound)."""
+    displacement-controlled (the JSON's force_control_solves counts them: more
+    than one, where the coupled type's one minimisation is one), finds the push
+    0.15 driven by its reaction (measured `dU` = 1.2e-11 of it over the five
+    kernels, bound 1e-6), and the contact force balances the force to what the
+    last solve's stop and the control's tolerance guarantee: sqrt(n) ||g|| +
+    1e-11 |F| (measured `balance_of_bound` = 2.4e-4 of that bound)."""
     s = driven(push_force, ["-force_control_type", "outer"], tmp_path, "outer").summary
     (fc,) = s["force_control"]
     print(f"U {fc['displacement']!r}, {s['force_control_solves']} solves, {s['iterations']} iterations, P {s['contact_force']!r}")
