@@ -45,9 +45,9 @@ def test_stage_rtol(tmp_path):
     -stage_rtol 0.1, then 1e-6: each of the two intermediate stages stops at
     its first iterate whose gradient norm is at most stage_rtol times its first
     (every earlier one above it; monitored to 6 digits, judged with a margin of
-    1e-5). The last stage stops at the final tolerance
-    (-tao_gttol 1e-12) and the two runs reach the same P: measured
-    `dP` = 1.2e-13 to 3.2e-13 apart over the five kernels, bound 1e-12."""
+    1e-5). The last stage stops at the final tolerance (-tao_gttol 1e-12) and
+    the two runs reach the same P: measured `dP` = 1.2e-13 to 3.2e-13 apart
+    over the five kernels, bound 1e-12."""
     P = {}
     for rtol in (0.1, 1e-6):
         r = run_contact(HERTZ + ["-penalty_stages", 3, "-stage_rtol", rtol, "-tao_gttol", "1e-12", "-tao_monitor"],
@@ -71,8 +71,8 @@ def squeeze(push, gatol):
 @pytest.mark.roundoff
 def test_tangent_at_rest_its(tmp_path):
     """The rubber squeeze at 1 % of its push (neo-Hookean, two stages, each
-    converging fast with the stiffness at rest) with -tangent_at_rest_its
-    2 and 0: every Hessian's choice (-info) follows the rule with that limit
+    converging fast with the stiffness at rest) with -tangent_at_rest_its 2 and
+    0: every Hessian's choice (-info) follows the rule with that limit
     (test_neohookean's check_tangent_rule: the tangent from iteration 2, resp.
     at every Hessian; the stiffness at rest before), so each run takes the
     tangent, and P is the tangent-every-step run's (-tangent_at_rest 0), all
