@@ -88,14 +88,65 @@ def half_width(s, p, w, g):
     return 0.5 * (hi - lo)
 
 
+def slave_zone_half_width(path, surface, pair=None):
+    """The half-width, along surface's own arc s, of the zone where the pair's
+    slave presses (one slave: mortar's one-sided pairs): the slave's zone ends
+    (its nodal gaps' zeros between its loaded and open samples, as
+    half_width) at their current positions, projected on the polyline of
+    surface's nodes' current positions. A mortar master's profile is the
+    slave's resampled at the master's nodes, so its zone is the slave's; its
+    own samples place the zone's end only to a node spacing (a transferred
+    pressure that falls to 0 between two master nodes, the master's gap
+    weighted over its edges positive at the last loaded one), and the
+    oscillation index, which compares the profile with Hertz's of the
+    half-width given, reads that as oscillation (a soft disc on a stiff
+    slab: 0.044 with the master's own half-width, 18 % wide, 0.0053 with
+    this one, the slave's 0.0073: tests/test_master_axis.py)."""
+    with h5py.File(path, "r") as f:
+        g = f["contact"]
+        g = g[pair or sorted(g.keys())[0]]
+        slaves = [k for k in g if g[k].attrs.get("slave", 1) and "node_s" in g[k]]
+        if len(slaves) != 1:
+            raise ValueError(f"{path}: {len(slaves)} slave surfaces, the zone is not one slave's")
+        sl, m = g[slaves[0]], g[surface]
+        ss, ps, gs, xs = (sl[n][...] for n in ("node_s", "node_pressure", "node_gap", "node_x"))
+        sm, xm = m["node_s"][...].ravel(), m["node_x"][...]
+    ss, ps, gs = ss.ravel(), ps.ravel(), gs.ravel()
+    i = np.where(ps > 0)[0]
+
+    def end(k, j):
+        if j < 0 or j >= len(ss):
+            return xs[k]
+        t = gs[k] / (gs[k] - gs[j]) if gs[k] < 0 <= gs[j] < 1e300 else 0.5
+        return xs[k] + t * (xs[j] - xs[k])
+
+    def arc(x):
+        best = (np.inf, 0.0)
+        for a in range(len(sm) - 1):
+            d = xm[a + 1] - xm[a]
+            t = float(np.clip(np.dot(x - xm[a], d) / np.dot(d, d), 0.0, 1.0))
+            dist = float(np.linalg.norm(xm[a] + t * d - x))
+            if dist < best[0]:
+                best = (dist, sm[a] + t * (sm[a + 1] - sm[a]))
+        return best[1]
+
+    return 0.5 * abs(arc(end(i[-1], i[-1] + 1)) - arc(end(i[0], i[0] - 1)))
+
+
 def summary(path, ref=None, masters=False):
     """Per surface: oscillation index, peak, half-width, and the L2 distance
     from the same surface in ref."""
     prof = profiles(path, masters=masters)[0]
     rprof = profiles(ref, masters=masters)[0] if ref else {}
     out = {}
+    with h5py.File(path, "r") as f:
+        g0 = f["contact"][sorted(f["contact"].keys())[0]]
+        slave = {k: g0[k].attrs.get("slave", 1) for k in g0}
     for k, (s, p, w, g) in prof.items():
         d = {"osc": oscillation(s, p, w, g), "pmax": float(p.max()), "a": half_width(s, p, w, g)}
+        if not slave[k]:   # a master: its zone is the slave's (slave_zone_half_width)
+            d["a_slave_zone"] = slave_zone_half_width(path, k)
+            d["osc_slave_zone"] = oscillation_index(s, p, d["a_slave_zone"])
         if k in rprof:
             d["l2_ref"] = l2_distance((s, p), rprof[k])
             d["pmax_ref"] = float(rprof[k][1].max())

@@ -13,16 +13,54 @@
 #include "forceborder.h"
 #include "tangentswitch.h"
 
+/* MUMPS's factorisation works in an array sized at the analysis, from the
+   pattern alone, plus ICNTL(14) per cent (20 by default). An indefinite
+   Hessian (a neohookean body's tangent with the exact contact Hessian)
+   delays pivots up the elimination tree, and on several ranks the
+   factorisation can outgrow that margin: MUMPS stops with INFOG(1) = -9,
+   PETSc marks the factor failed (FACTOR_OUTMEMORY) and Newton's step is
+   lost. TAO then takes gradient steps, which zigzag and stop: a rigid
+   cylinder on a neohookean pad at -tangent_at_rest 0, h = 0.06, diverged on
+   2 ranks with -partitioner simple (at the first exact-Hessian step of its
+   last stage) where 1 rank, metis and ptscotch converged
+   (tests/test_ranks_neohookean.py). 100 % leaves room enough (30 % already
+   passed there);
+   -<prefix>mat_mumps_icntl_14 sets another. Set as the option's default
+   (MUMPS reads its controls from the options when it creates the factor)
+   and marked read, so that a run that never factors does not report it
+   unused. */
+#define CHOLESKY_MUMPS_WORKSPACE "100"
+
+static PetscErrorCode ContactPCSetMumpsWorkspace(PC pc)
+{
+  const char *prefix;
+  char        name[256];
+  PetscBool   given;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-%smat_mumps_icntl_14", prefix ? prefix : ""));
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &given));
+  if (!given) {
+    PetscCall(PetscOptionsSetValue(NULL, name, CHOLESKY_MUMPS_WORKSPACE));
+    PetscCall(PetscOptionsHasName(NULL, NULL, name, &given)); /* marks it read */
+  }
+  PetscFunctionReturn(0);
+}
+
 /* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several, and
    MUMPS's LDL^T for a matrix that may be indefinite. */
 PetscErrorCode ContactPCSetCholesky(PC pc, MPI_Comm comm, PetscBool indefinite)
 {
   PetscMPIInt size;
+  PetscBool   mumps;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
+  mumps = (PetscBool)(size > 1 || indefinite);
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size > 1 || indefinite ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  PetscCall(PCFactorSetMatSolverType(pc, mumps ? MATSOLVERMUMPS : MATSOLVERCHOLMOD));
+  if (mumps) PetscCall(ContactPCSetMumpsWorkspace(pc));
   PetscFunctionReturn(0);
 }
 

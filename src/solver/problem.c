@@ -859,7 +859,8 @@ static PetscBool OptionReadLazily(const char name[])
 {
   const char *const inner[] = {"mg_levels_", "mg_coarse_", "sub_", "fieldsplit_", "redundant_"};
 
-  if (strstr(name, "view") || strstr(name, "monitor") || strstr(name, "test_hessian") || strstr(name, "converged_reason") || !strncmp(name, "mat_", 4)) return PETSC_TRUE;
+  /* a factor's MUMPS controls carry its solver's prefix (-tao_nls_mat_mumps_icntl_14) */
+  if (strstr(name, "view") || strstr(name, "monitor") || strstr(name, "test_hessian") || strstr(name, "converged_reason") || !strncmp(name, "mat_", 4) || strstr(name, "_mat_mumps_")) return PETSC_TRUE;
   for (size_t i = 0; i < sizeof(inner) / sizeof(inner[0]); ++i)
     if (strstr(name, inner[i])) return PETSC_TRUE;
   return PETSC_FALSE;
