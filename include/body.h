@@ -54,6 +54,17 @@ PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);
 /* Collective: the largest principal Green-Lagrange strain, in magnitude,
    over the body's quadrature points (fields.c). */
 PetscErrorCode BodyComputeMaxStrain(Body, Vec Xl, PetscReal *emax);
+/* Collective: the largest strain (as above), where it is (a quadrature
+   point's reference position x), its cell's size h, and the largest strain
+   between BODY_STRAIN_RING / 2 and BODY_STRAIN_RING h from x (ring); below
+   BODY_STRAIN_POINT times the peak, the peak is a singular point's
+   (fields.c derives both). */
+#define BODY_STRAIN_RING  4.0
+#define BODY_STRAIN_POINT 0.8
+typedef struct {
+  PetscReal emax, x[2], h, ring;
+} BodyStrainPeak;
+PetscErrorCode BodyComputeStrainPeak(Body, Vec Xl, BodyStrainPeak *);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
    of the recovered (nodal-average) stress minus the cell's stress. */
 PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);

@@ -10,11 +10,23 @@
    contact force on the node (else 0). */
 enum { CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_Y, CONTACT_ROW_XC, CONTACT_ROW_YC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_FX, CONTACT_ROW_FY, CONTACT_ROW_COLS };
 
+/* The gap of a sample that nothing faces (a point whose closest point is on
+   no edge of the other surface, a node its slave's points do not cover):
+   undefined, so NaN in the rows and the HDF5's gap, "unpaired" in the
+   report. Not PETSc's PETSC_INFINITY, which is a finite number (the largest
+   real over 4, 4.49e307) that would be read as a gap. */
+#define CONTACT_GAP_NONE ((PetscReal)NAN)
+
 /* A profile's figures: largest pressure, half-width (half the loaded length,
    to half the spacing of the samples), half-width from the second moment,
-   pressure centroid, integral of the pressure, relative L2 distance from Hertz. */
+   pressure centroid, integral of the pressure, relative L2 distance from
+   Hertz, and the contact zone's extent [zone[0], zone[1]] in the samples'
+   coordinate (the arc position s, or in r-z the radius r; its ends found as
+   a's; 0, 0 without contact). In r-z, a and am are radii about the axis and
+   mean a zone's size only where it is a disc about the axis (a ring's is its
+   extent). */
 typedef struct {
-  PetscReal pmax, a, am, sc, ptotal, l2err;
+  PetscReal pmax, a, am, sc, ptotal, l2err, zone[2];
 } ContactProfileFigures;
 
 typedef struct {
@@ -29,6 +41,7 @@ typedef struct {
 typedef struct {
   ContactSide side[2];
   PetscReal   kp, force[2], P, maxPen, hertzA, hertzPmax, femPmax, femA, femAm, l2err;
+  PetscReal   zone[2];       /* the contact zone's extent on the pair's first slave surface (its fig.zone) */
   PetscReal   resultant[2]; /* the pair's force: force doubled across a mirror line and cancelled along it; P is its norm */
   PetscReal   hEdge; /* the shorter of the two surfaces' mean reference edge lengths */
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */

@@ -42,6 +42,7 @@ typedef struct {
   PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
   PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
   PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
+  PetscReal   decrementFloor; /* -lmvm_decrement_floor: a last stage whose line search fails within this factor of the decrement's tolerance ends converged */
   PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances; -1: not given, chosen with the solver) */
   PetscInt    loadSteps, penaltyStages;
   PetscInt    loadStages; /* -load_stages: the stages of the load history (history.c), each in loadSteps increments */

@@ -18,7 +18,8 @@ Usage:
         declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
         with the computed a (second moment) and p0 = 2 P / (pi a) and his
         stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
-        skipped with one line (exit status 0)
+        skipped with one line (exit status 0; with --quiet without it, as
+        make run does)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
         cells are subdivided through their shape functions so that curved edges
@@ -416,25 +417,36 @@ def plot_field(f, scale, ax, label, units, zoom=None):
     return note
 
 
-def pressure_range(g, zoom, hertz_a=0.0):
-    """x range (s - s_c) of a pair's pressure plot, or None (automatic): the
-    loaded arc (and the Hertz zone, if any) enlarged by the zoom factor."""
+def pressure_range(g, zoom, hertz_a=0.0, radial=False):
+    """x range of a pair's pressure plot, or None (automatic): the loaded arc
+    (s - s_c; and the Hertz zone [-a, a], if any) enlarged by the zoom factor
+    about its middle. radial (r-z): the loaded radii (current; Hertz's zone
+    [0, a]) instead, enlarged the same way but never past the axis; a zone
+    that reaches the axis (a disc) is drawn from it, to F times its radius,
+    and one away from it (a ring) about its middle."""
     sides = profile_sides(g)
+
+    def coordinate(side):
+        return sample(side, "x")[:, 0] if radial else sample(side, "s") - attr(side, "centre", 0.0)
+
     if isinstance(zoom, tuple):
         x0, x1, y0, y1 = zoom
-        s = [sample(side, "s")[(p[:, 0] >= x0) & (p[:, 0] <= x1) & (p[:, 1] >= y0) & (p[:, 1] <= y1)]
-             - attr(side, "centre", 0.0) for side in sides for p in [sample(side, "x")]]
+        s = [coordinate(side)[(p[:, 0] >= x0) & (p[:, 0] <= x1) & (p[:, 1] >= y0) & (p[:, 1] <= y1)]
+             for side in sides for p in [sample(side, "x")]]
         s = np.concatenate(s) if s else np.empty(0)
         return (s.min(), s.max()) if len(s) and s.max() > s.min() else None
     pmax = max([np.max(sample(v, "pressure"), initial=0.0) for v in sides], default=0.0)
     if pmax <= 0:
         return None
-    s = np.concatenate([sample(v, "s")[sample(v, "pressure") > 1e-3 * pmax] - attr(v, "centre", 0.0)
-                        for v in sides] + [[-hertz_a, hertz_a] if hertz_a > 0 else []])
+    hertz = ([0.0, hertz_a] if radial else [-hertz_a, hertz_a]) if hertz_a > 0 else []
+    s = np.concatenate([coordinate(v)[sample(v, "pressure") > 1e-3 * pmax] for v in sides] + [hertz])
     lo, hi = s.min(), s.max()
-    half = (hi - lo) / 2 if hi > lo else 1e-3 * max(1.0, abs(lo))
     factor = 1.5 if zoom is None else zoom
-    return ((lo + hi) / 2 - factor * half, (lo + hi) / 2 + factor * half)
+    if radial and lo <= 1e-12 * hi:   # a disc about the axis
+        return (0.0, factor * hi)
+    half = (hi - lo) / 2 if hi > lo else 1e-3 * max(1.0, abs(lo))
+    x0, x1 = (lo + hi) / 2 - factor * half, (lo + hi) / 2 + factor * half
+    return (max(x0, 0.0), x1) if radial else (x0, x1)
 
 
 def abscissa(side, axis):
@@ -516,7 +528,8 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
         a = attr(g, "hertz_a") if hertz else attr(g, "fem_a", 0.0)
         text = [f"P = {units.value(attr(g, 'P', float('nan')), 'force', axisym)}"
                 + (" (the whole circle)" if axisym else "")]
-        xr = pressure_range(g, zoom, a if hertz and a > 0 else 0.0) if axis == "s" else None
+        xr = (pressure_range(g, zoom, a if hertz and a > 0 else 0.0, radial=axisym)
+              if axis == "s" or axisym else None)
         if hertz and a > 0:
             pmax = attr(g, "hertz_pmax")
             t = np.linspace(-a, a, 401)
@@ -531,10 +544,13 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
                      f"computed: p_max = {units.value(fp, 'stress')} ({100 * (fp - pmax) / pmax:+.2f} %),",
                      f"    a = {units.value(fa, 'length')} (second moment, {100 * (fa - a) / a:+.2f} %)",
                      f"relative L2 error of p: {100 * attr(g, 'pressure_l2_error'):.2f} %"]
+        if "zone_start" in g.attrs and attr(g, "zone_end") > attr(g, "zone_start"):
+            r1, r2 = attr(g, "zone_start"), attr(g, "zone_end")   # the slave's: r in r-z, its arc's s in plane strain
+            text += [f"contact zone: reference r in [{units.value(r1, 'length')}, {units.value(r2, 'length')}], "
+                     f"width {units.value(r2 - r1, 'length')}" if axisym else
+                     f"contact zone width {units.value(r2 - r1, 'length')}"]
         if xr is not None:
             ax.set_xlim(*xr)
-        if axisym:
-            ax.set_xlim(0, 1.5 * max(a, attr(g, "fem_a", 0.0)) if a > 0 else None)
         thin_markers(ax, marked)
         low = min([np.min(sample(v, "pressure"), initial=0.0) for v in profile_sides(g)], default=0.0)
         ax.set_ylim(1.45 * low, 1.45 * ax.get_ylim()[1])   # a master corner node may take a small negative share
@@ -664,7 +680,7 @@ def plot_shear(f, axes, units, zoom=None, axis="s"):
             ax.axvspan(lo, hi, color=colour, alpha=0.12, zorder=1,   # in r-z from the axis
                        label=f"computed stick zone ({'radius' if axisym else 'half-width'} c)")
         mf = None if axisym else mindlin_figures(g)
-        xr = pressure_range(g, zoom, mf["a"] if mf else 0.0) if axis == "s" else None
+        xr = pressure_range(g, zoom, mf["a"] if mf else 0.0, radial=axisym) if axis == "s" or axisym else None
         if mf:
             a, cm = mf["a"], mf["c"]
             x = np.unique(np.r_[np.linspace(-a, a, 801), [-cm, cm]])
@@ -686,8 +702,6 @@ def plot_shear(f, axes, units, zoom=None, axis="s"):
             text += [f"stick zone {'radius' if axisym else 'half-width'}: c = {units.value(c, 'length')}"]
         if xr is not None:
             ax.set_xlim(*xr)
-        elif axisym:
-            ax.set_xlim(0, 1.5 * max(attr(g, "fem_a", 0.0), np.max(u[p > 0], initial=0.0)) or None)
         else:   # against a coordinate: the arc's range mapped to it
             xs = pressure_range(g, zoom, mf["a"] if mf else 0.0)
             if xs is not None:
@@ -751,6 +765,9 @@ def main():
                         help="the pressure plot's abscissa: the arc position from the "
                              "contact centre (s, the default) or the current x or y "
                              "coordinate (the Hertz curve centred at the slave's centre)")
+    parser.add_argument("--quiet", action="store_true",
+                        help="skip a file with nothing to draw (no contact pairs; no pair "
+                             "with friction for --shear) without a line")
     parser.add_argument("--units", type=parse_units, default=None, metavar="LENGTH,STRESS",
                         help="unit labels for the axes, e.g. mm,MPa (either may be "
                              "empty), or none; default: /metadata attributes "
@@ -779,8 +796,9 @@ def main():
             elif args.shear:
                 pairs = frictional_pairs(f)
                 if not pairs:
-                    print(f"{PROG}: {args.file} has no pair with friction: shear plot "
-                          f"skipped, nothing written")
+                    if not args.quiet:
+                        print(f"{PROG}: {args.file} has no pair with friction: shear plot "
+                              f"skipped, nothing written")
                     return 0
                 fig, axes = plt.subplots(len(pairs), 1, figsize=(8, 5 * len(pairs)), squeeze=False,
                                          layout="constrained")
@@ -788,8 +806,9 @@ def main():
                 fig.suptitle(label)
             else:
                 if "contact" not in f or not len(f["contact"]):
-                    print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
-                          f"skipped, nothing written (--field plots the stress)")
+                    if not args.quiet:
+                        print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
+                              f"skipped, nothing written (--field plots the stress)")
                     return 0
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,

@@ -169,7 +169,7 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 
   PetscFunctionBeginUser;
   /* first read of the file: an unreadable mesh stops here, on every rank */
-  PetscCall(MeshCheckFile(b->comm, b->msh));
+  PetscCall(MeshCheckFile(b->comm, b->name, b->msh));
   PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
   PetscCall(DMPlexCreateFromFile(b->comm, b->msh, b->name, PETSC_TRUE, &b->dm));
   PetscCall(PetscObjectSetName((PetscObject)b->dm, b->name));

@@ -54,7 +54,7 @@ PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
   help = (PetscBool)PetscOptionsObject->printhelp;
   nv   = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1; /* -help shows two components a stage (PETSc lists nv entries where none are given) */
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
-  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (a force where -control force; default 0); with -load_stages S, S values per component, each stage's end after the last's", NULL, v, &nv, &setv));
+  PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (a force where -control force; default 0); with -load_stages S, S values per component, stage-major: stage 1's components, then stage 2's (x1,y1,x2,y2,...)", NULL, v, &nv, &setv));
   PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
   PetscOptionsEnd();

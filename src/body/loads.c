@@ -47,7 +47,7 @@ static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscB
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(lprefix, sizeof(lprefix), "%sload_%s_", prefix, L->group));
   PetscOptionsBegin(b->comm, lprefix, "Load on a boundary group", NULL);
-  PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load); with -load_stages S, S pairs, each stage's end", NULL, vt, &nt, &setT));
+  PetscCall(PetscOptionsRealArray("-traction", "Traction tx,ty per unit reference length (a dead load); with -load_stages S, S pairs, stage-major (tx1,ty1,tx2,ty2,...)", NULL, vt, &nt, &setT));
   if (b->nstages == 1) { /* one value, shown with its default */
     PetscCall(PetscOptionsReal("-pressure", "Pressure along the inward reference normal (a dead load; instead of -traction); with -load_stages S, S values", NULL, vp[0], &vp[0], &setP));
     np = 1;

@@ -240,7 +240,7 @@ PetscErrorCode BodyRigidSetUp(Body b)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  PetscCall(MeshCheckCurvesFile(b->comm, b->msh));
+  PetscCall(MeshCheckCurvesFile(b->comm, b->name, b->msh));
   PetscCall(MeshReadPhysicalNames(b->comm, b->msh, &b->nphys, &b->physNames, &b->physDims, &b->physTags));
   if (!rank) PetscCall(RigidReadCurves(b, r));
   n[0] = r->nn;

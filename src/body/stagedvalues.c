@@ -18,7 +18,7 @@ PetscErrorCode BodyStagedValues(Body b, const char opt[], PetscInt n, PetscInt p
 
   PetscFunctionBeginUser;
   PetscCheck(S > 1 || n == per, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components", opt, n, per);
-  PetscCheck(n == per * S, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components and -load_stages %" PetscInt_FMT " (give %" PetscInt_FMT ", each stage's end after the last's)", opt, n, per, S, per * S);
+  PetscCheck(n == per * S, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values for %" PetscInt_FMT " components and -load_stages %" PetscInt_FMT " (give %" PetscInt_FMT ", stage-major: stage 1's components, then stage 2's, x1,y1,x2,y2,...)", opt, n, per, S, per * S);
   for (PetscInt s = 0; s < S; ++s)
     for (PetscInt c = 0; c < per; ++c) {
       PetscCheck(!PetscIsInfOrNanReal(v[s * per + c]), b->comm, PETSC_ERR_USER_INPUT, "option %s: must be finite, got %g", opt, (double)v[s * per + c]);

@@ -189,5 +189,6 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     if (spec.kpAuto) *autoPenalty = PETSC_TRUE;
     (*nterms)++;
   }
+  if (help) PetscCall(ContactMortarOptionsHelp(comm)); /* listed once, whether or not a pair is mortar */
   PetscFunctionReturn(0);
 }

@@ -133,6 +133,8 @@ PetscErrorCode ContactReportFinish(ContactReport *R, const ContactPairSpec *spec
       f[3] += R->side[s].fig.l2err;
       n++;
     }
+    for (PetscInt s = 1; s >= 0; --s)
+      if (R->side[s].slave) PetscCall(PetscArraycpy(R->zone, R->side[s].fig.zone, 2));
     R->femPmax = f[0] / n;
     R->femA    = f[1] / n;
     R->femAm   = f[2] / n;
@@ -241,6 +243,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
         continue;
       }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "    contact zone: %s in [%.6g, %.6g], width %.6g\n", spec->axisym ? "reference r" : "s", (double)S->fig.zone[0], (double)S->fig.zone[1], (double)(S->fig.zone[1] - S->fig.zone[0])));
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12s %12s %12s %12s\n", spec->axisym ? "r" : "s - s_c", "p", spec->hertz ? "p Hertz" : "", "gap"));
       first = PetscMax(0, first - 1);
       last  = PetscMin(S->n - 1, last + 1);
@@ -248,8 +251,10 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
       for (PetscInt i = first; i <= last; i += step) {
         const PetscReal *r  = &S->rows[C * i];
         const PetscReal  ds = spec->axisym ? r[CONTACT_ROW_X] : r[CONTACT_ROW_S] - S->fig.sc;
-        if (spec->hertz) PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12.6g %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0), (double)r[CONTACT_ROW_GAP]));
-        else PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12.4e\n", (double)ds, (double)r[CONTACT_ROW_P], "", (double)r[CONTACT_ROW_GAP]));
+        char             hz[32] = "", gap[32] = "unpaired"; /* a sample nothing faces has no gap (CONTACT_GAP_NONE) */
+        if (spec->hertz) PetscCall(PetscSNPrintf(hz, sizeof(hz), "%12.6g", (double)(R->hertzA > 0 ? HertzPressure(R->hertzPmax, R->hertzA, ds) : 0.0)));
+        if (!PetscIsInfOrNanReal(r[CONTACT_ROW_GAP])) PetscCall(PetscSNPrintf(gap, sizeof(gap), "%.4e", (double)r[CONTACT_ROW_GAP]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "    %12.5g %12.6g %12s %12s\n", (double)ds, (double)r[CONTACT_ROW_P], hz, gap));
       }
     }
   }
@@ -284,6 +289,8 @@ static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, sep, "fem_pmax", R->femPmax);
   ContactJSONKeyReal(fp, sep, "fem_a", R->femA);
   ContactJSONKeyReal(fp, sep, "fem_a_moment", R->femAm);
+  ContactJSONKeyPair(fp, sep, "zone", R->zone);
+  ContactJSONKeyReal(fp, sep, "zone_width", R->zone[1] - R->zone[0]);
   if (!spec->hertz) return;
   ContactJSONKeyReal(fp, sep, "E_star", spec->Estar);
   ContactJSONKeyReal(fp, sep, "R_star", spec->Rstar);
@@ -327,6 +334,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
     ContactJSONKeyReal(fp, ", ", "a", S->fig.a);
     ContactJSONKeyReal(fp, ", ", "a_moment", S->fig.am);
     ContactJSONKeyReal(fp, ", ", "centre", S->fig.sc);
+    ContactJSONKeyPair(fp, ", ", "zone", S->fig.zone);
     ContactJSONKeyReal(fp, ", ", "pressure_integral", S->fig.ptotal);
     ContactJSONKeyPair(fp, ", ", "force", S->force);
     if (spec->hertz) ContactJSONKeyReal(fp, ", ", "pressure_l2_error", S->fig.l2err);
@@ -433,6 +441,8 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "zone_start", PETSC_REAL, &S->fig.zone[0]));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "zone_end", PETSC_REAL, &S->fig.zone[1]));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "samples", PETSC_STRING, R->nodal ? "nodes" : "gauss_points"));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){S->slave ? 1 : 0}));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &s)); /* its place in -contact_<pair>_surfaces (HDF5 lists groups by name) */
@@ -447,6 +457,8 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &R->femPmax));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_a", PETSC_REAL, &R->femA));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_a_moment", PETSC_REAL, &R->femAm));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "zone_start", PETSC_REAL, &R->zone[0]));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "zone_end", PETSC_REAL, &R->zone[1]));
   if (spec->hertz) {
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E_star", PETSC_REAL, &spec->Estar));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "R_star", PETSC_REAL, &spec->Rstar));

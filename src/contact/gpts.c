@@ -138,7 +138,7 @@ static void GPTSSlaveProfile(GPTS *cp, PetscInt s, PetscReal c, PetscReal rows[]
       r[CONTACT_ROW_Y]   = sp[2];
       r[CONTACT_ROW_XC]  = P.xs[0];
       r[CONTACT_ROW_YC]  = P.xs[1];
-      r[CONTACT_ROW_GAP] = P.G.me < 0 ? PETSC_INFINITY : P.G.gap;
+      r[CONTACT_ROW_GAP] = P.G.me < 0 ? CONTACT_GAP_NONE : P.G.gap;
       r[CONTACT_ROW_P]   = 0.0;
       r[CONTACT_ROW_W]   = sp[3];
       r[CONTACT_ROW_FX]  = 0.0; /* nodal forces: not at Gauss points */

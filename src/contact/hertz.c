@@ -53,7 +53,7 @@ static PetscReal ContactZoneEnd(const PetscReal in[], const PetscReal out[], Pet
 {
   const PetscReal gi = in[CONTACT_ROW_GAP], go = out[CONTACT_ROW_GAP];
 
-  if (nodal && gi < 0 && go >= 0 && go < PETSC_INFINITY) return in[col] + (out[col] - in[col]) * gi / (gi - go);
+  if (nodal && gi < 0 && go >= 0 && !PetscIsInfOrNanReal(go)) return in[col] + (out[col] - in[col]) * gi / (gi - go);
   return 0.5 * (in[col] + out[col]);
 }
 
@@ -79,11 +79,14 @@ void ContactProfileCompare(PetscInt n, const PetscReal rows[], PetscBool nodal, 
   F->sc = den > 0 && !axisym ? num / den : 0.0;
   for (PetscInt i = 0; i < n; ++i) m2 += rows[C * i + CONTACT_ROW_P] * rows[C * i + CONTACT_ROW_W] * PetscSqr(rows[C * i + col] - F->sc);
   F->am = den > 0 ? (axisym ? PetscSqrtReal(2.5 * m2 / den) : 2.0 * PetscSqrtReal(m2 / den)) : 0.0;
-  F->a  = 0.0;
+  F->a       = 0.0;
+  F->zone[0] = F->zone[1] = 0.0;
   if (i0 >= 0) {
     const PetscReal lo = i0 > 0 ? ContactZoneEnd(&rows[C * i0], &rows[C * (i0 - 1)], nodal, col) : rows[C * i0 + col];
     const PetscReal hi = i1 < n - 1 ? ContactZoneEnd(&rows[C * i1], &rows[C * (i1 + 1)], nodal, col) : rows[C * i1 + col];
     F->a               = axisym ? PetscMax(lo, hi) : 0.5 * (hi - lo);
+    F->zone[0]         = lo;
+    F->zone[1]         = hi;
   }
   F->l2err = (PetscReal)NAN; /* no Hertz profile to compare with */
   if (hertz && hertzA > 0) {

@@ -1237,7 +1237,7 @@ static void MortarSlaveRows(const Mortar *m, PetscInt s, const PetscReal F[], Pe
     if (!D->mine[j] || D->A[j] <= 0) continue; /* linear weights: mid-edge nodes carry none */
     (*nrow)++;
     MortarNodeRow(S, D, j, F, r);
-    r[CONTACT_ROW_GAP] = D->gj[j];
+    r[CONTACT_ROW_GAP] = D->gj[j] < PETSC_INFINITY ? D->gj[j] : CONTACT_GAP_NONE; /* gj: PETSC_INFINITY where uncovered */
     r[CONTACT_ROW_P]   = D->gj[j] < 0 ? -m->b.kp * D->gj[j] : 0.0;
     r[CONTACT_ROW_W]   = D->A[j];
     if (D->gj[j] < 0) *maxPen = PetscMax(*maxPen, -D->gj[j]);
@@ -1349,8 +1349,8 @@ static PetscReal MortarNodeStretch(const Mortar *m, PetscInt s, PetscInt j)
    nodal force (the slave's transferred:
    sum_j F_j is the pair's force), and the gap weighted as the slave's but
    with the master's shape functions at the closest points, over the slave's
-   points: int_S' M_j g dS / int_S' M_j dS (Inf where that covers less than
-   half of A_j). The force over A_j, -F_j . n_j / A_j, is the consistent
+   points: int_S' M_j g dS / int_S' M_j dS (none, CONTACT_GAP_NONE, where
+   that covers less than half of A_j). The force over A_j, -F_j . n_j / A_j, is the consistent
    transfer, but its lumping turns the negative parts of N_j near the zone's
    ends into negative pressures (-2.4 beside a peak of 104 on the reference
    scene, an oscillation index of 0.022 where the slave's is 0.005 on a
@@ -1378,7 +1378,7 @@ static PetscErrorCode MortarMasterRows(const Mortar *m, PetscInt s, const PetscR
     if (!D->mine[j] || D->AN[j] <= 0) continue;
     (*nrow)++;
     MortarNodeRow(S, D, j, F, r);
-    r[CONTACT_ROW_GAP] = gw[S->nn + j] > 0.5 * D->AN[j] ? gw[j] / gw[S->nn + j] : PETSC_INFINITY;
+    r[CONTACT_ROW_GAP] = gw[S->nn + j] > 0.5 * D->AN[j] ? gw[j] / gw[S->nn + j] : CONTACT_GAP_NONE;
     r[CONTACT_ROW_P]   = MortarSlavePressureAt(m, 1 - s, &S->x[2 * j]) * MortarNodeStretch(m, s, j); /* per unit of the master's reference measure */
     r[CONTACT_ROW_W]   = D->AN[j];
   }
@@ -1876,6 +1876,32 @@ static PetscErrorCode MortarDestroy(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+/* Mortar's own options, shared by every mortar pair: the slave surface and
+   the weight functions of the nodal gaps. */
+static PetscErrorCode MortarOptionsRead(MPI_Comm comm, MortarSlave *slave, MortarBasis *basis)
+{
+  PetscEnum which = (PetscEnum)*slave, w = (PetscEnum)*basis;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Mortar contact options", NULL);
+  PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: auto (one that ends on the other, else the softer body's, else the first), the pair's first, its second, or both (each one-sided energy weighted 1/2)", NULL, MortarSlaves, which, &which, NULL));
+  PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: dual (biorthogonal to the quadratic basis), quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, w, &w, NULL));
+  PetscOptionsEnd();
+  *slave = (MortarSlave)which;
+  *basis = (MortarBasis)w;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactMortarOptionsHelp(MPI_Comm comm)
+{
+  MortarSlave slave = MORTAR_SLAVE_AUTO;
+  MortarBasis basis = MORTAR_BASIS_DUAL;
+
+  PetscFunctionBeginUser;
+  PetscCall(MortarOptionsRead(comm, &slave, &basis));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm t)
 {
   Mortar *m;
@@ -1894,12 +1920,9 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
   PetscCall(PetscNew(&m));
   m->basis = MORTAR_BASIS_DUAL;
   {
-    PetscEnum which = (PetscEnum)MORTAR_SLAVE_AUTO;
-    PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Mortar contact options", NULL);
-    PetscCall(PetscOptionsEnum("-contact_mortar_slave", "Slave surface: auto (one that ends on the other, else the softer body's, else the first), the pair's first, its second, or both (each one-sided energy weighted 1/2)", NULL, MortarSlaves, which, &which, NULL));
-    PetscCall(PetscOptionsEnum("-contact_mortar_basis", "Weight functions of the nodal gaps: dual (biorthogonal to the quadratic basis), quadratic, linear (corner hats), sublinear (hats on the edge halves)", NULL, MortarBases, (PetscEnum)m->basis, (PetscEnum *)&m->basis, NULL));
-    PetscOptionsEnd();
-    m->slaveChoice = (PetscInt)which;
+    MortarSlave slave = MORTAR_SLAVE_AUTO;
+    PetscCall(MortarOptionsRead(PETSC_COMM_WORLD, &slave, &m->basis));
+    m->slaveChoice = (PetscInt)slave;
   }
   m->nq = spec->nqp;
   PetscCall(PetscDTGaussQuadrature(m->nq, -1.0, 1.0, m->xq, m->wq));

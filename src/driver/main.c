@@ -125,7 +125,9 @@ static PetscErrorCode Run(int *status)
       PetscCall(VecGetSize(problem->Xb, &n));
       PetscCall(ContactProgressPhase("the solve", "solve: %" PetscInt_FMT " dofs", n));
       PetscCall(RunSolve(problem, &rec, &rec.converged));
-      PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
+      /* not converged: the last iterate is post-processed for the report and the reason, and nothing is written */
+      if (rec.converged) PetscCall(ContactProgressPhase("post-processing", "post-processing the converged state"));
+      else PetscCall(ContactProgressPhase("post-processing", "post-processing the last iterate (the solve did not converge: nothing will be written)"));
       PetscCall(RunPostProcess(problem, rec.converged));
       if (rec.converged) PetscCall(ProblemView(problem)); /* the contact report: of a solution, or none */
       rec.status = rec.converged ? 0 : 2;

@@ -53,7 +53,8 @@ typedef enum {
   MSH_OK,
   MSH_OPEN,
   MSH_READ,
-  MSH_BAD
+  MSH_BAD,
+  MSH_3D /* a 3D mesh: 3D elements, or nodes off the plane z = 0 (a 3D body's surfaces meshed by gmsh -2) */
 } MshVerdict;
 
 /* An element type of dimension 0-2 that PETSc's reader supports (its GmshCellTable). */
@@ -169,6 +170,17 @@ static PETSC_ATTRIBUTE_FORMAT(3, 4) int MshFailAt(MshCheck *c, long line, const 
 
   va_start(ap, fmt);
   MshFailV(c, MSH_BAD, line, NULL, 0, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+/* Records that the mesh is 3D, with what shows it; returns 1. */
+static PETSC_ATTRIBUTE_FORMAT(2, 3) int MshFail3D(MshCheck *c, const char *fmt, ...)
+{
+  va_list ap;
+
+  va_start(ap, fmt);
+  MshFailV(c, MSH_3D, c->lineno, c->ctxName, c->ctxId, fmt, ap);
   va_end(ap);
   return 1;
 }
@@ -580,7 +592,7 @@ static const MshType *MshTypeOf(MshCheck *c, long type)
     if (mshTypes[i].type == type) return &mshTypes[i];
   for (size_t i = 0; i < sizeof(msh3DTypes) / sizeof(msh3DTypes[0]); ++i)
     if (msh3DTypes[i] == type) {
-      MshFail(c, "Gmsh element type %ld is a 3D element; the solver is 2D", type);
+      MshFail3D(c, "Gmsh element type %ld is a 3D element", type);
       return NULL;
     }
   MshFail(c, "unknown or unsupported Gmsh element type %ld", type);
@@ -698,6 +710,7 @@ static int MshReadPhysicalNames(MshCheck *c)
     if (q == s + 2) return MshFail(c, "physical name of tag %ld is empty", tag);
     if (q - (s + 2) > MSH_NAME_MAX) return MshFail(c, "physical name of tag %ld is longer than %d characters", tag, MSH_NAME_MAX);
     if (MshEnd(c, q + 1, "physical name")) return 1;
+    if (dim == 3) return MshFail3D(c, "a physical volume, %.*s", (int)(q - s), s + 1);
   }
   return MshExpectEnd(c, "$PhysicalNames", "$EndPhysicalNames", n, "names");
 }
@@ -717,6 +730,7 @@ static int MshReadEntities(MshCheck *c)
     total += count[d];
   }
   if (MshEnd(c, s, "number of volumes")) return 1;
+  if (count[3] > 0) return MshFail3D(c, "%ld volume%s in $Entities", count[3], count[3] > 1 ? "s" : "");
   for (int d = 0; d < 4; ++d) {
     for (long k = 0; k < count[d]; ++k) {
       long   tag, nphys, nbound, v;
@@ -747,6 +761,19 @@ static int MshReadEntities(MshCheck *c)
   return MshExpectEnd(c, "$Entities", "$EndEntities", total, "entities");
 }
 
+/* The coordinates "x y z" of a node: z must be 0, a 2D mesh's plane (a 3D
+   body's surfaces, meshed by gmsh -2, leave it). */
+static int MshCoordinates(MshCheck *c, const char **s)
+{
+  const char *z;
+
+  if (MshReal(c, s, "x") || MshReal(c, s, "y")) return 1;
+  z = MshSkip(*s);
+  if (MshReal(c, s, "z") || MshEnd(c, *s, "coordinates")) return 1;
+  if (strtod(z, NULL) != 0.0) return MshFail3D(c, "at z = %g, off the plane z = 0", strtod(z, NULL));
+  return 0;
+}
+
 /* A 2.2 node line: "tag x y z". */
 static int MshNode22(MshCheck *c)
 {
@@ -756,7 +783,7 @@ static int MshNode22(MshCheck *c)
   if (MshInt(c, &s, 1, MSH_MAX_COUNT, "node tag", &id)) return 1;
   c->ctxName = "node";
   c->ctxId   = id;
-  if (MshReal(c, &s, "x") || MshReal(c, &s, "y") || MshReal(c, &s, "z") || MshEnd(c, s, "coordinates")) return 1;
+  if (MshCoordinates(c, &s)) return 1;
   c->ctxName = NULL;
   return MshAddNode(c, id);
 }
@@ -813,7 +840,7 @@ static int MshReadNodes41(MshCheck *c)
       s          = c->line;
       c->ctxName = "node";
       c->ctxId   = MshNodeTag(c, (int)(c->nnodes - nb + k));
-      if (MshReal(c, &s, "x") || MshReal(c, &s, "y") || MshReal(c, &s, "z") || MshEnd(c, s, "coordinates")) return 1;
+      if (MshCoordinates(c, &s)) return 1;
       c->ctxName = NULL;
     }
     total += nb;
@@ -1048,8 +1075,9 @@ static MshVerdict MshCheckPath(const char path[], int curves, char msg[], size_t
   return c.verdict;
 }
 
-/* Checks the file on rank 0 and raises the verdict on every rank. */
-static PetscErrorCode MeshCheck(MPI_Comm comm, const char path[], int curves)
+/* Checks the file on rank 0 and raises the verdict on every rank; a 3D mesh
+   is named as such, with the body. */
+static PetscErrorCode MeshCheck(MPI_Comm comm, const char body[], const char path[], int curves)
 {
   PetscMPIInt rank;
   int         verdict = MSH_OK;
@@ -1069,22 +1097,23 @@ static PetscErrorCode MeshCheck(MPI_Comm comm, const char path[], int curves)
   }
   PetscCallMPI(MPI_Bcast(&verdict, 1, MPI_INT, 0, comm));
   if (verdict != MSH_OK) PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, comm));
+  PetscCheck(verdict != MSH_3D, comm, PETSC_ERR_USER_INPUT, "body %s: the mesh is 3D (%s): 3D bodies are not supported yet; a body is a 2D section in the plane z = 0 (plane strain, or with -axisymmetric a meridian section), its .geo without a Volume", body, msg);
   PetscCheck(verdict != MSH_OPEN, comm, PETSC_ERR_FILE_OPEN, "%s", msg);
   PetscCheck(verdict != MSH_READ, comm, PETSC_ERR_FILE_READ, "%s", msg);
   PetscCheck(verdict == MSH_OK, comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode MeshCheckFile(MPI_Comm comm, const char path[])
+PetscErrorCode MeshCheckFile(MPI_Comm comm, const char body[], const char path[])
 {
   PetscFunctionBeginUser;
-  PetscCall(MeshCheck(comm, path, 0));
+  PetscCall(MeshCheck(comm, body, path, 0));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode MeshCheckCurvesFile(MPI_Comm comm, const char path[])
+PetscErrorCode MeshCheckCurvesFile(MPI_Comm comm, const char body[], const char path[])
 {
   PetscFunctionBeginUser;
-  PetscCall(MeshCheck(comm, path, 1));
+  PetscCall(MeshCheck(comm, body, path, 1));
   PetscFunctionReturn(0);
 }

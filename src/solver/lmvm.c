@@ -158,9 +158,11 @@
    smaller: run with r = 1e-16, the half scene at h = 0.25 and 0.1 (gpts and
    mortar, push 0.15 and 0.3) reaches 7e-15 to 2.5e-14 of lambda_0 before
    its line search fails. So a last stage whose line search fails within
-   LMVM_DECREMENT_FLOOR = 10 of the tolerance (lambda <= 1e-12 lambda_0)
+   -lmvm_decrement_floor = 10 of the tolerance (lambda <= 1e-12 lambda_0)
    ends converged at that floor, as TAO_CONVERGED_USER, not restarted or cut
-   back (JSON lmvm_decrement_floor_stops). Measured with the default (the
+   back (JSON lmvm_decrement_floor_stops); a larger factor with a tolerance
+   below the floor makes the floor the stop (tests/test_lmvm.py forces it
+   so: r = 1e-15, factor 1000). Measured with the default (the
    k_p = 1e10 part of the robustness sweep, h = 0.25 to 0.005, both
    formulations, pushes 0.01 to 0.3, 1 and 2 ranks: scripts/stress_sweep.py
    --kp 1e10 --tao-type lmvm, and blmvm; bench/stress-lmvm, stress-blmvm):
@@ -175,7 +177,6 @@
 
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
 #define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
-#define LMVM_DECREMENT_FLOOR 10.0  /* a line search failure within this factor of it is the decrement's round-off floor */
 #define LMVM_START_STIFFNESS 1.0   /* the continuation's first stage no stiffer than this k_p h / E* */
 #define LMVM_STAGE_FACTOR    32.0  /* nor its stages further apart than this factor */
 
@@ -360,13 +361,13 @@ static PetscErrorCode ProblemLMVMConverged(Tao tao, void *ctx)
 }
 
 /* Whether a last stage whose line search failed is at the decrement's
-   round-off floor: its last decrement within LMVM_DECREMENT_FLOOR of the
+   round-off floor: its last decrement within -lmvm_decrement_floor of the
    tolerance. */
 static PetscBool ProblemLMVMAtFloor(const LMVMCtx *l)
 {
   const PetscReal rtol = l->p->sched.decrementRtol;
 
-  return (PetscBool)(l->last && rtol > 0 && l->lambda0 > 0 && l->lambda >= 0 && l->lambda <= LMVM_DECREMENT_FLOOR * rtol * l->lambda0);
+  return (PetscBool)(l->last && rtol > 0 && l->lambda0 > 0 && l->lambda >= 0 && l->lambda <= l->p->opt.decrementFloor * rtol * l->lambda0);
 }
 
 /* TAO's update at the start of each iteration, before the LMVM matrix takes
@@ -415,7 +416,7 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
     if (g0 < 0) g0 = l->G0;
     f0 = l->F0;
     if (*reason == TAO_DIVERGED_LS_FAILURE && ProblemLMVMAtFloor(l)) {
-      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(l->lambda / l->lambda0), (double)LMVM_DECREMENT_FLOOR));
+      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(l->lambda / l->lambda0), (double)p->opt.decrementFloor));
       *reason = TAO_CONVERGED_USER;
       p->res.decrementFloor++;
       break;

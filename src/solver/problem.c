@@ -25,6 +25,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.h0Refresh   = 1;
   p->opt.pairRatio   = 10.0;
   p->opt.lmvmRestarts = 50;
+  p->opt.decrementFloor = 10.0;
   p->opt.decrementRtol = -1.0; /* chosen with the solver (lmvm.c) */
   p->opt.taylorScale = 1e-4;
   p->opt.loadSteps     = 1;
@@ -163,6 +164,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-lmvm_h0_refresh", "-lmvm_h0 contact: recompute the contact part of H0 every this many iterations", NULL, p->opt.h0Refresh, &p->opt.h0Refresh, NULL));
   PetscCall(PetscOptionsInt("-lmvm_restarts", "-lmvm_h0 contact: restart an L-BFGS solve whose line search failed after it lowered the energy, with an empty history, at most this many times", NULL, p->opt.lmvmRestarts, &p->opt.lmvmRestarts, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-lmvm_decrement_rtol", "-lmvm_h0 contact: the last stage stops when the Newton decrement in H0's norm, sqrt(g'H0^-1 g), has fallen by this factor from the first iterate's, instead of by the gradient tolerances (0: off)", "1e-13 where a pair's k_p h / E* exceeds 1e4 and no -tao_gatol, -tao_grtol or -tao_gttol is given, else 0", PETSC_FALSE, &p->opt.decrementRtol, &setDecrement));
+  PetscCall(PetscOptionsReal("-lmvm_decrement_floor", "-lmvm_decrement_rtol: a last stage whose line search fails with the decrement within this factor of the tolerance has reached the decrement's round-off floor and ends converged (JSON lmvm_decrement_floor_stops)", NULL, p->opt.decrementFloor, &p->opt.decrementFloor, NULL));
   PetscCall(PetscOptionsReal("-lmvm_pair_ratio", "-lmvm_h0 contact: drop an L-BFGS correction pair whose curvature y's/s'H0s is not within this factor of H0's (where contact opened or closed along the step; 1e300: keep every pair)", NULL, p->opt.pairRatio, &p->opt.pairRatio, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->opt.taylor, &p->opt.taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->opt.taylorScale, &p->opt.taylorScale, NULL));
@@ -170,7 +172,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->opt.schur, &p->opt.schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
-  PetscCall(PetscOptionsInt("-load_stages", "Load history: every -<body>_bc_<group>_values, -<body>_load_<group>_traction and _pressure gives this many end values per component, stage after stage; each stage ramps linearly from the last one's end in -load_steps increments", NULL, p->opt.loadStages, &p->opt.loadStages, NULL));
+  PetscCall(PetscOptionsInt("-load_stages", "Load history: every -<body>_bc_<group>_values, -<body>_load_<group>_traction and _pressure gives this many end values per component, stage-major: stage 1's components, then stage 2's (x1,y1,x2,y2,...); each stage ramps linearly from the last one's end in -load_steps increments", NULL, p->opt.loadStages, &p->opt.loadStages, NULL));
   PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with Newton where k_p h / E* exceeds 1e7: 2, the first at 1000; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
@@ -204,6 +206,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.h0Refresh >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, p->opt.h0Refresh);
   PetscCheck(p->opt.lmvmRestarts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, p->opt.lmvmRestarts);
   PetscCheck(!setDecrement || (p->opt.decrementRtol >= 0 && p->opt.decrementRtol < 1), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_rtol: must be in [0, 1), got %g", (double)p->opt.decrementRtol);
+  PetscCheck(p->opt.decrementFloor >= 1 && !PetscIsInfOrNanReal(p->opt.decrementFloor), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_floor: must be a finite number >= 1, got %g", (double)p->opt.decrementFloor);
   PetscCheck(p->opt.pairRatio >= 1 && !PetscIsInfOrNanReal(p->opt.pairRatio), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_pair_ratio: must be a finite number >= 1, got %g", (double)p->opt.pairRatio);
   PetscCheck(p->opt.controlMaxIt >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.controlMaxIt);
   PetscCheck(p->opt.controlRtol > 0 && p->opt.controlRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)p->opt.controlRtol);
