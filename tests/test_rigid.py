@@ -157,7 +157,7 @@ def test_balance(rigid):
     assert abs(cx) <= 2e-7 and abs(cy) <= 1e-12
     assert abs(figure("moment", ind["moment"] / P)) <= 1e-9   # frictionless on a circle: every normal through the centre
     assert abs(figure("force", math.hypot(*ind["force"]) / P - 1)) <= 1e-12
-    assert r_ind == ind["force"]
+    assert r_ind == [-f for f in ind["force"]]   # the support's force on it balances the contact's
     bound = math.sqrt(rigid["dofs"]) * rigid["gradient_norm"] + 1000 * EPS * P
     imbalance = figure("imbalance", math.hypot(r_ind[0] + r_block[0], r_ind[1] + r_block[1]) / bound)
     assert imbalance <= 1
@@ -249,7 +249,7 @@ def test_sphere_rz(tmp_path):
     assert abs(dp) <= 0.01 and abs(da) <= 0.01
     assert ball["translation"][0] == 0
     assert ball["force"][0] == 0 and ball["moment"] == 0
-    assert -ball["force"][1] == pytest.approx(s["contact_force"], rel=1e-12)
+    assert ball["force"][1] == pytest.approx(s["contact_force"], rel=1e-12)   # the contact pushes the ball up
 
 
 def test_ssnv104_rigid_plane(tmp_path):
@@ -302,7 +302,7 @@ def test_force_controlled(rigid, tmp_path):
     the force asked (`reaction` = 2.6e-13 to 3.2e-12 in magnitude, bound 1e-10,
     the force control's tolerance), and 2 ranks find the same motion
     (`dt_ranks` = 0 to 4.4e-16 in magnitude, bound 1e-10)."""
-    F = rigid["bodies"]["indenter"]["force"][0]
+    F = -rigid["bodies"]["indenter"]["force"][0]   # the force to apply: the contact's on it, opposite
     args = SCENE + FORCE_TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
                                   "-indenter_bc_back_values", f"{F!r},0", "-output", "none"]
     s = run_contact(args, tmp_path).summary
@@ -326,7 +326,7 @@ def test_force_controlled_rz(tmp_path):
     (`dpmax` = 1.4e-14 to 1.7e-12 in magnitude)."""
     tight = ["-tao_gatol", "1e-11", "-tao_grtol", "0", "-tao_gttol", "0", "-output", "none"]
     d = run_contact(SPHERE + tight, tmp_path, name="disp").summary
-    F = d["bodies"]["ball"]["force"][1]
+    F = -d["bodies"]["ball"]["force"][1]   # the force to apply: the contact's on it, opposite
     s = run_contact(SPHERE + tight + ["-ball_bc_equator_control", "force", "-ball_bc_equator_values", repr(F),
                                       "-flat_bc_bottom_values", "0.01"], tmp_path, name="force").summary
     t = s["bodies"]["ball"]["translation"]
@@ -431,7 +431,7 @@ def test_free_rotation_tilt(formulation, tmp_path):
     print(f"{formulation}: rotation {punch['rotation']:.6e} against -{alpha:.6e}")
     assert abs(figure(f"dalpha_{formulation}", -punch["rotation"] / alpha - 1)) <= 0.03
     assert abs(figure("moment", punch["moment"] / (P * e))) <= 1e-6
-    assert abs(figure("force", -punch["force"][1] / P - 1)) <= 1e-7
+    assert abs(figure("force", punch["force"][1] / P - 1)) <= 1e-7   # the contact pushes the punch up
     orders = figure("order_gradient", s["taylor"]["gradient_order"]), figure("order_hessian", s["taylor"]["hessian_order"])
     assert orders[0] >= 1.9 and orders[1] >= 1.9
 
@@ -495,7 +495,7 @@ def test_force_controlled_plate_on_rubber(tmp_path):
     scene = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts", "-output", "none", "-mesh_size", "0.1",
              "-tao_gatol", "1e-12", "-tao_grtol", "0", "-tao_gttol", "0"]
     d = run_contact(scene, tmp_path, name="disp").summary
-    F = d["bodies"]["plate"]["force"][1]
+    F = -d["bodies"]["plate"]["force"][1]   # the force to apply: the contact's on it, opposite
     s = run_contact(scene + ["-plate_bc_contact_control", "displacement,force", "-plate_bc_contact_values", f"0,{F!r}"],
                     tmp_path, name="force").summary
     t = s["bodies"]["plate"]["translation"]
