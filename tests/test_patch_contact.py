@@ -208,36 +208,37 @@ def errors(s, res):
 @pytest.mark.parametrize("formulation", ["gpts", "mortar"])
 @pytest.mark.parametrize("variant", list(VARIANTS))
 def test_patch_report(variant, formulation, solve):
-    """Each formulation: prints its errors; asserts equilibrium (contact force =
-    reaction at the pushed edge = reaction at the base; x reactions at the two
-    symmetry planes opposite), the interface length, the scene's non-matching
-    meshes, and P = p W to what the formulation reaches (a force lost at the
-    ends or an interface of the wrong length shows in each). Measured over
-    both formulations and the OpenBLAS kernels Prescott, Nehalem,
+    """Each formulation: prints its errors; asserts equilibrium (contact force
+    = reaction at the pushed edge = reaction at the base; x reactions at the
+    two symmetry planes opposite), the interface length, the scene's
+    non-matching meshes, and P = p W to what the formulation reaches (a force
+    lost at the ends or an interface of the wrong length shows in each).
+    Measured over both formulations and the OpenBLAS kernels Prescott, Nehalem,
     Sandybridge, Haswell and SkylakeX:
 
     - each block in equilibrium under the contact force and its supports, to
-      round-off. Flush, y: the solver's residual at gttol 1e-12, `eq_y_flush`
-      = LO to HI EPS of F, bound 2000 EPS; x, where the forces are 0,
-      `eq_x_flush` = LO to HI EPS of F, bound 100 EPS. Sliding: the lower
+      round-off. Flush, y: the solver's residual at gttol 1e-12, `eq_y_flush` =
+      5.5 to 213 EPS of F, bound 2000 EPS; x, where the forces are 0,
+      `eq_x_flush` = 0.14 to 0.78 EPS of F, bound 100 EPS. Sliding: the lower
       block's top overhangs the upper's corner by 2.5e-3, beside it and free
       (src/contact/gap.c, surfaces that end), and Newton stops nearer gttol
-      there; the imbalance is the gradient summed over the block's free
-      dofs, so at most sqrt(n) |g| (bound derived from the stop, plus the
-      flush bound): `eq_y_sliding` = LO to HI and `eq_x_sliding` = LO to HI
-      of F; there the blocks press each other sideways, `fx_sliding` = LO to
-      HI of F;
+      there; the imbalance is the gradient summed over the block's free dofs,
+      so at most sqrt(n) |g| (bound derived from the stop, plus the flush
+      bound): `eq_y_sliding` = 3.7e-14 to 5.1e-12 and `eq_x_sliding` = 3.8e-17
+      to 1.1e-12 of F; there the blocks press each other sideways, `fx_sliding`
+      = 4.1e-5 to 0.00091 of F;
     - the weights (Gauss weights, or nodal A_j) sum to the width W = 1:
-      `length` = LO to HI EPS off, bound 100 EPS;
+      `length` = 0 to 9 EPS off, bound 100 EPS;
     - non-matching meshes: only the two end nodes are shared (to round-off:
-      `ends` = LO to HI EPS of W, bound 100 EPS), no interior pair within 2e-3
-      (`nearest` = LO to HI apart), element sizes about 1:1.6 (20:12 edges);
+      `ends` = 1 to 8.5 EPS of W, bound 100 EPS), no interior pair within 2e-3
+      (`nearest` = 0.0054 apart), element sizes about 1:1.6 (20:12 edges);
     - P = p W: not exact for a formulation that fails the patch test:
-      `force_flush_gpts` = LO to HI, `force_sliding_gpts` = LO to HI (bounds
-      7e-6 and 6e-5); mortar `force_flush_mortar` = LO to HI (bound 7e-6),
-      and sliding `force_sliding_mortar` = LO to HI (bound 1e-3): the lower's
-      slave edge past the upper's corner (2.5e-3 of W) is beside the upper
-      block, not under it, and carries no pressure."""
+      `force_flush_gpts` = 2.6e-6, `force_sliding_gpts` = 2.1e-5 (bounds 7e-6
+      and 6e-5); mortar `force_flush_mortar` = 1.7e-15 to 2.5e-14 (bound 7e-6
+      here; test_patch_exact holds it to 2000 EPS), and sliding
+      `force_sliding_mortar` = 0.00037 (bound 1e-3): the lower's slave edge
+      past the upper's corner (2.5e-3 of W) is beside the upper block, not
+      under it, and carries no pressure."""
     s, res = solve(formulation, variant)
     e = errors(s, res)
     sm = res.summary
@@ -280,14 +281,15 @@ def test_patch_exact(formulation, solve):
     penetration p/k_p at every slave point, displacement and stress of the
     uniform solution at every node, force p W, all to round-off (tolerances).
     Measured over the mortar variants and the OpenBLAS kernels Prescott,
-    Nehalem, Sandybridge, Haswell and SkylakeX: pressure `p` = LO to HI of p
-    and penetration `pen` = LO to HI of p/k_p (bound 5.4e-11: the
-    penetration's scale EPS d / (p/k_p) = 8.4e-13 times 64); stress `sig` =
-    LO to HI of p (bound 1e4 EPS = 2.2e-12); displacement `u` = LO to HI of
-    max |u| (bound 1000 EPS = 2.2e-13); force `force` = LO to HI of p W
-    (bound 2000 EPS = 4.4e-13). The Gauss-point penalty, which fails the
-    patch test (xfail), is off by `gpts_force` = LO to HI in the force and
-    `gpts_p` = LO to HI in the pressure."""
+    Nehalem, Sandybridge, Haswell and SkylakeX: pressure `p` = 8.6e-14 to
+    7.3e-13 of p and penetration `pen` = 3.2e-13 to 7.3e-12 of p/k_p (bound
+    5.4e-11: the penetration's scale EPS d / (p/k_p) = 8.4e-13 times 64);
+    stress `sig` = 4.5e-14 to 2.8e-13 of p (bound 1e4 EPS = 2.2e-12);
+    displacement `u` = 1.8e-15 to 1.4e-14 of max |u| (bound 1000 EPS =
+    2.2e-13); force `force` = 1.1e-15 to 5.4e-14 of p W (bound 2000 EPS =
+    4.4e-13). The Gauss-point penalty, which fails the patch test (xfail), is
+    off by `gpts_force` = 2.6e-6 in the force and `gpts_p` = 0.27 in the
+    pressure."""
     s, res = solve(formulation, "flush")
     e = errors(s, res)
     tol = tolerances(s)

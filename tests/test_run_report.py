@@ -12,11 +12,12 @@ from conftest import ENV, ROOT, figure
 def test_console_reports_l2_error(scene, contact):
     """One line per body with an exact solution: its relative L2 error, the
     JSON summary's l2_error / l2_norm to the printed digits (%.6e: half a unit
-    of the last digit is at most 5e-7 relative: `digits` = LO to HI), and
-    small, as the manufactured solution's at h = 0.2 is: below 1.2e-3
-    (`l2_disc` = LO to HI, `l2_square` = LO to HI, over the OpenBLAS kernels
-    Prescott, Nehalem, Sandybridge, Haswell and SkylakeX). A report of the absolute error,
-    of another body's, or of an error against the wrong exact solution fails."""
+    of the last digit is at most 5e-7 relative: `digits` = 3.1e-8 to 3.5e-8),
+    and small, as the manufactured solution's at h = 0.2 is: below 1.2e-3
+    (`l2_disc` = 0.000439, `l2_square` = 0.000457, over the OpenBLAS kernels
+    Prescott, Nehalem, Sandybridge, Haswell and SkylakeX). A report of the
+    absolute error, of another body's, or of an error against the wrong exact
+    solution fails."""
     r = contact(["-options_file", f"meshes/{scene}/{scene}.opts", "-mesh_size", "0.2"])
     body = r.summary["bodies"][scene]
     lines = re.findall(r"body (\w+): relative L2 error against the exact solution \((\w+)\): (\S+)", r.stdout)
