@@ -47,7 +47,7 @@ typedef struct {
   PetscBool   nodal; /* the samples are the slave surface's nodes (else Gauss points) */
   PetscBool   friction;       /* the pair has Coulomb friction (spec->friction > 0) */
   PetscReal   stickHalfWidth; /* with friction: the stick zone's half-width, from the nodes that stick */
-  PetscReal   shearForce[2];  /* with friction: its force on the slave's body (the pair's force and P are the normal part's) */
+  PetscReal   shearForce[2];  /* with friction: its force on the first surface's body (force, resultant and P are the pressure's) */
   PetscReal   normalLoad, tangentialLoad; /* with friction (rank 0): the pair's whole force (normal part and shear) along the contact zone's normal, and across it (P and Q of Cattaneo-Mindlin) */
   PetscReal   mindlinC;       /* with friction and Hertz in plane strain: Mindlin's stick half-width a sqrt(1 - Q/(mu P)) (0: Q >= mu P, full sliding) */
   PetscBool   done;

@@ -59,6 +59,9 @@ void           BodyRigidSetUnknown(Body, PetscInt q, PetscReal value);
 /* Unknown q's value, and its gradient dPi/dq at the last evaluation (the force, or the moment over L). */
 PetscReal      BodyRigidGetUnknown(const Body, PetscInt q);
 PetscReal      BodyRigidUnknownGradient(const Body, PetscInt q);
+/* The contact's force and moment on the body: minus its unknowns' gradient
+   (a support's reaction is the gradient: the two balance at equilibrium). */
+void           BodyRigidContactForce(const Body, PetscReal f[2], PetscReal *moment);
 /* The derivative of the current position x of a point with respect to
    unknown q: J[q] = (1, 0), (0, 1), or perp(x - c - t) / L. */
 void           BodyRigidJacobian(const Body, const PetscReal x[2], PetscReal J[3][2]);

@@ -186,7 +186,7 @@ def measure_free():
         for f in ("mortar", "gpts"):
             form = ["-contact_formulation", f]
             d = run_checked(HERTZ + form, tmp, f"d{f}").summary
-            F = d["bodies"]["indenter"]["force"][0]
+            F = -d["bodies"]["indenter"]["force"][0]   # the force to apply: minus the contact's on it
             s = run_checked(HERTZ + form + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
                                             "-indenter_bc_back_values", f"{F!r},0"], tmp, f"f{f}").summary
             rows.append(dict(scene=f"rigid-hertz, the disc force-controlled, {f}", dofs=s["dofs"], iterations=s["iterations"],
@@ -201,7 +201,7 @@ def measure_free():
                                   f"{100 * (c['fem_a_moment'] / c['hertz_a'] - 1):+.2f} %; half the race's motion {sym:+.0e}")))
             s = run_checked(TILT + form, tmp, f"t{f}").summary
             rows.append(dict(scene=f"rigid-punch, turning freely under an eccentric force, {f}", dofs=s["dofs"],
-                             iterations=s["iterations"], solve=s["time"]["solve"], P=-s["bodies"]["punch"]["force"][1],
+                             iterations=s["iterations"], solve=s["time"]["solve"], P=s["bodies"]["punch"]["force"][1],
                              ref=f"Johnson's tilt {tilt_angle():.4e}: {-s['bodies']['punch']['rotation'] / tilt_angle() - 1:+.2%}"))
     return rows
 

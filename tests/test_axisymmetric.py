@@ -25,7 +25,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import figure, run_contact
 
 EPS = np.finfo(float).eps
 E, NU = 1000.0, 0.3
@@ -40,15 +40,20 @@ def cylinder(quads, name="cyl", L=1.0, H=2.0, x0=0.0, y0=0.0, h=0.25):
             f"-{name}_E", E, f"-{name}_nu", NU]
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("quads", [0, 1], ids=["tri6", "quad9"])
 def test_cylinder_axial_strain_exact(quads, tmp_path):
     """u, the stresses, the reactions and the energy of a uniaxial stress to
-    round-off. Measured (Quad9): nodal u 2.8e-15 of max |u|, stresses 1.6e-13
-    of E eps, reaction 3e-15 of pi R^2 E eps; bounds 1e-12, 1e-11 (stresses:
-    recovered from gradients, an EPS / h larger), 100 EPS. The axis
-    condition holds u_r = 0 there by itself; its reaction is round-off here
-    because P2 and Q2 hold this field exactly (elsewhere it is the
-    discretisation's error: test_axis_reaction_is_discretisation)."""
+    round-off. Measured over both elements and the five kernels: nodal u
+    `u` = 1.4e-15 to 2.8e-15 of max |u|, stresses `stress` = 2.2e-14 to 6.3e-14
+    of E eps, reactions `reaction` = 4.4e-16 to 1.6e-14 of pi R^2 E eps (the
+    axis's `axis` = 1.7e-17 to 3.8e-16 in magnitude), energy
+    `energy` = 0 to 8.8e-16 in magnitude of F eps H; bounds 1e-12, 1e-11
+    (stresses: recovered from gradients, an EPS / h larger), 1000 EPS (a sum
+    over the edge's nodal forces), 1e-12. The axis condition holds u_r = 0
+    there by itself; its reaction is round-off here because P2 and Q2 hold this
+    field exactly (elsewhere it is the discretisation's error:
+    test_axis_reaction_is_discretisation)."""
     eps, R, H = 0.01, 1.0, 2.0
     args = ["-scene", "cyl"] + cylinder(quads) + ["-cyl_bc", "bottom,top", "-cyl_bc_bottom_components", "y",
                                                    "-cyl_bc_top_components", "y", "-cyl_bc_top_values", eps * H]
@@ -61,13 +66,13 @@ def test_cylinder_axial_strain_exact(quads, tmp_path):
     err = np.max(np.abs(u - exact)) / np.max(np.abs(exact))
     serr = max(np.max(np.abs(st[k] - (E * eps if k == "zz" else 0.0))) for k in st) / (E * eps)
     F = math.pi * R * R * E * eps
-    print(f"u {err:.2e}, stress {serr:.2e}, reactions {s['reactions']}, energy {s['energy']!r}")
+    print(f"reactions {s['reactions']}, energy {s['energy']!r}")
     assert s["axisymmetric"] is True
-    assert err < 1e-12 and serr < 1e-11
-    assert abs(s["reactions"]["cyl:top"][1] - F) < 100 * EPS * F
-    assert abs(s["reactions"]["cyl:bottom"][1] + F) < 100 * EPS * F
-    assert abs(s["reactions"]["cyl:r=0"][0]) < 100 * EPS * F
-    assert abs(s["energy"] - 0.5 * E * eps * eps * math.pi * R * R * H) < 1e-12 * F * eps * H
+    assert figure("u", err) < 1e-12 and figure("stress", serr) < 1e-11
+    rt, rb = s["reactions"]["cyl:top"][1] / F - 1, s["reactions"]["cyl:bottom"][1] / F + 1
+    assert abs(figure("reaction", max(abs(rt), abs(rb)))) < 1000 * EPS
+    assert abs(figure("axis", s["reactions"]["cyl:r=0"][0] / F)) < 1000 * EPS
+    assert abs(figure("energy", (s["energy"] - 0.5 * E * eps * eps * math.pi * R * R * H) / (F * eps * H))) < 1e-12
 
 
 def lame(r, d=0.01, a=1.0, b=2.0):
@@ -82,12 +87,15 @@ def lame(r, d=0.01, a=1.0, b=2.0):
 @pytest.mark.parametrize("quads", [0, 1], ids=["tri6", "quad9"])
 def test_tube_lame(quads, tmp_path):
     """The largest nodal error of u_r against Lame's, relative to d, at
-    h = 0.2, 0.1, 0.05: measured 6.4e-5, 1.5e-5, 1.9e-6 (Tri6; rates 2.1,
-    3.0) and 1.3e-5, 9.5e-7, 6.5e-8 (Quad9; 3.7, 3.9): the last halving's rate
-    at least 2.7 and the error at h = 0.05 below 3 times the measured. The
-    program's own L2 error against -tube_exact lame falls at rate 3 (Tri6:
-    measured 2.74, 2.95), bound: the last rate in [2.7, 3.3]. The hoop stress
-    at the bore (recovered at the nodes) within 1 % of Lame's at h = 0.05."""
+    h = 0.2, 0.1, 0.05: measured `err_tri6` = 1.9e-6 to 6.4e-5 (Tri6; the last
+    halving's rate `rate_tri6` = 3) and `err_quad9` = 6.5e-8 to 1.3e-5 (Quad9;
+    `rate_quad9` = 3.9) over the three sizes and the five kernels: the last
+    halving's rate at least 2.7 and the error at h = 0.05 below 3 times the
+    measured (Tri6 1.9e-6, Quad9 6.5e-8). The program's own L2 error against
+    -tube_exact lame falls at rate 3 (measured `l2rate` = 2.9 to 3, both
+    elements), bound: the last rate in [2.7, 3.3]. The hoop stress at the bore
+    (recovered at the nodes) within 1 % of Lame's at h = 0.05
+    (`hoop` = 5.9e-4 to 7.0e-4)."""
     hs, errs, l2 = (0.2, 0.1, 0.05), [], []
     _, _, (A, B) = lame(1.0)
     for h in hs:
@@ -105,25 +113,30 @@ def test_tube_lame(quads, tmp_path):
     l2rates = [math.log2(l2[i] / l2[i + 1]) for i in range(2)]
     bore = np.abs(X[:, 0] - 1.0) < 1e-12
     herr = np.max(np.abs(hoop[bore] - sh[bore])) / np.max(np.abs(sh[bore]))
-    print(f"nodal errors {errs}, rates {rates}; L2 {l2}, rates {l2rates}; bore hoop stress {herr:.2e}")
+    print(f"nodal errors {errs}, rates {rates}; L2 {l2}, rates {l2rates}")
+    kind = "tri6" if quads == 0 else "quad9"
+    for e in errs:
+        figure(f"err_{kind}", e)
+    figure(f"rate_{kind}", rates[-1]), figure("l2rate", l2rates[-1]), figure("hoop", herr)
     assert rates[-1] >= 2.7
     assert errs[-1] < 3 * (1.9e-6 if quads == 0 else 6.5e-8)
     assert 2.7 <= l2rates[-1] <= 3.3
     assert herr < 0.01
 
 
+@pytest.mark.roundoff
 def test_patch_axisymmetric_mortar(tmp_path):
     """Two stacked cylinders (E 1000, nu 0.2 below; E 2000, nu 0.4 above: the
     same nu / E), Quad9 h = 0.25 against Tri6 h = 0.3, rims free, the top
-    pushed down by d = 0.01, k_p = 1e6: every nodal pressure of both
-    surfaces is p = d / (1/E1 + 1/E2 + 1/k_p) (measured 1.9e-10 relative;
-    bound 1e-8), P = p pi R^2 (measured 4.6e-11; bound 1e-8) and u_r = nu p / E r
-    in both bodies (measured 2.3e-13 of its largest; bound 1e-10). Solved to
-    an absolute gradient of 1e-8, 1.5e-11 of the first (684): gttol 1e-13,
-    asked before, is below the gradient's round-off on some processors (on
-    an AMD EPYC it stalls between 1e-10 and 2.5e-10 and the run ends at
-    TAO's iteration limit), and the default gttol 1e-8 left 1.3e-7 in p on
-    another."""
+    pushed down by d = 0.01, k_p = 1e6: every nodal pressure of both surfaces
+    is p = d / (1/E1 + 1/E2 + 1/k_p) (measured `p` = 9.1e-11 to 4.8e-10
+    relative over the five kernels; bound 1e-8), P = p pi R^2
+    (`P` = 2.4e-11 to 1.0e-10; bound 1e-8) and u_r = nu p / E r in both bodies
+    (`ur` = 2.0e-13 to 7.3e-13 of its largest; bound 1e-10). Solved to an
+    absolute gradient of 1e-8, 1.5e-11 of the first (684): gttol 1e-13, asked
+    before, is below the gradient's round-off on some processors (on an AMD
+    EPYC it stalls between 1e-10 and 2.5e-10 and the run ends at TAO's
+    iteration limit), and the default gttol 1e-8 left 1.3e-7 in p on another."""
     d, kp = 0.01, 1e6
     args = ["-scene", "stack", "-axisymmetric", "-bodies", "low,up",
             "-low_geo", "tests/meshes/plate.geo", "-low_geo_params", "L=1,H=1,quads=1", "-low_mesh_size", 0.25,
@@ -142,29 +155,32 @@ def test_patch_axisymmetric_mortar(tmp_path):
             ex = nu * p / Eb * X[:, 0]
             uerr = max(uerr, np.max(np.abs(u[:, 0] - ex)) / np.max(ex))
     Perr = abs(r.summary["contact_force"] / (p * math.pi) - 1)
-    print(f"pressure {perr:.2e}, P {Perr:.2e}, u_r {uerr:.2e}")
+    figure("p", perr), figure("P", Perr), figure("ur", uerr)
     assert perr < 1e-8 and Perr < 1e-8 and uerr < 1e-10
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", ["mortar", "gpts", "none"])
 def test_taylor_rz(formulation, tmp_path):
-    """The Taylor remainders at the solution of the sphere scene (h = 0.02,
-    the exact contact Hessian): the energy's falls at order 2 (measured
-    2.0000 both; a wrong hoop term in the gradient gives 1), the gradient's
-    at order 2 (measured 1.9999 mortar, 2.0000 gpts). Without contact the
-    energy is quadratic: the gradient's order is 2 and the Hessian's relative
-    remainder round-off (bounds 1e-6 and 1e-7)."""
+    """The Taylor remainders at the solution of the sphere scene (h = 0.02, the
+    exact contact Hessian): the energy's falls at order 2 (measured
+    `order_gradient` = 2 over the three cases and the five kernels; a wrong
+    hoop term in the gradient gives 1), the gradient's at order 2 (measured
+    `order_hessian` = 2 with contact, bounds 1.8 to 2.2). Without contact the
+    energy is quadratic: the gradient's order is 2 (bound 1e-6 off) and the
+    Hessian's relative remainder round-off
+    (`remainder_none` = 4.8e-11 to 4.9e-11, bound 1e-7)."""
     extra = ["-contact_disable"] if formulation == "none" else ["-contact_formulation", formulation,
                                                                  "-contact_hessian", "exact"]
     s = run_contact(SPHERE + ["-mesh_size", 0.02, "-taylor_test"] + extra, tmp_path).summary
     t = s["taylor"]
-    print(formulation, t["gradient_order"], t["hessian_order"], max(t["hessian_relative_remainder"]))
+    figure("order_gradient", t["gradient_order"])
     if formulation == "none":
         assert abs(t["gradient_order"] - 2) < 1e-6
-        assert max(t["hessian_relative_remainder"]) < 1e-7
+        assert figure("remainder_none", max(t["hessian_relative_remainder"])) < 1e-7
     else:
         assert 1.9 <= t["gradient_order"] <= 2.1
-        assert 1.8 <= t["hessian_order"] <= 2.2
+        assert 1.8 <= figure("order_hessian", t["hessian_order"]) <= 2.2
 
 
 def hertz_axis_vm_max(nu, n=20001):
@@ -181,15 +197,16 @@ def hertz_axis_vm_max(nu, n=20001):
 def test_sphere_hertz(h, tmp_path):
     """The sphere scene (a ball R = 1 on a flat, a/R = 0.1) against Hertz from
     its own P: p_max, a (the zone's end) and a from the second moment within
-    1 %, the profile's L2 within 2 %. Measured at the default h = 0.005:
-    -0.22 %, +0.44 %, -0.00 %, 0.78 %; at h = 0.004: -0.22 %, +0.04 %, +0.03 %,
-    1.17 %. Below the contact, on the axis, Hertz's von Mises stress peaks at
-    0.620 p0 at depth 0.48 a for nu = 0.3 (the hoop stress equals the radial
-    there). The flat's nodal maximum is within 1.5 % of it (measured
-    -0.66 % at depth 0.44 a; the nodes are 0.025 a apart) and its depth
-    within 0.1 a. The ball's is 2.6 % low (0.603 p0 at 0.54 a; its own
-    curvature, which Hertz's half-spaces leave out, shifts it): not
-    asserted."""
+    1 %, the profile's L2 within 2 %. Measured over both sizes (the default
+    h = 0.005 and 0.004) and the five kernels: `pmax` = -0.0022,
+    `a` = 4.1e-4 to 0.0044, `a_moment` = 1.2e-5 to 2.7e-4 in magnitude,
+    `l2` = 0.0078 to 0.012. Below the contact, on the axis, Hertz's von Mises
+    stress peaks at 0.620 p0 at depth 0.48 a for nu = 0.3 (the hoop stress
+    equals the radial there). The flat's nodal maximum is within 1.5 % of it
+    (measured `vm` = -0.0054 to -0.0057 at depth `depth` = 0.46 to 0.49 a; the
+    nodes are 0.025 a apart) and its depth within 0.1 a of Hertz's. (The ball's
+    was 2.6 % low, 0.603 p0 at 0.54 a, measured once: its own curvature, which
+    Hertz's half-spaces leave out, shifts it; not asserted.)"""
     r = run_contact(SPHERE + ["-mesh_size", h], tmp_path)
     s = r.summary
     a, p0 = s["hertz_a"], s["hertz_pmax"]
@@ -197,96 +214,109 @@ def test_sphere_hertz(h, tmp_path):
     assert abs(a - (3 * P * 1.0 / (4 * s["E_star"])) ** (1 / 3)) < 1e-12 * a
     assert abs(p0 - 3 * P / (2 * math.pi * a * a)) < 1e-12 * p0
     figs = {"pmax": s["fem_pmax"] / p0 - 1, "a": s["fem_a"] / a - 1, "a_moment": s["fem_a_moment"] / a - 1}
-    print(f"a/R {a:.4f}, P {P:.6g}, {figs}, L2 {s['pressure_l2_error']:.4f}")
+    print(f"a/R {a:.4f}, P {P:.6g}")
     assert 0.08 < a < 0.12
-    assert all(abs(v) <= 0.01 for v in figs.values())
-    assert s["pressure_l2_error"] <= 0.02
+    assert all(abs(figure(k, v)) <= 0.01 for k, v in figs.items())
+    assert figure("l2", s["pressure_l2_error"]) <= 0.02
     vm0, z0 = hertz_axis_vm_max(0.3)
     with r.h5() as f:
         X, vm = f["bodies/flat/geometry"][...], f["bodies/flat/von_mises"][...]
     i = np.argmax(vm)
     print(f"flat: largest von Mises {vm[i] / p0:.4f} p0 at {X[i]}; Hertz {vm0:.4f} p0 at depth {z0:.3f} a")
-    assert abs(vm[i] / (vm0 * p0) - 1) < 0.015
-    assert abs(-X[i, 1] / a - z0) < 0.1 and X[i, 0] < 0.1 * a
+    assert abs(figure("vm", vm[i] / (vm0 * p0) - 1)) < 0.015
+    assert abs(figure("depth", -X[i, 1] / a) - z0) < 0.1 and X[i, 0] < 0.1 * a
 
 
+@pytest.mark.roundoff
 def test_sphere_ranks(tmp_path):
-    """1 and 2 ranks give the same answer: P, p_max, a (edge and second
-    moment) and the energy to 1e-11 relative (measured 7.7e-14, 2.4e-12 to
-    3.7e-12, 1.4e-16, 2.9e-13, 5.7e-16), and the profile's relative L2 error
-    against Hertz, itself a relative figure, to 4e-12 (measured 1.3e-13 to
-    1.4e-12)."""
-    one = run_contact(SPHERE, tmp_path, name="one").summary
-    two = run_contact(SPHERE, tmp_path, ranks=2, name="two").summary
+    """1 and 2 ranks give the same answer, both solved to gttol 1e-12 so that
+    the stop adds nothing: P, a (edge and second moment) and the energy to
+    1e-11 relative (measured over the five kernels
+    `contact_force` = 1.3e-13 to 1.1e-12 in magnitude,
+    `fem_a` = 1.4e-16 to 1.1e-15 in magnitude,
+    `fem_a_moment` = 6.1e-14 to 6.2e-13 in magnitude,
+    `energy` = 2.9e-16 to 2.0e-15 in magnitude), p_max, a nodal peak and the
+    most sensitive, to 2e-11 (`fem_pmax` = 1.1e-12 to 5.8e-12 in magnitude),
+    and the profile's relative L2 error against Hertz, itself a relative
+    figure, to 4e-12 (`pressure_l2_error` = 6.7e-14 to 5.1e-13 in magnitude)."""
+    one = run_contact(SPHERE + ["-tao_gttol", "1e-12"], tmp_path, name="one").summary
+    two = run_contact(SPHERE + ["-tao_gttol", "1e-12"], tmp_path, ranks=2, name="two").summary
     for k in ("contact_force", "fem_pmax", "fem_a", "fem_a_moment", "pressure_l2_error", "energy"):
-        print(k, one[k], two[k], f"{abs(one[k] - two[k]) / abs(one[k]):.2e}")
+        print(k, one[k], two[k])
         if k == "pressure_l2_error":
-            assert abs(one[k] - two[k]) <= 4e-12
+            assert abs(figure(k, one[k] - two[k])) <= 4e-12
         else:
-            assert abs(one[k] - two[k]) <= 1e-11 * abs(one[k])
+            assert abs(figure(k, (one[k] - two[k]) / abs(one[k]))) <= (2e-11 if k == "fem_pmax" else 1e-11)
 
 
 def test_sphere_accuracy(tmp_path):
-    """-accuracy 0.01 on the sphere scene reaches its target, and its answer
-    is within 1 % of Hertz in p_max and the second-moment a (measured 3
-    steps, -0.19 %, +0.03 %)."""
+    """-accuracy 0.01 on the sphere scene reaches its target
+    (`estimate` = 0.0099 to 0.01, in `steps` = 3 steps; not asserted), and its
+    answer is within 1 % of Hertz in p_max and the second-moment a (measured
+    `pmax` = -0.0019, `a_moment` = 3.2e-4 to 3.3e-4 over the five kernels)."""
     s = run_contact(SPHERE + ["-accuracy", 0.01], tmp_path).summary
-    print(s["error_estimate"], len(s["adapt_steps"]), s["fem_pmax"] / s["hertz_pmax"] - 1, s["fem_a_moment"] / s["hertz_a"] - 1)
-    assert s["error_estimate"] <= 0.01
-    assert abs(s["fem_pmax"] / s["hertz_pmax"] - 1) <= 0.01
-    assert abs(s["fem_a_moment"] / s["hertz_a"] - 1) <= 0.01
+    figure("steps", len(s["adapt_steps"]))
+    assert figure("estimate", s["error_estimate"]) <= 0.01
+    assert abs(figure("pmax", s["fem_pmax"] / s["hertz_pmax"] - 1)) <= 0.01
+    assert abs(figure("a_moment", s["fem_a_moment"] / s["hertz_a"] - 1)) <= 0.01
 
 
 def test_ssnv104(tmp_path):
     """code_aster's SSNV104 as one sphere against its plane of symmetry (a flat
     10^4 times stiffer). Against Hertz from the computed P: p_max and the
-    second-moment a within 1 %, the L2 within 2 % (measured -0.06 %, -0.23 %,
-    1.42 %). Against the reference from the approach (a = 10, p0 = 2798.3):
-    within 5 % (measured +3.8 %, +4.0 %): the equator of a hemisphere is not
-    Hertz's distant point, and the finite sphere is stiffer than the
-    half-space (the approach that gives the computed P is 2.16, not 2)."""
+    second-moment a within 1 %, the L2 within 2 % (measured `pmax` = -6.3e-4,
+    `a_moment` = -0.0023, `l2` = 0.014 over the five kernels). Against the
+    reference from the approach (a = 10, p0 = 2798.3): within 5 % (measured
+    `pmax_ref` = 0.04, `a_ref` = 0.038): the equator of a hemisphere is not
+    Hertz's distant point, and the finite sphere is stiffer than the half-space
+    (the approach that gives the computed P, a^2 / R from its Hertz a, is
+    `approach` = 2.16, not 2)."""
     s = run_contact(SSNV104, tmp_path).summary
     a, p0 = s["hertz_a"], s["hertz_pmax"]
     print(s["contact_force"], a, p0, s["fem_a_moment"], s["fem_pmax"], s["pressure_l2_error"])
-    assert abs(s["fem_pmax"] / p0 - 1) <= 0.01 and abs(s["fem_a_moment"] / a - 1) <= 0.01
-    assert s["pressure_l2_error"] <= 0.02
-    assert abs(s["fem_a_moment"] / 10.0 - 1) <= 0.05 and abs(s["fem_pmax"] / 2798.3 - 1) <= 0.05
+    assert abs(figure("pmax", s["fem_pmax"] / p0 - 1)) <= 0.01 and abs(figure("a_moment", s["fem_a_moment"] / a - 1)) <= 0.01
+    assert figure("l2", s["pressure_l2_error"]) <= 0.02
+    figure("approach", a * a / s["R_star"])
+    assert abs(figure("a_ref", s["fem_a_moment"] / 10.0 - 1)) <= 0.05 and abs(figure("pmax_ref", s["fem_pmax"] / 2798.3 - 1)) <= 0.05
 
 
 def test_axis_declared_does_no_harm(tmp_path):
     """A scene that declares u_r = 0 on the axis itself (-ball_bc equator,axis
     with the axis group's x held at 0) gets the same answer as one that
-    leaves it to the program: the same dofs and P to 1e-12 (measured equal
-    to the last digit); the program's own condition then holds no point of
-    that group (no "r=0" reaction for the ball)."""
+    leaves it to the program: the same dofs and P to 1e-12 (measured `dP` =
+    0 over the five kernels: the same equations, solved alike); the
+    program's own condition then holds no point of that group (no "r=0"
+    reaction for the ball)."""
     base = SPHERE + ["-mesh_size", 0.02]
     auto = run_contact(base, tmp_path, name="auto").summary
     own = run_contact(base + ["-ball_bc", "equator,axis", "-ball_bc_axis_components", "x"], tmp_path, name="own").summary
     print(auto["contact_force"], own["contact_force"], sorted(own["reactions"]))
     assert own["dofs"] == auto["dofs"]
-    assert abs(own["contact_force"] - auto["contact_force"]) <= 1e-12 * auto["contact_force"]
+    assert abs(figure("dP", own["contact_force"] / auto["contact_force"] - 1)) <= 1e-12
     assert "ball:r=0" not in own["reactions"] and "ball:r=0" in auto["reactions"]
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("h", [0.02, 0.005], ids=["coarse", "default"])
 def test_sphere_force_axial(h, tmp_path):
-    """In r-z the pair's force is axial: a ring's radial load points along
-    (cos th, sin th) round the circle and has no resultant (the hoop stress
-    carries it). The JSON's pair and surface forces have the radial
-    component exactly 0; the axial one is P, balances the equator's
-    reaction, the ball's only axial support (the axis holds u_r alone):
-    measured 4.4e-10 of P at h = 0.02 and 4.3e-6 at 0.005, the stopping
-    residual (bound 1e-4), and is minus the flat's (100 EPS). The HDF5's
-    nodal forces sum to it but for the force on the ball's node on the axis,
-    which has no row (the profile starts at the next node, its weighted gap
-    being 0 / 0): measured 8.0e-8 of P at h = 0.02, 3.7e-10 at 0.005, bound
-    1e-5. The nodes keep their own radial forces, which sum to the rings'
-    radial load: the flat's face dented to the slope r / 2R (equal materials
-    share Hertz's approach r^2 / 2R), so sum p n_r dA = 3 pi a / (32 R) P
-    against the ball, 3.0 % of P (measured -2.9840 % of P at h = 0.02 against
-    -2.9843 %, and -2.9709 % against -2.9873 % at 0.005; bound 5 % of it):
-    the radial force the report and the JSON gave the pair before,
-    (-0.0227, 0.7645) at the default h. The report prints the axial force alone."""
+    """In r-z the pair's force is axial: a ring's radial load points along (cos
+    th, sin th) round the circle and has no resultant (the hoop stress carries
+    it). The JSON's pair and surface forces have the radial component exactly
+    0; the axial one is P, balances the equator's reaction, the ball's only
+    axial support (the axis holds u_r alone), to what the stop allows: sqrt(n)
+    ||g|| (the ball's energy is invariant under its axial translation;
+    test_robustness) plus 1000 EPS of P (measured `balance` = 0.012 to 0.018 of
+    that bound over both sizes and the five kernels), and is minus the flat's
+    (100 EPS). The HDF5's nodal forces sum to it but for the force on the
+    ball's node on the axis, which has no row (the profile starts at the next
+    node, its weighted gap being 0 / 0): measured
+    `node_sum` = 3.7e-10 to 8.0e-8 of P, bound 1e-5. The nodes keep their own
+    radial forces, which sum to the rings' radial load: the flat's face dented
+    to the slope r / 2R (equal materials share Hertz's approach r^2 / 2R), so
+    sum p n_r dA = 3 pi a / (32 R) P against the ball, 3.0 % of P (measured
+    `radial` = -9.0e-5 to -0.0055 from it; bound 5 % of it): the radial force
+    the report and the JSON gave the pair before. The report prints the axial
+    force alone."""
     r = run_contact(SPHERE + ["-mesh_size", h], tmp_path)
     s = r.summary
     pair, P, a = s["contact"]["interface"], s["contact_force"], s["hertz_a"]
@@ -300,9 +330,10 @@ def test_sphere_force_axial(h, tmp_path):
     assert P == pytest.approx(abs(fz), rel=100 * EPS)
     assert [x["body"] for x in pair["surfaces"]] == ["ball", "flat"]
     assert pair["surfaces"][0]["force"][1] == fz and abs(pair["surfaces"][1]["force"][1] + fz) <= 100 * EPS * P
-    assert abs(fz + s["reactions"]["ball:equator"][1]) <= 1e-4 * P
-    assert abs(fz - F[1]) <= 1e-5 * P
-    assert abs(F[0] / P / (-3 * math.pi * a / 32) - 1) <= 0.05
+    bound = math.sqrt(s["dofs"]) * s["gradient_norm"] + 1000 * EPS * P
+    assert figure("balance", abs(fz + s["reactions"]["ball:equator"][1]) / bound) <= 1
+    assert figure("node_sum", abs(fz - F[1]) / P) <= 1e-5
+    assert abs(figure("radial", F[0] / P / (-3 * math.pi * a / 32) - 1)) <= 0.05
     line = next(ln for ln in r.stdout.splitlines() if "contact force on ball" in ln)
     assert line.split(":", 1)[1].split(",")[0].strip() == f"axial {fz:.6e}", line
 
@@ -317,20 +348,21 @@ def flat_pressed(h):
 
 
 def test_axis_reaction_is_discretisation(tmp_path):
-    """The reaction of u_r = 0 on the axis (JSON "flat:r=0") is not
-    round-off but the discretisation's error in the radial balance at the
-    axis nodes: there the FE radial equation is int (sigma_rr dN/dr +
-    sigma_rz dN/dz) 2 pi r dA + int sigma_hoop N 2 pi dA, which the exact
-    stresses make 0 (radial equilibrium, integrated by parts; no line load
-    acts on the axis), and which the FE stresses leave as the reaction. The
-    radial forces K u at the axis nodes, reassembled independently
-    (tests/fe_reference.py, from the HDF5's displacement), sum to the JSON's
-    reaction (measured 7e-17 of P; bound 1e-12 of P); their hoop parts alone
-    are 15 and 40 times larger at h = 0.005 and 0.0025 (bound 5); the
-    reaction is far above round-off (measured 6.1e-4 and 1.25e-4 of P = 10 pi
-    / 4; bound 1e-8 of P) and falls under refinement at about order 2 (4.9
-    times from h = 0.005 to 0.0025, rate 2.3; bound 3 times). docs/scenes.md
-    (the axis reaction) has the sphere's figures."""
+    """The reaction of u_r = 0 on the axis (JSON "flat:r=0") is not round-off
+    but the discretisation's error in the radial balance at the axis nodes:
+    there the FE radial equation is int (sigma_rr dN/dr + sigma_rz dN/dz) 2 pi
+    r dA + int sigma_hoop N 2 pi dA, which the exact stresses make 0 (radial
+    equilibrium, integrated by parts; no line load acts on the axis), and which
+    the FE stresses leave as the reaction. The radial forces K u at the axis
+    nodes, reassembled independently (tests/fe_reference.py, from the HDF5's
+    displacement), sum to the JSON's reaction (measured
+    `reassembled` = 6.8e-17 to 3.8e-16 of P over both sizes and the five
+    kernels; bound 1e-12 of P); their hoop parts alone are `hoop` = 15 to 40
+    times larger at h = 0.005 and 0.0025 (bound 5); the reaction is far above
+    round-off (measured `reaction` = 1.3e-4 to 6.1e-4 of P = 10 pi / 4; bound
+    1e-8 of P) and falls under refinement at about order 2 (`ratio` = 4.87
+    times from h = 0.005 to 0.0025; bound 3 times). docs/scenes.md (the axis
+    reaction) has the sphere's figures."""
     from fe_reference import internal_forces_rz
     P, reaction = 10 * math.pi * 0.25, []
     for h in (0.005, 0.0025):
@@ -343,24 +375,23 @@ def test_axis_reaction_is_discretisation(tmp_path):
         R = r.summary["reactions"]["flat:r=0"][0]
         print(f"h {h}: r=0 reaction {R!r} ({R / P:.2e} of P), reassembled {F[axis, 0].sum()!r}, "
               f"hoop parts {hoop[axis].sum()!r}")
-        assert abs(F[axis, 0].sum() - R) <= 1e-12 * P
-        assert abs(hoop[axis].sum()) >= 5 * abs(R)
-        assert abs(R) >= 1e-8 * P
+        assert figure("reassembled", abs(F[axis, 0].sum() - R) / P) <= 1e-12
+        assert figure("hoop", abs(hoop[axis].sum() / R)) >= 5
+        assert abs(figure("reaction", R / P)) >= 1e-8
         reaction.append(R)
-    print(f"ratio {reaction[0] / reaction[1]:.3f}, rate {math.log2(reaction[0] / reaction[1]):.2f}")
-    assert reaction[0] / reaction[1] >= 3
+    assert figure("ratio", reaction[0] / reaction[1]) >= 3
 
 
 def test_load_resultant_axial(tmp_path):
-    """A load's resultant in r-z is axial too: a pressure p = 1 on the
-    ball's free arc (polar angles 30 to 90 degrees from the axis, r from 0.5
-    to 1) pushes along z by p pi (1 - 0.5^2) (the area it projects on the
-    plane z = const; measured exact to the last bit, bound 1e-12), and the
-    JSON's radial component is exactly 0, where the sum of the load's
-    radial nodal forces (its rings' radial load, -4.65 here, no resultant
-    round the circle) was written before."""
+    """A load's resultant in r-z is axial too: a pressure p = 1 on the ball's
+    free arc (polar angles 30 to 90 degrees from the axis, r from 0.5 to 1)
+    pushes along z by p pi (1 - 0.5^2) (the area it projects on the plane
+    z = const; measured `axial` = 0 to 6.7e-16 in magnitude of it over the five
+    kernels, bound 1e-12), and the JSON's radial component is exactly 0, where
+    the sum of the load's radial nodal forces (its rings' radial load, -4.65
+    here, no resultant round the circle) was written before."""
     s = run_contact(SPHERE + ["-mesh_size", 0.02, "-ball_load", "free", "-ball_load_free_pressure", 1], tmp_path).summary
     f = s["loads"]["ball:free"]
     print(f, math.pi * 0.75)
     assert f[0] == 0
-    assert abs(f[1] - math.pi * 0.75) <= 1e-12 * math.pi
+    assert abs(figure("axial", f[1] / (math.pi * 0.75) - 1)) <= 1e-12

@@ -13,19 +13,27 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, run_contact
+import numpy as np
+
+from conftest import ROOT, figure, run_contact
 from rigid_study import PUNCH, sadowsky_l2, stiff_options
 
 SCENE = ["-options_file", "meshes/rigid-hertz/rigid-hertz.opts"]
 SPHERE = ["-options_file", "meshes/rigid-sphere/rigid-sphere.opts"]
 ROLLER = ["-options_file", "meshes/rigid-roller/rigid-roller.opts"]
+# a stop tight enough that it adds nothing to a comparison of two runs (the
+# fixture's P moves by 1.8e-10 from the default stop's, one Newton step more)
+TIGHT = ["-tao_gttol", "1e-12"]
+FORCE_TIGHT = TIGHT + ["-force_control_rtol", "1e-11"]
+EPS = np.finfo(float).eps
 
 
 @pytest.fixture(scope="module")
 def rigid_run(tmp_path_factory):
-    """The scene as given (mortar; the elastic block is the slave)."""
+    """The scene as given (mortar; the elastic block is the slave), solved to
+    the tight stop the runs compared with it use too."""
     tmp = tmp_path_factory.mktemp("rigid")
-    return run_contact(SCENE, tmp)
+    return run_contact(SCENE + TIGHT, tmp)
 
 
 @pytest.fixture(scope="module")
@@ -39,102 +47,133 @@ def hertz_errors(s):
 
 @pytest.mark.parametrize("formulation", ["mortar", "gpts"])
 def test_hertz(formulation, rigid, tmp_path):
-    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 - nu^2)
-    (the block's alone: 1098.9), at a / h of 10: p_max within 1 % and the
-    second-moment half-width within 1 % (measured mortar -0.33 % and +0.41 %,
-    gpts +0.43 % and -0.36 %)."""
+    """A rigid cylinder in an elastic block matches Hertz with E* = E / (1 -
+    nu^2) (the block's alone: 1098.9), at a / h of 10: p_max and the
+    second-moment half-width within 1 % of it (measured mortar
+    `dp_mortar` = -0.0033 and `da_mortar` = 0.0041, gpts `dp_gpts` = 0.0043 and
+    `da_gpts` = -0.0036 over the five kernels)."""
     s = rigid if formulation == "mortar" else run_contact(SCENE + ["-contact_formulation", formulation, "-output", "none"], tmp_path).summary
     assert s["E_star"] == pytest.approx(1000 / (1 - 0.3 ** 2), rel=1e-12)
     dp, da = hertz_errors(s)
-    print(f"{formulation}: p_max {dp:+.2%}, a {da:+.2%}")
+    figure(f"dp_{formulation}", dp), figure(f"da_{formulation}", da)
     assert abs(dp) <= 0.01 and abs(da) <= 0.01
 
 
 def test_rigid_slave(tmp_path):
     """The rigid surface as mortar's slave (-contact_mortar_slave first; the
-    automatic choice takes the softer body, the block): p_max within 2 % and
-    the half-width within 2 % of Hertz (measured +1.45 % and -1.41 %). A
-    rigid slave finer than its master oscillates (its nodes ask more than
-    the master's can give): at the disc's hc = 0.0038, p_max +13.9 %."""
+    automatic choice takes the softer body, the block): p_max and the
+    half-width within 3 % of Hertz (measured `dp` = 0.014 and `da` = -0.014
+    over the five kernels; the bound twice the larger), looser than the block
+    as slave's 1 % (test_hertz). A rigid slave finer than its master oscillates
+    (its nodes ask more than the master's can give: at the disc's hc = 0.0038
+    p_max came out 13.9 % high, measured once, not run here)."""
     s = run_contact(SCENE + ["-contact_mortar_slave", "first", "-output", "none"], tmp_path).summary
     dp, da = hertz_errors(s)
-    print(f"rigid slave: p_max {dp:+.2%}, a {da:+.2%}")
-    assert abs(dp) <= 0.02 and abs(da) <= 0.02
+    figure("dp", dp), figure("da", da)
+    assert abs(dp) <= 0.03 and abs(da) <= 0.03
 
 
 def test_stiff_limit(rigid, tmp_path):
     """The rigid answer is the limit of the elastic disc made stiffer: at
-    E = 1e8 (1e5 times the block's) P is 1.46e-5 from the rigid one, at
-    1e10 4.7e-7, the O(1/E) of the disc's own compliance (bounds 4e-5 and
-    2e-6); p_max alike (1.28e-5, 7.3e-7). The rigid disc has no dofs: 6672
-    against 14028."""
-    for E, bound in ((1e8, 4e-5), (1e10, 2e-6)):
-        s = run_contact(["-options_file", stiff_options(tmp_path, E), "-output", "none"], tmp_path, name=f"E{E:g}").summary
-        dP = rigid["contact_force"] / s["contact_force"] - 1
-        dp = rigid["fem_pmax"] / s["fem_pmax"] - 1
-        print(f"E = {E:g}: P {dP:.2e}, p_max {dp:.2e}; dofs {rigid['dofs']} against {s['dofs']}")
+    E = 1e8 (1e5 times the block's) P is `dP_1e8` = 1.5e-5 from the rigid one,
+    at 1e10 `dP_1e10` = 4.7e-7, the O(1/E) of the disc's own compliance and the
+    stiff disc's solve (bounds 4e-5 and 2e-6); p_max alike (`dp_1e8` = 1.3e-5,
+    `dp_1e10` = 7.3e-7). The rigid disc has no dofs: `dofs_rigid` = 6672
+    against `dofs_elastic` = 14028."""
+    for E, bound in (("1e8", 4e-5), ("1e10", 2e-6)):
+        s = run_contact(["-options_file", stiff_options(tmp_path, float(E)), "-output", "none"], tmp_path, name=f"E{E}").summary
+        dP = figure(f"dP_{E}", rigid["contact_force"] / s["contact_force"] - 1)
+        dp = figure(f"dp_{E}", rigid["fem_pmax"] / s["fem_pmax"] - 1)
         assert abs(dP) <= bound and abs(dp) <= bound
+    figure("dofs_rigid", rigid["dofs"]), figure("dofs_elastic", s["dofs"])
     assert rigid["dofs"] < s["dofs"] / 2
 
 
-def test_motion_given_to_the_rigid_body(rigid, tmp_path):
-    """The same relative motion given to the rigid disc (translated by
-    +0.0095) with the block held gives the same answer: P to the solver's
-    stop (measured 1.6e-10, bound 1e-8)."""
-    s = run_contact(SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "0.0095,0", "-output", "none"], tmp_path).summary
-    d = s["contact_force"] / rigid["contact_force"] - 1
-    print(f"P {d:.2e}; the disc's translation {s['bodies']['indenter']['translation']}")
-    assert s["bodies"]["indenter"]["translation"] == [0.0095, 0]
-    assert abs(d) <= 1e-8
+@pytest.mark.roundoff
+def test_motion_given_to_the_rigid_body(rigid_run, tmp_path):
+    """The same relative motion given to the rigid disc (translated by +0.0095)
+    with the block held gives the same answer, both solved to gttol 1e-12: P
+    `dP` = -1.8e-11 to -2.2e-11 apart over the five kernels (bound 1e-10), and
+    the block's displacement is the fixture's plus the disc's 0.0095 in x (the
+    same state seen from the disc; largest difference `du` = 1.9e-12 of 0.0095,
+    bound 1e-9: a translation applied to the rigid body's outline but not to
+    its contact, or twice, shows)."""
+    r = run_contact(SCENE + TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_values", "0.0095,0"], tmp_path)
+    d = figure("dP", r.summary["contact_force"] / rigid_run.summary["contact_force"] - 1)
+    with r.h5() as f, rigid_run.h5() as g:
+        u, u0 = f["bodies/block/displacement"][...], g["bodies/block/displacement"][...]
+    du = figure("du", np.abs(u - u0 - [0.0095, 0]).max() / 0.0095)
+    assert abs(d) <= 1e-10
+    assert du <= 1e-9
 
 
-def test_rotation_about_centre(rigid, tmp_path):
+@pytest.mark.roundoff
+def test_rotation_about_centre(rigid_run, tmp_path):
     """A circle turned about its centre is the same circle: the rigid disc
-    rotated by 0.05 rad about (-1, 0) gives the same P to the solver's stop
-    (its nodes move along the arc, which their quadratic edges follow:
-    measured 1.4e-9, bound 1e-8), and the contact's moment about the centre
-    is nil beside P R (frictionless: every normal passes through the centre;
-    measured 6.9e-10, bound 1e-8)."""
-    s = run_contact(SCENE + ["-indenter_rigid_centre", "-1,0", "-indenter_rigid_rotation", "0.05", "-output", "none"], tmp_path).summary
+    rotated by 0.05 rad about (-1, 0) gives the same P, both solved to gttol
+    1e-12 (its nodes move along the arc, which their quadratic edges follow:
+    measured `dP` = -1.4e-9 over the five kernels, bound 1e-8), and the
+    contact's moment about the centre is nil beside P R (frictionless: every
+    normal passes through the centre; measured `moment` = -6.9e-10, bound
+    1e-8). The outline the HDF5 holds is the fixture's turned by 0.05 about
+    (-1, 0) (largest distance `turned` = 2.2e-16 of R, bound 1e-12): the
+    rotation was applied, not only reported."""
+    r = run_contact(SCENE + TIGHT + ["-indenter_rigid_centre", "-1,0", "-indenter_rigid_rotation", "0.05"], tmp_path)
+    s = r.summary
     ind = s["bodies"]["indenter"]
-    d = s["contact_force"] / rigid["contact_force"] - 1
-    m = ind["moment"] / (s["contact_force"] * 1.0)
-    print(f"P {d:.2e}, moment / (P R) {m:.2e}, rotation {ind['rotation']}")
-    assert ind["rotation"] == 0.05 and ind["centre"] == [-1, 0]
+    d = figure("dP", s["contact_force"] / rigid_run.summary["contact_force"] - 1)
+    m = figure("moment", ind["moment"] / (s["contact_force"] * 1.0))
+    with r.h5() as f, rigid_run.h5() as g:
+        x, x0 = f["bodies/indenter/line_x"][()].reshape(-1, 2), g["bodies/indenter/line_x"][()].reshape(-1, 2)
+    c, sn = math.cos(0.05), math.sin(0.05)
+    turned = np.stack([-1 + c * (x0[:, 0] + 1) - sn * x0[:, 1], sn * (x0[:, 0] + 1) + c * x0[:, 1]], 1)
+    e = figure("turned", np.abs(x - turned).max())
     assert abs(d) <= 1e-8
     assert abs(m) <= 1e-8
+    assert e <= 1e-12
 
 
+@pytest.mark.roundoff
 def test_balance(rigid):
     """The rigid body's force is the contact's (its reaction, through the
-    condition that holds it), to round-off; its default reference point is
-    the circle's centre (the curves' centroid by length, whatever the
-    grading: x 4.8e-8 off, the quadratic edges' departure from the circle,
-    bound 2e-7; y 1.2e-15, bound 1e-12), about which the contact's moment is
-    nil (measured 6.7e-12 of P, bound 1e-9); and the block's support carries
-    it back to the solver's stop (the block's residual: measured 1.8e-10 of
-    P, bound 1e-9)."""
+    condition that holds it), to round-off (`force` = 0 of P, bound 1e-12); its
+    default reference point is the circle's centre (the curves' centroid by
+    length, whatever the grading: x `centre_x` = 4.8e-8 off, the quadratic
+    edges' departure from the circle, bound 2e-7; y `centre_y` = -1.2e-15,
+    bound 1e-12), about which the contact's moment is nil (`moment` = -6.7e-12
+    of P, bound 1e-9: every normal passes through the centre); and the block's
+    support carries it back to what the solver's stop allows: the block's
+    energy is invariant under its translation, so the imbalance is a sum of the
+    gradient over the block's free dofs, at most sqrt(n) ||g||
+    (test_robustness) plus 1000 EPS of P for the sums (measured
+    `imbalance` = 0.0072 to 0.019 of that bound over the five kernels)."""
     P = rigid["contact_force"]
     ind = rigid["bodies"]["indenter"]
     r_ind, r_block = rigid["reactions"]["indenter:back"], rigid["reactions"]["block:push"]
     print(ind, r_ind, r_block)
     assert ind["rigid"] and ind["dofs"] == 0
     # the default reference point, the curves' centroid by length: the circle's centre (the mesh is graded)
-    assert abs(ind["centre"][0] + 1) <= 2e-7 and abs(ind["centre"][1]) <= 1e-12
-    assert abs(ind["moment"]) <= 1e-9 * P   # frictionless on a circle: every normal through the centre
-    assert math.hypot(*ind["force"]) == pytest.approx(P, rel=1e-12)
-    assert r_ind == ind["force"]
-    assert abs(r_ind[0] + r_block[0]) <= 1e-9 * P and abs(r_ind[1] + r_block[1]) <= 1e-9 * P
+    cx, cy = figure("centre_x", ind["centre"][0] + 1), figure("centre_y", ind["centre"][1])
+    assert abs(cx) <= 2e-7 and abs(cy) <= 1e-12
+    assert abs(figure("moment", ind["moment"] / P)) <= 1e-9   # frictionless on a circle: every normal through the centre
+    assert abs(figure("force", math.hypot(*ind["force"]) / P - 1)) <= 1e-12
+    assert r_ind == [-f for f in ind["force"]]   # the support's force on it balances the contact's
+    bound = math.sqrt(rigid["dofs"]) * rigid["gradient_norm"] + 1000 * EPS * P
+    imbalance = figure("imbalance", math.hypot(r_ind[0] + r_block[0], r_ind[1] + r_block[1]) / bound)
+    assert imbalance <= 1
 
 
+@pytest.mark.roundoff
 def test_ranks(rigid, tmp_path):
-    """2 ranks give the 1-rank answer: P and p_max to 1e-11 (measured 4.6e-13
-    and 2.8e-15)."""
-    s = run_contact(SCENE, tmp_path, ranks=2).summary
-    for k in ("contact_force", "fem_pmax"):
-        print(k, s[k] / rigid[k] - 1)
-        assert s[k] == pytest.approx(rigid[k], rel=1e-11)
-    assert s["bodies"]["indenter"]["force"][0] == pytest.approx(rigid["bodies"]["indenter"]["force"][0], rel=1e-11)
+    """2 ranks give the 1-rank answer, both solved to gttol 1e-12: P, p_max and
+    the disc's force in x `dP` = 2.0e-14 to 5.7e-13 in magnitude,
+    `dpmax` = 1.1e-15 to 7.7e-15 in magnitude and
+    `dF` = 2.0e-14 to 5.7e-13 in magnitude apart over the five kernels, bound
+    1e-11."""
+    s = run_contact(SCENE + TIGHT, tmp_path, ranks=2).summary
+    for k, name in (("contact_force", "dP"), ("fem_pmax", "dpmax")):
+        assert abs(figure(name, s[k] / rigid[k] - 1)) <= 1e-11
+    assert abs(figure("dF", s["bodies"]["indenter"]["force"][0] / rigid["bodies"]["indenter"]["force"][0] - 1)) <= 1e-11
 
 
 @pytest.mark.parametrize("scene,args,words", [
@@ -174,50 +213,57 @@ def test_no_curves(tmp_path):
 
 @pytest.mark.parametrize("slave", ["auto", "second"])
 def test_punch_sadowsky(slave, tmp_path):
-    """A rigid flat punch (its four sides alone, square corners) pressed into
-    a soft block: the slave's pressure within 3 % of Sadowsky's over
-    |x| < 0.6 b, either slave (auto: the punch, whose face ends on the
-    block, measured 0.85 %; the block, 0.39 %), and the two P within 0.5 %
-    of each other (measured 0.15 %). The elastic punch at E = 1e5 to 1e7
-    solved to gttol 1e-14 tends to the rigid P (0.150262, 0.150320,
-    0.150326 against 0.150331); at the default stop the E = 1e7 punch ends
-    at 0.151127, its gradient dominated by the stiff punch's residual."""
+    """A rigid flat punch (its four sides alone, square corners) pressed into a
+    soft block: the slave's pressure within 3 % of Sadowsky's over |x| < 0.6 b,
+    either slave (auto: the punch, whose face ends on the block,
+    `sadowsky_auto` = 0.0085; the block, `sadowsky_second` = 0.0039 over the
+    five kernels). P is a regression pin: 0.150331 is the program's own rigid P
+    (auto slave) when this test was written, held to 0.5 % (measured
+    `dP_auto` = 1.1e-6 and `dP_second` = -0.0015 from it); no closed form gives
+    the force of a punch pushed by a displacement into a finite block. (An
+    elastic punch at E = 1e5 to 1e7 solved to gttol 1e-14 tended to it,
+    0.150262, 0.150320, 0.150326: measured once, not run here.)"""
     r = run_contact(PUNCH + ["-contact_mortar_slave", slave], tmp_path)
     P = r.summary["contact"]["tool"]["P"]
     with r.h5() as h5:
         name, err = sadowsky_l2(h5, P)
-    print(f"slave {slave} ({name}): P = {P:.6f}, {100 * err:.2f} % from Sadowsky")
+    figure(f"sadowsky_{slave}", err)
     assert name == ("punch_contact" if slave == "auto" else "block_contact")
     assert err <= 0.03
-    assert P == pytest.approx(0.150331, rel=5e-3)
+    dP = figure(f"dP_{slave}", P / 0.150331 - 1)
+    assert abs(dP) <= 5e-3, f"P = {P!r} moved from the regression pin 0.150331 (the program's own earlier P)"
 
 
 def test_sphere_rz(tmp_path):
     """A rigid ball (its meridian's curves) on an elastic flat in r-z: Hertz's
     point contact with E* = E / (1 - nu^2), p_max and the second-moment a
-    within 1 % (measured +0.44 % and -0.09 %); the ball moves along the axis
-    alone, and its force is the contact's, along the axis (pressing it up)."""
+    within 1 % (measured `dp` = 0.0044 and `da` = -8.5e-4 over the five
+    kernels); the ball moves along the axis alone (its condition names y only:
+    the program holds its radial translation at 0), and its force is the
+    contact's, along the axis (pressing it up)."""
     s = run_contact(SPHERE + ["-output", "none"], tmp_path).summary
     dp, da = hertz_errors(s)
     ball = s["bodies"]["ball"]
-    print(f"sphere: p_max {dp:+.2%}, a {da:+.2%}; ball {ball}")
+    print(f"ball {ball}")
+    figure("dp", dp), figure("da", da)
     assert abs(dp) <= 0.01 and abs(da) <= 0.01
-    assert ball["translation"] == [0, -0.01]
+    assert ball["translation"][0] == 0
     assert ball["force"][0] == 0 and ball["moment"] == 0
-    assert -ball["force"][1] == pytest.approx(s["contact_force"], rel=1e-12)
+    assert ball["force"][1] == pytest.approx(s["contact_force"], rel=1e-12)   # the contact pushes the ball up
 
 
 def test_ssnv104_rigid_plane(tmp_path):
     """SSNV104 with its plane of symmetry rigid (the line y = 0 alone) gives
-    the stiff flat's figures with half the dofs (9,044 against 18,228): P
-    8.7e-5 above it (the flat, 10^4 times stiffer than the sphere, gives way
-    by about 1e-4 of the approach; bound 2e-4), p_max and the second-moment
-    a within 3e-4 of it (measured 1.0e-4 and -5e-6)."""
+    the stiff flat's figures with half the dofs (`dofs_rigid` = 9044 against
+    `dofs_stiff` = 18228): P `dP` = 8.8e-5 above it (the flat, 10^4 times
+    stiffer than the sphere, gives way by about 1e-4 of the approach; bound
+    2e-4), p_max and the second-moment a within 3e-4 of it (measured
+    `dp` = 1.0e-4 and `da` = -5.0e-6 over the five kernels)."""
     r = run_contact(["-options_file", "meshes/ssnv104-rigid/ssnv104-rigid.opts", "-output", "none"], tmp_path, name="rigid").summary
     e = run_contact(["-options_file", "meshes/ssnv104/ssnv104.opts", "-output", "none"], tmp_path, name="stiff").summary
-    dP = r["contact_force"] / e["contact_force"] - 1
-    dp, da = r["fem_pmax"] / e["fem_pmax"] - 1, r["fem_a_moment"] / e["fem_a_moment"] - 1
-    print(f"P {dP:.2e}, p_max {dp:.2e}, a {da:.2e}; dofs {r['dofs']} against {e['dofs']}")
+    dP = figure("dP", r["contact_force"] / e["contact_force"] - 1)
+    dp, da = figure("dp", r["fem_pmax"] / e["fem_pmax"] - 1), figure("da", r["fem_a_moment"] / e["fem_a_moment"] - 1)
+    figure("dofs_rigid", r["dofs"]), figure("dofs_stiff", e["dofs"])
     assert 0 < dP <= 2e-4
     assert abs(dp) <= 3e-4 and abs(da) <= 3e-4
     assert r["dofs"] < 0.6 * e["dofs"]
@@ -245,41 +291,47 @@ def test_output(rigid_run, tmp_path):
 # The rigid body's unknowns: its translation where a condition force-controls
 # it or none holds it, its rotation where -<body>_rigid_rotation free.
 
+@pytest.mark.roundoff
 def test_force_controlled(rigid, tmp_path):
-    """The disc force-controlled in x by the force the displaced block gave
-    it (the fixture's P), the block held: the disc moves by the block's
-    0.0095 to 1e-7 (measured 1.7e-10), the profile's p_max is the
-    fixture's to 1e-7 (measured 3.6e-9), and 2 ranks find the same motion to 1e-9 (the two
-    solves' stops)."""
-    F = rigid["bodies"]["indenter"]["force"][0]
-    args = SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
-                    "-indenter_bc_back_values", f"{F!r},0", "-output", "none"]
+    """The disc force-controlled in x by the force the displaced block gave it
+    (the fixture's P), the block held, all solved to gttol 1e-12 and
+    -force_control_rtol 1e-11: the disc moves by the block's 0.0095
+    (`dt` = 1.2e-13 to 3.8e-13 in magnitude of it over the five kernels, bound
+    1e-8), the profile's p_max is the fixture's
+    (`dpmax` = 1.1e-12 to 8.2e-12 in magnitude, bound 1e-8), the reaction is
+    the force asked (`reaction` = 2.6e-13 to 3.2e-12 in magnitude, bound 1e-10,
+    the force control's tolerance), and 2 ranks find the same motion
+    (`dt_ranks` = 0 to 4.4e-16 in magnitude, bound 1e-10)."""
+    F = -rigid["bodies"]["indenter"]["force"][0]   # the force to apply: the contact's on it, opposite
+    args = SCENE + FORCE_TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
+                                  "-indenter_bc_back_values", f"{F!r},0", "-output", "none"]
     s = run_contact(args, tmp_path).summary
     t = s["bodies"]["indenter"]["translation"]
-    print(f"t = {t}, {t[0] / 0.0095 - 1:.2e}; p_max {s['fem_pmax'] / rigid['fem_pmax'] - 1:.2e}")
-    assert t[0] == pytest.approx(0.0095, rel=1e-7) and t[1] == 0
-    assert s["fem_pmax"] == pytest.approx(rigid["fem_pmax"], rel=1e-7)
+    assert abs(figure("dt", t[0] / 0.0095 - 1)) <= 1e-8
+    assert abs(figure("dpmax", s["fem_pmax"] / rigid["fem_pmax"] - 1)) <= 1e-8
     c = s["force_control"][0]
-    assert c["rigid"] and c["component"] == "x" and c["reaction"] == pytest.approx(F, rel=1e-8)
+    assert c["rigid"] and c["component"] == "x"
+    assert abs(figure("reaction", c["reaction"] / F - 1)) <= 1e-10
     s2 = run_contact(args, tmp_path, ranks=2, name="two").summary
-    assert s2["bodies"]["indenter"]["translation"][0] == pytest.approx(t[0], rel=1e-9)
+    assert abs(figure("dt_ranks", s2["bodies"]["indenter"]["translation"][0] / t[0] - 1)) <= 1e-10
 
 
+@pytest.mark.roundoff
 def test_force_controlled_rz(tmp_path):
     """In r-z: the ball force-controlled along the axis by the force the
-    displacement run (ball moved by -0.01) gave it, the flat's base moved
-    up by 0.01 instead: the ball stays where it is, to 1e-9 of 0.01
-    (measured 6.5e-13, both solved to a gradient of 1e-11), and p_max is
-    the displacement run's to 1e-9 (5.3e-13)."""
+    displacement run (ball moved by -0.01) gave it, the flat's base moved up by
+    0.01 instead: the ball stays where it is, to 1e-9 of 0.01 (measured
+    `t` = 2.9e-13 to 8.6e-13 in magnitude over the five kernels, both solved to
+    a gradient of 1e-11), and p_max is the displacement run's to 1e-9
+    (`dpmax` = 1.4e-14 to 1.7e-12 in magnitude)."""
     tight = ["-tao_gatol", "1e-11", "-tao_grtol", "0", "-tao_gttol", "0", "-output", "none"]
     d = run_contact(SPHERE + tight, tmp_path, name="disp").summary
-    F = d["bodies"]["ball"]["force"][1]
+    F = -d["bodies"]["ball"]["force"][1]   # the force to apply: the contact's on it, opposite
     s = run_contact(SPHERE + tight + ["-ball_bc_equator_control", "force", "-ball_bc_equator_values", repr(F),
                                       "-flat_bc_bottom_values", "0.01"], tmp_path, name="force").summary
     t = s["bodies"]["ball"]["translation"]
-    print(f"t = {t}; p_max {s['fem_pmax'] / d['fem_pmax'] - 1:.2e}")
-    assert t[0] == 0 and abs(t[1]) <= 1e-9 * 0.01
-    assert s["fem_pmax"] == pytest.approx(d["fem_pmax"], rel=1e-9)
+    assert t[0] == 0 and abs(figure("t", t[1] / 0.01)) <= 1e-9
+    assert abs(figure("dpmax", s["fem_pmax"] / d["fem_pmax"] - 1)) <= 1e-9
 
 
 @pytest.fixture(scope="module")
@@ -289,89 +341,119 @@ def roller(tmp_path_factory):
 
 def test_roller_held_by_contact(roller):
     """meshes/rigid-roller: a rigid roller between two races, held by its two
-    contacts alone (no condition: its x and y are unknowns of force zero),
-    the upper race pushed by 1000. By symmetry the roller moves by half
-    the upper race's displacement (to 1e-9; measured 2.3e-14); each
-    contact carries the 1000 (to 1e-8) and matches Hertz's rigid cylinder
-    on a flat with E* = E / (1 - nu^2): p_max and the second-moment a
-    within 1 % (measured -0.26 % and +0.31 %); the force left on the
-    roller is within the allowance of a motion the contacts do not hold
-    (x, along the flat races: 1e-3 of the load; measured 7.9e-7)."""
+    contacts alone (no condition: its x and y are unknowns of force zero), the
+    upper race pushed by 1000. By symmetry the roller moves by half the upper
+    race's displacement (to 1e-9; measured
+    `sym` = 8.5e-15 to 2.0e-14 in magnitude over the five kernels). Each
+    contact carries the 1000 to what the stop allows (no tighter stop can be
+    asked: the roller's free x keeps the gradient from falling further): the
+    upper race's energy is invariant under its translation, so the force on it
+    less its back's reaction is at most sqrt(n) ||g|| (test_robustness), and
+    that reaction is the force asked to the force control's tolerance; the
+    lower contact differs from the upper by the force left on the roller in y,
+    itself within that allowance (measured `dP` = 0.0032 to 0.024 in magnitude
+    and `fy` = 0.0049 to 0.036 in magnitude of it). Each contact matches
+    Hertz's rigid cylinder on a flat with E* = E / (1 - nu^2): p_max and the
+    second-moment a within 1 % (measured `dp` = -0.0026 and `da` = 0.0031); the
+    force left on the roller in x is within the allowance of a motion the
+    contacts do not hold (along the flat races: 1e-3 of the load; measured
+    `fx` = 7.9e-7 of it)."""
     t = roller["bodies"]["roller"]["translation"]
     U = roller["force_control"][0]["displacement"]
-    print(f"roller t = {t}, upper race U = {U}: {t[1] / (U / 2) - 1:.1e}")
-    assert t[1] == pytest.approx(U / 2, rel=1e-9)
-    for name, c in roller["contact"].items():
-        dp, da = c["fem_pmax"] / c["hertz_pmax"] - 1, c["fem_a_moment"] / c["hertz_a"] - 1
-        print(f"{name}: P {c['P']:.9f}, p_max {dp:+.2%}, a {da:+.2%}")
-        assert c["P"] == pytest.approx(1000, rel=1e-8)
-        assert abs(dp) <= 0.01 and abs(da) <= 0.01
+    print(f"roller t = {t}, upper race U = {U}")
+    assert abs(figure("sym", t[1] / (U / 2) - 1)) <= 1e-9
+    c0 = roller["force_control"][0]
+    allow = math.sqrt(roller["dofs"]) * roller["gradient_norm"] + abs(c0["reaction"] - c0["force"]) + 1000 * EPS * 1000
     f = roller["bodies"]["roller"]["force"]
-    assert abs(f[0]) <= 1e-3 * 1000 and abs(f[1]) <= 1e-8 * 1000
+    assert abs(figure("fy", f[1] / allow)) <= 1
+    for name, c in roller["contact"].items():
+        dp, da = figure("dp", c["fem_pmax"] / c["hertz_pmax"] - 1), figure("da", c["fem_a_moment"] / c["hertz_a"] - 1)
+        assert abs(figure("dP", (c["P"] - 1000) / (allow + abs(f[1])))) <= 1
+        assert abs(dp) <= 0.01 and abs(da) <= 0.01
+    assert abs(figure("fx", f[0] / 1000)) <= 1e-3
 
 
+@pytest.mark.roundoff
 def test_roller_ranks_and_gpts(roller, tmp_path):
-    """The rigid roller on 2 ranks: the same motion in y to 1e-9 (the
-    solves' stops; x, which the contacts do not hold, is not compared);
-    with gpts the symmetry holds (1e-9) and Hertz within 1.5 % (measured
-    p_max +1.07 %, a -0.09 %)."""
+    """The rigid roller on 2 ranks: the same motion in y (x, which the contacts
+    do not hold, is not compared; nor can a tighter stop be asked: the roller's
+    free x keeps the gradient from falling further, and the run ends
+    unconverged). The bound is the stops': the force each run leaves unbalanced
+    in y (the roller's force and the race's reaction less the 1000 asked),
+    relative to the load, moves the motion by as much relative to it (the
+    contacts' force grows about in proportion to the approach, which is most of
+    the motion), taken 3 times: measured `dt` = 1.3e-5 to 1.8e-4 of that bound
+    over the five kernels. With gpts the symmetry holds (1e-9;
+    `sym_gpts` = 1.0e-14 to 6.5e-14 in magnitude) and Hertz within 2.5 %
+    (measured `dp_gpts` = 0.011, `da_gpts` = -8.6e-4)."""
     s = run_contact(ROLLER + ["-output", "none"], tmp_path, ranks=2, name="two").summary
-    assert s["bodies"]["roller"]["translation"][1] == pytest.approx(roller["bodies"]["roller"]["translation"][1], rel=1e-9)
+    t1, t2 = roller["bodies"]["roller"]["translation"][1], s["bodies"]["roller"]["translation"][1]
+    unbalanced = sum(abs(x["bodies"]["roller"]["force"][1]) + abs(x["force_control"][0]["reaction"] - x["force_control"][0]["force"])
+                     for x in (roller, s)) / 1000
+    print(f"t_y {t1!r} and {t2!r}: {abs(t2 / t1 - 1):.2e}; unbalanced {unbalanced:.2e} of the load")
+    assert figure("dt", abs(t2 / t1 - 1) / (3 * unbalanced + 1e-13)) <= 1
     g = run_contact(ROLLER + ["-output", "none", "-contact_formulation", "gpts"], tmp_path, name="gpts").summary
-    assert g["bodies"]["roller"]["translation"][1] == pytest.approx(g["force_control"][0]["displacement"] / 2, rel=1e-9)
+    assert abs(figure("sym_gpts", g["bodies"]["roller"]["translation"][1] / (g["force_control"][0]["displacement"] / 2) - 1)) <= 1e-9
     for c in g["contact"].values():
-        assert abs(c["fem_pmax"] / c["hertz_pmax"] - 1) <= 0.015 and abs(c["fem_a_moment"] / c["hertz_a"] - 1) <= 0.015
+        dp, da = figure("dp_gpts", c["fem_pmax"] / c["hertz_pmax"] - 1), figure("da_gpts", c["fem_a_moment"] / c["hertz_a"] - 1)
+        assert abs(dp) <= 0.025 and abs(da) <= 0.025
 
 
 TILT = ["-options_file", "meshes/rigid-punch/rigid-punch.opts", "-output", "none", "-punch_rigid_rotation", "free",
         "-punch_rigid_centre", "0.1,0.125", "-punch_bc_push_control", "displacement,force", "-punch_bc_push_values", "0,-0.15"]
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("formulation", ["mortar", "gpts"])
 def test_free_rotation_tilt(formulation, tmp_path):
-    """The rigid flat punch (half-width b = 0.25) pushed by a force
-    P = 0.15 through the point 0.1 right of its axis, free to turn about
-    it: the punch tilts until the contact's moment about that point is zero
-    (to 1e-6 of P e; measured 2e-8 and 4e-8), by Johnson's tilted punch on a
-    half-space (Contact Mechanics, 2.8) alpha = 4 P e / (pi E* b^2) =
-    2.781e-3 with E* = E / (1 - nu^2), within 3 % (the block is finite;
-    measured -0.80 % mortar, -1.34 % gpts; e < b / 2, so the whole face
-    stays in contact). The Taylor test at the answer, the rigid body's
-    unknowns included: the gradient's remainder second order, and the
-    Hessian's (the rotation's second derivative and the contact's coupling
-    through J) second order (measured 2.01 and 2.39). With the block as
-    mortar's slave the Hessian's order is 1.0 as with an elastic punch:
-    the master's corners, not the rigid body."""
+    """The rigid flat punch (half-width b = 0.25) pushed by a force P = 0.15
+    through the point 0.1 right of its axis, free to turn about it: the punch
+    tilts until the contact's moment about that point is zero (to 1e-6 of P e;
+    measured `moment` = -2.0e-8 to -4.0e-8 over both formulations and the five
+    kernels), by Johnson's tilted punch on a half-space (Contact Mechanics,
+    2.8) alpha = 4 P e / (pi E* b^2) = 2.781e-3 with E* = E / (1 - nu^2),
+    within 3 % (the block is finite; measured `dalpha_mortar` = -0.0079,
+    `dalpha_gpts` = -0.013; e < b / 2, so the whole face stays in contact); the
+    punch's force is the one asked (`force` = 3.5e-9 to 1.9e-8, bound 1e-7).
+    The Taylor test at the answer, the rigid body's unknowns included: the
+    gradient's remainder second order, and the Hessian's (the rotation's second
+    derivative and the contact's coupling through J) second order (measured
+    `order_gradient` = 2 and `order_hessian` = 2.01 to 2.39; bound 1.9, a
+    first-order remainder, a wrong term, gives 1). (With the block as mortar's
+    slave the Hessian's order was 1.0, as with an elastic punch: the master's
+    corners, not the rigid body; measured once, not run here.)"""
     args = TILT + ["-contact_formulation", formulation, "-taylor_test"]
     r = run_contact(args, tmp_path)
     s = r.summary
     punch = s["bodies"]["punch"]
     P, e, b, Es = 0.15, 0.1, 0.25, 100 / (1 - 0.3 ** 2)
     alpha = 4 * P * e / (math.pi * Es * b ** 2)
-    print(f"{formulation}: rotation {punch['rotation']:.6e} against -{alpha:.6e} ({-punch['rotation'] / alpha - 1:+.2%}), moment {punch['moment']:.2e}")
-    assert abs(-punch["rotation"] / alpha - 1) <= 0.03
-    assert abs(punch["moment"]) <= 1e-6 * P * e
-    assert punch["force"][1] == pytest.approx(-P, rel=1e-7)
-    orders = s["taylor"]["gradient_order"], s["taylor"]["hessian_order"]
-    print("Taylor orders", orders)
+    print(f"{formulation}: rotation {punch['rotation']:.6e} against -{alpha:.6e}")
+    assert abs(figure(f"dalpha_{formulation}", -punch["rotation"] / alpha - 1)) <= 0.03
+    assert abs(figure("moment", punch["moment"] / (P * e))) <= 1e-6
+    assert abs(figure("force", punch["force"][1] / P - 1)) <= 1e-7   # the contact pushes the punch up
+    orders = figure("order_gradient", s["taylor"]["gradient_order"]), figure("order_hessian", s["taylor"]["hessian_order"])
     assert orders[0] >= 1.9 and orders[1] >= 1.9
 
 
+@pytest.mark.roundoff
 def test_border_from_the_surfaces(tmp_path):
     """A rigid body's unknowns border the Hessian with columns that change at
     each Hessian and live on the contact surfaces alone: the substructuring
     condenses them anew with no interior solve (one solve of the bodies'
-    Hessian a step), where -force_control_border_solves makes m + 1 solves.
-    The disc force-controlled in x, free to turn: the two give the same
-    motion to 1e-10 (measured 5e-14)."""
-    args = SCENE + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
+    Hessian a step), where -force_control_border_solves makes m + 1 solves. The
+    disc force-controlled in x, free to turn, both solved to gttol 1e-12
+    (-force_control_rtol 1e-11 is not reached with the rotation free: 40
+    solves): the two give the same motion to 1e-10 (measured
+    `dt` = 2.2e-16 to 5.6e-16 in magnitude over the five kernels)."""
+    args = SCENE + TIGHT + ["-block_bc_push_values", "0,0", "-indenter_bc_back_control", "force,displacement",
                     "-indenter_bc_back_values", "5.0234614148,0", "-indenter_rigid_rotation", "free", "-output", "none"]
     fast = run_contact(args + ["-info", ":sys"], tmp_path, name="fast")
     assert "eliminated by the PC of the bodies' step from the surfaces" in fast.stdout + fast.stderr
     slow = run_contact(args + ["-force_control_border_solves"], tmp_path, name="slow").summary
     a, b = fast.summary["bodies"]["indenter"]["translation"][0], slow["bodies"]["indenter"]["translation"][0]
-    print(f"fast {a!r}, solves {b!r}: {a / b - 1:.1e}")
-    assert a == pytest.approx(b, rel=1e-10)
+    print(f"fast {a!r}, solves {b!r}")
+    assert abs(figure("dt", a / b - 1)) <= 1e-10
 
 
 def test_unknown_without_contact(tmp_path):
@@ -401,20 +483,21 @@ def test_help(scene, tmp_path):
     assert not r.summary_path.exists() and not r.output_path.exists()
 
 
+@pytest.mark.roundoff
 def test_force_controlled_plate_on_rubber(tmp_path):
-    """meshes/rubber-squeeze (h = 0.1) with its rigid plate pushed by the
-    force the displaced plate (0.3) gave it, in place of the displacement:
-    the plate moves by that 0.3 to 1e-9 (measured 5e-14, both solved to a
-    gradient of 1e-12) and p_max is the displaced run's to 1e-9 (2e-12): a
-    rigid body's force control on a neo-Hookean partner, whose contact
-    Hessian the border carries at every step."""
+    """meshes/rubber-squeeze (h = 0.1) with its rigid plate pushed by the force
+    the displaced plate (0.3) gave it, in place of the displacement: the plate
+    moves by that 0.3 to 1e-9 (measured `dt` = 5.3e-14 to 3.2e-13 in magnitude
+    over the five kernels, both solved to a gradient of 1e-12) and p_max is the
+    displaced run's to 1e-9 (`dpmax` = 2.3e-13 to 3.0e-12): a rigid body's
+    force control on a neo-Hookean partner, whose contact Hessian the border
+    carries at every step."""
     scene = ["-options_file", "meshes/rubber-squeeze/rubber-squeeze.opts", "-output", "none", "-mesh_size", "0.1",
              "-tao_gatol", "1e-12", "-tao_grtol", "0", "-tao_gttol", "0"]
     d = run_contact(scene, tmp_path, name="disp").summary
-    F = d["bodies"]["plate"]["force"][1]
+    F = -d["bodies"]["plate"]["force"][1]   # the force to apply: the contact's on it, opposite
     s = run_contact(scene + ["-plate_bc_contact_control", "displacement,force", "-plate_bc_contact_values", f"0,{F!r}"],
                     tmp_path, name="force").summary
     t = s["bodies"]["plate"]["translation"]
-    print(f"plate {t}, {t[1] / -0.3 - 1:.1e}; p_max {s['fem_pmax'] / d['fem_pmax'] - 1:.1e}")
-    assert t[1] == pytest.approx(-0.3, rel=1e-9)
-    assert s["fem_pmax"] == pytest.approx(d["fem_pmax"], rel=1e-9)
+    assert abs(figure("dt", t[1] / -0.3 - 1)) <= 1e-9
+    assert abs(figure("dpmax", s["fem_pmax"] / d["fem_pmax"] - 1)) <= 1e-9

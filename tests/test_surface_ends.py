@@ -20,9 +20,17 @@ is Hertz's."""
 import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import figure, run_contact
 
 PUNCH = ["-options_file", "meshes/punch/punch.opts"]
+# the stiff punch (E = 1e7 on 100) leaves the default stop's P far from the
+# answer: the punch as mortar's slave 0.151127 against 0.150326 at gttol
+# 1e-12, gpts 0.1521 against 0.150458, where it stops depending on the BLAS
+# kernel (gpts -0.23 % to +0.66 % from mortar's over the five kernels): those
+# runs are solved to gttol 1e-12. The block as slave (alone or with the
+# punch) cannot be: from gttol 1e-10 on it crawls past a minute; its default
+# stop gave the same P under every kernel.
+TIGHT = ["-tao_gttol", "1e-12"]
 B = 0.25
 ORDERS = {"punch-first": "punch:contact,block:contact", "block-first": "block:contact,punch:contact"}
 
@@ -46,23 +54,24 @@ def punch_runs(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("punch")
     runs = {}
     for name, order in ORDERS.items():
-        runs["mortar", name] = run_contact(PUNCH + ["-contact_tool_surfaces", order], tmp, name=f"mortar-{name}")
+        runs["mortar", name] = run_contact(PUNCH + TIGHT + ["-contact_tool_surfaces", order], tmp, name=f"mortar-{name}")
     # the slave named first is the punch, named first: the automatic choice's
     # run (the same P and energy to the last digit, measured)
     runs["mortar", "first"] = runs["mortar", "punch-first"]
     runs["mortar", "second"] = run_contact(PUNCH + ["-contact_mortar_slave", "second"], tmp, name="mortar-second")
-    for f, extra in (("gpts", ["-contact_formulation", "gpts"]), ("both", ["-contact_mortar_slave", "both"])):
+    for f, extra in (("gpts", TIGHT + ["-contact_formulation", "gpts"]), ("both", ["-contact_mortar_slave", "both"])):
         runs[f, "punch-first"] = run_contact(PUNCH + extra, tmp, name=f)
     return runs
 
 
 def test_punch_order_does_not_matter(punch_runs):
     """mortar's automatic slave is the punch, whichever surface is named first
-    (its face ends on the block): the same P to round-off, the punch's nodal
-    pressure within 3 % of Sadowsky's (measured 0.85 %, both orders), and the
-    block's top free beyond one of its elements past the punch (the master's
-    transferred pressure is the slave's corner force spread over the block
-    element that holds the corner)."""
+    (its face ends on the block): the same P to round-off, both solved to gttol
+    1e-12 (`dP` = 0 to 4.4e-16 over the five kernels, bound 1e-12), the punch's
+    nodal pressure within 3 % of Sadowsky's (measured `sadowsky` = 0.0086, both
+    orders), and the block's top free beyond one of its elements past the punch
+    (the master's transferred pressure is the slave's corner force spread over
+    the block element that holds the corner)."""
     P = {}
     for name in ORDERS:
         r = punch_runs["mortar", name]
@@ -70,7 +79,7 @@ def test_punch_order_does_not_matter(punch_runs):
             X, x, p, w, slave = profile(h5, "tool", "punch_contact")
             P[name] = r.summary["contact"]["tool"]["P"]
             assert slave, f"{name}: the punch is not the slave"
-            err = sadowsky_l2(X, p, w, P[name])
+            err = figure("sadowsky", sadowsky_l2(X, p, w, P[name]))
             Xb, xb, pb, wb, slave_b = profile(h5, "tool", "block_contact")
             assert not slave_b
             beyond = np.abs(Xb[:, 0]) > B + 0.0125
@@ -78,25 +87,28 @@ def test_punch_order_does_not_matter(punch_runs):
                   f"block's largest |p| beyond b + h: {np.abs(pb[beyond]).max():.3g}")
             assert err <= 0.03
             assert np.all(pb[beyond] == 0.0)
-    assert abs(P["punch-first"] - P["block-first"]) <= 1e-12 * P["punch-first"]
+    assert abs(figure("dP", P["punch-first"] / P["block-first"] - 1)) <= 1e-12
 
 
 def test_punch_block_as_slave(punch_runs):
     """The block forced as slave (-contact_mortar_slave): it no longer takes
-    the punch's face past its corners (P 0.2639 before, 1.76 times the punch
-    as slave's): P within 2 % of the punch as slave's (measured -0.50 %; the
-    punch's corners fall inside the block's slave edges, whose weights smear
-    their singular pressure, so this order is the less accurate one: 0.4 to
-    3 % low over k_p and meshes), the block's pressure within 3 % of
-    Sadowsky's under the punch (measured 0.43 %), and zero beyond one of its
-    elements past the punch."""
+    the punch's face past its corners (P 0.2639 before, 1.76 times the punch as
+    slave's): P within 2 % of the punch as slave's (measured `dP` = 3.1e-4 over
+    the five kernels, the block as slave at the default stop, which it cannot
+    pass (PUNCH), the punch as slave at gttol 1e-12; the -0.50 % measured
+    before was against the punch as slave at the default stop, which leaves its
+    P 0.53 % high, as the 0.4 to 3 % low once quoted over k_p and meshes may
+    have been), the block's pressure within 3 % of Sadowsky's under the punch
+    (measured `sadowsky` = 0.0043), and zero beyond one of its elements past
+    the punch."""
     Pf = punch_runs["mortar", "first"].h5()["contact/tool"].attrs["P"]
     r = punch_runs["mortar", "second"]
     with r.h5() as h5:
         P = h5["contact/tool"].attrs["P"]
         X, x, p, w, slave = profile(h5, "tool", "block_contact")
         assert slave
-        err = sadowsky_l2(X, p, w, P)
+        err = figure("sadowsky", sadowsky_l2(X, p, w, P))
+        figure("dP", P / Pf - 1)
         beyond = np.abs(X[:, 0]) > B + 0.00625
         print(f"block as slave: P = {P:.6f} ({100 * (P / Pf - 1):+.2f} % of the punch as slave's), "
               f"{100 * err:.2f} % from Sadowsky, largest p beyond b + h {p[beyond].max():.3g}")
@@ -109,11 +121,14 @@ def test_punch_block_as_slave(punch_runs):
 def test_punch_two_way(variant, punch_runs):
     """gpts and mortar with both surfaces as slaves: the punch's face ends at
     its corners for them too (before: P 0.2639, the block's top in contact to
-    its ends). P within 3 % of mortar's one-sided (measured +1.18 % gpts,
-    +0.97 % both: the two one-sided constraints stiffen each other at the
-    singular corners), and the block free beyond the punch. gpts' pressure
-    under the punch is 8.4 % from Sadowsky's (its Gauss-point saw-tooth), both's
-    1.1 %: held at 12 % and 3 %."""
+    its ends). P within 3 % of mortar's one-sided (measured `dP_gpts` = 8.8e-4,
+    `dP_both` = -1.5e-4 over the five kernels; gpts solved to gttol 1e-12 as
+    the one-sided run, both at the default stop (PUNCH); the +1.18 % and
+    +0.97 % measured before were against the one-sided run's default stop,
+    0.53 % high, and gpts' own, up to 1 % high), and the block free beyond the
+    punch. gpts' pressure under the punch is `sadowsky_gpts` = 0.084 from
+    Sadowsky's (its Gauss-point saw-tooth), both's `sadowsky_both` = 0.0038:
+    held at 20 % and 3 %, over twice the figures."""
     Pm = punch_runs["mortar", "first"].h5()["contact/tool"].attrs["P"]
     with punch_runs[variant, "punch-first"].h5() as h5:
         P = h5["contact/tool"].attrs["P"]
@@ -123,8 +138,8 @@ def test_punch_two_way(variant, punch_runs):
         print(f"{variant}: P = {P:.6f} ({100 * (P / Pm - 1):+.2f} % of mortar's), "
               f"punch's pressure {100 * sadowsky_l2(Xp, pp, wp, P):.1f} % from Sadowsky, "
               f"block's largest |p| beyond b + h {np.abs(p[beyond]).max():.3g}")
-        assert abs(P / Pm - 1) <= 0.03
-        assert sadowsky_l2(Xp, pp, wp, P) <= {"gpts": 0.12, "both": 0.03}[variant]
+        assert abs(figure(f"dP_{variant}", P / Pm - 1)) <= 0.03
+        assert figure(f"sadowsky_{variant}", sadowsky_l2(Xp, pp, wp, P)) <= {"gpts": 0.2, "both": 0.03}[variant]
         assert np.all(p[beyond] == 0.0)
 
 
@@ -138,17 +153,22 @@ def corner_runs(tmp_path_factory):
             for slave in ("auto", "first")}
 
 
+@pytest.mark.roundoff
 @pytest.mark.parametrize("slave", ["auto", "first"])
 def test_disc_past_the_corner(slave, corner_runs):
     """The reference scene with the disc at y = 0.9 (h = 0.05): its contact
     zone (y from about 0.6 to past 1.1 on the undeformed disc) reaches past the
-    block's corner at y = 1. auto takes the block as slave (its edge ends on the
-    disc): the corner node carries the largest pressure, and the disc's
-    transferred pressure is zero beyond one element past the corner (measured
-    0 from 0.05 past it). The disc forced as slave: its pressure is zero
-    beyond one element past the corner. The pair's force equals the pushed
-    edge's reaction to 1e-6 of P (measured 3.6e-8 of P, the solver's
-    residual)."""
+    block's corner at y = 1. auto takes the block as slave (its edge ends on
+    the disc): the corner node carries the largest pressure, and the disc's
+    transferred pressure is zero beyond one element past the corner (measured 0
+    from 0.05 past it). The disc forced as slave: its pressure is zero beyond
+    one element past the corner. The pair's force on the block equals minus the
+    pushed edge's reaction to what the stop allows: the block's energy is
+    invariant under its translation, so the difference is a sum of the gradient
+    over the block's free dofs, at most sqrt(n) ||g|| (test_robustness), plus
+    1000 EPS of P for the sums (measured `balance` = 0.004 to 0.006 of that
+    bound over both slaves and the five kernels; `imbalance` = 2.2e-8 to 1.8e-7
+    of P)."""
     r = corner_runs[slave]
     with r.h5() as h5:
         X, x, p, w, disc_slave = profile(h5, "interface", "indenter_contact")
@@ -165,38 +185,42 @@ def test_disc_past_the_corner(slave, corner_runs):
     F = r.summary["contact"]["interface"]["surfaces"][1]["force"]   # on the block
     R = r.summary["reactions"]["block:push"]
     print(f"  force on the block {F}, reaction at its pushed edge {R}")
-    assert np.hypot(F[0] + R[0], F[1] + R[1]) <= 1e-6 * P
+    bound = np.sqrt(r.summary["dofs"]) * r.summary["gradient_norm"] + 1000 * np.finfo(float).eps * P
+    figure("imbalance", np.hypot(F[0] + R[0], F[1] + R[1]) / P)
+    assert figure("balance", np.hypot(F[0] + R[0], F[1] + R[1]) / bound) <= 1
 
 
 def test_disc_past_the_corner_either_slave(corner_runs):
     """The two slave choices of the scene above, each a discretisation of the
-    same contact, give P within 0.5 % of each other (measured 41.152 and
-    41.097, 0.13 %)."""
-    P = {k: r.summary["contact_force"] for k, r in corner_runs.items()}
-    print(f"P {P}: {P['first'] / P['auto'] - 1:+.2e}")
-    assert abs(P["first"] / P["auto"] - 1) <= 0.005
+    same contact, give P within 0.5 % of each other (measured
+    `P` = 41.097 to 41.152, the two apart by `dP` = -0.0013 over the five
+    kernels)."""
+    P = {k: figure("P", r.summary["contact_force"]) for k, r in corner_runs.items()}
+    assert abs(figure("dP", P["first"] / P["auto"] - 1)) <= 0.005
 
 
 STIFF = ["-options_file", "meshes/hertz-small/hertz-small.opts",
          "-indenter_geo_params", "R=1,xc=-1,yc=0,xclamp=-1.8,xcontact=-0.5,hc=0.017,dc=1",
          "-block_geo_params", "x0=0,W=1,H=2,hc=0.017,dc=1", "-indenter_E", "5e4", "-block_E", "200",
-         "-contact_penalty", "auto"]
+         "-contact_penalty", "auto", "-tao_gttol", "1e-12"]
 
 
 def test_stiff_disc_either_order(tmp_path):
-    """A disc 250 times stiffer than the slab, either surface named first:
-    auto takes the slab as slave both times, so the same p_max and profile to
-    round-off, p_max within 2 % of Hertz (measured +0.00 %) and the profile
-    within 8 % (measured 1.02 %). The stiff disc forced as slave is further
-    off (measured p_max +2.3 %, profile 4.3 % here; 24 % where the slab is
-    coarser, issue's measurement)."""
+    """A disc 250 times stiffer than the slab, either surface named first: auto
+    takes the slab as slave both times, so the same p_max and profile to
+    round-off, both solved to gttol 1e-12 (`dpmax` = 0 and `dl2` = 0 to 1.4e-14
+    apart over the five kernels, bound 1e-12), p_max within 2 % of Hertz
+    (measured `pmax` = 7.0e-6) and the profile within 8 % (measured
+    `l2` = 0.01). (The stiff disc forced as slave is further off: p_max +2.3 %,
+    profile 4.3 % here, 24 % where the slab is coarser; measured once, not run
+    here.)"""
     figs = []
     for order in ("indenter:contact,block:contact", "block:contact,indenter:contact"):
         s = run_contact(STIFF + ["-contact_interface_surfaces", order], tmp_path, name=order.split(":")[0]).summary
         print(f"{order}: p_max {s['fem_pmax']:.6g} (Hertz {s['hertz_pmax']:.6g}), profile {100 * s['pressure_l2_error']:.2f} %")
         figs.append(s)
     a, b = figs
-    assert a["fem_pmax"] == pytest.approx(b["fem_pmax"], rel=1e-12)
-    assert a["pressure_l2_error"] == pytest.approx(b["pressure_l2_error"], rel=1e-12)
-    assert abs(a["fem_pmax"] / a["hertz_pmax"] - 1) <= 0.02
-    assert a["pressure_l2_error"] <= 0.08
+    assert abs(figure("dpmax", a["fem_pmax"] / b["fem_pmax"] - 1)) <= 1e-12
+    assert abs(figure("dl2", a["pressure_l2_error"] / b["pressure_l2_error"] - 1)) <= 1e-12
+    assert abs(figure("pmax", a["fem_pmax"] / a["hertz_pmax"] - 1)) <= 0.02
+    assert figure("l2", a["pressure_l2_error"]) <= 0.08

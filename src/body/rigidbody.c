@@ -305,6 +305,13 @@ PetscReal BodyRigidUnknownGradient(const Body b, PetscInt q)
   return q < 2 ? b->rg->force[q] : b->rg->moment / b->rg->L;
 }
 
+void BodyRigidContactForce(const Body b, PetscReal f[2], PetscReal *moment)
+{
+  f[0]    = -b->rg->force[0];
+  f[1]    = -b->rg->force[1];
+  *moment = -b->rg->moment;
+}
+
 void BodyRigidJacobian(const Body b, const PetscReal x[2], PetscReal J[3][2])
 {
   const BodyRigid *r = b->rg;

@@ -200,7 +200,12 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
   PetscCall(ContactForceString(R->resultant, spec->axisym, fs[0], sizeof(fs[0])));
-  PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
+  if (R->friction) { /* the whole force, and its parts */
+    const PetscReal whole[2] = {R->resultant[0] + R->shearForce[0], R->resultant[1] + R->shearForce[1]};
+    char            ws[128];
+    PetscCall(ContactForceString(whole, spec->axisym, ws, sizeof(ws)));
+    PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s = pressure %s + shear (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", ws, fs[0], (double)R->shearForce[0], (double)R->shearForce[1], (double)R->P));
+  } else PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   if (R->friction) {
     PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e); the whole force %.6e along the contact zone's normal, Q = %.6e across, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)R->normalLoad, (double)R->tangentialLoad, (double)(R->normalLoad > 0 ? R->tangentialLoad / (spec->friction * R->normalLoad) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
@@ -308,7 +313,11 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   fprintf(fp, ", \"penalty_auto\": %s", spec->kpAuto ? "true" : "false");
   ContactJSONKeyReal(fp, ", ", "penalty_h", spec->kpH);                            /* the contact edges' size h of the rule */
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(spec)); /* k_p h / E*: 1000 auto, below 25 soft */
-  ContactJSONKeyPair(fp, ", ", "force", R->force);
+  { /* the pair's whole force on its first surface's body, and its parts */
+    const PetscReal whole[2] = {R->force[0] + (R->friction ? R->shearForce[0] : 0.0), R->force[1] + (R->friction ? R->shearForce[1] : 0.0)};
+    ContactJSONKeyPair(fp, ", ", "force", whole);
+    ContactJSONKeyPair(fp, ", ", "pressure_force", R->force);
+  }
   ContactJSONKeyReal(fp, ", ", "friction", spec->friction);
   if (R->friction) {
     ContactJSONKeyReal(fp, ", ", "stick_half_width", R->stickHalfWidth);

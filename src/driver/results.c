@@ -242,9 +242,11 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_x", PETSC_REAL, &r->t[0]));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_y", PETSC_REAL, &r->t[1]));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rotation", PETSC_REAL, &r->theta));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &r->force[0]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &r->force[1]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &r->moment));
+      PetscReal        f[2], mo;
+      BodyRigidContactForce(p->bodies[i], f, &mo);
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &f[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &f[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &mo));
       PetscCall(WriteRigidOutline(p->bodies[i], v));
       PetscCall(PetscViewerHDF5PopGroup(v));
       continue;
@@ -481,8 +483,10 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
       ContactJSONKeyPair(fp, ", ", "translation", r->t);
       ContactJSONKeyReal(fp, ", ", "rotation", r->theta);
       ContactJSONKeyPair(fp, ", ", "centre", r->centre);
-      ContactJSONKeyPair(fp, ", ", "force", r->force);
-      ContactJSONKeyReal(fp, ", ", "moment", r->moment);
+      PetscReal        f[2], mo;
+      BodyRigidContactForce(b, f, &mo);
+      ContactJSONKeyPair(fp, ", ", "force", f);
+      ContactJSONKeyReal(fp, ", ", "moment", mo);
       fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
       ContactJSONKeyReal(fp, ", ", "h", b->h);
       fprintf(fp, "}");

@@ -919,8 +919,10 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a rigid body: its motion and the contact's force on it */
     const BodyRigid *r = p->bodies[i]->rg;
     if (!p->bodies[i]->rigid) continue;
-    if (p->opt.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)r->force[1]));
-    else PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", p->bodies[i]->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)r->force[0], (double)r->force[1], (double)r->moment));
+    PetscReal        f[2], mo;
+    BodyRigidContactForce(p->bodies[i], f, &mo);
+    if (p->opt.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)f[1]));
+    else PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", p->bodies[i]->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
   }
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
     Body       b = p->bodies[i];
