@@ -6,7 +6,7 @@ behind both figures: scripts/penalty_study.py, bench/penalty)."""
 import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import figure, run_contact
 
 HALF = ["-options_file", "meshes/hertz-half/hertz-half.opts"]
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
@@ -34,25 +34,29 @@ def shortest_edge(h5, pair):
 def test_auto_rule(tmp_path):
     """The penalty used is 1000 E*/h with E* from the two materials and h the
     shortest edge of the two contact surfaces, integrated here from the HDF5's
-    nodes: to round-off (measured 2e-16, bound 100 EPS); two stages were
-    solved (30 E*/h, then 1000 E*/h). The JSON's own k_p h / E* and its
-    penalty_auto flag are the program's words for what it did, not checks
-    of it, and are not asserted."""
+    nodes: to round-off (`rule` = 0 to 1 EPS off over the OpenBLAS kernels
+    Prescott, Nehalem, Sandybridge, Haswell and SkylakeX, bound 100 EPS);
+    two stages were solved (30 E*/h, then 1000 E*/h: the count is the rule,
+    not a solver's path). The JSON's own k_p h / E* and its penalty_auto
+    flag are the program's words for what it did, not checks of it, and are
+    not asserted."""
     r = run_contact(HERTZ + ["-contact_penalty", "auto"], tmp_path)   # the whole scene: its HDF5 holds the edges as meshed
     s, c = r.summary, r.summary["contact"]["interface"]
     h = shortest_edge(r.h5(), "interface")
     print(f"k_p {c['penalty']!r}, h {h!r} (program {c['penalty_h']!r}), 1000 E*/h {1000 * ESTAR / h!r}")
     assert s["stages"] == 2
-    assert abs(c["penalty"] / (1000 * ESTAR / h) - 1) <= 100 * EPS
+    assert figure("rule", abs(c["penalty"] / (1000 * ESTAR / h) - 1) / EPS) <= 100
 
 
 def test_auto_error_below_mesh(tmp_path):
     """At h = 0.05 (the mirrored reference scene) the automatic penalty's
     error, its distance from the stiff limit (k_p = 1e10 by continuation) on
     the same mesh, against the mesh's, the limit's distance from the limit on
-    h = 0.0125: measured 0.047 (P) and 0.060 (p_max), bound 0.1 (the rule's
-    aim; scripts/penalty_study.py measures 0.022 to 0.060 in P and 0.054 to
-    0.136 in p_max from h = 0.1 to 0.0125 against h = 0.00625)."""
+    h = 0.0125: `contact_force` = 0.0472 (P) and `fem_pmax` = 0.0603
+    (p_max) over the OpenBLAS kernels Prescott, Nehalem, Sandybridge,
+    Haswell and SkylakeX, bound 0.1 (the rule's aim; scripts/penalty_study.py,
+    a study and not this test, found 0.022 to 0.060 in P and 0.054 to 0.136
+    in p_max from h = 0.1 to 0.0125 against h = 0.00625)."""
     limit = ["-contact_penalty", "1e10", "-penalty_stages", "4", "-penalty_start", "1e-4"]
     tight = ["-tao_gttol", "1e-10", "-output", "none"]
     auto = run_contact(HALF + ["-mesh_size", "0.05", "-contact_penalty", "auto"] + tight, tmp_path, name="auto").summary
@@ -61,6 +65,7 @@ def test_auto_error_below_mesh(tmp_path):
     for key in ("contact_force", "fem_pmax"):
         pen, mesh = abs(auto[key] - lim[key]), abs(lim[key] - fine[key])
         print(f"{key}: penalty {pen / lim[key]:.2e}, mesh {mesh / lim[key]:.2e}, ratio {pen / mesh:.3f}")
+        figure(key, pen / mesh)
         assert pen < 0.1 * mesh
 
 
@@ -70,9 +75,10 @@ def warnings(r):
 
 def test_soft_penalty_warns(tmp_path):
     """hertz-small keeps its k_p = 2e6, 14.9 E*/h at its contact edges (h =
-    0.0041), where the penalty's error in P and p_max measured 0.5 to 5 times
-    the mesh's: one warning line naming the pair, the ratio, and what auto
-    would give; with auto, none."""
+    0.0041), where the penalty's error in P and p_max is 0.5 to 5 times the
+    mesh's (scripts/penalty_study.py's figures, not measured here): one
+    warning line naming the pair, the ratio (14.9 = 2e6 h / E*, from the
+    scene's numbers), and what auto would give; with auto, none."""
     soft = run_contact(SMALL + ["-output", "none"], tmp_path, name="soft")
     (line,) = warnings(soft)
     print(line)
