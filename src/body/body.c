@@ -579,16 +579,17 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
    2 nb, full), at the displacement x (a local array; NULL: at rest, where
    every material's tangent is linear elasticity's, int dN_a/dx_k C_ikjl
    dN_b/dx_l dA). */
-static void BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
+static PetscErrorCode BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
 {
   const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
   PetscReal      u[9][2];
 
+  PetscFunctionBeginUser;
   for (PetscInt a = 0; a < nb; ++a) {
     u[a][0] = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
     u[a][1] = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
   }
-  PetscArrayzero(K, n * n);
+  PetscCall(PetscArrayzero(K, n * n));
   for (PetscInt iq = 0; iq < nq; ++iq) {
     const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
     const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
@@ -608,6 +609,7 @@ static void BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScal
     for (PetscInt i = 0; i < 2; ++i)
       for (PetscInt bb = a + 1; bb < nb; ++bb)
         for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
+  PetscFunctionReturn(0);
 }
 
 /* The tangent over this rank's cells at the displacement x (as above), added
@@ -625,7 +627,7 @@ static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], c
       idx[2 * a]     = map[b->cdof[c * nb + a]];
       idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
     }
-    BodyCellTangent(b, c, x, K);
+    PetscCall(BodyCellTangent(b, c, x, K));
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
@@ -674,7 +676,7 @@ PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
     PetscBool any = PETSC_FALSE;
     for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / 2] + a % 2] != 0.0);
     if (!any) continue;
-    BodyCellTangent(b, c, x, K);
+    PetscCall(BodyCellTangent(b, c, x, K));
     for (PetscInt i = 0; i < n; ++i) {
       PetscScalar s = 0;
       for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / 2] + j % 2];
