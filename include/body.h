@@ -33,6 +33,8 @@ PetscErrorCode BodyAssembleHessianMapped(Body, const PetscInt map[], Mat H);
 /* The tangent stiffness at the body's local vector Xl, added into H (l2b
    indices): the stiffness at rest for a material of constant tangent. */
 PetscErrorCode BodyAssembleTangent(Body, Vec Xl, Mat H);
+/* Yl = K(Xl) El, local vectors, K the tangent at Xl (NULL: at rest), this rank's cells' part. */
+PetscErrorCode BodyApplyTangentLocal(Body, Vec Xl, Vec El, Vec Yl);
 PetscErrorCode BodyComputeReactions(Body, Vec Gl);
 /* A body's errors against its exact solution, if any (zero without one), with
    the exact solution's norms: L2 of u, energy norm, L2 of the stress. */

@@ -9,6 +9,10 @@
 PetscErrorCode ProblemCollectControls(Problem);
 /* Coupled: the border of the Hessian, p->fc.B and p->fc.D (after the stiffness's assembly). */
 PetscErrorCode ProblemSetUpControlBorder(Problem);
+/* Coupled, at each Hessian (the bodies' local vectors at its X): the columns
+   of the controls on a body whose tangent varies (an anchor of a neohookean
+   body), K e_k with K the tangent there (tangent) or the stiffness at rest. */
+PetscErrorCode ProblemUpdateControlBorder(Problem, PetscBool tangent);
 /* Coupled: the controls' displacements from X into the bodies' conditions (in ProblemScatterToBodies). */
 PetscErrorCode ProblemSetControlDisplacements(Problem, Vec X);
 /* Coupled: their work -F U and gradient R - F added to an evaluation of X (after ProblemEvaluate). */

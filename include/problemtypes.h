@@ -89,6 +89,7 @@ typedef struct {
   PetscBool    coupled;                 /* the controls' displacements are the last entries of X */
   Vec          B[CONTACT_MAX_CONTROLS]; /* coupled: K_fc 1 of each control (Xb's layout); a rigid body's unknown: the contact's coupling, at each Hessian */
   PetscReal    D[CONTACT_MAX_CONTROLS * CONTACT_MAX_CONTROLS]; /* coupled: 1^T K_cc 1 between controls; a rigid body's unknowns: the contact's J^T H J, at each Hessian */
+  Vec          E[CONTACT_MAX_CONTROLS]; /* coupled, a control on a body whose tangent varies: e_k, its body's local vector (1 on its group's component), kept for its column at each Hessian */
   PetscBool    rigid;                   /* some control is a rigid body's unknown: the border changes with the Hessian */
   Unheld       unheld; /* coupled: the anchors' directions the contact does not hold (unheld.c) */
   KSP          ksp;    /* coupled, Newton: the solve of H inside the bordered one (newtonstep.c) */

@@ -421,19 +421,6 @@ def test_tangent_at_rest(tmp_path):
     assert figure("dE_ranks", abs(rest2["energy"] - rest["energy"]) / rest["energy"]) <= 1.5e-14
 
 
-def test_held_by_contact_refused(tmp_path):
-    """A neo-Hookean body held by its contacts alone (the roller) would be
-    anchored by force controls, whose border is a constant stiffness (K e_k):
-    refused in one line naming the body and the option, as force control
-    itself is (before, the solve ran without an answer for minutes)."""
-    r = run_contact(["-options_file", "meshes/roller/roller.opts", "-roller_material", "neohookean", "-output", "none"],
-                    tmp_path, check=False)
-    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
-    print(r.returncode, lines)
-    assert r.returncode == 1 and len(lines) == 1
-    assert lines[0].startswith("contact: error: body roller: held by its contacts alone") and "-roller_material neohookean" in lines[0]
-
-
 @pytest.mark.parametrize("args,needle", [
     (["-indenter_material", "rubber"], "option -indenter_material: unknown material 'rubber' (known: linear, neohookean)"),
     (["-indenter_material", "neohookean", "-indenter_nu", "0.5"], "option -indenter_nu: Poisson's ratio must be in (-1, 0.5), got 0.5"),

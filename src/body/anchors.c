@@ -20,7 +20,9 @@
    body with no load of its own (a roller between two races, loaded through
    them) the vertex nearest the centre of its bounding box; B the vertex
    farthest from A (a lever arm against rotation); a component a Dirichlet
-   condition holds at a vertex is not anchored there. */
+   condition holds at a vertex is not anchored there. A neohookean body is
+   anchored alike: the anchors' border is its tangent's, made again with
+   each Hessian (forcecontrol.c, ProblemUpdateControlBorder). */
 #include "anchors.h"
 #include "conditions.h"
 #include "rigid.h"
@@ -107,8 +109,6 @@ PetscErrorCode BodyAddAnchors(Body b)
     PetscCall(PetscFree(xy));
     PetscFunctionReturn(0);
   }
-  /* an anchor is a force control, whose border is K e_k, a constant stiffness (forcecontrol.c) */
-  PetscCheck(b->mat->constantTangent, b->comm, PETSC_ERR_USER_INPUT, "body %s: held by its contacts alone, it would be anchored by force controls, which need a constant stiffness, and -%s_material %s has none: hold it by a Dirichlet condition", b->name, b->name, b->mat->name);
   { /* A: the loaded vertex nearest the loaded vertices' centroid (least (x, y) on a tie) */
     PetscReal m[3] = {0, 0, 0}, dbest = PETSC_MAX_REAL, dmin;
     PetscBool *on;

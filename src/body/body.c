@@ -575,46 +575,59 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   PetscFunctionReturn(0);
 }
 
-/* K_(a i)(b j) = int d2W/du_(a i) du_(b j) dA over this rank's cells, at
-   the displacement x (a local array; NULL: at rest, where every material's
-   tangent is linear elasticity's, int dN_a/dx_k C_ikjl dN_b/dx_l dA), added
+/* Cell c's tangent K_(a i)(b j) = int d2W/du_(a i) du_(b j) dA (n x n, n =
+   2 nb, full), at the displacement x (a local array; NULL: at rest, where
+   every material's tangent is linear elasticity's, int dN_a/dx_k C_ikjl
+   dN_b/dx_l dA). */
+static PetscErrorCode BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
+{
+  const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
+  PetscReal      u[9][2];
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < nb; ++a) {
+    u[a][0] = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
+    u[a][1] = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
+  }
+  PetscCall(PetscArrayzero(K, n * n));
+  for (PetscInt iq = 0; iq < nq; ++iq) {
+    const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
+    const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
+    PetscReal        gu[4] = {0, 0, 0, 0}, e3 = 0.0, ur = 0.0;
+
+    for (PetscInt a = 0; a < nb && x; ++a) {
+      gu[0] += u[a][0] * dN[2 * a];
+      gu[1] += u[a][0] * dN[2 * a + 1];
+      gu[2] += u[a][1] * dN[2 * a];
+      gu[3] += u[a][1] * dN[2 * a + 1];
+      ur += B[a] * u[a][0];
+    }
+    if (r > 0) e3 = ElasticityHoopStrain(ur, gu[0], r);
+    b->mat->tangent(b->param, gu, e3, nb, w, dN, B, r, K);
+  }
+  for (PetscInt a = 0; a < nb; ++a)
+    for (PetscInt i = 0; i < 2; ++i)
+      for (PetscInt bb = a + 1; bb < nb; ++bb)
+        for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
+  PetscFunctionReturn(0);
+}
+
+/* The tangent over this rank's cells at the displacement x (as above), added
    into H at rows and columns map[local dof] (negative: left out). */
 static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], const PetscInt map[], Mat H)
 {
-  const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
+  const PetscInt nb = b->nb, n = 2 * nb;
   PetscScalar    K[18 * 18];
   PetscInt       idx[18];
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    PetscReal u[9][2];
     for (PetscInt a = 0; a < nb; ++a) {
       idx[2 * a]     = map[b->cdof[c * nb + a]];
       idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
-      u[a][0]        = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
-      u[a][1]        = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
     }
-    PetscCall(PetscArrayzero(K, n * n));
-    for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-      const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
-      PetscReal        gu[4] = {0, 0, 0, 0}, e3 = 0.0, ur = 0.0;
-
-      for (PetscInt a = 0; a < nb && x; ++a) {
-        gu[0] += u[a][0] * dN[2 * a];
-        gu[1] += u[a][0] * dN[2 * a + 1];
-        gu[2] += u[a][1] * dN[2 * a];
-        gu[3] += u[a][1] * dN[2 * a + 1];
-        ur += B[a] * u[a][0];
-      }
-      if (r > 0) e3 = ElasticityHoopStrain(ur, gu[0], r);
-      b->mat->tangent(b->param, gu, e3, nb, w, dN, B, r, K);
-    }
-    for (PetscInt a = 0; a < nb; ++a)
-      for (PetscInt i = 0; i < 2; ++i)
-        for (PetscInt bb = a + 1; bb < nb; ++bb)
-          for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
+    PetscCall(BodyCellTangent(b, c, x, K));
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
@@ -640,6 +653,39 @@ PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(BodyAssembleTangentMapped(b, b->mat->constantTangent ? NULL : x, b->l2b, H));
   PetscCall(VecRestoreArrayRead(Xl, &x));
+  PetscFunctionReturn(0);
+}
+
+/* Yl = K(Xl) El over this rank's cells, local vectors (constrained dofs
+   included), K the tangent at Xl (NULL: at rest); only the cells where El
+   has an entry are visited, so a column of a few dofs costs a few cells'
+   tangents. Like a gradient, Yl holds this rank's cells' part alone. */
+PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
+{
+  const PetscInt     nb = b->nb, n = 2 * nb;
+  const PetscScalar *x = NULL, *e;
+  PetscScalar       *y, K[18 * 18];
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(Yl));
+  if (b->rigid) PetscFunctionReturn(0);
+  if (Xl && !b->mat->constantTangent) PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(VecGetArrayRead(El, &e));
+  PetscCall(VecGetArray(Yl, &y));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscBool any = PETSC_FALSE;
+    for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / 2] + a % 2] != 0.0);
+    if (!any) continue;
+    PetscCall(BodyCellTangent(b, c, x, K));
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscScalar s = 0;
+      for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / 2] + j % 2];
+      y[b->cdof[c * nb + i / 2] + i % 2] += s;
+    }
+  }
+  PetscCall(VecRestoreArray(Yl, &y));
+  PetscCall(VecRestoreArrayRead(El, &e));
+  if (x) PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscFunctionReturn(0);
 }
 

@@ -10,8 +10,9 @@
 
    H the Hessian of the bodies' dofs (K + the contact's), column k of B the
    force on the free dofs when group k moves by 1, D the groups' own
-   stiffness (forcecontrol.c computes both once: the assumption, named there,
-   is that no controlled group is on a contact surface). Eliminating u with
+   stiffness (forcecontrol.c computes both once, or for an anchor of a
+   neohookean body with each Hessian from its tangent: the assumption, named
+   there, is that no controlled group is on a contact surface). Eliminating u with
    the solve of H the step already has (schur.c, substructure.c, Cholesky,
    or CG):
 

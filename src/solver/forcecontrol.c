@@ -21,6 +21,19 @@
      stiffness's alone, so a controlled group on a contact surface (whose
      nodes the contact would couple to U) gets a Newton step without that
      coupling: still a descent direction, no longer Newton's.
+     A body whose tangent varies (neohookean) has no constant K: its
+     controls are only anchors (a force control of its own is refused,
+     body.c), whose columns K(u) e_k are made again at each Hessian from
+     the stiffness that Hessian has, the tangent at u or the stiffness at
+     rest (ProblemUpdateControlBorder): the bordered matrix is then the
+     Hessian of Pi(u; U) in (u, U) (but for the assumption above), and the
+     step Newton's. Only the cells
+     around each anchor's vertex are visited; measured on a whole rubber
+     disc squeezed by 30 % (3,247 dofs, 270 Newton iterations) 0.27 ms a
+     Hessian, 0.35 % of the solve (tests/test_neo_held.py). With the
+     columns at rest instead, the same scene did not converge in 1,873
+     iterations (the tangent's border differs from the rest's by the
+     strain, 50 %).
      With load stepping (load factor lambda) the group moves by U, and the
      force is lambda F: the group's Dirichlet value is set to U / lambda,
      which the body scales by lambda.
@@ -158,53 +171,86 @@ PetscErrorCode ProblemControlSceneForce(Problem p, PetscReal *S)
   PetscFunctionReturn(0);
 }
 
-/* Column k of the border and the controls' own stiffness: the gradient of
-   the elastic energy at the local vector e_k (1 on group k's nodes in its
-   component, 0 elsewhere) minus the gradient at 0, K e_k (the energy is
-   quadratic), summed to the free dofs (B_k) and over each control's group
-   (D_lk, as a reaction). */
-static PetscErrorCode ProblemControlColumn(Problem p, PetscInt k)
+/* Column k of the border and the controls' own stiffness: K e_k, e_k the
+   local vector with 1 on group k's nodes in its component and 0 elsewhere,
+   summed to the free dofs (B_k) and over each control's group (D_lk, as a
+   reaction). K is the body's stiffness: for a constant one the gradient of
+   the elastic energy at e_k minus that at 0 (the energy is quadratic); for
+   a body whose tangent varies (neohookean: only an anchor, anchors.c) the
+   tangent at its local vector Xl (NULL: at rest) applied to e_k over the
+   few cells around the group (BodyApplyTangentLocal), made anew with each
+   Hessian (ProblemUpdateControlBorder). The body's reactions and
+   gradient are left as the last evaluation made them. */
+static PetscErrorCode ProblemControlColumn(Problem p, PetscInt k, Vec Xl)
 {
   const ForceControl *fc = &p->fc.c[k];
   Body                b  = p->bodies[fc->body];
   const PetscReal     v0 = b->bc[fc->bc].values[fc->c];
-  Vec                 e, z, g0;
+  Vec                 e, y;
   PetscScalar        *a;
-  PetscReal           en;
+  PetscReal           en, saved[CONTACT_MAX_BC][2];
 
   PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(b->Xl, &e));
-  PetscCall(VecDuplicate(b->Xl, &z));
-  PetscCall(VecDuplicate(b->Xl, &g0));
-  PetscCall(BodySetBCValue(b, fc->bc, fc->c, 1.0));
-  PetscCall(VecCopy(b->bclFull, e));
-  PetscCall(BodySetBCValue(b, fc->bc, fc->c, 0.0));
-  PetscCall(VecAXPY(e, -1.0, b->bclFull));
-  PetscCall(BodySetBCValue(b, fc->bc, fc->c, v0));
-  PetscCall(VecZeroEntries(z));
-  PetscCall(VecZeroEntries(g0));
-  PetscCall(BodyComputeEnergyGradient(b, z, &en, g0));
-  PetscCall(VecZeroEntries(b->Gl));
-  PetscCall(BodyComputeEnergyGradient(b, e, &en, b->Gl));
-  PetscCall(VecAXPY(b->Gl, -1.0, g0));
-  PetscCall(BodyComputeReactions(b, b->Gl));
+  if (p->fc.E[k]) e = p->fc.E[k];
+  else {
+    PetscCall(VecDuplicate(b->Xl, &e));
+    PetscCall(BodySetBCValue(b, fc->bc, fc->c, 1.0));
+    PetscCall(VecCopy(b->bclFull, e));
+    PetscCall(BodySetBCValue(b, fc->bc, fc->c, 0.0));
+    PetscCall(VecAXPY(e, -1.0, b->bclFull));
+    PetscCall(BodySetBCValue(b, fc->bc, fc->c, v0));
+    if (!b->mat->constantTangent) p->fc.E[k] = e; /* kept: the column is made again at each Hessian */
+  }
+  PetscCall(VecDuplicate(b->Xl, &y));
+  if (b->mat->constantTangent) {
+    Vec z, g0;
+    PetscCall(VecDuplicate(b->Xl, &z));
+    PetscCall(VecDuplicate(b->Xl, &g0));
+    PetscCall(VecZeroEntries(z));
+    PetscCall(VecZeroEntries(g0));
+    PetscCall(BodyComputeEnergyGradient(b, z, &en, g0));
+    PetscCall(VecZeroEntries(y));
+    PetscCall(BodyComputeEnergyGradient(b, e, &en, y));
+    PetscCall(VecAXPY(y, -1.0, g0));
+    PetscCall(VecDestroy(&z));
+    PetscCall(VecDestroy(&g0));
+  } else PetscCall(BodyApplyTangentLocal(b, Xl, e, y));
+  for (PetscInt j = 0; j < b->nbc; ++j) {
+    saved[j][0] = b->bc[j].reaction[0];
+    saved[j][1] = b->bc[j].reaction[1];
+  }
+  PetscCall(BodyComputeReactions(b, y));
   for (PetscInt l = 0; l < p->fc.n; ++l) {
     const ForceControl *fl = &p->fc.c[l];
     const BodyBC       *bc = fl->rigid ? NULL : &p->bodies[fl->body]->bc[fl->bc];
     p->fc.D[l * p->fc.n + k] = bc && fl->body == fc->body ? bc->reaction[bc->comps[fl->c]] : 0.0;
   }
-  PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
+  for (PetscInt j = 0; j < b->nbc; ++j) {
+    b->bc[j].reaction[0] = saved[j][0];
+    b->bc[j].reaction[1] = saved[j][1];
+  }
+  if (!p->fc.B[k]) PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
   PetscCall(VecZeroEntries(p->fc.B[k]));
   PetscCall(VecGetArray(p->fc.B[k], &a));
   PetscCall(VecPlaceArray(b->Gg, a + p->offset[fc->body]));
-  PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
-  PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
+  PetscCall(DMLocalToGlobalBegin(b->dm, y, ADD_VALUES, b->Gg));
+  PetscCall(DMLocalToGlobalEnd(b->dm, y, ADD_VALUES, b->Gg));
   PetscCall(VecResetArray(b->Gg));
   PetscCall(VecRestoreArray(p->fc.B[k], &a));
-  PetscCall(VecDestroy(&e));
-  PetscCall(VecDestroy(&z));
-  PetscCall(VecDestroy(&g0));
+  if (e != p->fc.E[k]) PetscCall(VecDestroy(&e));
+  PetscCall(VecDestroy(&y));
   PetscFunctionReturn(0);
+}
+
+/* D's entries between controls of one body, symmetric in exact arithmetic:
+   their mean. */
+static void ProblemControlSymmetrise(Problem p)
+{
+  const PetscInt m = p->fc.n;
+
+  for (PetscInt k = 0; k < m; ++k)
+    for (PetscInt l = 0; l < k; ++l)
+      if (!p->fc.c[k].rigid && !p->fc.c[l].rigid) p->fc.D[k * m + l] = p->fc.D[l * m + k] = 0.5 * (p->fc.D[k * m + l] + p->fc.D[l * m + k]);
 }
 
 PetscErrorCode ProblemSetUpControlBorder(Problem p)
@@ -214,7 +260,7 @@ PetscErrorCode ProblemSetUpControlBorder(Problem p)
   PetscFunctionBeginUser;
   if (!p->fc.coupled) PetscFunctionReturn(0);
   for (PetscInt k = 0; k < m; ++k) {
-    if (!p->fc.c[k].rigid) PetscCall(ProblemControlColumn(p, k));
+    if (!p->fc.c[k].rigid) PetscCall(ProblemControlColumn(p, k, NULL));
     else { /* the contact's, at each Hessian (ProblemRigidBorderEnd) */
       PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
       PetscCall(VecZeroEntries(p->fc.B[k]));
@@ -224,8 +270,33 @@ PetscErrorCode ProblemSetUpControlBorder(Problem p)
   for (PetscInt k = 0; k < m; ++k) {
     if (p->fc.c[k].rigid) continue;
     PetscCheck(p->fc.D[k * m + k] > 0, p->comm, PETSC_ERR_USER_INPUT, "body %s: force-controlled group %s has no stiffness of its own (no cell touches it on any rank)", p->bodies[p->fc.c[k].body]->name, p->bodies[p->fc.c[k].body]->bc[p->fc.c[k].bc].group);
-    for (PetscInt l = 0; l < k; ++l) p->fc.D[k * m + l] = p->fc.D[l * m + k] = 0.5 * (p->fc.D[k * m + l] + p->fc.D[l * m + k]);
   }
+  ProblemControlSymmetrise(p);
+  PetscFunctionReturn(0);
+}
+
+static PetscLogEvent ControlColumns = 0;
+
+PetscErrorCode ProblemUpdateControlBorder(Problem p, PetscBool tangent)
+{
+  PetscBool any = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  if (!p->fc.coupled) PetscFunctionReturn(0);
+  if (!ControlColumns) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactForceControl", &id));
+    PetscCall(PetscLogEventRegister("ForceBorderColumns", id, &ControlColumns));
+  }
+  PetscCall(PetscLogEventBegin(ControlColumns, 0, 0, 0, 0));
+  for (PetscInt k = 0; k < p->fc.n; ++k) {
+    const Body b = p->bodies[p->fc.c[k].body];
+    if (p->fc.c[k].rigid || b->mat->constantTangent) continue;
+    PetscCall(ProblemControlColumn(p, k, tangent ? b->Xl : NULL));
+    any = PETSC_TRUE;
+  }
+  if (any) ProblemControlSymmetrise(p);
+  PetscCall(PetscLogEventEnd(ControlColumns, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -384,6 +455,9 @@ PetscErrorCode ForceControlsDestroy(ForceControls *fc)
 {
   PetscFunctionBeginUser;
   PetscCall(KSPDestroy(&fc->ksp));
-  for (PetscInt k = 0; k < fc->n; ++k) PetscCall(VecDestroy(&fc->B[k]));
+  for (PetscInt k = 0; k < fc->n; ++k) {
+    PetscCall(VecDestroy(&fc->B[k]));
+    PetscCall(VecDestroy(&fc->E[k]));
+  }
   PetscFunctionReturn(0);
 }

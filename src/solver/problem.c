@@ -828,6 +828,7 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
+  PetscCall(ProblemUpdateControlBorder(p, p->tangentFull)); /* an anchor of a neohookean body: its column of the same stiffness */
   PetscCall(ProblemRigidBorderBegin(p));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
   PetscCall(ProblemRigidBorderEnd(p));
