@@ -11,8 +11,9 @@ the roundoff subset under each of five OpenBLAS kernels). A docstring quotes
 it as `name` = VALUE, or `name` = LO to HI for a range (over the kernels, or
 over a test's parametrised cases: a figure's name is local to its test
 function, whose cases share the docstring). A quoted figure is flagged when a
-recorded value lies outside [LO / 3, 3 HI] (absolute values; a quoted 0 takes
-no recorded value above 1e-300), or when the test ran and recorded other
+recorded value lies outside [LO / 3, 3 HI] (absolute values; a range across
+zero, -LO to HI, is [0, 3 max(LO, HI)]; a quoted 0 takes no recorded value
+above 1e-300), or when the test ran and recorded other
 figures but not this one. Figures recorded and not quoted are listed, not
 flagged. Only the standard library is used.
 """
@@ -47,7 +48,8 @@ def quoted(tests_dir):
             figs = {}
             for m in QUOTE.finditer(" ".join(doc.split())):
                 lo, hi = float(m.group(2)), float(m.group(3) or m.group(2))
-                lo, hi = sorted((abs(lo), abs(hi)))
+                # a signed range across zero (-4.9e-7 to 3.9e-7) spans every magnitude below its ends'
+                lo, hi = (0.0, max(abs(lo), abs(hi))) if lo * hi < 0 else sorted((abs(lo), abs(hi)))
                 figs[m.group(1)] = (lo, hi, m.group(0))
             if figs:
                 out[(path.name, name)] = figs

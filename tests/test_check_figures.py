@@ -51,3 +51,19 @@ def test_not_run_not_flagged(tmp_path):
     """A test with no records did not run: its quotes are not flagged."""
     p = check(tmp_path, [("test_b", "other", 1.0, "auto")])
     assert p.returncode == 0 and "0 quoted figures" in p.stdout, p.stdout
+
+
+def test_signed_range_spans_zero(tmp_path):
+    """A signed range across zero (`e` = -4.9e-7 to 3.9e-7) takes any value
+    of smaller magnitude (an order error on either side of 2), not one over
+    3 times its larger end."""
+    tests = tmp_path / "tests"
+    tests.mkdir()
+    (tests / "test_y.py").write_text('def test_c():\n    """`e` = -4.9e-7 to 3.9e-7."""\n')
+    rec = tmp_path / "r.jsonl"
+    rec.write_text(json.dumps({"test": "tests/test_y.py::test_c", "name": "e", "value": 1.1e-8, "kernel": "auto"}) + "\n")
+    p = subprocess.run([sys.executable, str(SCRIPT), "--tests", str(tests), str(rec)], capture_output=True, text=True)
+    assert p.returncode == 0, p.stdout
+    rec.write_text(json.dumps({"test": "tests/test_y.py::test_c", "name": "e", "value": -1.6e-6, "kernel": "auto"}) + "\n")
+    p = subprocess.run([sys.executable, str(SCRIPT), "--tests", str(tests), str(rec)], capture_output=True, text=True)
+    assert p.returncode == 1, p.stdout

@@ -150,8 +150,9 @@ def test_ranks_agree(runs):
     `node_pressure` = 4.6e-13 to 8.4e-13, the force
     `node_force` = 3.8e-13 to 9.4e-13, the positions
     `node_x` = 1.1e-16 to 2.2e-16, the arc `node_s` = 5.6e-17 to 1.1e-16, the
-    weights `node_weight` = 8.3e-16 to 2.1e-15, the gaps to a denormal,
-    `node_gap` = 4.9e-324 to 1.5e-323): a transfer that misses the slave edges
+    weights `node_weight` = 8.3e-16 to 2.1e-15, the gaps of the paired
+    nodes `node_gap` = 7.5e-16 to 1.8e-15; an unpaired node's gap is NaN on
+    both): a transfer that misses the slave edges
     of the other rank shows."""
     a, b = surfaces(runs("first", 1))["block_contact"], surfaces(runs("first", 2))["block_contact"]
     for n in ("node_s", "node_x", "node_pressure", "node_force", "node_weight"):

@@ -130,7 +130,7 @@ def test_two_ranks(kind, coarse):
     within the final tolerance, so a state whose gradient is g is off its
     answer by a residual force g, of which the plate takes at most sqrt(n)
     |g|; for two runs sqrt(n) (|g1| + |g2|) (about 1e-4 of the force).
-    Measured: `dP` = 2.9e-14 to 4.8e-9 of the force (half, disc; MUMPS's
+    Measured: `dP` = 2.0e-14 to 4.9e-8 of the force (half, disc; MUMPS's
     parallel factorisation varies in its last bits from run to run)."""
     one, two = coarse[(kind, 1)], coarse[(kind, 2)]
     _, F1, _, _ = path(one)
