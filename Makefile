@@ -72,7 +72,7 @@ run: bin/contact meshes
 TEST_JOBS ?= 3
 PYTEST_PARALLEL = -n $(TEST_JOBS) --dist loadgroup
 test: bin/contact meshes
-	$(PYTHON) -m pytest -q --durations=10 -m "not stress" $(PYTEST_PARALLEL) tests
+	$(PYTHON) -m pytest -q --durations=10 -m "not stress and not kernels" $(PYTEST_PARALLEL) tests
 
 # the tests whose figures depend on round-off (pytest's roundoff mark) under
 # each of OpenBLAS's kernels Prescott, Nehalem, Sandybridge, Haswell and

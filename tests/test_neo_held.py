@@ -124,6 +124,7 @@ def test_energy_is_work(kind, coarse):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 @pytest.mark.parametrize("kind", ["half", "disc"])
 def test_two_ranks(kind, coarse):
     """1 and 2 ranks: the plate's force at the full squeeze. Each run stops

@@ -47,7 +47,7 @@ def compare(ref, got, label, name, rtol=RTOL):
 
 
 @pytest.mark.roundoff
-@pytest.mark.parametrize("formulation", ["gpts", "mortar"])
+@pytest.mark.parametrize("formulation", [pytest.param("gpts", marks=pytest.mark.kernels), "mortar"])
 def test_substructure_ranks(formulation, tmp_path):
     """h = 0.1: 1, 2, 3 and 4 ranks on the substructured step, the one-rank
     MUMPS Schur step and a full factorisation per step on 2 ranks agree in

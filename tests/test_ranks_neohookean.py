@@ -30,7 +30,8 @@ def compare(tmp_path, extra, partitioner):
 
 
 @pytest.mark.roundoff
-@pytest.mark.parametrize("partitioner", ["metis", "simple", "ptscotch"])
+@pytest.mark.parametrize("partitioner", [pytest.param("metis", marks=pytest.mark.kernels), "simple",
+                                         pytest.param("ptscotch", marks=pytest.mark.kernels)])
 def test_frictionless_partitioners(tmp_path, partitioner):
     """Frictionless, one push (0.01, -0.05): P and the energy on 2 ranks
     within 1e-10 of 1 rank's for each partitioner. Before the fix
@@ -43,6 +44,7 @@ def test_frictionless_partitioners(tmp_path, partitioner):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_friction_press_drag(tmp_path):
     """Friction 0.5, pressed by 0.1 then dragged by 0.3 (two stages, full
     sliding): 2 ranks (metis) within 1e-10 of 1 rank in P and the energy.

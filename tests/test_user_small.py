@@ -137,6 +137,7 @@ def test_ring_contact_zone(ring):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_ring_contact_zone_ranks(ring):
     """On 2 ranks the ring's zone (gathered on rank 0, broadcast for the HDF5's
     attributes) is the 1-rank one: `ring_zone_ranks` = 1.0e-14 to 4.1e-14
