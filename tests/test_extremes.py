@@ -438,6 +438,7 @@ def test_million_dofs(tmp_path):
 # -- solver ------------------------------------------------------------------
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_auto_hessian(tmp_path):
     """-contact_hessian auto (the default) adds the second-order contact term
     once the gradient is small: with gpts, both solved to gttol 1e-10, the

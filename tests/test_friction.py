@@ -217,6 +217,7 @@ def test_ranks_agree(runs):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_taylor(tmp_path):
     """The Taylor test at the cattaneo solution (the energy of the last
     increment), along a direction of 2e-5 of max |u| (-taylor_scale): its

@@ -211,6 +211,7 @@ def test_pressure_stages_linear(tmp_path):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_rigid_body_stages(tmp_path):
     """A rigid body's prescribed motion follows the stages: the rigid punch
     pressed to 0.004 turned by 0.003, then to 0.002 turned by 0.001, ends

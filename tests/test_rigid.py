@@ -374,6 +374,7 @@ def test_roller_held_by_contact(roller):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_roller_ranks_and_gpts(roller, tmp_path):
     """The rigid roller on 2 ranks: the same motion in y (x, which the contacts
     do not hold, is not compared; nor can a tighter stop be asked: the roller's
