@@ -95,7 +95,7 @@ static struct {
   char source[32];    /* how it was chosen */
   char fallback[64];  /* the kernel loaded before the program started again on this one */
   char requested[64]; /* -blas_kernel as BlasKernelSelect() saw it */
-  char error[256];    /* a -blas_kernel that could not be honoured */
+  char error[512];    /* a -blas_kernel that could not be honoured */
 } state = {"none", "none", "", "", ""};
 
 static const Kernel *KernelFind(const char name[])
