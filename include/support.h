@@ -10,4 +10,8 @@ PetscErrorCode BodyAddContactNormals(Body, PetscInt n, const PetscReal nrm[], Pe
    its contacts, or none at all where its contacts can only push it one way)
    is one line naming the body and the motion nothing holds. */
 PetscErrorCode BodyCheckSupport(Body);
+/* Whether the body is given forces alone (every Dirichlet component
+   force-controlled, or none; no pressure or traction), and then the force
+   controls' sum F[k] at the end of each stage k. */
+PetscBool      BodyGivenForcesAlone(const Body, PetscReal F[][2]);
 PetscErrorCode BodySupportDestroy(Body);

@@ -54,8 +54,7 @@ PetscErrorCode BodySupportDestroy(Body b)
   PetscFunctionReturn(0);
 }
 
-/* Whether the body is given forces alone, and their sum at each stage. */
-static PetscBool ForcesAlone(const Body b, PetscReal F[][2])
+PetscBool BodyGivenForcesAlone(const Body b, PetscReal F[][2])
 {
   for (PetscInt k = 0; k < b->nstages; ++k) F[k][0] = F[k][1] = 0.0;
   if (b->nload > 0) return PETSC_FALSE;
@@ -116,7 +115,7 @@ PetscErrorCode BodyCheckSupport(Body b)
   PetscReal F[CONTACT_MAX_STAGES][2], a = 0.0, L = 0.0, w;
 
   PetscFunctionBeginUser;
-  if (!b->npairs || !ForcesAlone(b, F)) PetscFunctionReturn(0);
+  if (!b->npairs || !BodyGivenForcesAlone(b, F)) PetscFunctionReturn(0);
   PetscCall(NormalsArc(b, &a, &L));
   if (L < 0) PetscFunctionReturn(0);
   w = PetscAtanReal(b->supportMu); /* the friction cone's half-angle */

@@ -26,24 +26,6 @@
 #include "contactterm.h"
 #include "support.h"
 
-/* Whether the body is given forces alone, and their sum at each stage. */
-static PetscBool GivenForcesAlone(const Body B, PetscReal F[][2])
-{
-  PetscBool any = PETSC_FALSE;
-
-  if (B->nload > 0 || B->npairs != 1) return PETSC_FALSE;
-  for (PetscInt k = 0; k < B->nstages; ++k) F[k][0] = F[k][1] = 0.0;
-  for (PetscInt i = 0; i < B->nbc; ++i) {
-    const BodyBC *bc = &B->bc[i];
-    for (PetscInt j = 0; j < bc->ncomp; ++j) {
-      if (!bc->control[j]) return PETSC_FALSE; /* a displacement held */
-      any = PETSC_TRUE;
-      for (PetscInt k = 0; k < B->nstages; ++k) F[k][bc->comps[j]] += bc->stage[k][j];
-    }
-  }
-  return any;
-}
-
 /* The outward unit normal of a flat surface, or PETSC_FALSE if it is not. */
 static PetscBool FlatNormal(const ContactSurface *M, PetscReal n[2])
 {
@@ -77,7 +59,7 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
     const Body B = bodies[b->S[s].body];
     PetscReal  F[CONTACT_MAX_STAGES][2], n[2];
 
-    if (!GivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue;
+    if (B->npairs != 1 || !BodyGivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
     for (PetscInt k = 0; k < B->nstages; ++k) {
       const PetscReal Fn = F[k][0] * n[0] + F[k][1] * n[1];
       const PetscReal Ft = PetscSqrtReal(PetscSqr(F[k][0] - Fn * n[0]) + PetscSqr(F[k][1] - Fn * n[1]));

@@ -169,8 +169,7 @@ void BlasKernelSelect(int argc, char **argv)
     const char *colon = strchr(carried, ':');
     snprintf(state.source, sizeof(state.source), "%.*s", colon ? (int)(colon - carried) : (int)strlen(carried), carried);
     if (colon) snprintf(state.fallback, sizeof(state.fallback), "%s", colon + 1);
-    (void)unsetenv(SOURCE_ENV);
-    if (given && strcasecmp(state.requested, "auto")) (void)Wanted(loaded, given, state.requested); /* its errors, if any */
+    (void)unsetenv(SOURCE_ENV); /* the first start checked -blas_kernel's name before it started this one */
     return;
   }
   want = Wanted(loaded, given, state.requested);
