@@ -12,6 +12,9 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem, const char type[]);
 PetscErrorCode ProblemLMVMBeginStaged(Problem);
 /* Whether the coming TAO solve is the last stage (the decrement test applies to it alone). */
 PetscErrorCode ProblemLMVMSetLastStage(Problem, PetscBool last);
+/* TAO's convergence test, or with -lmvm_decrement_rtol in force the
+   decrement's (the test forcestop.c's wraps). */
+PetscErrorCode ProblemLMVMConvergenceTest(Problem, Tao);
 /* TaoSolve, and for lmvm/blmvm with -lmvm_h0 contact its restarts where the
    line search failed after progress: the iterations of all and the reason of the last. */
 PetscErrorCode ProblemTaoSolve(Problem, PetscInt *its, TaoConvergedReason *reason);

@@ -48,6 +48,7 @@ typedef struct {
   PetscInt    loadStages; /* -load_stages: the stages of the load history (history.c), each in loadSteps increments */
   PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
   PetscReal   penaltyStart, stageRtol;
+  PetscReal   forceRtol; /* -stop_force_rtol: the final stop also asks ||g|| <= this ||f_c||, f_c the contacts' nodal forces (0: off) */
   PetscReal   lagRtol;  /* -contact_friction_lag_rtol: a term's lagged quantity (friction's pressure) is converged when its largest change is below this, relative */
   PetscInt    lagMaxIt; /* -contact_friction_lag_max_it: the most solves of one increment's fixed point */
   PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
@@ -123,6 +124,7 @@ typedef struct {
   PetscReal          load;                 /* the load parameter the bodies are at (ProblemSetLoad) */
   TaoConvergedReason reason;
   PetscReal          energy, gnorm;        /* at the solution (ProblemPostProcess) */
+  PetscReal          contactForceNorm;     /* ||f_c||, the contacts' nodal forces at the solution (forcestop.c; 0: none) */
   PetscReal          bodyEnergy[CONTACT_MAX_BODIES]; /* each body's elastic energy at the solution */
   PetscReal          taylorRates[2], taylorRemainders[2][8], taylorEps[8]; /* ProblemTaylorTest */
   PetscInt           taylorN;
@@ -146,6 +148,21 @@ typedef struct {
   PetscReal penaltyStart;  /* the first stage's k_p over the scene's */
   PetscReal decrementRtol; /* the last stage stops on the decrement (0: on the gradient tolerances; -1: not chosen yet) */
 } ProblemSchedule;
+
+/* -stop_force_rtol (forcestop.c): the final stop also asks the gradient to be
+   small against the forces the contacts carry. */
+typedef struct {
+  PetscBool          active;    /* the coming TAO solves stop at the final tolerance: the test applies */
+  PetscBool          met;       /* the gradient tolerance was met in the current TaoSolve, at Xmet */
+  Vec                Xmet;      /* the iterate that met it (kept while the solve goes on) */
+  TaoConvergedReason metReason; /* the reason TAO's test gave there */
+  PetscInt           continued; /* TAO solves that went on past the gradient tolerance */
+  PetscInt           fallbacks; /* of those, ended at Xmet (a later stop that was not a convergence) */
+  PetscInt           floors;    /* of those, ended where the gradient stalled (its round-off floor) */
+  PetscInt           stalled;   /* iterations since the gradient last halved, past TAO's test */
+  PetscReal          best;      /* the least gradient norm past TAO's test */
+  PetscReal          ratio;     /* the last test's ||g|| / ||f_c|| (-1: none) */
+} ForceStop;
 
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue.
    L-BFGS's state lives with the TAO solver that uses it (lmvm.c). */
@@ -174,6 +191,7 @@ struct _n_Problem {
   PetscBool      tangentSlow;  /* tangentAuto: the modified steps have converged slowly in this solve */
   PetscReal      tangentG[3];  /* tangentAuto: the gradient norms of the last three iterations */
   ForceControls  fc;        /* force control (forcecontrol.c) */
+  ForceStop      fstop;     /* -stop_force_rtol (forcestop.c) */
   Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
   ProblemResults res;
 };

@@ -599,6 +599,10 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     if (p->res.decrementSolves) fprintf(fp, "  \"lmvm_decrement_floor_stops\": %d,\n", (int)p->res.decrementFloor);
     ContactJSONKeyReal(fp, "  ", "energy", p->res.energy);
     ContactJSONKeyReal(fp, ",\n  ", "gradient_norm", p->res.gnorm);
+    /* the gradient against the contacts' nodal forces, and the stop's test of it (-stop_force_rtol) */
+    if (p->res.contactForceNorm > 0) ContactJSONKeyReal(fp, ",\n  ", "force_residual", p->res.gnorm / p->res.contactForceNorm);
+    else fprintf(fp, ",\n  \"force_residual\": null");
+    fprintf(fp, ",\n  \"force_stop\": {\"rtol\": %.6g, \"continued\": %d, \"floors\": %d, \"fallbacks\": %d}", (double)p->opt.forceRtol, (int)p->fstop.continued, (int)p->fstop.floors, (int)p->fstop.fallbacks);
     ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
     ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
     PetscCall(JSONReactions(fp, p));

@@ -171,6 +171,7 @@
    default, 3 stages from 1e-3 k_p; with the one above, 1.9e-9. */
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
+#include "forcestop.h"
 #include "problem.h"
 #include "newtonstep.h"
 #include "forceborder.h"
@@ -396,6 +397,17 @@ static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ProblemLMVMConvergenceTest(Problem p, Tao tao)
+{
+  LMVMCtx *l;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemGetLMVM(p, &l));
+  if (l && l->X && p->sched.decrementRtol > 0) PetscCall(ProblemLMVMConverged(tao, l));
+  else PetscCall(TaoDefaultConvergenceTest(tao, NULL));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscReal gatol, grtol, gttol, g0 = -1.0, f;
@@ -409,8 +421,10 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
   *its = 0;
   for (PetscInt r = 0;; ++r) {
     PetscReal f0;
+    PetscCall(ProblemForceStopBegin(p));
     PetscCall(TaoSolve(p->tao));
     PetscCall(TaoGetSolutionStatus(p->tao, &n, &f, NULL, NULL, NULL, reason));
+    PetscCall(ProblemForceStopEnd(p, reason));
     *its += n;
     if (!l || !l->X) break; /* no restart without the iterates of the program's H0 */
     if (g0 < 0) g0 = l->G0;
@@ -541,7 +555,6 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
     PetscCall(VecDuplicate(p->X, &l->G));
     PetscCall(VecDuplicate(p->X, &l->W));
     PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, l));
-    if (p->sched.decrementRtol > 0) PetscCall(TaoSetConvergenceTest(p->tao, ProblemLMVMConverged, l));
   }
   PetscFunctionReturn(0);
 }

@@ -8,6 +8,7 @@
    force control's part of the system (forcecontrol.c) below it. */
 #include "support.h"
 #include "problem.h"
+#include "forcestop.h"
 #include "partition.h"
 #include "options.h"
 #include "forcecontrol.h"
@@ -38,6 +39,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->opt.penaltyStages = 1;
   p->opt.penaltyStart  = 1e-2;
   p->opt.stageRtol     = 1e-3;
+  p->opt.forceRtol     = 1e-6;
   p->opt.lagRtol       = 1e-8;
   p->opt.lagMaxIt      = 30;
   p->opt.controlMaxIt  = 40;
@@ -177,6 +179,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with Newton where k_p h / E* exceeds 1e7: 2, the first at 1000; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
+  PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; src/solver/forcestop.c)", NULL, p->opt.forceRtol, &p->opt.forceRtol, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_lag_max_it", "Friction: the most solves of one load increment's fixed point on the pressure", NULL, p->opt.lagMaxIt, &p->opt.lagMaxIt, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
@@ -202,6 +205,7 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
   PetscCheck(p->opt.lagRtol > 0 && p->opt.lagRtol < 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_rtol: must be in (0, 1), got %g", (double)p->opt.lagRtol);
   PetscCheck(p->opt.lagMaxIt >= 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.lagMaxIt);
+  PetscCheck(p->opt.forceRtol >= 0 && p->opt.forceRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stop_force_rtol: must be in [0, 1), got %g", (double)p->opt.forceRtol);
   PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
   PetscCheck(p->opt.h0Refresh >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, p->opt.h0Refresh);
   PetscCheck(p->opt.lmvmRestarts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, p->opt.lmvmRestarts);
@@ -909,6 +913,7 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(contactLog.postprocess));
   if (!converged) PetscCall(PetscPrintf(p->comm, "WARNING: the solve did not converge (%s): the figures below are not a solution\n", TaoConvergedReasons[p->res.reason]));
+  PetscCall(ProblemContactForceNorm(p, X, &p->res.contactForceNorm)); /* before the evaluation whose bodies' gradients the reactions read */
   PetscCall(ProblemEvaluate(p, X, &p->res.energy, p->G, parts));
   for (PetscInt k = 0; k < p->fc.n; ++k) p->res.energy -= p->fc.c[k].force * p->fc.c[k].U; /* the forces' potential, as the loads' (forcecontrol.c) */
   PetscCall(VecNorm(p->G, NORM_2, &p->res.gnorm));
@@ -916,7 +921,10 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     p->res.bodyEnergy[i] = parts[i];
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
-  PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
+  if (converged && p->opt.forceRtol > 0 && p->res.contactForceNorm > 0 && p->res.gnorm > p->opt.forceRtol * p->res.contactForceNorm)
+    PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: the solve stopped with its gradient %.1e of the contacts' nodal forces, above -stop_force_rtol %g: the forces are about that far from converged\n", (double)(p->res.gnorm / p->res.contactForceNorm), (double)p->opt.forceRtol));
+  if (p->res.contactForceNorm > 0) PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e (%.1e of the contacts' nodal forces)\n", (double)p->res.energy, (double)p->res.gnorm, (double)(p->res.gnorm / p->res.contactForceNorm)));
+  else PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a rigid body: its motion and the contact's force on it */
     const BodyRigid *r = p->bodies[i]->rg;
     if (!p->bodies[i]->rigid) continue;
@@ -1039,6 +1047,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermDestroy(&p->terms[t]));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
+  PetscCall(ProblemForceStopDestroy(p));
   PetscCall(MatDestroy(&p->Htao));
   PetscCall(ForceControlsDestroy(&p->fc));
   PetscCall(MatDestroy(&p->H));

@@ -9,6 +9,7 @@
 #include "progress.h"
 #include "newtonstep.h"
 #include "lmvm.h"
+#include "forcestop.h"
 #include "forceborder.h"
 #include "forcesolve.h"
 #include "staging.h"
@@ -50,6 +51,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
   PetscCall(TaoSetFromOptions(p->tao));
   if (ContactProgressEnabled()) PetscCall(TaoSetMonitor(p->tao, ContactProgressTaoMonitor, NULL, NULL));
   if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
+  if (p->X) PetscCall(ProblemForceStopSetUp(p));
   PetscFunctionReturn(0);
 }
 

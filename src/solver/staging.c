@@ -8,6 +8,7 @@
    (forcesolve.c, forceouter.c); above the assembled system (problem.c) and
    L-BFGS's TAO solve (lmvm.c). */
 #include "staging.h"
+#include "forcestop.h"
 #include "problem.h"
 #include "forcecontrol.h"
 #include "lmvm.h"
@@ -397,6 +398,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
     }
     if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
     else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
+    PetscCall(ProblemForceStopSetActive(p, tight));
     if (s > 1 && s == sc->penaltyStages && p->res.loadDone == 0.0 && !p->X0 && ProblemHasState(p)) { /* from rest: the lag at the softer stage's answer (friction.c) */
       PetscReal change;
       PetscCall(ProblemStateLag(p, &change));
@@ -450,6 +452,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     }
     PetscCall(ProblemSetStage(p, S, 1.0));
     PetscCall(ProblemStateBegin(p));
+    PetscCall(ProblemForceStopSetActive(p, PETSC_TRUE));
     PetscCall(ProblemStageSolve(p, p->X0 ? S : 0.0, S, 1.0, PETSC_TRUE, its, reason));
     p->res.stagesDone = 1;
     cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
@@ -504,5 +507,6 @@ PetscErrorCode ProblemSolveStaged(Problem p, PetscInt *its, TaoConvergedReason *
   PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
   PetscCall(ProblemSolveStages(p, its, reason));
   PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
+  PetscCall(ProblemForceStopSetActive(p, PETSC_FALSE));
   PetscFunctionReturn(0);
 }

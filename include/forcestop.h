@@ -1,0 +1,17 @@
+#pragma once
+#include "problemtypes.h"
+
+/* The final stop measured against the forces the contacts carry
+   (-stop_force_rtol, forcestop.c). */
+/* ||f_c||, the contacts' nodal forces at X (the terms' gradient alone; 0 without terms). */
+PetscErrorCode ProblemContactForceNorm(Problem, Vec X, PetscReal *fc);
+/* After TaoSetFromOptions(): the convergence test (TAO's or L-BFGS's, then the forces'). */
+PetscErrorCode ProblemForceStopSetUp(Problem);
+/* Whether the coming TAO solves stop at the final tolerance (the test applies to them alone). */
+PetscErrorCode ProblemForceStopSetActive(Problem, PetscBool active);
+/* Around each TaoSolve: forget the last solve's iterate; a solve that went on
+   past the gradient tolerance and then stopped unconverged ends at the iterate
+   that met it, with its reason. */
+PetscErrorCode ProblemForceStopBegin(Problem);
+PetscErrorCode ProblemForceStopEnd(Problem, TaoConvergedReason *reason);
+PetscErrorCode ProblemForceStopDestroy(Problem);
