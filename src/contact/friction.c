@@ -34,8 +34,9 @@
    contact the slave's surface is turned by y kappa_s from the common
    tangent and the master's by -y kappa_m, so the offset is read along
      r_j = (kappa_m tau_j^a + kappa_s t_j) / |kappa_m tau_j^a + kappa_s t_j|
-   (tau_j^a the slave's tangent at node j, t_j the master's, kappa their
-   curvatures, all at the accepted state: FrictionOffsets), which turns by
+   (tau_j^a the slave's tangent at node j and t_j the master's at the
+   accepted state, kappa their curvatures at rest, the shapes whose gap
+   closes, not the indented ones: FrictionOffsets), which turns by
    y (kappa_m kappa_s - kappa_s kappa_m) / (kappa_s + kappa_m) = 0: the
    master's tangent where the master is flat (a ball on a plane, the
    reading above), the slave's where the slave is (a flat slab as the slave
@@ -92,8 +93,8 @@
    k_t = k_p the first solve at the full penalty had not converged after
    500 iterations, Newton's steps overshooting where a stiff stuck node
    turns to slip; on the disc on a slab of tests/meshes/friction-similar.opts
-   (a/R = 0.1, the slab the slave) k_t = k_p converges in 119 Newton
-   iterations in one increment a stage and 360 in 8 (407 in one with the
+   (a/R = 0.1, the slab the slave) k_t = k_p converges in 120 Newton
+   iterations in one increment a stage and 355 in 8 (407 in one with the
    offset read along the master's tangent alone), c/a 0.16 % from 0.01's.
 
    State. Accepting a converged increment keeps, per node, the elastic slip
@@ -137,7 +138,7 @@ struct _n_Friction {
   PetscReal  *tau;                /* [nn][2] unit tangent along the arc at the lag */
   PetscReal  *off;                /* [nn] the offset o_j the trial slip is measured from, at the lag */
   const ContactSurface *surf[2];  /* the pair's surfaces */
-  PetscReal  *gtan[2], *gkap[2], *gcnt[2]; /* [nn][2], [nn], [nn] of each surface: its tangents and curvatures at the accepted state */
+  PetscReal  *gtan[2], *gkap[2], *gcnt[2]; /* [nn][2], [nn], [nn] of each surface: its tangents at the accepted state, its curvatures at rest */
   PetscReal  *bound;              /* [nn] mu p_j at the lag */
   PetscInt   *rowStart;           /* [nn + 1] b_j: entries rowStart[j] .. rowStart[j + 1] */
   PetscInt   *eside, *enode;      /* [nent] the entry's surface and node */
@@ -199,6 +200,9 @@ PetscErrorCode FrictionDestroy(Friction *fr)
   PetscFunctionReturn(0);
 }
 
+static void FrictionSurfaceShape(const ContactSurface *, const PetscReal[], PetscReal[], PetscReal[], PetscReal[]);
+static void FrictionOffsets(Friction);
+
 PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt slave)
 {
   const ContactSurface *Ss = &S[slave];
@@ -214,6 +218,7 @@ PetscErrorCode FrictionSetUp(Friction f, const ContactSurface S[2], PetscInt sla
   for (PetscInt k = 0; k < 2; ++k) {
     f->surf[k] = &S[k];
     PetscCall(PetscMalloc3(2 * S[k].nn, &f->gtan[k], S[k].nn, &f->gkap[k], S[k].nn, &f->gcnt[k]));
+    FrictionSurfaceShape(&S[k], S[k].X, NULL, f->gkap[k], f->gcnt[k]);
   }
   PetscCall(PetscMalloc4(2 * S[0].nn, &f->xacc[0], 2 * S[1].nn, &f->xacc[1], 2 * S[0].nn, &f->xaccN[0], 2 * S[1].nn, &f->xaccN[1]));
   PetscCall(PetscCalloc6(f->nn, &f->sel, f->nn, &f->slip, f->nn, &f->stick, f->nn, &f->q, f->nn, &f->p, f->nn, &f->boundAcc));
@@ -260,6 +265,7 @@ PetscErrorCode FrictionBegin(Friction f)
   PetscCall(PetscArraycpy(f->slip, f->slipN, f->nn));
   PetscCall(PetscArraycpy(f->boundAcc, f->boundN, f->nn));
   f->pending = PETSC_FALSE;
+  FrictionOffsets(f); /* the rows of the last lag, measured from the new accepted state */
   PetscFunctionReturn(0);
 }
 
@@ -369,13 +375,17 @@ static void FrictionRowVector(Friction f, PetscInt j, PetscReal *const x[2], Pet
 }
 
 /* Each node's unit tangent along the arc (tan, summed over its edges and
-   normalised) and curvature (kap, the magnitude averaged over its edges) of
-   the surface S at the coordinates x: on a quadratic edge x(xi), xi = -1, 1
+   normalised) or curvature (kap, the magnitude averaged over its edges;
+   NULL: not computed) of the surface S at the coordinates x: on a quadratic edge x(xi), xi = -1, 1
    at its ends and 0 at its middle node, x' = (x1 - x0)/2 + xi (x0 + x1 -
    2 xm), x'' = x0 + x1 - 2 xm and kappa = |x' x x''| / |x'|^3. */
 static void FrictionSurfaceShape(const ContactSurface *S, const PetscReal x[], PetscReal tan[], PetscReal kap[], PetscReal cnt[])
 {
-  for (PetscInt v = 0; v < S->nn; ++v) tan[2 * v] = tan[2 * v + 1] = kap[v] = cnt[v] = 0.0;
+  for (PetscInt v = 0; v < S->nn; ++v) {
+    if (tan) tan[2 * v] = tan[2 * v + 1] = 0.0;
+    if (kap) kap[v] = 0.0;
+    cnt[v] = 0.0;
+  }
   for (PetscInt e = 0; e < S->ne; ++e) {
     const PetscInt *en = &S->enodes[3 * e];
     const PetscReal xi[3] = {-1.0, 1.0, 0.0};
@@ -387,16 +397,15 @@ static void FrictionSurfaceShape(const ContactSurface *S, const PetscReal x[], P
     for (PetscInt i = 0; i < 3; ++i) {
       const PetscReal dx = c[0] + xi[i] * dd[0], dy = c[1] + xi[i] * dd[1], n = PetscSqrtReal(dx * dx + dy * dy);
       if (!(n > 0)) continue;
-      tan[2 * en[i]] += S->edir[e] * dx / n;
-      tan[2 * en[i] + 1] += S->edir[e] * dy / n;
-      kap[en[i]] += PetscAbsReal(dx * dd[1] - dy * dd[0]) / (n * n * n);
+      if (tan) tan[2 * en[i]] += S->edir[e] * dx / n, tan[2 * en[i] + 1] += S->edir[e] * dy / n;
+      if (kap) kap[en[i]] += PetscAbsReal(dx * dd[1] - dy * dd[0]) / (n * n * n);
       cnt[en[i]] += 1.0;
     }
   }
   for (PetscInt v = 0; v < S->nn; ++v) {
-    const PetscReal n = PetscSqrtReal(tan[2 * v] * tan[2 * v] + tan[2 * v + 1] * tan[2 * v + 1]);
+    const PetscReal n = tan ? PetscSqrtReal(tan[2 * v] * tan[2 * v] + tan[2 * v + 1] * tan[2 * v + 1]) : 0.0;
     if (n > 0) tan[2 * v] /= n, tan[2 * v + 1] /= n;
-    if (cnt[v] > 0) kap[v] /= cnt[v];
+    if (kap && cnt[v] > 0) kap[v] /= cnt[v];
   }
 }
 
@@ -405,7 +414,7 @@ static void FrictionOffsets(Friction f)
 {
   const PetscInt m = 1 - f->slave;
 
-  for (PetscInt k = 0; k < 2; ++k) FrictionSurfaceShape(f->surf[k], f->xacc[k], f->gtan[k], f->gkap[k], f->gcnt[k]);
+  for (PetscInt k = 0; k < 2; ++k) FrictionSurfaceShape(f->surf[k], f->xacc[k], f->gtan[k], NULL, f->gcnt[k]);
   for (PetscInt j = 0; j < f->nn; ++j) {
     PetscReal d[2], t[2], r[2], ts[2], km = 0.0, wm = 0.0, ks = f->gkap[f->slave][j], rn;
     FrictionRowVector(f, j, f->xacc, d, t);
