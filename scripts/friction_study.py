@@ -78,17 +78,20 @@ def reference_shear(x, a, p0, ratio, unload=None):
     return q - 2 * cattaneo_shear(x, a, p0, a * math.sqrt(1 - (ratio - unload) / 2))
 
 
-def shear_l2(h5, summary, ratio, unload=None, force=P):
+def shear_l2(h5, summary, ratio, unload=None, force=P, surface=0, sign=1.0):
     """The slave's nodal shear's relative L2 distance from the reference
     curve (reference_shear), drawn with the computed a (a_moment), p0 =
     2 P / (pi a) and x from the pressure's centre, over the nodes within
-    |x| < a or in contact, weights A_j."""
+    |x| < a or in contact, weights A_j. surface: the pair's surface that is
+    the slave (its index in the summary: 0 the disc's, 1 the slab's); sign:
+    -1 where that surface's shear is the other body's (the slab's)."""
     import h5py
-    surf = summary["contact"][PAIR]["surfaces"][0]
+    surf = summary["contact"][PAIR]["surfaces"][surface]
     a = surf["a_moment"]
     with h5py.File(h5, "r") as f:
-        g = f[SLAVE]
+        g = f[f"contact/{PAIR}/{surf['body']}_{surf['group']}"]
         s, p, q, w = (g[f"node_{k}"][:] for k in ("s", "pressure", "shear", "weight"))
+    q = sign * q
     x = s - surf["centre"]
     qm = reference_shear(x, a, 2 * force / (np.pi * a), ratio, unload)
     m = (np.abs(x) < a) | (p > 0)

@@ -91,7 +91,14 @@ Run from the repository root (about 1 min each on one core):
     /usr/bin/python3 scripts/getfem_cattaneo.py -o bench/friction/getfem-scene.json
 
 Options: --mesh-dir (where the .msh files go, default build/getfem_meshes),
---r, --only NAME (one variant), --scale S.
+--r, --only NAME (one variant), --scale S, --scene OPTS (another scene of the
+same layout: bodies disc and slab, groups contact, clamp and push, pair
+interface), --plan friction_from_start_P2 (the P2 multipliers with friction
+from the first increment alone). The disc on a slab as users write it
+(a/R = 0.1, the slab 20 a thick, a/hc = 12; tests/test_friction_similar.py):
+
+    /usr/bin/python3 scripts/getfem_cattaneo.py --scene tests/meshes/friction-similar.opts \
+        --plan friction_from_start_P2 --mesh-dir build/getfem_similar -o bench/friction/getfem-similar.json
 """
 import argparse
 import json
@@ -115,14 +122,22 @@ def geo_param(opts, body, name):
     return float(dict(kv.split("=") for kv in opts[body + "_geo_params"].split(","))[name])
 
 
-OPTS = options_file(SCENE)
-# the scene's materials (both bodies alike), friction and forces: the last stage's clamp force (P, Q)
-E, NU, MU_F = float(OPTS["disc_E"]), float(OPTS["disc_nu"]), float(OPTS["contact_interface_friction"])
-P, Q = (float(v) for v in OPTS["disc_bc_clamp_values"].split(",")[-2:])
-LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
-R_DISC, XC, YC = (geo_param(OPTS, "disc", k) for k in ("R", "xc", "yc"))
-# where the disc's contact arc starts (the geometry's xcontact): s = R (theta - THETA0)
-THETA0 = -math.acos((geo_param(OPTS, "disc", "xcontact") - XC) / R_DISC)
+
+
+def set_scene(path):
+    """The scene's materials (both bodies alike), friction, forces (the last
+    stage's clamp force P, Q) and disc geometry, from its options file."""
+    global SCENE, OPTS, E, NU, MU_F, P, Q, LAM, MU, R_DISC, XC, YC, THETA0
+    SCENE, OPTS = path, options_file(path)
+    E, NU, MU_F = float(OPTS["disc_E"]), float(OPTS["disc_nu"]), float(OPTS["contact_interface_friction"])
+    P, Q = (float(v) for v in OPTS["disc_bc_clamp_values"].split(",")[-2:])
+    LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    R_DISC, XC, YC = (geo_param(OPTS, "disc", k) for k in ("R", "xc", "yc"))
+    # where the disc's contact arc starts (the geometry's xcontact): s = R (theta - THETA0)
+    THETA0 = -math.acos((geo_param(OPTS, "disc", "xcontact") - XC) / R_DISC)
+
+
+set_scene(SCENE)
 EPS_Y = 1.0                    # without friction the disc's y is free: a y spring in a frictionless stage (its force |U_y|, recorded)
 RELEASE = 0.05                 # the large sliding brick's release distance (the contact zone's gaps are below 0.006)
 EPS = 1e-4                     # a soft spring on U (force 1e-6 of P at the answer): the disc is free until it touches
@@ -363,12 +378,20 @@ def analyse(res):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--mesh-dir", default=os.path.join(ROOT, "build", "getfem_meshes"))
-    ap.add_argument("--r", type=float, default=E)
+    ap.add_argument("--r", type=float, help="the augmentation parameter (default the scene's E)")
+    ap.add_argument("--scene", help="another scene's options file of the same layout (bodies disc and slab, groups contact, "
+                                    "clamp and push, pair interface), e.g. tests/meshes/friction-similar.opts")
+    ap.add_argument("--plan", default="all", choices=("all", "friction_from_start_P2"),
+                    help="the variants: all, or the P2 multipliers with friction from the start alone")
     ap.add_argument("--only")
     ap.add_argument("--scale", type=float, default=1.0,
                     help="the contact scale times as wide against the bodies: P and Q times scale^2, hc and rc times scale")
     ap.add_argument("-o", "--output")
     args = ap.parse_args()
+    if args.scene:
+        set_scene(os.path.abspath(args.scene))
+    if args.r is None:
+        args.r = E
     import getfem as gf
     gf.util_trace_level(0)
     gf.util_warning_level(0)
@@ -392,6 +415,8 @@ def main():
     plan = [("small_sliding", 2, True), ("small_sliding", 2, False), ("small_sliding", 1, True),
             ("large_sliding", 2, True), ("large_sliding", 2, False)]
     variants = []
+    if args.plan != "all":
+        plan = [v for v in plan if v[1] == 2 and v[2]]
     for formulation, kmul, normal_friction in plan:
         for steps in (1, 8):
             name = f"{formulation}_P{kmul}_{'friction_from_start' if normal_friction else 'frictionless_normal_stage'}_{steps}"
@@ -412,7 +437,7 @@ def main():
                   f"a {v['a']:.5f}, c/a {v.get('c_over_a', float('nan')):.4f} "
                   f"({v.get('c_over_a_error_pct', float('nan')):+.2f} %), shear L2 {v['shear_l2_pct']:.2f} %, "
                   f"normal stage's shear {v['normal_stage_shear_pct']:.2f} %", flush=True)
-    out = dict(problem=f"meshes/cattaneo/cattaneo.opts: disc R = {R_DISC:g} on a slab, E = {E:g}, nu = {NU:g}, plane strain, "
+    out = dict(problem=f"{os.path.relpath(SCENE, ROOT)}: disc R = {R_DISC:g} on a slab, E = {E:g}, nu = {NU:g}, plane strain, "
                        f"P = {P:g} then Q = {Q:g} with P held, mu = {MU_F:g}"
                        + (f"; the contact {args.scale:g} times as wide (hc and rc times {args.scale:g})" if args.scale != 1.0 else ""),
                scale=args.scale,
