@@ -24,6 +24,7 @@ typedef struct {
   PetscErrorCode (*writexdmf)(EnergyTerm, Body[], FILE *, const char h5[], PetscBool friction);
   PetscErrorCode (*getprofile)(EnergyTerm, PetscInt side, PetscInt *n, PetscReal **s, PetscReal **p, PetscReal **w, PetscReal force[2]);
   PetscErrorCode (*diagnose)(EnergyTerm, size_t, char[]);
+  PetscErrorCode (*slipstate)(EnergyTerm, PetscInt *stuck, PetscInt *loaded, PetscReal *slip);
   PetscErrorCode (*lag)(EnergyTerm, Body[], PetscReal *change);
   PetscErrorCode (*accept)(EnergyTerm, Body[], PetscReal load);
   PetscErrorCode (*begin)(EnergyTerm);
@@ -100,3 +101,7 @@ PetscErrorCode EnergyTermReset(EnergyTerm, Body[]);
 PetscErrorCode EnergyTermGetStickHalfWidth(EnergyTerm, PetscInt k, PetscReal *c, PetscBool *has);
 /* After the post-processing: why the term may have kept the solve from converging, or an empty string. */
 PetscErrorCode EnergyTermDiagnose(EnergyTerm, size_t n, char why[]);
+/* Friction at the state last evaluated: the nodes in contact that carry a
+   bound, those of them that stick, and the largest trial slip of the
+   increment (all 0 for a term without friction; the same on every rank). */
+PetscErrorCode EnergyTermGetSlipState(EnergyTerm, PetscInt *stuck, PetscInt *loaded, PetscReal *slip);

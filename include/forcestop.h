@@ -5,8 +5,10 @@
    (-stop_force_rtol, forcestop.c). */
 /* ||f_c||, the contacts' nodal forces at X (the terms' gradient alone; 0 without terms). */
 PetscErrorCode ProblemContactForceNorm(Problem, Vec X, PetscReal *fc);
-/* After TaoSetFromOptions(): the convergence test (TAO's or L-BFGS's, then the forces'). */
-PetscErrorCode ProblemForceStopSetUp(Problem);
+/* Part of TAO's convergence test (solve.c), after TAO's own: a last stage's
+   convergence by the gradient tolerances undone while the gradient is above
+   -stop_force_rtol times the contacts' nodal forces. */
+PetscErrorCode ProblemForceStopTest(Problem, Tao);
 /* Whether the coming TAO solves stop at the final tolerance (the test applies to them alone). */
 PetscErrorCode ProblemForceStopSetActive(Problem, PetscBool active);
 /* Around each TaoSolve: forget the last solve's iterate; a solve that went on

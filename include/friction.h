@@ -69,3 +69,5 @@ PetscErrorCode FrictionShearForce(Friction, PetscReal F[2]);
 /* At the surfaces' current coordinates, within the increment: the nodes
    that carry a bound (in contact at the lag) and those of them that stick. */
 PetscErrorCode FrictionCountStuck(Friction, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded);
+/* The same, and the largest trial slip |e_j| of the nodes that carry a bound. */
+PetscErrorCode FrictionSlipState(Friction, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded, PetscReal *slip);

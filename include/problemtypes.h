@@ -164,6 +164,18 @@ typedef struct {
   PetscReal          ratio;     /* the last test's ||g|| / ||f_c|| (-1: none) */
 } ForceStop;
 
+/* The watch for a frictional contact that slides without end (slidewatch.c):
+   the largest trial slip of the last iterates while no node sticks. */
+typedef struct {
+  PetscInt  n;       /* iterates recorded (the last three kept) */
+  PetscReal slip[3]; /* their largest trial slips, oldest first */
+  PetscInt  growing; /* consecutive iterates whose slip grew without contracting */
+  PetscInt  peak;    /* the most of them in the current TAO solve */
+  PetscInt  term;    /* the pair it watched last (-1: none) */
+  PetscBool sliding; /* no node of some frictional pair sticks at the last iterate */
+  PetscInt  stops;   /* solves it stopped */
+} SlideWatch;
+
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue.
    L-BFGS's state lives with the TAO solver that uses it (lmvm.c). */
 typedef struct _n_Problem *Problem;
@@ -192,6 +204,7 @@ struct _n_Problem {
   PetscReal      tangentG[3];  /* tangentAuto: the gradient norms of the last three iterations */
   ForceControls  fc;        /* force control (forcecontrol.c) */
   ForceStop      fstop;     /* -stop_force_rtol (forcestop.c) */
+  SlideWatch     slide;     /* slidewatch.c */
   Mat            Htao;      /* the Hessian TAO sees: H, or H bordered by the controls (forceborder.c) */
   ProblemResults res;
 };

@@ -704,14 +704,27 @@ PetscErrorCode FrictionShearForce(Friction f, PetscReal F[2])
 
 PetscErrorCode FrictionCountStuck(Friction f, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded)
 {
+  PetscReal slip;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionSlipState(f, S, kp, stuck, loaded, &slip));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionSlipState(Friction f, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded, PetscReal *slip)
+{
   const PetscReal kt = f->ktScale * kp;
 
   PetscFunctionBeginUser;
   *stuck = *loaded = 0;
+  *slip            = 0.0;
   for (PetscInt j = 0; j < f->nn; ++j) {
+    PetscReal e;
     if (!(f->bound[j] > 0) || PetscIsInfReal(f->bound[j])) continue;
+    e = PetscAbsReal(FrictionTrial(f, S, j));
     (*loaded)++;
-    if (kt * PetscAbsReal(FrictionTrial(f, S, j)) < f->bound[j]) (*stuck)++;
+    if (kt * e < f->bound[j]) (*stuck)++;
+    *slip = PetscMax(*slip, e);
   }
   PetscFunctionReturn(0);
 }

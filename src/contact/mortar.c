@@ -1843,6 +1843,15 @@ static PetscErrorCode MortarDiagnose(EnergyTerm t, size_t n, char why[])
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MortarSlipState(EnergyTerm t, PetscInt *stuck, PetscInt *loaded, PetscReal *slip)
+{
+  Mortar *m = (Mortar *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(FrictionSlipState(m->fr, m->b.S, m->b.spec.kp, stuck, loaded, slip));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode MortarFrictionReset(EnergyTerm t, Body bodies[])
 {
   Mortar *m = (Mortar *)t->data;
@@ -1943,6 +1952,7 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
     t->ops.writehdf5 = MortarWriteHDF5;
     t->ops.stickhalfwidth = MortarStickHalfWidth;
     t->ops.diagnose       = MortarDiagnose;
+    t->ops.slipstate      = MortarSlipState;
   }
   PetscFunctionReturn(0);
 }

@@ -129,6 +129,15 @@ PetscErrorCode EnergyTermDiagnose(EnergyTerm t, size_t n, char why[])
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode EnergyTermGetSlipState(EnergyTerm t, PetscInt *stuck, PetscInt *loaded, PetscReal *slip)
+{
+  PetscFunctionBeginUser;
+  *stuck = *loaded = 0;
+  *slip            = 0.0;
+  if (t->ops.slipstate) PetscCall(t->ops.slipstate(t, stuck, loaded, slip));
+  PetscFunctionReturn(0);
+}
+
 PetscBool EnergyTermHasState(EnergyTerm t)
 {
   return (PetscBool)(t->ops.accept != NULL);

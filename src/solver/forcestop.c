@@ -40,7 +40,6 @@
    floor and those ended so).
    The JSON's `force_residual` is ||g|| / ||f_c|| at the solution. */
 #include "forcestop.h"
-#include "lmvm.h"
 #include "problem.h"
 #include "body.h"
 #include "energyterm.h"
@@ -79,17 +78,15 @@ PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
   PetscFunctionReturn(0);
 }
 
-/* TAO's test (or L-BFGS's decrement test), then, in a last stage, the forces'. */
-static PetscErrorCode ProblemForceStopTest(Tao tao, void *ctx)
+/* After TAO's test (or L-BFGS's decrement test), in a last stage: the forces'. */
+PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
 {
-  Problem            p = (Problem)ctx;
   ForceStop         *s = &p->fstop;
   TaoConvergedReason reason;
   PetscReal          gnorm, fc;
   Vec                X;
 
   PetscFunctionBeginUser;
-  PetscCall(ProblemLMVMConvergenceTest(p, tao));
   if (!s->active || p->opt.forceRtol <= 0) PetscFunctionReturn(0);
   PetscCall(TaoGetConvergedReason(tao, &reason));
   if (reason != TAO_CONVERGED_GATOL && reason != TAO_CONVERGED_GRTOL && reason != TAO_CONVERGED_GTTOL) PetscFunctionReturn(0);
@@ -118,14 +115,6 @@ static PetscErrorCode ProblemForceStopTest(Tao tao, void *ctx)
   }
   PetscCall(PetscInfo(tao, "the gradient norm %g met %s but is %g of the contacts' nodal forces (%g), above -stop_force_rtol %g: going on\n", (double)gnorm, TaoConvergedReasons[reason], (double)s->ratio, (double)fc, (double)p->opt.forceRtol));
   PetscCall(TaoSetConvergedReason(tao, TAO_CONTINUE_ITERATING));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ProblemForceStopSetUp(Problem p)
-{
-  PetscFunctionBeginUser;
-  p->fstop.ratio = -1.0;
-  PetscCall(TaoSetConvergenceTest(p->tao, ProblemForceStopTest, p));
   PetscFunctionReturn(0);
 }
 

@@ -172,6 +172,7 @@
 #include <petsc/private/taoimpl.h>
 #include "lmvm.h"
 #include "forcestop.h"
+#include "slidewatch.h"
 #include "problem.h"
 #include "newtonstep.h"
 #include "forceborder.h"
@@ -408,6 +409,34 @@ PetscErrorCode ProblemLMVMConvergenceTest(Problem p, Tao tao)
   PetscFunctionReturn(0);
 }
 
+/* TaoSolve, with the breakdown of TAO 3.18's More-Thuente line search
+   taken as the line search's failure: its step routine raises an error
+   (PETSC_ERR_ARG_OUTOFRANGE, "dx * (stp-stx) >= 0.0", "bad stp in bracket")
+   where the energy along the step is not what its bracket assumes, which a
+   contact sliding without end met (the cattaneo disc pressed by a
+   displacement and pulled beyond mu P: its fourth iterate had slid 4 times
+   the disc's radius), and which the program then reported as bad input.
+   Any other error stands, with its message. */
+static PetscErrorCode ProblemTaoSolveOnce(Problem p)
+{
+  PetscErrorCode ierr;
+  const char    *text;
+  char          *specific = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = TaoSolve(p->tao);
+  PetscCall(PetscPopErrorHandler());
+  if (!ierr) PetscFunctionReturn(0);
+  PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  if (ierr == PETSC_ERR_ARG_OUTOFRANGE && specific && (strstr(specific, "stp-stx") || strstr(specific, "stp in bracket"))) {
+    PetscCall(PetscInfo(p->tao, "the line search broke down (%s): a failed line search\n", specific));
+    PetscCall(TaoSetConvergedReason(p->tao, TAO_DIVERGED_LS_FAILURE));
+    PetscFunctionReturn(0);
+  }
+  SETERRQ(p->comm, ierr, "%s", specific ? specific : (text ? text : "TAO's solve failed"));
+}
+
 PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
   PetscReal gatol, grtol, gttol, g0 = -1.0, f;
@@ -422,7 +451,8 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
   for (PetscInt r = 0;; ++r) {
     PetscReal f0;
     PetscCall(ProblemForceStopBegin(p));
-    PetscCall(TaoSolve(p->tao));
+    PetscCall(ProblemSlideWatchBegin(p));
+    PetscCall(ProblemTaoSolveOnce(p));
     PetscCall(TaoGetSolutionStatus(p->tao, &n, &f, NULL, NULL, NULL, reason));
     PetscCall(ProblemForceStopEnd(p, reason));
     *its += n;

@@ -10,9 +10,24 @@
 #include "newtonstep.h"
 #include "lmvm.h"
 #include "forcestop.h"
+#include "slidewatch.h"
 #include "forceborder.h"
 #include "forcesolve.h"
 #include "staging.h"
+
+/* TAO's convergence test: TAO's own (or L-BFGS's decrement test, lmvm.c),
+   then the forces' test of a last stage (forcestop.c) and the watch for a
+   contact that slides without end (slidewatch.c). */
+static PetscErrorCode ProblemConvergenceTest(Tao tao, void *ctx)
+{
+  Problem p = (Problem)ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(ProblemLMVMConvergenceTest(p, tao));
+  PetscCall(ProblemForceStopTest(p, tao));
+  PetscCall(ProblemSlideWatchTest(p, tao));
+  PetscFunctionReturn(0);
+}
 
 /* The TAO solver with the program's defaults, then the options. The type is
    looked up first (TaoSetFromOptions() lists and checks it) because the
@@ -51,7 +66,7 @@ PetscErrorCode ProblemCreateSolver(Problem p)
   PetscCall(TaoSetFromOptions(p->tao));
   if (ContactProgressEnabled()) PetscCall(TaoSetMonitor(p->tao, ContactProgressTaoMonitor, NULL, NULL));
   if (p->K) PetscCall(ProblemSetLMVMInitialHessian(p));
-  if (p->X) PetscCall(ProblemForceStopSetUp(p));
+  if (p->X) PetscCall(TaoSetConvergenceTest(p->tao, ProblemConvergenceTest, p));
   PetscFunctionReturn(0);
 }
 

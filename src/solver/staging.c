@@ -9,6 +9,7 @@
    L-BFGS's TAO solve (lmvm.c). */
 #include "staging.h"
 #include "forcestop.h"
+#include "slidewatch.h"
 #include "problem.h"
 #include "forcecontrol.h"
 #include "lmvm.h"
@@ -267,13 +268,20 @@ static PetscErrorCode ProblemStageSolve(Problem p, PetscReal l0, PetscReal l1, P
    budget of energy evaluations runs out the same way, where line searches
    keep failing and L-BFGS restarts after each (lmvm.c: measured on the half
    scene at h = 0.01, k_p = 1e10, push 0.3, mortar, where the load's half
-   then converges); -tao_max_funcs given is the user's limit. */
-static PetscBool ProblemCutbackApplies(TaoConvergedReason r)
+   then converges); -tao_max_funcs given is the user's limit. Not where the
+   solve stopped while a frictional contact slid without end (slidewatch.c). */
+static PetscErrorCode ProblemCutbackApplies(Problem p, TaoConvergedReason r, PetscBool *applies)
 {
-  PetscBool userLimit = PETSC_FALSE;
+  PetscBool userLimit = PETSC_FALSE, slid;
 
-  if (r == TAO_DIVERGED_MAXFCN && PetscOptionsHasName(NULL, NULL, "-tao_max_funcs", &userLimit)) return PETSC_FALSE;
-  return (PetscBool)(r == TAO_DIVERGED_LS_FAILURE || r == TAO_DIVERGED_NAN || r == TAO_DIVERGED_TR_REDUCTION || (r == TAO_DIVERGED_MAXFCN && !userLimit));
+  PetscFunctionBeginUser;
+  *applies = PETSC_FALSE;
+  if (r > 0) PetscFunctionReturn(0);
+  PetscCall(ProblemSlideWatchSlid(p, &slid));
+  if (slid) PetscFunctionReturn(0); /* a contact sliding without end: a smaller step of the same force slides too (slidewatch.c) */
+  if (r == TAO_DIVERGED_MAXFCN) PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_max_funcs", &userLimit));
+  *applies = (PetscBool)(r == TAO_DIVERGED_LS_FAILURE || r == TAO_DIVERGED_NAN || r == TAO_DIVERGED_TR_REDUCTION || (r == TAO_DIVERGED_MAXFCN && !userLimit));
+  PetscFunctionReturn(0);
 }
 
 /* Coupled force control: the gradient norm at rest of the displacement run
@@ -431,6 +439,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
 {
   const PetscReal S = (PetscReal)p->opt.loadStages;
   PetscReal       tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
+  PetscBool       cut;
   Vec             Xs;
 
   PetscFunctionBeginUser;
@@ -444,7 +453,6 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
   if (!p->X0) PetscCall(ProblemStateReset(p)); /* a given start goes on from the accepted state */
   PetscCall(ProblemLoadPathAppend(p, 0.0, PETSC_TRUE));
   if (p->sched.loadSteps * p->sched.penaltyStages == 1 && (S == 1 || p->X0)) { /* one solve, from rest or from the given start */
-    PetscBool cut;
     if (p->X0 || ProblemTangentVaries(p)) { /* a given start, or the tangent predictor's: the stop is relative to the gradient at rest */
       PetscCall(ProblemGradientAtRest(p, &g0));
       if (p->X0) PetscCall(VecCopy(p->X0, p->X));
@@ -455,7 +463,8 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     PetscCall(ProblemForceStopSetActive(p, PETSC_TRUE));
     PetscCall(ProblemStageSolve(p, p->X0 ? S : 0.0, S, 1.0, PETSC_TRUE, its, reason));
     p->res.stagesDone = 1;
-    cut           = (PetscBool)(*reason <= 0 && ProblemCutbackApplies(*reason) && p->opt.maxCutbacks > 0);
+    PetscCall(ProblemCutbackApplies(p, *reason, &cut));
+    cut = (PetscBool)(cut && p->opt.maxCutbacks > 0);
     if (!cut) {
       if (*reason > 0) PetscCall(ProblemStateAccept(p, S));
       if (*reason > 0) p->res.loadDone = S;
@@ -485,7 +494,8 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
       PetscCall(VecCopy(p->X, Xs));
       continue;
     }
-    if (!ProblemCutbackApplies(*reason) || p->res.cutbacks >= p->opt.maxCutbacks) break;
+    PetscCall(ProblemCutbackApplies(p, *reason, &cut));
+    if (!cut || p->res.cutbacks >= p->opt.maxCutbacks) break;
     PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->res.loadDone, (double)(0.5 * step)));
     p->res.cutbacks++;
     step *= 0.5;
