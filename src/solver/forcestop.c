@@ -25,14 +25,13 @@
    ||f_c|| computed at that iterate; the test only tightens TAO's, never
    loosens it, and is off where no contact carries a force (f_c = 0).
    Past TAO's test the gradient may reach its round-off floor above the
-   forces' test (a punch of E = 1e7 on a layer of E = 1: 2.5e-8 of the
-   forces, where the default asks 1e-6): where it has not halved in
-   FORCESTOP_STALL iterations, at most FORCESTOP_FLOOR_MAX of the forces,
-   the solve ends there, converged with TAO's reason (JSON
-   `force_stop.floors`); above that it is a Newton that crawls (the same
-   scene at h = 0.0125: from 0.5 of the forces, 143 iterations), which goes
-   on. A converged solve whose gradient is above the forces' test at the
-   end says so in a warning (ProblemPostProcess).
+   forces' test (asked 1e-10 on that punch, it stalls at 2.5e-8), or crawl
+   (the shipped punch with the block as mortar slave: about 1e-2 of the
+   forces, iteration after iteration of 1 s each, up to TAO's 500): where
+   it has not halved in FORCESTOP_STALL iterations the solve ends there,
+   converged with TAO's reason (JSON `force_stop.floors`), and a converged
+   solve whose gradient is above the forces' test says so in a warning
+   (ProblemPostProcess): the forces are as far from converged as that.
    If the solve, gone on, ends otherwise than converged (a line search
    that fails at round-off, the iteration budget), it ends at the iterate
    that met TAO's test, with TAO's reason there, as it would have without
@@ -44,8 +43,7 @@
 #include "body.h"
 #include "energyterm.h"
 
-#define FORCESTOP_STALL     10
-#define FORCESTOP_FLOOR_MAX 1e-3
+#define FORCESTOP_STALL 10
 
 /* ||f_c||: the terms' gradient alone at X, summed into the bodies' dofs
    (a rigid body's unknowns, which have none, left out). */
@@ -107,8 +105,8 @@ PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
   } else if (gnorm < 0.5 * s->best) {
     s->best    = gnorm;
     s->stalled = 0;
-  } else if (++s->stalled >= FORCESTOP_STALL && s->ratio <= FORCESTOP_FLOOR_MAX) { /* the gradient's round-off floor: as far as the solve can go */
-    PetscCall(PetscInfo(tao, "the gradient norm %g (%g of the contacts' nodal forces) has not halved in %d iterations: its round-off floor, converged (%s)\n", (double)gnorm, (double)s->ratio, FORCESTOP_STALL, TaoConvergedReasons[reason]));
+  } else if (++s->stalled >= FORCESTOP_STALL) { /* the gradient's round-off floor, or a crawl: as far as the solve goes */
+    PetscCall(PetscInfo(tao, "the gradient norm %g (%g of the contacts' nodal forces) has not halved in %d iterations: as far as it goes, converged (%s)\n", (double)gnorm, (double)s->ratio, FORCESTOP_STALL, TaoConvergedReasons[reason]));
     s->met = PETSC_FALSE;
     s->floors++;
     PetscFunctionReturn(0);
