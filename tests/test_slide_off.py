@@ -110,8 +110,9 @@ def test_slides_off(scene, mu, tmp_path):
     `fbalance_ledge_0` = 0.029, `fbalance_ledge_0.3` = 0.034,
     `fbalance_iron_0` = 0.012, `fbalance_iron_0.3` = 0.0017 of the stop's
     bound (sqrt(dofs) times the gradient norm), and the two reactions' sum
-    `rbalance_ledge_0` = 3.5e-5, `rbalance_iron_0` = 2.1e-9 of it, bound 1
-    each. The corner's force (corner_force) is a real part of the answer:
+    `rbalance_ledge_0` = 3.5e-5, `rbalance_iron_0` = 2.1e-9,
+    `rbalance_ledge_0.3` = 8.4e-10, `rbalance_iron_0.3` = 3.0e-10 of it,
+    bound 1 each. The corner's force (corner_force) is a real part of the answer:
     `corner_ledge_0` = 0.28, `corner_ledge_0.3` = 0.26 of P on the ledge,
     `corner_iron_0` = 0.95, `corner_iron_0.3` = 0.98 on the iron (the disc
     then bears mostly on the corner)."""
