@@ -79,9 +79,10 @@
    of the reference edge, and, for the Hessian, dg' = N_i' n_s on the slave
    rows plus d2g w, g'' = w . d2g w + n_s . x_s'' (w moves every slave node
    of the edge by x_s', which moves the point by x_s'). Other cuts that move
-   with u (the normal lines bounding a corner's fan, an end's normal line)
-   are not differentiated so: the gap is C1 across them, so the exact
-   integral has no term there, and their rule's error is left out (at the
+   with u (the normal lines bounding a corner's fan, an end's normal line,
+   the line where the ramp past an end ends: MortarSplitRamp) are not
+   differentiated so: the gap is C1 across them, so the exact integral has
+   no term there, and their rule's error is left out (at the
    solution of the reference scene with the block as slave, whose disc
    master has fans, a finite-difference Hessian of the gradient differs by
    4.6e-9 of its norm, the round-off of the check 1.6e-10).
