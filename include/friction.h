@@ -63,8 +63,12 @@ PetscErrorCode FrictionWriteHDF5(Friction, const PetscReal A[], PetscViewer);
 /* Collective: the same sets at the end of load stage k (1..FrictionGetStages' n). */
 PetscErrorCode FrictionWriteStageHDF5(Friction, PetscInt k, const PetscReal A[], PetscViewer);
 /* The last converged increment's friction force on the slave's body,
-   -sum_j A_j q_j tau_j (the slave rows of b_j sum to tau_j: the shape
-   functions sum to 1 and W_j / C_j integrates to 1). */
+   -sum_j A_j q_j f_j tau_j, f_j the sum of the slave entries of b_j: 1
+   (the shape functions sum to 1 and W_j / C_j integrates to 1) but where
+   part of node j's points lie past an end of the master, which has no
+   material point there to slip against and no entry (a block slid past its
+   partner's end: 1.2 % of the shear force there, which then did not
+   balance the reactions). */
 PetscErrorCode FrictionShearForce(Friction, PetscReal F[2]);
 /* At the surfaces' current coordinates, within the increment: the nodes
    that carry a bound (in contact at the lag) and those of them that stick. */

@@ -11,6 +11,7 @@ typedef struct {
   PetscReal M7[7], dM7[7], d2M7[7], xm[2], tm[2], xpp[2], tn, n[2], gap;
   PetscBool fan; /* the closest point is a corner node: g is the distance to it */
   PetscBool ext; /* the point is past an end of the master surface: g = d . n1 + kappa s(eps), and n = dg/dx_s = n1 + kappa s' t_out is not a unit vector (gap.c, ContactGapBeyondEnd) */
+  PetscBool ramp; /* ext: within the lift's quadratic start (0 < eps < h0 past a turning end; ContactGapRampLength), where g'' jumps at both ends */
   PetscReal en[2], et[2], ev[2], eq, egt, es2, edp, je, delta; /* ext: the end's outward normal n1 and unit tangent tau, v, q = d . v, d . m, kappa s'', d . tau_p, the end (+-1), the master rows' tangent factor (ContactGapBeyondEnd) */
   PetscBool mirror; /* the closest point is on the master's mirror image (a half model): n, x_m are those of the reflected slave point */
   PetscReal ns[2];  /* the normal as seen by the slave point: n, reflected where mirror (the slave rows of dg) */
@@ -23,6 +24,10 @@ void ContactGapProject(const ContactSurface *M, ContactSearch, const PetscReal x
 void ContactGapOnEdge(const ContactSurface *M, PetscInt e, PetscBool mirror, const PetscReal xs[2], ContactGap *);
 /* Whether end j (0: eta = -1, 1: eta = +1) of master edge e is blended into its neighbour (no corner there). */
 PetscBool ContactGapEndBlended(const ContactSurface *M, PetscInt e, PetscInt j);
+/* The length h0 of the lift's quadratic start past end j (0: eta = -1, 1:
+   +1) of master edge e, an end of the surface: 0 where the boundary goes on
+   smoothly (no lift), so that no cut is needed there. */
+PetscReal ContactGapRampLength(const ContactSurface *M, PetscInt e, PetscInt j);
 /* w = -dg/dx_j of master node j (M->mnodes[7 me + j]): M_j n, and past an
    end the turn of the end's normal with its tangent. */
 void ContactGapMasterWeight(const ContactGap *, PetscInt j, PetscReal w[2]);

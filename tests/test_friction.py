@@ -483,8 +483,8 @@ def test_full_sliding(H, bound, tmp_path):
     `balance_1` = 4.4e-9 of P on the block, `balance_0.2` = 4.3e-9 on the
     layer, the solve's stopping tolerance; bound 1.5e-8). The same path without
     friction converges too (the block). With both blocks W = 1 the upper
-    one slides off the lower one's end, whose corner then cuts into it:
-    Newton stalls, with friction or without (not tested)."""
+    one slides off the lower one's end, whose corner then cuts into it: that
+    converges too (tests/test_slide_off.py has such scenes)."""
     args = sliding_patch(tmp_path, H)
     res = run_contact(args, tmp_path, name=f"H{H}")
     s = res.summary

@@ -696,8 +696,11 @@ PetscErrorCode FrictionShearForce(Friction f, PetscReal F[2])
   PetscFunctionBeginUser;
   F[0] = F[1] = 0.0;
   for (PetscInt j = 0; j < f->nn; ++j) {
-    F[0] -= f->A[j] * f->q[j] * f->tau[2 * j];
-    F[1] -= f->A[j] * f->q[j] * f->tau[2 * j + 1];
+    PetscReal fj = 0.0;
+    for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k)
+      if (f->eside[k] == f->slave) fj += f->ecoef[k];
+    F[0] -= f->A[j] * f->q[j] * fj * f->tau[2 * j];
+    F[1] -= f->A[j] * f->q[j] * fj * f->tau[2 * j + 1];
   }
   PetscFunctionReturn(0);
 }

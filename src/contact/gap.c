@@ -156,10 +156,19 @@ static void ContactGapEvaluate(const ContactSurface *M, const PetscReal xs[2], C
            v = esign tau + kappa s' je tau_p,
      d2g = 2 (v . Delta) dtheta - (d . m) dtheta^2 + q d2theta
            + kappa s'' deps^2,   deps = t_out . Delta + je (d . tau_p) dtheta. */
+static PetscReal ContactGapLift(const ContactSurface *M, PetscInt e, PetscInt j)
+{
+  return PetscTanReal(PetscMax(-0.25 * PETSC_PI, PetscMin(0.25 * PETSC_PI, M->endTurn[M->mnodes[7 * e + j]])));
+}
+
+PetscReal ContactGapRampLength(const ContactSurface *M, PetscInt e, PetscInt j)
+{
+  return ContactGapLift(M, e, j) != 0.0 ? 0.01 * M->elen[e] : 0.0;
+}
+
 static void ContactGapBeyondEnd(const ContactSurface *M, const PetscReal xs[2], PetscReal je, ContactGap *P)
 {
-  const PetscReal phi = M->endTurn[M->mnodes[7 * P->me + (je > 0 ? 1 : 0)]], es = M->esign[P->me];
-  const PetscReal kappa = PetscTanReal(PetscMax(-0.25 * PETSC_PI, PetscMin(0.25 * PETSC_PI, phi))), h0 = 0.01 * M->elen[P->me];
+  const PetscReal es = M->esign[P->me], kappa = ContactGapLift(M, P->me, je > 0 ? 1 : 0), h0 = 0.01 * M->elen[P->me];
   PetscReal       d[2], tp[2], eps, sv, s1, s2, dn1;
 
   MasterShape(M, P->me, je, P->M7, P->dM7, P->d2M7);
@@ -175,6 +184,7 @@ static void ContactGapBeyondEnd(const ContactSurface *M, const PetscReal xs[2], 
   tp[0]    = -P->et[1];
   tp[1]    = P->et[0];
   eps      = je * (d[0] * P->et[0] + d[1] * P->et[1]);
+  P->ramp  = (PetscBool)(kappa != 0.0 && eps > 0 && eps < h0);
   if (eps <= 0) sv = s1 = s2 = 0.0;
   else if (eps < h0) {
     sv = 0.5 * eps * eps / h0;
@@ -213,8 +223,9 @@ static void ContactGapProjectHalf(const ContactSurface *M, ContactSearch search,
 {
   const PetscInt *mn;
 
-  P->eta = 0.0;
-  P->ext = PETSC_FALSE;
+  P->eta  = 0.0;
+  P->ext  = PETSC_FALSE;
+  P->ramp = PETSC_FALSE;
   ContactSearchFindClosest(search, xs, &P->me, &P->eta);
   if (P->me < 0) return;
   mn = &M->mnodes[7 * P->me];
@@ -255,8 +266,9 @@ void ContactGapOnEdge(const ContactSurface *M, PetscInt e, PetscBool mirror, con
   const PetscReal xr[2] = {xs[0], mirror ? ContactSurfaceMirrorY(M, xs[1]) : xs[1]};
   PetscReal       d2;
 
-  P->me  = e;
-  P->ext = PETSC_FALSE;
+  P->me   = e;
+  P->ext  = PETSC_FALSE;
+  P->ramp = PETSC_FALSE;
   MasterProject(M, e, xr, &P->eta, &d2);
   ContactGapEvaluate(M, xr, P);
   ContactGapSetMirror(P, mirror);

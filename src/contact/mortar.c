@@ -79,9 +79,10 @@
    of the reference edge, and, for the Hessian, dg' = N_i' n_s on the slave
    rows plus d2g w, g'' = w . d2g w + n_s . x_s'' (w moves every slave node
    of the edge by x_s', which moves the point by x_s'). Other cuts that move
-   with u (the normal lines bounding a corner's fan, an end's normal line)
-   are not differentiated so: the gap is C1 across them, so the exact
-   integral has no term there, and their rule's error is left out (at the
+   with u (the normal lines bounding a corner's fan, an end's normal line,
+   the line where the ramp past an end ends: MortarSplitRamp) are not
+   differentiated so: the gap is C1 across them, so the exact integral has
+   no term there, and their rule's error is left out (at the
    solution of the reference scene with the block as slave, whose disc
    master has fans, a finite-difference Hessian of the gradient differs by
    4.6e-9 of its norm, the round-off of the check 1.6e-10).
@@ -264,12 +265,13 @@ static inline void MortarSlaveEval(const ContactSurface *S, PetscInt se, PetscRe
 /* The feature of the master surface closest to a slave point: the inside of
    an edge (its orthogonal projection, or an end clamped at a blended node),
    a corner node (the fan of directions outside a convex corner), or the
-   straight extension past an end of the surface; none where the master is
-   empty. edge: the master edge of the point's gap (for a node, the edge the
+   extension past an end of the surface (its lift's quadratic start, the
+   ramp, apart: gap.c's g'' jumps where the ramp begins and ends, so each
+   is a cut); none where the master is empty. edge: the master edge of the point's gap (for a node, the edge the
    search reports), end: the node's or the extension's end of that edge;
    mirror: the feature is on the master's mirror image (a half model; never
    for a node on the line, its own image). */
-typedef enum { REGION_NONE, REGION_EDGE, REGION_NODE, REGION_EXT } MortarRegionKind;
+typedef enum { REGION_NONE, REGION_EDGE, REGION_NODE, REGION_EXT, REGION_RAMP } MortarRegionKind;
 typedef struct {
   MortarRegionKind kind;
   PetscInt         id, edge, end; /* id: the edge (inside, extension) or the node (corner) */
@@ -323,7 +325,7 @@ static MortarRegion MortarRegionAt(const Mortar *m, PetscInt s, PetscInt se, Pet
   R.mirror = G.mirror;
   R.end  = G.eta > 0 ? 1 : 0;
   if (G.ext) {
-    R.kind = REGION_EXT;
+    R.kind = G.ramp ? REGION_RAMP : REGION_EXT;
     R.id   = G.me;
   } else if (G.fan) {
     R.kind = REGION_NODE;
@@ -350,6 +352,7 @@ static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se,
   case REGION_NODE:
     return PetscSqr(xs[0] - M->x[2 * R.id]) + PetscSqr(xs[1] - M->x[2 * R.id + 1]);
   case REGION_EXT: /* past the end: to the end node, as the search measures it */
+  case REGION_RAMP:
     MasterEval(M, R.id, R.end ? 1.0 : -1.0, xv, t, xpp);
     return PetscSqr(xs[0] - xv[0]) + PetscSqr(xs[1] - xv[1]);
   default:
@@ -362,11 +365,13 @@ static PetscReal MortarRegionDistance2(const Mortar *m, PetscInt s, PetscInt se,
    passes from ea to eb: normal to the mean of the two edges' unit tangents at
    v (the bisector of their normals; the common normal where the blend makes
    them meet smoothly); a - 1 if none. The crossing solves
-   (x_s(xi) - x_v) . tau = 0, a quadratic in xi, with tau the unit tangents of
-   ea and eb at v weighted wa and wb (1, 1: the bisector; 1, 0 or 0, 1: the
-   normal line of one edge, a side of the corner's fan). mirror: the edges are
-   the master's mirror image, whose line the reflected slave edge crosses. */
-static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b, PetscReal wa, PetscReal wb, PetscBool mirror)
+   (x_s(xi) - x_v) . tau = off, a quadratic in xi, with tau the unit tangents
+   of ea and eb at v weighted wa and wb (1, 1: the bisector; 1, 0 or 0, 1: the
+   normal line of one edge, a side of the corner's fan, or with off = +-h0 the
+   line parallel to it where the ramp past an end of the surface ends).
+   mirror: the edges are the master's mirror image, whose line the reflected
+   slave edge crosses. */
+static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const ContactSurface *M, PetscInt ea, PetscInt i, PetscInt eb, PetscInt j, PetscReal a, PetscReal b, PetscReal wa, PetscReal wb, PetscReal off, PetscBool mirror)
 {
   const PetscInt *sn = &S->enodes[3 * se];
   const PetscReal sg = i != j ? 1.0 : -1.0; /* tangents oriented the same way along the surface */
@@ -378,6 +383,7 @@ static PetscReal MortarNodeCrossing(const ContactSurface *S, PetscInt se, const 
   na = PetscSqrtReal(ta[0] * ta[0] + ta[1] * ta[1]);
   nb = PetscSqrtReal(tb[0] * tb[0] + tb[1] * tb[1]);
   for (PetscInt d = 0; d < 2; ++d) tv[d] = wa * ta[d] / na + wb * sg * tb[d] / nb;
+  c0 = -off;
   for (PetscInt d = 0; d < 2; ++d) { /* x_s(xi) = x_m + xi (x_b - x_a)/2 + xi^2 ((x_a + x_b)/2 - x_m) */
     PetscReal xa = S->x[2 * sn[0] + d], xb = S->x[2 * sn[1] + d], xm = S->x[2 * sn[2] + d];
     if (mirror && d == 1) {
@@ -455,16 +461,18 @@ static PetscReal MortarTransition(const Mortar *m, PetscInt s, PetscInt se, Pets
     if (E.kind != REGION_EDGE) continue;
     for (PetscInt e = 0; e < 2; ++e) {
       const PetscInt v = M->enodes[3 * E.id + e];
-      if ((O.kind == REGION_NODE && O.id == v && (O.mirror == E.mirror || ContactSurfaceCutSide(M, v) != 0)) || (O.kind == REGION_EXT && O.id == E.id && O.end == e && O.mirror == E.mirror)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0, E.mirror);
+      if ((O.kind == REGION_NODE && O.id == v && (O.mirror == E.mirror || ContactSurfaceCutSide(M, v) != 0)) || ((O.kind == REGION_EXT || O.kind == REGION_RAMP) && O.id == E.id && O.end == e && O.mirror == E.mirror)) return MortarNodeCrossing(S, se, M, E.id, e, E.id, e, a, b, 1.0, 0.0, 0.0, E.mirror);
     }
   }
+  if (((Ra.kind == REGION_RAMP && Rb.kind == REGION_EXT) || (Ra.kind == REGION_EXT && Rb.kind == REGION_RAMP)) && Ra.id == Rb.id && Ra.end == Rb.end && Ra.mirror == Rb.mirror) /* the ramp's far end */
+    return MortarNodeCrossing(S, se, M, Ra.id, Ra.end, Ra.id, Ra.end, a, b, 1.0, 0.0, (Ra.end ? 1.0 : -1.0) * ContactGapRampLength(M, Ra.id, Ra.end), Ra.mirror);
   if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && ContactGapEndBlended(M, Ra.id, i)) { /* across a blended node */
     *ea = Ra.id;
     *eb = Rb.id;
     *ma = *mb = Ra.mirror;
-    return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, Ra.mirror);
+    return MortarNodeCrossing(S, se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, 0.0, Ra.mirror);
   }
-  if (Ra.kind != REGION_EXT && Rb.kind != REGION_EXT) {
+  if (Ra.kind != REGION_EXT && Rb.kind != REGION_EXT && Ra.kind != REGION_RAMP && Rb.kind != REGION_RAMP) {
     *ea = Ra.edge;
     *eb = Rb.edge;
     *ma = Ra.mirror;
@@ -509,6 +517,41 @@ static PetscBool MortarEndTies(const Mortar *m, PetscInt s, PetscInt se, PetscRe
   return (PetscBool)(PetscAbsReal(dR - dO) <= MORTAR_TIE_RTOL * (dR + dO + PetscSqr(m->b.S[s].elen[se])));
 }
 
+/* Where [a, b] of slave edge se passes from the inside of a master edge to
+   its extension past an end of the surface (or back) and the lift turns
+   there: through the ramp, between the end's normal line and the line h0
+   past it (gap.c, ContactGapBeyondEnd), whose g'' jumps at both lines (by
+   kappa / h0): a cut at each, so that no Gauss rule straddles either. As
+   the cuts move with u their rules' error is left out (g is C1 across
+   both), as at a fan's sides; a rule over the ramp and the straight lift
+   together, whose integrand is not smooth, missed by about k_p g_j h0 / 2
+   per unit of the cut's motion the term of the gradient a moving cut
+   carries (6.6e-3 of a corner force of 1.2 on a block slid past its
+   partner's end, which stalled Newton there). False where it does not
+   apply or the pieces are not uniform. */
+static PetscBool MortarSplitRamp(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, MortarRegion Ra, PetscReal b, MortarRegion Rb, PetscInt *ncut, MortarCut cut[], MortarGapCache *cache)
+{
+  const ContactSurface *M = &m->b.S[1 - s], *S = &m->b.S[s];
+  const PetscBool       fromEdge = (PetscBool)(Ra.kind == REGION_EDGE);
+  const MortarRegion    E = fromEdge ? Ra : Rb, X = fromEdge ? Rb : Ra;
+  MortarRegion          R = X;
+  PetscReal             h0, c0, c1, lo, hi;
+
+  if (!((Ra.kind == REGION_EDGE && Rb.kind == REGION_EXT) || (Ra.kind == REGION_EXT && Rb.kind == REGION_EDGE)) || X.id != E.id || X.mirror != E.mirror) return PETSC_FALSE;
+  h0 = ContactGapRampLength(M, X.id, X.end);
+  if (h0 <= 0) return PETSC_FALSE;
+  c0 = MortarNodeCrossing(S, se, M, X.id, X.end, X.id, X.end, a, b, 1.0, 0.0, 0.0, X.mirror);
+  c1 = MortarNodeCrossing(S, se, M, X.id, X.end, X.id, X.end, a, b, 1.0, 0.0, (X.end ? 1.0 : -1.0) * h0, X.mirror);
+  lo = fromEdge ? c0 : c1;
+  hi = fromEdge ? c1 : c0;
+  if (!(a < lo && lo < hi && hi < b)) return PETSC_FALSE;
+  R.kind = REGION_RAMP;
+  if (!MortarPieceUniform(m, s, se, a, lo, Ra, cache) || !MortarPieceUniform(m, s, se, lo, hi, R, cache) || !MortarPieceUniform(m, s, se, hi, b, Rb, cache)) return PETSC_FALSE;
+  cut[(*ncut)++] = (MortarCut){se, -1, -1, lo, PETSC_FALSE, PETSC_FALSE, -1, -1, 0.0, 0.0};
+  cut[(*ncut)++] = (MortarCut){se, -1, -1, hi, PETSC_FALSE, PETSC_FALSE, -1, -1, 0.0, 0.0};
+  return PETSC_TRUE;
+}
+
 /* Splits [a, b] of slave edge se, whose ends lie in regions Ra and Rb,
    until the closest point stays in one region over each piece (checked at
    the pieces' Gauss points and midpoints), so that every piece's integrand
@@ -532,7 +575,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
     if (MortarEndTies(m, s, se, b, Rb, Ra) && MortarPieceUniform(m, s, se, a, b, Ra, cache)) return;
     if (Ra.kind == REGION_EDGE && Rb.kind == REGION_EDGE && Ra.mirror == Rb.mirror && MortarSharedEnd(M, Ra.id, Rb.id, &i, &j) && !ContactGapEndBlended(M, Ra.id, i)) {
       /* two edges at a corner: its fan, if the bisector lies in it */
-      c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, Ra.mirror);
+      c = MortarNodeCrossing(&m->b.S[s], se, M, Ra.id, i, Rb.id, j, a, b, 1.0, 1.0, 0.0, Ra.mirror);
       if (c > a && c < b) {
         Rc = MortarRegionAt(m, s, se, c, NULL);
         if (Rc.kind == REGION_NODE && Rc.id == M->enodes[3 * Ra.id + i]) {
@@ -543,6 +586,7 @@ static void MortarSplit(const Mortar *m, PetscInt s, PetscInt se, PetscReal a, M
         }
       }
     }
+    if (MortarSplitRamp(m, s, se, a, Ra, b, Rb, ncut, cut, cache)) return;
     c = MortarTransition(m, s, se, a, Ra, b, Rb, &ea, &eb, &ma, &mb);
     if (c > a && c < b && MortarPieceUniform(m, s, se, a, c, Ra, cache) && MortarPieceUniform(m, s, se, c, b, Rb, cache)) {
       cut[(*ncut)++] = (MortarCut){se, ea, eb, c, ma, mb, -1, -1, 0.0, 0.0};
