@@ -154,13 +154,14 @@ typedef struct {
 typedef struct {
   PetscBool          active;    /* the coming TAO solves stop at the final tolerance: the test applies */
   PetscBool          met;       /* the gradient tolerance was met in the current TaoSolve, at Xmet */
-  Vec                Xmet;      /* the iterate that met it (kept while the solve goes on) */
+  Vec                Xmet;      /* the iterate of least gradient since (kept while the solve goes on) */
   TaoConvergedReason metReason; /* the reason TAO's test gave there */
   PetscInt           continued; /* TAO solves that went on past the gradient tolerance */
-  PetscInt           fallbacks; /* of those, ended at Xmet (a later stop that was not a convergence) */
+  PetscInt           fallbacks; /* of those, ended at Xmet after a later stop that was not a convergence */
   PetscInt           floors;    /* of those, ended where the gradient stalled (its round-off floor) */
   PetscInt           stalled;   /* iterations since the gradient last halved, past TAO's test */
-  PetscReal          best;      /* the least gradient norm past TAO's test */
+  PetscReal          best;      /* the least gradient norm past TAO's test (Xmet's) */
+  PetscReal          ref;       /* the gradient norm the next must halve (reset where it does) */
   PetscReal          ratio;     /* the last test's ||g|| / ||f_c|| (-1: none) */
 } ForceStop;
 
@@ -174,6 +175,7 @@ typedef struct {
   PetscInt  term;    /* the pair it watched last (-1: none) */
   PetscBool sliding; /* no node of some frictional pair sticks at the last iterate */
   PetscInt  stops;   /* solves it stopped */
+  PetscReal bound;   /* a slip beyond this is no displacement's: twice the largest one imposed */
 } SlideWatch;
 
 /* The whole scene: bodies joined into one vector, energy terms, TAO glue.

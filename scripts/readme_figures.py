@@ -293,6 +293,8 @@ CLAIM_SCENES = [
     ("reference by force", ["-options_file", "meshes/hertz/hertz.opts",
                             "-block_bc_push_control", "force,displacement", "-block_bc_push_values", "-55,0"]),
     ("punch", ["-options_file", "meshes/punch/punch.opts"]),
+    ("stiff punch on a soft layer", ["-options_file", "tests/meshes/stiff-punch/stiff-punch.opts",
+                                     "-layer_mesh_size", "0.0125", "-punch_mesh_size", "0.025"]),
     ("roller", ["-options_file", "meshes/roller/roller.opts"]),
 ]
 # (solver, ranks) of each scene, interleaved; a run past CLAIM_TIMEOUT seconds counts as failed

@@ -45,7 +45,7 @@ REAL_POS = ("real", 0.0, True)        # > 0
 REAL_NONNEG = ("real", 0.0, False)    # >= 0
 REAL_ANY = ("real", None, False)      # any finite number
 DOMAINS = {
-    "mesh_size": REAL_POS, "max_dofs": ("real", 1.0, False), "taylor_scale": REAL_POS, "penalty_start": REAL_POS, "stage_rtol": REAL_POS,
+    "mesh_size": REAL_POS, "max_dofs": ("real", 1.0, False), "taylor_scale": REAL_POS, "penalty_start": REAL_POS, "stage_rtol": REAL_POS, "stop_force_rtol": ("unit",),
     "contact_hessian_switch": REAL_NONNEG, "load_steps": ("int", 1, False), "load_stages": ("int", 1, False), "load_cutbacks": ("int", 0, False), "penalty_stages": ("int", 1, False),
     "contact_penalty": REAL_POS, "contact_blend": REAL_NONNEG, "contact_quadrature_points": ("int", 3, False),
     "contact_interface_penalty": REAL_POS, "contact_interface_mirror_y": REAL_ANY,

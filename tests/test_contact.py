@@ -176,8 +176,9 @@ def flatten(d, prefix=""):
 
 # keys that legitimately differ between rank counts: timings, the rank count,
 # the gradient norm at the stopping point (a round-off residual, 6e-6 against
-# 4e3 at rest), and the Taylor test (its random direction depends on the layout)
-RANK_DEPENDENT = ("time.", "ranks", "run_id", "gradient_norm", "taylor.",
+# 4e3 at rest) and its ratio to the contacts' forces, and the Taylor test (its
+# random direction depends on the layout)
+RANK_DEPENDENT = ("time.", "ranks", "run_id", "gradient_norm", "force_residual", "force_stop.", "taylor.",
                   # and the solver's path, not its answer: round-off may take
                   # another iterate, stop one step later or for another test
                   "iterations", "function_evaluations", "hessian_evaluations", "tao_reason")

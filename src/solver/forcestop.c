@@ -23,7 +23,10 @@
    on while
        ||g|| > rtol ||f_c||,   rtol = -stop_force_rtol (1e-6),
    ||f_c|| computed at that iterate; the test only tightens TAO's, never
-   loosens it, and is off where no contact carries a force (f_c = 0).
+   loosens it, and is off where no contact carries a force (f_c = 0) and
+   where the user gave a TAO gradient tolerance and not this option (a
+   stop chosen: -tao_gatol 1000 to look at an iterate far from the
+   answer, -tao_gttol 1e-12 to pin one).
    Past TAO's test the gradient may reach its round-off floor above the
    forces' test (asked 1e-10 on that punch, it stalls at 2.5e-8), or crawl
    (the shipped punch with the block as mortar slave: about 1e-2 of the
@@ -33,8 +36,9 @@
    solve whose gradient is above the forces' test says so in a warning
    (ProblemPostProcess): the forces are as far from converged as that.
    If the solve, gone on, ends otherwise than converged (a line search
-   that fails at round-off, the iteration budget), it ends at the iterate
-   that met TAO's test, with TAO's reason there, as it would have without
+   that fails at round-off, the iteration budget: the coarse rubber squeeze
+   at 1.4e-5 of its forces), or stalls, it ends at the iterate of least
+   gradient past TAO's test, with TAO's reason there, no worse than without
    this test (JSON `force_stop`: the solves continued, those ended at their
    floor and those ended so).
    The JSON's `force_residual` is ||g|| / ||f_c|| at the solution. */
@@ -99,17 +103,22 @@ PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
     PetscCall(VecCopy(X, s->Xmet));
     s->met       = PETSC_TRUE;
     s->metReason = reason;
-    s->best      = gnorm;
-    s->stalled   = 0;
+    s->best = s->ref = gnorm;
+    s->stalled       = 0;
     s->continued++;
-  } else if (gnorm < 0.5 * s->best) {
-    s->best    = gnorm;
-    s->stalled = 0;
-  } else if (++s->stalled >= FORCESTOP_STALL) { /* the gradient's round-off floor, or a crawl: as far as the solve goes */
-    PetscCall(PetscInfo(tao, "the gradient norm %g (%g of the contacts' nodal forces) has not halved in %d iterations: as far as it goes, converged (%s)\n", (double)gnorm, (double)s->ratio, FORCESTOP_STALL, TaoConvergedReasons[reason]));
-    s->met = PETSC_FALSE;
-    s->floors++;
-    PetscFunctionReturn(0);
+  } else {
+    if (gnorm < s->best) { /* the least gradient past TAO's test: the iterate to end at */
+      s->best = gnorm;
+      PetscCall(VecCopy(X, s->Xmet));
+    }
+    if (gnorm < 0.5 * s->ref) {
+      s->ref     = gnorm;
+      s->stalled = 0;
+    } else if (++s->stalled >= FORCESTOP_STALL) { /* the gradient's round-off floor, or a crawl: as far as the solve goes */
+      PetscCall(PetscInfo(tao, "the gradient norm %g (%g of the contacts' nodal forces) has not halved in %d iterations: as far as it goes, converged (%s) at the least, %g\n", (double)gnorm, (double)s->ratio, FORCESTOP_STALL, TaoConvergedReasons[reason], (double)s->best));
+      s->floors++;
+      PetscFunctionReturn(0); /* ProblemForceStopEnd moves it to Xmet */
+    }
   }
   PetscCall(PetscInfo(tao, "the gradient norm %g met %s but is %g of the contacts' nodal forces (%g), above -stop_force_rtol %g: going on\n", (double)gnorm, TaoConvergedReasons[reason], (double)s->ratio, (double)fc, (double)p->opt.forceRtol));
   PetscCall(TaoSetConvergedReason(tao, TAO_CONTINUE_ITERATING));
@@ -136,13 +145,14 @@ PetscErrorCode ProblemForceStopEnd(Problem p, TaoConvergedReason *reason)
   PetscReal  f;
 
   PetscFunctionBeginUser;
-  if (!s->met || *reason > 0) PetscFunctionReturn(0);
-  PetscCall(PetscInfo(p->tao, "the solve, gone on past the gradient tolerance for the forces' test, stopped with %s: it ends where it met %s\n", TaoConvergedReasons[*reason], TaoConvergedReasons[s->metReason]));
+  if (!s->met) PetscFunctionReturn(0);
+  s->met = PETSC_FALSE;
+  if (*reason > 0 && s->stalled < FORCESTOP_STALL) PetscFunctionReturn(0); /* converged by the forces' test */
+  PetscCall(PetscInfo(p->tao, "the solve, gone on past the gradient tolerance for the forces' test, stopped with %s: it ends at its least gradient past it, %g (%s)\n", TaoConvergedReasons[*reason], (double)s->best, TaoConvergedReasons[s->metReason]));
+  if (*reason <= 0) s->fallbacks++;
   PetscCall(VecCopy(s->Xmet, p->X));
   PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL)); /* the bodies and terms at the state kept */
   *reason = s->metReason;
-  s->met  = PETSC_FALSE;
-  s->fallbacks++;
   PetscFunctionReturn(0);
 }
 

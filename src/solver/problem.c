@@ -179,7 +179,17 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with Newton where k_p h / E* exceeds 1e7: 2, the first at 1000; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
-  PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; src/solver/forcestop.c)", NULL, p->opt.forceRtol, &p->opt.forceRtol, NULL));
+  {
+    const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
+    PetscBool         set, given = PETSC_FALSE;
+    PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; where -tao_gatol, -tao_grtol or -tao_gttol is given and this is not, off: the user's stop; src/solver/forcestop.c)", NULL, p->opt.forceRtol, &p->opt.forceRtol, &set));
+    for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]) && !set; ++i) {
+      PetscBool flg;
+      PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
+      given = (PetscBool)(given || flg);
+    }
+    if (!set && given) p->opt.forceRtol = 0.0; /* the user chose TAO's stop */
+  }
   PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_lag_max_it", "Friction: the most solves of one load increment's fixed point on the pressure", NULL, p->opt.lagMaxIt, &p->opt.lagMaxIt, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));

@@ -18,7 +18,12 @@
    contract (quadratically near the answer, as every increment of the
    friction tests' gross sliding under a displacement does). A slide
    without end does not: s_k grows and its change does not contract,
-       s_k > s_{k-1} > s_{k-2}  and  s_k - s_{k-1} >= s_{k-1} - s_{k-2} / 2.
+       s_k > s_{k-1} > s_{k-2}  and  s_k - s_{k-1} >= s_{k-1} - s_{k-2} / 2,
+   and s_k is beyond what the displacements given could make it: 2 D, D
+   the largest displacement a Dirichlet component imposes (a part slid 0.3
+   along a ledge by its displacement slips up to 0.3, its first Newton
+   iterates growing as a slide would; the cattaneo disc below, pushed 0.003,
+   slipped 0.88 then 4.07 in its iterates).
    After SLIDE_GROWING such iterates in a row the solve stops at once,
    DIVERGED_USER, with the pair's diagnosis (mortar.c: "pair X slides: none
    of its n nodes in contact sticks ..."), and no cutback: a smaller load
@@ -33,9 +38,34 @@
 
 #define SLIDE_GROWING 3
 
+/* D, the largest displacement any Dirichlet component imposes at the end of
+   any stage (force-controlled components and anchors left out; a body's
+   exact solution counts as unbounded): a slide between bodies held by
+   displacements is bounded by about D. */
+static PetscReal ProblemImposedDisplacement(Problem p)
+{
+  PetscReal D = 0.0;
+
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    const Body b = p->bodies[i];
+    for (PetscInt g = 0; g < b->nbc; ++g) {
+      const BodyBC *bc = &b->bc[g];
+      if (bc->anchor) continue;
+      if (bc->exact) return PETSC_INFINITY;
+      for (PetscInt c = 0; c < bc->ncomp; ++c) {
+        if (bc->control[c]) continue;
+        D = PetscMax(D, PetscAbsReal(bc->values[c]));
+        for (PetscInt k = 0; k < PetscMin(b->nstages, CONTACT_MAX_STAGES); ++k) D = PetscMax(D, PetscAbsReal(bc->stage[k][c]));
+      }
+    }
+  }
+  return D;
+}
+
 PetscErrorCode ProblemSlideWatchBegin(Problem p)
 {
   PetscFunctionBeginUser;
+  p->slide.bound   = 2.0 * ProblemImposedDisplacement(p);
   p->slide.n       = 0;
   p->slide.growing = 0;
   p->slide.peak    = 0;
@@ -86,7 +116,7 @@ PetscErrorCode ProblemSlideWatchTest(Problem p, Tao tao)
   }
   w->slip[w->n++] = slip;
   if (w->n < 3) PetscFunctionReturn(0);
-  if (w->slip[2] > w->slip[1] && w->slip[1] > w->slip[0] && w->slip[2] - w->slip[1] >= 0.5 * (w->slip[1] - w->slip[0])) w->growing++;
+  if (w->slip[2] > w->slip[1] && w->slip[1] > w->slip[0] && w->slip[2] - w->slip[1] >= 0.5 * (w->slip[1] - w->slip[0]) && w->slip[2] > w->bound) w->growing++;
   else w->growing = 0;
   w->peak = PetscMax(w->peak, w->growing);
   w->term = sliding;
