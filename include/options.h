@@ -43,6 +43,10 @@ PetscBool ContactOptionsDescribeValueError(const char fun[], const char mess[], 
    for a default ("required", or the option it is taken from). -help shows
    "<value : deflt>" if the option is given or has (the value before the call
    means something), else "<deflt>", never the placeholder the code starts from. */
+/* Whether the user gave one of TAO's gradient tolerances (-tao_gatol,
+   -tao_grtol, -tao_gttol): a stop chosen, which the program's own stop
+   tests (L-BFGS's decrement, the forces' test) then leave alone. */
+PetscErrorCode ContactGradientToleranceGiven(PetscBool *given);
 PetscErrorCode ContactOptionsRealNoDefault(PetscOptionItems *PetscOptionsObject, const char opt[], const char text[], const char deflt[], PetscBool has, PetscReal *value, PetscBool *set);
 
 /* An option given without a value (followed by another option, or last on

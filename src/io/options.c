@@ -770,3 +770,17 @@ PetscErrorCode ContactOptionsListNames(PetscFunctionList list, char known[], siz
   PetscCall(PetscFree(names));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode ContactGradientToleranceGiven(PetscBool *given)
+{
+  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
+
+  PetscFunctionBeginUser;
+  *given = PETSC_FALSE;
+  for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]); ++i) {
+    PetscBool flg;
+    PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
+    *given = (PetscBool)(*given || flg);
+  }
+  PetscFunctionReturn(0);
+}

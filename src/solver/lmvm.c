@@ -173,6 +173,7 @@
 #include "lmvm.h"
 #include "forcestop.h"
 #include "slidewatch.h"
+#include "options.h"
 #include "problem.h"
 #include "newtonstep.h"
 #include "forceborder.h"
@@ -482,14 +483,10 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
    off. After the terms' set-up (without it, -help, off). */
 static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
 {
-  const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
-  PetscBool         given  = PETSC_FALSE, flg;
+  PetscBool given;
 
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]); ++i) {
-    PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
-    given = (PetscBool)(given || flg);
-  }
+  PetscCall(ContactGradientToleranceGiven(&given));
   p->sched.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
   PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->sched.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
   PetscFunctionReturn(0);

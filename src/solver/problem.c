@@ -180,14 +180,9 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
   PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
   {
-    const char *const tols[] = {"-tao_gatol", "-tao_grtol", "-tao_gttol"};
-    PetscBool         set, given = PETSC_FALSE;
+    PetscBool set, given;
     PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; where -tao_gatol, -tao_grtol or -tao_gttol is given and this is not, off: the user's stop; src/solver/forcestop.c)", NULL, p->opt.forceRtol, &p->opt.forceRtol, &set));
-    for (size_t i = 0; i < sizeof(tols) / sizeof(tols[0]) && !set; ++i) {
-      PetscBool flg;
-      PetscCall(PetscOptionsHasName(NULL, NULL, tols[i], &flg));
-      given = (PetscBool)(given || flg);
-    }
+    PetscCall(ContactGradientToleranceGiven(&given));
     if (!set && given) p->opt.forceRtol = 0.0; /* the user chose TAO's stop */
   }
   PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
