@@ -197,7 +197,7 @@ def test_ranks(tmp_path):
     it differs by round-off of P, far above the bound), so that a figure
     that is one rank's share fails here (the largest relative difference, a
     profile's L2 error against Hertz's, measured over the five OpenBLAS
-    kernels, twice each, `worst_np2` = 1.3e-12 to 4.8e-12 and
+    kernels, twice each, `worst_np2` = 3.6e-13 to 4.8e-12 and
     `worst_np3` = 5.2e-13 to 5.8e-12; the bound was 1e-11, 1.7 times the
     largest), and the pressure profiles to 4e-12 of p_max (measured
     `dp_indenter_contact_np2` = 5.3e-13 to 1.2e-12,

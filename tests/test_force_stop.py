@@ -61,9 +61,10 @@ def test_gradient_at_rest_alone_was_off(reference, tmp_path):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_two_ranks(reference, tmp_path):
     """2 ranks stop by the same test: the force within 1e-5 of the reference
-    (`dP` = 7.1e-9)."""
+    (`dP` = 3.5e-10 to 7.1e-9 over the five kernels)."""
     r = run_contact(SCENE, tmp_path, ranks=2)
     assert r.summary["force_residual"] <= 1e-6
     dp = figure("dP", abs(punch_force(r) - punch_force(reference)) / punch_force(reference))

@@ -192,7 +192,7 @@ LAG_RTOL = 1e-8   # -contact_friction_lag_rtol's default (src/solver/problem.c)
 def test_ranks_agree(runs):
     """1 and 2 ranks, each its own solve: the nodal shear apart by `dq` =
     1.6e-11 to 2.1e-11 of its largest, the stick half-width by `dc` =
-    1.7e-13 to 1.2e-12 (the sums'
+    9.4e-15 to 1.2e-12 (the sums'
     order differs). Bound from the stops: each increment's fixed point
     ends where the lagged bound mu p changed by at most
     -contact_friction_lag_rtol (1e-8) of mu p_max, so a slipping node's
@@ -589,8 +589,8 @@ def test_rigid_punch_held_by_friction(punch_runs):
     force-controlled in x and y, is held along the block by friction alone
     (Q = 0.02 against mu P = 0.045). Its force balance: the contact's force
     on it is minus the force given, (-0.02, 0.15), to the solve's stop (`force_error` =
-    3.1e-7 of P; bound 1e-6 of P), its moment about the free point 0
-    (`moment_error` = 1.6e-7 of P b; bound 1e-6 of P b). Coulomb on its
+    2.6e-8 of P; bound 1e-6 of P), its moment about the free point 0
+    (`moment_error` = 1.3e-8 of P b; bound 1e-6 of P b). Coulomb on its
     nodes: |q| <= mu p to 1e-6 of mu p_max (`excess` = 0), some stuck
     (`stuck` = 16 of 21 in contact), the slipping ones at |q| = mu p. 1
     and 2 ranks: the shear `dq` = 5.3e-12 to 4.3e-11 of its largest apart,

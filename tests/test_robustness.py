@@ -30,7 +30,7 @@ def test_extreme_case(h, kp, push, formulation, tmp_path):
     ||g|| (Cauchy-Schwarz, n <= the dofs): a bound from the run's
     gradient_norm, whatever path Newton took on whatever machine (at
     k_p = 1e10 the paths differ: the imbalance measured
-    `imbalance` = 1.8e-11 to 6.6e-9 of P over the five OpenBLAS kernels and
+    `imbalance` = 2.1e-13 to 6.6e-9 of P over the five OpenBLAS kernels and
     the cases, where a fixed bound 3 times the largest would stand on one
     machine's rounding), and `of_bound` = 3.5e-4 to 0.064 of that bound
     (was a fixed 1e-6). Catches a reaction summed over the

@@ -31,11 +31,11 @@ def slides(r, pair="interface"):
     assert not r.summary_path.exists() and not r.output_path.exists()
 
 
-@pytest.mark.parametrize("ratio", [1.1, 3.34])
+@pytest.mark.parametrize("ratio", [1.1, pytest.param(3.34, marks=pytest.mark.stress)])
 def test_disc_pulled_beyond_friction(ratio, tmp_path):
-    """Q = 1.1 and 3.34 mu P: refused by the solve in one line (`wall` =
-    1.7 to 8 s on a loaded machine, where the run at 0.9 mu P converges in
-    3.0 s on a quiet one)."""
+    """Q = 1.1 (and in make stress 3.34) mu P: refused by the solve in one
+    line (`wall` = 1.2 to 8 s, the most on a loaded machine, where the run at
+    0.9 mu P converges in 3.0 s on a quiet one)."""
     t0 = time.time()
     r = run_contact(pulled(ratio * MU * P), tmp_path, check=False)
     figure("wall", time.time() - t0)
