@@ -171,6 +171,7 @@ def test_pressure_both_contacts_carry_it(tmp_path):
 
 
 @pytest.mark.roundoff
+@pytest.mark.kernels
 def test_roller_ranks(by_force, tmp_path):
     """2 ranks against 1: each contact's P within what the two stops guarantee
     together (balance_bound of each run, summed: measured
