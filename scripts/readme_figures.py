@@ -379,12 +379,14 @@ def render_claims_lmvm():
 
 
 def render_claims_parallel():
-    """2 ranks' speed-up of Newton's solve, least to greatest, over the claims' scenes."""
+    """2 ranks' speed-up of Newton's solve, least to greatest, over the claims' scenes
+    where 1 and 2 ranks take the same iterations (elsewhere the ratio is the path's:
+    the stiff punch's Newton creeps 131 iterations on 1 rank and 49 on 2)."""
     t = claim_table()
     sp = [(v["nls", 1]["solve"] / v["nls", 2]["solve"], k) for k, v in t.items()
-          if v["nls", 2]["converged"] and v["nls", 1]["converged"]]
+          if v["nls", 2]["converged"] and v["nls", 1]["converged"] and v["nls", 2]["iterations"] == v["nls", 1]["iterations"]]
     lo, hi = min(sp), max(sp)
-    return f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times as fast as one over the same scenes"
+    return f"{lo[0]:.2f} ({lo[1]}) to {hi[0]:.2f} ({hi[1]}) times as fast as one over the same scenes, where both take the same iterations"
 
 
 def lmvm_pairs():
