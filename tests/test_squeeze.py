@@ -116,7 +116,7 @@ def test_two_ranks(coarse):
     takes a part of, at most the sum of its components, sqrt(n) |g| (n the
     dofs); for the two runs sqrt(n) (|g1| + |g2|), each |g| the one its
     increment's last solve stopped at (the -info lines). Measured: the
-    final P `dP` = 3.1e-13 to 8.3e-9 apart (relative), the path's reactions
+    final P `dP` = 2.7e-14 to 8.3e-9 apart (relative), the path's reactions
     `path` = 1.4e-4 to 0.035 of their bound at most (`dF` = 4.1e-8 to
     2.0e-7 of the final force); the energy, at its minimum and so second
     order in the stop, `dE` = 0 to 2.2e-13: bound |g| times the
