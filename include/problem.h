@@ -52,6 +52,8 @@ PetscErrorCode ProblemAssembleHessian(Problem, Vec X, Mat P);
 PetscErrorCode ProblemSetLoad(Problem, PetscReal lambda);
 /* Sets every body's local vector (Dirichlet values inserted) from X. */
 PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
+/* G (the joined layout) = the bodies' local gradients Gl summed into their dofs (a rigid body's unknowns left out). */
+PetscErrorCode ProblemGatherGradient(Problem, Vec G);
 /* Collective: the results at the converged state X (energy, gradient norm,
    reactions, each term's results). */
 PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);

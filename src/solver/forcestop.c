@@ -53,9 +53,8 @@
    (a rigid body's unknowns, which have none, left out). */
 PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
 {
-  Vec          W;
-  PetscScalar *w;
-  PetscReal    et;
+  Vec       W;
+  PetscReal et;
 
   PetscFunctionBeginUser;
   *fc = 0.0;
@@ -64,17 +63,7 @@ PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
   PetscCall(VecDuplicate(X, &W));
-  PetscCall(VecZeroEntries(W));
-  PetscCall(VecGetArray(W, &w));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body b = p->bodies[i];
-    if (b->rigid) continue;
-    PetscCall(VecPlaceArray(b->Gg, w + p->offset[i]));
-    PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
-    PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
-    PetscCall(VecResetArray(b->Gg));
-  }
-  PetscCall(VecRestoreArray(W, &w));
+  PetscCall(ProblemGatherGradient(p, W));
   PetscCall(VecNorm(W, NORM_2, fc));
   PetscCall(VecDestroy(&W));
   PetscFunctionReturn(0);

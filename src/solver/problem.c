@@ -682,7 +682,6 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   const PetscInt nparts = p->nbodies + p->nterms;
   PetscReal      sum[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)] = {0}, all[1 + 2 * (CONTACT_MAX_BODIES + CONTACT_MAX_TERMS)], eb, et;
   PetscReal     *bad = sum + 1, *part = sum + 1 + nparts;
-  PetscScalar   *g;
 
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(p, X));
@@ -715,6 +714,16 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
     SETERRQ(p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair", k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
   }
   if (parts) PetscCall(PetscArraycpy(parts, all + 1 + nparts, nparts));
+  PetscCall(ProblemGatherGradient(p, G));
+  *f = all[0];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemGatherGradient(Problem p, Vec G)
+{
+  PetscScalar *g;
+
+  PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(G));
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
@@ -726,7 +735,6 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
     PetscCall(VecResetArray(b->Gg));
   }
   PetscCall(VecRestoreArray(G, &g));
-  *f = all[0];
   PetscFunctionReturn(0);
 }
 
