@@ -12,7 +12,9 @@ it as `name` = VALUE, or `name` = LO to HI for a range (over the kernels, or
 over a test's parametrised cases: a figure's name is local to its test
 function, whose cases share the docstring). A quoted figure is flagged when a
 recorded value lies outside [LO / 3, 3 HI] (absolute values; a range across
-zero, -LO to HI, is [0, 3 max(LO, HI)]; a quoted 0 takes no recorded value
+zero, -LO to HI, is [0, 3 max(LO, HI)], and so is `name` = up to HI, a
+figure at round-off whose last bits vary from run to run, quoted by its
+largest value; a quoted 0 takes no recorded value
 above 1e-300), or when the test ran and recorded other
 figures but not this one. Figures recorded and not quoted are listed, not
 flagged. Only the standard library is used.
@@ -27,7 +29,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-QUOTE = re.compile(r"`([A-Za-z_][\w.]*)`\s*=\s*(" + NUM + r")(?:\s+to\s+(" + NUM + r"))?")
+QUOTE = re.compile(r"`([A-Za-z_][\w.]*)`\s*=\s*(up to\s+)?(" + NUM + r")(?:\s+to\s+(" + NUM + r"))?")
 FACTOR = 3.0
 
 
@@ -47,9 +49,9 @@ def quoted(tests_dir):
             doc = ast.get_docstring(node) or ""
             figs = {}
             for m in QUOTE.finditer(" ".join(doc.split())):
-                lo, hi = float(m.group(2)), float(m.group(3) or m.group(2))
+                lo, hi = float(m.group(3)), float(m.group(4) or m.group(3))
                 # a signed range across zero (-4.9e-7 to 3.9e-7) spans every magnitude below its ends'
-                lo, hi = (0.0, max(abs(lo), abs(hi))) if lo * hi < 0 else sorted((abs(lo), abs(hi)))
+                lo, hi = (0.0, max(abs(lo), abs(hi))) if lo * hi < 0 or m.group(2) else sorted((abs(lo), abs(hi)))
                 figs[m.group(1)] = (lo, hi, m.group(0))
             if figs:
                 out[(path.name, name)] = figs
