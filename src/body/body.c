@@ -165,6 +165,7 @@ PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs
 static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 {
   PetscInt cStart, cEnd, nTypes[2] = {0, 0}, gTypes[2];
+  DMPolytopeType want[2];
   char     prefix[2 * CONTACT_NAME_LEN];
 
   PetscFunctionBeginUser;
@@ -176,18 +177,21 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)b->dm, prefix));
   PetscCall(DMGetDimension(b->dm, &b->dim));
-  PetscCheck(b->dim == 2, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is %" PetscInt_FMT "D; the solver is 2D", b->name, b->msh, b->dim);
+  PetscCheck(b->dim == 2 || b->dim == 3, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is %" PetscInt_FMT "D; a body is 2D or 3D", b->name, b->msh, b->dim);
+  PetscCheck(b->dim == 2 || !b->axisym, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s is 3D, and -axisymmetric takes 2D bodies (their meridian sections)", b->name, b->msh);
+  want[0] = b->dim == 3 ? DM_POLYTOPE_TETRAHEDRON : DM_POLYTOPE_TRIANGLE;
+  want[1] = b->dim == 3 ? DM_POLYTOPE_HEXAHEDRON : DM_POLYTOPE_QUADRILATERAL;
   PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(b->dm, c, &ct));
-    if (ct == DM_POLYTOPE_TRIANGLE) nTypes[0]++;
-    else if (ct == DM_POLYTOPE_QUADRILATERAL) nTypes[1]++;
+    if (ct == want[0]) nTypes[0]++;
+    else if (ct == want[1]) nTypes[1]++;
     else SETERRQ(b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has a cell of type %s", b->name, b->msh, DMPolytopeTypes[ct]);
   }
   PetscCall(MPIU_Allreduce(nTypes, gTypes, 2, MPIU_INT, MPI_SUM, b->comm));
   PetscCheck(gTypes[0] + gTypes[1] > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has no cells", b->name, b->msh);
-  PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes triangles and quadrilaterals", b->name, b->msh);
+  PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes %s", b->name, b->msh, b->dim == 3 ? "tetrahedra and hexahedra" : "triangles and quadrilaterals");
   b->simplex      = gTypes[0] ? PETSC_TRUE : PETSC_FALSE;
   b->ncellsGlobal = gTypes[0] + gTypes[1];
   PetscCall(DMPlexDistributeWith(&b->dm, (PartitionType)partitioner, view, b->name));
@@ -216,6 +220,33 @@ PetscReal BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscR
   return detJ;
 }
 
+/* The same at one reference point in dimension dim (2 or 3): x[a][dim],
+   D[a][dim], dNdx[a][dim]. In 2D the function above, bit for bit. */
+PetscReal BodyElementGradientsDim(PetscInt dim, PetscInt nb, const PetscReal x[], const PetscReal D[], PetscReal dNdx[])
+{
+  PetscReal J[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, detJ, iJ[9];
+
+  if (dim == 2) return BodyElementGradients(nb, (const PetscReal(*)[2])x, D, dNdx);
+  for (PetscInt a = 0; a < nb; ++a)
+    for (PetscInt i = 0; i < 3; ++i)
+      for (PetscInt j = 0; j < 3; ++j) J[i * 3 + j] += x[a * 3 + i] * D[a * 3 + j];
+  /* the inverse by cofactors: iJ = adj(J) / det J */
+  iJ[0] = J[4] * J[8] - J[5] * J[7];
+  iJ[1] = J[2] * J[7] - J[1] * J[8];
+  iJ[2] = J[1] * J[5] - J[2] * J[4];
+  iJ[3] = J[5] * J[6] - J[3] * J[8];
+  iJ[4] = J[0] * J[8] - J[2] * J[6];
+  iJ[5] = J[2] * J[3] - J[0] * J[5];
+  iJ[6] = J[3] * J[7] - J[4] * J[6];
+  iJ[7] = J[1] * J[6] - J[0] * J[7];
+  iJ[8] = J[0] * J[4] - J[1] * J[3];
+  detJ  = J[0] * iJ[0] + J[1] * iJ[3] + J[2] * iJ[6];
+  for (PetscInt k = 0; k < 9; ++k) iJ[k] /= detJ;
+  for (PetscInt a = 0; a < nb; ++a) /* dN_a/dx_j = dN_a/dxi_k (J^-1)_kj */
+    for (PetscInt j = 0; j < 3; ++j) dNdx[3 * a + j] = D[a * 3] * iJ[j] + D[a * 3 + 1] * iJ[3 + j] + D[a * 3 + 2] * iJ[6 + j];
+  return detJ;
+}
+
 /* Caches per cell the node points, their local dof offsets, the nodal coordinates, the physical
    basis gradients and the quadrature weights times det J. The node positions
    come from evaluating the mesh's own coordinate field (continuous Q2 on quads,
@@ -230,10 +261,11 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscQuadrature    q;
   PetscInt           cStart, cEnd, nq, ncb, ncc;
   const PetscReal   *qw;
-  PetscReal          ref[9 * 2];
+  PetscReal          ref[27 * 3];
   PetscObject        obj;
+  const PetscInt     dim = b->dim;
   PetscFE            cfe;
-  PetscReal          bad[5] = {0, 0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J, det J at its first point */
+  PetscReal          bad[6] = {0, 0, 0, 0, 0, 0}; /* first inverted cell here: flag, a node's x, y, det J, det J at its first point, z */
   PetscMPIInt        rank, size, first;
 
   PetscFunctionBeginUser;
@@ -254,11 +286,11 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   b->nq     = nq;
   b->ncells = cEnd - cStart;
   b->B      = T->T[0];
-  PetscCall(PetscMalloc6(b->ncells * b->nb, &b->cpts, b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * 2, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * 2, &b->xq, b->ncells * b->nb * 2, &b->xnode));
+  PetscCall(PetscMalloc6(b->ncells * b->nb, &b->cpts, b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * dim, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * dim, &b->xq, b->ncells * b->nb * dim, &b->xnode));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
     PetscScalar *xc = NULL;
-    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2], sign0 = 1.0, detJ0 = 0.0;
+    PetscReal   *x = &b->xnode[ci * b->nb * dim], sign0 = 1.0, detJ0 = 0.0;
 
     PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
     for (PetscInt i = 0; i < ncl; ++i) {
@@ -275,14 +307,14 @@ static PetscErrorCode BodyBuildCellCache(Body b)
     PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &ncc, &xc));
     PetscCheck(ncc == ncb, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, b->name, c, b->msh, ncc, ncb);
     for (PetscInt a = 0; a < b->nb; ++a) {
-      x[a][0] = x[a][1] = 0.0;
+      for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] = 0.0;
       for (PetscInt f = 0; f < ncb; ++f)
-        for (PetscInt d = 0; d < 2; ++d) x[a][d] += PetscRealPart(xc[f]) * Tc->T[0][(a * ncb + f) * 2 + d];
+        for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] += PetscRealPart(xc[f]) * Tc->T[0][(a * ncb + f) * dim + d];
     }
     PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal detJ = BodyElementGradients(b->nb, (const PetscReal(*)[2])x, &T->T[1][iq * b->nb * 2], &b->dNdx[(ci * nq + iq) * b->nb * 2]);
-      PetscReal       xx[2] = {0, 0};
+      const PetscReal detJ = BodyElementGradientsDim(dim, b->nb, x, &T->T[1][iq * b->nb * dim], &b->dNdx[(ci * nq + iq) * b->nb * dim]);
+      PetscReal       xx[3] = {0, 0, 0};
 
       /* clockwise cells are fine; a sign change inside a cell is not */
       if (iq == 0) {
@@ -291,16 +323,16 @@ static PetscErrorCode BodyBuildCellCache(Body b)
       }
       if (!(detJ * sign0 > 0) && bad[0] == 0.0) {
         bad[0] = 1.0;
-        bad[1] = x[b->nb - 1][0];
-        bad[2] = x[b->nb - 1][1];
+        bad[1] = x[(b->nb - 1) * dim];
+        bad[2] = x[(b->nb - 1) * dim + 1];
+        bad[5] = dim == 3 ? x[(b->nb - 1) * dim + 2] : 0.0;
         bad[3] = detJ;
         bad[4] = sign0 * PetscAbsReal(detJ0);
       }
       for (PetscInt a = 0; a < b->nb; ++a)
-        for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
-      b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ) * BodyRadialWeight(b, xx[0]);
-      b->xq[(ci * nq + iq) * 2]     = xx[0];
-      b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
+        for (PetscInt i = 0; i < dim; ++i) xx[i] += x[a * dim + i] * b->B[iq * b->nb + a];
+      b->wdetJ[ci * nq + iq] = qw[iq] * PetscAbsReal(detJ) * BodyRadialWeight(b, xx[0]);
+      for (PetscInt i = 0; i < dim; ++i) b->xq[(ci * nq + iq) * dim + i] = xx[i];
     }
   }
   PetscCall(PetscTabulationDestroy(&Tc));
@@ -309,7 +341,8 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscCallMPI(MPI_Comm_size(b->comm, &size));
   first = bad[0] != 0.0 ? rank : size;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
-  if (first < size) PetscCallMPI(MPI_Bcast(bad, 5, MPIU_REAL, first, b->comm));
+  if (first < size) PetscCallMPI(MPI_Bcast(bad, 6, MPIU_REAL, first, b->comm));
+  if (dim == 3) PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g, %g): det J = %g at one quadrature point, %g at another", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[5], (double)bad[4], (double)bad[3]);
   PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g): det J = %g at one quadrature point, %g at another", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[4], (double)bad[3]);
   PetscFunctionReturn(0);
 }
@@ -326,11 +359,10 @@ static PetscErrorCode BodyBuildNodeData(Body b)
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(PetscSectionGetChart(s, &b->pStart, &b->pEnd));
-  PetscCall(PetscCalloc2(2 * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
+  PetscCall(PetscCalloc2(b->dim * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
   for (PetscInt k = 0; k < b->ncells * b->nb; ++k) {
     const PetscInt p = b->cpts[k] - b->pStart;
-    b->xpoint[2 * p]     = b->xnode[2 * k];
-    b->xpoint[2 * p + 1] = b->xnode[2 * k + 1];
+    for (PetscInt d = 0; d < b->dim; ++d) b->xpoint[b->dim * p + d] = b->xnode[b->dim * k + d];
   }
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) b->owned[p - b->pStart] = PETSC_TRUE;
   PetscCall(DMGetPointSF(b->dm, &sf));
@@ -386,10 +418,10 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(PetscTime(&t1));
   b->tmesh += t1 - t0;
   PetscCall(PetscLogStagePush(contactLog.setup));
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, b->simplex, 2, PETSC_DETERMINE, &b->fe));
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, b->simplex, 2, PETSC_DETERMINE, &b->feScalar));
-  if (b->simplex) PetscCall(PetscDTSimplexQuadrature(2, qdeg, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
-  else PetscCall(PetscDTGaussTensorQuadrature(2, 1, (qdeg + 2) / 2, -1.0, 1.0, &q));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, b->dim, b->dim, b->simplex, 2, PETSC_DETERMINE, &b->fe));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, b->dim, 1, b->simplex, 2, PETSC_DETERMINE, &b->feScalar));
+  if (b->simplex) PetscCall(PetscDTSimplexQuadrature(b->dim, qdeg, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  else PetscCall(PetscDTGaussTensorQuadrature(b->dim, 1, (qdeg + 2) / 2, -1.0, 1.0, &q));
   PetscCall(PetscFESetQuadrature(b->fe, q));
   PetscCall(PetscFESetQuadrature(b->feScalar, q));
   PetscCall(PetscQuadratureDestroy(&q));

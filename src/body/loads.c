@@ -58,7 +58,7 @@ static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscB
   PetscCheck(!(setT && setP), b->comm, PETSC_ERR_USER_INPUT, "option -%spressure: group %s has -%straction too; give one of them", lprefix, L->group, lprefix);
   PetscCheck(!setT || nt % 2 == 0, b->comm, PETSC_ERR_USER_INPUT, "option -%straction: give two components tx,ty, got %" PetscInt_FMT, lprefix, nt);
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s%s", lprefix, setT ? "traction" : "pressure"));
-  if (setT) PetscCall(BodyStagedValues(b, opt, nt, 2, vt, 2, &L->stageTraction[0][0]));
+  if (setT) PetscCall(BodyStagedValues(b, opt, nt, 2, vt, 3, &L->stageTraction[0][0]));
   else PetscCall(BodyStagedValues(b, opt, np, 1, vp, 1, L->stagePressure));
   L->traction[0] = L->stageTraction[b->nstages - 1][0]; /* the last stage's, until the solve sets another */
   L->traction[1] = L->stageTraction[b->nstages - 1][1];

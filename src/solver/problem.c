@@ -584,6 +584,21 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
   PetscFunctionReturn(0);
 }
 
+/* A scene's bodies are all 2D (a rigid body's curves included) or all 3D,
+   and its contact pairs 2D. */
+static PetscErrorCode ProblemCheckDimensions(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 1; i < p->nbodies; ++i) {
+    const Body a = p->bodies[0], b = p->bodies[i];
+    const PetscInt da = a->rigid ? 2 : a->dim, db = b->rigid ? 2 : b->dim;
+    PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", a->name, da, a->rigid ? "rigid: curves" : a->msh, b->name, db, b->rigid ? "rigid: curves" : b->msh);
+  }
+  for (PetscInt t = 0; t < p->nterms; ++t)
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || p->bodies[i]->rigid || p->bodies[i]->dim == 2, p->comm, PETSC_ERR_SUP, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, p->bodies[i]->name);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ProblemSetUp(Problem p)
 {
   PetscInt    nloc = 0;
@@ -597,6 +612,7 @@ PetscErrorCode ProblemSetUp(Problem p)
     for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
     PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
   }
+  PetscCall(ProblemCheckDimensions(p));
   PetscCall(PetscLogStagePush(contactLog.setup));
   PetscCall(ProblemCheckSupports(p));
   PetscCall(ProblemCollectControls(p));
