@@ -25,6 +25,8 @@ int ContactMakeDirs(const char dir[]);
 void ContactJSONReal(FILE *fp, PetscReal v);
 /* sep "key": v, and sep "key": [v0, v1] (json.c). */
 void ContactJSONKeyReal(FILE *fp, const char sep[], const char key[], PetscReal v);
+/* key: [v0, ..., v(n-1)] */
+void ContactJSONKeyVector(FILE *, const char sep[], const char key[], PetscInt n, const PetscReal v[]);
 void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const PetscReal v[2]);
 
 /* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */

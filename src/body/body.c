@@ -429,6 +429,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(DMSetField(b->dm, 0, NULL, (PetscObject)b->fe));
   PetscCall(DMCreateDS(b->dm));
   PetscCall(DMGetDS(b->dm, &ds));
+  PetscCheck(!b->hasExact || (b->exact.dim == 3) == (b->dim == 3), b->comm, PETSC_ERR_USER_INPUT, "option -%s_exact_params: %" PetscInt_FMT " parameters, a %s solution, for a %" PetscInt_FMT "D body (mesh %s)", b->name, b->exact.nparams, b->exact.dim == 3 ? "3D" : "2D", b->dim, b->msh);
   PetscCall(BodyConditionsSetUp(b));              /* the scene's Dirichlet conditions */
   if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
   if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
@@ -739,7 +740,7 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
   for (PetscInt i = 0; i < b->nbc; ++i) {
     BodyBC   *bc = &b->bc[i];
     IS        is;
-    PetscReal r[2] = {0, 0};
+    PetscReal r[3] = {0, 0, 0};
 
     PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
     if (is) {
@@ -757,7 +758,7 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
       PetscCall(ISRestoreIndices(is, &pts));
       PetscCall(ISDestroy(&is));
     }
-    PetscCall(MPIU_Allreduce(r, bc->reaction, 2, MPIU_REAL, MPIU_SUM, b->comm));
+    PetscCall(MPIU_Allreduce(r, bc->reaction, b->dim, MPIU_REAL, MPIU_SUM, b->comm));
   }
   PetscCall(VecRestoreArrayRead(Gl, &g));
   PetscFunctionReturn(0);

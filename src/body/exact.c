@@ -3,7 +3,9 @@
 
    affine: u = (p0 + p1 x + p2 y, p3 + p4 x + p5 y). Constant strain, so
            f = -div sigma = 0 and the strain energy is W(eps) times the area:
-           the patch test. grad u = [[p1, p2], [p4, p5]].
+           the patch test. grad u = [[p1, p2], [p4, p5]]. With 12
+           parameters, the 3D map u_i = p[4i] + p[4i+1] x + p[4i+2] y +
+           p[4i+3] z (a 3D body's: grad u[i*3+j] = p[4i+1+j]), f = 0 again.
    trig:   u = A (sin(k x) cos(k y), cos(k x) sin(k y)), params {A, k}.
            div u = 2 A k cos(k x) cos(k y), Laplacian u = -2 k^2 u and
            grad div u = -2 k^2 u, so
@@ -44,6 +46,30 @@ static void AffineDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
   du[1] = p[2];
   du[2] = p[4];
   du[3] = p[5];
+}
+
+static void AffineU3(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  for (PetscInt i = 0; i < 3; ++i) u[i] = p[4 * i] + p[4 * i + 1] * x[0] + p[4 * i + 2] * x[1] + p[4 * i + 3] * x[2];
+}
+
+static void AffineDU3(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  (void)x;
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) du[i * 3 + j] = p[4 * i + 1 + j];
+}
+
+static void ZeroF3(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
+{
+  (void)p; (void)lambda; (void)mu; (void)x;
+  f[0] = f[1] = f[2] = 0.0;
+}
+
+static void ZeroD2U3(const PetscReal p[], const PetscReal x[], PetscReal d2u[])
+{
+  (void)p; (void)x;
+  for (PetscInt k = 0; k < 27; ++k) d2u[k] = 0.0;
 }
 
 static void ZeroF(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
@@ -130,7 +156,15 @@ static PetscErrorCode ExactSetLame(ExactSolution *e)
 static PetscErrorCode ExactSetAffine(ExactSolution *e)
 {
   PetscFunctionBeginUser;
-  PetscCheck(e->nparams == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution affine needs 6 parameters (u0, dux/dx, dux/dy, v0, duy/dx, duy/dy), got %" PetscInt_FMT, e->nparams);
+  PetscCheck(e->nparams == 6 || e->nparams == 12, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution affine needs 6 parameters (u0, dux/dx, dux/dy, v0, duy/dx, duy/dy) in 2D or 12 in 3D (u0, dux/dx, dux/dy, dux/dz, v0, ..., w0, ...), got %" PetscInt_FMT, e->nparams);
+  if (e->nparams == 12) {
+    e->u   = AffineU3;
+    e->du  = AffineDU3;
+    e->d2u = ZeroD2U3;
+    e->f   = ZeroF3;
+    e->dim = 3;
+    PetscFunctionReturn(0);
+  }
   e->u   = AffineU;
   e->du  = AffineDU;
   e->d2u = ZeroD2U;

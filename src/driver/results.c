@@ -363,6 +363,18 @@ static PetscErrorCode JSONReactions(FILE *fp, Problem p)
   PetscReal R[2 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
 
   PetscFunctionBeginUser;
+  if (!p->bodies[0]->rigid && p->bodies[0]->dim == 3) { /* a 3D scene's: three components each */
+    fprintf(fp, ",\n  \"reactions\": {");
+    for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
+      for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, ++k) {
+        char key[2 * CONTACT_NAME_LEN + 2];
+        PetscCall(PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group));
+        fprintf(fp, "%s", k ? "," : "");
+        ContactJSONKeyVector(fp, "\n    ", key, 3, p->bodies[i]->bc[j].reaction);
+      }
+    fprintf(fp, "\n  }");
+    PetscFunctionReturn(0);
+  }
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 2) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 2));
   JSONReactionSet(fp, p, ",\n  ", "\n    ", "\n  ", R);
@@ -492,7 +504,7 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
       fprintf(fp, "}");
       continue;
     }
-    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->dim == 3 ? (b->simplex ? "Tet10" : "Hex27") : (b->simplex ? "Tri6" : "Quad9"));
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
     fprintf(fp, ", \"material\": \"%s\"", b->mat->name);
