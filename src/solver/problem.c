@@ -595,7 +595,7 @@ static PetscErrorCode ProblemCheckDimensions(Problem p)
     PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", a->name, da, a->rigid ? "rigid: curves" : a->msh, b->name, db, b->rigid ? "rigid: curves" : b->msh);
   }
   for (PetscInt t = 0; t < p->nterms; ++t)
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || p->bodies[i]->rigid || p->bodies[i]->dim == 2, p->comm, PETSC_ERR_SUP, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, p->bodies[i]->name);
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || p->bodies[i]->rigid || p->bodies[i]->dim == 2, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, p->bodies[i]->name);
   PetscFunctionReturn(0);
 }
 

@@ -3,12 +3,14 @@
 // skew (0: the box), so that its faces are not plane and its cells are
 // distorted. Groups: the faces xmin, xmax, ymin, ymax, zmin, zmax (of the
 // undistorted box's naming), the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): h, L, skew, hex, n.
+// Parameters (gmsh -setnumber NAME VALUE): h, L, skew, hex, n, order (2;
+// 1 for the first-order mesh a test refuses).
 If (!Exists(h)) h = 0.25; EndIf
 If (!Exists(L)) L = 1; EndIf
 If (!Exists(skew)) skew = 0; EndIf
 If (!Exists(hex)) hex = 0; EndIf
 If (!Exists(n)) n = 3; EndIf
+If (!Exists(order)) order = 2; EndIf
 
 s = skew * L;
 Point(1) = {0, 0, 0, h};
@@ -44,6 +46,6 @@ Physical Surface("ymax") = {4};
 Physical Surface("xmin") = {5};
 Physical Surface("xmax") = {6};
 Physical Volume("body") = {1};
-Mesh.ElementOrder = 2;
+Mesh.ElementOrder = order;
 Mesh.SecondOrderIncomplete = 0;
 Mesh.MshFileVersion = 2.2;
