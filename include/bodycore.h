@@ -31,6 +31,7 @@ typedef struct {
 typedef struct {
   char      group[CONTACT_NAME_LEN];
   PetscBool isPressure;
+  PetscInt  ncomp; /* the traction's components a stage: 2 or 3, the body's dimension (checked once the mesh gives it) */
   PetscReal traction[3], pressure;
   PetscReal force[3]; /* its resultant at the active stage's end, summed over ranks (BodyLoadsSetUp) */
   PetscReal forceFrom[3]; /* its resultant at the active stage's start */

@@ -573,7 +573,7 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
     const Body b = p->bodies[i];
     for (PetscInt l = 0; l < b->nload; ++l)
       for (PetscInt st = 0; st < b->nstages; ++st)
-        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0) *loaded = PETSC_TRUE;
+        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0 || b->load[l].stageTraction[st][2] != 0) *loaded = PETSC_TRUE;
     for (PetscInt j = 0; j < b->nbc; ++j) {
       if (b->bc[j].exact) *loaded = PETSC_TRUE;
       for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
