@@ -110,15 +110,35 @@ static PetscErrorCode BodyCountFreeRigidModes3D(Body b, PetscInt *nfree)
 }
 
 /* The body's rigid motions (translations in x and y, the rotation about the
-   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
-   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
-   local parts of three joined vectors. */
-PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
+   origin u = (-y, x); in 3D the three translations and the rotations e_k x
+   x about the axes) at the unconstrained dofs this rank owns in the joined
+   vector (rows rstart..rend of l2b's numbering), added into modes[0..2]
+   (modes[0..5] in 3D), the local parts of joined vectors. */
+PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[])
 {
   PetscSection s;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
+  if (b->dim == 3) {
+    for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+      PetscInt         dof, off;
+      const PetscReal *x = &b->xpoint[3 * (p - b->pStart)];
+
+      PetscCall(PetscSectionGetDof(s, p, &dof));
+      PetscCall(PetscSectionGetOffset(s, p, &off));
+      for (PetscInt d = 0; d < PetscMin(dof, 3); ++d) {
+        const PetscInt g = b->l2b[off + d];
+        if (g < rstart || g >= rend) continue;
+        modes[d][g - rstart] += 1.0;
+        /* (e_k x x)_d for k = 0, 1, 2 */
+        modes[3][g - rstart] += d == 1 ? -x[2] : d == 2 ? x[1] : 0.0;
+        modes[4][g - rstart] += d == 0 ? x[2] : d == 2 ? -x[0] : 0.0;
+        modes[5][g - rstart] += d == 0 ? -x[1] : d == 1 ? x[0] : 0.0;
+      }
+    }
+    PetscFunctionReturn(0);
+  }
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
     PetscInt        dof, off;
     const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
