@@ -148,8 +148,7 @@ static PetscReal BodyStrainAt(Body b, const PetscScalar ua[], PetscInt c, PetscI
   ElementPointGradient(b, c, iq, u, NULL, H);
   for (PetscInt P = 0; P < 3; ++P)
     for (PetscInt Q = 0; Q < 3; ++Q) {
-      const PetscReal hh = H[P] * H[Q] + H[3 + P] * H[3 + Q] + H[6 + P] * H[6 + Q];
-      E[P * 3 + Q]       = P == Q ? H[P * 4] + 0.5 * hh : 0.5 * (H[P * 3 + Q] + H[Q * 3 + P] + hh);
+      E[P * 3 + Q] = P == Q ? H[P * 4] + 0.5 * (H[P] * H[P] + H[3 + P] * H[3 + P] + H[6 + P] * H[6 + P]) : 0.5 * (H[P * 3 + Q] + H[Q * 3 + P] + H[P] * H[Q] + H[3 + P] * H[3 + Q] + H[6 + P] * H[6 + Q]);
     }
   return SymmetricMaxAbsEigenvalue(E);
 }
