@@ -12,6 +12,7 @@
 #include "mshcheck.h"
 #include "partition.h"
 #include "options.h"
+#include "element.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
 {
@@ -465,31 +466,6 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
   PetscFunctionReturn(0);
 }
 
-/* The exact solution's body force at x, f = -div P(F(u)), times the load
-   factor (a load, as the Dirichlet values it goes with): its own (linear
-   elasticity's) for a material of constant tangent, else from the
-   material's tangent at grad u and the solution's second derivatives,
-   f_i = -A_iJkL d2u_k/dx_J dx_L (plane strain). */
-static void BodyExactForce(Body b, const PetscReal x[], PetscReal f[])
-{
-  PetscReal du[4], d2u[8], A[16], a3[4], a33;
-
-  if (b->mat->constantTangent) b->exact.f(b->exact.params, b->param[0], b->param[1], x, f);
-  else {
-    b->exact.du(b->exact.params, x, du);
-    b->exact.d2u(b->exact.params, x, d2u);
-    b->mat->moduli(b->param, du, 0.0, A, a3, &a33);
-    for (PetscInt i = 0; i < 2; ++i) {
-      f[i] = 0.0;
-      for (PetscInt J = 0; J < 2; ++J)
-        for (PetscInt k = 0; k < 2; ++k)
-          for (PetscInt L = 0; L < 2; ++L) f[i] -= A[((i * 2 + J) * 2 + k) * 2 + L] * d2u[(k * 2 + J) * 2 + L];
-    }
-  }
-  f[0] *= b->loadFactor;
-  f[1] *= b->loadFactor;
-}
-
 /* Pi_b(u) = int W(grad u) dA - int f . u dA - (the loads' f) . u (loads.c)
    and its gradient, added into Gl, W the body's material's. Where the
    material is inverted (J <= 0 at a quadrature point), Pi_b is +inf and the
@@ -500,7 +476,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   const PetscScalar *x;
   PetscScalar       *g;
   PetscReal          e = 0.0;
-  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscInt     nb = b->nb, nq = b->nq, dim = b->dim;
   PetscBool          inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -514,61 +490,17 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecGetArray(Gl, &g));
   for (PetscInt c = 0; c < b->ncells && !inverted; ++c) {
     const PetscInt *dof = &b->cdof[c * nb];
-    PetscReal       u[9][2], ge[9][2];
+    PetscReal       u[ELEMENT_MAX_DOFS], ge[ELEMENT_MAX_DOFS];
+    PetscInt        iq;
 
-    for (PetscInt a = 0; a < nb; ++a) {
-      u[a][0]  = PetscRealPart(x[dof[a]]);
-      u[a][1]  = PetscRealPart(x[dof[a] + 1]);
-      ge[a][0] = ge[a][1] = 0.0;
+    ElementGather(b, c, x, u);
+    if (!ElementEnergyGradient(b, c, u, &e, ge, &iq)) {
+      inverted         = PETSC_TRUE;
+      b->invertedAt[0] = b->xq[(c * nq + iq) * dim];
+      b->invertedAt[1] = b->xq[(c * nq + iq) * dim + 1];
     }
-    for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
-      const PetscReal  w  = b->wdetJ[c * nq + iq];
-      const PetscReal *B  = &b->B[iq * nb];
-      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4], e3 = 0.0, s3r = 0.0, s3, r = 0.0;
-
-      for (PetscInt a = 0; a < nb; ++a) {
-        gu[0] += u[a][0] * dN[2 * a];
-        gu[1] += u[a][0] * dN[2 * a + 1];
-        gu[2] += u[a][1] * dN[2 * a];
-        gu[3] += u[a][1] * dN[2 * a + 1];
-      }
-      if (b->axisym) { /* the hoop strain u_r / r, at a quadrature point (r > 0) */
-        PetscReal ur = 0.0;
-        r = b->xq[(c * nq + iq) * 2];
-        for (PetscInt a = 0; a < nb; ++a) ur += B[a] * u[a][0];
-        e3 = ElasticityHoopStrain(ur, gu[0], r);
-      }
-      if (!b->mat->energy(b->param, gu, e3, &W, s, &s3)) {
-        inverted         = PETSC_TRUE;
-        b->invertedAt[0] = b->xq[(c * nq + iq) * 2];
-        b->invertedAt[1] = b->xq[(c * nq + iq) * 2 + 1];
-        break;
-      }
-      if (b->axisym) s3r = s3 / r;
-      e += w * W;
-      for (PetscInt a = 0; a < nb; ++a) {
-        ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1] + s3r * B[a]);
-        ge[a][1] += w * (s[2] * dN[2 * a] + s[3] * dN[2 * a + 1]);
-      }
-      if (b->hasExact) {
-        PetscReal f[2], uq[2] = {0, 0};
-        BodyExactForce(b, &b->xq[(c * nq + iq) * 2], f);
-        for (PetscInt a = 0; a < nb; ++a) {
-          uq[0] += B[a] * u[a][0];
-          uq[1] += B[a] * u[a][1];
-        }
-        e -= w * (f[0] * uq[0] + f[1] * uq[1]);
-        for (PetscInt a = 0; a < nb; ++a) {
-          ge[a][0] -= w * f[0] * B[a];
-          ge[a][1] -= w * f[1] * B[a];
-        }
-      }
-    }
-    for (PetscInt a = 0; a < nb; ++a) {
-      g[dof[a]] += ge[a][0];
-      g[dof[a] + 1] += ge[a][1];
-    }
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i) g[dof[a] + i] += ge[a * dim + i];
   }
   PetscCall(BodyLoadsAddEnergyGradient(b, x, &e, g));
   PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -608,61 +540,35 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   PetscFunctionReturn(0);
 }
 
-/* Cell c's tangent K_(a i)(b j) = int d2W/du_(a i) du_(b j) dA (n x n, n =
-   2 nb, full), at the displacement x (a local array; NULL: at rest, where
-   every material's tangent is linear elasticity's, int dN_a/dx_k C_ikjl
-   dN_b/dx_l dA). */
-static PetscErrorCode BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
+/* Cell c's tangent K_(a i)(b j) = int d2W/du_(a i) du_(b j) dV (n x n, n =
+   dim nb, full), at the displacement x (a local array; NULL: at rest, where
+   every material's tangent is linear elasticity's): element.c. */
+static void BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
 {
-  const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
-  PetscReal      u[9][2];
+  PetscReal u[ELEMENT_MAX_DOFS];
 
-  PetscFunctionBeginUser;
-  for (PetscInt a = 0; a < nb; ++a) {
-    u[a][0] = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
-    u[a][1] = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
-  }
-  PetscCall(PetscArrayzero(K, n * n));
-  for (PetscInt iq = 0; iq < nq; ++iq) {
-    const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-    const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
-    PetscReal        gu[4] = {0, 0, 0, 0}, e3 = 0.0, ur = 0.0;
-
-    for (PetscInt a = 0; a < nb && x; ++a) {
-      gu[0] += u[a][0] * dN[2 * a];
-      gu[1] += u[a][0] * dN[2 * a + 1];
-      gu[2] += u[a][1] * dN[2 * a];
-      gu[3] += u[a][1] * dN[2 * a + 1];
-      ur += B[a] * u[a][0];
-    }
-    if (r > 0) e3 = ElasticityHoopStrain(ur, gu[0], r);
-    b->mat->tangent(b->param, gu, e3, nb, w, dN, B, r, K);
-  }
-  for (PetscInt a = 0; a < nb; ++a)
-    for (PetscInt i = 0; i < 2; ++i)
-      for (PetscInt bb = a + 1; bb < nb; ++bb)
-        for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
-  PetscFunctionReturn(0);
+  if (x) ElementGather(b, c, x, u);
+  ElementTangent(b, c, x ? u : NULL, K);
 }
 
 /* The tangent over this rank's cells at the displacement x (as above), added
    into H at rows and columns map[local dof] (negative: left out). */
 static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], const PetscInt map[], Mat H)
 {
-  const PetscInt nb = b->nb, n = 2 * nb;
-  PetscScalar    K[18 * 18];
-  PetscInt       idx[18];
+  const PetscInt dim = b->dim, nb = b->nb, n = dim * nb;
+  PetscScalar   *K;
+  PetscInt      *idx;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
+  PetscCall(PetscMalloc2(n * n, &K, n, &idx));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    for (PetscInt a = 0; a < nb; ++a) {
-      idx[2 * a]     = map[b->cdof[c * nb + a]];
-      idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
-    }
-    PetscCall(BodyCellTangent(b, c, x, K));
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i) idx[dim * a + i] = map[b->cdof[c * nb + a] + i];
+    BodyCellTangent(b, c, x, K);
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
+  PetscCall(PetscFree2(K, idx));
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -695,9 +601,9 @@ PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
    tangents. Like a gradient, Yl holds this rank's cells' part alone. */
 PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
 {
-  const PetscInt     nb = b->nb, n = 2 * nb;
+  const PetscInt     dim = b->dim, nb = b->nb, n = dim * nb;
   const PetscScalar *x = NULL, *e;
-  PetscScalar       *y, K[18 * 18];
+  PetscScalar       *y, *K;
 
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(Yl));
@@ -705,17 +611,19 @@ PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
   if (Xl && !b->mat->constantTangent) PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArrayRead(El, &e));
   PetscCall(VecGetArray(Yl, &y));
+  PetscCall(PetscMalloc1(n * n, &K));
   for (PetscInt c = 0; c < b->ncells; ++c) {
     PetscBool any = PETSC_FALSE;
-    for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / 2] + a % 2] != 0.0);
+    for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / dim] + a % dim] != 0.0);
     if (!any) continue;
-    PetscCall(BodyCellTangent(b, c, x, K));
+    BodyCellTangent(b, c, x, K);
     for (PetscInt i = 0; i < n; ++i) {
       PetscScalar s = 0;
-      for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / 2] + j % 2];
-      y[b->cdof[c * nb + i / 2] + i % 2] += s;
+      for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / dim] + j % dim];
+      y[b->cdof[c * nb + i / dim] + i % dim] += s;
     }
   }
+  PetscCall(PetscFree(K));
   PetscCall(VecRestoreArray(Yl, &y));
   PetscCall(VecRestoreArrayRead(El, &e));
   if (x) PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -775,54 +683,53 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
    The a priori estimates (Ciarlet, ch. 3-4; isoparametric cells keep the rates)
    give the orders on the right: the energy norm and the stress error are one
    order below the L2 error. */
-static void StressSquared(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal *s2)
+static void StressSquared(const PetscReal param[], const PetscReal H[], PetscReal *s2)
 {
-  PetscReal s[4];
+  PetscReal s[9];
 
-  ElasticityStress(param, gu, e3, s);
-  *s2 = PetscSqr(s[0]) + PetscSqr(s[3]) + PetscSqr(ElasticityStress33(param, gu, e3)) + 2.0 * PetscSqr(s[1]);
+  ElasticityStress(param, H, s);
+  *s2 = PetscSqr(s[0]) + PetscSqr(s[4]) + PetscSqr(s[8]) + 2.0 * PetscSqr(s[1]) + 2.0 * PetscSqr(s[2]) + 2.0 * PetscSqr(s[5]);
 }
 
 PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
 {
   const PetscScalar *x;
   PetscReal          loc[6] = {0, 0, 0, 0, 0, 0}, glob[6];
-  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscInt     dim = b->dim, nq = b->nq;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(E, sizeof(*E)));
   if (!b->hasExact || b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[ELEMENT_MAX_DOFS];
+
+    ElementGather(b, c, x, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *B = &b->B[iq * nb], *dN = &b->dNdx[(c * nq + iq) * nb * 2], *xq = &b->xq[(c * nq + iq) * 2];
-      const PetscReal  w = b->wdetJ[c * nq + iq];
-      PetscReal        uh[2] = {0, 0}, ue[2], gh[4] = {0, 0, 0, 0}, ge[4], de[4], W, s2, e3e = 0.0, e3d = 0.0;
-      for (PetscInt a = 0; a < nb; ++a) {
-        const PetscReal ux = PetscRealPart(x[b->cdof[c * nb + a]]), uy = PetscRealPart(x[b->cdof[c * nb + a] + 1]);
-        uh[0] += B[a] * ux;
-        uh[1] += B[a] * uy;
-        gh[0] += ux * dN[2 * a];
-        gh[1] += ux * dN[2 * a + 1];
-        gh[2] += uy * dN[2 * a];
-        gh[3] += uy * dN[2 * a + 1];
-      }
+      const PetscReal *xq = &b->xq[(c * nq + iq) * dim];
+      const PetscReal  w  = b->wdetJ[c * nq + iq];
+      PetscReal        uh[3], ue[3], du[9], Hh[9], He[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, Hd[9], W, s2, d2 = 0.0, n2 = 0.0;
+
+      ElementPointGradient(b, c, iq, u, uh, Hh);
       b->exact.u(b->exact.params, xq, ue);
-      b->exact.du(b->exact.params, xq, ge);
-      for (PetscInt j = 0; j < 4; ++j) de[j] = gh[j] - ge[j];
-      if (b->axisym) { /* the hoop strains, at a quadrature point (r > 0) */
-        e3e = ue[0] / xq[0];
-        e3d = uh[0] / xq[0] - e3e;
+      b->exact.du(b->exact.params, xq, du);
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt J = 0; J < dim; ++J) He[i * 3 + J] = du[i * dim + J];
+      if (b->axisym) He[8] = ue[0] / xq[0]; /* the hoop strains, at a quadrature point (r > 0) */
+      for (PetscInt k = 0; k < 9; ++k) Hd[k] = Hh[k] - He[k];
+      for (PetscInt i = 0; i < dim; ++i) {
+        d2 += PetscSqr(uh[i] - ue[i]);
+        n2 += PetscSqr(ue[i]);
       }
-      loc[0] += w * (PetscSqr(uh[0] - ue[0]) + PetscSqr(uh[1] - ue[1]));
-      loc[1] += w * (PetscSqr(ue[0]) + PetscSqr(ue[1]));
-      ElasticityEnergyDensity(b->param, de, e3d, &W);
+      loc[0] += w * d2;
+      loc[1] += w * n2;
+      ElasticityEnergyDensity(b->param, Hd, &W);
       loc[2] += w * 2.0 * W;
-      ElasticityEnergyDensity(b->param, ge, e3e, &W);
+      ElasticityEnergyDensity(b->param, He, &W);
       loc[3] += w * 2.0 * W;
-      StressSquared(b->param, de, e3d, &s2);
+      StressSquared(b->param, Hd, &s2);
       loc[4] += w * s2;
-      StressSquared(b->param, ge, e3e, &s2);
+      StressSquared(b->param, He, &s2);
       loc[5] += w * s2;
     }
   }
