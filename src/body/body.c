@@ -6,6 +6,7 @@
    take what they share from bodycore.c and rigid.c, below them all. */
 #include "support.h"
 #include "body.h"
+#include "simplexcoords.h"
 #include "anchors.h"
 #include "axis.h"
 #include "meshgen.h"
@@ -195,6 +196,7 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
   PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes %s", b->name, b->msh, b->dim == 3 ? "tetrahedra and hexahedra" : "triangles and quadrilaterals");
   b->simplex      = gTypes[0] ? PETSC_TRUE : PETSC_FALSE;
   b->ncellsGlobal = gTypes[0] + gTypes[1];
+  if (b->dim == 3 && b->simplex) PetscCall(MeshSimplexCoordinatesInCellOrder(b->dm, b->name, b->msh));
   PetscCall(DMPlexDistributeWith(&b->dm, (PartitionType)partitioner, view, b->name));
   PetscCall(DMViewFromOptions(b->dm, NULL, "-dm_view"));
   PetscFunctionReturn(0);

@@ -441,7 +441,7 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
 }
 
 /* Preallocates the elastic stiffness K (elastic pattern plus the surface
-   block): every cell gives each of its rows 2 nb columns (an upper bound, the
+   block): every cell gives each of its rows dim nb columns (an upper bound, the
    excess squeezed out at assembly), and each surface row the surface's
    columns. On several ranks the columns of a row are counted apart by
    whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
@@ -470,11 +470,11 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body b = p->bodies[i];
     for (PetscInt c = 0; c < b->ncells; ++c) {
-      PetscInt    idx[18], own[18], n = 0;
+      PetscInt    idx[81], own[81], n = 0;
       PetscMPIInt o;
 
       for (PetscInt a = 0; a < b->nb; ++a)
-        for (PetscInt d = 0; d < 2; ++d) {
+        for (PetscInt d = 0; d < b->dim; ++d) {
           const PetscInt g = b->l2b[b->cdof[c * b->nb + a] + d];
           if (g < 0) continue;
           if (size > 1) PetscCall(PetscLayoutFindOwner(layout, g, &o));
