@@ -5,9 +5,10 @@ The scene is our own block (tests/meshes/solid/block.geo): the box [0, 1]^3
 whose corners `skew` moves, so that its faces are not plane and its cells
 are distorted, meshed by Tet10 (unstructured) or Hex27 (transfinite, n cells
 an edge); its faces are the physical surfaces xmin, ..., zmax."""
+import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import figure, run_contact
 
 GEO = "tests/meshes/solid/block.geo"
 FACES = ("xmin", "xmax", "ymin", "ymax", "zmin", "zmax")
@@ -85,3 +86,145 @@ def test_contact_refused(tmp_path):
     args += block(name="top")[2:-2] + ["-top_bc", "xmax", "-contact_pairs", "p", "-contact_p_surfaces", "blk:zmax,top:zmin"]
     line = refused(args, tmp_path)
     assert "contact pair p" in line and "3D" in line
+
+
+# ---------------------------------------------------------------- solved
+
+E, NU = 1000.0, 0.3
+LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+CORNERS = None  # the block's corners at skew (block.geo's)
+
+
+def corners(skew, L=1.0):
+    s = skew * L
+    return np.array([[0, 0, 0], [L + 0.1 * s, 0.05 * s, 0], [L + 0.2 * s, L - 0.1 * s, 0.1 * s], [-0.05 * s, L, 0],
+                     [0.1 * s, 0, L + 0.05 * s], [L, -0.1 * s, L], [L + 0.15 * s, L - 0.1 * s, L + 0.2 * s], [0, L + 0.1 * s, L - 0.1 * s]])
+
+
+def block_volume(skew):
+    """The block's volume: its faces are the bilinear patches of its straight
+    edges, so it is the trilinear map's image of the unit cube, whose
+    Jacobian (degree 2 in each variable) 2 Gauss points a direction
+    integrate exactly."""
+    X = corners(skew)
+    # trilinear corner order (i, j, k) -> block.geo's points
+    at = {(0, 0, 0): 0, (1, 0, 0): 1, (1, 1, 0): 2, (0, 1, 0): 3, (0, 0, 1): 4, (1, 0, 1): 5, (1, 1, 1): 6, (0, 1, 1): 7}
+    g = [0.5 - 0.5 / np.sqrt(3), 0.5 + 0.5 / np.sqrt(3)]
+    V = 0.0
+    for a in g:
+        for b in g:
+            for c in g:
+                J = np.zeros((3, 3))
+                for (i, j, k), n in at.items():
+                    wi, wj, wk = (a if i else 1 - a), (b if j else 1 - b), (c if k else 1 - c)
+                    dw = [(1 if i else -1) * wj * wk, wi * (1 if j else -1) * wk, wi * wj * (1 if k else -1)]
+                    J += np.outer(X[n], dw)
+                V += 0.125 * np.linalg.det(J)
+    return V
+
+
+def energy_density(G, material):
+    """W at the displacement gradient G: linear elasticity's or the
+    neo-Hookean W = mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2."""
+    if material == "linear":
+        e = 0.5 * (G + G.T)
+        return 0.5 * LAM * np.trace(e) ** 2 + MU * np.sum(e * e)
+    F = np.eye(3) + G
+    J = np.linalg.det(F)
+    return 0.5 * MU * (np.sum(F * F) - 3 - 2 * np.log(J)) + 0.5 * LAM * np.log(J) ** 2
+
+
+def affine_run(tmp_path, hexa, material, c, G, skew=1.0, h=0.5, n=2, ranks=1, name="affine"):
+    """The block with u = c + G x imposed on its whole boundary (-blk_exact
+    affine), solved to a tight stop."""
+    params = ",".join(repr(float(v)) for i in range(3) for v in [c[i]] + list(G[i]))
+    args = block(hexa, skew, h, n) + ["-blk_material", material, "-blk_bc", ",".join(FACES), "-blk_exact", "affine",
+                                      "-blk_exact_params", params, "-tao_gttol", "1e-14", "-tao_gatol", "1e-11"]
+    args += [f"-blk_bc_{f}_exact" for f in FACES]
+    return run_contact(args + ["-output", "none"], tmp_path, ranks=ranks, name=name).summary
+
+
+G_SMALL = np.array([[0.02, -0.01, 0.03], [0.01, 0.015, -0.02], [-0.01, 0.01, 0.005]])
+G_LARGE = 10 * G_SMALL
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
+@pytest.mark.parametrize("material", ["linear", "neohookean"])
+def test_affine_patch(hexa, material, tmp_path):
+    """An affine map imposed on the whole boundary of the distorted block
+    (skew 1: no face plane), Tet10 and Hex27: the finite-element space holds
+    it, so the solution is it to round-off, and the energy is W(F) times the
+    volume (W computed here; the neo-Hookean at a finite strain, G of 0.1 to
+    0.3, J = 1.06). Measured: `l2` = 4.4e-16 to 5.1e-16 (relative L2 error),
+    `energy` = 1.1e-16 to 1.0e-15 (relative), each bound 1e-11 (the stop's
+    1e-11 of the gradient, over a stiffness of about E h)."""
+    G = G_SMALL if material == "linear" else G_LARGE
+    s = affine_run(tmp_path, hexa, material, [0.01, 0.0, 0.02], G)
+    b = s["bodies"]["blk"]
+    assert b["cell_type"] == ("Hex27" if hexa else "Tet10")
+    assert figure("l2", b["l2_error"] / b["l2_norm"]) <= 1e-11
+    W = energy_density(G, material) * block_volume(1.0)
+    assert figure("energy", abs(b["energy"] / W - 1)) <= 1e-11
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
+def test_rotation(hexa, tmp_path):
+    """A rigid rotation of 60 degrees about the skew axis (1, 2, 3) imposed
+    (u = (Q - I) x): the neo-Hookean energy and stress are zero (frame
+    invariance). Measured: `energy` = 6.5e-19 to 8.0e-19 (per unit volume,
+    over E), `stress` = 4.1e-15 to 1.5e-14 (L2 norm of the stress, over E),
+    bounds 1e-14 and 1e-12: the round-off of I1 - 3 and ln J at |H| about 1
+    (a few eps times mu), and of P = mu (F - F^-T) + lambda ln J F^-T."""
+    k = np.array([1.0, 2.0, 3.0]) / np.sqrt(14.0)
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    t = np.pi / 3
+    Q = np.eye(3) + np.sin(t) * K + (1 - np.cos(t)) * K @ K
+    s = affine_run(tmp_path, hexa, "neohookean", [0, 0, 0], Q - np.eye(3))
+    b = s["bodies"]["blk"]
+    assert figure("energy", abs(b["energy"]) / block_volume(1.0) / E) <= 1e-14
+    assert figure("stress", b["stress_l2_error"] / E) <= 1e-12
+
+
+def lateral_stretch(l1):
+    """The neo-Hookean block stretched l1 along x, free laterally: the
+    lateral stretch l2 with P22 = mu (l2 - 1/l2) + lambda ln(l1 l2^2) / l2 = 0
+    (bisection), and P11 = mu (l1 - 1/l1) + lambda ln J / l1."""
+    lo, hi = 0.2, 3.0
+    P22 = lambda l2: MU * (l2 - 1 / l2) + LAM * np.log(l1 * l2 * l2) / l2
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if P22(mid) > 0:
+            hi = mid
+        else:
+            lo = mid
+    l2 = 0.5 * (lo + hi)
+    return l2, MU * (l1 - 1 / l1) + LAM * np.log(l1 * l2 * l2) / l1
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
+@pytest.mark.parametrize("l1", [1.5, 0.6])
+def test_uniaxial(hexa, l1, tmp_path):
+    """The unit box (skew 0), neo-Hookean, on rollers (xmin in x, ymin in y,
+    zmin in z), its face xmax moved to the stretch l1 (1.5 and 0.6), free
+    laterally: u = ((l1 - 1) x, (l2 - 1) y, (l2 - 1) z) with l2 from P22 = 0
+    (bisection here), and the reaction at xmax P11 times the reference area
+    1. Measured: `l2` = 4.6e-16 to 3.3e-15 (relative L2 error of u against
+    that field), `reaction` = 2.2e-16 to 2.1e-15 (relative), bounds 1e-10
+    (the stop's 1e-11 of the gradient)."""
+    l2, P11 = lateral_stretch(l1)
+    G = np.diag([l1 - 1, l2 - 1, l2 - 1])
+    params = ",".join(repr(float(v)) for i in range(3) for v in [0.0] + list(G[i]))
+    args = block(hexa, 0.0) + ["-blk_material", "neohookean", "-blk_bc", "xmin,ymin,zmin,xmax",
+                                "-blk_bc_xmin_components", "x", "-blk_bc_ymin_components", "y", "-blk_bc_zmin_components", "z",
+                                "-blk_bc_xmax_components", "x", "-blk_bc_xmax_values", repr(l1 - 1),
+                                "-blk_exact", "affine", "-blk_exact_params", params, "-tao_gttol", "1e-14", "-tao_gatol", "1e-11",
+                                "-load_steps", "4", "-output", "none"]
+    s = run_contact(args, tmp_path).summary
+    b = s["bodies"]["blk"]
+    assert figure("l2", b["l2_error"] / b["l2_norm"]) <= 1e-10
+    R = s["reactions"]["blk:xmax"]
+    assert figure("reaction", abs(R[0] / P11 - 1)) <= 1e-10
+    assert abs(R[1]) <= 1e-10 * abs(P11) and abs(R[2]) <= 1e-10 * abs(P11)
