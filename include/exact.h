@@ -20,5 +20,7 @@ typedef struct {
 
 PetscErrorCode ExactSolutionRegisterAll(void);
 PetscErrorCode ExactSolutionSetType(ExactSolution *, const char[]);
+/* Once the body's dimension is known: trig's 3D form on a 3D body; a solution of the other dimension refused (body: for the message). */
+PetscErrorCode ExactSolutionSetDimension(ExactSolution *, PetscInt dim, const char body[]);
 PetscErrorCode ExactSolutionFinalize(void);
 extern PetscFunctionList ExactSolutionList;

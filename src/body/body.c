@@ -432,7 +432,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(DMSetField(b->dm, 0, NULL, (PetscObject)b->fe));
   PetscCall(DMCreateDS(b->dm));
   PetscCall(DMGetDS(b->dm, &ds));
-  PetscCheck(!b->hasExact || (b->exact.dim == 3) == (b->dim == 3), b->comm, PETSC_ERR_USER_INPUT, "option -%s_exact_params: %" PetscInt_FMT " parameters, a %s solution, for a %" PetscInt_FMT "D body (mesh %s)", b->name, b->exact.nparams, b->exact.dim == 3 ? "3D" : "2D", b->dim, b->msh);
+  if (b->hasExact) PetscCall(ExactSolutionSetDimension(&b->exact, b->dim, b->name));
   PetscCall(BodyConditionsSetUp(b));              /* the scene's Dirichlet conditions */
   if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
   if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */

@@ -19,6 +19,9 @@
            Its second derivatives (d2u) give any material's body force
            f_i = -A_iJkL d2u_k/dx_J dx_L (body.c; A the material's tangent
            at grad u): a manufactured solution at finite strain too.
+           On a 3D body, u_i = A sin(k x_i) prod_(j != i) cos(k x_j), the
+           same {A, k}, f = -((lambda + mu) grad div u + mu Lap u) from
+           its second derivatives.
    lame:   in axisymmetry (x = r, y = z), u = (A r + B / r, C z), params
            {A, B, C}: Lame's thick-walled tube (C = 0: no axial strain) and,
            with B = 0, a cylinder under uniform axial strain C with
@@ -126,6 +129,73 @@ static void TrigF(const PetscReal p[], PetscReal lambda, PetscReal mu, const Pet
   TrigU(p, x, u);
   f[0] = 2.0 * k * k * (lambda + 2.0 * mu) * u[0];
   f[1] = 2.0 * k * k * (lambda + 2.0 * mu) * u[1];
+}
+
+/* The 3D trig solution's factor j of u_i, sin(k x_i) (j = i) or cos(k x_j),
+   differentiated n times. */
+static PetscReal Trig3Factor(PetscReal k, PetscInt i, PetscInt j, const PetscReal x[], PetscInt n)
+{
+  const PetscReal s = PetscSinReal(k * x[j]), c = PetscCosReal(k * x[j]);
+
+  if (i == j) return n == 0 ? s : n == 1 ? k * c : -k * k * s;
+  return n == 0 ? c : n == 1 ? -k * s : -k * k * c;
+}
+
+static void Trig3U(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  for (PetscInt i = 0; i < 3; ++i) u[i] = p[0] * Trig3Factor(p[1], i, 0, x, 0) * Trig3Factor(p[1], i, 1, x, 0) * Trig3Factor(p[1], i, 2, x, 0);
+}
+
+static void Trig3DU(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt J = 0; J < 3; ++J) {
+      du[i * 3 + J] = p[0];
+      for (PetscInt j = 0; j < 3; ++j) du[i * 3 + J] *= Trig3Factor(p[1], i, j, x, j == J);
+    }
+}
+
+static void Trig3D2U(const PetscReal p[], const PetscReal x[], PetscReal d2u[])
+{
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt J = 0; J < 3; ++J)
+      for (PetscInt L = 0; L < 3; ++L) {
+        PetscReal v = p[0];
+        for (PetscInt j = 0; j < 3; ++j) v *= Trig3Factor(p[1], i, j, x, (j == J) + (j == L));
+        d2u[(i * 3 + J) * 3 + L] = v;
+      }
+}
+
+static void Trig3F(const PetscReal p[], PetscReal lambda, PetscReal mu, const PetscReal x[], PetscReal f[])
+{
+  PetscReal d2u[27];
+
+  Trig3D2U(p, x, d2u);
+  for (PetscInt i = 0; i < 3; ++i) {
+    PetscReal graddiv = 0, lap = 0;
+    for (PetscInt k = 0; k < 3; ++k) graddiv += d2u[(k * 3 + k) * 3 + i];
+    for (PetscInt J = 0; J < 3; ++J) lap += d2u[(i * 3 + J) * 3 + J];
+    f[i] = -((lambda + mu) * graddiv + mu * lap);
+  }
+}
+
+PetscErrorCode ExactSolutionSetDimension(ExactSolution *e, PetscInt dim, const char body[])
+{
+  PetscBool trig, lame;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(e->name, "trig", &trig));
+  PetscCall(PetscStrcmp(e->name, "lame", &lame));
+  PetscCheck(dim == 2 || !lame, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -%s_exact: lame is a solution in r-z, and body %s is 3D", body, body);
+  if (trig && dim == 3) {
+    e->u   = Trig3U;
+    e->du  = Trig3DU;
+    e->d2u = Trig3D2U;
+    e->f   = Trig3F;
+    e->dim = 3;
+  }
+  PetscCheck((e->dim == 3) == (dim == 3), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -%s_exact_params: %" PetscInt_FMT " parameters, a %s solution, for a %" PetscInt_FMT "D body", body, e->nparams, e->dim == 3 ? "3D" : "2D", dim);
+  PetscFunctionReturn(0);
 }
 
 static void LameU(const PetscReal p[], const PetscReal x[], PetscReal u[])
