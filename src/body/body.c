@@ -62,7 +62,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain) or neohookean (compressible neo-Hookean, finite strain)", NULL, MaterialList, material, material, sizeof(material), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain or 3D), lame (-axisymmetric), sphere (3D)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
   PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
   PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (the stiffness exact on straight Tri6 cells from 2, on rectangular Quad9 cells from 4: (degree + 2)/2 Gauss points a direction)", NULL, qdeg, &qdeg, NULL));
@@ -115,7 +115,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   if (strcmp(exact, "none")) {
     PetscErrorCode (*set)(ExactSolution *) = NULL;
     PetscCall(PetscFunctionListFind(ExactSolutionList, exact, &set));
-    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame)", prefix, exact);
+    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame, sphere)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
     /* another material's body force comes from the solution's second derivatives (BodyExactForce) */

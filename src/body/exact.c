@@ -31,7 +31,13 @@
            d sigma_rr/dr + (sigma_rr - sigma_thth)/r = 4 mu B/r^3 - 4 mu B/r^3 = 0,
            and the axial one holds with sigma_zz uniform, so f = 0. A
            solution in r-z only (-axisymmetric); affine and trig are
-           plane-strain ones. */
+           plane-strain ones.
+   sphere: on a 3D body, u = (A + B / r^3) x, params {A, B}: Lame's thick
+           hollow sphere, u_r = A r + B / r^2; with inner radius a, outer
+           b and internal pressure p, A = p a^3 (1 - 2 nu) / (E (b^3 - a^3)),
+           B = p a^3 b^3 (1 + nu) / (2 E (b^3 - a^3)). grad u = (A + B/r^3) I
+           - 3 B x x^T / r^5; div u = 3 A is uniform and u is a gradient
+           (curl u = 0), so mu Lap u + (lambda + mu) grad div u = 0: f = 0. */
 #include "exact.h"
 
 PetscFunctionList ExactSolutionList = NULL;
@@ -179,6 +185,33 @@ static void Trig3F(const PetscReal p[], PetscReal lambda, PetscReal mu, const Pe
   }
 }
 
+static void SphereU(const PetscReal p[], const PetscReal x[], PetscReal u[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+
+  for (PetscInt i = 0; i < 3; ++i) u[i] = (p[0] + p[1] / (r * r * r)) * x[i];
+}
+
+static void SphereDU(const PetscReal p[], const PetscReal x[], PetscReal du[])
+{
+  const PetscReal r2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], r = PetscSqrtReal(r2);
+
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) du[i * 3 + j] = (i == j) * (p[0] + p[1] / (r * r2)) - 3.0 * p[1] * x[i] * x[j] / (r2 * r2 * r);
+}
+
+static PetscErrorCode ExactSetSphere(ExactSolution *e)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(e->nparams == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "exact solution sphere needs 2 parameters (A, B: u = (A + B/r^3) x), got %" PetscInt_FMT, e->nparams);
+  e->u   = SphereU;
+  e->du  = SphereDU;
+  e->f   = ZeroF3;
+  e->d2u = NULL;
+  e->dim = 3;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ExactSolutionSetDimension(ExactSolution *e, PetscInt dim, const char body[])
 {
   PetscBool trig, lame;
@@ -260,6 +293,7 @@ PetscErrorCode ExactSolutionRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&ExactSolutionList, "affine", ExactSetAffine));
   PetscCall(PetscFunctionListAdd(&ExactSolutionList, "trig", ExactSetTrig));
   PetscCall(PetscFunctionListAdd(&ExactSolutionList, "lame", ExactSetLame));
+  PetscCall(PetscFunctionListAdd(&ExactSolutionList, "sphere", ExactSetSphere));
   PetscFunctionReturn(0);
 }
 
@@ -269,7 +303,7 @@ PetscErrorCode ExactSolutionSetType(ExactSolution *e, const char name[])
 
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListFind(ExactSolutionList, name, &set));
-  PetscCheck(set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "unknown exact solution '%s' (known: affine, trig, lame)", name);
+  PetscCheck(set, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "unknown exact solution '%s' (known: affine, trig, lame, sphere)", name);
   PetscCall(PetscStrncpy(e->name, name, sizeof(e->name)));
   PetscCall((*set)(e));
   PetscFunctionReturn(0);
