@@ -1,8 +1,12 @@
-/* The element loop, for any dimension dim (2 or 3) and any element of up to
-   ELEMENT_MAX_NODES nodes: the cell cache's basis gradients dNdx[c][q][a][J]
-   = dN_a/dX_J, weights wdetJ (dV: dA, 2 pi r dA, the volume) and
-   quadrature points xq[c][q][dim] (bodycore.h), the material's pointwise
-   kernels of the 3 x 3 displacement gradient H (material.h).
+/* The element loop, written once for any dimension: per cell the nodal
+   displacements, the displacement gradient H at each quadrature point, the
+   material's pointwise kernels of H (material.h), and their contraction with
+   the basis into the cell's energy, gradient and tangent.
+
+   It reads the cell cache (bodycore.h) with stride dim (2 or 3): the basis
+   gradients dNdx[c][q][a][J] = dN_a/dX_J, the weights wdetJ[c][q] (dV: dA,
+   2 pi r dA in axisymmetry, the volume in 3D) and the quadrature points
+   xq[c][q][dim], for any element of up to ELEMENT_MAX_NODES nodes.
 
    At a quadrature point, H_iJ = sum_a u_(a i) dN_a/dX_J for i, J < dim,
    and in axisymmetry (x = r) H_22 = u_r / r = sum_a u_(a 0) N_a / r, so
