@@ -1,7 +1,8 @@
 /* An elastic body: options, mesh (Gmsh -> DMPlex), P2/Q2 displacement with
-   Dirichlet constraints, the per-cell geometry cache and the element loops that
-   evaluate the pointwise kernels of the body's material (material.h:
-   elasticity.c, neohookean.c). It orchestrates the body's
+   Dirichlet constraints, the per-cell geometry cache, and the body's energy,
+   gradient, stiffness and errors, summed over its cells by element.c's loop
+   over the pointwise kernels of its material (material.h: elasticity.c,
+   neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
    take what they share from bodycore.c and rigid.c, below them all. */
 #include "support.h"

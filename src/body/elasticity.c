@@ -22,26 +22,47 @@
 #include "contact.h"
 #include "material.h"
 
+/* The strain's six components e = {xx, yy, zz, xy, xz, yz} and tr. */
+static inline PetscReal Strain(const PetscReal H[], PetscReal e[6])
+{
+  e[0] = H[0];
+  e[1] = H[4];
+  e[2] = H[8];
+  e[3] = 0.5 * (H[1] + H[3]);
+  e[4] = 0.5 * (H[2] + H[6]);
+  e[5] = 0.5 * (H[5] + H[7]);
+  return e[0] + e[1] + e[2];
+}
+
+static inline PetscReal Energy(PetscReal lambda, PetscReal mu, const PetscReal e[6], PetscReal tr)
+{
+  return 0.5 * lambda * tr * tr + mu * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + 2.0 * e[3] * e[3] + 2.0 * e[4] * e[4] + 2.0 * e[5] * e[5]);
+}
+
+static inline void Stress(PetscReal lambda, PetscReal mu, const PetscReal e[6], PetscReal tr, PetscReal sigma[])
+{
+  const PetscReal lt = lambda * tr;
+
+  sigma[0] = lt + 2.0 * mu * e[0];
+  sigma[4] = lt + 2.0 * mu * e[1];
+  sigma[8] = lt + 2.0 * mu * e[2];
+  sigma[1] = sigma[3] = 2.0 * mu * e[3];
+  sigma[2] = sigma[6] = 2.0 * mu * e[4];
+  sigma[5] = sigma[7] = 2.0 * mu * e[5];
+}
+
 void ElasticityEnergyDensity(const PetscReal params[], const PetscReal H[], PetscReal *W)
 {
-  const PetscReal lambda = params[0], mu = params[1];
-  const PetscReal exx = H[0], eyy = H[4], ezz = H[8];
-  const PetscReal exy = 0.5 * (H[1] + H[3]), exz = 0.5 * (H[2] + H[6]), eyz = 0.5 * (H[5] + H[7]);
-  const PetscReal tr = exx + eyy + ezz;
+  PetscReal e[6], tr = Strain(H, e);
 
-  *W = 0.5 * lambda * tr * tr + mu * (exx * exx + eyy * eyy + ezz * ezz + 2.0 * exy * exy + 2.0 * exz * exz + 2.0 * eyz * eyz);
+  *W = Energy(params[0], params[1], e, tr);
 }
 
 void ElasticityStress(const PetscReal params[], const PetscReal H[], PetscReal sigma[])
 {
-  const PetscReal lambda = params[0], mu = params[1];
-  const PetscReal tr = H[0] + H[4] + H[8];
+  PetscReal e[6], tr = Strain(H, e);
 
-  for (PetscInt i = 0; i < 3; ++i)
-    for (PetscInt j = 0; j < 3; ++j) {
-      const PetscReal e = 0.5 * (H[i * 3 + j] + H[j * 3 + i]);
-      sigma[i * 3 + j]  = i == j ? lambda * tr + 2.0 * mu * e : 2.0 * mu * e;
-    }
+  Stress(params[0], params[1], e, tr, sigma);
 }
 
 PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r)
@@ -69,8 +90,10 @@ PetscReal ElasticityVonMises(const PetscReal s[])
 
 static PetscBool LinearEnergy(const PetscReal param[], const PetscReal H[], PetscReal *W, PetscReal P[])
 {
-  ElasticityEnergyDensity(param, H, W);
-  ElasticityStress(param, H, P);
+  PetscReal e[6], tr = Strain(H, e);
+
+  *W = Energy(param[0], param[1], e, tr);
+  Stress(param[0], param[1], e, tr, P);
   return PETSC_TRUE;
 }
 
