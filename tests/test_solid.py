@@ -316,3 +316,25 @@ def test_ranks_agree(tmp_path):
     E1, E2 = one["bodies"]["sh"]["energy"], two["bodies"]["sh"]["energy"]
     figure("dE", abs(E1 - E2) / abs(E1))
     assert abs(E1 - E2) <= one["gradient_norm"] * 1e3 + 1e-13 * abs(E1)
+
+
+def test_three_components(tmp_path):
+    """The options of 2D scenes with three components on the Hex27 box:
+    -load_stages 2 with xmax's values x,y,z a stage and a traction tx,ty,tz on
+    zmax (+1 then -1 in z per unit area, the face's area 1), and a force
+    control of xmax in y (5). Each stage end's reactions balance the
+    traction's resultant (z: -1, then +1, to 1e-12 of it), and the
+    controlled group's reaction is its force (to -force_control_rtol's
+    1e-8 and the stop)."""
+    base = block(True, 0.0) + ["-blk_bc", "xmin,xmax", "-output", "none"]
+    s = run_contact(base + ["-load_stages", "2", "-blk_bc_xmax_values", "0.01,0,0,0.01,0.02,0", "-blk_load", "zmax",
+                            "-blk_load_zmax_traction", "0,0,1,0,0,-1"], tmp_path, name="stages").summary
+    for stage, load in zip(s["load_stages"], (1.0, -1.0)):
+        R = stage["reactions"]
+        assert len(R["blk:xmin"]) == 3
+        assert abs(R["blk:xmin"][2] + R["blk:xmax"][2] + load) <= 1e-12
+    s = run_contact(base + ["-blk_bc_xmax_control", "displacement,force,displacement", "-blk_bc_xmax_values", "0.01,5,0"],
+                    tmp_path, name="control").summary
+    (c,) = s["force_control"]
+    assert c["component"] == "y" and abs(c["reaction"] - 5) <= 1e-7 * 5
+    assert abs(s["reactions"]["blk:xmax"][1] - 5) <= 1e-7 * 5 and abs(s["reactions"]["blk:xmin"][1] + 5) <= 1e-7 * 5
