@@ -186,11 +186,11 @@ static int MeshProbe(char *const argv[], const char geo[], int dim, double s, co
   (void)PetscTime(&t0);
   r = GmshRun(av, log, out, &guard, &tripped);
   if (!r) r = MeshFileCount(out, nodes, elements, &solid);
+  else r = tripped ? 1 : -1;
   if (!r && solid && s > 1) { /* a volume's nodes go as 1/s^3: one more s than the 2D ladder's s^2 */
     *nodes *= s;
     *elements *= s;
   }
-  else r = tripped ? 1 : -1;
   (void)PetscTime(&t1);
   size->probes++;
   size->seconds += t1 - t0;

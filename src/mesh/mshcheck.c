@@ -156,7 +156,8 @@ typedef struct {
   int           *point; /* per point element: node, element number, line */
   const MshType *cellType; /* type of the first 2D element */
   const MshType *solidType; /* type of the first 3D element */
-  long           nsolids, solidTypeLine;
+  long           nsolids, solidTypeLine, capsolids;
+  int           *solid; /* per 3D element: 8 corners (the last 4 -1 on a tetrahedron), element number, line */
   long           offPlaneLine; /* the first node off the plane z = 0 (0: none), at z */
   double         offPlaneZ;
   long           cellTypeLine, endElementsLine;
@@ -654,7 +655,14 @@ static int MshAddElement(MshCheck *c, const MshType *t, long id, const int idx[]
       c->solidTypeLine = c->lineno;
     } else if (t != c->solidType)
       return MshFail(c, "element %ld is a %d-node %s, but the 3D element at line %ld is a %d-node %s; a body has one cell type", id, t->nnodes, t->shape, c->solidTypeLine, c->solidType->nnodes, c->solidType->shape);
-    c->nsolids++;
+    {
+      int *e;
+      if (MshGrow(c, &c->solid, &c->capsolids, c->nsolids, 10)) return 1;
+      e = c->solid + 10 * c->nsolids++;
+      for (int i = 0; i < 8; ++i) e[i] = i < t->nverts ? idx[i] : -1;
+      e[8] = (int)id;
+      e[9] = (int)c->lineno;
+    }
   } else if (t->dim == 2) {
     int *e;
     if (!c->cellType) {
@@ -990,6 +998,57 @@ static int MshReadTrailer(MshCheck *c)
   return r < 0;
 }
 
+/* The key of a face from its corners v[n] (n = 3 or 4): its three least,
+   which name it in a mesh whose faces are not repeated. */
+static uint64_t MshFaceKey(const int v[], int n)
+{
+  int s[4];
+
+  for (int i = 0; i < n; ++i) s[i] = v[i];
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && s[j - 1] > s[j]; --j) {
+      const int t = s[j];
+      s[j]        = s[j - 1];
+      s[j - 1]    = t;
+    }
+  return ((uint64_t)(uint32_t)s[0] * 0x100000001B3ULL ^ (uint64_t)(uint32_t)s[1]) * 0x100000001B3ULL + (uint64_t)(uint32_t)s[2] * 0x9E3779B97F4A7C15ULL + 1;
+}
+
+/* A 3D mesh's topology: no face shared by more than two cells, every 2D
+   element a face of a cell (PETSc's reader finds each 2D element's face
+   among the cells' and stops where there is none). Gmsh's corner order:
+   a tetrahedron's faces are (0,1,2), (0,1,3), (0,2,3), (1,2,3); a
+   hexahedron's, bottom 0-3 and top 4-7, its six sides. */
+static int MshCheckSolids(MshCheck *c)
+{
+  static const int tf[4][4] = {{0, 1, 2, -1}, {0, 1, 3, -1}, {0, 2, 3, -1}, {1, 2, 3, -1}};
+  static const int hf[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  MshHash          faces = {NULL, NULL, 0, 0, 0};
+  int              fail  = 0;
+
+  if (MshHashReserve(&faces, (size_t)(6 * c->nsolids + 16))) return MshFailAt(c, c->endElementsLine, "out of memory");
+  for (long e = 0; e < c->nsolids && !fail; ++e) {
+    const int *v   = c->solid + 10 * e;
+    const int  hex = v[4] >= 0, nf = hex ? 6 : 4, nv = hex ? 4 : 3;
+    for (int f = 0; f < nf && !fail; ++f) {
+      int  w[4], *cnt;
+      for (int i = 0; i < nv; ++i) w[i] = v[hex ? hf[f][i] : tf[f][i]];
+      if (!(cnt = MshHashPut(&faces, MshFaceKey(w, nv)))) {
+        fail = MshFailAt(c, v[9], "out of memory");
+        break;
+      }
+      if (*cnt < 0) *cnt = 0;
+      if (++*cnt > 2) fail = MshFailAt(c, v[9], "element %d: a face is shared by more than two elements (duplicate or overlapping elements)", v[8]);
+    }
+  }
+  for (long e = 0; e < c->ncells && !fail; ++e) {
+    const int *v = c->cell + 6 * e;
+    if (!MshHashGet(&faces, MshFaceKey(v, v[3] < 0 ? 3 : 4))) fail = MshFailAt(c, v[5], "2D element %d is not a face of any 3D element", v[4]);
+  }
+  MshHashFree(&faces);
+  return fail;
+}
+
 /* What PETSc's reader and the solver need of the topology: 2D elements, edges
    shared by at most two of them, line elements on their edges, point elements
    on their corners. */
@@ -1005,7 +1064,7 @@ static int MshCheckTopology(MshCheck *c)
     return MshFail3D(c, "a rigid body's mesh with %s cells: rigid bodies are 2D (curves)", c->solidType->shape);
   }
   if (c->curves) return c->nsegs ? 0 : MshFailAt(c, c->endElementsLine, "no line element in $Elements; a rigid body needs its curves");
-  if (c->nsolids) return 0; /* a 3D body: its cells are one type; its 2D elements are its physical surfaces' faces */
+  if (c->nsolids) return MshCheckSolids(c); /* a 3D body: its cells are one type; its 2D elements are its physical surfaces' faces */
   if (c->offPlaneLine) {
     c->lineno  = c->offPlaneLine;
     c->ctxName = NULL;
@@ -1111,6 +1170,7 @@ static MshVerdict MshCheckPath(const char path[], int curves, char msg[], size_t
   free(c.nodeMap);
   free(c.stamp);
   free(c.cell);
+  free(c.solid);
   free(c.seg);
   free(c.point);
   MshHashFree(&c.nodes);
