@@ -39,6 +39,12 @@ bin/contact: $(OBJS)
 	@mkdir -p bin
 	$(CC) -o $@ $(OBJS) $(LDLIBS)
 
+# the materials' kernels checked at random 3D states (tests/test_material_kernels.py)
+MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/obj/body/material.o
+bin/material-check: tests/kernels/material_check.c $(MATERIAL_OBJS)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $< $(MATERIAL_OBJS) $(LDLIBS)
+
 meshes: bin/contact
 	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only
 

@@ -21,6 +21,8 @@ PetscErrorCode BodyGenerateMesh(Body, const char meshDir[], PetscReal *maxDofs, 
 PetscErrorCode BodySetUp(Body, PetscInt partitioner, PetscBool partitionView);
 PetscErrorCode BodyDestroy(Body *);
 PetscReal      BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscReal D[], PetscReal dNdx[]);
+/* The same in dimension dim (2 or 3): x[nb][dim], D[nb][dim], dNdx[nb][dim]; det J. */
+PetscReal      BodyElementGradientsDim(PetscInt dim, PetscInt nb, const PetscReal x[], const PetscReal D[], PetscReal dNdx[]);
 /* Global node number of a node point (owned or ghost). */
 PetscErrorCode BodyGetNodeNumber(Body, PetscInt point, PetscInt *node);
 PetscErrorCode BodyGlobalToLocal(Body, Vec Xg, Vec Xl);

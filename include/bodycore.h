@@ -13,16 +13,17 @@
    reaction equals force[c] (forcecontrol.c). */
 typedef struct {
   char      group[CONTACT_NAME_LEN];
-  PetscInt  ncomp, comps[2];
-  PetscReal values[2];
-  PetscBool control[2]; /* component c (of comps) is force-controlled */
+  PetscInt  ncomp, comps[3]; /* at most the body's dimension */
+  PetscReal values[3];
+  PetscBool control[3]; /* component c (of comps) is force-controlled */
   PetscBool anchor;     /* an anchor of a body held by contact (anchors.c): force 0 */
-  PetscReal force[2];   /* its force: the reaction it must have */
-  PetscReal stage[CONTACT_MAX_STAGES][2]; /* -load_stages: each stage's end value of each component (a displacement, or a force where controlled); values and force hold the active stage's (history.c) */
+  PetscBool allComps;   /* no -components: every component of the body (its dimension, once the mesh is read) */
+  PetscReal force[3];   /* its force: the reaction it must have */
+  PetscReal stage[CONTACT_MAX_STAGES][3]; /* -load_stages: each stage's end value of each component (a displacement, or a force where controlled); values and force hold the active stage's (history.c) */
   PetscBool exact;   /* values from the body's exact solution */
   PetscInt  tag;     /* Gmsh physical tag */
   DMLabel   label;   /* faces of the group and their closure */
-  PetscReal reaction[2];
+  PetscReal reaction[3];
 } BodyBC;
 
 /* A dead load on a named physical group (loads.c): a traction per unit
@@ -30,13 +31,14 @@ typedef struct {
 typedef struct {
   char      group[CONTACT_NAME_LEN];
   PetscBool isPressure;
-  PetscReal traction[2], pressure;
-  PetscReal force[2]; /* its resultant at the active stage's end, summed over ranks (BodyLoadsSetUp) */
-  PetscReal forceFrom[2]; /* its resultant at the active stage's start */
-  PetscReal stageTraction[CONTACT_MAX_STAGES][2], stagePressure[CONTACT_MAX_STAGES]; /* -load_stages: each stage's end value; traction and pressure hold the active stage's */
+  PetscInt  ncomp; /* the traction's components a stage: 2 or 3, the body's dimension (checked once the mesh gives it) */
+  PetscReal traction[3], pressure;
+  PetscReal force[3]; /* its resultant at the active stage's end, summed over ranks (BodyLoadsSetUp) */
+  PetscReal forceFrom[3]; /* its resultant at the active stage's start */
+  PetscReal stageTraction[CONTACT_MAX_STAGES][3], stagePressure[CONTACT_MAX_STAGES]; /* -load_stages: each stage's end value; traction and pressure hold the active stage's */
 } BodyLoad;
 
-/* One elastic body: its own DMPlex (P2 on Tri6, Q2 on Quad9), material, Dirichlet
+/* One elastic body: its own DMPlex (P2 on Tri6 and Tet10, Q2 on Quad9 and Hex27), material, Dirichlet
    conditions and the per-cell geometry cache used by the element loops. */
 typedef struct _n_Body *Body;
 typedef struct _n_BodyRigid BodyRigid; /* a rigid body's curves and motion (rigidbody.h) */
@@ -71,19 +73,19 @@ struct _n_Body {
   DM        dm;
   PetscFE   fe, feScalar;
   PetscBool simplex;
-  PetscInt  dim, ncells, nb, nq, ncellsGlobal;
+  PetscInt  dim, ncells, nb, nq, ncellsGlobal; /* dim: 2 (plane strain, r-z) or 3, the components of u too */
   PetscInt *cpts;  /* [ncells][nb]: node points of each cell, in basis order */
   PetscInt *cdof;  /* [ncells][nb]: local offset of the first component of each node */
-  PetscReal *dNdx; /* [ncells][nq][nb][2] */
+  PetscReal *dNdx; /* [ncells][nq][nb][dim] */
   PetscReal *wdetJ;/* [ncells][nq] */
-  PetscReal *xq;   /* [ncells][nq][2] */
-  PetscReal *xnode;/* [ncells][nb][2] node coordinates */
+  PetscReal *xq;   /* [ncells][nq][dim] */
+  PetscReal *xnode;/* [ncells][nb][dim] node coordinates */
   const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
   Vec       Xg, Gg, Xl, Gl, bcl, bclFull, bclFrom; /* bcl: Dirichlet values of the load step, bclFull: the active stage's end, bclFrom: its start (NULL in the first stage) */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
   PetscInt  pStart, pEnd;   /* chart */
-  PetscReal *xpoint;        /* [chart][2] reference coordinates of node points */
+  PetscReal *xpoint;        /* [chart][dim] reference coordinates of node points */
   PetscBool *owned;         /* [chart] point owned by this rank */
   PetscSection nodeGS;      /* global numbering of the node points */
   PetscLogDouble tmesh; /* wall time of meshing and mesh reading */

@@ -25,15 +25,15 @@ int ContactMakeDirs(const char dir[]);
 void ContactJSONReal(FILE *fp, PetscReal v);
 /* sep "key": v, and sep "key": [v0, v1] (json.c). */
 void ContactJSONKeyReal(FILE *fp, const char sep[], const char key[], PetscReal v);
+/* key: [v0, ..., v(n-1)] */
+void ContactJSONKeyVector(FILE *, const char sep[], const char key[], PetscInt n, const PetscReal v[]);
 void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const PetscReal v[2]);
 
-/* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}. */
-/* e3: the out-of-plane normal strain, 0 in plane strain, the hoop strain in
-   axisymmetry (elasticity.c) */
-void ElasticityEnergyDensity(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal *W);
-void ElasticityStress(const PetscReal params[], const PetscReal gradu[], PetscReal e3, PetscReal sigma[]);
+/* Pointwise elasticity kernels (elasticity.c): params = {lambda, mu}, H the
+   3 x 3 displacement gradient (material.h: row and column 2 zero in plane
+   strain, H[8] the hoop strain in axisymmetry). */
+void ElasticityEnergyDensity(const PetscReal params[], const PetscReal H[], PetscReal *W);
+void ElasticityStress(const PetscReal params[], const PetscReal H[], PetscReal sigma[]);
 void ElasticityTangent(const PetscReal params[], PetscReal C[]);
-PetscReal ElasticityStress33(const PetscReal params[], const PetscReal gradu[], PetscReal e3);
 PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r);
-void ElasticityAddTangent(const PetscReal C[], PetscInt nb, PetscReal w, const PetscReal dN[], PetscScalar K[]);
-PetscReal ElasticityVonMises(PetscReal sxx, PetscReal syy, PetscReal szz, PetscReal sxy);
+PetscReal ElasticityVonMises(const PetscReal sigma[]);

@@ -1,37 +1,32 @@
 #pragma once
 /* A body's material (-<body>_material NAME): its pointwise kernels of the
-   displacement gradient, registered by name (material.c). The element loops
-   of body.c and fields.c call them and nothing else of the material.
+   displacement gradient, registered by name (material.c). The element loop
+   (element.c) calls them and nothing else of the material.
 
-   Arguments: param = {lambda, mu} (Lame constants from E and nu); gu[i*2+j]
-   = du_i/dX_j, the in-plane displacement gradient in the reference
-   configuration; e3 the out-of-plane normal component: 0 in plane strain,
-   u_r / r in axisymmetry (its limit du_r/dr on the axis), so that
-   F = I + [gu 0; 0 e3]. Stresses are listed xx, xy, yx, yy (P[i*2+J]). */
+   Arguments: param = {lambda, mu} (Lame constants from E and nu); H[i*3+J]
+   = du_i/dX_J, the full 3 x 3 displacement gradient in the reference
+   configuration, F = I + H. In 3D H is full; in plane strain its row and
+   column 2 are zero; in axisymmetry (x = r, y = z, 2 = theta) they are zero
+   but for H[8] = u_r / r, the hoop strain (its limit du_r/dr on the axis,
+   ElasticityHoopStrain). One kernel serves the three. Tensors are listed
+   row-major: P[i*3+J], sigma[i*3+j], A[(i*3+J)*9 + k*3+L]. */
 #include <petscsys.h>
 
 typedef struct {
   const char *name;
-  /* the energy is quadratic in gu: its Hessian does not depend on u, and
+  /* the energy is quadratic in H: its Hessian does not depend on u, and
      the stiffness is assembled and factored once per solve */
   PetscBool constantTangent;
-  /* Energy density per unit reference volume W, the stress conjugate to gu
-     (the first Piola-Kirchhoff P; linear: sigma) and to e3, P33. Returns
-     PETSC_FALSE where the material is inverted (J <= 0): W is then +inf,
-     P and P33 zero. */
-  PetscBool (*energy)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal *W, PetscReal P[], PetscReal *P33);
-  /* The Cauchy stress (in-plane sigma[4], out-of-plane s33), in the current
-     configuration, attached to the material point (for output). */
-  void (*cauchy)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal sigma[], PetscReal *s33);
-  /* Adds one quadrature point's w d2W/du_a du_b into the element matrix
-     K[2 nb][2 nb] (row-major), the blocks bb >= a only (body.c mirrors
-     them): dN[a][2] the basis gradients, B[a] the basis values and r > 0
-     the radius in axisymmetry, where e3 = u_r / r adds its terms (r = 0:
-     plane strain). */
-  /* The tangent A = d2W/dF dF at (gu, e3): A[((i*2+J)*2+k)*2+L] in-plane,
-     a3[i*2+J] = A_iJ33, a33 = A_3333 (for a manufactured body force). */
-  void (*moduli)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal A[], PetscReal a3[], PetscReal *a33);
-  void (*tangent)(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscInt nb, PetscReal w, const PetscReal dN[], const PetscReal B[], PetscReal r, PetscScalar K[]);
+  /* Energy density per unit reference volume W and the stress conjugate to
+     H, the first Piola-Kirchhoff P = dW/dF (linear: sigma). Returns
+     PETSC_FALSE where the material is inverted (J <= 0): W is then +inf
+     and P zero. */
+  PetscBool (*energy)(const PetscReal param[], const PetscReal H[9], PetscReal *W, PetscReal P[9]);
+  /* The tangent A_iJkL = d2W/dF_iJ dF_kL at H (A[(i*3+J)*9+k*3+L]). */
+  void (*moduli)(const PetscReal param[], const PetscReal H[9], PetscReal A[81]);
+  /* The Cauchy stress sigma[i*3+j], in the current configuration, attached
+     to the material point (for output; NaN where J <= 0). */
+  void (*cauchy)(const PetscReal param[], const PetscReal H[9], PetscReal sigma[9]);
 } Material;
 
 extern const Material MaterialLinear, MaterialNeoHookean;

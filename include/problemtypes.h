@@ -102,7 +102,7 @@ typedef struct {
    groups in order, two components each). */
 typedef struct {
   PetscInt   n, cap, ngroups;
-  PetscReal *load, *energy, *reaction; /* [cap], [cap], [cap][ngroups][2] */
+  PetscReal *load, *energy, *reaction; /* [cap], [cap], [cap][ngroups][3] */
 } LoadPath;
 
 /* -load_stages: the converged state at the end of each stage (staging.c),
@@ -111,7 +111,7 @@ typedef struct {
 typedef struct {
   PetscInt  n;                           /* the stages whose end is recorded (1..n) */
   Vec       X[CONTACT_MAX_STAGES];       /* X at each stage's end */
-  PetscReal reaction[CONTACT_MAX_STAGES][2 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
+  PetscReal reaction[CONTACT_MAX_STAGES][3 * CONTACT_MAX_BODIES * CONTACT_MAX_BC]; /* three components a group (x, y, z) */
   PetscReal force[CONTACT_MAX_STAGES][CONTACT_MAX_TERMS][2];
 } StageEnds;
 

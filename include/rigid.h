@@ -3,7 +3,7 @@
    that counts how many of them its Dirichlet conditions leave free. */
 #include "bodycore.h"
 
-PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[3]);
+PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[]);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
 /* Adds to the rigid-motion constraint Gram matrix M the row of component c
    fixed at (x, y) (coordinates centred and scaled): (e_c, r_c), r = (-y, x). */

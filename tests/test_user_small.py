@@ -1,7 +1,7 @@
 """Smaller things a new user met (issue 47, item 10): options -help did not
 list, a load history's order of values, the r-z plot of a ring, a master's
 unpaired nodes, the progress line after a failed solve, the strain warning's
-advice at a contact's edge, a 3D mesh, and `make run`'s demo."""
+advice at a contact's edge, a 3D .geo, and `make run`'s demo."""
 import re
 import sys
 import subprocess
@@ -314,22 +314,25 @@ GROUPS_3D = {
 
 @pytest.mark.parametrize("ranks", [1, 2])
 @pytest.mark.parametrize("groups", list(GROUPS_3D))
-def test_3d_geo_refused(groups, ranks, tmp_path):
-    """A 3D .geo (a cube) is refused in one line naming the body, the mesh
-    file and what makes it 3D (a physical volume; a node off the plane
-    z = 0), saying 3D bodies are not supported yet: status 1, nothing
-    written (it said "no physical curve 'base' (it has:)" or "line element
-    ... is not an edge of any 2D element")."""
+def test_3d_geo(groups, ranks, tmp_path):
+    """A 3D .geo (a cube): with its volume a physical group it is a 3D body
+    (Tet10), held at its base and solved (status 0); with a face off the
+    plane z = 0 as its body and no volume it is refused in one line naming
+    the body, the mesh file and what is wrong (a node off the plane z = 0
+    and no 3D element): status 1, nothing written."""
     geo = tmp_path / "cube.geo"
     geo.write_text(BOX + GROUPS_3D[groups])
     r = run_contact(["-bodies", "a", "-a_geo", geo, "-a_E", 1000, "-a_nu", 0.3, "-a_bc", "base",
                      "-mesh_dir", tmp_path / "m"], tmp_path, ranks=ranks, check=False)
+    if groups == "volume":
+        assert r.returncode == 0, r.stderr
+        assert r.summary["bodies"]["a"]["cell_type"] == "Tet10"
+        return
     assert r.returncode == 1, r.stderr
     lines = [l for l in r.stderr.splitlines() if l.startswith("contact:")]   # (mpiexec adds its own lines)
     assert len(lines) == 1, r.stderr
-    assert lines[0].startswith("contact: error: body a: the mesh is 3D (mesh ") and "cube" in lines[0], lines[0]
-    assert "3D bodies are not supported yet" in lines[0]
-    assert ("physical volume" in lines[0]) if groups == "volume" else ("off the plane z = 0" in lines[0]), lines[0]
+    assert lines[0].startswith("contact: error: body a: mesh ") and "cube" in lines[0], lines[0]
+    assert "off the plane z = 0, and no 3D element" in lines[0] and "a 3D body's .geo has a Volume" in lines[0], lines[0]
     assert not r.summary_path.exists() and not r.output_path.exists()
 
 

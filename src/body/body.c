@@ -1,17 +1,20 @@
 /* An elastic body: options, mesh (Gmsh -> DMPlex), P2/Q2 displacement with
-   Dirichlet constraints, the per-cell geometry cache and the element loops that
-   evaluate the pointwise kernels of the body's material (material.h:
-   elasticity.c, neohookean.c). It orchestrates the body's
+   Dirichlet constraints, the per-cell geometry cache, and the body's energy,
+   gradient, stiffness and errors, summed over its cells by element.c's loop
+   over the pointwise kernels of its material (material.h: elasticity.c,
+   neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
    take what they share from bodycore.c and rigid.c, below them all. */
 #include "support.h"
 #include "body.h"
+#include "simplexcoords.h"
 #include "anchors.h"
 #include "axis.h"
 #include "meshgen.h"
 #include "mshcheck.h"
 #include "partition.h"
 #include "options.h"
+#include "element.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
 {
@@ -60,7 +63,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
   PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain) or neohookean (compressible neo-Hookean, finite strain)", NULL, MaterialList, material, material, sizeof(material), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain), lame (-axisymmetric)", NULL, exact, exact, sizeof(exact), NULL));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain or 3D), lame (-axisymmetric), sphere (3D)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
   PetscCall(PetscOptionsRealArray("-exact_params", "Parameters of the exact solution", NULL, b->exact.params, &b->exact.nparams, NULL));
   PetscCall(PetscOptionsInt("-quadrature_degree", "Degree of the cell quadrature (the stiffness exact on straight Tri6 cells from 2, on rectangular Quad9 cells from 4: (degree + 2)/2 Gauss points a direction)", NULL, qdeg, &qdeg, NULL));
@@ -113,7 +116,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   if (strcmp(exact, "none")) {
     PetscErrorCode (*set)(ExactSolution *) = NULL;
     PetscCall(PetscFunctionListFind(ExactSolutionList, exact, &set));
-    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame)", prefix, exact);
+    PetscCheck(set, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: unknown exact solution '%s' (known: none, affine, trig, lame, sphere)", prefix, exact);
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
     /* another material's body force comes from the solution's second derivatives (BodyExactForce) */
@@ -165,6 +168,7 @@ PetscErrorCode BodyGenerateMesh(Body b, const char meshDir[], PetscReal *maxDofs
 static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
 {
   PetscInt cStart, cEnd, nTypes[2] = {0, 0}, gTypes[2];
+  DMPolytopeType want[2];
   char     prefix[2 * CONTACT_NAME_LEN];
 
   PetscFunctionBeginUser;
@@ -176,20 +180,24 @@ static PetscErrorCode BodyReadMesh(Body b, PetscInt partitioner, PetscBool view)
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", b->name));
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)b->dm, prefix));
   PetscCall(DMGetDimension(b->dm, &b->dim));
-  PetscCheck(b->dim == 2, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is %" PetscInt_FMT "D; the solver is 2D", b->name, b->msh, b->dim);
+  PetscCheck(b->dim == 2 || b->dim == 3, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is %" PetscInt_FMT "D; a body is 2D or 3D", b->name, b->msh, b->dim);
+  PetscCheck(b->dim == 2 || !b->axisym, b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s is 3D, and -axisymmetric takes 2D bodies (their meridian sections)", b->name, b->msh);
+  want[0] = b->dim == 3 ? DM_POLYTOPE_TETRAHEDRON : DM_POLYTOPE_TRIANGLE;
+  want[1] = b->dim == 3 ? DM_POLYTOPE_HEXAHEDRON : DM_POLYTOPE_QUADRILATERAL;
   PetscCall(DMPlexGetHeightStratum(b->dm, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(b->dm, c, &ct));
-    if (ct == DM_POLYTOPE_TRIANGLE) nTypes[0]++;
-    else if (ct == DM_POLYTOPE_QUADRILATERAL) nTypes[1]++;
+    if (ct == want[0]) nTypes[0]++;
+    else if (ct == want[1]) nTypes[1]++;
     else SETERRQ(b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has a cell of type %s", b->name, b->msh, DMPolytopeTypes[ct]);
   }
   PetscCall(MPIU_Allreduce(nTypes, gTypes, 2, MPIU_INT, MPI_SUM, b->comm));
   PetscCheck(gTypes[0] + gTypes[1] > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has no cells", b->name, b->msh);
-  PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes triangles and quadrilaterals", b->name, b->msh);
+  PetscCheck(!gTypes[0] || !gTypes[1], b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s mixes %s", b->name, b->msh, b->dim == 3 ? "tetrahedra and hexahedra" : "triangles and quadrilaterals");
   b->simplex      = gTypes[0] ? PETSC_TRUE : PETSC_FALSE;
   b->ncellsGlobal = gTypes[0] + gTypes[1];
+  if (b->dim == 3 && b->simplex) PetscCall(MeshSimplexCoordinatesInCellOrder(b->dm, b->name, b->msh));
   PetscCall(DMPlexDistributeWith(&b->dm, (PartitionType)partitioner, view, b->name));
   PetscCall(DMViewFromOptions(b->dm, NULL, "-dm_view"));
   PetscFunctionReturn(0);
@@ -216,6 +224,33 @@ PetscReal BodyElementGradients(PetscInt nb, const PetscReal x[][2], const PetscR
   return detJ;
 }
 
+/* The same at one reference point in dimension dim (2 or 3): x[a][dim],
+   D[a][dim], dNdx[a][dim]. In 2D the function above, bit for bit. */
+PetscReal BodyElementGradientsDim(PetscInt dim, PetscInt nb, const PetscReal x[], const PetscReal D[], PetscReal dNdx[])
+{
+  PetscReal J[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, detJ, iJ[9];
+
+  if (dim == 2) return BodyElementGradients(nb, (const PetscReal(*)[2])x, D, dNdx);
+  for (PetscInt a = 0; a < nb; ++a)
+    for (PetscInt i = 0; i < 3; ++i)
+      for (PetscInt j = 0; j < 3; ++j) J[i * 3 + j] += x[a * 3 + i] * D[a * 3 + j];
+  /* the inverse by cofactors: iJ = adj(J) / det J */
+  iJ[0] = J[4] * J[8] - J[5] * J[7];
+  iJ[1] = J[2] * J[7] - J[1] * J[8];
+  iJ[2] = J[1] * J[5] - J[2] * J[4];
+  iJ[3] = J[5] * J[6] - J[3] * J[8];
+  iJ[4] = J[0] * J[8] - J[2] * J[6];
+  iJ[5] = J[2] * J[3] - J[0] * J[5];
+  iJ[6] = J[3] * J[7] - J[4] * J[6];
+  iJ[7] = J[1] * J[6] - J[0] * J[7];
+  iJ[8] = J[0] * J[4] - J[1] * J[3];
+  detJ  = J[0] * iJ[0] + J[1] * iJ[3] + J[2] * iJ[6];
+  for (PetscInt k = 0; k < 9; ++k) iJ[k] /= detJ;
+  for (PetscInt a = 0; a < nb; ++a) /* dN_a/dx_j = dN_a/dxi_k (J^-1)_kj */
+    for (PetscInt j = 0; j < 3; ++j) dNdx[3 * a + j] = D[a * 3] * iJ[j] + D[a * 3 + 1] * iJ[3 + j] + D[a * 3 + 2] * iJ[6 + j];
+  return detJ;
+}
+
 /* Caches per cell the node points, their local dof offsets, the nodal coordinates, the physical
    basis gradients and the quadrature weights times det J. The node positions
    come from evaluating the mesh's own coordinate field (continuous Q2 on quads,
@@ -230,10 +265,11 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscQuadrature    q;
   PetscInt           cStart, cEnd, nq, ncb, ncc;
   const PetscReal   *qw;
-  PetscReal          ref[9 * 2];
+  PetscReal          ref[27 * 3];
   PetscObject        obj;
+  const PetscInt     dim = b->dim;
   PetscFE            cfe;
-  PetscReal          bad[5] = {0, 0, 0, 0, 0}; /* first inverted cell here: flag, centre x, y, det J, det J at its first point */
+  PetscReal          bad[6] = {0, 0, 0, 0, 0, 0}; /* first inverted cell here: flag, a node's x, y, det J, det J at its first point, z */
   PetscMPIInt        rank, size, first;
 
   PetscFunctionBeginUser;
@@ -254,11 +290,11 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   b->nq     = nq;
   b->ncells = cEnd - cStart;
   b->B      = T->T[0];
-  PetscCall(PetscMalloc6(b->ncells * b->nb, &b->cpts, b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * 2, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * 2, &b->xq, b->ncells * b->nb * 2, &b->xnode));
+  PetscCall(PetscMalloc6(b->ncells * b->nb, &b->cpts, b->ncells * b->nb, &b->cdof, b->ncells * nq * b->nb * dim, &b->dNdx, b->ncells * nq, &b->wdetJ, b->ncells * nq * dim, &b->xq, b->ncells * b->nb * dim, &b->xnode));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ci = c - cStart;
     PetscScalar *xc = NULL;
-    PetscReal   (*x)[2] = (PetscReal(*)[2]) & b->xnode[ci * b->nb * 2], sign0 = 1.0, detJ0 = 0.0;
+    PetscReal   *x = &b->xnode[ci * b->nb * dim], sign0 = 1.0, detJ0 = 0.0;
 
     PetscCall(DMPlexGetTransitiveClosure(b->dm, c, PETSC_TRUE, &ncl, &cl));
     for (PetscInt i = 0; i < ncl; ++i) {
@@ -275,14 +311,14 @@ static PetscErrorCode BodyBuildCellCache(Body b)
     PetscCall(DMPlexVecGetClosure(cdm, NULL, coords, c, &ncc, &xc));
     PetscCheck(ncc == ncb, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: cell %" PetscInt_FMT " of %s has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, b->name, c, b->msh, ncc, ncb);
     for (PetscInt a = 0; a < b->nb; ++a) {
-      x[a][0] = x[a][1] = 0.0;
+      for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] = 0.0;
       for (PetscInt f = 0; f < ncb; ++f)
-        for (PetscInt d = 0; d < 2; ++d) x[a][d] += PetscRealPart(xc[f]) * Tc->T[0][(a * ncb + f) * 2 + d];
+        for (PetscInt d = 0; d < dim; ++d) x[a * dim + d] += PetscRealPart(xc[f]) * Tc->T[0][(a * ncb + f) * dim + d];
     }
     PetscCall(DMPlexVecRestoreClosure(cdm, NULL, coords, c, &ncc, &xc));
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal detJ = BodyElementGradients(b->nb, (const PetscReal(*)[2])x, &T->T[1][iq * b->nb * 2], &b->dNdx[(ci * nq + iq) * b->nb * 2]);
-      PetscReal       xx[2] = {0, 0};
+      const PetscReal detJ = BodyElementGradientsDim(dim, b->nb, x, &T->T[1][iq * b->nb * dim], &b->dNdx[(ci * nq + iq) * b->nb * dim]);
+      PetscReal       xx[3] = {0, 0, 0};
 
       /* clockwise cells are fine; a sign change inside a cell is not */
       if (iq == 0) {
@@ -291,16 +327,16 @@ static PetscErrorCode BodyBuildCellCache(Body b)
       }
       if (!(detJ * sign0 > 0) && bad[0] == 0.0) {
         bad[0] = 1.0;
-        bad[1] = x[b->nb - 1][0];
-        bad[2] = x[b->nb - 1][1];
+        bad[1] = x[(b->nb - 1) * dim];
+        bad[2] = x[(b->nb - 1) * dim + 1];
+        bad[5] = dim == 3 ? x[(b->nb - 1) * dim + 2] : 0.0;
         bad[3] = detJ;
         bad[4] = sign0 * PetscAbsReal(detJ0);
       }
       for (PetscInt a = 0; a < b->nb; ++a)
-        for (PetscInt i = 0; i < 2; ++i) xx[i] += x[a][i] * b->B[iq * b->nb + a];
-      b->wdetJ[ci * nq + iq]        = qw[iq] * PetscAbsReal(detJ) * BodyRadialWeight(b, xx[0]);
-      b->xq[(ci * nq + iq) * 2]     = xx[0];
-      b->xq[(ci * nq + iq) * 2 + 1] = xx[1];
+        for (PetscInt i = 0; i < dim; ++i) xx[i] += x[a * dim + i] * b->B[iq * b->nb + a];
+      b->wdetJ[ci * nq + iq] = qw[iq] * PetscAbsReal(detJ) * BodyRadialWeight(b, xx[0]);
+      for (PetscInt i = 0; i < dim; ++i) b->xq[(ci * nq + iq) * dim + i] = xx[i];
     }
   }
   PetscCall(PetscTabulationDestroy(&Tc));
@@ -309,7 +345,8 @@ static PetscErrorCode BodyBuildCellCache(Body b)
   PetscCallMPI(MPI_Comm_size(b->comm, &size));
   first = bad[0] != 0.0 ? rank : size;
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, b->comm));
-  if (first < size) PetscCallMPI(MPI_Bcast(bad, 5, MPIU_REAL, first, b->comm));
+  if (first < size) PetscCallMPI(MPI_Bcast(bad, 6, MPIU_REAL, first, b->comm));
+  if (dim == 3) PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g, %g): det J = %g at one quadrature point, %g at another", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[5], (double)bad[4], (double)bad[3]);
   PetscCheck(first == size, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s has an inverted or degenerate cell near (%g, %g): det J = %g at one quadrature point, %g at another", b->name, b->msh, (double)bad[1], (double)bad[2], (double)bad[4], (double)bad[3]);
   PetscFunctionReturn(0);
 }
@@ -326,11 +363,10 @@ static PetscErrorCode BodyBuildNodeData(Body b)
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(PetscSectionGetChart(s, &b->pStart, &b->pEnd));
-  PetscCall(PetscCalloc2(2 * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
+  PetscCall(PetscCalloc2(b->dim * (b->pEnd - b->pStart), &b->xpoint, b->pEnd - b->pStart, &b->owned));
   for (PetscInt k = 0; k < b->ncells * b->nb; ++k) {
     const PetscInt p = b->cpts[k] - b->pStart;
-    b->xpoint[2 * p]     = b->xnode[2 * k];
-    b->xpoint[2 * p + 1] = b->xnode[2 * k + 1];
+    for (PetscInt d = 0; d < b->dim; ++d) b->xpoint[b->dim * p + d] = b->xnode[b->dim * k + d];
   }
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) b->owned[p - b->pStart] = PETSC_TRUE;
   PetscCall(DMGetPointSF(b->dm, &sf));
@@ -386,10 +422,10 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(PetscTime(&t1));
   b->tmesh += t1 - t0;
   PetscCall(PetscLogStagePush(contactLog.setup));
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, b->simplex, 2, PETSC_DETERMINE, &b->fe));
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, b->simplex, 2, PETSC_DETERMINE, &b->feScalar));
-  if (b->simplex) PetscCall(PetscDTSimplexQuadrature(2, qdeg, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
-  else PetscCall(PetscDTGaussTensorQuadrature(2, 1, (qdeg + 2) / 2, -1.0, 1.0, &q));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, b->dim, b->dim, b->simplex, 2, PETSC_DETERMINE, &b->fe));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, b->dim, 1, b->simplex, 2, PETSC_DETERMINE, &b->feScalar));
+  if (b->simplex) PetscCall(PetscDTSimplexQuadrature(b->dim, qdeg, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  else PetscCall(PetscDTGaussTensorQuadrature(b->dim, 1, (qdeg + 2) / 2, -1.0, 1.0, &q));
   PetscCall(PetscFESetQuadrature(b->fe, q));
   PetscCall(PetscFESetQuadrature(b->feScalar, q));
   PetscCall(PetscQuadratureDestroy(&q));
@@ -397,6 +433,7 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscCall(DMSetField(b->dm, 0, NULL, (PetscObject)b->fe));
   PetscCall(DMCreateDS(b->dm));
   PetscCall(DMGetDS(b->dm, &ds));
+  if (b->hasExact) PetscCall(ExactSolutionSetDimension(&b->exact, b->dim, b->name));
   PetscCall(BodyConditionsSetUp(b));              /* the scene's Dirichlet conditions */
   if (b->axisym) PetscCall(BodyAddAxis(b));      /* u_r = 0 on the axis */
   if (b->mayAnchor) PetscCall(BodyAddAnchors(b)); /* a body held by contact: its free rigid motions anchored, each anchor force-controlled to zero */
@@ -432,31 +469,6 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
   PetscFunctionReturn(0);
 }
 
-/* The exact solution's body force at x, f = -div P(F(u)), times the load
-   factor (a load, as the Dirichlet values it goes with): its own (linear
-   elasticity's) for a material of constant tangent, else from the
-   material's tangent at grad u and the solution's second derivatives,
-   f_i = -A_iJkL d2u_k/dx_J dx_L (plane strain). */
-static void BodyExactForce(Body b, const PetscReal x[], PetscReal f[])
-{
-  PetscReal du[4], d2u[8], A[16], a3[4], a33;
-
-  if (b->mat->constantTangent) b->exact.f(b->exact.params, b->param[0], b->param[1], x, f);
-  else {
-    b->exact.du(b->exact.params, x, du);
-    b->exact.d2u(b->exact.params, x, d2u);
-    b->mat->moduli(b->param, du, 0.0, A, a3, &a33);
-    for (PetscInt i = 0; i < 2; ++i) {
-      f[i] = 0.0;
-      for (PetscInt J = 0; J < 2; ++J)
-        for (PetscInt k = 0; k < 2; ++k)
-          for (PetscInt L = 0; L < 2; ++L) f[i] -= A[((i * 2 + J) * 2 + k) * 2 + L] * d2u[(k * 2 + J) * 2 + L];
-    }
-  }
-  f[0] *= b->loadFactor;
-  f[1] *= b->loadFactor;
-}
-
 /* Pi_b(u) = int W(grad u) dA - int f . u dA - (the loads' f) . u (loads.c)
    and its gradient, added into Gl, W the body's material's. Where the
    material is inverted (J <= 0 at a quadrature point), Pi_b is +inf and the
@@ -467,7 +479,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   const PetscScalar *x;
   PetscScalar       *g;
   PetscReal          e = 0.0;
-  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscInt     nb = b->nb, nq = b->nq, dim = b->dim;
   PetscBool          inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -481,61 +493,17 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecGetArray(Gl, &g));
   for (PetscInt c = 0; c < b->ncells && !inverted; ++c) {
     const PetscInt *dof = &b->cdof[c * nb];
-    PetscReal       u[9][2], ge[9][2];
+    PetscReal       u[ELEMENT_MAX_DOFS], ge[ELEMENT_MAX_DOFS];
+    PetscInt        iq;
 
-    for (PetscInt a = 0; a < nb; ++a) {
-      u[a][0]  = PetscRealPart(x[dof[a]]);
-      u[a][1]  = PetscRealPart(x[dof[a] + 1]);
-      ge[a][0] = ge[a][1] = 0.0;
+    ElementGather(b, c, x, u);
+    if (!ElementEnergyGradient(b, c, u, &e, ge, &iq)) {
+      inverted         = PETSC_TRUE;
+      b->invertedAt[0] = b->xq[(c * nq + iq) * dim];
+      b->invertedAt[1] = b->xq[(c * nq + iq) * dim + 1];
     }
-    for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2];
-      const PetscReal  w  = b->wdetJ[c * nq + iq];
-      const PetscReal *B  = &b->B[iq * nb];
-      PetscReal        gu[4] = {0, 0, 0, 0}, W, s[4], e3 = 0.0, s3r = 0.0, s3, r = 0.0;
-
-      for (PetscInt a = 0; a < nb; ++a) {
-        gu[0] += u[a][0] * dN[2 * a];
-        gu[1] += u[a][0] * dN[2 * a + 1];
-        gu[2] += u[a][1] * dN[2 * a];
-        gu[3] += u[a][1] * dN[2 * a + 1];
-      }
-      if (b->axisym) { /* the hoop strain u_r / r, at a quadrature point (r > 0) */
-        PetscReal ur = 0.0;
-        r = b->xq[(c * nq + iq) * 2];
-        for (PetscInt a = 0; a < nb; ++a) ur += B[a] * u[a][0];
-        e3 = ElasticityHoopStrain(ur, gu[0], r);
-      }
-      if (!b->mat->energy(b->param, gu, e3, &W, s, &s3)) {
-        inverted         = PETSC_TRUE;
-        b->invertedAt[0] = b->xq[(c * nq + iq) * 2];
-        b->invertedAt[1] = b->xq[(c * nq + iq) * 2 + 1];
-        break;
-      }
-      if (b->axisym) s3r = s3 / r;
-      e += w * W;
-      for (PetscInt a = 0; a < nb; ++a) {
-        ge[a][0] += w * (s[0] * dN[2 * a] + s[1] * dN[2 * a + 1] + s3r * B[a]);
-        ge[a][1] += w * (s[2] * dN[2 * a] + s[3] * dN[2 * a + 1]);
-      }
-      if (b->hasExact) {
-        PetscReal f[2], uq[2] = {0, 0};
-        BodyExactForce(b, &b->xq[(c * nq + iq) * 2], f);
-        for (PetscInt a = 0; a < nb; ++a) {
-          uq[0] += B[a] * u[a][0];
-          uq[1] += B[a] * u[a][1];
-        }
-        e -= w * (f[0] * uq[0] + f[1] * uq[1]);
-        for (PetscInt a = 0; a < nb; ++a) {
-          ge[a][0] -= w * f[0] * B[a];
-          ge[a][1] -= w * f[1] * B[a];
-        }
-      }
-    }
-    for (PetscInt a = 0; a < nb; ++a) {
-      g[dof[a]] += ge[a][0];
-      g[dof[a] + 1] += ge[a][1];
-    }
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i) g[dof[a] + i] += ge[a * dim + i];
   }
   PetscCall(BodyLoadsAddEnergyGradient(b, x, &e, g));
   PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -575,61 +543,35 @@ PetscErrorCode BodyAssembleHessian(Body b, Mat H)
   PetscFunctionReturn(0);
 }
 
-/* Cell c's tangent K_(a i)(b j) = int d2W/du_(a i) du_(b j) dA (n x n, n =
-   2 nb, full), at the displacement x (a local array; NULL: at rest, where
-   every material's tangent is linear elasticity's, int dN_a/dx_k C_ikjl
-   dN_b/dx_l dA). */
-static PetscErrorCode BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
+/* Cell c's tangent K_(a i)(b j) = int d2W/du_(a i) du_(b j) dV (n x n, n =
+   dim nb, full), at the displacement x (a local array; NULL: at rest, where
+   every material's tangent is linear elasticity's): element.c. */
+static void BodyCellTangent(Body b, PetscInt c, const PetscScalar x[], PetscScalar K[])
 {
-  const PetscInt nb = b->nb, nq = b->nq, n = 2 * nb;
-  PetscReal      u[9][2];
+  PetscReal u[ELEMENT_MAX_DOFS];
 
-  PetscFunctionBeginUser;
-  for (PetscInt a = 0; a < nb; ++a) {
-    u[a][0] = x ? PetscRealPart(x[b->cdof[c * nb + a]]) : 0.0;
-    u[a][1] = x ? PetscRealPart(x[b->cdof[c * nb + a] + 1]) : 0.0;
-  }
-  PetscCall(PetscArrayzero(K, n * n));
-  for (PetscInt iq = 0; iq < nq; ++iq) {
-    const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-    const PetscReal  w  = b->wdetJ[c * nq + iq], r = b->axisym ? b->xq[(c * nq + iq) * 2] : 0.0;
-    PetscReal        gu[4] = {0, 0, 0, 0}, e3 = 0.0, ur = 0.0;
-
-    for (PetscInt a = 0; a < nb && x; ++a) {
-      gu[0] += u[a][0] * dN[2 * a];
-      gu[1] += u[a][0] * dN[2 * a + 1];
-      gu[2] += u[a][1] * dN[2 * a];
-      gu[3] += u[a][1] * dN[2 * a + 1];
-      ur += B[a] * u[a][0];
-    }
-    if (r > 0) e3 = ElasticityHoopStrain(ur, gu[0], r);
-    b->mat->tangent(b->param, gu, e3, nb, w, dN, B, r, K);
-  }
-  for (PetscInt a = 0; a < nb; ++a)
-    for (PetscInt i = 0; i < 2; ++i)
-      for (PetscInt bb = a + 1; bb < nb; ++bb)
-        for (PetscInt j = 0; j < 2; ++j) K[(2 * bb + j) * n + 2 * a + i] = K[(2 * a + i) * n + 2 * bb + j];
-  PetscFunctionReturn(0);
+  if (x) ElementGather(b, c, x, u);
+  ElementTangent(b, c, x ? u : NULL, K);
 }
 
 /* The tangent over this rank's cells at the displacement x (as above), added
    into H at rows and columns map[local dof] (negative: left out). */
 static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], const PetscInt map[], Mat H)
 {
-  const PetscInt nb = b->nb, n = 2 * nb;
-  PetscScalar    K[18 * 18];
-  PetscInt       idx[18];
+  const PetscInt dim = b->dim, nb = b->nb, n = dim * nb;
+  PetscScalar   *K;
+  PetscInt      *idx;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
+  PetscCall(PetscMalloc2(n * n, &K, n, &idx));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    for (PetscInt a = 0; a < nb; ++a) {
-      idx[2 * a]     = map[b->cdof[c * nb + a]];
-      idx[2 * a + 1] = map[b->cdof[c * nb + a] + 1];
-    }
-    PetscCall(BodyCellTangent(b, c, x, K));
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt i = 0; i < dim; ++i) idx[dim * a + i] = map[b->cdof[c * nb + a] + i];
+    BodyCellTangent(b, c, x, K);
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
   }
+  PetscCall(PetscFree2(K, idx));
   PetscCall(PetscLogEventEnd(contactLog.elasHessian, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -662,9 +604,9 @@ PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
    tangents. Like a gradient, Yl holds this rank's cells' part alone. */
 PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
 {
-  const PetscInt     nb = b->nb, n = 2 * nb;
+  const PetscInt     dim = b->dim, nb = b->nb, n = dim * nb;
   const PetscScalar *x = NULL, *e;
-  PetscScalar       *y, K[18 * 18];
+  PetscScalar       *y, *K;
 
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(Yl));
@@ -672,17 +614,19 @@ PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
   if (Xl && !b->mat->constantTangent) PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArrayRead(El, &e));
   PetscCall(VecGetArray(Yl, &y));
+  PetscCall(PetscMalloc1(n * n, &K));
   for (PetscInt c = 0; c < b->ncells; ++c) {
     PetscBool any = PETSC_FALSE;
-    for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / 2] + a % 2] != 0.0);
+    for (PetscInt a = 0; a < n && !any; ++a) any = (PetscBool)(e[b->cdof[c * nb + a / dim] + a % dim] != 0.0);
     if (!any) continue;
-    PetscCall(BodyCellTangent(b, c, x, K));
+    BodyCellTangent(b, c, x, K);
     for (PetscInt i = 0; i < n; ++i) {
       PetscScalar s = 0;
-      for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / 2] + j % 2];
-      y[b->cdof[c * nb + i / 2] + i % 2] += s;
+      for (PetscInt j = 0; j < n; ++j) s += K[i * n + j] * e[b->cdof[c * nb + j / dim] + j % dim];
+      y[b->cdof[c * nb + i / dim] + i % dim] += s;
     }
   }
+  PetscCall(PetscFree(K));
   PetscCall(VecRestoreArray(Yl, &y));
   PetscCall(VecRestoreArrayRead(El, &e));
   if (x) PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -707,7 +651,7 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
   for (PetscInt i = 0; i < b->nbc; ++i) {
     BodyBC   *bc = &b->bc[i];
     IS        is;
-    PetscReal r[2] = {0, 0};
+    PetscReal r[3] = {0, 0, 0};
 
     PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
     if (is) {
@@ -725,7 +669,7 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
       PetscCall(ISRestoreIndices(is, &pts));
       PetscCall(ISDestroy(&is));
     }
-    PetscCall(MPIU_Allreduce(r, bc->reaction, 2, MPIU_REAL, MPIU_SUM, b->comm));
+    PetscCall(MPIU_Allreduce(r, bc->reaction, b->dim, MPIU_REAL, MPIU_SUM, b->comm));
   }
   PetscCall(VecRestoreArrayRead(Gl, &g));
   PetscFunctionReturn(0);
@@ -742,54 +686,53 @@ PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
    The a priori estimates (Ciarlet, ch. 3-4; isoparametric cells keep the rates)
    give the orders on the right: the energy norm and the stress error are one
    order below the L2 error. */
-static void StressSquared(const PetscReal param[], const PetscReal gu[], PetscReal e3, PetscReal *s2)
+static void StressSquared(const PetscReal param[], const PetscReal H[], PetscReal *s2)
 {
-  PetscReal s[4];
+  PetscReal s[9];
 
-  ElasticityStress(param, gu, e3, s);
-  *s2 = PetscSqr(s[0]) + PetscSqr(s[3]) + PetscSqr(ElasticityStress33(param, gu, e3)) + 2.0 * PetscSqr(s[1]);
+  ElasticityStress(param, H, s);
+  *s2 = PetscSqr(s[0]) + PetscSqr(s[4]) + PetscSqr(s[8]) + 2.0 * PetscSqr(s[1]) + 2.0 * PetscSqr(s[2]) + 2.0 * PetscSqr(s[5]);
 }
 
 PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
 {
   const PetscScalar *x;
   PetscReal          loc[6] = {0, 0, 0, 0, 0, 0}, glob[6];
-  const PetscInt     nb = b->nb, nq = b->nq;
+  const PetscInt     dim = b->dim, nq = b->nq;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(E, sizeof(*E)));
   if (!b->hasExact || b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[ELEMENT_MAX_DOFS];
+
+    ElementGather(b, c, x, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *B = &b->B[iq * nb], *dN = &b->dNdx[(c * nq + iq) * nb * 2], *xq = &b->xq[(c * nq + iq) * 2];
-      const PetscReal  w = b->wdetJ[c * nq + iq];
-      PetscReal        uh[2] = {0, 0}, ue[2], gh[4] = {0, 0, 0, 0}, ge[4], de[4], W, s2, e3e = 0.0, e3d = 0.0;
-      for (PetscInt a = 0; a < nb; ++a) {
-        const PetscReal ux = PetscRealPart(x[b->cdof[c * nb + a]]), uy = PetscRealPart(x[b->cdof[c * nb + a] + 1]);
-        uh[0] += B[a] * ux;
-        uh[1] += B[a] * uy;
-        gh[0] += ux * dN[2 * a];
-        gh[1] += ux * dN[2 * a + 1];
-        gh[2] += uy * dN[2 * a];
-        gh[3] += uy * dN[2 * a + 1];
-      }
+      const PetscReal *xq = &b->xq[(c * nq + iq) * dim];
+      const PetscReal  w  = b->wdetJ[c * nq + iq];
+      PetscReal        uh[3], ue[3], du[9], Hh[9], He[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, Hd[9], W, s2, d2 = 0.0, n2 = 0.0;
+
+      ElementPointGradient(b, c, iq, u, uh, Hh);
       b->exact.u(b->exact.params, xq, ue);
-      b->exact.du(b->exact.params, xq, ge);
-      for (PetscInt j = 0; j < 4; ++j) de[j] = gh[j] - ge[j];
-      if (b->axisym) { /* the hoop strains, at a quadrature point (r > 0) */
-        e3e = ue[0] / xq[0];
-        e3d = uh[0] / xq[0] - e3e;
+      b->exact.du(b->exact.params, xq, du);
+      for (PetscInt i = 0; i < dim; ++i)
+        for (PetscInt J = 0; J < dim; ++J) He[i * 3 + J] = du[i * dim + J];
+      if (b->axisym) He[8] = ue[0] / xq[0]; /* the hoop strains, at a quadrature point (r > 0) */
+      for (PetscInt k = 0; k < 9; ++k) Hd[k] = Hh[k] - He[k];
+      for (PetscInt i = 0; i < dim; ++i) {
+        d2 += PetscSqr(uh[i] - ue[i]);
+        n2 += PetscSqr(ue[i]);
       }
-      loc[0] += w * (PetscSqr(uh[0] - ue[0]) + PetscSqr(uh[1] - ue[1]));
-      loc[1] += w * (PetscSqr(ue[0]) + PetscSqr(ue[1]));
-      ElasticityEnergyDensity(b->param, de, e3d, &W);
+      loc[0] += w * d2;
+      loc[1] += w * n2;
+      ElasticityEnergyDensity(b->param, Hd, &W);
       loc[2] += w * 2.0 * W;
-      ElasticityEnergyDensity(b->param, ge, e3e, &W);
+      ElasticityEnergyDensity(b->param, He, &W);
       loc[3] += w * 2.0 * W;
-      StressSquared(b->param, de, e3d, &s2);
+      StressSquared(b->param, Hd, &s2);
       loc[4] += w * s2;
-      StressSquared(b->param, ge, e3e, &s2);
+      StressSquared(b->param, He, &s2);
       loc[5] += w * s2;
     }
   }

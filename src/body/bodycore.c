@@ -36,26 +36,26 @@ PetscErrorCode BodyGetPhysicalTag(Body b, const char group[], PetscInt dim, Pets
       PetscCall(PetscStrlcat(known, b->physNames[i], sizeof(known)));
     }
   }
-  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has no physical curve '%s' (it has:%s)", b->name, b->msh, group, known);
+  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: mesh %s has no physical %s '%s' (it has:%s)", b->name, b->msh, dim == 2 ? "surface" : dim == 1 ? "curve" : dim == 3 ? "volume" : "point", group, known);
 }
 
-/* Reference coordinates of the nodes of element fe, in basis order, and
-   their number (nb, if not NULL). */
+/* Reference coordinates of the nodes of element fe, in basis order
+   ([nb][dim]), and their number (nb, if not NULL). */
 static PetscErrorCode FEGetReferenceNodes(PetscFE fe, PetscInt *nb, PetscReal ref[])
 {
   PetscDualSpace sp;
-  PetscInt       n;
+  PetscInt       n, dim;
 
   PetscFunctionBeginUser;
   PetscCall(PetscFEGetDimension(fe, &n));
+  PetscCall(PetscFEGetSpatialDimension(fe, &dim));
   PetscCall(PetscFEGetDualSpace(fe, &sp));
   for (PetscInt a = 0; a < n; ++a) {
     PetscQuadrature  fq;
     const PetscReal *pts;
     PetscCall(PetscDualSpaceGetFunctional(sp, a, &fq));
     PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
-    ref[2 * a]     = pts[0];
-    ref[2 * a + 1] = pts[1];
+    for (PetscInt d = 0; d < dim; ++d) ref[dim * a + d] = pts[d];
   }
   if (nb) *nb = n;
   PetscFunctionReturn(0);
@@ -101,11 +101,11 @@ PetscErrorCode BodyCheckSecondOrder(Body b)
   PetscCall(DMGetNumFields(cdm, &nf));
   if (nf == 1) PetscCall(DMGetField(cdm, 0, NULL, &obj));
   if (obj) PetscCall(PetscObjectGetClassId(obj, &cid));
-  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (Tri6 or Quad9: Mesh.ElementOrder = 2)", b->name, b->msh);
+  PetscCheck(obj && cid == PETSCFE_CLASSID, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s is first order; the solver needs second-order elements (%s: Mesh.ElementOrder = 2)", b->name, b->msh, b->dim == 3 ? "Tet10 or Hex27" : "Tri6 or Quad9");
   PetscFunctionReturn(0);
 }
 
-/* The coordinates of this rank's vertices ([v - vStart][2], PetscFree), by
+/* The coordinates of this rank's vertices ([v - vStart][dim], PetscFree), by
    evaluating each cell's coordinate field at the displacement element's
    reference nodes (continuous Q2 on quads, cellwise P2 on triangles: a
    vertex need not carry coordinates of its own). Node k of a cell is the
@@ -118,8 +118,9 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
   Vec             coords;
   PetscFE         cfe;
   PetscTabulation Tc;
-  PetscInt        vs, ve, cs, ce, nb, ncb;
-  PetscReal       ref[9 * 2];
+  PetscInt        vs, ve, cs, ce, nb, ncb, dim = b->dim, *numDof;
+  PetscReal       ref[27 * 3];
+  PetscDualSpace  sp;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
@@ -129,8 +130,10 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
   PetscCall(PetscFEGetDimension(cfe, &ncb));
   PetscCall(DMGetCoordinatesLocal(b->dm, &coords));
   PetscCall(FEGetReferenceNodes(b->feScalar, &nb, ref));
+  PetscCall(PetscFEGetDualSpace(b->feScalar, &sp));
+  PetscCall(PetscDualSpaceGetNumDof(sp, (const PetscInt **)&numDof)); /* the nodes at each depth: every depth but a triangle's or a tetrahedron's faces and cell */
   PetscCall(PetscFECreateTabulation(cfe, 1, nb, ref, 0, &Tc));
-  PetscCall(PetscCalloc1(2 * (ve - vs) + 2, xy));
+  PetscCall(PetscCalloc1(dim * (ve - vs) + dim, xy));
   for (PetscInt c = cs; c < ce; ++c) {
     PetscInt    *cl = NULL, ncl, k = 0, ncc;
     PetscScalar *xc = NULL;
@@ -140,13 +143,13 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
       const PetscInt p = cl[2 * i];
       PetscInt       depth;
       PetscCall(DMPlexGetPointDepth(b->dm, p, &depth));
-      if (depth == 2 && b->simplex) continue;
+      if (!numDof[depth]) continue;
       if (depth == 0)
-        for (PetscInt d = 0; d < 2; ++d) {
+        for (PetscInt d = 0; d < dim; ++d) {
           PetscReal x = 0.0, tmax = 0.0;
           PetscInt  fmax = -1;
           for (PetscInt f = 0; f < ncb; ++f) {
-            const PetscReal t = Tc->T[0][(k * ncb + f) * 2 + d];
+            const PetscReal t = Tc->T[0][(k * ncb + f) * dim + d];
             x += PetscRealPart(xc[f]) * t;
             if (PetscAbsReal(t) > tmax) {
               tmax = PetscAbsReal(t);
@@ -157,7 +160,7 @@ PetscErrorCode BodyVertexCoordinates(Body b, PetscReal **xy)
              itself, the same bits from every cell and on every rank (the
              anchors and the axis compare vertices across ranks) */
           if (fmax >= 0 && PetscAbsReal(tmax - 1.0) < 1e-10) x = PetscRealPart(xc[fmax]);
-          (*xy)[2 * (p - vs) + d] = x;
+          (*xy)[dim * (p - vs) + d] = x;
         }
       k++;
     }

@@ -42,39 +42,43 @@
 
 PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
 {
-  char      opt[5 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[2] = {NULL, NULL}, *control[2] = {NULL, NULL};
-  PetscReal v[2 * CONTACT_MAX_STAGES + 1] = {0};
-  PetscInt  nc = 2, nv, nctl = 2;
+  char      opt[5 * CONTACT_NAME_LEN], bprefix[4 * CONTACT_NAME_LEN], *comps[3] = {NULL, NULL, NULL}, *control[3] = {NULL, NULL, NULL};
+  PetscReal v[3 * CONTACT_MAX_STAGES + 1] = {0};
+  PetscInt  nc = 3, nv, nctl = 3;
   PetscBool setc, setv, setctl, help;
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(bprefix, sizeof(bprefix), "%sbc_%s_", prefix, bc->group));
-  bc->values[0] = bc->values[1] = 0.0;
+  bc->values[0] = bc->values[1] = bc->values[2] = 0.0;
   PetscOptionsBegin(b->comm, bprefix, "Dirichlet condition", NULL);
   help = (PetscBool)PetscOptionsObject->printhelp;
-  nv   = help ? 2 * b->nstages : 2 * CONTACT_MAX_STAGES + 1; /* -help shows two components a stage (PETSc lists nv entries where none are given) */
-  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y (default both)", NULL, comps, &nc, &setc));
+  nv   = help ? 2 * b->nstages : 3 * CONTACT_MAX_STAGES + 1; /* -help shows two components a stage (PETSc lists nv entries where none are given) */
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-components", "Constrained components: x, y, z (z in 3D; default every component of the body)", NULL, comps, &nc, &setc));
   PetscCall(PetscOptionsRealArray("-values", "Imposed displacement of each constrained component (a force where -control force; default 0); with -load_stages S, S values per component, stage-major: stage 1's components, then stage 2's (x1,y1,x2,y2,...)", NULL, v, &nv, &setv));
   PetscCall(PetscOptionsBool("-exact", "Impose the body's exact solution", NULL, bc->exact, &bc->exact, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-control", "Each component's control: displacement (the value is imposed) or force (the group moves rigidly so that its reaction is the value); default displacement", NULL, control, &nctl, &setctl));
   PetscOptionsEnd();
-  if (!setc) {
-    bc->ncomp    = 2;
-    bc->comps[0] = 0;
-    bc->comps[1] = 1;
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
+  bc->allComps = (PetscBool)!setc;
+  if (!setc) { /* every component of the body, whose dimension the mesh gives (BodyBCResolve): as many as the values (or controls) give a stage, else 2 until then */
+    const PetscInt S = b->nstages, per = setv ? (nv % S ? -1 : nv / S) : setctl ? nctl : 2;
+    PetscCheck(per == 2 || per == 3, b->comm, PETSC_ERR_USER_INPUT, "option %s: %" PetscInt_FMT " values: give one per component of the body (x,y in 2D, x,y,z in 3D) for each of the %" PetscInt_FMT " load stages, or name the components (-%scomponents)", setv ? opt : "-control", setv ? nv : nctl, S, bprefix);
+    bc->ncomp = per;
+    for (PetscInt c = 0; c < per; ++c) bc->comps[c] = c;
   } else {
     bc->ncomp = nc;
     for (PetscInt c = 0; c < nc; ++c) {
-      PetscBool isx, isy;
+      PetscBool isx, isy, isz;
       PetscCall(PetscStrcmp(comps[c], "x", &isx));
       PetscCall(PetscStrcmp(comps[c], "y", &isy));
-      PetscCheck(isx || isy, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y)", bprefix, comps[c]);
-      bc->comps[c] = isx ? 0 : 1;
+      PetscCall(PetscStrcmp(comps[c], "z", &isz));
+      PetscCheck(isx || isy || isz, b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: unknown component '%s' (use x, y, z)", bprefix, comps[c]);
+      bc->comps[c] = isx ? 0 : isy ? 1 : 2;
+      for (PetscInt d = 0; d < c; ++d) PetscCheck(bc->comps[d] != bc->comps[c], b->comm, PETSC_ERR_USER_INPUT, "option -%scomponents: component %s given twice", bprefix, comps[c]);
       PetscCall(PetscFree(comps[c]));
     }
   }
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%svalues", bprefix));
-  if (setv && !help) PetscCall(BodyStagedValues(b, opt, nv, bc->ncomp, v, 2, &bc->stage[0][0]));
+  if (setv && !help) PetscCall(BodyStagedValues(b, opt, nv, bc->ncomp, v, 3, &bc->stage[0][0]));
   for (PetscInt c = 0; c < bc->ncomp; ++c) bc->values[c] = bc->stage[b->nstages - 1][c]; /* the last stage's, until the solve sets another */
   PetscCheck(!bc->exact || b->hasExact, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: body %s has no -%sexact solution", bprefix, b->name, prefix);
   PetscCheck(!setctl || nctl == bc->ncomp, b->comm, PETSC_ERR_USER_INPUT, "option -%scontrol: %" PetscInt_FMT " entries for %" PetscInt_FMT " components", bprefix, nctl, bc->ncomp);
@@ -94,6 +98,26 @@ PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
   PetscFunctionReturn(0);
 }
 
+/* After the mesh: condition bc's components against the body's dimension
+   (the default, every component, now means dim of them). */
+static PetscErrorCode BodyBCResolve(Body b, BodyBC *bc)
+{
+  const char *axis[3] = {"x", "y", "z"};
+
+  PetscFunctionBeginUser;
+  if (bc->allComps && !bc->anchor) {
+    PetscBool given = PETSC_FALSE;
+    for (PetscInt c = 0; c < bc->ncomp; ++c)
+      for (PetscInt st = 0; st < b->nstages; ++st)
+        if (bc->stage[st][c] != 0 || bc->control[c]) given = PETSC_TRUE;
+    PetscCheck(!given || bc->ncomp == b->dim, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_values: %" PetscInt_FMT " components a stage for a %" PetscInt_FMT "D body (mesh %s)", b->name, bc->group, bc->ncomp, b->dim, b->msh);
+    bc->ncomp = b->dim;
+    for (PetscInt c = 0; c < b->dim; ++c) bc->comps[c] = c;
+  }
+  for (PetscInt c = 0; c < bc->ncomp; ++c) PetscCheck(bc->comps[c] < b->dim, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_components: component %s of a %" PetscInt_FMT "D body (mesh %s)", b->name, bc->group, axis[bc->comps[c]], b->dim, b->msh);
+  PetscFunctionReturn(0);
+}
+
 /* The displacement condition ctx = {b, bc} imposes at x (DMAddBoundary's
    function): bc's values in its components, or the exact solution. */
 static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
@@ -105,9 +129,9 @@ static PetscErrorCode BCValue(PetscInt dim, PetscReal t, const PetscReal x[], Pe
   (void)dim; (void)t;
   for (PetscInt i = 0; i < Nc; ++i) u[i] = 0.0;
   if (bc->exact) {
-    PetscReal ue[2];
+    PetscReal ue[3];
     b->exact.u(b->exact.params, x, ue);
-    for (PetscInt i = 0; i < Nc && i < 2; ++i) u[i] = ue[i];
+    for (PetscInt i = 0; i < Nc && i < 3; ++i) u[i] = ue[i];
   } else
     for (PetscInt i = 0; i < bc->ncomp; ++i) u[bc->comps[i]] = bc->values[i];
   return 0;
@@ -140,7 +164,8 @@ PetscErrorCode BodyConditionsSetUp(Body b)
     IS       is = NULL;
     PetscInt n = 0, gn;
 
-    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &bc->tag));
+    PetscCall(BodyBCResolve(b, bc));
+    PetscCall(BodyGetPhysicalTag(b, bc->group, b->dim - 1, &bc->tag));
     PetscCall(PetscSNPrintf(lname, sizeof(lname), "bc_%s", bc->group));
     PetscCall(DMCreateLabel(b->dm, lname));
     PetscCall(DMGetLabel(b->dm, lname, &bc->label));
@@ -154,7 +179,7 @@ PetscErrorCode BodyConditionsSetUp(Body b)
       PetscCall(ISDestroy(&is));
     }
     PetscCall(MPIU_Allreduce(&n, &gn, 1, MPIU_INT, MPI_SUM, b->comm));
-    PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: physical group '%s' of mesh %s has no edges", b->name, bc->group, b->msh);
+    PetscCheck(gn > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "body %s: physical group '%s' of mesh %s has no %s", b->name, bc->group, b->msh, b->dim == 3 ? "faces" : "edges");
     PetscCall(DMPlexLabelComplete(b->dm, bc->label));
     PetscCall(BodyBCImpose(b, i));
   }
@@ -373,6 +398,6 @@ PetscErrorCode BodyCheckConditions(Body b)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckForceControls(b));
-  for (PetscInt l = 0; l < b->nload; ++l) PetscCall(CheckLoad(b, l));
+  for (PetscInt l = 0; l < b->nload && b->dim == 2; ++l) PetscCall(CheckLoad(b, l)); /* a 3D body's face loads: not yet checked against its force controls */
   PetscFunctionReturn(0);
 }

@@ -7,6 +7,7 @@
    configuration, attached to each node's reference position. */
 #include <petscsf.h>
 #include "body.h"
+#include "element.h"
 
 static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
 {
@@ -24,10 +25,10 @@ static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, con
    rank's cells and the same on every rank that has the point. */
 static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal sr[])
 {
-  const PetscInt  nb = b->nb, np = b->pEnd - b->pStart;
+  const PetscInt  nb = b->nb, dim = b->dim, np = b->pEnd - b->pStart;
   PetscSF         sf;
   PetscInt        nroots;
-  PetscReal      *sp, refpts[9 * 2];
+  PetscReal      *sp, refpts[ELEMENT_MAX_DOFS];
   PetscTabulation Tn;
 
   PetscFunctionBeginUser;
@@ -36,29 +37,21 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
   PetscCall(BodyGetReferenceNodes(b, refpts));
   PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscInt *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
-    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * 2];
-    PetscReal u[9][2], dNdx[9 * 2];
+    const PetscInt *pts = &b->cpts[c * nb];
+    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * dim];
+    PetscReal u[ELEMENT_MAX_DOFS], dNdx[ELEMENT_MAX_DOFS];
 
-    for (PetscInt k = 0; k < nb; ++k) {
-      u[k][0] = PetscRealPart(ua[dof[k]]);
-      u[k][1] = PetscRealPart(ua[dof[k] + 1]);
-    }
+    ElementGather(b, c, ua, u);
     for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  gu[4] = {0, 0, 0, 0}, sig[4], s33, e3 = 0.0;
+      PetscReal  H[9], sig[9];
       PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
-      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * 2], dNdx);
-      for (PetscInt q = 0; q < nb; ++q) {
-        gu[0] += u[q][0] * dNdx[2 * q];
-        gu[1] += u[q][0] * dNdx[2 * q + 1];
-        gu[2] += u[q][1] * dNdx[2 * q];
-        gu[3] += u[q][1] * dNdx[2 * q + 1];
-      }
-      if (b->axisym) e3 = ElasticityHoopStrain(u[a][0], gu[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
-      b->mat->cauchy(b->param, gu, e3, sig, &s33);
+      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * dim], dNdx);
+      ElementFormGradient(dim, nb, u, dNdx, H);
+      if (b->axisym) H[8] = ElasticityHoopStrain(u[a * dim], H[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
+      b->mat->cauchy(b->param, H, sig);
       acc[0] += sig[0];
-      acc[1] += sig[3];
-      acc[2] += s33;
+      acc[1] += sig[4];
+      acc[2] += sig[8];
       acc[3] += sig[1];
       acc[4] += 1.0;
     }
@@ -95,24 +88,22 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
   PetscCall(VecGetArrayRead(Xl, &ua));
   PetscCall(BodyStressSums(b, ua, sr));
   for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscInt *pts = &b->cpts[c * nb], *dof = &b->cdof[c * nb];
-    PetscReal       e2 = 0.0;
+    const PetscInt *pts = &b->cpts[c * nb];
+    PetscReal       e2 = 0.0, u[ELEMENT_MAX_DOFS];
+
+    ElementGather(b, c, ua, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-      PetscReal        gu[4] = {0, 0, 0, 0}, sig[4], h[4], rec[4] = {0, 0, 0, 0}, ur = 0.0, e3 = 0.0;
+      const PetscReal *B = &b->B[iq * nb];
+      PetscReal        H[9], sig[9], h[4], rec[4] = {0, 0, 0, 0};
       for (PetscInt a = 0; a < nb; ++a) {
-        ur += B[a] * PetscRealPart(ua[dof[a]]);
         const PetscReal *st = &sr[5 * (pts[a] - b->pStart)];
-        gu[0] += PetscRealPart(ua[dof[a]]) * dN[2 * a];
-        gu[1] += PetscRealPart(ua[dof[a]]) * dN[2 * a + 1];
-        gu[2] += PetscRealPart(ua[dof[a] + 1]) * dN[2 * a];
-        gu[3] += PetscRealPart(ua[dof[a] + 1]) * dN[2 * a + 1];
         for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
       }
-      if (b->axisym) e3 = ElasticityHoopStrain(ur, gu[0], b->xq[(c * nq + iq) * 2]);
-      b->mat->cauchy(b->param, gu, e3, sig, &h[2]);
+      ElementPointGradient(b, c, iq, u, NULL, H);
+      b->mat->cauchy(b->param, H, sig);
       h[0] = sig[0];
-      h[1] = sig[3];
+      h[1] = sig[4];
+      h[2] = sig[8];
       h[3] = sig[1];
       e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
     }
@@ -124,34 +115,42 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
 }
 
 /* The largest principal Green-Lagrange strain, in magnitude, over every
-   rank's quadrature points: E = (F^T F - I)/2 with F = I + [gu 0; 0 e3],
-   its in-plane block's eigenvalues and E33 = e3 + e3^2/2 (the hoop one in
-   r-z, 0 in plane strain). The measure of a linear body's model error:
-   small-strain elasticity drops the quadratic terms of E. */
+   rank's quadrature points: E = (F^T F - I)/2 with F = I + H (material.h).
+   The measure of a linear body's model error: small-strain elasticity
+   drops the quadratic terms of E. */
+/* The largest eigenvalue, in magnitude, of a symmetric 3 x 3 E: where row
+   and column 2 are off-diagonal-free (plane strain, r-z), the (0, 1)
+   block's |mean| + radius and |E_22|; else the trigonometric solution of
+   the characteristic cubic (Smith 1961), its largest and smallest roots. */
+static PetscReal SymmetricMaxAbsEigenvalue(const PetscReal E[9])
+{
+  if (E[2] == 0.0 && E[5] == 0.0) {
+    const PetscReal mean = 0.5 * (E[0] + E[4]), rad = PetscSqrtReal(0.25 * PetscSqr(E[0] - E[4]) + E[1] * E[1]);
+    return PetscMax(PetscAbsReal(mean) + rad, PetscAbsReal(E[8]));
+  } else {
+    const PetscReal q = (E[0] + E[4] + E[8]) / 3.0, p1 = E[1] * E[1] + E[2] * E[2] + E[5] * E[5];
+    const PetscReal p = PetscSqrtReal((PetscSqr(E[0] - q) + PetscSqr(E[4] - q) + PetscSqr(E[8] - q) + 2.0 * p1) / 6.0);
+    const PetscReal b0 = (E[0] - q) / p, b4 = (E[4] - q) / p, b8 = (E[8] - q) / p, b1 = E[1] / p, b2 = E[2] / p, b5 = E[5] / p;
+    const PetscReal r   = 0.5 * (b0 * (b4 * b8 - b5 * b5) - b1 * (b1 * b8 - b5 * b2) + b2 * (b1 * b5 - b4 * b2));
+    const PetscReal phi = PetscAcosReal(PetscMax(-1.0, PetscMin(1.0, r))) / 3.0;
+    return PetscMax(PetscAbsReal(q + 2.0 * p * PetscCosReal(phi)), PetscAbsReal(q + 2.0 * p * PetscCosReal(phi + 2.0 * PETSC_PI / 3.0)));
+  }
+}
+
 /* The largest principal Green-Lagrange strain, in magnitude, at quadrature
-   point iq of cell c: E_IJ = (g_IJ + g_JI + g_kI g_kJ) / 2 in the plane, and
-   in r-z the hoop strain's e3 + e3^2 / 2 too. */
+   point iq of cell c: E_IJ = (H_IJ + H_JI + H_kI H_kJ) / 2 of the 3 x 3
+   displacement gradient (in r-z E_22 = e3 + e3^2 / 2 of the hoop strain). */
 static PetscReal BodyStrainAt(Body b, const PetscScalar ua[], PetscInt c, PetscInt iq)
 {
-  const PetscInt   nb = b->nb, nq = b->nq, *dof = &b->cdof[c * nb];
-  const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * 2], *B = &b->B[iq * nb];
-  PetscReal        g[4] = {0, 0, 0, 0}, ur = 0.0, e3 = 0.0, E[3], mean, rad;
+  PetscReal u[ELEMENT_MAX_DOFS], H[9], E[9];
 
-  for (PetscInt a = 0; a < nb; ++a) {
-    const PetscReal ux = PetscRealPart(ua[dof[a]]), uy = PetscRealPart(ua[dof[a] + 1]);
-    g[0] += ux * dN[2 * a];
-    g[1] += ux * dN[2 * a + 1];
-    g[2] += uy * dN[2 * a];
-    g[3] += uy * dN[2 * a + 1];
-    ur += B[a] * ux;
-  }
-  if (b->axisym) e3 = ElasticityHoopStrain(ur, g[0], b->xq[(c * nq + iq) * 2]);
-  E[0] = g[0] + 0.5 * (g[0] * g[0] + g[2] * g[2]);
-  E[1] = g[3] + 0.5 * (g[1] * g[1] + g[3] * g[3]);
-  E[2] = 0.5 * (g[1] + g[2] + g[0] * g[1] + g[2] * g[3]);
-  mean = 0.5 * (E[0] + E[1]);
-  rad  = PetscSqrtReal(0.25 * PetscSqr(E[0] - E[1]) + E[2] * E[2]);
-  return PetscMax(PetscAbsReal(mean) + rad, PetscAbsReal(e3 + 0.5 * e3 * e3));
+  ElementGather(b, c, ua, u);
+  ElementPointGradient(b, c, iq, u, NULL, H);
+  for (PetscInt P = 0; P < 3; ++P)
+    for (PetscInt Q = 0; Q < 3; ++Q) {
+      E[P * 3 + Q] = P == Q ? H[P * 4] + 0.5 * (H[P] * H[P] + H[3 + P] * H[3 + P] + H[6 + P] * H[6 + P]) : 0.5 * (H[P * 3 + Q] + H[Q * 3 + P] + H[P] * H[Q] + H[3 + P] * H[3 + Q] + H[6 + P] * H[6 + Q]);
+    }
+  return SymmetricMaxAbsEigenvalue(E);
 }
 
 PetscErrorCode BodyComputeMaxStrain(Body b, Vec Xl, PetscReal *emax)
@@ -312,7 +311,11 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
     au[2 * i]     = ua[off];
     au[2 * i + 1] = ua[off + 1];
     for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
-    av[i]  = ElasticityVonMises(st[0] / st[4], st[1] / st[4], st[2] / st[4], st[3] / st[4]);
+    {
+      const PetscReal xx = st[0] / st[4], yy = st[1] / st[4], zz = st[2] / st[4], xy = st[3] / st[4];
+      const PetscReal sg[9] = {xx, xy, 0.0, xy, yy, 0.0, 0.0, 0.0, zz};
+      av[i] = ElasticityVonMises(sg);
+    }
     um2    = PetscSqr(PetscRealPart(ua[off])) + PetscSqr(PetscRealPart(ua[off + 1]));
     loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
     loc[1] += um2;

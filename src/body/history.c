@@ -43,8 +43,7 @@ static void BodyTakeStageValues(Body b, PetscInt s)
   }
   for (PetscInt l = 0; l < b->nload; ++l) {
     BodyLoad *L = &b->load[l];
-    L->traction[0] = s > 0 ? L->stageTraction[s - 1][0] : 0.0;
-    L->traction[1] = s > 0 ? L->stageTraction[s - 1][1] : 0.0;
+    for (PetscInt c = 0; c < 3; ++c) L->traction[c] = s > 0 ? L->stageTraction[s - 1][c] : 0.0;
     L->pressure    = s > 0 ? L->stagePressure[s - 1] : 0.0;
   }
 }

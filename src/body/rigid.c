@@ -5,19 +5,140 @@
    the constraint Gram matrix M, the sum of the rows' outer products (3 x 3,
    coordinates centred and scaled for conditioning), has the free motions
    as its null space, so 3 - rank M of them are free. anchors.c adds rows to
-   it until none is. */
+   it until none is. A 3D body has six, r(x) = t + w x x (three
+   translations, three rotations), counted alike from a 6 x 6 Gram matrix
+   (BodyCountFreeRigidModes3D). */
 #include "rigid.h"
 
+/* The rank of the n x n symmetric matrix M (Gaussian elimination with full
+   pivoting, pivots below 1e-10 of its trace taken as zero). */
+static PetscInt RigidRankN(PetscInt n, const PetscReal M[])
+{
+  PetscReal A[36], tol = 0;
+  PetscInt  rank = 0;
+  PetscBool used[6] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+
+  for (PetscInt k = 0; k < n * n; ++k) A[k] = M[k];
+  for (PetscInt k = 0; k < n; ++k) tol += M[k * n + k];
+  tol *= 1e-10;
+  for (PetscInt step = 0; step < n; ++step) {
+    PetscInt  pr = -1, pc = -1;
+    PetscReal best = tol;
+    for (PetscInt a = 0; a < n; ++a)
+      for (PetscInt e = 0; e < n; ++e)
+        if (!used[a] && PetscAbsReal(A[n * a + e]) > best) {
+          best = PetscAbsReal(A[n * a + e]);
+          pr   = a;
+          pc   = e;
+        }
+    if (pr < 0) break;
+    used[pr] = PETSC_TRUE;
+    ++rank;
+    for (PetscInt a = 0; a < n; ++a) {
+      PetscReal f;
+      if (used[a]) continue;
+      f = A[n * a + pc] / A[n * pr + pc];
+      for (PetscInt e = 0; e < n; ++e) A[n * a + e] -= f * A[n * pr + e];
+    }
+  }
+  return rank;
+}
+
+/* A 3D body's constrained component c at x (centred, scaled) removes the row
+   e_c . d(t + w x x)/d(t, w) of its six rigid motions. */
+static void RigidGramAddRow3D(PetscReal M[36], PetscInt c, const PetscReal x[3])
+{
+  PetscReal r[6] = {0, 0, 0, 0, 0, 0};
+
+  r[c] = 1.0;
+  if (c == 0) { r[4] = x[2]; r[5] = -x[1]; }
+  if (c == 1) { r[3] = -x[2]; r[5] = x[0]; }
+  if (c == 2) { r[3] = x[1]; r[4] = -x[0]; }
+  for (PetscInt a = 0; a < 6; ++a)
+    for (PetscInt e = 0; e < 6; ++e) M[6 * a + e] += r[a] * r[e];
+}
+
+/* BodyCountFreeRigidModes of a 3D body: 6 - rank of its Gram matrix. */
+static PetscErrorCode BodyCountFreeRigidModes3D(Body b, PetscInt *nfree)
+{
+  PetscReal    lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[3], ghi[3], c[3], L = 0;
+  PetscReal    M[36] = {0}, Mg[36];
+  PetscSection s;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
+    if (!dof) continue;
+    for (PetscInt d = 0; d < 3; ++d) {
+      lo[d] = PetscMin(lo[d], b->xpoint[3 * p + d]);
+      hi[d] = PetscMax(hi[d], b->xpoint[3 * p + d]);
+    }
+  }
+  PetscCall(MPIU_Allreduce(lo, glo, 3, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCall(MPIU_Allreduce(hi, ghi, 3, MPIU_REAL, MPIU_MAX, b->comm));
+  for (PetscInt d = 0; d < 3; ++d) {
+    c[d] = 0.5 * (glo[d] + ghi[d]);
+    L    = PetscMax(L, ghi[d] - glo[d]);
+  }
+  if (!(L > 0)) L = 1.0;
+  for (PetscInt i = 0; i < b->nbc; ++i) {
+    BodyBC         *bc = &b->bc[i];
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n;
+
+    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
+    if (!is) continue;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt j = 0; j < n; ++j) {
+      PetscInt  dof, q = pts[j] - b->pStart;
+      PetscReal x[3];
+      PetscCall(PetscSectionGetDof(s, pts[j], &dof));
+      if (!dof) continue;
+      for (PetscInt d = 0; d < 3; ++d) x[d] = (b->xpoint[3 * q + d] - c[d]) / L;
+      for (PetscInt k = 0; k < bc->ncomp; ++k) RigidGramAddRow3D(M, bc->comps[k], x);
+    }
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscCall(MPIU_Allreduce(M, Mg, 36, MPIU_REAL, MPIU_SUM, b->comm));
+  *nfree = 6 - RigidRankN(6, Mg);
+  PetscFunctionReturn(0);
+}
+
 /* The body's rigid motions (translations in x and y, the rotation about the
-   origin u = (-y, x)) at the unconstrained dofs this rank owns in the joined
-   vector (rows rstart..rend of l2b's numbering), added into modes[0..2], the
-   local parts of three joined vectors. */
-PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[3])
+   origin u = (-y, x); in 3D the three translations and the rotations e_k x
+   x about the axes) at the unconstrained dofs this rank owns in the joined
+   vector (rows rstart..rend of l2b's numbering), added into modes[0..2]
+   (modes[0..5] in 3D), the local parts of joined vectors. */
+PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[])
 {
   PetscSection s;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
+  if (b->dim == 3) {
+    for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+      PetscInt         dof, off;
+      const PetscReal *x = &b->xpoint[3 * (p - b->pStart)];
+
+      PetscCall(PetscSectionGetDof(s, p, &dof));
+      PetscCall(PetscSectionGetOffset(s, p, &off));
+      for (PetscInt d = 0; d < PetscMin(dof, 3); ++d) {
+        const PetscInt g = b->l2b[off + d];
+        if (g < rstart || g >= rend) continue;
+        modes[d][g - rstart] += 1.0;
+        /* (e_k x x)_d for k = 0, 1, 2 */
+        modes[3][g - rstart] += d == 1 ? -x[2] : d == 2 ? x[1] : 0.0;
+        modes[4][g - rstart] += d == 0 ? x[2] : d == 2 ? -x[0] : 0.0;
+        modes[5][g - rstart] += d == 0 ? -x[1] : d == 1 ? x[0] : 0.0;
+      }
+    }
+    PetscFunctionReturn(0);
+  }
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
     PetscInt        dof, off;
     const PetscReal x = b->xpoint[2 * (p - b->pStart)], y = b->xpoint[2 * (p - b->pStart) + 1];
@@ -47,6 +168,10 @@ PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
   PetscSection s;
 
   PetscFunctionBeginUser;
+  if (b->dim == 3) {
+    PetscCall(BodyCountFreeRigidModes3D(b, nfree));
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
     PetscInt dof;
@@ -113,30 +238,5 @@ void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
 
 PetscInt BodyRigidRank(const PetscReal M[9])
 {
-  PetscReal Mg[9], tol = 1e-10 * (M[0] + M[4] + M[8]);
-  PetscInt  rank = 0;
-  PetscBool used[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-
-  for (PetscInt k = 0; k < 9; ++k) Mg[k] = M[k];
-  for (PetscInt step = 0; step < 3; ++step) {
-    PetscInt  pr = -1, pc = -1;
-    PetscReal best = tol;
-    for (PetscInt a = 0; a < 3; ++a)
-      for (PetscInt e = 0; e < 3; ++e)
-        if (!used[a] && PetscAbsReal(Mg[3 * a + e]) > best) {
-          best = PetscAbsReal(Mg[3 * a + e]);
-          pr   = a;
-          pc   = e;
-        }
-    if (pr < 0) break;
-    used[pr] = PETSC_TRUE;
-    ++rank;
-    for (PetscInt a = 0; a < 3; ++a) {
-      PetscReal f;
-      if (used[a]) continue;
-      f = Mg[3 * a + pc] / Mg[3 * pr + pc];
-      for (PetscInt e = 0; e < 3; ++e) Mg[3 * a + e] -= f * Mg[3 * pr + e];
-    }
-  }
-  return rank;
+  return RigidRankN(3, M);
 }

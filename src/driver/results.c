@@ -342,29 +342,32 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
   PetscFunctionReturn(0);
 }
 
-/* The reaction of every Dirichlet group, R[2 k] and R[2 k + 1] for the k-th
-   (the bodies' groups in order), keyed body:group; each entry after indent,
-   the closing brace after end. */
+/* The reaction of every Dirichlet group, R[3 k .. 3 k + 2] for the k-th
+   (the bodies' groups in order), keyed body:group, as many components as
+   the scene's dimension; each entry after indent, the closing brace after
+   end. */
 static void JSONReactionSet(FILE *fp, Problem p, const char sep[], const char indent[], const char end[], const PetscReal R[])
 {
+  const PetscInt nd = !p->bodies[0]->rigid && p->bodies[0]->dim == 3 ? 3 : 2;
+
   fprintf(fp, "%s\"reactions\": {", sep);
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
     for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, ++k) {
       char key[2 * CONTACT_NAME_LEN + 2];
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group);
       fprintf(fp, "%s", k ? "," : "");
-      ContactJSONKeyPair(fp, indent, key, R + 2 * k);
+      ContactJSONKeyVector(fp, indent, key, nd, R + 3 * k);
     }
   fprintf(fp, "%s}", end);
 }
 
 static PetscErrorCode JSONReactions(FILE *fp, Problem p)
 {
-  PetscReal R[2 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
+  PetscReal R[3 * CONTACT_MAX_BODIES * CONTACT_MAX_BC];
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 2) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 2));
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 3) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 3));
   JSONReactionSet(fp, p, ",\n  ", "\n    ", "\n  ", R);
   PetscFunctionReturn(0);
 }
@@ -380,7 +383,7 @@ static void JSONLoadPath(FILE *fp, Problem p)
   for (PetscInt k = 0; k < lp->n; ++k) {
     ContactJSONKeyReal(fp, k ? ",\n    {" : "\n    {", "load", lp->load[k]);
     ContactJSONKeyReal(fp, ", ", "energy", lp->energy[k]);
-    JSONReactionSet(fp, p, ", ", " ", " ", lp->reaction + 2 * k * lp->ngroups);
+    JSONReactionSet(fp, p, ", ", " ", " ", lp->reaction + 3 * k * lp->ngroups);
     fprintf(fp, "}");
   }
   fprintf(fp, "\n  ]");
@@ -492,7 +495,7 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
       fprintf(fp, "}");
       continue;
     }
-    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->simplex ? "Tri6" : "Quad9");
+    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->dim == 3 ? (b->simplex ? "Tet10" : "Hex27") : (b->simplex ? "Tri6" : "Quad9"));
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
     fprintf(fp, ", \"material\": \"%s\"", b->mat->name);

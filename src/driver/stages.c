@@ -29,7 +29,7 @@ static PetscErrorCode StagesRecordFigures(Problem p, PetscInt k, PetscBool react
   PetscFunctionBeginUser;
   for (PetscInt i = 0, g = 0; i < p->nbodies; ++i) {
     if (react) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, g += 2) PetscCall(PetscArraycpy(&e->reaction[k - 1][g], p->bodies[i]->bc[j].reaction, 2));
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, g += 3) PetscCall(PetscArraycpy(&e->reaction[k - 1][g], p->bodies[i]->bc[j].reaction, 3));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscInt   n = 0;

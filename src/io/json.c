@@ -13,6 +13,16 @@ void ContactJSONKeyReal(FILE *fp, const char sep[], const char key[], PetscReal 
   ContactJSONReal(fp, v);
 }
 
+void ContactJSONKeyVector(FILE *fp, const char sep[], const char key[], PetscInt n, const PetscReal v[])
+{
+  fprintf(fp, "%s\"%s\": [", sep, key);
+  for (PetscInt k = 0; k < n; ++k) {
+    if (k) fprintf(fp, ", ");
+    ContactJSONReal(fp, v[k]);
+  }
+  fprintf(fp, "]");
+}
+
 void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const PetscReal v[2])
 {
   fprintf(fp, "%s\"%s\": [", sep, key);

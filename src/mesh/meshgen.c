@@ -161,7 +161,7 @@ static PetscErrorCode GeoCheckParse(char *argv[], PetscInt argc, const char geo[
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(log, sizeof(log), "%s.parse%d.log", msh, (int)getpid()));
-  argv[1]        = (char *)"-parse_and_exit"; /* in place of -2 */
+  argv[1]        = (char *)"-parse_and_exit"; /* in place of -3 */
   argv[argc]     = (char *)geo;
   argv[argc + 1] = NULL;
   r              = GmshRun(argv, log, log, NULL, NULL);
@@ -210,9 +210,9 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], 
     PetscCall(PetscStrlen(base, &l));
     if (l > 4 && !strcmp(base + l - 4, ".geo")) base[l - 4] = 0;
     PetscCall(FormatShortest((double)h, hs, sizeof(hs)));
-    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -2 -v 2 -format msh22 -setnumber h %s", hs));
+    PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "gmsh -3 -v 2 -format msh22 -setnumber h %s", hs));
     PetscCheck(nparams <= 16, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: at most 16 geometry parameters, got %" PetscInt_FMT, geo, nparams);
-    for (const char *a = "gmsh\0-2\0-v\0" "2\0-format\0msh22\0-setnumber\0h\0"; *a; a += strlen(a) + 1) argv[argc++] = (char *)a;
+    for (const char *a = "gmsh\0-3\0-v\0" "2\0-format\0msh22\0-setnumber\0h\0"; *a; a += strlen(a) + 1) argv[argc++] = (char *)a;
     argv[argc++] = hs;
     PetscCall(PetscSNPrintf(tag, sizeof(tag), "h%s", hs));
     for (PetscInt i = 0; i < nparams; ++i) {

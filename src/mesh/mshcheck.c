@@ -15,14 +15,18 @@
      other versions are refused with a hint;
    - every count an integer in [0, 1e8] that matches the lines that follow;
      every field a well-formed integer or finite real, nothing after the last;
-   - node tags in [1, 1e8] and unique; element types the reader supports (no 3D
-     type), with the number of tags and nodes their type implies, nodes that
+   - node tags in [1, 1e8] and unique; element types the reader supports (of
+     3D types, the second-order Tet10 and Hex27 alone; another 3D type is
+     refused by name), with the number of tags and nodes their type implies, nodes that
      exist and are not repeated; physical tags nonnegative; $PhysicalNames
      entries `dim tag "name"` (dim 0-3, tag > 0, 1-127 printable characters);
-   - and what the reader and the solver need of the topology: at least one 2D
-     element and a single 2D element type, no edge shared by more than two 2D
+   - and what the reader and the solver need of the topology. A mesh with 3D
+     elements is a 3D body's: a single 3D element type (its cells; the 2D
+     elements are faces of its physical surfaces). Otherwise: at least one
+     2D element and a single 2D element type, no edge shared by more than two 2D
      elements (duplicated or overlapping cells), every line element an edge of
-     a 2D element and every point element a corner of one.
+     a 2D element and every point element a corner of one, and every node in
+     the plane z = 0.
 
    Nothing is allocated from a count: arrays grow with the lines actually read
    and a line holds at most MSH_LINE_MAX characters, so memory is bounded by the
@@ -54,10 +58,10 @@ typedef enum {
   MSH_OPEN,
   MSH_READ,
   MSH_BAD,
-  MSH_3D /* a 3D mesh: 3D elements, or nodes off the plane z = 0 (a 3D body's surfaces meshed by gmsh -2) */
+  MSH_3D /* a 2D mesh off the plane z = 0 (a 3D body's surfaces without its volume), or a rigid body's 3D mesh */
 } MshVerdict;
 
-/* An element type of dimension 0-2 that PETSc's reader supports (its GmshCellTable). */
+/* An element type that PETSc's reader supports (its GmshCellTable) and the solver takes. */
 typedef struct {
   int         type, dim, nverts, nnodes;
   const char *shape;
@@ -96,10 +100,26 @@ static const MshType mshTypes[] = {
   {49, 2, 4, 81, "quadrilateral"},
   {50, 2, 4, 100, "quadrilateral"},
   {51, 2, 4, 121, "quadrilateral"},
+  {11, 3, 4, 10, "tetrahedron"},
+  {12, 3, 8, 27, "hexahedron"},
 };
 
-/* The 3D types of PETSc's table: known to the reader, but the solver is 2D. */
-static const int msh3DTypes[] = {4, 11, 29, 30, 31, 71, 72, 73, 74, 75, 5, 12, 17, 92, 93, 94, 95, 96, 97, 98, 6, 13, 90, 91, 106, 107, 108, 109, 110, 7, 14, 118, 119, 120, 121, 122, 123, 124};
+/* The other 3D types of PETSc's table: known to the reader, not to the solver
+   (a 3D body is of second-order Tet10 or Hex27 cells), by shape. */
+static const int msh3DTypes[] = {4, 29, 30, 31, 71, 72, 73, 74, 75, 5, 17, 92, 93, 94, 95, 96, 97, 98, 6, 13, 90, 91, 106, 107, 108, 109, 110, 7, 14, 118, 119, 120, 121, 122, 123, 124};
+
+static const char *Msh3DShape(long type)
+{
+  switch (type) {
+  case 4: return "4-node (first-order) tetrahedron";
+  case 5: return "8-node (first-order) hexahedron";
+  case 17: return "20-node (serendipity) hexahedron";
+  case 6: case 13: case 90: case 91: case 106: case 107: case 108: case 109: case 110: return "prism";
+  case 7: case 14: case 118: case 119: case 120: case 121: case 122: case 123: case 124: return "pyramid";
+  case 29: case 30: case 31: case 71: case 72: case 73: case 74: case 75: return "tetrahedron of order above 2";
+  default: return "hexahedron of order above 2";
+  }
+}
 
 /* Open-addressing hash table from nonzero 64-bit keys to int values. */
 typedef struct {
@@ -135,6 +155,11 @@ typedef struct {
   int           *seg;   /* per line element: 2 corners, element number, line */
   int           *point; /* per point element: node, element number, line */
   const MshType *cellType; /* type of the first 2D element */
+  const MshType *solidType; /* type of the first 3D element */
+  long           nsolids, solidTypeLine, capsolids;
+  int           *solid; /* per 3D element: 8 corners (the last 4 -1 on a tetrahedron), element number, line */
+  long           offPlaneLine; /* the first node off the plane z = 0 (0: none), at z */
+  double         offPlaneZ;
   long           cellTypeLine, endElementsLine;
   int            curves; /* a rigid body's mesh: its lines are what it needs, cells are ignored */
 } MshCheck;
@@ -592,7 +617,7 @@ static const MshType *MshTypeOf(MshCheck *c, long type)
     if (mshTypes[i].type == type) return &mshTypes[i];
   for (size_t i = 0; i < sizeof(msh3DTypes) / sizeof(msh3DTypes[0]); ++i)
     if (msh3DTypes[i] == type) {
-      MshFail3D(c, "Gmsh element type %ld is a 3D element", type);
+      MshFail(c, "Gmsh element type %ld, a %s: a 3D body takes second-order Tet10 (type 11) or Hex27 (type 12) cells (Mesh.ElementOrder = 2; Mesh.SecondOrderIncomplete = 0)", type, Msh3DShape(type));
       return NULL;
     }
   MshFail(c, "unknown or unsupported Gmsh element type %ld", type);
@@ -624,7 +649,21 @@ static int MshAddElement(MshCheck *c, const MshType *t, long id, const int idx[]
     if (c->stamp[idx[i]] == (int)c->nelems) return MshFail(c, "element %ld lists node %d twice", id, MshNodeTag(c, idx[i]));
     c->stamp[idx[i]] = (int)c->nelems;
   }
-  if (t->dim == 2) {
+  if (t->dim == 3) {
+    if (!c->solidType) {
+      c->solidType     = t;
+      c->solidTypeLine = c->lineno;
+    } else if (t != c->solidType)
+      return MshFail(c, "element %ld is a %d-node %s, but the 3D element at line %ld is a %d-node %s; a body has one cell type", id, t->nnodes, t->shape, c->solidTypeLine, c->solidType->nnodes, c->solidType->shape);
+    {
+      int *e;
+      if (MshGrow(c, &c->solid, &c->capsolids, c->nsolids, 10)) return 1;
+      e = c->solid + 10 * c->nsolids++;
+      for (int i = 0; i < 8; ++i) e[i] = i < t->nverts ? idx[i] : -1;
+      e[8] = (int)id;
+      e[9] = (int)c->lineno;
+    }
+  } else if (t->dim == 2) {
     int *e;
     if (!c->cellType) {
       c->cellType     = t;
@@ -710,7 +749,6 @@ static int MshReadPhysicalNames(MshCheck *c)
     if (q == s + 2) return MshFail(c, "physical name of tag %ld is empty", tag);
     if (q - (s + 2) > MSH_NAME_MAX) return MshFail(c, "physical name of tag %ld is longer than %d characters", tag, MSH_NAME_MAX);
     if (MshEnd(c, q + 1, "physical name")) return 1;
-    if (dim == 3) return MshFail3D(c, "a physical volume, %.*s", (int)(q - s), s + 1);
   }
   return MshExpectEnd(c, "$PhysicalNames", "$EndPhysicalNames", n, "names");
 }
@@ -730,7 +768,6 @@ static int MshReadEntities(MshCheck *c)
     total += count[d];
   }
   if (MshEnd(c, s, "number of volumes")) return 1;
-  if (count[3] > 0) return MshFail3D(c, "%ld volume%s in $Entities", count[3], count[3] > 1 ? "s" : "");
   for (int d = 0; d < 4; ++d) {
     for (long k = 0; k < count[d]; ++k) {
       long   tag, nphys, nbound, v;
@@ -761,8 +798,8 @@ static int MshReadEntities(MshCheck *c)
   return MshExpectEnd(c, "$Entities", "$EndEntities", total, "entities");
 }
 
-/* The coordinates "x y z" of a node: z must be 0, a 2D mesh's plane (a 3D
-   body's surfaces, meshed by gmsh -2, leave it). */
+/* The coordinates "x y z" of a node; the first off the plane z = 0 is
+   recorded (a 2D mesh must lie in it). */
 static int MshCoordinates(MshCheck *c, const char **s)
 {
   const char *z;
@@ -770,7 +807,10 @@ static int MshCoordinates(MshCheck *c, const char **s)
   if (MshReal(c, s, "x") || MshReal(c, s, "y")) return 1;
   z = MshSkip(*s);
   if (MshReal(c, s, "z") || MshEnd(c, *s, "coordinates")) return 1;
-  if (strtod(z, NULL) != 0.0) return MshFail3D(c, "at z = %g, off the plane z = 0", strtod(z, NULL));
+  if (strtod(z, NULL) != 0.0 && !c->offPlaneLine) {
+    c->offPlaneLine = c->lineno;
+    c->offPlaneZ    = strtod(z, NULL);
+  }
   return 0;
 }
 
@@ -958,6 +998,57 @@ static int MshReadTrailer(MshCheck *c)
   return r < 0;
 }
 
+/* The key of a face from its corners v[n] (n = 3 or 4): its three least,
+   which name it in a mesh whose faces are not repeated. */
+static uint64_t MshFaceKey(const int v[], int n)
+{
+  int s[4];
+
+  for (int i = 0; i < n; ++i) s[i] = v[i];
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && s[j - 1] > s[j]; --j) {
+      const int t = s[j];
+      s[j]        = s[j - 1];
+      s[j - 1]    = t;
+    }
+  return ((uint64_t)(uint32_t)s[0] * 0x100000001B3ULL ^ (uint64_t)(uint32_t)s[1]) * 0x100000001B3ULL + (uint64_t)(uint32_t)s[2] * 0x9E3779B97F4A7C15ULL + 1;
+}
+
+/* A 3D mesh's topology: no face shared by more than two cells, every 2D
+   element a face of a cell (PETSc's reader finds each 2D element's face
+   among the cells' and stops where there is none). Gmsh's corner order:
+   a tetrahedron's faces are (0,1,2), (0,1,3), (0,2,3), (1,2,3); a
+   hexahedron's, bottom 0-3 and top 4-7, its six sides. */
+static int MshCheckSolids(MshCheck *c)
+{
+  static const int tf[4][4] = {{0, 1, 2, -1}, {0, 1, 3, -1}, {0, 2, 3, -1}, {1, 2, 3, -1}};
+  static const int hf[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  MshHash          faces = {NULL, NULL, 0, 0, 0};
+  int              fail  = 0;
+
+  if (MshHashReserve(&faces, (size_t)(6 * c->nsolids + 16))) return MshFailAt(c, c->endElementsLine, "out of memory");
+  for (long e = 0; e < c->nsolids && !fail; ++e) {
+    const int *v   = c->solid + 10 * e;
+    const int  hex = v[4] >= 0, nf = hex ? 6 : 4, nv = hex ? 4 : 3;
+    for (int f = 0; f < nf && !fail; ++f) {
+      int  w[4], *cnt;
+      for (int i = 0; i < nv; ++i) w[i] = v[hex ? hf[f][i] : tf[f][i]];
+      if (!(cnt = MshHashPut(&faces, MshFaceKey(w, nv)))) {
+        fail = MshFailAt(c, v[9], "out of memory");
+        break;
+      }
+      if (*cnt < 0) *cnt = 0;
+      if (++*cnt > 2) fail = MshFailAt(c, v[9], "element %d: a face is shared by more than two elements (duplicate or overlapping elements)", v[8]);
+    }
+  }
+  for (long e = 0; e < c->ncells && !fail; ++e) {
+    const int *v = c->cell + 6 * e;
+    if (!MshHashGet(&faces, MshFaceKey(v, v[3] < 0 ? 3 : 4))) fail = MshFailAt(c, v[5], "2D element %d is not a face of any 3D element", v[4]);
+  }
+  MshHashFree(&faces);
+  return fail;
+}
+
 /* What PETSc's reader and the solver need of the topology: 2D elements, edges
    shared by at most two of them, line elements on their edges, point elements
    on their corners. */
@@ -967,7 +1058,18 @@ static int MshCheckTopology(MshCheck *c)
   char   *corner = NULL;
   int     fail   = 0;
 
+  if (c->curves && c->nsolids) {
+    c->lineno  = c->solidTypeLine;
+    c->ctxName = NULL;
+    return MshFail3D(c, "a rigid body's mesh with %s cells: rigid bodies are 2D (curves)", c->solidType->shape);
+  }
   if (c->curves) return c->nsegs ? 0 : MshFailAt(c, c->endElementsLine, "no line element in $Elements; a rigid body needs its curves");
+  if (c->nsolids) return MshCheckSolids(c); /* a 3D body: its cells are one type; its 2D elements are its physical surfaces' faces */
+  if (c->offPlaneLine) {
+    c->lineno  = c->offPlaneLine;
+    c->ctxName = NULL;
+    return MshFail3D(c, "a node at z = %g, off the plane z = 0, and no 3D element", c->offPlaneZ);
+  }
   if (!c->ncells) return MshFailAt(c, c->endElementsLine, "no 2D element (triangle or quadrilateral) in $Elements; the solver needs a 2D mesh");
   corner = (char *)calloc((size_t)c->nnodes, 1);
   if (!corner || MshHashReserve(&edges, (size_t)(2 * c->ncells + 16))) {
@@ -1068,6 +1170,7 @@ static MshVerdict MshCheckPath(const char path[], int curves, char msg[], size_t
   free(c.nodeMap);
   free(c.stamp);
   free(c.cell);
+  free(c.solid);
   free(c.seg);
   free(c.point);
   MshHashFree(&c.nodes);
@@ -1097,7 +1200,7 @@ static PetscErrorCode MeshCheck(MPI_Comm comm, const char body[], const char pat
   }
   PetscCallMPI(MPI_Bcast(&verdict, 1, MPI_INT, 0, comm));
   if (verdict != MSH_OK) PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, comm));
-  PetscCheck(verdict != MSH_3D, comm, PETSC_ERR_USER_INPUT, "body %s: the mesh is 3D (%s): 3D bodies are not supported yet; a body is a 2D section in the plane z = 0 (plane strain, or with -axisymmetric a meridian section), its .geo without a Volume", body, msg);
+  PetscCheck(verdict != MSH_3D, comm, PETSC_ERR_USER_INPUT, "body %s: %s: a 2D body is a section in the plane z = 0 (plane strain, or with -axisymmetric a meridian section); a 3D body's .geo has a Volume, meshed by Tet10 or Hex27 cells", body, msg);
   PetscCheck(verdict != MSH_OPEN, comm, PETSC_ERR_FILE_OPEN, "%s", msg);
   PetscCheck(verdict != MSH_READ, comm, PETSC_ERR_FILE_READ, "%s", msg);
   PetscCheck(verdict == MSH_OK, comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);

@@ -59,19 +59,20 @@
 static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
 {
   Body      b = p->bodies[body];
-  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
+  PetscInt  dim = b->dim;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < b->ncells * b->nb; ++k) /* every node of this rank's cells */
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], b->xnode[2 * k + d]);
-      hi[d] = PetscMax(hi[d], b->xnode[2 * k + d]);
+    for (PetscInt d = 0; d < dim; ++d) {
+      lo[d] = PetscMin(lo[d], b->xnode[dim * k + d]);
+      hi[d] = PetscMax(hi[d], b->xnode[dim * k + d]);
     }
-  lo[0] = -lo[0];
-  lo[1] = -lo[1];
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MAX, p->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MAX, p->comm));
-  *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]));
+  for (PetscInt d = 0; d < dim; ++d) lo[d] = -lo[d];
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, dim, MPIU_REAL, MPIU_MAX, p->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, dim, MPIU_REAL, MPIU_MAX, p->comm));
+  if (dim == 3) *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]) + PetscSqr(hi[2] + lo[2]));
+  else *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]));
   PetscFunctionReturn(0);
 }
 

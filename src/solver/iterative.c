@@ -3,8 +3,9 @@
    preconditioned by smoothed-aggregation algebraic multigrid (PCGAMG).
    Elasticity needs the multigrid's coarse spaces to represent the rigid
    motions, which the stiffness of a body free of its Dirichlet conditions
-   annihilates: they are given as H's near-nullspace, three per body
-   (translations in x and y, rotation), each supported on its own body's
+   annihilates: they are given as H's near-nullspace, three per 2D body
+   (translations in x and y, rotation; six per 3D body: three translations,
+   three rotations), each supported on its own body's
    dofs, orthonormalised. The contact Hessian couples the bodies only through
    their surfaces, a low-rank change GAMG sees in its matrix. Each Newton step
    is solved to -tao_nls_ksp_rtol (1e-6 by default, relative to the gradient):
@@ -19,7 +20,7 @@
 
 PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[])
 {
-  Vec          modes[3 * CONTACT_MAX_BODIES];
+  Vec          modes[6 * CONTACT_MAX_BODIES];
   PetscInt     n = 0, rstart, rend;
   MatNullSpace nsp;
   PC           pc;
@@ -27,19 +28,20 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
   for (PetscInt i = 0; i < nbodies; ++i) {
-    Vec          v[3];
-    PetscScalar *a[3];
-    PetscInt     first = n;
+    Vec          v[6];
+    PetscScalar *a[6];
+    PetscInt     first = n, nm;
 
     if (bodies[i]->rigid) continue; /* no dofs: its motion is the border's (forceborder.c) */
-    for (PetscInt k = 0; k < 3; ++k) {
+    nm = bodies[i]->dim == 3 ? 6 : 3;
+    for (PetscInt k = 0; k < nm; ++k) {
       PetscCall(MatCreateVecs(H, &v[k], NULL));
       PetscCall(VecZeroEntries(v[k]));
       PetscCall(VecGetArray(v[k], &a[k]));
     }
     PetscCall(BodyAddRigidModes(bodies[i], rstart, rend, a));
-    for (PetscInt k = 0; k < 3; ++k) PetscCall(VecRestoreArray(v[k], &a[k]));
-    for (PetscInt k = 0; k < 3; ++k) { /* Gram-Schmidt within the body (bodies' modes are disjoint) */
+    for (PetscInt k = 0; k < nm; ++k) PetscCall(VecRestoreArray(v[k], &a[k]));
+    for (PetscInt k = 0; k < nm; ++k) { /* Gram-Schmidt within the body (bodies' modes are disjoint) */
       PetscReal norm;
       for (PetscInt j = first; j < n; ++j) {
         PetscScalar d;

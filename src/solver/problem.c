@@ -441,7 +441,7 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
 }
 
 /* Preallocates the elastic stiffness K (elastic pattern plus the surface
-   block): every cell gives each of its rows 2 nb columns (an upper bound, the
+   block): every cell gives each of its rows dim nb columns (an upper bound, the
    excess squeezed out at assembly), and each surface row the surface's
    columns. On several ranks the columns of a row are counted apart by
    whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
@@ -470,11 +470,11 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body b = p->bodies[i];
     for (PetscInt c = 0; c < b->ncells; ++c) {
-      PetscInt    idx[18], own[18], n = 0;
+      PetscInt    idx[81], own[81], n = 0;
       PetscMPIInt o;
 
       for (PetscInt a = 0; a < b->nb; ++a)
-        for (PetscInt d = 0; d < 2; ++d) {
+        for (PetscInt d = 0; d < b->dim; ++d) {
           const PetscInt g = b->l2b[b->cdof[c * b->nb + a] + d];
           if (g < 0) continue;
           if (size > 1) PetscCall(PetscLayoutFindOwner(layout, g, &o));
@@ -573,7 +573,7 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
     const Body b = p->bodies[i];
     for (PetscInt l = 0; l < b->nload; ++l)
       for (PetscInt st = 0; st < b->nstages; ++st)
-        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0) *loaded = PETSC_TRUE;
+        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0 || b->load[l].stageTraction[st][2] != 0) *loaded = PETSC_TRUE;
     for (PetscInt j = 0; j < b->nbc; ++j) {
       if (b->bc[j].exact) *loaded = PETSC_TRUE;
       for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
@@ -581,6 +581,21 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
           if (b->bc[j].stage[st][c] != 0) *loaded = PETSC_TRUE;
     }
   }
+  PetscFunctionReturn(0);
+}
+
+/* A scene's bodies are all 2D (a rigid body's curves included) or all 3D,
+   and its contact pairs 2D. */
+static PetscErrorCode ProblemCheckDimensions(Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 1; i < p->nbodies; ++i) {
+    const Body a = p->bodies[0], b = p->bodies[i];
+    const PetscInt da = a->rigid ? 2 : a->dim, db = b->rigid ? 2 : b->dim;
+    PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", a->name, da, a->rigid ? "rigid: curves" : a->msh, b->name, db, b->rigid ? "rigid: curves" : b->msh);
+  }
+  for (PetscInt t = 0; t < p->nterms; ++t)
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || p->bodies[i]->rigid || p->bodies[i]->dim == 2, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, p->bodies[i]->name);
   PetscFunctionReturn(0);
 }
 
@@ -597,6 +612,7 @@ PetscErrorCode ProblemSetUp(Problem p)
     for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
     PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
   }
+  PetscCall(ProblemCheckDimensions(p));
   PetscCall(PetscLogStagePush(contactLog.setup));
   PetscCall(ProblemCheckSupports(p));
   PetscCall(ProblemCollectControls(p));

@@ -330,10 +330,10 @@ static PetscErrorCode LoadPathReserve(LoadPath *lp, PetscInt ngroups)
 
   PetscFunctionBeginUser;
   if (lp->n < lp->cap) PetscFunctionReturn(0);
-  PetscCall(PetscMalloc3(cap, &l, cap, &e, 2 * cap * ngroups, &r));
+  PetscCall(PetscMalloc3(cap, &l, cap, &e, 3 * cap * ngroups, &r));
   PetscCall(PetscArraycpy(l, lp->load, lp->n));
   PetscCall(PetscArraycpy(e, lp->energy, lp->n));
-  PetscCall(PetscArraycpy(r, lp->reaction, 2 * lp->n * ngroups));
+  PetscCall(PetscArraycpy(r, lp->reaction, 3 * lp->n * ngroups));
   PetscCall(PetscFree3(lp->load, lp->energy, lp->reaction));
   lp->load = l, lp->energy = e, lp->reaction = r, lp->cap = cap, lp->ngroups = ngroups;
   PetscFunctionReturn(0);
@@ -361,10 +361,10 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
     PetscCall(ProblemSetStage(p, 0.0, 1.0));
   }
   PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
-  R = lp->reaction + 2 * lp->n * ngroups;
+  R = lp->reaction + 3 * lp->n * ngroups;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, R += 2) PetscCall(PetscArraycpy(R, p->bodies[i]->bc[j].reaction, 2));
+    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, R += 3) PetscCall(PetscArraycpy(R, p->bodies[i]->bc[j].reaction, 3));
   }
   lp->load[lp->n]   = load;
   lp->energy[lp->n] = f;

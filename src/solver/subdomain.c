@@ -48,9 +48,9 @@ PetscErrorCode SubdomainCreate(PetscInt nbodies, Body bodies[], Subdomain *sub)
       if (b->l2b[k] >= 0) PetscCall(PetscFindInt(b->l2b[k], n, s->dofs, &map[i][k]));
     }
     for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-      for (PetscInt d = 0; d < 2; ++d) {
+      for (PetscInt d = 0; d < b->dim; ++d) {
         const PetscInt row = map[i][b->cdof[k] + d];
-        if (row >= 0) nnz[row] += 2 * b->nb;
+        if (row >= 0) nnz[row] += b->dim * b->nb;
       }
   }
   for (PetscInt r = 0; r < n; ++r) nnz[r] = PetscMin(nnz[r], n);
