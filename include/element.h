@@ -19,8 +19,6 @@ void ElementFormGradient(PetscInt dim, PetscInt nb, const PetscReal u[], const P
 /* At quadrature point iq of cell c with nodal values u: the displacement
    uq[dim] (NULL: not asked) and H, with, in axisymmetry, H[8] = u_r / r. */
 void ElementPointGradient(Body, PetscInt c, PetscInt iq, const PetscReal u[], PetscReal uq[], PetscReal H[9]);
-/* The exact solution's body force f[dim] at x, times the load factor. */
-void ElementExactForce(Body, const PetscReal x[], PetscReal f[]);
 /* Cell c's energy, added into *e, and its gradient ge[nb*dim] (set), with
    the exact solution's body force if the body has one. Returns PETSC_FALSE
    at the first quadrature point where the material is inverted (its index

@@ -69,11 +69,12 @@ ELEMENT_INLINE void PointGradientDim(Body b, PetscInt c, PetscInt iq, const Pets
   }
 }
 
-/* f = -div P(F(u)): its own (linear elasticity's) for a material of
-   constant tangent, else from the material's tangent at grad u and the
-   solution's second derivatives, f_i = -A_iJkL d2u_k/dX_J dX_L (du[i*dim+J],
-   d2u[(k*dim+J)*dim+L]: exact.h). */
-void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
+/* The exact solution's body force f[dim] at x, times the load factor (a
+   load, as the Dirichlet values it goes with). f = -div P(F(u)): its own
+   (linear elasticity's) for a material of constant tangent, else from the
+   material's tangent at grad u and the solution's second derivatives,
+   f_i = -A_iJkL d2u_k/dX_J dX_L (du[i*dim+J], d2u[(k*dim+J)*dim+L]: exact.h). */
+static void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
 {
   const PetscInt dim = b->dim;
 
