@@ -457,18 +457,13 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Gl, &g));
   for (PetscInt c = 0; c < b->ncells && !inverted; ++c) {
-    const PetscInt *dof = &b->cdof[c * nb];
-    PetscReal       u[ELEMENT_MAX_DOFS], ge[ELEMENT_MAX_DOFS];
-    PetscInt        iq;
+    PetscInt iq;
 
-    ElementGather(b, c, x, u);
-    if (!ElementEnergyGradient(b, c, u, &e, ge, &iq)) {
+    if (!ElementAddEnergyGradient(b, c, x, &e, g, &iq)) {
       inverted         = PETSC_TRUE;
       b->invertedAt[0] = b->xq[(c * nq + iq) * dim];
       b->invertedAt[1] = b->xq[(c * nq + iq) * dim + 1];
     }
-    for (PetscInt a = 0; a < nb; ++a)
-      for (PetscInt i = 0; i < dim; ++i) g[dof[a] + i] += ge[a * dim + i];
   }
   PetscCall(BodyLoadsAddEnergyGradient(b, x, &e, g));
   PetscCall(VecRestoreArrayRead(Xl, &x));

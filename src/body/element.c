@@ -43,12 +43,16 @@ ELEMENT_INLINE void GatherDim(Body b, PetscInt c, const PetscScalar x[], PetscRe
     for (PetscInt i = 0; i < dim; ++i) u[a * dim + i] = x ? PetscRealPart(x[dof[a] + i]) : 0.0;
 }
 
+/* (summed in h, which nothing can alias, so that it stays in registers) */
 ELEMENT_INLINE void FormGradientDim(PetscInt nb, const PetscReal u[], const PetscReal dN[], PetscReal H[9], const PetscInt dim)
 {
-  for (PetscInt k = 0; k < 9; ++k) H[k] = 0.0;
+  PetscReal h[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+
   for (PetscInt a = 0; a < nb; ++a)
     for (PetscInt i = 0; i < dim; ++i)
-      for (PetscInt J = 0; J < dim; ++J) H[i * 3 + J] += u[a * dim + i] * dN[a * dim + J];
+      for (PetscInt J = 0; J < dim; ++J) h[i][J] += u[a * dim + i] * dN[a * dim + J];
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt J = 0; J < 3; ++J) H[i * 3 + J] = h[i][J];
 }
 
 ELEMENT_INLINE void PointGradientDim(Body b, PetscInt c, PetscInt iq, const PetscReal u[], PetscReal uq[], PetscReal H[9], const PetscInt dim)
@@ -98,15 +102,16 @@ static void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
 
 /* The sums run in locals (el, g), which nothing else can alias, and are
    written out at the end: a stride-dim loop as fast as the 2D one was. */
-ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscReal u[], PetscReal *e, PetscReal ge[], PetscInt *iqBad, const PetscInt dim)
+ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar ge[], PetscInt *iqBad, const PetscInt dim)
 {
-  const PetscInt   nb = b->nb, nq = b->nq;
+  const PetscInt   nb = b->nb, nq = b->nq, *dof = &b->cdof[c * nb];
   const PetscBool  axisym = b->axisym, hasExact = b->hasExact, canInvert = (PetscBool)!b->mat->constantTangent;
   const PetscReal *xq = &b->xq[c * nq * dim], *wdetJ = &b->wdetJ[c * nq], *param = b->param;
   PetscBool (*energy)(const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]) = b->mat->energy;
-  PetscReal g[ELEMENT_MAX_DOFS], el = *e;
+  PetscReal u[ELEMENT_MAX_DOFS], g[ELEMENT_MAX_DOFS], el = *e;
   PetscBool ok = PETSC_TRUE;
 
+  GatherDim(b, c, x, u, dim);
   for (PetscInt k = 0; k < nb * dim; ++k) g[k] = 0.0;
   for (PetscInt iq = 0; iq < nq; ++iq) {
     const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * dim], *B = &b->B[iq * nb];
@@ -144,7 +149,8 @@ ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscReal u
     }
   }
   *e = el;
-  for (PetscInt k = 0; k < nb * dim; ++k) ge[k] = g[k];
+  for (PetscInt a = 0; a < nb; ++a)
+    for (PetscInt i = 0; i < dim; ++i) ge[dof[a] + i] += g[a * dim + i];
   return ok;
 }
 
@@ -225,9 +231,9 @@ void ElementPointGradient(Body b, PetscInt c, PetscInt iq, const PetscReal u[], 
   else PointGradientDim(b, c, iq, u, uq, H, 3);
 }
 
-PetscBool ElementEnergyGradient(Body b, PetscInt c, const PetscReal u[], PetscReal *e, PetscReal ge[], PetscInt *iqBad)
+PetscBool ElementAddEnergyGradient(Body b, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar g[], PetscInt *iqBad)
 {
-  return b->dim == 2 ? EnergyGradientDim(b, c, u, e, ge, iqBad, 2) : EnergyGradientDim(b, c, u, e, ge, iqBad, 3);
+  return b->dim == 2 ? EnergyGradientDim(b, c, x, e, g, iqBad, 2) : EnergyGradientDim(b, c, x, e, g, iqBad, 3);
 }
 
 void ElementTangent(Body b, PetscInt c, const PetscReal u[], PetscScalar K[])
