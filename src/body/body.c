@@ -453,6 +453,7 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
     *energy = 0.0;
     PetscFunctionReturn(0);
   }
+  PetscCheck(nb <= ELEMENT_MAX_NODES && dim <= 3, b->comm, PETSC_ERR_SUP, "body %s: cells of %" PetscInt_FMT " nodes in %" PetscInt_FMT "D; the element loop takes up to %d nodes in up to 3D", b->name, nb, dim, ELEMENT_MAX_NODES);
   PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Gl, &g));
@@ -523,6 +524,7 @@ static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], c
   PetscInt      *idx;
 
   PetscFunctionBeginUser;
+  PetscCheck(nb <= ELEMENT_MAX_NODES && dim <= 3, b->comm, PETSC_ERR_SUP, "body %s: cells of %" PetscInt_FMT " nodes in %" PetscInt_FMT "D; the element loop takes up to %d nodes in up to 3D", b->name, nb, dim, ELEMENT_MAX_NODES);
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
   PetscCall(PetscMalloc2(n * n, &K, n, &idx));
   for (PetscInt c = 0; c < b->ncells; ++c) {

@@ -53,9 +53,9 @@
 #include "material.h"
 
 /* Whether row and column 2 of H are zero off the diagonal (plane strain,
-   r-z): F, F^-1 and P are then block diagonal, and their zero entries are
-   set, not computed: the same numbers, fewer operations (5 divisions for
-   F^-1 instead of 9). */
+   r-z): F and F^-1 are then block diagonal, and F^-1's zero entries are
+   set, not computed: the same numbers, fewer operations (5 divisions
+   instead of 9). */
 static inline PetscBool NeoHookeanBlock(const PetscReal H[])
 {
   return (PetscBool)(H[2] == 0.0 && H[5] == 0.0 && H[6] == 0.0 && H[7] == 0.0);
@@ -67,7 +67,15 @@ static PetscBool NeoHookeanKinematics(const PetscReal H[], PetscBool block, Pets
   const PetscReal d2m1 = H[0] + H[4] + H[0] * H[4] - H[1] * H[3]; /* det of the (0, 1) block, minus 1 */
   PetscReal       Jm1;
 
-  for (PetscInt k = 0; k < 9; ++k) F[k] = (k % 4 == 0 ? 1.0 : 0.0) + H[k];
+  F[0] = 1.0 + H[0];
+  F[1] = H[1];
+  F[2] = H[2];
+  F[3] = H[3];
+  F[4] = 1.0 + H[4];
+  F[5] = H[5];
+  F[6] = H[6];
+  F[7] = H[7];
+  F[8] = 1.0 + H[8];
   /* det F = F22 det2 - F12 (F00 F21 - F01 F20) + F02 (F10 F21 - F11 F20) */
   Jm1 = d2m1 + H[8] + d2m1 * H[8];
   if (!block) Jm1 += -F[5] * (F[0] * F[7] - F[1] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
@@ -98,20 +106,27 @@ static PetscBool NeoHookeanKinematics(const PetscReal H[], PetscBool block, Pets
 static PetscBool NeoHookeanEnergy(const PetscReal param[], const PetscReal H[], PetscReal *W, PetscReal P[])
 {
   const PetscReal lambda = param[0], mu = param[1];
-  const PetscBool block = NeoHookeanBlock(H);
   PetscReal       F[9], Fi[9], J, lnJ, I1m3, ll;
 
-  if (!NeoHookeanKinematics(H, block, F, Fi, &J, &lnJ)) {
+  if (!NeoHookeanKinematics(H, NeoHookeanBlock(H), F, Fi, &J, &lnJ)) {
     *W = (PetscReal)INFINITY;
     for (PetscInt k = 0; k < 9; ++k) P[k] = 0.0;
     return PETSC_FALSE;
   }
-  I1m3 = 2.0 * (H[0] + H[4] + H[8]);
-  for (PetscInt k = 0; k < 9; ++k) I1m3 += H[k] * H[k];
-  *W = 0.5 * mu * (I1m3 - 2.0 * lnJ) + 0.5 * lambda * lnJ * lnJ;
-  ll = lambda * lnJ;
-  for (PetscInt i = 0; i < 3; ++i)
-    for (PetscInt Jx = 0; Jx < 3; ++Jx) P[i * 3 + Jx] = block && (i == 2) != (Jx == 2) ? 0.0 : mu * (F[i * 3 + Jx] - Fi[Jx * 3 + i]) + ll * Fi[Jx * 3 + i];
+  I1m3 = 2.0 * (H[0] + H[4] + H[8]) + H[0] * H[0] + H[1] * H[1] + H[2] * H[2] + H[3] * H[3] + H[4] * H[4] + H[5] * H[5] + H[6] * H[6] + H[7] * H[7] + H[8] * H[8];
+  *W   = 0.5 * mu * (I1m3 - 2.0 * lnJ) + 0.5 * lambda * lnJ * lnJ;
+  ll   = lambda * lnJ;
+#define NEO_P(i, Jx) P[i * 3 + Jx] = mu * (F[i * 3 + Jx] - Fi[Jx * 3 + i]) + ll * Fi[Jx * 3 + i]
+  NEO_P(0, 0);
+  NEO_P(0, 1);
+  NEO_P(0, 2);
+  NEO_P(1, 0);
+  NEO_P(1, 1);
+  NEO_P(1, 2);
+  NEO_P(2, 0);
+  NEO_P(2, 1);
+  NEO_P(2, 2);
+#undef NEO_P
   return PETSC_TRUE;
 }
 
