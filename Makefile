@@ -44,6 +44,10 @@ MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/ob
 bin/material-check: tests/kernels/material_check.c $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< $(MATERIAL_OBJS) $(LDLIBS)
+# and the element loop on one 3D cell (Hex27, Tet10)
+bin/element-check: tests/kernels/element_check.c build/obj/body/element.o $(MATERIAL_OBJS)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $< build/obj/body/element.o $(MATERIAL_OBJS) $(LDLIBS)
 
 meshes: bin/contact
 	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only

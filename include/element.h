@@ -19,13 +19,12 @@ void ElementFormGradient(PetscInt dim, PetscInt nb, const PetscReal u[], const P
 /* At quadrature point iq of cell c with nodal values u: the displacement
    uq[dim] (NULL: not asked) and H, with, in axisymmetry, H[8] = u_r / r. */
 void ElementPointGradient(Body, PetscInt c, PetscInt iq, const PetscReal u[], PetscReal uq[], PetscReal H[9]);
-/* The exact solution's body force f[dim] at x, times the load factor. */
-void ElementExactForce(Body, const PetscReal x[], PetscReal f[]);
-/* Cell c's energy, added into *e, and its gradient ge[nb*dim] (set), with
-   the exact solution's body force if the body has one. Returns PETSC_FALSE
-   at the first quadrature point where the material is inverted (its index
-   in *iqBad): *e and ge then hold the points before it. */
-PetscBool ElementEnergyGradient(Body, PetscInt c, const PetscReal u[], PetscReal *e, PetscReal ge[], PetscInt *iqBad);
+/* Cell c's energy at the displacement x (a local array), added into *e,
+   and its gradient, added into the local array g, with the exact
+   solution's body force if the body has one. Returns PETSC_FALSE at the
+   first quadrature point where the material is inverted (its index in
+   *iqBad): *e and g then have the points before it. */
+PetscBool ElementAddEnergyGradient(Body, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar g[], PetscInt *iqBad);
 /* Cell c's tangent K[n][n], n = dim nb, full and symmetric, at the nodal
    displacements u (NULL: at rest). */
 void ElementTangent(Body, PetscInt c, const PetscReal u[], PetscScalar K[]);

@@ -16,6 +16,11 @@ the figures asserted here:
 - plane strain (row and column 2 of H zero) and r-z (H_22 = u_r / r): W and
   the in-plane P are the 2D kernels' formulas (written out in the program).
 
+bin/element-check (tests/kernels/element_check.c) runs the element loop
+(src/body/element.c) on one 3D cell, Hex27 and Tet10, with the cell cache a
+3D body would give it: Taylor orders of its gradient and tangent, an affine
+patch, the rigid modes, a rigid rotation.
+
 Figures are the program's, deterministic (a fixed seed; no BLAS): measured
 once on this machine (x86-64, -O2, no FMA)."""
 import math
@@ -44,7 +49,7 @@ def test_taylor_orders(figures):
     to 1.25e-3 halving: the order between successive t is 2 if P and A are
     the derivatives (1 if either is wrong). Neo-Hookean: W's remainder's order
     from `neo_taylor_P_min` = 1.904 to `neo_taylor_P_max` = 2.018, P's from
-    `neo_taylor_A_min` = 1.968 to `neo_taylor_A_max` = 2.026 (the third
+    `neo_taylor_A_min` = 1.968 to `neo_taylor_A_max` = 2.017 (the third
     derivative's share at t = 1e-2 of a 1e-3 strain, t W'''/(6 W'') / ln 2,
     moves it by up to 0.1); bound [1.7, 2.3], 3x the largest deviation.
     Linear: W quadratic, the remainder t^2/2 E:C:E exact, order
@@ -102,7 +107,7 @@ def test_cauchy(figures):
 @pytest.mark.roundoff
 def test_frame_invariance(figures):
     """Neo-Hookean, Q the rotation by 60 degrees about (1, 2, 3)/sqrt(14):
-    W(QF) = W(F) to `neo_frame_W` = 8.5e-11 of max(|W|, mu |H|^2) (QF - I has
+    W(QF) = W(F) to `neo_frame_W` = 9.0e-11 of max(|W|, mu |H|^2) (QF - I has
     entries of order 1 where H has 1e-3: W, of order mu |H|^2 = 1e-6 mu, is
     then formed from terms of order 1, eps / |H|^2 = 1e-10; bound 1e-8) and
     P(QF) = Q P(F) to `neo_frame_P` = 5.1e-13 of max |P| (bound 1e-10); at F
@@ -133,3 +138,64 @@ def test_plane_strain_reduction(figures):
         assert figure(f"{tag}_rz_P", figures[(mat, "rz_P_rel")]) <= 1e-11
     assert figure("neo_plane_P22", figures[("neohookean", "plane_P22_rel")]) <= 1e-11
     assert not math.isnan(figures[("neohookean", "plane_P22_rel")])
+
+
+@pytest.fixture(scope="module")
+def element_figures():
+    """The element loop's figures on one 3D cell, {(cell, material, name): value}."""
+    subprocess.run(["make", "-s", "bin/element-check"], cwd=ROOT, check=True, capture_output=True)
+    out = subprocess.run([str(ROOT / "bin" / "element-check")], cwd=ROOT, check=True, capture_output=True, text=True).stdout
+    fig = {}
+    for line in out.splitlines():
+        cell, mat, name, value = line.split()
+        fig[(cell, mat, name)] = float(value)
+    return fig
+
+
+CELLS = ("hex27", "tet10")
+MATERIALS = ("linear", "neohookean")
+
+
+@pytest.mark.roundoff
+def test_element_loop_3d_taylor(element_figures):
+    """The element loop (src/body/element.c) on one 3D cell with dim = 3, 27
+    or 10 nodes, as a 3D body's cell cache would give it
+    (tests/kernels/element_check.c: PETSc's Q2 and P2 elements on the
+    reference cell mapped by a fixed affine map, random nodal u and v of
+    size 0.05): the cell's energy, gradient and tangent with no change of
+    the loop. |Pi(u + tv) - Pi(u) - t g.v| and |g(u + tv) - g(u) - t K v|
+    at t = 0.5 to 0.0625 halving fall at order 2: linear g
+    `hex27_linear_g_dev` = 0, `tet10_linear_g_dev` = 0 from 2 (bound 1e-6);
+    neo-Hookean g from `neo3d_g_min` = 1.995 to `neo3d_g_max` = 2.015, K from
+    `neo3d_K_min` = 1.972 to `neo3d_K_max` = 2.071 over both cells (bound
+    [1.7, 2.3]); K symmetric to `K3d_sym` = 1.1e-16 of max |K| (bound 1e-14)."""
+    for cell in CELLS:
+        dev = max(abs(element_figures[(cell, "linear", f"taylor_g_order_{e}")] - 2) for e in ("min", "max"))
+        assert figure(f"{cell}_linear_g_dev", dev) <= 1e-6
+    g = [element_figures[(c, "neohookean", f"taylor_g_order_{e}")] for c in CELLS for e in ("min", "max")]
+    k = [element_figures[(c, "neohookean", f"taylor_K_order_{e}")] for c in CELLS for e in ("min", "max")]
+    assert 1.7 <= figure("neo3d_g_min", min(g)) and figure("neo3d_g_max", max(g)) <= 2.3
+    assert 1.7 <= figure("neo3d_K_min", min(k)) and figure("neo3d_K_max", max(k)) <= 2.3
+    sym = max(element_figures[(c, m, "K_sym_rel")] for c in CELLS for m in MATERIALS)
+    assert figure("K3d_sym", sym) <= 1e-14
+
+
+@pytest.mark.roundoff
+def test_element_loop_3d_patch_and_rigid(element_figures):
+    """The same cells: an affine u = H0 x (H0 of 0.07 at most) gives the
+    energy W(H0) times the volume, to `patch3d_W` = 5.3e-16 relative, and
+    forces that balance (sum_a N_a = 1), their sum `patch3d_g_sum` = 9.9e-16
+    of the largest (bounds 1e-13); the stiffness at rest takes the six rigid
+    modes to `rest3d_null` = 5.3e-16 of max |K| max |r| (bound 1e-13); a
+    neo-Hookean cell rotated by 60 degrees stores `rot3d_W` = 2.8e-17 mu vol
+    and has forces `rot3d_g` = 7.9e-16 mu vol (bounds 1e-13)."""
+    W = max(element_figures[(c, m, "patch_W_rel")] for c in CELLS for m in MATERIALS)
+    gs = max(element_figures[(c, m, "patch_g_sum_rel")] for c in CELLS for m in MATERIALS)
+    null = max(element_figures[(c, m, "rest_null_rel")] for c in CELLS for m in MATERIALS)
+    assert figure("patch3d_W", W) <= 1e-13
+    assert figure("patch3d_g_sum", gs) <= 1e-13
+    assert figure("rest3d_null", null) <= 1e-13
+    rw = max(abs(element_figures[(c, "neohookean", "rotation_W")]) for c in CELLS)
+    rg = max(element_figures[(c, "neohookean", "rotation_g")] for c in CELLS)
+    assert figure("rot3d_W", rw) <= 1e-13
+    assert figure("rot3d_g", rg) <= 1e-13

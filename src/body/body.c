@@ -488,22 +488,18 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
     *energy = 0.0;
     PetscFunctionReturn(0);
   }
+  PetscCheck(nb <= ELEMENT_MAX_NODES && dim <= 3, b->comm, PETSC_ERR_SUP, "body %s: cells of %" PetscInt_FMT " nodes in %" PetscInt_FMT "D; the element loop takes up to %d nodes in up to 3D", b->name, nb, dim, ELEMENT_MAX_NODES);
   PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Gl, &g));
   for (PetscInt c = 0; c < b->ncells && !inverted; ++c) {
-    const PetscInt *dof = &b->cdof[c * nb];
-    PetscReal       u[ELEMENT_MAX_DOFS], ge[ELEMENT_MAX_DOFS];
-    PetscInt        iq;
+    PetscInt iq;
 
-    ElementGather(b, c, x, u);
-    if (!ElementEnergyGradient(b, c, u, &e, ge, &iq)) {
+    if (!ElementAddEnergyGradient(b, c, x, &e, g, &iq)) {
       inverted         = PETSC_TRUE;
       b->invertedAt[0] = b->xq[(c * nq + iq) * dim];
       b->invertedAt[1] = b->xq[(c * nq + iq) * dim + 1];
     }
-    for (PetscInt a = 0; a < nb; ++a)
-      for (PetscInt i = 0; i < dim; ++i) g[dof[a] + i] += ge[a * dim + i];
   }
   PetscCall(BodyLoadsAddEnergyGradient(b, x, &e, g));
   PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -563,6 +559,7 @@ static PetscErrorCode BodyAssembleTangentMapped(Body b, const PetscScalar x[], c
   PetscInt      *idx;
 
   PetscFunctionBeginUser;
+  PetscCheck(nb <= ELEMENT_MAX_NODES && dim <= 3, b->comm, PETSC_ERR_SUP, "body %s: cells of %" PetscInt_FMT " nodes in %" PetscInt_FMT "D; the element loop takes up to %d nodes in up to 3D", b->name, nb, dim, ELEMENT_MAX_NODES);
   PetscCall(PetscLogEventBegin(contactLog.elasHessian, 0, 0, 0, 0));
   PetscCall(PetscMalloc2(n * n, &K, n, &idx));
   for (PetscInt c = 0; c < b->ncells; ++c) {

@@ -34,21 +34,34 @@
 #else
   #define ELEMENT_INLINE static inline
 #endif
+/* before a loop over components (at most 3): unrolled (-O2 does not) */
+#if defined(__GNUC__) && !defined(__clang__)
+  #define ELEMENT_UNROLL _Pragma("GCC unroll 3")
+#else
+  #define ELEMENT_UNROLL
+#endif
 
 ELEMENT_INLINE void GatherDim(Body b, PetscInt c, const PetscScalar x[], PetscReal u[], const PetscInt dim)
 {
   const PetscInt nb = b->nb, *dof = &b->cdof[c * nb];
 
   for (PetscInt a = 0; a < nb; ++a)
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i) u[a * dim + i] = x ? PetscRealPart(x[dof[a] + i]) : 0.0;
 }
 
+/* (summed in h, which nothing can alias, so that it stays in registers) */
 ELEMENT_INLINE void FormGradientDim(PetscInt nb, const PetscReal u[], const PetscReal dN[], PetscReal H[9], const PetscInt dim)
 {
-  for (PetscInt k = 0; k < 9; ++k) H[k] = 0.0;
+  PetscReal h[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+
   for (PetscInt a = 0; a < nb; ++a)
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i)
-      for (PetscInt J = 0; J < dim; ++J) H[i * 3 + J] += u[a * dim + i] * dN[a * dim + J];
+      ELEMENT_UNROLL
+      for (PetscInt J = 0; J < dim; ++J) h[i][J] += u[a * dim + i] * dN[a * dim + J];
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt J = 0; J < 3; ++J) H[i * 3 + J] = h[i][J];
 }
 
 ELEMENT_INLINE void PointGradientDim(Body b, PetscInt c, PetscInt iq, const PetscReal u[], PetscReal uq[], PetscReal H[9], const PetscInt dim)
@@ -58,8 +71,10 @@ ELEMENT_INLINE void PointGradientDim(Body b, PetscInt c, PetscInt iq, const Pets
 
   FormGradientDim(nb, u, dN, H, dim);
   if (uq) {
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i) uq[i] = 0.0;
     for (PetscInt a = 0; a < nb; ++a)
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i) uq[i] += B[a] * u[a * dim + i];
   }
   if (b->axisym) { /* the hoop strain u_r / r, at a quadrature point (r > 0) */
@@ -69,11 +84,12 @@ ELEMENT_INLINE void PointGradientDim(Body b, PetscInt c, PetscInt iq, const Pets
   }
 }
 
-/* f = -div P(F(u)): its own (linear elasticity's) for a material of
-   constant tangent, else from the material's tangent at grad u and the
-   solution's second derivatives, f_i = -A_iJkL d2u_k/dX_J dX_L (du[i*dim+J],
-   d2u[(k*dim+J)*dim+L]: exact.h). */
-void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
+/* The exact solution's body force f[dim] at x, times the load factor (a
+   load, as the Dirichlet values it goes with). f = -div P(F(u)): its own
+   (linear elasticity's) for a material of constant tangent, else from the
+   material's tangent at grad u and the solution's second derivatives,
+   f_i = -A_iJkL d2u_k/dX_J dX_L (du[i*dim+J], d2u[(k*dim+J)*dim+L]: exact.h). */
+static void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
 {
   const PetscInt dim = b->dim;
 
@@ -82,30 +98,38 @@ void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
     PetscReal du[9], d2u[27], H[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, A[81];
     b->exact.du(b->exact.params, x, du);
     b->exact.d2u(b->exact.params, x, d2u);
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i)
+      ELEMENT_UNROLL
       for (PetscInt J = 0; J < dim; ++J) H[i * 3 + J] = du[i * dim + J];
     b->mat->moduli(b->param, H, A);
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i) {
       f[i] = 0.0;
+      ELEMENT_UNROLL
       for (PetscInt J = 0; J < dim; ++J)
+        ELEMENT_UNROLL
         for (PetscInt k = 0; k < dim; ++k)
+          ELEMENT_UNROLL
           for (PetscInt L = 0; L < dim; ++L) f[i] -= A[((i * 3 + J) * 3 + k) * 3 + L] * d2u[(k * dim + J) * dim + L];
     }
   }
+  ELEMENT_UNROLL
   for (PetscInt i = 0; i < dim; ++i) f[i] *= b->loadFactor;
 }
 
 /* The sums run in locals (el, g), which nothing else can alias, and are
    written out at the end: a stride-dim loop as fast as the 2D one was. */
-ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscReal u[], PetscReal *e, PetscReal ge[], PetscInt *iqBad, const PetscInt dim)
+ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar ge[], PetscInt *iqBad, const PetscInt dim)
 {
-  const PetscInt   nb = b->nb, nq = b->nq;
+  const PetscInt   nb = b->nb, nq = b->nq, *dof = &b->cdof[c * nb];
   const PetscBool  axisym = b->axisym, hasExact = b->hasExact, canInvert = (PetscBool)!b->mat->constantTangent;
   const PetscReal *xq = &b->xq[c * nq * dim], *wdetJ = &b->wdetJ[c * nq], *param = b->param;
   PetscBool (*energy)(const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]) = b->mat->energy;
-  PetscReal g[ELEMENT_MAX_DOFS], el = *e;
+  PetscReal u[ELEMENT_MAX_DOFS], g[ELEMENT_MAX_DOFS], el = *e;
   PetscBool ok = PETSC_TRUE;
 
+  GatherDim(b, c, x, u, dim);
   for (PetscInt k = 0; k < nb * dim; ++k) g[k] = 0.0;
   for (PetscInt iq = 0; iq < nq; ++iq) {
     const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * dim], *B = &b->B[iq * nb];
@@ -124,8 +148,10 @@ ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscReal u
     if (axisym) s3r = P[8] / xq[iq * dim];
     el += w * W;
     for (PetscInt a = 0; a < nb; ++a)
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i) {
         PetscReal t = 0.0;
+        ELEMENT_UNROLL
         for (PetscInt J = 0; J < dim; ++J) t += P[i * 3 + J] * dN[a * dim + J];
         if (i == 0) t += s3r * B[a];
         g[a * dim + i] += w * t;
@@ -133,17 +159,23 @@ ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscReal u
     if (hasExact) {
       PetscReal f[3], uq[3], fu = 0.0;
       ElementExactForce(b, &xq[iq * dim], f);
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i) uq[i] = 0.0;
       for (PetscInt a = 0; a < nb; ++a)
+        ELEMENT_UNROLL
         for (PetscInt i = 0; i < dim; ++i) uq[i] += B[a] * u[a * dim + i];
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i) fu += f[i] * uq[i];
       el -= w * fu;
       for (PetscInt a = 0; a < nb; ++a)
+        ELEMENT_UNROLL
         for (PetscInt i = 0; i < dim; ++i) g[a * dim + i] -= w * f[i] * B[a];
     }
   }
   *e = el;
-  for (PetscInt k = 0; k < nb * dim; ++k) ge[k] = g[k];
+  for (PetscInt a = 0; a < nb; ++a)
+    ELEMENT_UNROLL
+    for (PetscInt i = 0; i < dim; ++i) ge[dof[a] + i] += g[a * dim + i];
   return ok;
 }
 
@@ -170,18 +202,25 @@ ELEMENT_INLINE void TangentDim(Body b, PetscInt c, const PetscReal u[], PetscSca
       b->mat->moduli(b->param, H, A);
     }
     for (PetscInt a = 0; a < nb; ++a)
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i)
+        ELEMENT_UNROLL
         for (PetscInt j = 0; j < dim; ++j)
+          ELEMENT_UNROLL
           for (PetscInt L = 0; L < dim; ++L) {
             PetscReal s = 0.0;
+            ELEMENT_UNROLL
             for (PetscInt J = 0; J < dim; ++J) s += dN[a * dim + J] * A[((i * 3 + J) * 3 + j) * 3 + L];
             G[a][i][j][L] = w * s;
           }
     for (PetscInt a = 0; a < nb; ++a) /* the upper blocks (bb >= a) */
+      ELEMENT_UNROLL
       for (PetscInt i = 0; i < dim; ++i)
         for (PetscInt bb = a; bb < nb; ++bb)
+          ELEMENT_UNROLL
           for (PetscInt j = 0; j < dim; ++j) {
             PetscReal s = 0.0;
+            ELEMENT_UNROLL
             for (PetscInt L = 0; L < dim; ++L) s += G[a][i][j][L] * dN[bb * dim + L];
             K[(dim * a + i) * n + dim * bb + j] += s;
           }
@@ -191,18 +230,25 @@ ELEMENT_INLINE void TangentDim(Body b, PetscInt c, const PetscReal u[], PetscSca
           const PetscReal na = B[a] / r, nbb = B[bb] / r;
           PetscReal       k = 0.0;
           /* (0, 0): sum_J A_0J22 (dN_a/dX_J N_b + N_a dN_b/dX_J) / r + A_2222 N_a N_b / r^2 (A_220J = A_0J22) */
+          ELEMENT_UNROLL
           for (PetscInt J = 0; J < dim; ++J) k += A[(0 * 3 + J) * 9 + 8] * (dN[a * dim + J] * nbb + na * dN[bb * dim + J]);
           k += A[80] * na * nbb;
           K[(dim * a) * n + dim * bb] += w * k;
+          ELEMENT_UNROLL
           for (PetscInt j = 1; j < dim; ++j) /* (0, j): N_a / r A_22jL dN_b/dX_L */
+            ELEMENT_UNROLL
             for (PetscInt L = 0; L < dim; ++L) K[(dim * a) * n + dim * bb + j] += w * A[8 * 9 + j * 3 + L] * na * dN[bb * dim + L];
+          ELEMENT_UNROLL
           for (PetscInt i = 1; i < dim; ++i) /* (i, 0): N_b / r A_iJ22 dN_a/dX_J */
+            ELEMENT_UNROLL
             for (PetscInt J = 0; J < dim; ++J) K[(dim * a + i) * n + dim * bb] += w * A[(i * 3 + J) * 9 + 8] * dN[a * dim + J] * nbb;
         }
   }
   for (PetscInt a = 0; a < nb; ++a)
+    ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i)
       for (PetscInt bb = a + 1; bb < nb; ++bb)
+        ELEMENT_UNROLL
         for (PetscInt j = 0; j < dim; ++j) K[(dim * bb + j) * n + dim * a + i] = K[(dim * a + i) * n + dim * bb + j];
 }
 
@@ -224,9 +270,9 @@ void ElementPointGradient(Body b, PetscInt c, PetscInt iq, const PetscReal u[], 
   else PointGradientDim(b, c, iq, u, uq, H, 3);
 }
 
-PetscBool ElementEnergyGradient(Body b, PetscInt c, const PetscReal u[], PetscReal *e, PetscReal ge[], PetscInt *iqBad)
+PetscBool ElementAddEnergyGradient(Body b, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar g[], PetscInt *iqBad)
 {
-  return b->dim == 2 ? EnergyGradientDim(b, c, u, e, ge, iqBad, 2) : EnergyGradientDim(b, c, u, e, ge, iqBad, 3);
+  return b->dim == 2 ? EnergyGradientDim(b, c, x, e, g, iqBad, 2) : EnergyGradientDim(b, c, x, e, g, iqBad, 3);
 }
 
 void ElementTangent(Body b, PetscInt c, const PetscReal u[], PetscScalar K[])

@@ -138,13 +138,13 @@ static PetscReal SymmetricMaxAbsEigenvalue(const PetscReal E[9])
 }
 
 /* The largest principal Green-Lagrange strain, in magnitude, at quadrature
-   point iq of cell c: E_IJ = (H_IJ + H_JI + H_kI H_kJ) / 2 of the 3 x 3
-   displacement gradient (in r-z E_22 = e3 + e3^2 / 2 of the hoop strain). */
-static PetscReal BodyStrainAt(Body b, const PetscScalar ua[], PetscInt c, PetscInt iq)
+   point iq of cell c, of nodal displacements u (ElementGather): E_IJ =
+   (H_IJ + H_JI + H_kI H_kJ) / 2 of the 3 x 3 displacement gradient (in r-z
+   E_22 = e3 + e3^2 / 2 of the hoop strain). */
+static PetscReal BodyStrainAt(Body b, const PetscReal u[], PetscInt c, PetscInt iq)
 {
-  PetscReal u[ELEMENT_MAX_DOFS], H[9], E[9];
+  PetscReal H[9], E[9];
 
-  ElementGather(b, c, ua, u);
   ElementPointGradient(b, c, iq, u, NULL, H);
   for (PetscInt P = 0; P < 3; ++P)
     for (PetscInt Q = 0; Q < 3; ++Q) {
@@ -160,8 +160,11 @@ PetscErrorCode BodyComputeMaxStrain(Body b, Vec Xl, PetscReal *emax)
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(Xl, &ua));
-  for (PetscInt c = 0; c < b->ncells; ++c)
-    for (PetscInt iq = 0; iq < b->nq; ++iq) m = PetscMax(m, BodyStrainAt(b, ua, c, iq));
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[ELEMENT_MAX_DOFS];
+    ElementGather(b, c, ua, u);
+    for (PetscInt iq = 0; iq < b->nq; ++iq) m = PetscMax(m, BodyStrainAt(b, u, c, iq));
+  }
   PetscCall(VecRestoreArrayRead(Xl, &ua));
   PetscCall(MPIU_Allreduce(&m, emax, 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscFunctionReturn(0);
@@ -202,15 +205,18 @@ PetscErrorCode BodyComputeStrainPeak(Body b, Vec Xl, BodyStrainPeak *pk)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
   PetscCall(VecGetArrayRead(Xl, &ua));
-  for (PetscInt c = 0; c < b->ncells; ++c)
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[ELEMENT_MAX_DOFS];
+    ElementGather(b, c, ua, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal e = BodyStrainAt(b, ua, c, iq);
+      const PetscReal e = BodyStrainAt(b, u, c, iq);
       if (cbest < 0 || e > loc.v) {
         loc.v = (double)e;
         cbest = c;
         qbest = iq;
       }
     }
+  }
   loc.r = (int)rank;
   PetscCallMPI(MPI_Allreduce(&loc, &glob, 1, MPI_DOUBLE_INT, MPI_MAXLOC, b->comm));
   if (rank == glob.r && cbest >= 0) {
@@ -225,11 +231,14 @@ PetscErrorCode BodyComputeStrainPeak(Body b, Vec Xl, BodyStrainPeak *pk)
   pk->x[0] = xh[0];
   pk->x[1] = xh[1];
   pk->h    = xh[2];
-  for (PetscInt c = 0; c < b->ncells; ++c)
+  for (PetscInt c = 0; c < b->ncells; ++c) {
+    PetscReal u[ELEMENT_MAX_DOFS];
+    ElementGather(b, c, ua, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *x = &b->xq[(c * nq + iq) * 2], d = PetscSqrtReal(PetscSqr(x[0] - pk->x[0]) + PetscSqr(x[1] - pk->x[1])), e = BodyStrainAt(b, ua, c, iq);
+      const PetscReal *x = &b->xq[(c * nq + iq) * 2], d = PetscSqrtReal(PetscSqr(x[0] - pk->x[0]) + PetscSqr(x[1] - pk->x[1])), e = BodyStrainAt(b, u, c, iq);
       if (d > 0.5 * BODY_STRAIN_RING * pk->h && d <= BODY_STRAIN_RING * pk->h) m = PetscMax(m, e);
     }
+  }
   PetscCall(VecRestoreArrayRead(Xl, &ua));
   PetscCall(MPIU_Allreduce(&m, &pk->ring, 1, MPIU_REAL, MPIU_MAX, b->comm));
   PetscFunctionReturn(0);

@@ -52,45 +52,81 @@
 #include "contact.h"
 #include "material.h"
 
+/* Whether row and column 2 of H are zero off the diagonal (plane strain,
+   r-z): F and F^-1 are then block diagonal, and F^-1's zero entries are
+   set, not computed: the same numbers, fewer operations (5 divisions
+   instead of 9). */
+static inline PetscBool NeoHookeanBlock(const PetscReal H[])
+{
+  return (PetscBool)(H[2] == 0.0 && H[5] == 0.0 && H[6] == 0.0 && H[7] == 0.0);
+}
+
 /* F, F^-1 (Fi[J*3+i] = F^-1_Ji), J and ln J; false if J <= 0. */
-static PetscBool NeoHookeanKinematics(const PetscReal H[], PetscReal F[9], PetscReal Fi[9], PetscReal *J, PetscReal *lnJ)
+static PetscBool NeoHookeanKinematics(const PetscReal H[], PetscBool block, PetscReal F[9], PetscReal Fi[9], PetscReal *J, PetscReal *lnJ)
 {
   const PetscReal d2m1 = H[0] + H[4] + H[0] * H[4] - H[1] * H[3]; /* det of the (0, 1) block, minus 1 */
   PetscReal       Jm1;
 
-  for (PetscInt k = 0; k < 9; ++k) F[k] = (k % 4 == 0 ? 1.0 : 0.0) + H[k];
+  F[0] = 1.0 + H[0];
+  F[1] = H[1];
+  F[2] = H[2];
+  F[3] = H[3];
+  F[4] = 1.0 + H[4];
+  F[5] = H[5];
+  F[6] = H[6];
+  F[7] = H[7];
+  F[8] = 1.0 + H[8];
   /* det F = F22 det2 - F12 (F00 F21 - F01 F20) + F02 (F10 F21 - F11 F20) */
-  Jm1 = d2m1 + H[8] + d2m1 * H[8] + (-F[5] * (F[0] * F[7] - F[1] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]));
-  *J  = 1.0 + Jm1;
+  Jm1 = d2m1 + H[8] + d2m1 * H[8];
+  if (!block) Jm1 += -F[5] * (F[0] * F[7] - F[1] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+  *J = 1.0 + Jm1;
   if (!(*J > 0.0)) return PETSC_FALSE;
-  *lnJ  = log1p(Jm1);
-  Fi[0] = (F[4] * F[8] - F[5] * F[7]) / *J;
-  Fi[1] = (F[2] * F[7] - F[1] * F[8]) / *J;
-  Fi[2] = (F[1] * F[5] - F[2] * F[4]) / *J;
-  Fi[3] = (F[5] * F[6] - F[3] * F[8]) / *J;
-  Fi[4] = (F[0] * F[8] - F[2] * F[6]) / *J;
-  Fi[5] = (F[2] * F[3] - F[0] * F[5]) / *J;
-  Fi[6] = (F[3] * F[7] - F[4] * F[6]) / *J;
-  Fi[7] = (F[1] * F[6] - F[0] * F[7]) / *J;
-  Fi[8] = (F[0] * F[4] - F[1] * F[3]) / *J;
+  *lnJ = log1p(Jm1);
+  if (block) {
+    Fi[0] = F[4] * F[8] / *J;
+    Fi[1] = -(F[1] * F[8]) / *J;
+    Fi[3] = -(F[3] * F[8]) / *J;
+    Fi[4] = F[0] * F[8] / *J;
+    Fi[8] = (F[0] * F[4] - F[1] * F[3]) / *J;
+    Fi[2] = Fi[5] = Fi[6] = Fi[7] = 0.0;
+  } else {
+    Fi[0] = (F[4] * F[8] - F[5] * F[7]) / *J;
+    Fi[1] = (F[2] * F[7] - F[1] * F[8]) / *J;
+    Fi[2] = (F[1] * F[5] - F[2] * F[4]) / *J;
+    Fi[3] = (F[5] * F[6] - F[3] * F[8]) / *J;
+    Fi[4] = (F[0] * F[8] - F[2] * F[6]) / *J;
+    Fi[5] = (F[2] * F[3] - F[0] * F[5]) / *J;
+    Fi[6] = (F[3] * F[7] - F[4] * F[6]) / *J;
+    Fi[7] = (F[1] * F[6] - F[0] * F[7]) / *J;
+    Fi[8] = (F[0] * F[4] - F[1] * F[3]) / *J;
+  }
   return PETSC_TRUE;
 }
 
 static PetscBool NeoHookeanEnergy(const PetscReal param[], const PetscReal H[], PetscReal *W, PetscReal P[])
 {
   const PetscReal lambda = param[0], mu = param[1];
-  PetscReal       F[9], Fi[9], J, lnJ, I1m3;
+  PetscReal       F[9], Fi[9], J, lnJ, I1m3, ll;
 
-  if (!NeoHookeanKinematics(H, F, Fi, &J, &lnJ)) {
+  if (!NeoHookeanKinematics(H, NeoHookeanBlock(H), F, Fi, &J, &lnJ)) {
     *W = (PetscReal)INFINITY;
     for (PetscInt k = 0; k < 9; ++k) P[k] = 0.0;
     return PETSC_FALSE;
   }
-  I1m3 = 2.0 * (H[0] + H[4] + H[8]);
-  for (PetscInt k = 0; k < 9; ++k) I1m3 += H[k] * H[k];
-  *W = 0.5 * mu * (I1m3 - 2.0 * lnJ) + 0.5 * lambda * lnJ * lnJ;
-  for (PetscInt i = 0; i < 3; ++i)
-    for (PetscInt Jx = 0; Jx < 3; ++Jx) P[i * 3 + Jx] = mu * (F[i * 3 + Jx] - Fi[Jx * 3 + i]) + lambda * lnJ * Fi[Jx * 3 + i];
+  I1m3 = 2.0 * (H[0] + H[4] + H[8]) + H[0] * H[0] + H[1] * H[1] + H[2] * H[2] + H[3] * H[3] + H[4] * H[4] + H[5] * H[5] + H[6] * H[6] + H[7] * H[7] + H[8] * H[8];
+  *W   = 0.5 * mu * (I1m3 - 2.0 * lnJ) + 0.5 * lambda * lnJ * lnJ;
+  ll   = lambda * lnJ;
+#define NEO_P(i, Jx) P[i * 3 + Jx] = mu * (F[i * 3 + Jx] - Fi[Jx * 3 + i]) + ll * Fi[Jx * 3 + i]
+  NEO_P(0, 0);
+  NEO_P(0, 1);
+  NEO_P(0, 2);
+  NEO_P(1, 0);
+  NEO_P(1, 1);
+  NEO_P(1, 2);
+  NEO_P(2, 0);
+  NEO_P(2, 1);
+  NEO_P(2, 2);
+#undef NEO_P
   return PETSC_TRUE;
 }
 
@@ -99,7 +135,7 @@ static void NeoHookeanCauchy(const PetscReal param[], const PetscReal H[], Petsc
   const PetscReal lambda = param[0], mu = param[1];
   PetscReal       F[9], Fi[9], J, lnJ;
 
-  if (!NeoHookeanKinematics(H, F, Fi, &J, &lnJ)) {
+  if (!NeoHookeanKinematics(H, NeoHookeanBlock(H), F, Fi, &J, &lnJ)) {
     for (PetscInt k = 0; k < 9; ++k) sigma[k] = (PetscReal)NAN;
     return;
   }
@@ -111,21 +147,52 @@ static void NeoHookeanCauchy(const PetscReal param[], const PetscReal H[], Petsc
     }
 }
 
-/* The tangent at H: A[(i*3+J)*9+k*3+L] = A_iJkL. */
+/* A_iJkL from mFi = m F^-1 and lFi = lambda F^-1, formed once (the same
+   products, in the same order, as mu d_ik d_JL + m F^-1_Jk F^-1_Li +
+   lambda F^-1_Ji F^-1_Lk). */
+static inline void ModuliEntry(PetscReal mu, const PetscReal mFi[], const PetscReal lFi[], const PetscReal Fi[], PetscInt i, PetscInt Jx, PetscInt k, PetscInt L, PetscReal A[])
+{
+  A[((i * 3 + Jx) * 3 + k) * 3 + L] = (i == k && Jx == L ? mu : 0.0) + mFi[Jx * 3 + k] * Fi[L * 3 + i] + lFi[Jx * 3 + i] * Fi[L * 3 + k];
+}
+
+/* The tangent at H: A[(i*3+J)*9+k*3+L] = A_iJkL. Where F is block diagonal
+   the entries with an odd number of indices 2 are zero (each term pairs its
+   indices): the 41 others alone are formed. */
 static void NeoHookeanModuli(const PetscReal param[], const PetscReal H[], PetscReal A[])
 {
   const PetscReal lambda = param[0], mu = param[1];
-  PetscReal       F[9], Fi[9], J, lnJ, m;
+  const PetscBool block = NeoHookeanBlock(H);
+  PetscReal       F[9], Fi[9], J, lnJ, m, mFi[9], lFi[9];
 
-  if (!NeoHookeanKinematics(H, F, Fi, &J, &lnJ)) { /* never asked: an inverted state is never accepted */
+  if (!NeoHookeanKinematics(H, block, F, Fi, &J, &lnJ)) { /* never asked: an inverted state is never accepted */
     for (PetscInt k = 0; k < 81; ++k) A[k] = 0.0;
     return;
   }
   m = mu - lambda * lnJ;
-  for (PetscInt i = 0; i < 3; ++i)
-    for (PetscInt Jx = 0; Jx < 3; ++Jx)
-      for (PetscInt k = 0; k < 3; ++k)
-        for (PetscInt L = 0; L < 3; ++L) A[((i * 3 + Jx) * 3 + k) * 3 + L] = mu * (i == k) * (Jx == L) + m * Fi[Jx * 3 + k] * Fi[L * 3 + i] + lambda * Fi[Jx * 3 + i] * Fi[L * 3 + k];
+  for (PetscInt k = 0; k < 9; ++k) {
+    mFi[k] = m * Fi[k];
+    lFi[k] = lambda * Fi[k];
+  }
+  if (!block) {
+    for (PetscInt i = 0; i < 3; ++i)
+      for (PetscInt Jx = 0; Jx < 3; ++Jx)
+        for (PetscInt k = 0; k < 3; ++k)
+          for (PetscInt L = 0; L < 3; ++L) ModuliEntry(mu, mFi, lFi, Fi, i, Jx, k, L, A);
+    return;
+  }
+  for (PetscInt k = 0; k < 81; ++k) A[k] = 0.0;
+  for (PetscInt p = 0; p < 2; ++p)
+    for (PetscInt q = 0; q < 2; ++q) {
+      for (PetscInt k = 0; k < 2; ++k)
+        for (PetscInt L = 0; L < 2; ++L) ModuliEntry(mu, mFi, lFi, Fi, p, q, k, L, A);
+      ModuliEntry(mu, mFi, lFi, Fi, 2, 2, p, q, A);
+      ModuliEntry(mu, mFi, lFi, Fi, p, q, 2, 2, A);
+      ModuliEntry(mu, mFi, lFi, Fi, 2, p, 2, q, A);
+      ModuliEntry(mu, mFi, lFi, Fi, p, 2, q, 2, A);
+      ModuliEntry(mu, mFi, lFi, Fi, 2, p, q, 2, A);
+      ModuliEntry(mu, mFi, lFi, Fi, p, 2, 2, q, A);
+    }
+  ModuliEntry(mu, mFi, lFi, Fi, 2, 2, 2, 2, A);
 }
 
 const Material MaterialNeoHookean = {"neohookean", PETSC_FALSE, NeoHookeanEnergy, NeoHookeanModuli, NeoHookeanCauchy};
