@@ -115,7 +115,7 @@ bin/contact-sanitize: $(SAN_OBJS)
 SAN_TESTS = tests/test_patch_contact.py tests/test_master_pressure.py tests/test_cases.py tests/test_bad_input.py tests/test_robustness.py \
             tests/test_loads.py tests/test_force_control.py tests/test_held_by_contact.py tests/test_penalty_auto.py \
              tests/test_axisymmetric.py tests/test_setup_checks.py tests/test_missing_value.py tests/test_write_faults.py \
-             tests/test_neohookean.py tests/test_force_stop.py tests/test_slide_watch.py tests/test_slide_off.py
+             tests/test_neohookean.py tests/test_force_stop.py tests/test_slide_watch.py tests/test_slide_off.py tests/test_solid.py
 check-sanitize: bin/contact-sanitize meshes
 	CONTACT_BIN=$(CURDIR)/bin/contact-sanitize ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  $(PYTHON) -m pytest -q -m "not stress" $(PYTEST_PARALLEL) $(wildcard $(SAN_TESTS))
