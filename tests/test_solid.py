@@ -338,3 +338,19 @@ def test_three_components(tmp_path):
     (c,) = s["force_control"]
     assert c["component"] == "y" and abs(c["reaction"] - 5) <= 1e-7 * 5
     assert abs(s["reactions"]["blk:xmax"][1] - 5) <= 1e-7 * 5 and abs(s["reactions"]["blk:xmin"][1] + 5) <= 1e-7 * 5
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
+def test_taylor(hexa, tmp_path):
+    """The Taylor test (-taylor_test) of a neo-Hookean distorted block held
+    at xmin and pulled by a traction (50, 20, -10) on xmax, at its solution:
+    |E(u + eps v) - E(u) - eps g.v| and |g(u + eps v) - g(u) - eps H v| fall
+    as eps^2 (the energy, gradient and Hessian consistent in 3D). Measured:
+    `gradient_order` = 2.000 to 2.000, `hessian_order` = 2.000 to 2.000,
+    bounds [1.9, 2.1]."""
+    args = block(hexa) + ["-blk_material", "neohookean", "-blk_bc", "xmin", "-blk_load", "xmax",
+                          "-blk_load_xmax_traction", "50,20,-10", "-taylor_test", "-output", "none"]
+    t = run_contact(args, tmp_path).summary["taylor"]
+    assert 1.9 <= figure("gradient_order", t["gradient_order"]) <= 2.1
+    assert 1.9 <= figure("hessian_order", t["hessian_order"]) <= 2.1
