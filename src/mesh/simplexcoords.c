@@ -54,87 +54,34 @@ static PetscErrorCode CellVertices(DM dm, PetscInt c, PetscInt vs, PetscInt ve, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const char file[])
+/* The reference tetrahedron's vertices R[4][3] in its closure's order. */
+static PetscErrorCode ReferenceVertices(PetscReal R[4][3])
 {
-  DM                cdm;
-  Vec               coords;
-  PetscSection      cs;
-  PetscFE           cfe;
-  PetscDualSpace    sp;
-  PetscTabulation   Tv, T;
-  PetscInt          dim, cS, cE, vs, ve, nb, nc, changed = 0;
-  PetscReal         R[4][3], ref[SC_MAXNODES * 3], lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, tol = 0;
-  PetscReal        *G;
-  PetscInt         *sigma;
-  VertexCandidates *vc;
-  PetscScalar      *a;
-  PetscObject       obj;
+  DM                 rdm;
+  Vec                rc;
+  PetscInt           rvs, rve, v[4];
+  const PetscScalar *ra;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cS, &cE));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vs, &ve));
-  if (dim != 3 || cE == cS) PetscFunctionReturn(0);
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetField(cdm, 0, NULL, &obj));
-  if (!obj) PetscFunctionReturn(0);
-  cfe = (PetscFE)obj;
-  PetscCall(DMGetLocalSection(cdm, &cs));
-  {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(cs, cS, &dof));
-    if (!dof) PetscFunctionReturn(0); /* a continuous field: ordered by the points themselves */
-  }
-  PetscCall(PetscFEGetDimension(cfe, &nb));
-  PetscCall(PetscFEGetNumComponents(cfe, &nc));
-  nb /= nc;
-  PetscCheck(nc == 3 && nb <= SC_MAXNODES, PETSC_COMM_SELF, PETSC_ERR_SUP, "body %s: mesh %s: a coordinate field of %" PetscInt_FMT " components and %" PetscInt_FMT " nodes", name, file, nc, nb);
-  /* the reference vertices in the reference cell's closure order, and the field's nodes */
-  {
-    DM        rdm;
-    Vec       rc;
-    PetscInt  rvs, rve, v[4];
-    const PetscScalar *ra;
-    PetscCall(DMPlexCreateReferenceCell(PETSC_COMM_SELF, DM_POLYTOPE_TETRAHEDRON, &rdm));
-    PetscCall(DMPlexGetDepthStratum(rdm, 0, &rvs, &rve));
-    PetscCall(CellVertices(rdm, 0, rvs, rve, v));
-    PetscCall(DMGetCoordinatesLocal(rdm, &rc));
-    PetscCall(VecGetArrayRead(rc, &ra));
-    for (PetscInt i = 0; i < 4; ++i)
-      for (PetscInt d = 0; d < 3; ++d) R[i][d] = PetscRealPart(ra[3 * (v[i] - rvs) + d]);
-    PetscCall(VecRestoreArrayRead(rc, &ra));
-    PetscCall(DMDestroy(&rdm));
-  }
-  PetscCall(PetscFEGetDualSpace(cfe, &sp));
-  for (PetscInt k = 0; k < nb; ++k) { /* the nodes of the field's first component (its functionals come component by component at each node) */
-    PetscQuadrature  fq;
-    const PetscReal *pts;
-    PetscCall(PetscDualSpaceGetFunctional(sp, k * nc, &fq));
-    PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
-    for (PetscInt d = 0; d < 3; ++d) ref[3 * k + d] = pts[d];
-  }
-  PetscCall(PetscFECreateTabulation(cfe, 1, 4, &R[0][0], 0, &Tv));
+  PetscCall(DMPlexCreateReferenceCell(PETSC_COMM_SELF, DM_POLYTOPE_TETRAHEDRON, &rdm));
+  PetscCall(DMPlexGetDepthStratum(rdm, 0, &rvs, &rve));
+  PetscCall(CellVertices(rdm, 0, rvs, rve, v));
+  PetscCall(DMGetCoordinatesLocal(rdm, &rc));
+  PetscCall(VecGetArrayRead(rc, &ra));
+  for (PetscInt i = 0; i < 4; ++i)
+    for (PetscInt d = 0; d < 3; ++d) R[i][d] = PetscRealPart(ra[3 * (v[i] - rvs) + d]);
+  PetscCall(VecRestoreArrayRead(rc, &ra));
+  PetscCall(DMDestroy(&rdm));
   PetscCheck(R[0][0] == -1 && R[0][1] == -1 && R[0][2] == -1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the reference tetrahedron's first vertex is not (-1, -1, -1)");
-  PetscCall(PetscMalloc2(12 * (cE - cS), &G, 4 * (cE - cS), &sigma));
-  PetscCall(PetscCalloc1(ve - vs, &vc));
-  PetscCall(DMGetCoordinatesLocal(dm, &coords));
-  PetscCall(VecGetArray(coords, &a));
-  /* each cell's vertex positions G_j, from its field at R_j */
-  for (PetscInt c = cS; c < cE; ++c) {
-    PetscInt off;
-    PetscCall(PetscSectionGetOffset(cs, c, &off));
-    for (PetscInt j = 0; j < 4; ++j)
-      for (PetscInt d = 0; d < 3; ++d) {
-        PetscReal x = 0;
-        for (PetscInt f = 0; f < nb * nc; ++f) x += PetscRealPart(a[off + f]) * Tv->T[0][(j * nb * nc + f) * nc + d];
-        G[12 * (c - cS) + 3 * j + d] = x;
-        lo[d] = PetscMin(lo[d], x);
-        hi[d] = PetscMax(hi[d], x);
-      }
-  }
-  for (PetscInt d = 0; d < 3; ++d) tol = PetscMax(tol, hi[d] - lo[d]);
-  tol *= 1e-9;
-  /* each vertex's candidates: the positions every cell round it has */
+  PetscFunctionReturn(0);
+}
+
+/* Each vertex's candidates (vc): the positions every cell round it has
+   among its G_j; then, where several are left, less those its cells' other
+   vertices have. */
+static PetscErrorCode VertexPositions(DM dm, PetscInt cS, PetscInt cE, PetscInt vs, PetscInt ve, const PetscReal G[], PetscReal tol, VertexCandidates vc[])
+{
+  PetscFunctionBeginUser;
   for (PetscInt c = cS; c < cE; ++c) {
     PetscInt v[4];
     PetscCall(CellVertices(dm, c, vs, ve, v));
@@ -159,7 +106,6 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
       }
     }
   }
-  /* where several are left, the cell's other vertices' positions are not this one's */
   for (PetscBool progress = PETSC_TRUE; progress;) {
     progress = PETSC_FALSE;
     for (PetscInt c = cS; c < cE; ++c) {
@@ -182,11 +128,108 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
       }
     }
   }
-  /* sigma per cell, and its field rewritten in its closure's frame */
-  for (PetscInt c = cS; c < cE; ++c) {
-    PetscInt  v[4], off;
+  PetscFunctionReturn(0);
+}
+
+/* Cell c's field a[nb * nc] rewritten in its closure's frame: at each node
+   (reference ref[k], barycentric lambda in the closure's frame) the old
+   field's value at sum_i lambda_i R_sigma(i). */
+static PetscErrorCode CellRewrite(PetscFE cfe, PetscInt nb, PetscInt nc, const PetscReal ref[], PetscReal R[4][3], const PetscInt sigma[4], PetscScalar a[])
+{
+  PetscReal       pts[SC_MAXNODES * 3], old[SC_MAXNODES * 3];
+  PetscTabulation T;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < nb; ++k) {
+    const PetscReal *x = &ref[3 * k];
+    PetscReal        l[4];
+    for (PetscInt i = 1; i < 4; ++i) { /* R_0 = (-1,-1,-1), R_i one coordinate at +1 */
+      PetscInt axis = 0;
+      for (PetscInt d = 0; d < 3; ++d)
+        if (R[i][d] > 0) axis = d;
+      l[i] = 0.5 * (x[axis] + 1.0);
+    }
+    l[0] = 1.0 - l[1] - l[2] - l[3];
+    for (PetscInt d = 0; d < 3; ++d) {
+      pts[3 * k + d] = 0;
+      for (PetscInt i = 0; i < 4; ++i) pts[3 * k + d] += l[i] * R[sigma[i]][d];
+    }
+  }
+  PetscCall(PetscFECreateTabulation(cfe, 1, nb, pts, 0, &T));
+  for (PetscInt f = 0; f < nb * nc; ++f) old[f] = PetscRealPart(a[f]);
+  for (PetscInt k = 0; k < nb; ++k)
+    for (PetscInt d = 0; d < nc; ++d) {
+      PetscReal x = 0;
+      for (PetscInt f = 0; f < nb * nc; ++f) x += old[f] * T->T[0][(k * nb * nc + f) * nc + d];
+      a[k * nc + d] = x;
+    }
+  PetscCall(PetscTabulationDestroy(&T));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const char file[])
+{
+  DM                cdm;
+  Vec               coords;
+  PetscSection      cs;
+  PetscFE           cfe;
+  PetscDualSpace    sp;
+  PetscTabulation   Tv;
+  PetscInt          dim, cS, cE, vs, ve, nb, nc, dof, changed = 0;
+  PetscReal         R[4][3], ref[SC_MAXNODES * 3], lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, tol = 0;
+  PetscReal        *G;
+  VertexCandidates *vc;
+  PetscScalar      *a;
+  PetscObject       obj;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cS, &cE));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vs, &ve));
+  if (dim != 3 || cE == cS) PetscFunctionReturn(0);
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetField(cdm, 0, NULL, &obj));
+  if (!obj) PetscFunctionReturn(0);
+  cfe = (PetscFE)obj;
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(PetscSectionGetDof(cs, cS, &dof));
+  if (!dof) PetscFunctionReturn(0); /* a continuous field: ordered by the points themselves */
+  PetscCall(PetscFEGetDimension(cfe, &nb));
+  PetscCall(PetscFEGetNumComponents(cfe, &nc));
+  nb /= nc;
+  PetscCheck(nc == 3 && nb <= SC_MAXNODES, PETSC_COMM_SELF, PETSC_ERR_SUP, "body %s: mesh %s: a coordinate field of %" PetscInt_FMT " components and %" PetscInt_FMT " nodes", name, file, nc, nb);
+  PetscCall(ReferenceVertices(R));
+  PetscCall(PetscFEGetDualSpace(cfe, &sp));
+  for (PetscInt k = 0; k < nb; ++k) { /* the nodes of the field's first component (its functionals come component by component at each node) */
+    PetscQuadrature  fq;
+    const PetscReal *pts;
+    PetscCall(PetscDualSpaceGetFunctional(sp, k * nc, &fq));
+    PetscCall(PetscQuadratureGetData(fq, NULL, NULL, NULL, &pts, NULL));
+    for (PetscInt d = 0; d < 3; ++d) ref[3 * k + d] = pts[d];
+  }
+  PetscCall(PetscFECreateTabulation(cfe, 1, 4, &R[0][0], 0, &Tv));
+  PetscCall(PetscMalloc1(12 * (cE - cS), &G));
+  PetscCall(PetscCalloc1(ve - vs, &vc));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(VecGetArray(coords, &a));
+  for (PetscInt c = cS; c < cE; ++c) { /* each cell's vertex positions G_j, its field at R_j */
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(cs, c, &off));
+    for (PetscInt j = 0; j < 4; ++j)
+      for (PetscInt d = 0; d < 3; ++d) {
+        PetscReal x = 0;
+        for (PetscInt f = 0; f < nb * nc; ++f) x += PetscRealPart(a[off + f]) * Tv->T[0][(j * nb * nc + f) * nc + d];
+        G[12 * (c - cS) + 3 * j + d] = x;
+        lo[d] = PetscMin(lo[d], x);
+        hi[d] = PetscMax(hi[d], x);
+      }
+  }
+  for (PetscInt d = 0; d < 3; ++d) tol = PetscMax(tol, hi[d] - lo[d]);
+  tol *= 1e-9;
+  PetscCall(VertexPositions(dm, cS, cE, vs, ve, G, tol, vc));
+  for (PetscInt c = cS; c < cE; ++c) { /* sigma per cell, and its field rewritten in its closure's frame */
+    PetscInt  v[4], sigma[4], off;
     PetscBool identity = PETSC_TRUE;
-    PetscReal pts[SC_MAXNODES * 3], old[SC_MAXNODES * 3];
     PetscCall(CellVertices(dm, c, vs, ve, v));
     for (PetscInt i = 0; i < 4; ++i) {
       const VertexCandidates *w = &vc[v[i] - vs];
@@ -195,43 +238,18 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
       for (PetscInt k = 0; k < 4 && j < 0; ++k)
         if (SamePoint(w->cand[0], &G[12 * (c - cS) + 3 * k], tol)) j = k;
       PetscCheck(j >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "body %s: mesh %s: cell %" PetscInt_FMT " has no vertex at its vertex's position", name, file, c);
-      sigma[4 * (c - cS) + i] = j;
+      sigma[i] = j;
       identity = (PetscBool)(identity && j == i);
     }
     if (identity) continue;
     changed++;
-    /* each node of the field: barycentric in the closure's frame (R_i), at sum_i lambda_i R_sigma(i) in the old one */
-    for (PetscInt k = 0; k < nb; ++k) {
-      const PetscReal *x = &ref[3 * k];
-      PetscReal        l[4];
-      /* R_0 = (-1,-1,-1), the others one coordinate at +1: lambda from the reference coordinates */
-      for (PetscInt i = 1; i < 4; ++i) {
-        PetscInt axis = 0;
-        for (PetscInt d = 0; d < 3; ++d)
-          if (R[i][d] > 0) axis = d;
-        l[i] = 0.5 * (x[axis] + 1.0);
-      }
-      l[0] = 1.0 - l[1] - l[2] - l[3];
-      for (PetscInt d = 0; d < 3; ++d) {
-        pts[3 * k + d] = 0;
-        for (PetscInt i = 0; i < 4; ++i) pts[3 * k + d] += l[i] * R[sigma[4 * (c - cS) + i]][d];
-      }
-    }
-    PetscCall(PetscFECreateTabulation(cfe, 1, nb, pts, 0, &T));
     PetscCall(PetscSectionGetOffset(cs, c, &off));
-    for (PetscInt f = 0; f < nb * nc; ++f) old[f] = PetscRealPart(a[off + f]);
-    for (PetscInt k = 0; k < nb; ++k)
-      for (PetscInt d = 0; d < nc; ++d) {
-        PetscReal x = 0;
-        for (PetscInt f = 0; f < nb * nc; ++f) x += old[f] * T->T[0][(k * nb * nc + f) * nc + d];
-        a[off + k * nc + d] = x;
-      }
-    PetscCall(PetscTabulationDestroy(&T));
+    PetscCall(CellRewrite(cfe, nb, nc, ref, R, sigma, &a[off]));
   }
   PetscCall(VecRestoreArray(coords, &a));
   PetscCall(DMSetCoordinatesLocal(dm, coords));
   PetscCall(PetscTabulationDestroy(&Tv));
-  PetscCall(PetscFree2(G, sigma));
+  PetscCall(PetscFree(G));
   PetscCall(PetscFree(vc));
   PetscCall(PetscInfo(NULL, "body %s: %" PetscInt_FMT " of %" PetscInt_FMT " cells' second-order coordinates put in their closure's vertex order\n", name, changed, cE - cS));
   PetscFunctionReturn(0);
