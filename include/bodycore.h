@@ -50,7 +50,7 @@ struct _n_Body {
   PetscInt  ngeoparams;
   char     *geoparams[16];
   char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement, BodySetSizeField), or empty */
-  PetscReal E, nu, param[2]; /* param = {lambda, mu} */
+  PetscReal E, nu, param[MATERIAL_MAX_PARAMS]; /* E, nu: small-strain at rest (the material's); param: the material's own (material.h) */
   const Material *mat;       /* -<body>_material: its kernels (material.h) */
   PetscInt  inverted; PetscReal invertedAt[2]; /* energy evaluations that found J <= 0, and where the last one did (reference x, y) */
   PetscInt  nbc, qdeg;

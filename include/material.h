@@ -3,7 +3,9 @@
    displacement gradient, registered by name (material.c). The element loop
    (element.c) calls them and nothing else of the material.
 
-   Arguments: param = {lambda, mu} (Lame constants from E and nu); H[i*3+J]
+   Arguments: param, the material's own parameters (setFromOptions reads
+   them: {lambda, mu}, Lame's constants from E and nu, for linear and
+   neohookean; {C10, C01, D1} for mooneyrivlin); H[i*3+J]
    = du_i/dX_J, the full 3 x 3 displacement gradient in the reference
    configuration, F = I + H. In 3D H is full; in plane strain its row and
    column 2 are zero; in axisymmetry (x = r, y = z, 2 = theta) they are zero
@@ -12,8 +14,17 @@
    row-major: P[i*3+J], sigma[i*3+j], A[(i*3+J)*9 + k*3+L]. */
 #include <petscsys.h>
 
+#define MATERIAL_MAX_PARAMS 8
+
 typedef struct {
   const char *name;
+  /* Reads the material's options (prefix: "<body>_", each option with its
+     help and default in its own options block) into param, and gives its
+     small-strain Young's modulus E and Poisson's ratio nu at rest, which
+     the contact's E*, the penalty's scale, force control's reference
+     stiffness and the reports use. help: list the options only (nothing
+     is required). */
+  PetscErrorCode (*setFromOptions)(MPI_Comm comm, const char prefix[], PetscBool help, PetscReal param[], PetscReal *E, PetscReal *nu);
   /* the energy is quadratic in H: its Hessian does not depend on u, and
      the stiffness is assembled and factored once per solve */
   PetscBool constantTangent;
@@ -29,7 +40,11 @@ typedef struct {
   void (*cauchy)(const PetscReal param[], const PetscReal H[9], PetscReal sigma[9]);
 } Material;
 
-extern const Material MaterialLinear, MaterialNeoHookean;
+extern const Material MaterialLinear, MaterialNeoHookean, MaterialMooneyRivlin;
+/* Linear elasticity's and the neo-Hookean's options: -E and -nu, both
+   required, checked (E > 0 finite, -1 < nu < 0.5, a warning from 0.45 on),
+   into param = {lambda, mu} (elasticity.c). */
+PetscErrorCode MaterialElasticConstantsSetFromOptions(MPI_Comm, const char prefix[], PetscBool help, PetscReal param[], PetscReal *E, PetscReal *nu);
 extern PetscFunctionList MaterialList;
 PetscErrorCode MaterialRegisterAll(void);
 /* The material named name, or NULL if none is. */

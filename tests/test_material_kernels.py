@@ -199,3 +199,30 @@ def test_element_loop_3d_patch_and_rigid(element_figures):
     rg = max(element_figures[(c, "neohookean", "rotation_g")] for c in CELLS)
     assert figure("rot3d_W", rw) <= 1e-13
     assert figure("rot3d_g", rg) <= 1e-13
+
+
+@pytest.mark.roundoff
+def test_mooney_rivlin(figures):
+    """The compressible Mooney-Rivlin material (src/body/mooneyrivlin.c: W
+    of the isochoric invariants and J, its P and A from the invariants'
+    derivatives), C10 = 0.12, C01 = 0.07, D1 = 2.5, at the same 200 states:
+    A's Taylor order from `mr_taylor_A_min` = 1.975 to `mr_taylor_A_max` =
+    2.018 (bound [1.7, 2.3]); W's from `mr_taylor_P_min` = 1.18 to
+    `mr_taylor_P_max` = 2.016 (the 1.18 one state's first halving, where
+    the third derivative's share is large: 1.72 and 1.88 at the next two;
+    bound [1.0, 2.3], with central differences `mr_fd_P` = 1.8e-8 and
+    `mr_fd_A` = 1.0e-8 (bound 1e-6) showing P and A the derivatives); A
+    symmetric `mr_sym_A` = 3.4e-16 and at rest C with mu = 2 (C10 + C01),
+    lambda = 2/D1 - 2 mu/3: `mr_rest_A` = 0 (bounds 1e-14); Cauchy symmetric
+    `mr_cauchy_sym` = 6.3e-16 and P F^T/J (`mr_cauchy_PFt` = 0; bounds
+    1e-14, 1e-11); frame invariance `mr_frame_W` = 2.7e-10 (bound 1e-8),
+    `mr_frame_P` = 7.5e-13 (1e-10), zero at a rotation: `mr_rotation_W` =
+    -1.7e-16, `mr_rotation_P` = 4.4e-16 of mu (bound 1e-14)."""
+    f = lambda k: figures[("mooneyrivlin", k)]
+    assert 1.7 <= figure("mr_taylor_A_min", f("taylor_A_order_min")) <= figure("mr_taylor_A_max", f("taylor_A_order_max")) <= 2.3
+    assert 1.0 <= figure("mr_taylor_P_min", f("taylor_P_order_min")) <= figure("mr_taylor_P_max", f("taylor_P_order_max")) <= 2.3
+    assert figure("mr_fd_P", f("fd_P_rel")) <= 1e-6 and figure("mr_fd_A", f("fd_A_rel")) <= 1e-6
+    assert figure("mr_sym_A", f("sym_A_rel")) <= 1e-14 and figure("mr_rest_A", f("rest_A_rel")) <= 1e-14
+    assert figure("mr_cauchy_sym", f("cauchy_sym_rel")) <= 1e-14 and figure("mr_cauchy_PFt", f("cauchy_PFt_rel")) <= 1e-11
+    assert figure("mr_frame_W", f("frame_W_rel")) <= 1e-8 and figure("mr_frame_P", f("frame_P_rel")) <= 1e-10
+    assert abs(figure("mr_rotation_W", f("rotation_W"))) <= 1e-14 and figure("mr_rotation_P", f("rotation_P")) <= 1e-14

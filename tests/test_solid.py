@@ -123,22 +123,53 @@ def block_volume(skew):
     return V
 
 
+MR = (120.0, 70.0, 0.0025)  # Mooney-Rivlin C10, C01, D1 (mu = 380, K = 800)
+
+
 def energy_density(G, material):
-    """W at the displacement gradient G: linear elasticity's or the
-    neo-Hookean W = mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2."""
+    """W at the displacement gradient G: linear elasticity's, the
+    neo-Hookean W = mu/2 (I1 - 3 - 2 ln J) + lambda/2 (ln J)^2, or the
+    Mooney-Rivlin C10 (J^-2/3 I1 - 3) + C01 (J^-4/3 I2 - 3) + (J - 1)^2/D1
+    (complex G allowed: the complex-step derivative)."""
     if material == "linear":
         e = 0.5 * (G + G.T)
         return 0.5 * LAM * np.trace(e) ** 2 + MU * np.sum(e * e)
     F = np.eye(3) + G
     J = np.linalg.det(F)
+    if material == "mooneyrivlin":
+        C = F.T @ F
+        I1, I2 = np.trace(C), 0.5 * (np.trace(C) ** 2 - np.trace(C @ C))
+        C10, C01, D1 = MR
+        return C10 * (J ** (-2 / 3) * I1 - 3) + C01 * (J ** (-4 / 3) * I2 - 3) + (J - 1) ** 2 / D1
     return 0.5 * MU * (np.sum(F * F) - 3 - 2 * np.log(J)) + 0.5 * LAM * np.log(J) ** 2
+
+
+def without_elastic(args, material):
+    """args less -blk_E and -blk_nu for a material that does not read them."""
+    if material != "mooneyrivlin":
+        return args
+    out, skip = [], 0
+    for a in args:
+        if skip:
+            skip -= 1
+        elif a in ("-blk_E", "-blk_nu"):
+            skip = 1
+        else:
+            out.append(a)
+    return out
+
+
+def material_args(material):
+    if material == "mooneyrivlin":
+        return ["-blk_material", material, "-blk_C10", repr(MR[0]), "-blk_C01", repr(MR[1]), "-blk_D1", repr(MR[2])]
+    return ["-blk_material", material]
 
 
 def affine_run(tmp_path, hexa, material, c, G, skew=1.0, h=0.5, n=2, ranks=1, name="affine"):
     """The block with u = c + G x imposed on its whole boundary (-blk_exact
     affine), solved to a tight stop."""
     params = ",".join(repr(float(v)) for i in range(3) for v in [c[i]] + list(G[i]))
-    args = block(hexa, skew, h, n) + ["-blk_material", material, "-blk_bc", ",".join(FACES), "-blk_exact", "affine",
+    args = without_elastic(block(hexa, skew, h, n), material) + material_args(material) + ["-blk_bc", ",".join(FACES), "-blk_exact", "affine",
                                       "-blk_exact_params", params, "-tao_gttol", "1e-14", "-tao_gatol", "1e-11"]
     args += [f"-blk_bc_{f}_exact" for f in FACES]
     return run_contact(args + ["-output", "none"], tmp_path, ranks=ranks, name=name).summary
@@ -150,14 +181,15 @@ G_LARGE = 10 * G_SMALL
 
 @pytest.mark.roundoff
 @pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
-@pytest.mark.parametrize("material", ["linear", "neohookean"])
+@pytest.mark.parametrize("material", ["linear", "neohookean", "mooneyrivlin"])
 def test_affine_patch(hexa, material, tmp_path):
     """An affine map imposed on the whole boundary of the distorted block
     (skew 1: no face plane), Tet10 and Hex27: the finite-element space holds
     it, so the solution is it to round-off, and the energy is W(F) times the
-    volume (W computed here; the neo-Hookean at a finite strain, G of 0.1 to
-    0.3, J = 1.06). Measured: `l2` = 4.4e-16 to 5.1e-16 (relative L2 error),
-    `energy` = 1.1e-16 to 1.0e-15 (relative), each bound 1e-11 (the stop's
+    volume (W computed here; the neo-Hookean and the Mooney-Rivlin (C10 120,
+    C01 70, D1 0.0025) at a finite strain, G of 0.1 to 0.3, J = 1.06).
+    Measured: `l2` = 4.4e-16 to 6.4e-16 (relative L2 error), `energy` =
+    1.1e-16 to 3.3e-15 (relative), each bound 1e-11 (the stop's
     1e-11 of the gradient, over a stiffness of about E h)."""
     G = G_SMALL if material == "linear" else G_LARGE
     s = affine_run(tmp_path, hexa, material, [0.01, 0.0, 0.02], G)
@@ -187,10 +219,23 @@ def test_rotation(hexa, tmp_path):
     assert figure("stress", b["stress_l2_error"] / E) <= 1e-12
 
 
-def lateral_stretch(l1):
-    """The neo-Hookean block stretched l1 along x, free laterally: the
-    lateral stretch l2 with P22 = mu (l2 - 1/l2) + lambda ln(l1 l2^2) / l2 = 0
-    (bisection), and P11 = mu (l1 - 1/l1) + lambda ln J / l1."""
+def lateral_stretch(l1, material="neohookean"):
+    """The block stretched l1 along x, free laterally: the lateral stretch
+    l2 with P22 = 0 (bisection), and P11. Neo-Hookean: P22 = mu (l2 - 1/l2)
+    + lambda ln(l1 l2^2) / l2, P11 = mu (l1 - 1/l1) + lambda ln J / l1;
+    Mooney-Rivlin: P_ii = dW/dF_ii by the complex step, Im W(F + i t e_ii) /
+    t (exact to round-off, no cancellation)."""
+    if material == "mooneyrivlin":
+        def dW(l, k, t=1e-30):
+            G = np.diag(np.array(l, dtype=complex) - 1)
+            G[k, k] += 1j * t
+            return energy_density(G, material).imag / t
+        lo, hi = 0.2, 3.0
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if dW([l1, mid, mid], 1) > 0 else (mid, hi)
+        l2 = 0.5 * (lo + hi)
+        return l2, dW([l1, l2, l2], 0)
     lo, hi = 0.2, 3.0
     P22 = lambda l2: MU * (l2 - 1 / l2) + LAM * np.log(l1 * l2 * l2) / l2
     for _ in range(200):
@@ -206,18 +251,20 @@ def lateral_stretch(l1):
 @pytest.mark.roundoff
 @pytest.mark.parametrize("hexa", [False, True], ids=["tet10", "hex27"])
 @pytest.mark.parametrize("l1", [1.5, 0.6])
-def test_uniaxial(hexa, l1, tmp_path):
-    """The unit box (skew 0), neo-Hookean, on rollers (xmin in x, ymin in y,
+@pytest.mark.parametrize("material", ["neohookean", "mooneyrivlin"])
+def test_uniaxial(hexa, l1, material, tmp_path):
+    """The unit box (skew 0), neo-Hookean and Mooney-Rivlin, on rollers (xmin in x, ymin in y,
     zmin in z), its face xmax moved to the stretch l1 (1.5 and 0.6), free
     laterally: u = ((l1 - 1) x, (l2 - 1) y, (l2 - 1) z) with l2 from P22 = 0
     (bisection here), and the reaction at xmax P11 times the reference area
-    1. Measured: `l2` = 4.6e-16 to 3.3e-15 (relative L2 error of u against
-    that field), `reaction` = 2.2e-16 to 2.1e-15 (relative), bounds 1e-10
+    1 (neo-Hookean: formulas; Mooney-Rivlin: complex-step derivatives of
+    its W). Measured: `l2` = 4.6e-16 to 1.5e-14 (relative L2 error of u
+    against that field), `reaction` = 2.2e-16 to 4.9e-15 (relative), bounds 1e-10
     (the stop's 1e-11 of the gradient)."""
-    l2, P11 = lateral_stretch(l1)
+    l2, P11 = lateral_stretch(l1, material)
     G = np.diag([l1 - 1, l2 - 1, l2 - 1])
     params = ",".join(repr(float(v)) for i in range(3) for v in [0.0] + list(G[i]))
-    args = block(hexa, 0.0) + ["-blk_material", "neohookean", "-blk_bc", "xmin,ymin,zmin,xmax",
+    args = without_elastic(block(hexa, 0.0), material) + material_args(material) + ["-blk_bc", "xmin,ymin,zmin,xmax",
                                 "-blk_bc_xmin_components", "x", "-blk_bc_ymin_components", "y", "-blk_bc_zmin_components", "z",
                                 "-blk_bc_xmax_components", "x", "-blk_bc_xmax_values", repr(l1 - 1),
                                 "-blk_exact", "affine", "-blk_exact_params", params, "-tao_gttol", "1e-14", "-tao_gatol", "1e-11",

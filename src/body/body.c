@@ -46,7 +46,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   char      prefix[2 * CONTACT_NAME_LEN], opt[4 * CONTACT_NAME_LEN], exact[64] = "none", material[64] = "linear";
   char     *bcnames[CONTACT_MAX_BC];
   PetscInt  nbc = CONTACT_MAX_BC, ngp = 16;
-  PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, setE, setNu, help;
+  PetscBool hasGeo = PETSC_FALSE, hasMsh = PETSC_FALSE, help;
   PetscInt  qdeg = 4;
 
   PetscFunctionBeginUser;
@@ -59,9 +59,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
   PetscCall(PetscOptionsBool("-rigid", "A rigid body: its mesh gives only its curves, its motion is rigid (-<body>_rigid_centre, _rigid_rotation); E and nu are not asked for", NULL, b->rigid, &b->rigid, NULL));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, &b->E, &setE));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, &b->nu, &setNu));
-  PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain) or neohookean (compressible neo-Hookean, finite strain)", NULL, MaterialList, material, material, sizeof(material), NULL));
+  PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain, -E, -nu), neohookean (compressible neo-Hookean, finite strain, -E, -nu) or mooneyrivlin (compressible Mooney-Rivlin, -C10, -C01, -D1)", NULL, MaterialList, material, material, sizeof(material), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
   PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain or 3D), lame (-axisymmetric), sphere (3D)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
@@ -77,24 +75,16 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
   if (b->rigid || help) PetscCall(BodyRigidSetFromOptions(b, prefix));
   if (b->rigid && !help) { /* E and nu are not asked for; a rigid body has no cells to load */
+    PetscBool setE, setNu;
+    PetscCall(PetscOptionsHasName(NULL, prefix, "-E", &setE));
+    PetscCall(PetscOptionsHasName(NULL, prefix, "-nu", &setNu));
     PetscCheck(!setE && !setNu, b->comm, PETSC_ERR_USER_INPUT, "option -%s%s: body %s is rigid (-%srigid): it has no elastic constants", prefix, setE ? "E" : "nu", b->name, prefix);
-    setE = setNu = PETSC_TRUE;
-    b->E         = PETSC_INFINITY;
-    b->nu        = 0.0;
+    b->E  = PETSC_INFINITY;
+    b->nu = 0.0;
   }
-  PetscCheck(help || setE, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%sE is required", b->name, prefix);
-  PetscCheck(help || setNu, b->comm, PETSC_ERR_USER_INPUT, "body %s: -%snu is required", b->name, prefix);
   /* relative to the options file that names them */
   if (hasMsh && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-mesh", b->msh, sizeof(b->msh)));
   else if (hasGeo && !help) PetscCall(ContactOptionsGetInputFile(b->comm, prefix, "-geo", b->geo, sizeof(b->geo)));
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sE", prefix));
-  if (!b->rigid) PetscCall(CheckFinite(b->comm, opt, b->E));
-  PetscCheck(b->E > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: Young's modulus must be > 0, got %g", opt, (double)b->E);
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%snu", prefix));
-  PetscCall(CheckFinite(b->comm, opt, b->nu));
-  PetscCheck(b->nu > -1.0 && b->nu < 0.5, b->comm, PETSC_ERR_USER_INPUT, "option %s: Poisson's ratio must be in (-1, 0.5), got %g", opt, (double)b->nu);
-  /* lambda/mu = 2 nu/(1 - 2 nu) is 9 at nu = 0.45 and grows without bound */
-  if (b->nu >= 0.45) PetscCall(PetscFPrintf(b->comm, PETSC_STDERR, "contact: warning: body %s: nu = %g is nearly incompressible (lambda/mu = %.3g); P2/Q2 displacement elements may lock, so stresses and contact pressure converge more slowly\n", b->name, (double)b->nu, (double)(2 * b->nu / (1 - 2 * b->nu))));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%smesh_size", prefix));
   PetscCall(CheckFinite(b->comm, opt, b->h)); /* checked even where -mesh_size overrides it */
   PetscCheck(b->h > 0, b->comm, PETSC_ERR_USER_INPUT, "option %s: mesh size must be > 0, got %g", opt, (double)b->h);
@@ -107,8 +97,24 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: unknown material '%s' (known: %s)", prefix, material, known);
   }
   PetscCheck(!b->rigid || b->mat->constantTangent, b->comm, PETSC_ERR_USER_INPUT, "option -%smaterial: body %s is rigid (-%srigid): it has no material", prefix, b->name, prefix);
-  b->param[1] = b->E / (2.0 * (1.0 + b->nu));
-  b->param[0] = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu));
+  if (help) { /* every material's options, each reader once */
+    char names[256], *s = names, *t;
+    PetscErrorCode (*seen[8])(MPI_Comm, const char[], PetscBool, PetscReal[], PetscReal *, PetscReal *);
+    PetscInt nseen = 0;
+    PetscCall(ContactOptionsListNames(MaterialList, names, sizeof(names)));
+    for (; s && *s; s = t) {
+      const Material *m;
+      PetscBool       dup = PETSC_FALSE;
+      t = strchr(s, ',');
+      if (t) *t++ = 0;
+      while (*s == ' ') ++s;
+      PetscCall(MaterialFind(s, &m));
+      for (PetscInt k = 0; m && k < nseen; ++k) dup = (PetscBool)(dup || seen[k] == m->setFromOptions);
+      if (!m || dup || nseen >= 8) continue;
+      seen[nseen++] = m->setFromOptions;
+      PetscCall(m->setFromOptions(b->comm, prefix, PETSC_TRUE, b->param, &b->E, &b->nu));
+    }
+  } else if (!b->rigid) PetscCall(b->mat->setFromOptions(b->comm, prefix, PETSC_FALSE, b->param, &b->E, &b->nu));
   for (PetscInt k = 0; k < b->exact.nparams; ++k) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sexact_params", prefix));
     PetscCall(CheckFinite(b->comm, opt, b->exact.params[k]));
@@ -122,8 +128,8 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     /* another material's body force comes from the solution's second derivatives (BodyExactForce) */
     PetscCheck(b->mat->constantTangent || b->exact.d2u, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' has linear elasticity's body force only; with -%smaterial %s, affine and trig are exact", prefix, exact, prefix, b->mat->name);
     b->hasExact      = PETSC_TRUE;
-    b->exact.lambda  = b->param[0];
-    b->exact.mu      = b->param[1];
+    b->exact.lambda  = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu)); /* linear elasticity's body force (a constant tangent's) */
+    b->exact.mu      = b->E / (2.0 * (1.0 + b->nu));
   }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sbc", prefix));
   PetscCall(BodyCheckGroupsUnique(b, opt, nbc, bcnames));

@@ -103,4 +103,4 @@ static void LinearModuli(const PetscReal param[], const PetscReal H[], PetscReal
   ElasticityTangent(param, A);
 }
 
-const Material MaterialLinear = {"linear", PETSC_TRUE, LinearEnergy, LinearModuli, ElasticityStress};
+const Material MaterialLinear = {"linear", MaterialElasticConstantsSetFromOptions, PETSC_TRUE, LinearEnergy, LinearModuli, ElasticityStress};

@@ -195,4 +195,4 @@ static void NeoHookeanModuli(const PetscReal param[], const PetscReal H[], Petsc
   ModuliEntry(mu, mFi, lFi, Fi, 2, 2, 2, 2, A);
 }
 
-const Material MaterialNeoHookean = {"neohookean", PETSC_FALSE, NeoHookeanEnergy, NeoHookeanModuli, NeoHookeanCauchy};
+const Material MaterialNeoHookean = {"neohookean", MaterialElasticConstantsSetFromOptions, PETSC_FALSE, NeoHookeanEnergy, NeoHookeanModuli, NeoHookeanCauchy};

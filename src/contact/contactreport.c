@@ -172,7 +172,7 @@ static PetscErrorCode ContactForceString(const PetscReal f[2], PetscBool axisym,
 
 /* Dundurs' second constant of two bodies in plane strain:
    beta = [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)],
-   G the shear modulus (the body's Lame mu, param[1]), a rigid body's terms
+   G the shear modulus (E / (2 (1 + nu)), the material's at rest), a rigid body's terms
    0; 0 for elastically similar bodies, where a normal load makes no
    tangential mismatch (Cattaneo-Mindlin's assumption). */
 static PetscReal ContactDundursBeta(Body a, Body b)
@@ -181,7 +181,7 @@ static PetscReal ContactDundursBeta(Body a, Body b)
   Body      ab[2] = {a, b};
 
   for (PetscInt k = 0; k < 2; ++k) {
-    const PetscReal G = ab[k]->param[1], nu = ab[k]->nu;
+    const PetscReal nu = ab[k]->nu, G = ab[k]->E / (2.0 * (1.0 + nu));
     if (ab[k]->rigid || !(G > 0)) continue;
     n += (k == 0 ? 1.0 : -1.0) * (1.0 - 2.0 * nu) / G;
     d += 2.0 * (1.0 - nu) / G;
