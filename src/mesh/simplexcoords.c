@@ -131,13 +131,12 @@ static PetscErrorCode VertexPositions(DM dm, PetscInt cS, PetscInt cE, PetscInt 
   PetscFunctionReturn(0);
 }
 
-/* Cell c's field a[nb * nc] rewritten in its closure's frame: at each node
-   (reference ref[k], barycentric lambda in the closure's frame) the old
-   field's value at sum_i lambda_i R_sigma(i). */
-static PetscErrorCode CellRewrite(PetscFE cfe, PetscInt nb, PetscInt nc, const PetscReal ref[], PetscReal R[4][3], const PetscInt sigma[4], PetscScalar a[])
+/* The old field's basis at the points where a cell whose closure vertex i
+   sits at R_sigma(i) has its nodes: each node (reference ref[k],
+   barycentric lambda in the closure's frame) at sum_i lambda_i R_sigma(i). */
+static PetscErrorCode PermutedTabulation(PetscFE cfe, PetscInt nb, const PetscReal ref[], PetscReal R[4][3], const PetscInt sigma[4], PetscTabulation *T)
 {
-  PetscReal       pts[SC_MAXNODES * 3], old[SC_MAXNODES * 3];
-  PetscTabulation T;
+  PetscReal pts[SC_MAXNODES * 3];
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < nb; ++k) {
@@ -155,7 +154,16 @@ static PetscErrorCode CellRewrite(PetscFE cfe, PetscInt nb, PetscInt nc, const P
       for (PetscInt i = 0; i < 4; ++i) pts[3 * k + d] += l[i] * R[sigma[i]][d];
     }
   }
-  PetscCall(PetscFECreateTabulation(cfe, 1, nb, pts, 0, &T));
+  PetscCall(PetscFECreateTabulation(cfe, 1, nb, pts, 0, T));
+  PetscFunctionReturn(0);
+}
+
+/* Cell c's field a[nb * nc] rewritten in its closure's frame, T the old
+   field's basis at its nodes (PermutedTabulation). */
+static void CellRewrite(PetscInt nb, PetscInt nc, PetscTabulation T, PetscScalar a[])
+{
+  PetscReal old[SC_MAXNODES * 3];
+
   for (PetscInt f = 0; f < nb * nc; ++f) old[f] = PetscRealPart(a[f]);
   for (PetscInt k = 0; k < nb; ++k)
     for (PetscInt d = 0; d < nc; ++d) {
@@ -163,8 +171,6 @@ static PetscErrorCode CellRewrite(PetscFE cfe, PetscInt nb, PetscInt nc, const P
       for (PetscInt f = 0; f < nb * nc; ++f) x += old[f] * T->T[0][(k * nb * nc + f) * nc + d];
       a[k * nc + d] = x;
     }
-  PetscCall(PetscTabulationDestroy(&T));
-  PetscFunctionReturn(0);
 }
 
 PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const char file[])
@@ -174,7 +180,7 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
   PetscSection      cs;
   PetscFE           cfe;
   PetscDualSpace    sp;
-  PetscTabulation   Tv;
+  PetscTabulation   Tv, Tp[256] = {NULL}; /* the permuted tabulations met, by sigma's code (4 digits base 4) */
   PetscInt          dim, cS, cE, vs, ve, nb, nc, dof, changed = 0;
   PetscReal         R[4][3], ref[SC_MAXNODES * 3], lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, tol = 0;
   PetscReal        *G;
@@ -243,12 +249,18 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
     }
     if (identity) continue;
     changed++;
-    PetscCall(PetscSectionGetOffset(cs, c, &off));
-    PetscCall(CellRewrite(cfe, nb, nc, ref, R, sigma, &a[off]));
+    {
+      const PetscInt code = ((sigma[0] * 4 + sigma[1]) * 4 + sigma[2]) * 4 + sigma[3];
+      if (!Tp[code]) PetscCall(PermutedTabulation(cfe, nb, ref, R, sigma, &Tp[code]));
+      PetscCall(PetscSectionGetOffset(cs, c, &off));
+      CellRewrite(nb, nc, Tp[code], &a[off]);
+    }
   }
   PetscCall(VecRestoreArray(coords, &a));
   PetscCall(DMSetCoordinatesLocal(dm, coords));
   PetscCall(PetscTabulationDestroy(&Tv));
+  for (PetscInt k = 0; k < 256; ++k)
+    if (Tp[k]) PetscCall(PetscTabulationDestroy(&Tp[k]));
   PetscCall(PetscFree(G));
   PetscCall(PetscFree(vc));
   PetscCall(PetscInfo(NULL, "body %s: %" PetscInt_FMT " of %" PetscInt_FMT " cells' second-order coordinates put in their closure's vertex order\n", name, changed, cE - cS));
