@@ -89,7 +89,8 @@ def test_fields_exact(hexa, skew, tmp_path):
     |sigma|: measured `dsig` = 1.9e-14 to 3.1e-14) and von Mises that of the
     full 3D sigma; the XDMF forms (displacement_xyz, stress_xx ...
     stress_xz) the same columns; the JSON's max_displacement and
-    displacement_norm over the three components of every node."""
+    displacement_norm over the three components of every node; the six
+    faces' reactions of 3 components each."""
     run = affine(tmp_path, hexa, skew)
     f = fields(run)
     X, u, sig = f["geometry"], f["displacement"], f["stress"]
@@ -116,6 +117,10 @@ def test_fields_exact(hexa, skew, tmp_path):
     assert abs(summary["displacement_norm"] - np.sqrt(np.sum(norms ** 2))) <= 1e-13 * np.sqrt(np.sum(norms ** 2))
     assert abs(summary["bodies"]["blk"]["max_displacement"] - norms.max()) <= 1e-14 * norms.max()
     assert summary["bodies"]["blk"]["nodes"] == n
+    # the reactions: 3 components a face (their balance is test_solid.py's
+    # test_three_components: here the faces share their edges' nodes)
+    R = np.array([summary["reactions"][f"blk:{g}"] for g in FACES])
+    assert R.shape == (6, 3) and np.isfinite(R).all()
     xdmf = run.output_path.with_suffix(".xdmf").read_text()
     assert f'TopologyType="{XDMF_TYPE[f["cell_type"]]}"' in xdmf
     assert 'GeometryType="XYZ"' in xdmf and f'Dimensions="{n} 3"' in xdmf
@@ -265,6 +270,27 @@ def test_ranks_write_the_same(hexa, tmp_path):
         assert figure(tag, np.abs(a - b).max() / np.abs(a).max()) <= 1e-10, name
     # the cells: the same, each with its nodes in the same (VTK's) order
     assert sorted(map(tuple, m[one["topology"].astype(int)])) == sorted(map(tuple, two["topology"].astype(int)))
+
+
+@pytest.mark.roundoff
+def test_load_stages(tmp_path):
+    """-load_stages 2 on the bent Hex27 box (xmax moved 0.05, then 0.1 in
+    z): /stages/1 and /stages/2 hold each stage end's fields of 3 and 6
+    columns, and the XDMF file one Hexahedron_27 grid a stage; the body is
+    linear, so stage 1's displacement and stress are half stage 2's (to
+    1e-10 of the largest, the solves' stop 1e-14: measured `half` = 1.2e-15
+    to 5.8e-15), and stage 2's are the final ones of /bodies."""
+    args = block(True, 0.0, h=0.25, n=4) + ["-blk_bc", "xmin,xmax", "-blk_bc_xmax_values", "0,0,0.05,0,0,0.1",
+                                            "-load_stages", "2", "-tao_gttol", "1e-14", "-tao_gatol", "1e-11"]
+    run = run_contact(args, tmp_path, name="stages")
+    with run.h5() as h5:
+        s1, s2, fin = (h5[p]["blk"] for p in ("stages/1/bodies", "stages/2/bodies", "bodies"))
+        for name, cols in (("displacement", 3), ("stress", 6)):
+            a, b = s1[name][...], s2[name][...]
+            assert a.shape[1] == cols and b.shape == a.shape
+            assert figure("half", np.abs(2 * a - b).max() / np.abs(b).max()) <= 1e-10, name
+            np.testing.assert_array_equal(b, fin[name][...])
+    assert run.output_path.with_suffix(".xdmf").read_text().count('TopologyType="Hexahedron_27"') == 2
 
 
 def test_plot_field_says_paraview(tmp_path):
