@@ -293,6 +293,19 @@ def test_load_stages(tmp_path):
     assert run.output_path.with_suffix(".xdmf").read_text().count('TopologyType="Hexahedron_27"') == 2
 
 
+def test_json_loads(tmp_path):
+    """A traction (0.3, -0.2, 1) per unit area on the box's zmax face (area
+    1), held at zmin: the JSON's loads give its resultant with its three
+    components (to 1e-12), and the zmin reaction balances it (to 1e-10,
+    the stop's: the only other force)."""
+    args = block(True, 0.0) + ["-blk_bc", "zmin", "-blk_load", "zmax", "-blk_load_zmax_traction", "0.3,-0.2,1",
+                               "-tao_gttol", "1e-14", "-tao_gatol", "1e-11"]
+    s = run_contact(args, tmp_path, name="loads").summary
+    F = np.array(s["loads"]["blk:zmax"])
+    assert F.shape == (3,) and np.abs(F - [0.3, -0.2, 1.0]).max() <= 1e-12
+    assert np.abs(np.array(s["reactions"]["blk:zmin"]) + F).max() <= 1e-10
+
+
 def test_plot_field_says_paraview(tmp_path):
     """scripts/plot_hertz.py on a 3D file: --field says in one line to open
     the XDMF file in ParaView (status 0, nothing written), and the pressure

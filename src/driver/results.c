@@ -447,7 +447,8 @@ static PetscErrorCode JSONLoadStages(FILE *fp, Problem p)
   PetscFunctionReturn(0);
 }
 
-/* Each load's resultant, at the load factor solved (only with loads). In
+/* Each load's resultant, at the load factor solved (only with loads), of
+   the body's dim components. In
    r-z it is axial: the radial sum of a load's nodal forces is its rings'
    radial load, which cancels round the circle (as a contact pair's,
    contactreport.c), so its radial component is written 0. */
@@ -459,11 +460,11 @@ static void JSONLoads(FILE *fp, Problem p)
     for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
       const BodyLoad *L = &p->bodies[i]->load[j];
       char            key[2 * CONTACT_NAME_LEN + 2];
-      PetscReal       f[2];
+      PetscReal       f[3] = {0, 0, 0};
       BodyLoadResultant(p->bodies[i], j, f);
       if (p->opt.axisymmetric) f[0] = 0.0;
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
-      ContactJSONKeyPair(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, f);
+      ContactJSONKeyVector(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, p->bodies[i]->dim, f); /* [fx, fy], a 3D body's [fx, fy, fz] */
     }
   if (n) fprintf(fp, "\n  }");
 }
