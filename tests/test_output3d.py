@@ -254,13 +254,14 @@ def test_ranks_write_the_same(hexa, tmp_path):
     same number of cells, and each cell the same nodes. The solves stop at
     1e-14 of the gradient and the problem is linear (one Newton step):
     measured `du` = up to 2.6e-15, `dsig` = up to 9.2e-15, `dvm` = up to
-    9.7e-15 of the largest; bound 1e-10."""
+    9.7e-15 of the largest; bound 1e-10. A node is matched to the other
+    run's nearest: a Tet10 node's position, evaluated in one of its cells,
+    moves by round-off with the partition (measured `dx` = up to 1.1e-15,
+    bound 1e-12)."""
     one, two = fields(bend(tmp_path, hexa, name="one")), fields(bend(tmp_path, hexa, ranks=2, name="two"))
     X1, X2 = one["geometry"], two["geometry"]
     assert len(X1) == len(X2) and len(one["topology"]) == len(two["topology"])
-    # each node of one run the nearest of the other's (a Tet10 node's position,
-    # evaluated in one of its cells, moves by round-off with the partition:
-    # measured `dx` = up to 1.1e-15)
+    # each node of one run the nearest of the other's (docstring)
     d = np.linalg.norm(X1[:, None, :] - X2[None, :, :], axis=2)
     m = d.argmin(axis=1)
     assert sorted(m) == list(range(len(X1)))
