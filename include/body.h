@@ -44,7 +44,10 @@ typedef struct {
   PetscReal l2, l2norm, energy, energynorm, stress, stressnorm;
 } BodyErrors;
 PetscErrorCode BodyComputeErrors(Body, Vec Xl, BodyErrors *);
-/* Nodal fields for output (fields.c), from the body's local vector Xl. */
+/* Nodal fields for output (fields.c), from the body's local vector Xl:
+   coords and disp of dim components, stress of BodyStressComponents(dim)
+   (xx, yy, zz, xy; in 3D then yz, xz). */
+#define BodyStressComponents(dim) ((dim) == 3 ? 6 : 4)
 typedef struct {
   Vec       coords, disp, stress, vm;
   IS        topo;
@@ -54,6 +57,9 @@ typedef struct {
   PetscReal maxStrain; /* the largest principal Green-Lagrange strain (BodyComputeMaxStrain) */
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
+/* Cell c's nb global node numbers in the order of its XDMF / VTK cell type
+   (cellorder.c): Triangle_6, Quadrilateral_9, Tetrahedron_10, Hexahedron_27. */
+PetscErrorCode BodyCellOutputNodes(Body, PetscInt c, PetscInt topo[]);
 PetscErrorCode BodyNodalFieldsDestroy(BodyNodalFields *);
 /* Collective: the largest principal Green-Lagrange strain, in magnitude,
    over the body's quadrature points (fields.c). */
@@ -66,7 +72,7 @@ PetscErrorCode BodyComputeMaxStrain(Body, Vec Xl, PetscReal *emax);
 #define BODY_STRAIN_RING  4.0
 #define BODY_STRAIN_POINT 0.8
 typedef struct {
-  PetscReal emax, x[2], h, ring;
+  PetscReal emax, x[3], h, ring;
 } BodyStrainPeak;
 PetscErrorCode BodyComputeStrainPeak(Body, Vec Xl, BodyStrainPeak *);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm

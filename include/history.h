@@ -17,5 +17,5 @@ PetscReal BodyControlForce(Body, PetscInt i, PetscInt c);
 /* A rigid body's unknown q's force at the load parameter last set: its
    condition's force where force-controlled, else 0 (held by the contact). */
 PetscReal BodyRigidControlForce(Body, PetscInt q);
-/* Load l's resultant at the load parameter last set, into f[2]. */
-void BodyLoadResultant(Body, PetscInt l, PetscReal f[2]);
+/* Load l's resultant at the load parameter last set, into f[dim] (f[3]). */
+void BodyLoadResultant(Body, PetscInt l, PetscReal f[3]);

@@ -18,6 +18,11 @@ static inline const char *const *XdmfBodyScalarNames(int axisym)
 {
   return axisym ? XdmfBodyScalarsAxisym : XdmfBodyScalars;
 }
+/* A 3D body's (no contact surfaces in 3D yet, and a scene is all 2D or all
+   3D, so every grid of a 3D scene carries these): the stress columns xx,
+   yy, zz, xy, yz, xz, then von Mises. */
+#define XDMF_BODY_SCALARS_3D 7
+static const char *const XdmfBodyScalars3D[XDMF_BODY_SCALARS_3D] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"};
 static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
 /* In a scene with friction, also on every grid: a frictional pair's slave
    surface has them (its node_shear, node_slip, node_stick), its master the

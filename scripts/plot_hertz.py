@@ -23,7 +23,9 @@ Usage:
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
         von Mises stress on the deformed bodies; the quadratic (Tri6 / Quad9)
         cells are subdivided through their shape functions so that curved edges
-        are drawn smoothly
+        are drawn smoothly; a 3D scene's file (Tet10 / Hex27 bodies) is
+        skipped with one line naming its XDMF file to open in ParaView
+        (exit status 0, nothing written)
 
 --scale S magnifies each body's deformation, not its rigid motion: per body the
 rigid motion that best fits the computed displacement (least squares over the
@@ -68,6 +70,10 @@ DEFAULT_ZOOM = 3.0   # --zoom alone: a window three times the loaded length
 # Local node ids (a, b, mid) of the edges of each cell type, in XDMF order.
 EDGES = {"Tri6": [(0, 1, 3), (1, 2, 4), (2, 0, 5)],
          "Quad9": [(0, 1, 4), (1, 2, 5), (2, 3, 6), (3, 0, 7)]}
+
+
+# A 3D body's cell types: its fields are ParaView's to show (--field says so).
+SOLID_CELLS = ("Tet10", "Hex27")
 
 
 class PlotError(Exception):
@@ -789,6 +795,12 @@ def main():
             if args.field:
                 if "bodies" not in f:
                     raise PlotError(f"{args.file}: no /bodies group")
+                solid = [name for name, g in f["bodies"].items() if attr(g, "cell_type") in SOLID_CELLS]
+                if solid:
+                    xdmf = os.path.splitext(args.file)[0] + ".xdmf"
+                    print(f"{PROG}: {args.file} has 3D bodies ({', '.join(solid)}): open {xdmf} in "
+                          f"ParaView for their fields (a plane plot would show one slice); nothing written")
+                    return 0
                 fig, ax = plt.subplots(figsize=(9, 6))
                 note = plot_field(f, args.scale, ax, label, units, args.zoom)
                 if note:
@@ -806,9 +818,11 @@ def main():
                 fig.suptitle(label)
             else:
                 if "contact" not in f or not len(f["contact"]):
+                    solid = "bodies" in f and any(attr(g, "cell_type") in SOLID_CELLS for g in f["bodies"].values())
+                    hint = "its XDMF file in ParaView shows the stress" if solid else "--field plots the stress"
                     if not args.quiet:
                         print(f"{PROG}: {args.file} has no contact pairs: pressure plot "
-                              f"skipped, nothing written (--field plots the stress)")
+                              f"skipped, nothing written ({hint})")
                     return 0
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,

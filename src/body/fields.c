@@ -1,7 +1,8 @@
 /* Nodal fields of a body for output: the second-order nodal mesh
-   (coordinates, Tri6/Quad9 connectivity in XDMF node order), displacement,
-   and the stress (xx, yy, zz, xy; in axisymmetry rr, zz, thth, rz: the
-   third the hoop stress) and von Mises stress recovered at the nodes
+   (coordinates, connectivity in XDMF node order: Tri6/Quad9, Tet10/Hex27,
+   cellorder.c), displacement, and the stress (xx, yy, zz, xy; in
+   axisymmetry rr, zz, thth, rz: the third the hoop stress; a 3D body's
+   xx, yy, zz, xy, yz, xz) and von Mises stress recovered at the nodes
    by averaging each cell's stress there over the cells around the node.
    The stress is the material's Cauchy stress (material.h): of the deformed
    configuration, attached to each node's reference position. */
@@ -20,12 +21,27 @@ static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, con
   PetscFunctionReturn(0);
 }
 
-/* Per local point: the sums of the stresses (xx, yy, zz, xy) of the cells
-   around it at the point, and their count (sr[5 * point]), summed over every
-   rank's cells and the same on every rank that has the point. */
+/* The stress components the output keeps of a Cauchy stress sig[9]: xx,
+   yy, zz, xy, and a 3D body's yz, xz too (BodyStressComponents). */
+static inline void StressComponents(PetscInt dim, const PetscReal sig[9], PetscReal s[])
+{
+  s[0] = sig[0];
+  s[1] = sig[4];
+  s[2] = sig[8];
+  s[3] = sig[1];
+  if (dim == 3) {
+    s[4] = sig[5];
+    s[5] = sig[2];
+  }
+}
+
+/* Per local point: the sums of the stress components (StressComponents)
+   of the cells around it at the point, and their count (sr[(ns + 1) *
+   point], ns = BodyStressComponents), summed over every rank's cells and
+   the same on every rank that has the point. */
 static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal sr[])
 {
-  const PetscInt  nb = b->nb, dim = b->dim, np = b->pEnd - b->pStart;
+  const PetscInt  nb = b->nb, dim = b->dim, np = b->pEnd - b->pStart, ns = BodyStressComponents(dim), ns1 = ns + 1;
   PetscSF         sf;
   PetscInt        nroots;
   PetscReal      *sp, refpts[ELEMENT_MAX_DOFS];
@@ -33,41 +49,39 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
 
   PetscFunctionBeginUser;
   PetscCall(DMGetPointSF(b->dm, &sf));
-  PetscCall(PetscCalloc1(5 * np, &sp));
+  PetscCall(PetscCalloc1(ns1 * np, &sp));
   PetscCall(BodyGetReferenceNodes(b, refpts));
   PetscCall(PetscFECreateTabulation(b->feScalar, 1, nb, refpts, 1, &Tn));
   for (PetscInt c = 0; c < b->ncells; ++c) {
     const PetscInt *pts = &b->cpts[c * nb];
-    const PetscReal(*x)[2] = (const PetscReal(*)[2]) & b->xnode[c * nb * dim];
-    PetscReal u[ELEMENT_MAX_DOFS], dNdx[ELEMENT_MAX_DOFS];
+    const PetscReal *x = &b->xnode[c * nb * dim];
+    PetscReal        u[ELEMENT_MAX_DOFS], dNdx[ELEMENT_MAX_DOFS];
 
     ElementGather(b, c, ua, u);
     for (PetscInt a = 0; a < nb; ++a) {
-      PetscReal  H[9], sig[9];
-      PetscReal *acc = &sp[5 * (pts[a] - b->pStart)];
-      (void)BodyElementGradients(nb, x, &Tn->T[1][a * nb * dim], dNdx);
+      PetscReal  H[9], sig[9], st[6];
+      PetscReal *acc = &sp[ns1 * (pts[a] - b->pStart)];
+      (void)BodyElementGradientsDim(dim, nb, x, &Tn->T[1][a * nb * dim], dNdx);
       ElementFormGradient(dim, nb, u, dNdx, H);
-      if (b->axisym) H[8] = ElasticityHoopStrain(u[a * dim], H[0], x[a][0] > b->axisTol ? x[a][0] : 0.0); /* the node's own u_r and r */
+      if (b->axisym) H[8] = ElasticityHoopStrain(u[a * dim], H[0], x[a * dim] > b->axisTol ? x[a * dim] : 0.0); /* the node's own u_r and r */
       b->mat->cauchy(b->param, H, sig);
-      acc[0] += sig[0];
-      acc[1] += sig[4];
-      acc[2] += sig[8];
-      acc[3] += sig[1];
-      acc[4] += 1.0;
+      StressComponents(dim, sig, st);
+      for (PetscInt j = 0; j < ns; ++j) acc[j] += st[j];
+      acc[ns] += 1.0;
     }
   }
   PetscCall(PetscTabulationDestroy(&Tn));
   PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
-  PetscCall(PetscArraycpy(sr, sp, 5 * np));
+  PetscCall(PetscArraycpy(sr, sp, ns1 * np));
   if (nroots >= 0) {
-    MPI_Datatype five;
-    PetscCallMPI(MPI_Type_contiguous(5, MPIU_REAL, &five));
-    PetscCallMPI(MPI_Type_commit(&five));
-    PetscCall(PetscSFReduceBegin(sf, five, sp, sr, MPI_SUM));
-    PetscCall(PetscSFReduceEnd(sf, five, sp, sr, MPI_SUM));
-    PetscCall(PetscSFBcastBegin(sf, five, sr, sr, MPI_REPLACE));
-    PetscCall(PetscSFBcastEnd(sf, five, sr, sr, MPI_REPLACE));
-    PetscCallMPI(MPI_Type_free(&five));
+    MPI_Datatype unit;
+    PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)ns1, MPIU_REAL, &unit));
+    PetscCallMPI(MPI_Type_commit(&unit));
+    PetscCall(PetscSFReduceBegin(sf, unit, sp, sr, MPI_SUM));
+    PetscCall(PetscSFReduceEnd(sf, unit, sp, sr, MPI_SUM));
+    PetscCall(PetscSFBcastBegin(sf, unit, sr, sr, MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(sf, unit, sr, sr, MPI_REPLACE));
+    PetscCallMPI(MPI_Type_free(&unit));
   }
   PetscCall(PetscFree(sp));
   PetscFunctionReturn(0);
@@ -76,15 +90,16 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
 /* Zienkiewicz-Zhu indicator of each local cell: the L2 norm over the cell of
    the difference between the recovered stress (the nodal averages
    interpolated with the cell's basis) and the cell's own stress,
-   eta_K^2 = int_K |sigma* - sigma_h|^2 dA (components xx, yy, zz, xy; xy twice). */
+   eta_K^2 = int_K |sigma* - sigma_h|^2 dA (components xx, yy, zz, xy; xy
+   twice; a 3D body's yz and xz twice too). */
 PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
 {
-  const PetscInt     nb = b->nb, nq = b->nq, np = b->pEnd - b->pStart;
+  const PetscInt     nb = b->nb, nq = b->nq, np = b->pEnd - b->pStart, ns = BodyStressComponents(b->dim), ns1 = ns + 1;
   const PetscScalar *ua;
   PetscReal         *sr;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(5 * np, &sr));
+  PetscCall(PetscMalloc1(ns1 * np, &sr));
   PetscCall(VecGetArrayRead(Xl, &ua));
   PetscCall(BodyStressSums(b, ua, sr));
   for (PetscInt c = 0; c < b->ncells; ++c) {
@@ -94,18 +109,16 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
     ElementGather(b, c, ua, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
       const PetscReal *B = &b->B[iq * nb];
-      PetscReal        H[9], sig[9], h[4], rec[4] = {0, 0, 0, 0};
+      PetscReal        H[9], sig[9], h[6] = {0, 0, 0, 0, 0, 0}, rec[6] = {0, 0, 0, 0, 0, 0};
       for (PetscInt a = 0; a < nb; ++a) {
-        const PetscReal *st = &sr[5 * (pts[a] - b->pStart)];
-        for (PetscInt j = 0; j < 4; ++j) rec[j] += B[a] * st[j] / st[4];
+        const PetscReal *st = &sr[ns1 * (pts[a] - b->pStart)];
+        for (PetscInt j = 0; j < ns; ++j) rec[j] += B[a] * st[j] / st[ns];
       }
       ElementPointGradient(b, c, iq, u, NULL, H);
       b->mat->cauchy(b->param, H, sig);
-      h[0] = sig[0];
-      h[1] = sig[4];
-      h[2] = sig[8];
-      h[3] = sig[1];
-      e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
+      StressComponents(b->dim, sig, h);
+      if (ns == 4) e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
+      else e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * (PetscSqr(rec[3] - h[3]) + PetscSqr(rec[4] - h[4]) + PetscSqr(rec[5] - h[5])));
     }
     eta[c] = PetscSqrtReal(e2);
   }
@@ -189,10 +202,11 @@ PetscErrorCode BodyComputeMaxStrain(Body b, Vec Xl, PetscReal *emax)
    0.90), and a peak whose ring reaches another singular point reads as
    smooth (the old advice). ring is the largest strain between
    BODY_STRAIN_RING / 2 and BODY_STRAIN_RING cell sizes h from the peak (h
-   the square root of the peak's cell's area, 0.66 of a Tri6's edge). */
+   the square root of the peak's cell's area, 0.66 of a Tri6's edge; a 3D
+   body's: the cube root of its volume, and x has 3 coordinates). */
 PetscErrorCode BodyComputeStrainPeak(Body b, Vec Xl, BodyStrainPeak *pk)
 {
-  const PetscInt     nq = b->nq;
+  const PetscInt     nq = b->nq, dim = b->dim;
   const PetscScalar *ua;
   struct {
     double v;
@@ -200,7 +214,7 @@ PetscErrorCode BodyComputeStrainPeak(Body b, Vec Xl, BodyStrainPeak *pk)
   } loc = {0.0, 0}, glob;
   PetscMPIInt rank;
   PetscInt    cbest = -1, qbest = -1;
-  PetscReal   xh[3] = {0, 0, 0}, m = 0.0;
+  PetscReal   xh[4] = {0, 0, 0, 0}, m = 0.0; /* x, y, z, h */
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
@@ -221,21 +235,22 @@ PetscErrorCode BodyComputeStrainPeak(Body b, Vec Xl, BodyStrainPeak *pk)
   PetscCallMPI(MPI_Allreduce(&loc, &glob, 1, MPI_DOUBLE_INT, MPI_MAXLOC, b->comm));
   if (rank == glob.r && cbest >= 0) {
     PetscReal area = 0.0;
-    for (PetscInt iq = 0; iq < nq; ++iq) area += b->wdetJ[cbest * nq + iq] / BodyRadialWeight(b, b->xq[(cbest * nq + iq) * 2]);
-    xh[0] = b->xq[(cbest * nq + qbest) * 2];
-    xh[1] = b->xq[(cbest * nq + qbest) * 2 + 1];
-    xh[2] = PetscSqrtReal(area);
+    for (PetscInt iq = 0; iq < nq; ++iq) area += b->wdetJ[cbest * nq + iq] / BodyRadialWeight(b, b->xq[(cbest * nq + iq) * dim]);
+    for (PetscInt d = 0; d < dim; ++d) xh[d] = b->xq[(cbest * nq + qbest) * dim + d];
+    xh[3] = dim == 3 ? PetscCbrtReal(area) : PetscSqrtReal(area);
   }
-  PetscCallMPI(MPI_Bcast(xh, 3, MPIU_REAL, glob.r, b->comm));
+  PetscCallMPI(MPI_Bcast(xh, 4, MPIU_REAL, glob.r, b->comm));
   pk->emax = (PetscReal)glob.v;
   pk->x[0] = xh[0];
   pk->x[1] = xh[1];
-  pk->h    = xh[2];
+  pk->x[2] = xh[2];
+  pk->h    = xh[3];
   for (PetscInt c = 0; c < b->ncells; ++c) {
     PetscReal u[ELEMENT_MAX_DOFS];
     ElementGather(b, c, ua, u);
     for (PetscInt iq = 0; iq < nq; ++iq) {
-      const PetscReal *x = &b->xq[(c * nq + iq) * 2], d = PetscSqrtReal(PetscSqr(x[0] - pk->x[0]) + PetscSqr(x[1] - pk->x[1])), e = BodyStrainAt(b, u, c, iq);
+      const PetscReal *x = &b->xq[(c * nq + iq) * dim], e = BodyStrainAt(b, u, c, iq);
+      const PetscReal  d = dim == 3 ? PetscSqrtReal(PetscSqr(x[0] - pk->x[0]) + PetscSqr(x[1] - pk->x[1]) + PetscSqr(x[2] - pk->x[2])) : PetscSqrtReal(PetscSqr(x[0] - pk->x[0]) + PetscSqr(x[1] - pk->x[1]));
       if (d > 0.5 * BODY_STRAIN_RING * pk->h && d <= BODY_STRAIN_RING * pk->h) m = PetscMax(m, e);
     }
   }
@@ -251,7 +266,7 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
 {
   PetscSection       s;
   const PetscScalar *ua;
-  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart;
+  const PetscInt     nb = b->nb, np = b->pEnd - b->pStart, dim = b->dim, ns = BodyStressComponents(dim), ns1 = ns + 1;
   PetscInt           nown = 0, rstart = 0, *topo;
   PetscReal         *sr;
   PetscReal          loc[2] = {0, 0}, glob[2];
@@ -269,39 +284,15 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
     if (gdof > 0) nown += gdof;
   }
   PetscCallMPI(MPI_Exscan(&nown, &rstart, 1, MPIU_INT, MPI_SUM, b->comm));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "geometry", &F->coords));
-  PetscCall(CreateBlockVec(b->comm, 2 * nown, 2, "displacement", &F->disp));
-  PetscCall(CreateBlockVec(b->comm, 4 * nown, 4, "stress", &F->stress));
+  PetscCall(CreateBlockVec(b->comm, dim * nown, dim, "geometry", &F->coords));
+  PetscCall(CreateBlockVec(b->comm, dim * nown, dim, "displacement", &F->disp));
+  PetscCall(CreateBlockVec(b->comm, ns * nown, ns, "stress", &F->stress));
   PetscCall(CreateBlockVec(b->comm, nown, 1, "von_mises", &F->vm));
   PetscCall(VecGetSize(F->vm, &F->nnodes));
-  PetscCall(PetscMalloc1(5 * np, &sr));
+  PetscCall(PetscMalloc1(ns1 * np, &sr));
   PetscCall(PetscMalloc1(b->ncells * nb, &topo));
   PetscCall(VecGetArrayRead(Xl, &ua));
-  for (PetscInt c = 0; c < b->ncells; ++c) {
-    const PetscInt  *pts = &b->cpts[c * nb];
-    PetscInt         depth[9], corners[4], nc = 0, node[9];
-
-    for (PetscInt k = 0; k < nb; ++k) {
-      PetscCall(BodyGetNodeNumber(b, pts[k], &node[k]));
-      PetscCall(DMPlexGetPointDepth(b->dm, pts[k], &depth[k]));
-      if (depth[k] == 0) corners[nc++] = k;
-    }
-    /* XDMF order: corners, edge (c0,c1), (c1,c2), ..., then the cell node */
-    for (PetscInt i = 0; i < nc; ++i) topo[c * nb + i] = node[corners[i]];
-    for (PetscInt i = 0; i < nb; ++i) {
-      if (depth[i] == 1) {
-        const PetscInt *cone;
-        PetscInt        j0 = -1, j1 = -1;
-        PetscCall(DMPlexGetCone(b->dm, pts[i], &cone));
-        for (PetscInt j = 0; j < nc; ++j) {
-          if (pts[corners[j]] == cone[0]) j0 = j;
-          if (pts[corners[j]] == cone[1]) j1 = j;
-        }
-        PetscCheck(j0 >= 0 && j1 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "edge of cell %" PetscInt_FMT " not on its corners", c);
-        topo[c * nb + nc + (((j1 - j0 + nc) % nc == 1) ? j0 : j1)] = node[i];
-      } else if (depth[i] == 2) topo[c * nb + 2 * nc] = node[i];
-    }
-  }
+  for (PetscInt c = 0; c < b->ncells; ++c) PetscCall(BodyCellOutputNodes(b, c, &topo[c * nb]));
   PetscCall(BodyStressSums(b, ua, sr));
   PetscCall(VecGetArray(F->coords, &ax));
   PetscCall(VecGetArray(F->disp, &au));
@@ -309,23 +300,24 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   PetscCall(VecGetArray(F->vm, &av));
   for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
     PetscInt   gdof, goff, off, i;
-    PetscReal  um2, *st = &sr[5 * (p - b->pStart)];
+    PetscReal  um2 = 0.0, *st = &sr[ns1 * (p - b->pStart)];
     PetscCall(PetscSectionGetDof(b->nodeGS, p, &gdof));
     if (gdof <= 0) continue;
     PetscCall(PetscSectionGetOffset(b->nodeGS, p, &goff));
     PetscCall(PetscSectionGetOffset(s, p, &off));
     i             = goff - rstart;
-    ax[2 * i]     = b->xpoint[2 * (p - b->pStart)];
-    ax[2 * i + 1] = b->xpoint[2 * (p - b->pStart) + 1];
-    au[2 * i]     = ua[off];
-    au[2 * i + 1] = ua[off + 1];
-    for (PetscInt j = 0; j < 4; ++j) as[4 * i + j] = st[j] / st[4];
+    for (PetscInt d = 0; d < dim; ++d) {
+      ax[dim * i + d] = b->xpoint[dim * (p - b->pStart) + d];
+      au[dim * i + d] = ua[off + d];
+    }
+    for (PetscInt j = 0; j < ns; ++j) as[ns * i + j] = st[j] / st[ns];
     {
-      const PetscReal xx = st[0] / st[4], yy = st[1] / st[4], zz = st[2] / st[4], xy = st[3] / st[4];
-      const PetscReal sg[9] = {xx, xy, 0.0, xy, yy, 0.0, 0.0, 0.0, zz};
+      const PetscReal xx = st[0] / st[ns], yy = st[1] / st[ns], zz = st[2] / st[ns], xy = st[3] / st[ns];
+      const PetscReal yz = dim == 3 ? st[4] / st[ns] : 0.0, xz = dim == 3 ? st[5] / st[ns] : 0.0;
+      const PetscReal sg[9] = {xx, xy, xz, xy, yy, yz, xz, yz, zz};
       av[i] = ElasticityVonMises(sg);
     }
-    um2    = PetscSqr(PetscRealPart(ua[off])) + PetscSqr(PetscRealPart(ua[off + 1]));
+    for (PetscInt d = 0; d < dim; ++d) um2 += PetscSqr(PetscRealPart(ua[off + d])); /* every component's: a 3D body's three */
     loc[0] = PetscMax(loc[0], PetscSqrtReal(um2));
     loc[1] += um2;
   }

@@ -148,9 +148,9 @@ PetscReal BodyRigidControlForce(Body b, PetscInt q)
   return 0.0;
 }
 
-void BodyLoadResultant(Body b, PetscInt l, PetscReal f[2])
+void BodyLoadResultant(Body b, PetscInt l, PetscReal f[3])
 {
   const BodyLoad *L = &b->load[l];
 
-  for (PetscInt d = 0; d < 2; ++d) f[d] = b->loadWeight[1] * L->force[d] + (b->stage > 1 ? b->loadWeight[0] * L->forceFrom[d] : 0.0);
+  for (PetscInt d = 0; d < b->dim; ++d) f[d] = b->loadWeight[1] * L->force[d] + (b->stage > 1 ? b->loadWeight[0] * L->forceFrom[d] : 0.0);
 }

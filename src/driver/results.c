@@ -1,6 +1,7 @@
 /* The results of a run, written into its output set (outputset.h): per body
-   the second-order nodal mesh (coordinates, Tri6/Quad9 connectivity in XDMF
-   node order), displacement, stress (xx, yy, zz, xy) and von Mises stress
+   the second-order nodal mesh (coordinates, Tri6/Quad9 or Tet10/Hex27
+   connectivity in XDMF node order), displacement, stress (xx, yy, zz, xy;
+   a 3D body's xx, yy, zz, xy, yz, xz) and von Mises stress
    averaged at the nodes, in one HDF5 file with an XDMF file beside it, and a
    JSON summary of the run; each contact term adds its own. */
 #include "blaskernel.h"
@@ -20,20 +21,23 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body        b  = p->bodies[i];
-    const char *tt = b->simplex ? "Triangle_6" : "Quadrilateral_9";
-    const char *g  = b->name;
-    PetscInt    N = F[i].nnodes, C = F[i].ncells;
-    char        path[PETSC_MAX_PATH_LEN];
+    Body               b   = p->bodies[i];
+    const PetscBool    d3  = (PetscBool)(b->dim == 3);
+    const char        *tt  = d3 ? (b->simplex ? "Tetrahedron_10" : "Hexahedron_27") : (b->simplex ? "Triangle_6" : "Quadrilateral_9");
+    const char        *g   = b->name;
+    const char *const *sc  = d3 ? XdmfBodyScalars3D : XdmfBodyScalarNames(b->axisym);
+    const PetscInt     nsc = d3 ? XDMF_BODY_SCALARS_3D : XDMF_BODY_SCALARS;
+    PetscInt           N = F[i].nnodes, C = F[i].ncells;
+    char               path[PETSC_MAX_PATH_LEN];
     if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
     fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
     fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
     fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
-    fprintf(fp, "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"%d 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", (int)N, base, g);
+    fprintf(fp, "    <Geometry GeometryType=\"%s\">\n     <DataItem Dimensions=\"%d %d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", d3 ? "XYZ" : "XY", (int)N, d3 ? 3 : 2, base, g);
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:%s/%s/displacement_xyz", base, fields, g));
     XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
-    for (PetscInt k = 0; k < XDMF_BODY_SCALARS; ++k) {
-      const char *name = XdmfBodyScalarNames(b->axisym)[k];
+    for (PetscInt k = 0; k < nsc; ++k) {
+      const char *name = sc[k];
       PetscCall(PetscSNPrintf(path, sizeof(path), "%s:%s/%s/%s", base, fields, g, name));
       XdmfWriteAttribute(fp, name, (int)N, 1, path);
     }
@@ -96,15 +100,37 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
 /* The fields as the XDMF file reads them: displacement_xyz (z = 0) and
    stress_xx, stress_yy, stress_zz, stress_xy (axisymmetric: stress_rr,
    stress_zz, stress_hoop, stress_rz), beside displacement and stress,
-   and xdmf_nan, NaN at every node, for the contact fields a body has not. */
+   and xdmf_nan, NaN at every node, for the contact fields a body has not.
+   A 3D body's: displacement_xyz (a copy of displacement, so that the XDMF
+   reads every scene's alike), the six stress columns as stress_xx, _yy,
+   _zz, _xy, _yz, _xz, and xdmf_nan. */
 static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, PetscViewer v)
 {
   Vec                d3, c;
-  PetscInt           n;
+  PetscInt           n, bs;
   const PetscScalar *u;
   PetscScalar       *a;
 
   PetscFunctionBeginUser;
+  PetscCall(VecGetBlockSize(F->disp, &bs));
+  if (bs == 3) {
+    PetscCall(VecDuplicate(F->disp, &d3));
+    PetscCall(VecCopy(F->disp, d3));
+    PetscCall(PetscObjectSetName((PetscObject)d3, "displacement_xyz"));
+    ContactOutputCall(v, VecView(d3, v));
+    PetscCall(VecDestroy(&d3));
+    PetscCall(VecDuplicate(F->vm, &c));
+    for (PetscInt k = 0; k < 6; ++k) {
+      PetscCall(VecStrideGather(F->stress, k, c, INSERT_VALUES));
+      PetscCall(PetscObjectSetName((PetscObject)c, XdmfBodyScalars3D[k]));
+      ContactOutputCall(v, VecView(c, v));
+    }
+    PetscCall(VecSet(c, (PetscScalar)NAN));
+    PetscCall(PetscObjectSetName((PetscObject)c, "xdmf_nan"));
+    ContactOutputCall(v, VecView(c, v));
+    PetscCall(VecDestroy(&c));
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecGetLocalSize(F->vm, &n));
   PetscCall(VecCreate(PetscObjectComm((PetscObject)F->vm), &d3));
   PetscCall(VecSetSizes(d3, 3 * n, PETSC_DETERMINE));
@@ -255,7 +281,7 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
     ContactOutputCall(v, VecView(F[i].coords, v));
     PetscCall(WriteBodyFields(&F[i], p->bodies[i]->axisym, v));
     ContactOutputCall(v, ISView(F[i].topo, v));
-    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->simplex ? "Tri6" : "Quad9"));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->dim == 3 ? (p->bodies[i]->simplex ? "Tet10" : "Hex27") : (p->bodies[i]->simplex ? "Tri6" : "Quad9")));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
     PetscCall(PetscViewerHDF5PopGroup(v));
@@ -288,13 +314,15 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
 /* On several ranks, room for the HDF5 file before it is written
    (outputwrite.h): the bodies' datasets, HDF5_NODE_VALUES reals a node
    (coordinates 2, displacement 2 and its xyz copy 3, stress 4 and its 4
-   components, von Mises 1, the XDMF stand-in 1) and the topology, and
+   components, von Mises 1, the XDMF stand-in 1; a 3D body's
+   HDF5_NODE_VALUES_3D: 3, 3 + 3, 6 + 6, 1, 1) and the topology, and
    HDF5_MARGIN for the contact surfaces' datasets and the metadata
    (measured on 2 ranks: the reference scene's file 515 kB, its bodies'
    datasets 378 kB as counted here, the contact's 10 kB; the roller's 4.45
    MB, 4.16 MB and 73 kB). So a disk with room for the file but not for the
    margin is refused too. On one rank a failed write fails where it is. */
-#define HDF5_NODE_VALUES 17
+#define HDF5_NODE_VALUES    17
+#define HDF5_NODE_VALUES_3D 23
 #define HDF5_MARGIN      (1 << 20)
 
 static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
@@ -310,7 +338,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
     if (p->bodies[i]->rigid) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
-    bytes += (size_t)nodes * HDF5_NODE_VALUES * sizeof(PetscReal) * (p->opt.loadStages > 1 ? p->opt.loadStages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
+    bytes += (size_t)nodes * (p->bodies[i]->dim == 3 ? HDF5_NODE_VALUES_3D : HDF5_NODE_VALUES) * sizeof(PetscReal) * (p->opt.loadStages > 1 ? p->opt.loadStages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
   }
   PetscCall(ContactOutputCheckRoom(p->comm, bytes));
   PetscFunctionReturn(0);
@@ -419,7 +447,8 @@ static PetscErrorCode JSONLoadStages(FILE *fp, Problem p)
   PetscFunctionReturn(0);
 }
 
-/* Each load's resultant, at the load factor solved (only with loads). In
+/* Each load's resultant, at the load factor solved (only with loads), of
+   the body's dim components. In
    r-z it is axial: the radial sum of a load's nodal forces is its rings'
    radial load, which cancels round the circle (as a contact pair's,
    contactreport.c), so its radial component is written 0. */
@@ -431,11 +460,11 @@ static void JSONLoads(FILE *fp, Problem p)
     for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
       const BodyLoad *L = &p->bodies[i]->load[j];
       char            key[2 * CONTACT_NAME_LEN + 2];
-      PetscReal       f[2];
+      PetscReal       f[3] = {0, 0, 0};
       BodyLoadResultant(p->bodies[i], j, f);
       if (p->opt.axisymmetric) f[0] = 0.0;
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
-      ContactJSONKeyPair(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, f);
+      ContactJSONKeyVector(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, p->bodies[i]->dim, f); /* [fx, fy], a 3D body's [fx, fy, fz] */
     }
   if (n) fprintf(fp, "\n  }");
 }

@@ -133,12 +133,15 @@ static PetscErrorCode RunReportStrains(Problem p)
     Body           b = p->bodies[i];
     BodyStrainPeak pk;
     PetscReal      e;
+    char           at[96];
     if (b->rigid) continue; /* no strain */
     PetscCall(BodyComputeStrainPeak(b, b->Xl, &pk));
     e = pk.emax;
     PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", b->name, b->mat->name, (double)(100 * e)));
     if (!b->mat->constantTangent || !(e > 0.02)) continue;
-    if (pk.ring < BODY_STRAIN_POINT * pk.emax) PetscCall(PetscPrintf(p->comm, "  warning: body %s: its largest strain, %.3g %%, is concentrated at (%.4g, %.4g), falling to %.3g %% %d to %d elements from it: a singular point (a corner, the end of a held boundary or a contact's edge), where the strain grows as the mesh is refined whatever the material: -%s_material neohookean would not remove it, and the linear model's 2 %% limit is about the strain away from such points\n", b->name, (double)(100 * e), (double)pk.x[0], (double)pk.x[1], (double)(100 * pk.ring), (int)(0.5 * BODY_STRAIN_RING), (int)BODY_STRAIN_RING, b->name));
+    if (b->dim == 3) PetscCall(PetscSNPrintf(at, sizeof(at), "(%.4g, %.4g, %.4g)", (double)pk.x[0], (double)pk.x[1], (double)pk.x[2]));
+    else PetscCall(PetscSNPrintf(at, sizeof(at), "(%.4g, %.4g)", (double)pk.x[0], (double)pk.x[1]));
+    if (pk.ring < BODY_STRAIN_POINT * pk.emax) PetscCall(PetscPrintf(p->comm, "  warning: body %s: its largest strain, %.3g %%, is concentrated at %s, falling to %.3g %% %d to %d elements from it: a singular point (a corner, the end of a held boundary or a contact's edge), where the strain grows as the mesh is refined whatever the material: -%s_material neohookean would not remove it, and the linear model's 2 %% limit is about the strain away from such points\n", b->name, (double)(100 * e), at, (double)(100 * pk.ring), (int)(0.5 * BODY_STRAIN_RING), (int)BODY_STRAIN_RING, b->name));
     else PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", b->name, (double)(100 * e), b->name));
   }
   PetscFunctionReturn(0);
