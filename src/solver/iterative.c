@@ -16,13 +16,14 @@
    contact, and the preconditioner turns indefinite once the penalty acts),
    except where H does not change (no contact term, the bodies' stiffness
    at rest): then its first set-up serves every step and stage (on the Hex27
-   block of 89k dofs GAMG's set-up is 9 s a step, its 13 CG iterations 2.4 s).
+   block of 89k dofs, under load, GAMG's set-up took 9 s a step, its 13 CG
+   iterations 2.4 s).
    In 3D the aggregation is unsmoothed (-pc_gamg_agg_nsmooths 0): a
    quadratic 3D cell couples each node to up to 125 others, so that the
    smoothed prolongator's Galerkin product A P is most of the set-up; without
    it the set-up is several times cheaper for some 40 % more CG
-   iterations (on the Hex27 block of 108k dofs, one rank: 14.0 s against 23.5 s
-   for the solve, 37 against 26 iterations; bench/solid3d/RESULTS.md).
+   iterations (on the Hex27 block of 108k dofs, one rank: 6.8 s against
+   10.2 s for the solve, 28 against 18 iterations; bench/solid3d/RESULTS.md).
    Where H is constant the problem is linear and Newton's first step is its
    answer: solved to 1e-9 in place of 1e-6, it meets -tao_gttol 1e-8 in one
    step, with no second solve to restart CG from (Lame's octant, 79k dofs:
