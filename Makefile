@@ -22,7 +22,7 @@ MPIEXEC = mpiexec --oversubscribe -n $(NP)
 # first: 14 s instead of 23 s on 2 cores)
 MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps meshes run test test-kernels check-figures check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy clean
+.PHONY: all deps meshes run test test-kernels check-figures check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy bench-solid3d clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -142,6 +142,11 @@ bench-accuracy: bin/contact meshes
 # 1 against 2 ranks, interleaved, median of 3 (about 5 minutes)
 bench-parallel: bin/contact meshes
 	$(PYTHON) scripts/bench_parallel.py --out bench/parallel
+# 3D elastic blocks of 1e4 to 1e6 dofs, the Newton step's solvers, 1 and 2
+# ranks, and Lame's octant beside GetFEM (about 15 minutes; the cases not yet
+# in bench/solid3d/results.json): bench/solid3d/RESULTS.md
+bench-solid3d: bin/contact
+	$(PYTHON) scripts/bench_solid3d.py --out bench/solid3d --getfem
 bench-quick: bin/contact meshes
 	$(PYTHON) scripts/bench.py --quick --out bench
 # mortar / gpts solve time at h = 0.06 and 0.0065 (1.07e6 dofs), interleaved,

@@ -63,6 +63,8 @@ typedef struct {
   PetscBool   controlBorderSolves; /* coupled force control: the border eliminated by m solves a Hessian even where the step's PC can do it from the surfaces */
   PetscBool   schur;     /* Newton through the contact-surface Schur complement */
   PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
+  PetscBool   iterativeSet; /* -newton_iterative given (else chosen by size in 3D: newtonstep.c) */
+  PetscInt    iterativeDofs; /* -newton_iterative_dofs: a 3D scene above this many dofs takes CG + GAMG by default */
   SchurType   schurType;
   HessianType hessianType;   /* -contact_hessian */
   PetscReal   hessianSwitch; /* auto: exact once ||g|| < hessianSwitch ||g0|| */

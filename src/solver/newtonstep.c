@@ -107,7 +107,7 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PetscCall(KSPGetPC(ksp, &pc));
   p->tangentAuto = PETSC_FALSE;
   if (p->opt.iterative) {
-    if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies));
+    if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies, (PetscBool)(p->nterms == 0 && !varies && !choose)));
   } else if (p->opt.schur && p->nterms > 0 && choose && p->K) {
     PC rest, full;
     PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
@@ -129,6 +129,26 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PetscFunctionReturn(0);
 }
 
+/* The direct step or CG + GAMG where the user chose neither
+   (-newton_iterative): 2D and r-z scenes keep the direct step (their
+   results do not move); a 3D scene takes CG + GAMG above
+   -newton_iterative_dofs, where a factorisation's fill, growing as N^(4/3)
+   in 3D against the multigrid's N, costs more time and memory
+   (bench/solid3d/RESULTS.md: the crossing on elastic blocks). Said in one
+   line where it is chosen by size. */
+static PetscErrorCode ProblemChooseNewtonStep(Problem p)
+{
+  PetscInt N;
+
+  PetscFunctionBeginUser;
+  if (p->opt.iterativeSet || !p->Xb || p->nbodies == 0 || p->bodies[0]->dim != 3) PetscFunctionReturn(0);
+  PetscCall(VecGetSize(p->Xb, &N));
+  p->opt.iterative = (PetscBool)(N > p->opt.iterativeDofs);
+  PetscCall(PetscPrintf(p->comm, "Newton step: %s (3D, %" PetscInt_FMT " dofs, %s -newton_iterative_dofs %" PetscInt_FMT "; -newton_iterative 0 or 1 forces either)\n",
+                        p->opt.iterative ? "CG + GAMG" : "direct factorisation", N, p->opt.iterative ? "above" : "at most", p->opt.iterativeDofs));
+  PetscFunctionReturn(0);
+}
+
 /* The Newton KSP as above; with coupled force control the Hessian TAO sees
    is H bordered by the controls, and its step eliminates them around a KSP
    of H set up as above (forceborder.c). */
@@ -138,6 +158,7 @@ PetscErrorCode ProblemSetNewtonDefaults(Problem p)
   KSP       ksp;
 
   PetscFunctionBeginUser;
+  PetscCall(ProblemChooseNewtonStep(p));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAONLS, &nls));
   PetscCall(TaoSetMaximumIterations(p->tao, 500));
   PetscCall(TaoGetKSP(p->tao, &ksp));

@@ -8,6 +8,8 @@
    force control's part of the system (forcecontrol.c) below it. */
 #include "support.h"
 #include "problem.h"
+#include "pattern.h"
+#include "newtonstep.h"
 #include "forcestop.h"
 #include "partition.h"
 #include "options.h"
@@ -34,6 +36,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   p->res.load          = 1.0;
   p->opt.maxCutbacks   = 4;
   p->opt.schur         = PETSC_TRUE;
+  p->opt.iterativeDofs = NEWTON_ITERATIVE_DOFS;
   p->opt.hessianType   = HESSIAN_AUTO;
   p->opt.hessianSwitch = 1e-4;
   p->opt.penaltyStages = 1;
@@ -170,7 +173,9 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscCall(PetscOptionsReal("-lmvm_pair_ratio", "-lmvm_h0 contact: drop an L-BFGS correction pair whose curvature y's/s'H0s is not within this factor of H0's (where contact opened or closed along the step; 1e300: keep every pair)", NULL, p->opt.pairRatio, &p->opt.pairRatio, NULL));
   PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->opt.taylor, &p->opt.taylor, NULL));
   PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->opt.taylorScale, &p->opt.taylorScale, NULL));
-  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold)", NULL, p->opt.iterative, &p->opt.iterative, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes direct; 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, p->opt.iterative, &p->opt.iterative, &p->opt.iterativeSet));
+  PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, p->opt.iterativeDofs, &p->opt.iterativeDofs, NULL));
+  PetscCheck(p->opt.iterativeDofs >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -newton_iterative_dofs: must be at least 0, got %" PetscInt_FMT, p->opt.iterativeDofs);
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->opt.schur, &p->opt.schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
@@ -440,14 +445,52 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* Preallocates the elastic stiffness K (elastic pattern plus the surface
-   block): every cell gives each of its rows dim nb columns (an upper bound, the
-   excess squeezed out at assembly), and each surface row the surface's
-   columns. On several ranks the columns of a row are counted apart by
+/* A node's distinct columns (pattern.c) counted into its rows: apart by
    whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
-   blocks); a rank counts the rows its cells touch, and the counts of rows
-   owned elsewhere (the partition's interface) go to their owner by a vector
-   sum. No pass of MatSetValues is needed for the pattern. */
+   blocks), into the rank's own counts or, for a row owned elsewhere, into
+   the vectors summed to its owner. */
+typedef struct {
+  Body        body;
+  PetscLayout layout;
+  PetscInt    rstart, rend, *dnnz, *onnz;
+  Vec         dv, ov;
+} StiffnessCount;
+
+static PetscErrorCode StiffnessCountNode(void *ctx, PetscInt dof, PetscInt n, const PetscInt cols[])
+{
+  StiffnessCount *sc = (StiffnessCount *)ctx;
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < sc->body->dim; ++d) {
+    const PetscInt g = sc->body->l2b[dof + d];
+    PetscInt       lo = sc->rstart, hi = sc->rend, dc = 0;
+    PetscMPIInt    o;
+
+    if (g < 0) continue;
+    if (g < sc->rstart || g >= sc->rend) {
+      PetscCall(PetscLayoutFindOwner(sc->layout, g, &o));
+      lo = sc->layout->range[o];
+      hi = sc->layout->range[o + 1];
+    }
+    for (PetscInt q = 0; q < n; ++q) dc += cols[q] >= lo && cols[q] < hi;
+    if (g >= sc->rstart && g < sc->rend) {
+      sc->dnnz[g - sc->rstart] += dc;
+      sc->onnz[g - sc->rstart] += n - dc;
+    } else {
+      PetscCall(VecSetValue(sc->dv, g, (PetscScalar)dc, ADD_VALUES));
+      PetscCall(VecSetValue(sc->ov, g, (PetscScalar)(n - dc), ADD_VALUES));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Preallocates the elastic stiffness K (elastic pattern plus the surface
+   block): each node's rows get the distinct columns of the cells around it
+   (pattern.c: exact on one rank; a row on the partition's interface gets
+   the sum of the ranks' counts, a bound), and each surface row the
+   surface's columns. On several ranks a rank counts the rows its cells
+   touch, and the counts of rows owned elsewhere go to their owner by a
+   vector sum. No pass of MatSetValues is needed for the pattern. */
 static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
 {
   PetscMPIInt    size;
@@ -467,33 +510,18 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
     PetscCall(VecZeroEntries(dv));
     PetscCall(VecZeroEntries(ov));
   }
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body b = p->bodies[i];
-    for (PetscInt c = 0; c < b->ncells; ++c) {
-      PetscInt    idx[81], own[81], n = 0;
-      PetscMPIInt o;
-
-      for (PetscInt a = 0; a < b->nb; ++a)
-        for (PetscInt d = 0; d < b->dim; ++d) {
-          const PetscInt g = b->l2b[b->cdof[c * b->nb + a] + d];
-          if (g < 0) continue;
-          if (size > 1) PetscCall(PetscLayoutFindOwner(layout, g, &o));
-          else o = 0;
-          idx[n]   = g;
-          own[n++] = o;
-        }
-      for (PetscInt r = 0; r < n; ++r) {
-        PetscInt dc = 0, oc;
-        for (PetscInt q = 0; q < n; ++q) dc += own[q] == own[r];
-        oc = n - dc;
-        if (idx[r] >= rstart && idx[r] < rend) {
-          dnnz[idx[r] - rstart] += dc;
-          onnz[idx[r] - rstart] += oc;
-        } else {
-          PetscCall(VecSetValue(dv, idx[r], (PetscScalar)dc, ADD_VALUES));
-          PetscCall(VecSetValue(ov, idx[r], (PetscScalar)oc, ADD_VALUES));
-        }
-      }
+  {
+    StiffnessCount sc = {0};
+    sc.layout = layout;
+    sc.rstart = rstart;
+    sc.rend   = rend;
+    sc.dnnz   = dnnz;
+    sc.onnz   = onnz;
+    sc.dv     = dv;
+    sc.ov     = ov;
+    for (PetscInt i = 0; i < p->nbodies; ++i) {
+      sc.body = p->bodies[i];
+      PetscCall(BodyNodeColumns(sc.body, sc.body->l2b, StiffnessCountNode, &sc));
     }
   }
   if (size > 1) {

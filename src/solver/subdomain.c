@@ -8,10 +8,29 @@
    communication), K^r serves twice: its rows, each a sorted run of columns,
    are added into the joined K, a third of the insertions that element
    matrices would need and no second element loop; and the substructured
-   Newton step factors it (substructure.c). Rows are preallocated with 2 nb
-   columns per cell that touches them (an upper bound; the excess is
-   squeezed out at assembly). */
+   Newton step factors it (substructure.c). Rows are preallocated with the
+   distinct columns of the cells around their node (pattern.c: exact, each
+   of the subdomain's nodes having all its cells on this rank). */
 #include "subdomain.h"
+#include "pattern.h"
+
+/* A node's distinct columns (pattern.c), the count of each of its rows. */
+typedef struct {
+  Body            body;
+  const PetscInt *map;
+  PetscInt       *nnz;
+} SubdomainCount;
+
+static PetscErrorCode SubdomainCountNode(void *ctx, PetscInt dof, PetscInt n, const PetscInt cols[])
+{
+  SubdomainCount *sc = (SubdomainCount *)ctx;
+
+  PetscFunctionBeginUser;
+  (void)cols;
+  for (PetscInt d = 0; d < sc->body->dim; ++d)
+    if (sc->map[dof + d] >= 0) sc->nnz[sc->map[dof + d]] += n;
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode SubdomainCreate(PetscInt nbodies, Body bodies[], Subdomain *sub)
 {
@@ -47,13 +66,11 @@ PetscErrorCode SubdomainCreate(PetscInt nbodies, Body bodies[], Subdomain *sub)
       map[i][k] = -1;
       if (b->l2b[k] >= 0) PetscCall(PetscFindInt(b->l2b[k], n, s->dofs, &map[i][k]));
     }
-    for (PetscInt k = 0; k < b->ncells * b->nb; ++k)
-      for (PetscInt d = 0; d < b->dim; ++d) {
-        const PetscInt row = map[i][b->cdof[k] + d];
-        if (row >= 0) nnz[row] += b->dim * b->nb;
-      }
+    {
+      SubdomainCount sc = {b, map[i], nnz};
+      PetscCall(BodyNodeColumns(b, map[i], SubdomainCountNode, &sc));
+    }
   }
-  for (PetscInt r = 0; r < n; ++r) nnz[r] = PetscMin(nnz[r], n);
   PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz, &s->K));
   PetscCall(PetscFree(nnz));
   for (PetscInt i = 0; i < nbodies; ++i) {

@@ -1,0 +1,91 @@
+"""The Newton step's linear solver in 3D: CG + GAMG against the direct
+factorisation on a block, and the default chosen by size
+(-newton_iterative_dofs, docs/solver.md "3D bodies: the step by size").
+
+The scene is our own Hex27 block (tests/meshes/solid/block.geo, the unit
+box, n cells an edge), linear (E 1000, nu 0.3), with the smooth trig
+solution (-blk_exact trig) imposed on its whole boundary and its body
+force."""
+import re
+
+import pytest
+
+from conftest import figure, run_contact
+
+GEO = "tests/meshes/solid/block.geo"
+FACES = ("xmin", "xmax", "ymin", "ymax", "zmin", "zmax")
+
+
+def block(n, hexa=True):
+    args = ["-bodies", "blk", "-blk_geo", GEO, "-blk_geo_params", f"hex={int(hexa)},skew=0,n={n}", "-mesh_size", "0.3",
+            "-blk_E", "1000", "-blk_nu", "0.3", "-blk_bc", ",".join(FACES), "-blk_exact", "trig",
+            "-blk_exact_params", "0.001,2", "-output", "none"]
+    return args + [f"-blk_bc_{f}_exact" for f in FACES]
+
+
+def chosen(res):
+    """The step the run took: its 'Newton step:' line's choice, and whether CG iterated."""
+    m = re.search(r"Newton step: (CG \+ GAMG|direct factorisation) \(3D, (\d+) dofs", res.stdout)
+    return (m.group(1) if m else None), ("CG iterations" in res.stdout)
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("ranks", [1, 2])
+def test_iterative_matches_direct(ranks, tmp_path):
+    """The block at n = 6 (3993 free dofs) solved by the direct step and by
+    CG + GAMG (-newton_iterative 0 and 1), both to -tao_gttol 1e-12: the
+    displacement differs by K^-1 (g1 - g2), g the gradients the stops
+    leave, |g| <= 1e-12 |g0|, so the answers agree to about 1e-12 over K's
+    smallest eigenvalue relative to the load's; bound 1e-9 on the relative
+    difference of the displacement's norm and of the energy, 1e-6 on that
+    of the L2 error against the exact solution, which is 3.4e-4 of the
+    norm, so that its relative difference is the displacement's over 3.4e-4
+    (measured `du` = 0, `dE` = up to 2.2e-16, `derr` = up to 4.9e-15: CG
+    stops at 1e-9 of the gradient where the Hessian is constant, and the
+    direct step's second Newton iteration lands as close)."""
+    runs = []
+    for it in ("0", "1"):
+        res = run_contact(block(6) + ["-newton_iterative", it, "-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name=f"it{it}")
+        runs.append((res.summary, chosen(res)))
+    (d, (dc, dcg)), (i, (ic, icg)) = runs
+    assert d["dofs"] == i["dofs"] == 3993
+    assert dc is None and not dcg, "given -newton_iterative 0: no size choice, no CG"
+    assert ic is None and icg, "given -newton_iterative 1: CG"
+    bd, bi = d["bodies"]["blk"], i["bodies"]["blk"]
+    assert figure("du", abs(d["displacement_norm"] / i["displacement_norm"] - 1)) <= 1e-9
+    assert figure("dE", abs(bd["energy"] / bi["energy"] - 1)) <= 1e-9
+    assert figure("derr", abs(bd["l2_error"] / bi["l2_error"] - 1)) <= 1e-6
+    assert bd["l2_error"] / bd["l2_norm"] < 1e-3  # the discretisation's (3.4e-4), not the solver's
+
+
+def default_dofs(tmp_path):
+    """-newton_iterative_dofs's default as -help prints it."""
+    res = run_contact(["-help"], tmp_path, name="help", check=False)
+    m = re.search(r"-newton_iterative_dofs <now (\d+)", res.stdout)
+    assert m, res.stdout[-2000:]
+    return int(m.group(1))
+
+
+def test_default_by_size(tmp_path):
+    """The default Newton step in 3D is the direct factorisation at or below
+    -newton_iterative_dofs and CG + GAMG above (docs/solver.md; the default
+    as -help shows it); -newton_iterative 0 or 1 forces either; a 2D scene
+    keeps the direct step whatever its size."""
+    limit = default_dofs(tmp_path)
+    small = run_contact(block(4), tmp_path, name="small")
+    kind, cg = chosen(small)
+    assert small.summary["dofs"] <= limit and kind == "direct factorisation" and not cg
+    # the same block with the limit below its dofs: CG + GAMG, and the same answer
+    n = small.summary["dofs"]
+    big = run_contact(block(4) + ["-newton_iterative_dofs", str(n - 1)], tmp_path, name="big")
+    kind, cg = chosen(big)
+    assert kind == "CG + GAMG" and cg
+    assert abs(big.summary["bodies"]["blk"]["energy"] / small.summary["bodies"]["blk"]["energy"] - 1) <= 1e-6
+    at = run_contact(block(4) + ["-newton_iterative_dofs", str(n)], tmp_path, name="at")
+    assert chosen(at) == ("direct factorisation", False)
+    forced = run_contact(block(4) + ["-newton_iterative_dofs", str(n - 1), "-newton_iterative", "0"], tmp_path, name="forced")
+    assert chosen(forced) == (None, False)
+    flat = run_contact(["-bodies", "sheet", "-sheet_geo", "tests/meshes/plate.geo", "-sheet_E", "1", "-sheet_nu", "0.3",
+                        "-sheet_bc", "bottom", "-sheet_bc_bottom_values", "0,-0.01", "-newton_iterative_dofs", "1",
+                        "-output", "none"], tmp_path, name="flat")
+    assert chosen(flat) == (None, False)
