@@ -187,7 +187,7 @@ def test_element_loop_3d_patch_and_rigid(element_figures):
     forces that balance (sum_a N_a = 1), their sum `patch3d_g_sum` = 9.9e-16
     of the largest (bounds 1e-13); the stiffness at rest takes the six rigid
     modes to `rest3d_null` = 5.3e-16 of max |K| max |r| (bound 1e-13); a
-    neo-Hookean cell rotated by 60 degrees stores `rot3d_W` = 2.8e-17 mu vol
+    neo-Hookean cell rotated by 60 degrees stores `rot3d_W` = up to 2.8e-17 mu vol
     and has forces `rot3d_g` = 7.9e-16 mu vol (bounds 1e-13)."""
     W = max(element_figures[(c, m, "patch_W_rel")] for c in CELLS for m in MATERIALS)
     gs = max(element_figures[(c, m, "patch_g_sum_rel")] for c in CELLS for m in MATERIALS)
