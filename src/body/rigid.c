@@ -7,7 +7,7 @@
    as its null space, so 3 - rank M of them are free. anchors.c adds rows to
    it until none is. A 3D body has six, r(x) = t + w x x (three
    translations, three rotations), counted alike from a 6 x 6 Gram matrix
-   (BodyCountFreeRigidModes3D). */
+   (BodyCountFreeRigidModes). */
 #include "rigid.h"
 
 /* The rank of the n x n symmetric matrix M (Gaussian elimination with full
@@ -58,62 +58,6 @@ static void RigidGramAddRow3D(PetscReal M[36], PetscInt c, const PetscReal x[3])
     for (PetscInt e = 0; e < 6; ++e) M[6 * a + e] += r[a] * r[e];
 }
 
-/* BodyCountFreeRigidModes of a 3D body: 6 - rank of its Gram matrix. */
-static PetscErrorCode BodyCountFreeRigidModes3D(Body b, PetscInt *nfree)
-{
-  PetscReal    lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[3], ghi[3], c[3], L = 0;
-  PetscReal    M[36] = {0}, Mg[36];
-  PetscSection s;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
-    PetscInt dof;
-    PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
-    if (!dof) continue;
-    for (PetscInt d = 0; d < 3; ++d) {
-      lo[d] = PetscMin(lo[d], b->xpoint[3 * p + d]);
-      hi[d] = PetscMax(hi[d], b->xpoint[3 * p + d]);
-    }
-  }
-  PetscCall(MPIU_Allreduce(lo, glo, 3, MPIU_REAL, MPIU_MIN, b->comm));
-  PetscCall(MPIU_Allreduce(hi, ghi, 3, MPIU_REAL, MPIU_MAX, b->comm));
-  for (PetscInt d = 0; d < 3; ++d) {
-    c[d] = 0.5 * (glo[d] + ghi[d]);
-    L    = PetscMax(L, ghi[d] - glo[d]);
-  }
-  if (!(L > 0)) L = 1.0;
-  for (PetscInt i = 0; i < b->nbc; ++i) {
-    BodyBC         *bc = &b->bc[i];
-    IS              is;
-    const PetscInt *pts;
-    PetscInt        n;
-
-    PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
-    if (!is) continue;
-    PetscCall(ISGetLocalSize(is, &n));
-    PetscCall(ISGetIndices(is, &pts));
-    for (PetscInt j = 0; j < n; ++j) {
-      PetscInt  dof, q = pts[j] - b->pStart;
-      PetscReal x[3];
-      PetscCall(PetscSectionGetDof(s, pts[j], &dof));
-      if (!dof) continue;
-      for (PetscInt d = 0; d < 3; ++d) x[d] = (b->xpoint[3 * q + d] - c[d]) / L;
-      for (PetscInt k = 0; k < bc->ncomp; ++k) RigidGramAddRow3D(M, bc->comps[k], x);
-    }
-    PetscCall(ISRestoreIndices(is, &pts));
-    PetscCall(ISDestroy(&is));
-  }
-  PetscCall(MPIU_Allreduce(M, Mg, 36, MPIU_REAL, MPIU_SUM, b->comm));
-  *nfree = 6 - RigidRankN(6, Mg);
-  PetscFunctionReturn(0);
-}
-
-/* The body's rigid motions (translations in x and y, the rotation about the
-   origin u = (-y, x); in 3D the three translations and the rotations e_k x
-   x about the axes) at the unconstrained dofs this rank owns in the joined
-   vector (rows rstart..rend of l2b's numbering), added into modes[0..2]
-   (modes[0..5] in 3D), the local parts of joined vectors. */
 PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscScalar *modes[])
 {
   PetscSection s;
@@ -156,65 +100,64 @@ PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscSc
   PetscFunctionReturn(0);
 }
 
-/* Number of rigid motions (x and y translation, rotation) that the Dirichlet
-   conditions leave free. A constrained component c at node x removes the part
-   of the rigid motion r(x) = (t_x - w y, t_y + w x) in that component, i.e. the
-   row e_c . dr/d(t_x, t_y, w); the free motions are the null space of the sum
-   of the rows' outer products (coordinates centred and scaled for conditioning). */
+/* Number of rigid motions (x and y translation, rotation; a 3D body's six)
+   that the Dirichlet conditions leave free. A constrained component c at
+   node x removes the part of the rigid motion in that component, a row of
+   the motion's derivative in its parameters (BodyRigidGramAddRow,
+   RigidGramAddRow3D); the free motions are the null space of the sum of the
+   rows' outer products (coordinates centred and scaled for conditioning). */
 PetscErrorCode BodyCountFreeRigidModes(Body b, PetscInt *nfree)
 {
-  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[2], ghi[2], c[2], L;
-  PetscReal M[9] = {0}, Mg[9];
-  PetscSection s;
+  const PetscInt dim = b->dim, nm = dim == 3 ? 6 : 3;
+  PetscReal      lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, glo[3], ghi[3], c[3], L = 0;
+  PetscReal      M[36] = {0}, Mg[36];
+  PetscSection   s;
 
   PetscFunctionBeginUser;
-  if (b->dim == 3) {
-    PetscCall(BodyCountFreeRigidModes3D(b, nfree));
-    PetscFunctionReturn(0);
-  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   for (PetscInt p = 0; p < b->pEnd - b->pStart; ++p) {
     PetscInt dof;
     PetscCall(PetscSectionGetDof(s, p + b->pStart, &dof));
     if (!dof) continue;
-    for (PetscInt d = 0; d < 2; ++d) {
-      lo[d] = PetscMin(lo[d], b->xpoint[2 * p + d]);
-      hi[d] = PetscMax(hi[d], b->xpoint[2 * p + d]);
+    for (PetscInt d = 0; d < dim; ++d) {
+      lo[d] = PetscMin(lo[d], b->xpoint[dim * p + d]);
+      hi[d] = PetscMax(hi[d], b->xpoint[dim * p + d]);
     }
   }
-  PetscCall(MPIU_Allreduce(lo, glo, 2, MPIU_REAL, MPIU_MIN, b->comm));
-  PetscCall(MPIU_Allreduce(hi, ghi, 2, MPIU_REAL, MPIU_MAX, b->comm));
-  c[0] = 0.5 * (glo[0] + ghi[0]);
-  c[1] = 0.5 * (glo[1] + ghi[1]);
-  L    = PetscMax(ghi[0] - glo[0], ghi[1] - glo[1]);
+  PetscCall(MPIU_Allreduce(lo, glo, dim, MPIU_REAL, MPIU_MIN, b->comm));
+  PetscCall(MPIU_Allreduce(hi, ghi, dim, MPIU_REAL, MPIU_MAX, b->comm));
+  for (PetscInt d = 0; d < dim; ++d) {
+    c[d] = 0.5 * (glo[d] + ghi[d]);
+    L    = PetscMax(L, ghi[d] - glo[d]);
+  }
   if (!(L > 0)) L = 1.0;
   for (PetscInt i = 0; i < b->nbc; ++i) {
-    BodyBC *bc = &b->bc[i];
-    IS      is;
+    BodyBC         *bc = &b->bc[i];
+    IS              is;
+    const PetscInt *pts;
+    PetscInt        n;
 
     PetscCall(DMLabelGetStratumIS(bc->label, 1, &is));
     if (!is) continue;
-    {
-      const PetscInt *pts;
-      PetscInt        n;
-      PetscCall(ISGetLocalSize(is, &n));
-      PetscCall(ISGetIndices(is, &pts));
-      for (PetscInt j = 0; j < n; ++j) {
-        PetscInt  dof, q = pts[j] - b->pStart;
-        PetscReal x, y;
-        PetscCall(PetscSectionGetDof(s, pts[j], &dof));
-        if (!dof) continue;
-        x = (b->xpoint[2 * q] - c[0]) / L;
-        y = (b->xpoint[2 * q + 1] - c[1]) / L;
-        for (PetscInt k = 0; k < bc->ncomp; ++k) BodyRigidGramAddRow(M, bc->comps[k], x, y);
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt j = 0; j < n; ++j) {
+      PetscInt  dof, q = pts[j] - b->pStart;
+      PetscReal x[3] = {0, 0, 0};
+      PetscCall(PetscSectionGetDof(s, pts[j], &dof));
+      if (!dof) continue;
+      for (PetscInt d = 0; d < dim; ++d) x[d] = (b->xpoint[dim * q + d] - c[d]) / L;
+      for (PetscInt k = 0; k < bc->ncomp; ++k) {
+        if (dim == 3) RigidGramAddRow3D(M, bc->comps[k], x);
+        else BodyRigidGramAddRow(M, bc->comps[k], x[0], x[1]);
       }
-      PetscCall(ISRestoreIndices(is, &pts));
     }
+    PetscCall(ISRestoreIndices(is, &pts));
     PetscCall(ISDestroy(&is));
   }
-  PetscCall(MPIU_Allreduce(M, Mg, 9, MPIU_REAL, MPIU_SUM, b->comm));
-  BodyRigidGramAxisymmetric(b, Mg);
-  *nfree = 3 - BodyRigidRank(Mg);
+  PetscCall(MPIU_Allreduce(M, Mg, nm * nm, MPIU_REAL, MPIU_SUM, b->comm));
+  if (dim == 2) BodyRigidGramAxisymmetric(b, Mg);
+  *nfree = nm - RigidRankN(nm, Mg);
   PetscFunctionReturn(0);
 }
 
