@@ -41,11 +41,11 @@ bin/contact: $(OBJS)
 
 # the materials' kernels checked at random 3D states (tests/test_material_kernels.py)
 MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/obj/body/mooneyrivlin.o build/obj/body/material.o build/obj/io/options.o
-bin/material-check: tests/kernels/material_check.c $(MATERIAL_OBJS)
+bin/material-check: tests/kernels/material_check.c tests/kernels/checkutil.h $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< $(MATERIAL_OBJS) $(LDLIBS)
 # and the element loop on one 3D cell (Hex27, Tet10)
-bin/element-check: tests/kernels/element_check.c build/obj/body/element.o $(MATERIAL_OBJS)
+bin/element-check: tests/kernels/element_check.c tests/kernels/checkutil.h build/obj/body/element.o $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< build/obj/body/element.o $(MATERIAL_OBJS) $(LDLIBS)
 

@@ -19,22 +19,7 @@
 #include <petscdt.h>
 #include "element.h"
 
-static unsigned long long rng = 88172645463325252ULL;
-
-static PetscReal Uniform(PetscReal lo, PetscReal hi) /* xorshift64 */
-{
-  rng ^= rng << 13;
-  rng ^= rng >> 7;
-  rng ^= rng << 17;
-  return lo + (hi - lo) * (PetscReal)(rng >> 11) / (PetscReal)(1ULL << 53);
-}
-
-static PetscReal MaxAbs(PetscInt n, const PetscReal a[])
-{
-  PetscReal m = 0.0;
-  for (PetscInt k = 0; k < n; ++k) m = PetscMax(m, PetscAbsReal(a[k]));
-  return m;
-}
+#include "checkutil.h"
 
 /* Pi and g of the one cell at u (as a local array: cdof[a] = 3a). */
 static PetscReal EnergyGradient(Body b, const PetscReal u[], PetscReal g[])

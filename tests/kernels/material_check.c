@@ -35,27 +35,7 @@
 
 #define NSAMPLE 200
 
-static unsigned long long rng = 88172645463325252ULL;
-
-static PetscReal Uniform(PetscReal lo, PetscReal hi) /* xorshift64 */
-{
-  rng ^= rng << 13;
-  rng ^= rng >> 7;
-  rng ^= rng << 17;
-  return lo + (hi - lo) * (PetscReal)(rng >> 11) / (PetscReal)(1ULL << 53);
-}
-
-static PetscReal Det3(const PetscReal F[9])
-{
-  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
-
-static PetscReal MaxAbs(PetscInt n, const PetscReal a[])
-{
-  PetscReal m = 0.0;
-  for (PetscInt k = 0; k < n; ++k) m = PetscMax(m, PetscAbsReal(a[k]));
-  return m;
-}
+#include "checkutil.h"
 
 static PetscReal Energy(const Material *m, const PetscReal p[], const PetscReal H[9], PetscReal P[9])
 {
