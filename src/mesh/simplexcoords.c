@@ -79,12 +79,11 @@ static PetscErrorCode ReferenceVertices(PetscReal R[4][3])
 /* Each vertex's candidates (vc): the positions every cell round it has
    among its G_j; then, where several are left, less those its cells' other
    vertices have. */
-static PetscErrorCode VertexPositions(DM dm, PetscInt cS, PetscInt cE, PetscInt vs, PetscInt ve, const PetscReal G[], PetscReal tol, VertexCandidates vc[])
+static PetscErrorCode VertexPositions(PetscInt cS, PetscInt cE, const PetscInt cv[], PetscInt vs, const PetscReal G[], PetscReal tol, VertexCandidates vc[])
 {
   PetscFunctionBeginUser;
   for (PetscInt c = cS; c < cE; ++c) {
-    PetscInt v[4];
-    PetscCall(CellVertices(dm, c, vs, ve, v));
+    const PetscInt *v = &cv[4 * (c - cS)];
     for (PetscInt i = 0; i < 4; ++i) {
       VertexCandidates *w = &vc[v[i] - vs];
       const PetscReal  *g = &G[12 * (c - cS)];
@@ -109,8 +108,7 @@ static PetscErrorCode VertexPositions(DM dm, PetscInt cS, PetscInt cE, PetscInt 
   for (PetscBool progress = PETSC_TRUE; progress;) {
     progress = PETSC_FALSE;
     for (PetscInt c = cS; c < cE; ++c) {
-      PetscInt v[4];
-      PetscCall(CellVertices(dm, c, vs, ve, v));
+      const PetscInt *v = &cv[4 * (c - cS)];
       for (PetscInt i = 0; i < 4; ++i) {
         VertexCandidates *w = &vc[v[i] - vs];
         if (w->ncand <= 1) continue;
@@ -184,6 +182,7 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
   PetscInt          dim, cS, cE, vs, ve, nb, nc, dof, changed = 0;
   PetscReal         R[4][3], ref[SC_MAXNODES * 3], lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, tol = 0;
   PetscReal        *G;
+  PetscInt         *cv;
   VertexCandidates *vc;
   PetscScalar      *a;
   PetscObject       obj;
@@ -214,7 +213,7 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
     for (PetscInt d = 0; d < 3; ++d) ref[3 * k + d] = pts[d];
   }
   PetscCall(PetscFECreateTabulation(cfe, 1, 4, &R[0][0], 0, &Tv));
-  PetscCall(PetscMalloc1(12 * (cE - cS), &G));
+  PetscCall(PetscMalloc2(12 * (cE - cS), &G, 4 * (cE - cS), &cv));
   PetscCall(PetscCalloc1(ve - vs, &vc));
   PetscCall(DMGetCoordinatesLocal(dm, &coords));
   PetscCall(VecGetArray(coords, &a));
@@ -232,11 +231,12 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
   }
   for (PetscInt d = 0; d < 3; ++d) tol = PetscMax(tol, hi[d] - lo[d]);
   tol *= 1e-9;
-  PetscCall(VertexPositions(dm, cS, cE, vs, ve, G, tol, vc));
+  for (PetscInt c = cS; c < cE; ++c) PetscCall(CellVertices(dm, c, vs, ve, &cv[4 * (c - cS)])); /* each cell's closure vertices, once */
+  PetscCall(VertexPositions(cS, cE, cv, vs, G, tol, vc));
   for (PetscInt c = cS; c < cE; ++c) { /* sigma per cell, and its field rewritten in its closure's frame */
-    PetscInt  v[4], sigma[4], off;
-    PetscBool identity = PETSC_TRUE;
-    PetscCall(CellVertices(dm, c, vs, ve, v));
+    const PetscInt *v = &cv[4 * (c - cS)];
+    PetscInt        sigma[4], off;
+    PetscBool       identity = PETSC_TRUE;
     for (PetscInt i = 0; i < 4; ++i) {
       const VertexCandidates *w = &vc[v[i] - vs];
       PetscInt                j = -1;
@@ -261,7 +261,7 @@ PetscErrorCode MeshSimplexCoordinatesInCellOrder(DM dm, const char name[], const
   PetscCall(PetscTabulationDestroy(&Tv));
   for (PetscInt k = 0; k < 256; ++k)
     if (Tp[k]) PetscCall(PetscTabulationDestroy(&Tp[k]));
-  PetscCall(PetscFree(G));
+  PetscCall(PetscFree2(G, cv));
   PetscCall(PetscFree(vc));
   PetscCall(PetscInfo(NULL, "body %s: %" PetscInt_FMT " of %" PetscInt_FMT " cells' second-order coordinates put in their closure's vertex order\n", name, changed, cE - cS));
   PetscFunctionReturn(0);
