@@ -39,12 +39,22 @@ def test_within_factor_passes(tmp_path):
 def test_outside_factor_flagged(tmp_path):
     """A value 3.4 times the top of the range, one 3.1 times below its
     bottom, and a quoted figure the test did not record are each flagged."""
-    p = check(tmp_path, [("test_a", "dP", 1.02e-6, "Prescott"), ("test_a", "dE", 6e-16, "auto")])
+    p = check(tmp_path, [("test_a", "dP", 1.02e-6, "Prescott"), ("test_a", "dP", 3.5e-9, "Haswell"),
+                         ("test_a", "dE", 2e-15, "auto")])
     assert p.returncode == 1
     flags = [l for l in p.stdout.splitlines() if l.startswith("FLAG")]
-    assert len(flags) == 2 and "1.02e-06 (Prescott)" in flags[0] + flags[1] and "6e-16" in flags[0] + flags[1], p.stdout
+    assert len(flags) == 1 and "1.02e-06 (Prescott), 3.5e-09 (Haswell)" in flags[0], p.stdout
     p = check(tmp_path, [("test_a", "dP", 1e-7, "auto")])
     assert p.returncode == 1 and "`dE` = 2e-15: not recorded" in p.stdout, p.stdout
+
+
+def test_roundoff_checked_above_only(tmp_path):
+    """A figure quoted below 1e-9 (`dE` = 2e-15) is round-off: a recorded
+    value far below it is not flagged, one 3.5 times above it is."""
+    p = check(tmp_path, [("test_a", "dP", 1e-7, "auto"), ("test_a", "dE", 1e-18, "Nehalem")])
+    assert p.returncode == 0, p.stdout
+    p = check(tmp_path, [("test_a", "dP", 1e-7, "auto"), ("test_a", "dE", 7e-15, "Nehalem")])
+    assert p.returncode == 1 and "7e-15 (Nehalem)" in p.stdout, p.stdout
 
 
 def test_not_run_not_flagged(tmp_path):
