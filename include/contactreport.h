@@ -1,5 +1,6 @@
 #pragma once
-#include "contactpair.h"
+#include "contactspec.h"
+#include "energyterm.h"
 
 /* The results of a contact pair at the converged state, whatever the
    formulation (contactreport.c): per surface a pressure profile sorted by arc

@@ -45,3 +45,11 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *, Body[]);
    holds it (support.h), before solving. */
 PetscErrorCode ContactTermAddSupport(const ContactTerm *, Body[]);
 PetscErrorCode ContactTermDestroy(ContactTerm *);
+
+/* The formulations (one file each). */
+PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *, EnergyTerm);
+PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *, EnergyTerm);
+
+/* -help: lists mortar's options (-contact_mortar_slave, -contact_mortar_basis)
+   with their defaults whatever the scene's formulations (listed once). */
+PetscErrorCode ContactMortarOptionsHelp(MPI_Comm);

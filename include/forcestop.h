@@ -3,8 +3,6 @@
 
 /* The final stop measured against the forces the contacts carry
    (-stop_force_rtol, forcestop.c). */
-/* ||f_c||, the contacts' nodal forces at X (the terms' gradient alone; 0 without terms). */
-PetscErrorCode ProblemContactForceNorm(Problem, Vec X, PetscReal *fc);
 /* Part of TAO's convergence test (solve.c), after TAO's own: a last stage's
    convergence by the gradient tolerances undone while the gradient is above
    -stop_force_rtol times the contacts' nodal forces. */
@@ -16,4 +14,3 @@ PetscErrorCode ProblemForceStopSetActive(Problem, PetscBool active);
    that met it, with its reason. */
 PetscErrorCode ProblemForceStopBegin(Problem);
 PetscErrorCode ProblemForceStopEnd(Problem, TaoConvergedReason *reason);
-PetscErrorCode ProblemForceStopDestroy(Problem);

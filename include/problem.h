@@ -54,6 +54,8 @@ PetscErrorCode ProblemSetLoad(Problem, PetscReal lambda);
 PetscErrorCode ProblemScatterToBodies(Problem, Vec X);
 /* G (the joined layout) = the bodies' local gradients Gl summed into their dofs (a rigid body's unknowns left out). */
 PetscErrorCode ProblemGatherGradient(Problem, Vec G);
+/* ||f_c||, the contacts' nodal forces at X (the terms' gradient alone; 0 without terms): -stop_force_rtol's measure (forcestop.c). */
+PetscErrorCode ProblemContactForceNorm(Problem, Vec X, PetscReal *fc);
 /* Collective: the results at the converged state X (energy, gradient norm,
    reactions, each term's results). */
 PetscErrorCode ProblemPostProcess(Problem, Vec X, PetscBool converged);

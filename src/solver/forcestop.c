@@ -44,30 +44,8 @@
    The JSON's `force_residual` is ||g|| / ||f_c|| at the solution. */
 #include "forcestop.h"
 #include "problem.h"
-#include "body.h"
-#include "energyterm.h"
 
 #define FORCESTOP_STALL 10
-
-/* ||f_c||: the terms' gradient alone at X, summed into the bodies' dofs
-   (a rigid body's unknowns, which have none, left out). */
-PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
-{
-  Vec       W;
-  PetscReal et;
-
-  PetscFunctionBeginUser;
-  *fc = 0.0;
-  if (!p->nterms) PetscFunctionReturn(0);
-  PetscCall(ProblemScatterToBodies(p, X));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
-  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
-  PetscCall(VecDuplicate(X, &W));
-  PetscCall(ProblemGatherGradient(p, W));
-  PetscCall(VecNorm(W, NORM_2, fc));
-  PetscCall(VecDestroy(&W));
-  PetscFunctionReturn(0);
-}
 
 /* After TAO's test (or L-BFGS's decrement test), in a last stage: the forces'. */
 PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
@@ -142,12 +120,5 @@ PetscErrorCode ProblemForceStopEnd(Problem p, TaoConvergedReason *reason)
   PetscCall(VecCopy(s->Xmet, p->X));
   PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL)); /* the bodies and terms at the state kept */
   *reason = s->metReason;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ProblemForceStopDestroy(Problem p)
-{
-  PetscFunctionBeginUser;
-  PetscCall(VecDestroy(&p->fstop.Xmet));
   PetscFunctionReturn(0);
 }

@@ -10,7 +10,6 @@
 #include "problem.h"
 #include "pattern.h"
 #include "newtonstep.h"
-#include "forcestop.h"
 #include "partition.h"
 #include "options.h"
 #include "forcecontrol.h"
@@ -782,6 +781,26 @@ PetscErrorCode ProblemGatherGradient(Problem p, Vec G)
   PetscFunctionReturn(0);
 }
 
+/* ||f_c||: the terms' gradient alone at X, summed into the bodies' dofs
+   (a rigid body's unknowns, which have none, left out). */
+PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
+{
+  Vec       W;
+  PetscReal et;
+
+  PetscFunctionBeginUser;
+  *fc = 0.0;
+  if (!p->nterms) PetscFunctionReturn(0);
+  PetscCall(ProblemScatterToBodies(p, X));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+  for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
+  PetscCall(VecDuplicate(X, &W));
+  PetscCall(ProblemGatherGradient(p, W));
+  PetscCall(VecNorm(W, NORM_2, fc));
+  PetscCall(VecDestroy(&W));
+  PetscFunctionReturn(0);
+}
+
 /* TAO's objective and gradient callback. */
 PetscErrorCode ProblemComputeObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
 {
@@ -1104,7 +1123,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermDestroy(&p->terms[t]));
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyDestroy(&p->bodies[i]));
   PetscCall(TaoDestroy(&p->tao));
-  PetscCall(ProblemForceStopDestroy(p));
+  PetscCall(VecDestroy(&p->fstop.Xmet)); /* the force stop's kept iterate (forcestop.c) */
   PetscCall(MatDestroy(&p->Htao));
   PetscCall(ForceControlsDestroy(&p->fc));
   PetscCall(MatDestroy(&p->H));
