@@ -17,3 +17,5 @@ PetscErrorCode ProblemForceStopSetActive(Problem, PetscBool active);
 PetscErrorCode ProblemForceStopBegin(Problem);
 PetscErrorCode ProblemForceStopEnd(Problem, TaoConvergedReason *reason);
 PetscErrorCode ProblemForceStopDestroy(Problem);
+/* -stage_rtol and -stop_force_rtol ("Stopping options"), with their defaults and checks. */
+PetscErrorCode StopOptionsSetFromOptions(MPI_Comm, StopOptions *);

@@ -66,7 +66,7 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
 static PetscBool ControlConverged(Problem p, const PetscReal R[])
 {
   for (PetscInt k = 0; k < p->fc.n; ++k)
-    if (PetscAbsReal(R[k] - p->fc.c[k].force) > p->opt.controlRtol * p->fc.c[k].scale) return PETSC_FALSE;
+    if (PetscAbsReal(R[k] - p->fc.c[k].force) > p->cfg->control.rtol * p->fc.c[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
@@ -141,9 +141,9 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
   }
   while (*reason > 0 && !ControlConverged(p, R)) {
     PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
-    if (p->res.controlSolves >= p->opt.controlMaxIt) {
+    if (p->res.controlSolves >= p->cfg->control.maxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->cfg->control.maxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
       break;
     }
     for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->fc.c[k].force;
