@@ -87,11 +87,11 @@ typedef struct {
   StageEnds          ends;          /* -load_stages */
 } ProblemResults;
 
-/* What the solve runs (staging.c): the options' load steps, penalty
-   continuation and decrement test (schedule.c), or, where the user gave
-   none, what the program chose (ProblemSetPenaltyContinuation, the L-BFGS
-   defaults of lmvm.c); force control's solves from a converged state run
-   one stage. */
+/* What the solve runs (staging.c), written by schedule.c alone: the
+   options' load steps, penalty continuation and decrement test, or, where
+   the user gave none, what the program chose (ProblemSetPenaltyContinuation,
+   ProblemSetDecrementTest); force control's solves from a converged state
+   run one stage (ProblemScheduleOneStage). */
 typedef struct {
   PetscInt  loadSteps, penaltyStages;
   PetscReal penaltyStart;  /* the first stage's k_p over the scene's */

@@ -24,6 +24,7 @@
    type solves once. */
 #include "forceouter.h"
 #include "staging.h"
+#include "schedule.h"
 #include "problem.h"
 #include <petscblaslapack.h>
 
@@ -31,8 +32,8 @@
    scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
 static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-  PetscInt       n;
+  ProblemSchedule saved = p->sched;
+  PetscInt        n;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < p->fc.n; ++k) {
@@ -43,12 +44,10 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   PetscCall(VecDestroy(&p->X0));
   if (X0) { /* from the last converged state: one stage */
     PetscCall(ProblemSetInitialGuess(p, X0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
+    PetscCall(ProblemScheduleOneStage(p, &saved));
   }
   PetscCall(ProblemSolveStaged(p, &n, reason));
-  p->sched.loadSteps     = loadSteps;
-  p->sched.penaltyStages = stages;
+  PetscCall(ProblemScheduleRestore(p, &saved));
   p->res.controlSolves++;
   *its += n;
   if (*reason <= 0) PetscFunctionReturn(0);

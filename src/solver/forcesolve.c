@@ -96,10 +96,10 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
   PetscCall(ProblemSolveStaged(p, its, reason));
   for (PetscInt k = 0; k < p->fc.n; ++k) smin = PetscMin(smin, p->fc.c[k].scale);
   while (*reason > 0) {
-    const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-    PetscReal      tol[3];
-    PetscInt       n;
-    Vec            X0;
+    ProblemSchedule saved;
+    PetscReal       tol[3];
+    PetscInt        n;
+    Vec             X0;
 
     PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U (ProblemScatterToBodies) and R at X */
     for (PetscInt k = 0; k < p->fc.n; ++k) p->fc.c[k].R = ProblemControlReaction(p, k);
@@ -116,11 +116,9 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
     PetscCall(VecDestroy(&X0));
     PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
     PetscCall(TaoSetTolerances(p->tao, p->cfg->control.rtol * smin, tol[1], 0.0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
+    PetscCall(ProblemScheduleOneStage(p, &saved));
     PetscCall(ProblemSolveStaged(p, &n, reason));
-    p->sched.loadSteps     = loadSteps;
-    p->sched.penaltyStages = stages;
+    PetscCall(ProblemScheduleRestore(p, &saved));
     PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
     PetscCall(VecDestroy(&p->X0));
     p->res.controlSolves++;

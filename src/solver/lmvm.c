@@ -488,7 +488,7 @@ static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
 
   PetscFunctionBeginUser;
   PetscCall(ContactGradientToleranceGiven(&given));
-  p->sched.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
+  PetscCall(ProblemSetDecrementTest(p, !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0));
   PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->sched.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
   PetscFunctionReturn(0);
 }

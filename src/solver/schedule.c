@@ -1,9 +1,10 @@
-/* The solve's schedule (p->sched): its load steps and
+/* The solve's schedule (p->sched), written here alone: its load steps and
    penalty continuation, as the options give them (-load_steps,
    -penalty_stages, -penalty_start, -lmvm_decrement_rtol) or, where the user
    gave none, as the solver chooses them at its set-up (a program-chosen
    penalty: run.c; Newton on a stiff penalty: problem.c; L-BFGS: lmvm.c;
-   coupled force control: forcesolve.c).
+   coupled force control: forcesolve.c), and the one stage that force
+   control's solves from a converged state run (forcesolve.c, forceouter.c).
    The staged solve (staging.c) reads it. The options of the load history
    and of the continuation are read here too. */
 #include "schedule.h"
@@ -56,5 +57,30 @@ PetscErrorCode ProblemSetPenaltyContinuation(Problem p, PetscInt stages, PetscRe
   PetscFunctionBeginUser;
   if (!p->cfg->penalty.stagesSet) p->sched.penaltyStages = stages;
   if (!p->cfg->penalty.startSet) p->sched.penaltyStart = start;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetDecrementTest(Problem p, PetscReal rtol)
+{
+  PetscFunctionBeginUser;
+  p->sched.decrementRtol = rtol;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemScheduleOneStage(Problem p, ProblemSchedule *saved)
+{
+  PetscFunctionBeginUser;
+  *saved                 = p->sched;
+  p->sched.loadSteps     = 1;
+  p->sched.penaltyStages = 1;
+  PetscFunctionReturn(0);
+}
+
+/* The load steps and penalty stages alone: the start and the decrement test as they are now. */
+PetscErrorCode ProblemScheduleRestore(Problem p, const ProblemSchedule *saved)
+{
+  PetscFunctionBeginUser;
+  p->sched.loadSteps     = saved->loadSteps;
+  p->sched.penaltyStages = saved->penaltyStages;
   PetscFunctionReturn(0);
 }
