@@ -35,3 +35,6 @@ const char    *ProblemControlComponent(Problem, PetscInt k);
 PetscErrorCode ProblemRigidBorderBegin(Problem);
 PetscErrorCode ProblemRigidBorderEnd(Problem);
 PetscErrorCode ForceControlsDestroy(ForceControls *);
+/* -force_control_* ("Force control options"), with their defaults and checks
+   (the type among ForceControlList's: after ForceControlRegisterAll). */
+PetscErrorCode ForceControlOptionsSetFromOptions(MPI_Comm, ForceControlOptions *);

@@ -14,3 +14,5 @@ PetscErrorCode ProblemForceStopSetActive(Problem, PetscBool active);
    that met it, with its reason. */
 PetscErrorCode ProblemForceStopBegin(Problem);
 PetscErrorCode ProblemForceStopEnd(Problem, TaoConvergedReason *reason);
+/* -stage_rtol and -stop_force_rtol ("Stopping options"), with their defaults and checks. */
+PetscErrorCode StopOptionsSetFromOptions(MPI_Comm, StopOptions *);

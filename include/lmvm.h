@@ -18,3 +18,5 @@ PetscErrorCode ProblemLMVMConvergenceTest(Problem, Tao);
 /* TaoSolve, and for lmvm/blmvm with -lmvm_h0 contact its restarts where the
    line search failed after progress: the iterations of all and the reason of the last. */
 PetscErrorCode ProblemTaoSolve(Problem, PetscInt *its, TaoConvergedReason *reason);
+/* -lmvm_* ("L-BFGS options"), with their defaults and checks. */
+PetscErrorCode LMVMOptionsSetFromOptions(MPI_Comm, LMVMOptions *);

@@ -16,3 +16,5 @@ PetscErrorCode ProblemSchurPCSetUp(Problem, PC);
    step's preconditioner; with coupled force control the Hessian TAO sees
    (p->Htao) bordered by the controls, around a KSP of H (p->fc.ksp). */
 PetscErrorCode ProblemSetNewtonDefaults(Problem);
+/* -newton_* and -tangent_at_rest* ("Newton step options"), with their defaults and checks. */
+PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm, NewtonOptions *);

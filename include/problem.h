@@ -5,20 +5,26 @@
    energy, gradient, Hessian and reactions of X, and the results at the
    solution. The solve (solve.c) and its strategies sit above it. */
 
-/* The life of a problem: Create, SetFromOptions (reads the scene's options
-   and its bodies' and nothing else), GenerateMeshes (each body's mesh, sizes
+/* The life of a problem: Create, SetFromOptions (reads the configuration,
+   config.h, and the bodies' options, and nothing else), GenerateMeshes (each body's mesh, sizes
    checked first), AddTerm (the contact terms, created by the caller), SetUp,
    Solve (solve.c), PostProcess, View, Destroy. */
 PetscErrorCode ProblemCreate(MPI_Comm, Problem *);
+/* Collective: the configuration (SolverConfigSetFromOptions, config.h), the
+   schedule it gives, and the bodies it names with their options. */
 PetscErrorCode ProblemSetFromOptions(Problem);
+/* The options of this file's concerns, each with its defaults and checks
+   (config.h): -scene, -bodies, -axisymmetric and the meshing's ("Contact
+   scene options"); -taylor_* ("Taylor test options"); -contact_hessian*
+   ("Contact Hessian options"). */
+PetscErrorCode SceneOptionsSetFromOptions(MPI_Comm, SceneOptions *);
+PetscErrorCode TaylorOptionsSetFromOptions(MPI_Comm, TaylorOptions *);
+PetscErrorCode HessianOptionsSetFromOptions(MPI_Comm, HessianOptions *);
 /* Collective: generates every body's mesh (with its size field, if one was
    set by BodySetSizeField), refusing one above -max_dofs before any is made. */
 PetscErrorCode ProblemGenerateMeshes(Problem);
 /* Adds an energy term; the problem takes the reference and destroys it. */
 PetscErrorCode ProblemAddTerm(Problem, EnergyTerm);
-/* Penalty continuation for a term whose penalty the program chose: stages
-   and the first stage's fraction, where the user gave none. */
-PetscErrorCode ProblemSetPenaltyContinuation(Problem, PetscInt stages, PetscReal start);
 PetscErrorCode ProblemGetPenaltyStiffness(Problem, PetscReal *stiff);
 PetscErrorCode ProblemSetNewtonContinuation(Problem);
 /* The first iterate of ProblemSolve (after ProblemSetUp; referenced). */

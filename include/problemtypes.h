@@ -1,74 +1,20 @@
 #pragma once
-/* The problem's data (problemtypes.c names its enumerations): its options,
-   schedule, force controls and results, and the Problem struct that joins
-   them. problem.c (the assembled system), the solver's files above it
+/* The problem's data (problemtypes.c names its enumerations): its
+   configuration (config.h), schedule, force controls and results, and the
+   Problem struct that joins them. problem.c (the assembled system), the solver's files above it
    (staging.c, lmvm.c, forcesolve.c, forceouter.c, newtonstep.c, solve.c)
    and below it (forcecontrol.c, forceborder.c, the preconditioners) read
    these types; each calls only the files below it. */
 #include "energyterm.h"
 #include "subdomain.h"
 #include "unheld.h"
+#include "config.h"
 
 #define CONTACT_MAX_TERMS    16
 
-/* Contact Hessian: Gauss-Newton, exact, or Gauss-Newton until the gradient is small */
-typedef enum { HESSIAN_GAUSS_NEWTON, HESSIAN_EXACT, HESSIAN_AUTO } HessianType;
-extern const char *const HessianTypes[];
-
-typedef enum { H0_NONE, H0_ELASTIC, H0_CONTACT } H0Type;
-extern const char *const H0Types[];
-
-/* How the Newton step's Schur complement on the contact surfaces is formed:
-   by substructuring, on any number of ranks (substructure.c), or by MUMPS
-   from K, on one rank (schur.c). */
-typedef enum { SCHUR_SUBSTRUCTURE, SCHUR_MUMPS } SchurType;
-extern const char *const SchurTypes[];
-
 /* The force control types by name (-force_control_type: coupled, outer):
-   read by ProblemSetFromOptions, filled by ForceControlRegisterAll (forcesolve.c). */
+   read by ForceControlOptionsSetFromOptions, filled by ForceControlRegisterAll (forcesolve.c). */
 extern PetscFunctionList ForceControlList;
-
-/* What ProblemSetFromOptions reads, and nothing else. */
-typedef struct {
-  char        scene[CONTACT_NAME_LEN];
-  char        meshDir[PETSC_MAX_PATH_LEN];
-  PetscReal   meshSize; /* -mesh_size, or -1: each body's own */
-  PetscReal   maxDofs;  /* refuse a generated mesh above this many dofs (-max_dofs; 0: from memory, set when meshing) */
-  PetscInt    partitioner;
-  PetscBool   partitionView, taylor;
-  PetscBool   axisymmetric; /* -axisymmetric: every body in r-z (axis.c) */
-  PetscReal   taylorScale;
-  H0Type      h0;
-  PetscInt    h0Refresh; /* -lmvm_h0 contact: the H0 recomputed every this many iterations */
-  PetscInt    lmvmRestarts; /* -lmvm_restarts: the most restarts of an L-BFGS solve whose line search failed */
-  PetscReal   pairRatio; /* -lmvm_pair_ratio: a correction pair kept while its curvature is within this factor of H0's */
-  PetscReal   decrementFloor; /* -lmvm_decrement_floor: a last stage whose line search fails within this factor of the decrement's tolerance ends converged */
-  PetscReal   decrementRtol; /* -lmvm_decrement_rtol: the last stage stops on the decrement g'H0^-1 g (0: off, the gradient tolerances; -1: not given, chosen with the solver) */
-  PetscInt    loadSteps, penaltyStages;
-  PetscInt    loadStages; /* -load_stages: the stages of the load history (history.c), each in loadSteps increments */
-  PetscInt    maxCutbacks; /* automatic load cutback: the most a solve may take */
-  PetscReal   penaltyStart, stageRtol;
-  PetscReal   forceRtol; /* -stop_force_rtol: the final stop also asks ||g|| <= this ||f_c||, f_c the contacts' nodal forces (0: off) */
-  PetscReal   lagRtol;  /* -contact_friction_lag_rtol: a term's lagged quantity (friction's pressure) is converged when its largest change is below this, relative */
-  PetscInt    lagMaxIt; /* -contact_friction_lag_max_it: the most solves of one increment's fixed point */
-  PetscBool   tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
-  PetscInt    tangentIts; /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */
-  PetscBool   loadPath; /* -load_path: record each converged load (staging.c), each solved to the final tolerance */
-  PetscBool   penaltyStagesSet, penaltyStartSet; /* given by the user (else ProblemSetPenaltyContinuation may choose) */
-  char        controlType[64]; /* -force_control_type: coupled (the displacements are unknowns of the one minimisation) or outer (forcecontrol.c) */
-  PetscInt    controlMaxIt;  /* force control: the most solves of its outer iteration (outer), of the solve and its refinements (coupled) */
-  PetscReal   controlRtol;   /* force control: |reaction - force| <= this |force| ends it */
-  PetscBool   controlRtolSet; /* given (coupled force control checks it only then) */
-  PetscReal   controlStep;   /* coupled force control: the most a Newton step moves a controlled group, times its body's size */
-  PetscBool   controlBorderSolves; /* coupled force control: the border eliminated by m solves a Hessian even where the step's PC can do it from the surfaces */
-  PetscBool   schur;     /* Newton through the contact-surface Schur complement */
-  PetscBool   iterative; /* Newton by CG + GAMG (iterative.c) */
-  PetscBool   iterativeSet; /* -newton_iterative given (else chosen by size in 3D: newtonstep.c) */
-  PetscInt    iterativeDofs; /* -newton_iterative_dofs: a 3D scene above this many dofs takes CG + GAMG by default */
-  SchurType   schurType;
-  HessianType hessianType;   /* -contact_hessian */
-  PetscReal   hessianSwitch; /* auto: exact once ||g|| < hessianSwitch ||g0|| */
-} ProblemOptions;
 
 /* A force-controlled component (forcecontrol.c): body, Dirichlet condition
    and component (an index into its comps), its force, and the displacement
@@ -141,10 +87,11 @@ typedef struct {
   StageEnds          ends;          /* -load_stages */
 } ProblemResults;
 
-/* What the solve runs (staging.c): the options' load steps, penalty continuation and
-   decrement test, or, where the user gave none, what the program chose
-   (ProblemSetPenaltyContinuation, the L-BFGS defaults of lmvm.c); force
-   control's solves from a converged state run one stage. */
+/* What the solve runs (staging.c), written by schedule.c alone: the
+   options' load steps, penalty continuation and decrement test, or, where
+   the user gave none, what the program chose (ProblemSetPenaltyContinuation,
+   ProblemSetDecrementTest); force control's solves from a converged state
+   run one stage (ProblemScheduleOneStage). */
 typedef struct {
   PetscInt  loadSteps, penaltyStages;
   PetscReal penaltyStart;  /* the first stage's k_p over the scene's */
@@ -185,7 +132,7 @@ typedef struct {
 typedef struct _n_Problem *Problem;
 struct _n_Problem {
   MPI_Comm       comm;
-  ProblemOptions opt;
+  SolverConfig   cfg; /* what the options say (config.h) */
   ProblemSchedule sched;
   PetscInt       nbodies;
   Body           bodies[CONTACT_MAX_BODIES];

@@ -8,8 +8,8 @@ so that a new option is classified when it is added. PETSc's own options
 The values of a kind (bad_values: a number non-numeric, NaN, Inf, -Inf and,
 where its domain excludes them, below its least; an integer non-integer and
 below its least; a fraction or a unit interval's number outside it; a choice
-an unknown name; a switch neither true nor false) make 288 cases, all run by
-`make stress`. `make test` runs a pairwise selection of them (FAST, 95 runs),
+an unknown name; a switch neither true nor false) make 303 cases, all run by
+`make stress`. `make test` runs a pairwise selection of them (FAST, 98 runs),
 one run per bad value, since the program stops at the first:
 
 - every option at least once, with a value its own check must refuse (own_values:
@@ -63,7 +63,7 @@ DOMAINS = {
     "contact_formulation": ("choice",), "contact_interface_formulation": ("choice",),
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",), "indenter_material": ("choice",), "block_material": ("choice",),
-    "mesh_only": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
+    "mesh_only": ("bool",), "config_view": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
     "partition_view": ("bool",), "load_path": ("bool",), "tangent_at_rest": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
     "indenter_rigid": ("bool",), "block_rigid": ("bool",),
@@ -89,7 +89,11 @@ DOMAINS = {
 # the sections of -help that are the program's own
 SECTIONS = ("Program options", "Output options", "Progress options", "Contact scene options", "Body options", "Rigid body options",
             "Dirichlet condition", "Body loads", "Load on a boundary group", "Contact options", "Contact pair options",
-            "Mortar contact options", "Accuracy options")
+            "Mortar contact options", "Accuracy options",
+            # the configuration's concerns (src/solver/config.c)
+            "Partitioning options", "L-BFGS options", "Taylor test options", "Newton step options", "Load stepping options",
+            "Penalty continuation options", "Stopping options", "Friction lag options", "Force control options",
+            "Contact Hessian options", "Configuration options")
 
 
 def program_options():

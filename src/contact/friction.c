@@ -731,3 +731,17 @@ PetscErrorCode FrictionSlipState(Friction f, const ContactSurface S[2], PetscRea
   }
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode FrictionLagOptionsSetFromOptions(MPI_Comm comm, FrictionLagOptions *o)
+{
+  PetscFunctionBeginUser;
+  o->rtol  = 1e-8;
+  o->maxIt = 30;
+  PetscOptionsBegin(comm, NULL, "Friction lag options", NULL);
+  PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, o->rtol, &o->rtol, NULL));
+  PetscCall(PetscOptionsInt("-contact_friction_lag_max_it", "Friction: the most solves of one load increment's fixed point on the pressure", NULL, o->maxIt, &o->maxIt, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->rtol > 0 && o->rtol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_rtol: must be in (0, 1), got %g", (double)o->rtol);
+  PetscCheck(o->maxIt >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_max_it: must be >= 1, got %" PetscInt_FMT, o->maxIt);
+  PetscFunctionReturn(0);
+}

@@ -146,7 +146,7 @@ PetscErrorCode AccuracySetFromOptions(Accuracy acc)
    loads; or d is r-z's radial component, 0 by symmetry (contactreport.c). */
 static PetscBool AccuracyForceGiven(Problem p, PetscInt t, PetscInt d)
 {
-  if (p->opt.axisymmetric && d == 0) return PETSC_TRUE;
+  if (p->cfg->scene.axisymmetric && d == 0) return PETSC_TRUE;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     const Body b      = p->bodies[i];
     PetscInt   nterms = 0, computed = 0;
@@ -409,7 +409,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
     PetscInt   nz = 0;
     PetscReal *z  = NULL;
     PetscCall(AccuracyZone(b, &nz, &z));
-    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->opt.meshDir, b->name, (int)getpid(), (int)step));
+    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->cfg->scene.meshDir, b->name, (int)getpid(), (int)step));
     PetscCall(AccuracyWriteField(b, nz, z, eta[i], eta2min, acc->grading, paths[i]));
     PetscCall(PetscFree(z));
     PetscCall(PetscFree(eta[i]));
@@ -436,7 +436,7 @@ static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
 {
   PetscFunctionBeginUser;
   PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
-  PetscCheck(p->opt.loadStages == 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: with -load_stages %" PetscInt_FMT " it would refine for the last stage's end alone; -accuracy with a load history is not supported yet", p->opt.loadStages);
+  PetscCheck(p->cfg->load.stages == 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: with -load_stages %" PetscInt_FMT " it would refine for the last stage's end alone; -accuracy with a load history is not supported yet", p->cfg->load.stages);
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->bodies[i]->rigid, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", p->bodies[i]->name, p->bodies[i]->name);
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscBool gpts;
@@ -464,7 +464,7 @@ static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, 
   if (!rank)
     for (PetscInt i = 0; i < CONTACT_MAX_BODIES; ++i)
       if (fields[i][0]) (void)unlink(fields[i]);
-  if (acc->maxDofs <= 0) acc->maxDofs = cur->opt.maxDofs;
+  if (acc->maxDofs <= 0) acc->maxDofs = cur->cfg->scene.maxDofs;
   PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
   PetscCall(RunSetUp(cur, rec));
   if (!prev) PetscFunctionReturn(0);
@@ -576,7 +576,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
     prev = cur;
     cur  = NULL;
     last = k;
-    if (AccuracyStepLast(acc, k, steps, prev->opt.maxDofs, &reached, stop, sizeof(stop))) break;
+    if (AccuracyStepLast(acc, k, steps, prev->cfg->scene.maxDofs, &reached, stop, sizeof(stop))) break;
     PetscCall(AccuracyRefine(acc, prev, k + 1, fields));
   }
   PetscCall(ProblemDestroy(&cur)); /* a step that did not converge: the answer is the last one that did */

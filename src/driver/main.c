@@ -109,7 +109,7 @@ static PetscErrorCode Run(int *status)
   PetscCall(AccuracySetFromOptions(acc));
   PetscCall(ContactProgressPhase("meshing", "scene and meshes"));
   PetscCall(RunCreateProblem(PETSC_COMM_WORLD, &problem));
-  PetscCall(RunOptionsSetFromOptions(PETSC_COMM_WORLD, problem->opt.scene, &ro));
+  PetscCall(RunOptionsSetFromOptions(PETSC_COMM_WORLD, problem->cfg->scene.name, &ro));
   if (help) PetscCall(ProblemCreateSolver(problem));
   else if (ro.meshOnly) PetscCall(RunMesh(problem, NULL));
   else {

@@ -62,7 +62,7 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
    the end of stage k (/stages/k), step S the final state as above. */
 static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOutputFiles *out)
 {
-  const PetscInt    S        = p->opt.loadStages;
+  const PetscInt    S        = p->cfg->load.stages;
   PetscBool         friction = PETSC_FALSE; /* a term with state (friction): every grid carries its fields (xdmf.h) */
   PetscMPIInt       rank;
   const char       *base = strrchr(out->h5, '/');
@@ -77,15 +77,15 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
     PetscCall(ContactOutputTextOpen(&text));
     fp = text.fp;
     fprintf(fp, "<?xml version=\"1.0\" ?>\n<!-- contact run_id %s -->\n<Xdmf Version=\"3.0\">\n <Domain>\n", out->runId);
-    if (S > 1) fprintf(fp, "  <Grid Name=\"%s_stages\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", p->opt.scene);
+    if (S > 1) fprintf(fp, "  <Grid Name=\"%s_stages\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", p->cfg->scene.name);
     for (PetscInt k = 1; k < S; ++k) {
       char fields[64];
       PetscCall(PetscSNPrintf(fields, sizeof(fields), "/stages/%d/bodies", (int)k));
-      fprintf(fp, "  <Grid Name=\"%s_stage_%d\" GridType=\"Collection\" CollectionType=\"Spatial\">\n   <Time Value=\"%d\"/>\n", p->opt.scene, (int)k, (int)k);
+      fprintf(fp, "  <Grid Name=\"%s_stage_%d\" GridType=\"Collection\" CollectionType=\"Spatial\">\n   <Time Value=\"%d\"/>\n", p->cfg->scene.name, (int)k, (int)k);
       PetscCall(WriteXDMFBodies(fp, p, F, base, fields, friction));
       fprintf(fp, "  </Grid>\n");
     }
-    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->opt.scene);
+    fprintf(fp, "  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", p->cfg->scene.name);
     if (S > 1) fprintf(fp, "   <Time Value=\"%d\"/>\n", (int)S);
     PetscCall(WriteXDMFBodies(fp, p, F, base, "/bodies", friction));
     for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteXDMF(p->terms[t], p->bodies, fp, base, friction));
@@ -219,7 +219,7 @@ static PetscErrorCode WriteBodyFields(BodyNodalFields *F, PetscBool axisym, Pets
    recorded states, and the bodies are left holding the final state. */
 static PetscErrorCode WriteHDF5Stages(Problem p, BodyNodalFields F[], PetscViewer v)
 {
-  const PetscInt S = p->opt.loadStages;
+  const PetscInt S = p->cfg->load.stages;
 
   PetscFunctionBeginUser;
   PetscCall(PetscViewerHDF5PushGroup(v, "/stages"));
@@ -287,13 +287,13 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteHDF5(p->terms[t], p->bodies, v));
-  if (p->opt.loadStages > 1) PetscCall(WriteHDF5Stages(p, F, v));
+  if (p->cfg->load.stages > 1) PetscCall(WriteHDF5Stages(p, F, v));
   PetscCall(PetscOptionsGetAll(NULL, &opts));
   PetscCall(PetscGetVersion(version, sizeof(version)));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(PetscViewerHDF5PushGroup(v, "/metadata"));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->opt.scene));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "axisymmetric", PETSC_INT, &(PetscInt){p->opt.axisymmetric ? 1 : 0}));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "scene", PETSC_STRING, p->cfg->scene.name));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "axisymmetric", PETSC_INT, &(PetscInt){p->cfg->scene.axisymmetric ? 1 : 0}));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "run_id", PETSC_STRING, runId));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "options", PETSC_STRING, opts));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, "/metadata", "petsc_version", PETSC_STRING, version));
@@ -338,7 +338,7 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
     if (p->bodies[i]->rigid) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
-    bytes += (size_t)nodes * (p->bodies[i]->dim == 3 ? HDF5_NODE_VALUES_3D : HDF5_NODE_VALUES) * sizeof(PetscReal) * (p->opt.loadStages > 1 ? p->opt.loadStages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
+    bytes += (size_t)nodes * (p->bodies[i]->dim == 3 ? HDF5_NODE_VALUES_3D : HDF5_NODE_VALUES) * sizeof(PetscReal) * (p->cfg->load.stages > 1 ? p->cfg->load.stages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
   }
   PetscCall(ContactOutputCheckRoom(p->comm, bytes));
   PetscFunctionReturn(0);
@@ -406,7 +406,7 @@ static void JSONLoadPath(FILE *fp, Problem p)
 {
   const LoadPath *lp = &p->res.path;
 
-  if (!p->opt.loadPath) return;
+  if (!p->cfg->load.path) return;
   fprintf(fp, ",\n  \"load_path\": [");
   for (PetscInt k = 0; k < lp->n; ++k) {
     ContactJSONKeyReal(fp, k ? ",\n    {" : "\n    {", "load", lp->load[k]);
@@ -428,7 +428,7 @@ static PetscErrorCode JSONLoadStages(FILE *fp, Problem p)
 
   PetscFunctionBeginUser;
   fprintf(fp, ",\n  \"load_stages\": [");
-  for (PetscInt k = 1; k <= p->opt.loadStages; ++k) {
+  for (PetscInt k = 1; k <= p->cfg->load.stages; ++k) {
     ContactJSONKeyReal(fp, k > 1 ? ",\n    {" : "\n    {", "load", (PetscReal)k);
     JSONReactionSet(fp, p, ", ", " ", " ", e->reaction[k - 1]);
     fprintf(fp, ", \"contact_force\": {");
@@ -462,7 +462,7 @@ static void JSONLoads(FILE *fp, Problem p)
       char            key[2 * CONTACT_NAME_LEN + 2];
       PetscReal       f[3] = {0, 0, 0};
       BodyLoadResultant(p->bodies[i], j, f);
-      if (p->opt.axisymmetric) f[0] = 0.0;
+      if (p->cfg->scene.axisymmetric) f[0] = 0.0;
       (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
       ContactJSONKeyVector(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, p->bodies[i]->dim, f); /* [fx, fy], a 3D body's [fx, fy, fz] */
     }
@@ -578,7 +578,7 @@ static void JSONTaylor(FILE *fp, Problem p)
   const PetscReal *rows[3] = {p->res.taylorEps, p->res.taylorRemainders[0], p->res.taylorRemainders[1]};
   const char      *keys[3] = {"eps", "gradient_remainder", "hessian_relative_remainder"};
 
-  if (!p->opt.taylor) return;
+  if (!p->cfg->taylor.test) return;
   fprintf(fp, "  \"taylor\": {");
   ContactJSONKeyReal(fp, "", "gradient_order", p->res.taylorRates[0]);
   ContactJSONKeyReal(fp, ", ", "hessian_order", p->res.taylorRates[1]);
@@ -615,8 +615,8 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
   if (!rank) {
     PetscCall(ContactOutputTextOpen(&text));
     fp = text.fp;
-    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->opt.scene, out->runId, (int)dofs, (int)size, type);
-    fprintf(fp, "  \"axisymmetric\": %s,\n", p->opt.axisymmetric ? "true" : "false");
+    fprintf(fp, "{\n  \"scene\": \"%s\",\n  \"run_id\": \"%s\",\n  \"dofs\": %d,\n  \"ranks\": %d,\n  \"tao_type\": \"%s\",\n", p->cfg->scene.name, out->runId, (int)dofs, (int)size, type);
+    fprintf(fp, "  \"axisymmetric\": %s,\n", p->cfg->scene.axisymmetric ? "true" : "false");
     /* the BLAS kernel, how it was chosen, and the one it replaced (null: none) */
     fprintf(fp, "  \"blas_kernel\": {\"name\": \"%s\", \"source\": \"%s\", \"replaced\": ", BlasKernelName(), BlasKernelSource());
     fprintf(fp, BlasKernelFallback()[0] ? "\"%s\"},\n" : "null},\n", BlasKernelFallback());
@@ -634,7 +634,7 @@ static PetscErrorCode WriteJSON(Problem p, const RunRecord *rec, BodyNodalFields
     /* the gradient against the contacts' nodal forces, and the stop's test of it (-stop_force_rtol) */
     if (p->res.contactForceNorm > 0) ContactJSONKeyReal(fp, ",\n  ", "force_residual", p->res.gnorm / p->res.contactForceNorm);
     else fprintf(fp, ",\n  \"force_residual\": null");
-    fprintf(fp, ",\n  \"force_stop\": {\"rtol\": %.6g, \"continued\": %d, \"floors\": %d, \"fallbacks\": %d}", (double)p->opt.forceRtol, (int)p->fstop.continued, (int)p->fstop.floors, (int)p->fstop.fallbacks);
+    fprintf(fp, ",\n  \"force_stop\": {\"rtol\": %.6g, \"continued\": %d, \"floors\": %d, \"fallbacks\": %d}", (double)p->cfg->stop.forceRtol, (int)p->fstop.continued, (int)p->fstop.floors, (int)p->fstop.fallbacks);
     ContactJSONKeyReal(fp, ",\n  ", "max_displacement", umax);
     ContactJSONKeyReal(fp, ",\n  ", "displacement_norm", PetscSqrtReal(unorm2));
     PetscCall(JSONReactions(fp, p));

@@ -5,6 +5,7 @@
 #include "options.h"
 #include "outputset.h"
 #include "progress.h"
+#include "schedule.h"
 
 const char *const RunTimeNames[] = {"mesh", "setup", "solve", "output", "total"};
 
@@ -113,7 +114,7 @@ static PetscErrorCode RunSayNotConverged(Problem p)
       break;
     }
   }
-  if (p->res.cutbacks > 0 && p->opt.loadStages > 1) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of its %" PetscInt_FMT " stages", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone, p->opt.loadStages));
+  if (p->res.cutbacks > 0 && p->cfg->load.stages > 1) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of its %" PetscInt_FMT " stages", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone, p->cfg->load.stages));
   else if (p->res.cutbacks > 0) PetscCall(PetscSNPrintf(cut, sizeof(cut), "; the load cut back %" PetscInt_FMT " time%s, solved up to %.4g of it", p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
   PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: the solve did not converge (%s%s)%s%s; no output written\n", TaoConvergedReasons[p->res.reason], cut, why[0] ? ": " : "", why));
   PetscFunctionReturn(0);
@@ -153,7 +154,7 @@ PetscErrorCode RunFinish(Problem p, RunRecord *rec)
 
   PetscFunctionBeginUser;
   if (rec->converged) PetscCall(RunReportStrains(p));
-  if (p->opt.taylor) {
+  if (p->cfg->taylor.test) {
     PetscCall(ContactProgressPhase("the Taylor test", "Taylor test"));
     PetscCall(ProblemTaylorTest(p));
   }

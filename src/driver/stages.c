@@ -9,7 +9,7 @@
 
 PetscErrorCode StagesSetState(Problem p, PetscInt k)
 {
-  const PetscInt S = p->opt.loadStages;
+  const PetscInt S = p->cfg->load.stages;
   Vec            X = k < S ? p->res.ends.X[k - 1] : p->X;
 
   PetscFunctionBeginUser;
@@ -45,7 +45,7 @@ static PetscErrorCode StagesRecordFigures(Problem p, PetscInt k, PetscBool react
 /* The state at the end of stage k evaluated and post-processed by the terms. */
 static PetscErrorCode StagesEvaluate(Problem p, PetscInt k)
 {
-  const PetscInt S = p->opt.loadStages;
+  const PetscInt S = p->cfg->load.stages;
   Vec            X = k < S ? p->res.ends.X[k - 1] : p->X;
   PetscReal      f;
 
@@ -58,7 +58,7 @@ static PetscErrorCode StagesEvaluate(Problem p, PetscInt k)
 
 PetscErrorCode StagesComputeFigures(Problem p)
 {
-  const PetscInt S = p->opt.loadStages;
+  const PetscInt S = p->cfg->load.stages;
 
   PetscFunctionBeginUser;
   PetscCall(StagesRecordFigures(p, S, PETSC_FALSE)); /* the final state's, as ProblemPostProcess left it */

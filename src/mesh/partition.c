@@ -90,3 +90,15 @@ PetscErrorCode DMPlexDistributeWith(DM *dm, PartitionType type, PetscBool view, 
   }
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode PartitionOptionsSetFromOptions(MPI_Comm comm, PartitionOptions *o)
+{
+  PetscFunctionBeginUser;
+  o->type = PARTITION_METIS;
+  o->view = PETSC_FALSE;
+  PetscOptionsBegin(comm, NULL, "Partitioning options", NULL);
+  PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)o->type, (PetscEnum *)&o->type, NULL));
+  PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, o->view, &o->view, NULL));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}

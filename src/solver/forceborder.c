@@ -360,9 +360,9 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
   for (PetscInt k = 0; k < c->m; ++k) {
     PetscCall(PetscObjectReference((PetscObject)p->fc.B[k]));
     c->B[k]   = p->fc.B[k];
-    c->cap[k] = p->opt.controlStep * p->fc.c[k].L;
+    c->cap[k] = p->cfg->control.step * p->fc.c[k].L;
   }
-  c->solves = p->opt.controlBorderSolves;
+  c->solves = p->cfg->control.borderSolves;
   c->D = p->fc.D;
   for (PetscInt k = 0; k < c->m; ++k) c->floor[k] = p->fc.c[k].rigid ? p->fc.c[k].kref : 0.0;
   c->varies = p->fc.rigid; /* a rigid body's columns change with the Hessian: condensed anew at each */

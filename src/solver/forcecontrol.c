@@ -143,11 +143,11 @@ PetscErrorCode ProblemCollectControls(Problem p)
     kref[k]   = p->fc.c[k].kref;
   }
   PetscCall(UnheldSetUp(&p->fc.unheld, p->fc.n, anchor, kref));
-  PetscCall(PetscStrcmp(p->opt.controlType, "coupled", &p->fc.coupled));
+  PetscCall(PetscStrcmp(p->cfg->control.type, "coupled", &p->fc.coupled));
   if (p->fc.n && !p->fc.coupled && UnheldAny(&p->fc.unheld)) PetscCall(PetscInfo(NULL, "force control: a body held by contact: coupled, whatever -force_control_type\n"));
-  PetscCheck(!p->fc.rigid || p->fc.coupled, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type %s: a rigid body's free motion is solved coupled only", p->opt.controlType);
+  PetscCheck(!p->fc.rigid || p->fc.coupled, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type %s: a rigid body's free motion is solved coupled only", p->cfg->control.type);
   p->fc.coupled = (PetscBool)(p->fc.n > 0 && (p->fc.coupled || UnheldAny(&p->fc.unheld)));
-  PetscCheck(!p->fc.n || p->fc.coupled || p->opt.loadStages == 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: its iteration finds the controls' displacements at one load, not along -load_stages %" PetscInt_FMT "; use -force_control_type coupled", p->opt.loadStages);
+  PetscCheck(!p->fc.n || p->fc.coupled || p->cfg->load.stages == 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: its iteration finds the controls' displacements at one load, not along -load_stages %" PetscInt_FMT "; use -force_control_type coupled", p->cfg->load.stages);
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCheck(!p->fc.n || p->fc.coupled || !EnergyTermHasState(p->terms[t]), p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type outer: each trial goes on from the last, whose slip pair %s's friction would keep; use -force_control_type coupled", p->terms[t]->name);
   PetscFunctionReturn(0);
 }
@@ -460,5 +460,31 @@ PetscErrorCode ForceControlsDestroy(ForceControls *fc)
     PetscCall(VecDestroy(&fc->B[k]));
     PetscCall(VecDestroy(&fc->E[k]));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ForceControlOptionsSetFromOptions(MPI_Comm comm, ForceControlOptions *o)
+{
+  PetscErrorCode (*solve)(void) = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(o->type, "coupled", sizeof(o->type)));
+  o->maxIt        = 40;
+  o->rtol         = 1e-9;
+  o->rtolSet      = PETSC_FALSE;
+  o->step         = 0.3;
+  o->borderSolves = PETSC_FALSE;
+  PetscOptionsBegin(comm, NULL, "Force control options", NULL);
+  PetscCall(ContactOptionsFList(PetscOptionsObject, "-force_control_type", "Force control: coupled (each controlled displacement an unknown of the one minimisation) or outer (an outer iteration of solves on them; not with a body held by contact, always coupled)", NULL, ForceControlList, o->type, o->type, sizeof(o->type), NULL));
+  PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, o->maxIt, &o->maxIt, NULL));
+  PetscCall(PetscOptionsReal("-force_control_rtol", "Force control: every controlled group's reaction is its force to this relative tolerance at the end (coupled: where given; else the solve's gradient test)", NULL, o->rtol, &o->rtol, &o->rtolSet));
+  PetscCall(PetscOptionsReal("-force_control_step", "Coupled force control: the most a Newton step moves a controlled group, relative to its body's size", NULL, o->step, &o->step, NULL));
+  PetscCall(PetscOptionsBool("-force_control_border_solves", "Coupled force control: eliminate the controls by m solves of the bodies' Hessian per Hessian, even where the step's preconditioner (the substructuring) does it from the contact surfaces with one solve a step", NULL, o->borderSolves, &o->borderSolves, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->maxIt >= 1, comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, o->maxIt);
+  PetscCheck(o->rtol > 0 && o->rtol < 1, comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)o->rtol);
+  PetscCheck(o->step > 0 && !PetscIsInfOrNanReal(o->step), comm, PETSC_ERR_USER_INPUT, "option -force_control_step: must be a finite number > 0, got %g", (double)o->step);
+  PetscCall(PetscFunctionListFind(ForceControlList, o->type, &solve));
+  PetscCheck(solve, comm, PETSC_ERR_USER_INPUT, "option -force_control_type: unknown type '%s' (known: coupled, outer)", o->type);
   PetscFunctionReturn(0);
 }

@@ -24,6 +24,7 @@
    type solves once. */
 #include "forceouter.h"
 #include "staging.h"
+#include "schedule.h"
 #include "problem.h"
 #include <petscblaslapack.h>
 
@@ -31,8 +32,8 @@
    scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
 static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec X0, PetscReal R[], PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-  PetscInt       n;
+  ProblemSchedule saved = p->sched;
+  PetscInt        n;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < p->fc.n; ++k) {
@@ -43,12 +44,10 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   PetscCall(VecDestroy(&p->X0));
   if (X0) { /* from the last converged state: one stage */
     PetscCall(ProblemSetInitialGuess(p, X0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
+    PetscCall(ProblemScheduleOneStage(p, &saved));
   }
   PetscCall(ProblemSolveStaged(p, &n, reason));
-  p->sched.loadSteps     = loadSteps;
-  p->sched.penaltyStages = stages;
+  PetscCall(ProblemScheduleRestore(p, &saved));
   p->res.controlSolves++;
   *its += n;
   if (*reason <= 0) PetscFunctionReturn(0);
@@ -66,7 +65,7 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
 static PetscBool ControlConverged(Problem p, const PetscReal R[])
 {
   for (PetscInt k = 0; k < p->fc.n; ++k)
-    if (PetscAbsReal(R[k] - p->fc.c[k].force) > p->opt.controlRtol * p->fc.c[k].scale) return PETSC_FALSE;
+    if (PetscAbsReal(R[k] - p->fc.c[k].force) > p->cfg->control.rtol * p->fc.c[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
@@ -141,9 +140,9 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
   }
   while (*reason > 0 && !ControlConverged(p, R)) {
     PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
-    if (p->res.controlSolves >= p->opt.controlMaxIt) {
+    if (p->res.controlSolves >= p->cfg->control.maxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->cfg->control.maxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
       break;
     }
     for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->fc.c[k].force;

@@ -7,6 +7,7 @@
 #include "forcesolve.h"
 #include "forceouter.h"
 #include "staging.h"
+#include "schedule.h"
 #include "problem.h"
 #include "forcecontrol.h"
 
@@ -58,7 +59,7 @@ PetscErrorCode ProblemSetControlContinuation(Problem p)
   PetscInt  stages;
 
   PetscFunctionBeginUser;
-  if (!p->fc.coupled || p->opt.penaltyStagesSet || p->opt.penaltyStartSet) PetscFunctionReturn(0);
+  if (!p->fc.coupled || p->cfg->penalty.stagesSet || p->cfg->penalty.startSet) PetscFunctionReturn(0);
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscCall(EnergyTermGetPenaltyStiffness(p->terms[t], &s));
     stiff = PetscMax(stiff, s);
@@ -77,7 +78,7 @@ PetscErrorCode ProblemSetControlContinuation(Problem p)
 static PetscBool ControlsConverged(Problem p)
 {
   for (PetscInt k = 0; k < p->fc.n; ++k)
-    if (PetscAbsReal(p->fc.c[k].R - p->fc.c[k].force) > p->opt.controlRtol * p->fc.c[k].scale) return PETSC_FALSE;
+    if (PetscAbsReal(p->fc.c[k].R - p->fc.c[k].force) > p->cfg->control.rtol * p->fc.c[k].scale) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
@@ -95,31 +96,29 @@ static PetscErrorCode ProblemSolveControlledCoupled(Problem p, PetscInt *its, Ta
   PetscCall(ProblemSolveStaged(p, its, reason));
   for (PetscInt k = 0; k < p->fc.n; ++k) smin = PetscMin(smin, p->fc.c[k].scale);
   while (*reason > 0) {
-    const PetscInt loadSteps = p->sched.loadSteps, stages = p->sched.penaltyStages;
-    PetscReal      tol[3];
-    PetscInt       n;
-    Vec            X0;
+    ProblemSchedule saved;
+    PetscReal       tol[3];
+    PetscInt        n;
+    Vec             X0;
 
     PetscCall(ProblemComputeReactions(p, p->X)); /* the controls' U (ProblemScatterToBodies) and R at X */
     for (PetscInt k = 0; k < p->fc.n; ++k) p->fc.c[k].R = ProblemControlReaction(p, k);
-    if (!p->opt.controlRtolSet || ControlsConverged(p)) break;
-    if (p->res.controlSolves >= p->opt.controlMaxIt) {
+    if (!p->cfg->control.rtolSet || ControlsConverged(p)) break;
+    if (p->res.controlSolves >= p->cfg->control.maxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, ProblemControlGroup(p, 0), (double)p->fc.c[0].R, (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->cfg->control.maxIt, ProblemControlGroup(p, 0), (double)p->fc.c[0].R, (double)p->fc.c[0].force));
       break;
     }
-    PetscCall(PetscInfo(p->tao, "force control: reaction %g, force %g: the solve goes on to the gradient %g\n", (double)p->fc.c[0].R, (double)p->fc.c[0].force, (double)(p->opt.controlRtol * smin)));
+    PetscCall(PetscInfo(p->tao, "force control: reaction %g, force %g: the solve goes on to the gradient %g\n", (double)p->fc.c[0].R, (double)p->fc.c[0].force, (double)(p->cfg->control.rtol * smin)));
     PetscCall(VecDuplicate(p->X, &X0));
     PetscCall(VecCopy(p->X, X0));
     PetscCall(ProblemSetInitialGuess(p, X0));
     PetscCall(VecDestroy(&X0));
     PetscCall(TaoGetTolerances(p->tao, &tol[0], &tol[1], &tol[2]));
-    PetscCall(TaoSetTolerances(p->tao, p->opt.controlRtol * smin, tol[1], 0.0));
-    p->sched.loadSteps     = 1;
-    p->sched.penaltyStages = 1;
+    PetscCall(TaoSetTolerances(p->tao, p->cfg->control.rtol * smin, tol[1], 0.0));
+    PetscCall(ProblemScheduleOneStage(p, &saved));
     PetscCall(ProblemSolveStaged(p, &n, reason));
-    p->sched.loadSteps     = loadSteps;
-    p->sched.penaltyStages = stages;
+    PetscCall(ProblemScheduleRestore(p, &saved));
     PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], tol[2]));
     PetscCall(VecDestroy(&p->X0));
     p->res.controlSolves++;

@@ -56,7 +56,7 @@ PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
   Vec                X;
 
   PetscFunctionBeginUser;
-  if (!s->active || p->opt.forceRtol <= 0) PetscFunctionReturn(0);
+  if (!s->active || p->cfg->stop.forceRtol <= 0) PetscFunctionReturn(0);
   PetscCall(TaoGetConvergedReason(tao, &reason));
   if (reason != TAO_CONVERGED_GATOL && reason != TAO_CONVERGED_GRTOL && reason != TAO_CONVERGED_GTTOL) PetscFunctionReturn(0);
   PetscCall(TaoGetSolutionStatus(tao, NULL, NULL, &gnorm, NULL, NULL, NULL));
@@ -64,7 +64,7 @@ PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
   PetscCall(ProblemContactForceNorm(p, X, &fc));
   if (fc <= 0.0) PetscFunctionReturn(0);
   s->ratio = gnorm / fc;
-  if (gnorm <= p->opt.forceRtol * fc) PetscFunctionReturn(0);
+  if (gnorm <= p->cfg->stop.forceRtol * fc) PetscFunctionReturn(0);
   if (!s->met) { /* the first iterate that met TAO's test: kept, to end at if the solve goes no further */
     if (!s->Xmet) PetscCall(VecDuplicate(X, &s->Xmet));
     PetscCall(VecCopy(X, s->Xmet));
@@ -87,7 +87,7 @@ PetscErrorCode ProblemForceStopTest(Problem p, Tao tao)
       PetscFunctionReturn(0); /* ProblemForceStopEnd moves it to Xmet */
     }
   }
-  PetscCall(PetscInfo(tao, "the gradient norm %g met %s but is %g of the contacts' nodal forces (%g), above -stop_force_rtol %g: going on\n", (double)gnorm, TaoConvergedReasons[reason], (double)s->ratio, (double)fc, (double)p->opt.forceRtol));
+  PetscCall(PetscInfo(tao, "the gradient norm %g met %s but is %g of the contacts' nodal forces (%g), above -stop_force_rtol %g: going on\n", (double)gnorm, TaoConvergedReasons[reason], (double)s->ratio, (double)fc, (double)p->cfg->stop.forceRtol));
   PetscCall(TaoSetConvergedReason(tao, TAO_CONTINUE_ITERATING));
   PetscFunctionReturn(0);
 }
@@ -120,5 +120,24 @@ PetscErrorCode ProblemForceStopEnd(Problem p, TaoConvergedReason *reason)
   PetscCall(VecCopy(s->Xmet, p->X));
   PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL)); /* the bodies and terms at the state kept */
   *reason = s->metReason;
+  PetscFunctionReturn(0);
+}
+
+
+PetscErrorCode StopOptionsSetFromOptions(MPI_Comm comm, StopOptions *o)
+{
+  PetscBool set, given;
+
+  PetscFunctionBeginUser;
+  o->stageRtol = 1e-3;
+  o->forceRtol = 1e-6;
+  PetscOptionsBegin(comm, NULL, "Stopping options", NULL);
+  PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, o->stageRtol, &o->stageRtol, NULL));
+  PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; where -tao_gatol, -tao_grtol or -tao_gttol is given and this is not, off: the user's stop; src/solver/forcestop.c)", NULL, o->forceRtol, &o->forceRtol, &set));
+  PetscOptionsEnd();
+  PetscCall(ContactGradientToleranceGiven(&given));
+  if (!set && given) o->forceRtol = 0.0; /* the user chose TAO's stop */
+  PetscCheck(o->stageRtol > 0 && o->stageRtol < 1, comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)o->stageRtol);
+  PetscCheck(o->forceRtol >= 0 && o->forceRtol < 1, comm, PETSC_ERR_USER_INPUT, "option -stop_force_rtol: must be in [0, 1), got %g", (double)o->forceRtol);
   PetscFunctionReturn(0);
 }

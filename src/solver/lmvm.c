@@ -177,6 +177,7 @@
 #include "problem.h"
 #include "newtonstep.h"
 #include "forceborder.h"
+#include "schedule.h"
 
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
 #define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
@@ -306,7 +307,7 @@ static PetscErrorCode ProblemScreenPair(LMVMCtx *l, Tao tao, Vec X, Vec G)
   PetscCall(VecDotEnd(l->W, l->X, &sHs));
   r = PetscRealPart(sHs) > 0 ? PetscRealPart(ys) / PetscRealPart(sHs) : 1.0;
   PetscCall(PetscInfo(tao, "L-BFGS pair: y^T s / s^T H0 s = %g\n", (double)r));
-  if (r * p->opt.pairRatio >= 1.0 && r <= p->opt.pairRatio) PetscFunctionReturn(0);
+  if (r * p->cfg->lmvm.pairRatio >= 1.0 && r <= p->cfg->lmvm.pairRatio) PetscFunctionReturn(0);
   PetscCall(TaoLMVMGetMatrix(tao, &M));
   PetscCall(MatLMVMReset(M, PETSC_FALSE));
   p->res.pairsDropped++;
@@ -370,7 +371,7 @@ static PetscBool ProblemLMVMAtFloor(const LMVMCtx *l)
 {
   const PetscReal rtol = l->p->sched.decrementRtol;
 
-  return (PetscBool)(l->last && rtol > 0 && l->lambda0 > 0 && l->lambda >= 0 && l->lambda <= l->p->opt.decrementFloor * rtol * l->lambda0);
+  return (PetscBool)(l->last && rtol > 0 && l->lambda0 > 0 && l->lambda >= 0 && l->lambda <= l->p->cfg->lmvm.decrementFloor * rtol * l->lambda0);
 }
 
 /* TAO's update at the start of each iteration, before the LMVM matrix takes
@@ -385,7 +386,7 @@ static PetscErrorCode ProblemLMVMUpdate(Tao tao, PetscInt it, void *ctx)
   PetscFunctionBeginUser;
   PetscCall(TaoGetSolution(tao, &X));
   PetscCall(TaoGetGradient(tao, &G, NULL, NULL));
-  if (it % p->opt.h0Refresh == 0) PetscCall(ProblemComputeH0(p, X));
+  if (it % p->cfg->lmvm.h0Refresh == 0) PetscCall(ProblemComputeH0(p, X));
   if (it == 0) { /* TAO starts the solve with an empty history */
     l->have   = PETSC_FALSE;
     l->lambda = -1.0;
@@ -461,12 +462,12 @@ PetscErrorCode ProblemTaoSolve(Problem p, PetscInt *its, TaoConvergedReason *rea
     if (g0 < 0) g0 = l->G0;
     f0 = l->F0;
     if (*reason == TAO_DIVERGED_LS_FAILURE && ProblemLMVMAtFloor(l)) {
-      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(l->lambda / l->lambda0), (double)p->opt.decrementFloor));
+      PetscCall(PetscInfo(p->tao, "L-BFGS: the line search failed at decrement %g of the first iterate's, within %g of the tolerance: converged at its round-off floor\n", (double)(l->lambda / l->lambda0), (double)p->cfg->lmvm.decrementFloor));
       *reason = TAO_CONVERGED_USER;
       p->res.decrementFloor++;
       break;
     }
-    if (*reason != TAO_DIVERGED_LS_FAILURE || r >= p->opt.lmvmRestarts || !(f < f0) || *its >= maxit) break;
+    if (*reason != TAO_DIVERGED_LS_FAILURE || r >= p->cfg->lmvm.restarts || !(f < f0) || *its >= maxit) break;
     /* the restart stops where the first solve would have: its gradient tolerances relative to the first iterate's */
     PetscCall(TaoSetTolerances(p->tao, PetscMax(gatol, gttol * g0), grtol, 0.0));
     PetscCall(TaoSetMaximumIterations(p->tao, maxit - *its));
@@ -487,7 +488,7 @@ static PetscErrorCode ProblemChooseDecrementTest(Problem p, PetscReal stiff)
 
   PetscFunctionBeginUser;
   PetscCall(ContactGradientToleranceGiven(&given));
-  p->sched.decrementRtol = !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0;
+  PetscCall(ProblemSetDecrementTest(p, !given && stiff > LMVM_STIFF_PENALTY ? LMVM_DECREMENT_RTOL : 0.0));
   PetscCall(PetscInfo(p->tao, "L-BFGS: k_p h / E* = %g: the last stage stops by %s\n", (double)stiff, p->sched.decrementRtol > 0 ? "the decrement" : "the gradient tolerances"));
   PetscFunctionReturn(0);
 }
@@ -515,7 +516,7 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
   PetscReal stiff;
 
   PetscFunctionBeginUser;
-  if (!((!strcmp(type, TAOLMVM) || !strcmp(type, TAOBLMVM)) && p->opt.h0 == H0_CONTACT && p->nterms)) PetscFunctionReturn(0);
+  if (!((!strcmp(type, TAOLMVM) || !strcmp(type, TAOBLMVM)) && p->cfg->lmvm.h0 == H0_CONTACT && p->nterms)) PetscFunctionReturn(0);
   PetscCall(ProblemGetPenaltyStiffness(p, &stiff));
   /* -lmvm_h0 contact: one correction pair (see the derivation). The default
      of -tao_lmvm_mat_lmvm_hist_size, which TAO reads (its LMVM matrix has no
@@ -528,7 +529,7 @@ PetscErrorCode ProblemSetLMVMDefaults(Problem p, const char type[])
   PetscCall(TaoSetTolerances(p->tao, 0.0, 0.0, 1e-10));
   /* the decrement test where the penalty is stiff and the user chose no test */
   if (p->sched.decrementRtol < 0) PetscCall(ProblemChooseDecrementTest(p, stiff));
-  if (!p->opt.penaltyStagesSet && !p->opt.penaltyStartSet) PetscCall(ProblemChooseContinuation(p, stiff));
+  if (!p->cfg->penalty.stagesSet && !p->cfg->penalty.startSet) PetscCall(ProblemChooseContinuation(p, stiff));
   /* the line search's evaluations: 100, not TAO's 30 (see the derivation) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-tao_ls_max_funcs", &given));
   if (!given) PetscCall(PetscOptionsSetValue(NULL, "-tao_ls_max_funcs", "100"));
@@ -546,9 +547,9 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOLMVM, &lmvm));
   PetscCall(PetscObjectTypeCompare((PetscObject)p->tao, TAOBLMVM, &blmvm));
-  if (!(lmvm || blmvm) || p->opt.h0 == H0_NONE) PetscFunctionReturn(0);
-  if (!p->opt.tangentAtRestSet) p->opt.tangentAtRest = PETSC_TRUE; /* H0 is the stiffness at rest with the contact's Hessian, whatever the material (a neohookean body's tangent would be factored anew at each refresh) */
-  contact = (PetscBool)(p->opt.h0 == H0_CONTACT && p->nterms && !ProblemTangentReassembled(p)); /* a varying tangent: the stiffness at rest (elastic) */
+  if (!(lmvm || blmvm) || p->cfg->lmvm.h0 == H0_NONE) PetscFunctionReturn(0);
+  if (!p->cfg->newton.tangentAtRestSet) p->cfg->newton.tangentAtRest = PETSC_TRUE; /* H0 is the stiffness at rest with the contact's Hessian, whatever the material (a neohookean body's tangent would be factored anew at each refresh) */
+  contact = (PetscBool)(p->cfg->lmvm.h0 == H0_CONTACT && p->nterms && !ProblemTangentReassembled(p)); /* a varying tangent: the stiffness at rest (elastic) */
   PetscCall(ProblemCreateLMVM(p, &l));
   if (contact) PetscCall(ProblemAssembleHessian(p, p->X, p->H)); /* a matrix for the set-up; each solve sets H0 up at its first iterate */
   H0 = contact ? p->H : p->K;
@@ -583,5 +584,32 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
     PetscCall(VecDuplicate(p->X, &l->W));
     PetscCall(TaoSetUpdate(p->tao, ProblemLMVMUpdate, l));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LMVMOptionsSetFromOptions(MPI_Comm comm, LMVMOptions *o)
+{
+  PetscBool setDecrement;
+
+  PetscFunctionBeginUser;
+  o->h0             = H0_CONTACT;
+  o->h0Refresh      = 1;
+  o->restarts       = 50;
+  o->decrementRtol  = -1.0; /* chosen with the solver (ProblemChooseDecrementTest) */
+  o->decrementFloor = 10.0;
+  o->pairRatio      = 10.0;
+  PetscOptionsBegin(comm, NULL, "L-BFGS options", NULL);
+  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)o->h0, (PetscEnum *)&o->h0, NULL));
+  PetscCall(PetscOptionsInt("-lmvm_h0_refresh", "-lmvm_h0 contact: recompute the contact part of H0 every this many iterations", NULL, o->h0Refresh, &o->h0Refresh, NULL));
+  PetscCall(PetscOptionsInt("-lmvm_restarts", "-lmvm_h0 contact: restart an L-BFGS solve whose line search failed after it lowered the energy, with an empty history, at most this many times", NULL, o->restarts, &o->restarts, NULL));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-lmvm_decrement_rtol", "-lmvm_h0 contact: the last stage stops when the Newton decrement in H0's norm, sqrt(g'H0^-1 g), has fallen by this factor from the first iterate's, instead of by the gradient tolerances (0: off)", "1e-13 where a pair's k_p h / E* exceeds 1e4 and no -tao_gatol, -tao_grtol or -tao_gttol is given, else 0", PETSC_FALSE, &o->decrementRtol, &setDecrement));
+  PetscCall(PetscOptionsReal("-lmvm_decrement_floor", "-lmvm_decrement_rtol: a last stage whose line search fails with the decrement within this factor of the tolerance has reached the decrement's round-off floor and ends converged (JSON lmvm_decrement_floor_stops)", NULL, o->decrementFloor, &o->decrementFloor, NULL));
+  PetscCall(PetscOptionsReal("-lmvm_pair_ratio", "-lmvm_h0 contact: drop an L-BFGS correction pair whose curvature y's/s'H0s is not within this factor of H0's (where contact opened or closed along the step; 1e300: keep every pair)", NULL, o->pairRatio, &o->pairRatio, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->h0Refresh >= 1, comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, o->h0Refresh);
+  PetscCheck(o->restarts >= 0, comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, o->restarts);
+  PetscCheck(!setDecrement || (o->decrementRtol >= 0 && o->decrementRtol < 1), comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_rtol: must be in [0, 1), got %g", (double)o->decrementRtol);
+  PetscCheck(o->decrementFloor >= 1 && !PetscIsInfOrNanReal(o->decrementFloor), comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_floor: must be a finite number >= 1, got %g", (double)o->decrementFloor);
+  PetscCheck(o->pairRatio >= 1 && !PetscIsInfOrNanReal(o->pairRatio), comm, PETSC_ERR_USER_INPUT, "option -lmvm_pair_ratio: must be a finite number >= 1, got %g", (double)o->pairRatio);
   PetscFunctionReturn(0);
 }

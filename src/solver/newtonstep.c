@@ -72,7 +72,7 @@ PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
-  if (p->opt.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(pc, p->K, p->surfaceDofs, &p->exactHessian));
+  if (p->cfg->newton.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(pc, p->K, p->surfaceDofs, &p->exactHessian));
   else PetscCall(ContactSubstructurePCSetUp(pc, p->K, p->surfaceDofs, p->nbodies, p->offset, &p->sub));
   PetscFunctionReturn(0);
 }
@@ -106,11 +106,11 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   if (nls) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   p->tangentAuto = PETSC_FALSE;
-  if (p->opt.iterative) {
+  if (p->cfg->newton.iterative) {
     if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies, (PetscBool)(p->nterms == 0 && !varies && !choose)));
-  } else if (p->opt.schur && p->nterms > 0 && choose && p->K) {
+  } else if (p->cfg->newton.schur && p->nterms > 0 && choose && p->K) {
     PC rest, full;
-    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+    PetscCheck(p->cfg->newton.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     PetscCall(PCCreate(p->comm, &rest));
     PetscCall(PCSetOperators(rest, p->H, p->H));
     PetscCall(ProblemSchurPCSetUp(p, rest));
@@ -121,11 +121,11 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
     PetscCall(PCDestroy(&rest));
     PetscCall(PCDestroy(&full));
     p->tangentAuto = PETSC_TRUE;
-  } else if (p->opt.schur && p->nterms > 0 && !varies) {
-    PetscCheck(p->opt.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
+  } else if (p->cfg->newton.schur && p->nterms > 0 && !varies) {
+    PetscCheck(p->cfg->newton.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
     if (!p->K) PetscCall(PCSetType(pc, PCSHELL));
     else PetscCall(ProblemSchurPCSetUp(p, pc));
-  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(varies || p->opt.hessianType != HESSIAN_GAUSS_NEWTON)));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, (PetscBool)(varies || p->cfg->hessian.type != HESSIAN_GAUSS_NEWTON)));
   PetscFunctionReturn(0);
 }
 
@@ -141,11 +141,11 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   PetscInt N;
 
   PetscFunctionBeginUser;
-  if (p->opt.iterativeSet || !p->Xb || p->nbodies == 0 || p->bodies[0]->dim != 3) PetscFunctionReturn(0);
+  if (p->cfg->newton.iterativeSet || !p->Xb || p->nbodies == 0 || p->bodies[0]->dim != 3) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
-  p->opt.iterative = (PetscBool)(N > p->opt.iterativeDofs);
+  p->cfg->newton.iterative = (PetscBool)(N > p->cfg->newton.iterativeDofs);
   PetscCall(PetscPrintf(p->comm, "Newton step: %s (3D, %" PetscInt_FMT " dofs, %s -newton_iterative_dofs %" PetscInt_FMT "; -newton_iterative 0 or 1 forces either)\n",
-                        p->opt.iterative ? "CG + GAMG" : "direct factorisation", N, p->opt.iterative ? "above" : "at most", p->opt.iterativeDofs));
+                        p->cfg->newton.iterative ? "CG + GAMG" : "direct factorisation", N, p->cfg->newton.iterative ? "above" : "at most", p->cfg->newton.iterativeDofs));
   PetscFunctionReturn(0);
 }
 
@@ -173,5 +173,29 @@ PetscErrorCode ProblemSetNewtonDefaults(Problem p)
     PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(ForceBorderPCSetUp(p->Htao, pc));
   } else PetscCall(ProblemSetUpStepKSP(p, ksp, nls));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
+{
+  PetscFunctionBeginUser;
+  o->iterative        = PETSC_FALSE;
+  o->iterativeSet     = PETSC_FALSE;
+  o->iterativeDofs    = NEWTON_ITERATIVE_DOFS;
+  o->schur            = PETSC_TRUE;
+  o->schurType        = SCHUR_SUBSTRUCTURE;
+  o->tangentAtRest    = PETSC_FALSE;
+  o->tangentAtRestSet = PETSC_FALSE;
+  o->tangentIts       = 10;
+  PetscOptionsBegin(comm, NULL, "Newton step options", NULL);
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes direct; 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
+  PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, o->iterativeDofs, &o->iterativeDofs, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, o->schur, &o->schur, NULL));
+  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)o->schurType, (PetscEnum *)&o->schurType, NULL));
+  PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, o->tangentAtRest, &o->tangentAtRest, &o->tangentAtRestSet));
+  PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, o->tangentIts, &o->tangentIts, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->iterativeDofs >= 0, comm, PETSC_ERR_USER_INPUT, "option -newton_iterative_dofs: must be at least 0, got %" PetscInt_FMT, o->iterativeDofs);
+  PetscCheck(o->tangentIts >= 0, comm, PETSC_ERR_USER_INPUT, "option -tangent_at_rest_its: must be at least 0, got %" PetscInt_FMT, o->tangentIts);
   PetscFunctionReturn(0);
 }

@@ -13,6 +13,7 @@
 #include "partition.h"
 #include "options.h"
 #include "forcecontrol.h"
+#include "schedule.h"
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 {
@@ -20,36 +21,9 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&p));
-  p->comm        = comm;
-  p->opt.meshSize    = -1.0;
-  p->opt.partitioner = PARTITION_METIS;
-  p->opt.h0          = H0_CONTACT;
-  p->opt.h0Refresh   = 1;
-  p->opt.pairRatio   = 10.0;
-  p->opt.lmvmRestarts = 50;
-  p->opt.decrementFloor = 10.0;
-  p->opt.decrementRtol = -1.0; /* chosen with the solver (lmvm.c) */
-  p->opt.taylorScale = 1e-4;
-  p->opt.loadSteps     = 1;
-  p->opt.loadStages    = 1;
-  p->res.load          = 1.0;
-  p->opt.maxCutbacks   = 4;
-  p->opt.schur         = PETSC_TRUE;
-  p->opt.iterativeDofs = NEWTON_ITERATIVE_DOFS;
-  p->opt.hessianType   = HESSIAN_AUTO;
-  p->opt.hessianSwitch = 1e-4;
-  p->opt.penaltyStages = 1;
-  p->opt.penaltyStart  = 1e-2;
-  p->opt.stageRtol     = 1e-3;
-  p->opt.forceRtol     = 1e-6;
-  p->opt.lagRtol       = 1e-8;
-  p->opt.lagMaxIt      = 30;
-  p->opt.controlMaxIt  = 40;
-  p->opt.controlRtol   = 1e-9;
-  p->opt.controlStep   = 0.3;
-  p->opt.tangentIts    = 10;
-  PetscCall(PetscStrncpy(p->opt.controlType, "coupled", sizeof(p->opt.controlType)));
-  PetscCall(PetscStrncpy(p->opt.scene, "scene", sizeof(p->opt.scene)));
+  p->comm     = comm;
+  p->res.load = 1.0;
+  PetscCall(SolverConfigCreate(comm, &p->cfg));
   *problem = p;
   PetscFunctionReturn(0);
 }
@@ -60,7 +34,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
 {
   PetscFunctionBeginUser;
-  if (p->opt.maxDofs > 0) {
+  if (p->cfg->scene.maxDofs > 0) {
     PetscCall(PetscSNPrintf(limit, len, "-max_dofs"));
     PetscFunctionReturn(0);
   }
@@ -76,7 +50,7 @@ static PetscErrorCode ProblemDofLimit(Problem p, char limit[], size_t len)
       if (fp) fclose(fp);
     }
     PetscCallMPI(MPI_Bcast(&kb, 1, MPI_DOUBLE, 0, p->comm));
-    p->opt.maxDofs = kb * 1024.0 / CONTACT_BYTES_PER_DOF;
+    p->cfg->scene.maxDofs = kb * 1024.0 / CONTACT_BYTES_PER_DOF;
     PetscCall(PetscSNPrintf(limit, len, "the machine's available memory, %.1f GB; -max_dofs sets another", kb * 1024.0 / 1e9));
   }
   PetscFunctionReturn(0);
@@ -144,120 +118,96 @@ static PetscErrorCode ProblemCheckSolverOptions(Problem p)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ProblemSetFromOptions(Problem p)
+PetscErrorCode SceneOptionsSetFromOptions(MPI_Comm comm, SceneOptions *o)
 {
-  char     *names[CONTACT_MAX_BODIES];
   PetscInt  nb = CONTACT_MAX_BODIES;
-  PetscBool set, help, setMeshSize, setMaxDofs, setDecrement;
+  PetscBool set, help, setMeshSize, setMaxDofs;
   char      def[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasHelp(NULL, &help));
-  PetscOptionsBegin(p->comm, NULL, "Contact scene options", NULL);
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-scene", "Scene name (names the default output files)", NULL, p->opt.scene, p->opt.scene, sizeof(p->opt.scene), NULL));
-  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, names, &nb, &set));
-  PetscCall(PetscOptionsBool("-axisymmetric", "Axisymmetric scene: x is the radius r >= 0 and x = 0 the axis, each mesh a meridian section (u_r = 0 held on the axis)", NULL, p->opt.axisymmetric, &p->opt.axisymmetric, NULL));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &p->opt.meshSize, &setMeshSize));
-  PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", p->opt.scene));
-  PetscCall(PetscStrncpy(p->opt.meshDir, def, sizeof(p->opt.meshDir)));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &p->opt.maxDofs, &setMaxDofs));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-mesh_dir", "Directory of the generated meshes", NULL, p->opt.meshDir, p->opt.meshDir, sizeof(p->opt.meshDir), NULL));
-  PetscCall(PetscOptionsEnum("-partitioner", "Mesh partitioner", NULL, PartitionTypes, (PetscEnum)p->opt.partitioner, (PetscEnum *)&p->opt.partitioner, NULL));
-  PetscCall(PetscOptionsBool("-partition_view", "Print the cells per rank of each body", NULL, p->opt.partitionView, &p->opt.partitionView, NULL));
-  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)p->opt.h0, (PetscEnum *)&p->opt.h0, NULL));
-  PetscCall(PetscOptionsInt("-lmvm_h0_refresh", "-lmvm_h0 contact: recompute the contact part of H0 every this many iterations", NULL, p->opt.h0Refresh, &p->opt.h0Refresh, NULL));
-  PetscCall(PetscOptionsInt("-lmvm_restarts", "-lmvm_h0 contact: restart an L-BFGS solve whose line search failed after it lowered the energy, with an empty history, at most this many times", NULL, p->opt.lmvmRestarts, &p->opt.lmvmRestarts, NULL));
-  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-lmvm_decrement_rtol", "-lmvm_h0 contact: the last stage stops when the Newton decrement in H0's norm, sqrt(g'H0^-1 g), has fallen by this factor from the first iterate's, instead of by the gradient tolerances (0: off)", "1e-13 where a pair's k_p h / E* exceeds 1e4 and no -tao_gatol, -tao_grtol or -tao_gttol is given, else 0", PETSC_FALSE, &p->opt.decrementRtol, &setDecrement));
-  PetscCall(PetscOptionsReal("-lmvm_decrement_floor", "-lmvm_decrement_rtol: a last stage whose line search fails with the decrement within this factor of the tolerance has reached the decrement's round-off floor and ends converged (JSON lmvm_decrement_floor_stops)", NULL, p->opt.decrementFloor, &p->opt.decrementFloor, NULL));
-  PetscCall(PetscOptionsReal("-lmvm_pair_ratio", "-lmvm_h0 contact: drop an L-BFGS correction pair whose curvature y's/s'H0s is not within this factor of H0's (where contact opened or closed along the step; 1e300: keep every pair)", NULL, p->opt.pairRatio, &p->opt.pairRatio, NULL));
-  PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, p->opt.taylor, &p->opt.taylor, NULL));
-  PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, p->opt.taylorScale, &p->opt.taylorScale, NULL));
-  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes direct; 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, p->opt.iterative, &p->opt.iterative, &p->opt.iterativeSet));
-  PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, p->opt.iterativeDofs, &p->opt.iterativeDofs, NULL));
-  PetscCheck(p->opt.iterativeDofs >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -newton_iterative_dofs: must be at least 0, got %" PetscInt_FMT, p->opt.iterativeDofs);
-  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, p->opt.schur, &p->opt.schur, NULL));
-  PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)p->opt.schurType, (PetscEnum *)&p->opt.schurType, NULL));
-  PetscCall(PetscOptionsInt("-load_steps", "Load stepping: solve with the Dirichlet values and loads scaled by 1/n, 2/n, ..., 1, each from the last", NULL, p->opt.loadSteps, &p->opt.loadSteps, NULL));
-  PetscCall(PetscOptionsInt("-load_stages", "Load history: every -<body>_bc_<group>_values, -<body>_load_<group>_traction and _pressure gives this many end values per component, stage-major: stage 1's components, then stage 2's (x1,y1,x2,y2,...); each stage ramps linearly from the last one's end in -load_steps increments", NULL, p->opt.loadStages, &p->opt.loadStages, NULL));
-  PetscCall(PetscOptionsInt("-load_cutbacks", "Automatic cutback: a load stage whose line search fails is retried from the last converged state with half the load increment, at most this many times in all (0: off)", NULL, p->opt.maxCutbacks, &p->opt.maxCutbacks, NULL));
-  PetscCall(PetscOptionsInt("-penalty_stages", "Penalty continuation: k_p raised geometrically in this many stages, each from the last (with -contact_penalty auto: 2; with Newton where k_p h / E* exceeds 1e7: 2, the first at 1000; with lmvm/blmvm: 3, more where k_p h / E* exceeds 1000, a factor of at most 32 a stage)", NULL, p->opt.penaltyStages, &p->opt.penaltyStages, &p->opt.penaltyStagesSet));
-  PetscCall(PetscOptionsReal("-penalty_start", "Continuation: k_p of the first stage relative to the scene's (with -contact_penalty auto: 0.03; with lmvm/blmvm: 0.001, or where k_p h / E* is 1 if lower)", NULL, p->opt.penaltyStart, &p->opt.penaltyStart, &p->opt.penaltyStartSet));
-  PetscCall(PetscOptionsReal("-stage_rtol", "Relative decrease of the gradient norm that ends an intermediate stage", NULL, p->opt.stageRtol, &p->opt.stageRtol, NULL));
-  {
-    PetscBool set, given;
-    PetscCall(PetscOptionsReal("-stop_force_rtol", "The final stop also asks the gradient norm to be at most this times the norm of the contacts' nodal forces (the forces read off the solution then in error by about this much, relative; 0: off; where -tao_gatol, -tao_grtol or -tao_gttol is given and this is not, off: the user's stop; src/solver/forcestop.c)", NULL, p->opt.forceRtol, &p->opt.forceRtol, &set));
-    PetscCall(ContactGradientToleranceGiven(&given));
-    if (!set && given) p->opt.forceRtol = 0.0; /* the user chose TAO's stop */
-  }
-  PetscCall(PetscOptionsReal("-contact_friction_lag_rtol", "Friction: each load increment is solved again with the normal pressure of the last solution until mu p changes by less than this times mu p_max at every node", NULL, p->opt.lagRtol, &p->opt.lagRtol, NULL));
-  PetscCall(PetscOptionsInt("-contact_friction_lag_max_it", "Friction: the most solves of one load increment's fixed point on the pressure", NULL, p->opt.lagMaxIt, &p->opt.lagMaxIt, NULL));
-  PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, p->opt.tangentAtRest, &p->opt.tangentAtRest, &p->opt.tangentAtRestSet));
-  PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, p->opt.tangentIts, &p->opt.tangentIts, NULL));
-  PetscCheck(p->opt.tangentIts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -tangent_at_rest_its: must be at least 0, got %" PetscInt_FMT, p->opt.tangentIts);
-  PetscCall(PetscOptionsBool("-load_path", "Record the load path in the JSON summary's load_path: at rest and at each converged load step, the load factor, the energy and every Dirichlet group's reaction; each load step's last stage then stops at the final tolerance, as the last load's", NULL, p->opt.loadPath, &p->opt.loadPath, NULL));
-  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)p->opt.hessianType, (PetscEnum *)&p->opt.hessianType, NULL));
-  PetscCall(ContactOptionsFList(PetscOptionsObject, "-force_control_type", "Force control: coupled (each controlled displacement an unknown of the one minimisation) or outer (an outer iteration of solves on them; not with a body held by contact, always coupled)", NULL, ForceControlList, p->opt.controlType, p->opt.controlType, sizeof(p->opt.controlType), NULL));
-  PetscCall(PetscOptionsInt("-force_control_max_it", "Force control: the most solves (outer: of its iteration on the controlled displacements; coupled: the solve and its continuations to -force_control_rtol)", NULL, p->opt.controlMaxIt, &p->opt.controlMaxIt, NULL));
-  PetscCall(PetscOptionsReal("-force_control_rtol", "Force control: every controlled group's reaction is its force to this relative tolerance at the end (coupled: where given; else the solve's gradient test)", NULL, p->opt.controlRtol, &p->opt.controlRtol, &p->opt.controlRtolSet));
-  PetscCall(PetscOptionsReal("-force_control_step", "Coupled force control: the most a Newton step moves a controlled group, relative to its body's size", NULL, p->opt.controlStep, &p->opt.controlStep, NULL));
-  PetscCall(PetscOptionsBool("-force_control_border_solves", "Coupled force control: eliminate the controls by m solves of the bodies' Hessian per Hessian, even where the step's preconditioner (the substructuring) does it from the contact surfaces with one solve a step", NULL, p->opt.controlBorderSolves, &p->opt.controlBorderSolves, NULL));
-  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, p->opt.hessianSwitch, &p->opt.hessianSwitch, NULL));
+  PetscCall(PetscStrncpy(o->name, "scene", sizeof(o->name)));
+  o->axisymmetric = PETSC_FALSE;
+  o->meshSize     = -1.0;
+  o->maxDofs      = 0.0;
+  PetscOptionsBegin(comm, NULL, "Contact scene options", NULL);
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-scene", "Scene name (names the default output files)", NULL, o->name, o->name, sizeof(o->name), NULL));
+  PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bodies", "Comma-separated body names; body options use the prefix -<name>_ (required)", NULL, o->bodies, &nb, &set));
+  PetscCall(PetscOptionsBool("-axisymmetric", "Axisymmetric scene: x is the radius r >= 0 and x = 0 the axis, each mesh a meridian section (u_r = 0 held on the axis)", NULL, o->axisymmetric, &o->axisymmetric, NULL));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mesh_size", "Mesh size h for every body (overrides -<body>_mesh_size)", "unset: each body's own", PETSC_FALSE, &o->meshSize, &setMeshSize));
+  PetscCall(PetscSNPrintf(def, sizeof(def), "build/meshes/%s", o->name));
+  PetscCall(PetscStrncpy(o->meshDir, def, sizeof(o->meshDir)));
+  PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-max_dofs", "The most dofs a generated mesh may have: larger ones are refused before meshing", "the machine's available memory / 3.5 kB", PETSC_FALSE, &o->maxDofs, &setMaxDofs));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-mesh_dir", "Directory of the generated meshes", NULL, o->meshDir, o->meshDir, sizeof(o->meshDir), NULL));
   PetscOptionsEnd();
-  PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", p->opt.meshDir, sizeof(p->opt.meshDir), NULL, 0)); /* relative to the options file that names it */
-  PetscCheck(p->opt.taylorScale > 0 && !PetscIsInfOrNanReal(p->opt.taylorScale), p->comm, PETSC_ERR_USER_INPUT, "option -taylor_scale: must be a finite number > 0, got %g", (double)p->opt.taylorScale);
-  PetscCheck(p->opt.hessianSwitch >= 0 && p->opt.hessianSwitch <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)p->opt.hessianSwitch);
-  p->exactHessian = (PetscBool)(p->opt.hessianType == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
-  PetscCheck(p->opt.loadSteps >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -load_steps: must be >= 1, got %" PetscInt_FMT, p->opt.loadSteps);
-  PetscCheck(p->opt.loadStages >= 1 && p->opt.loadStages <= CONTACT_MAX_STAGES, p->comm, PETSC_ERR_USER_INPUT, "option -load_stages: must be in [1, %d], got %" PetscInt_FMT, CONTACT_MAX_STAGES, p->opt.loadStages);
-  PetscCheck(p->opt.maxCutbacks >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -load_cutbacks: must be >= 0, got %" PetscInt_FMT, p->opt.maxCutbacks);
-  PetscCheck(p->opt.penaltyStages >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_stages: must be >= 1, got %" PetscInt_FMT, p->opt.penaltyStages);
-  PetscCheck(p->opt.penaltyStart > 0 && p->opt.penaltyStart <= 1, p->comm, PETSC_ERR_USER_INPUT, "option -penalty_start: must be in (0, 1], got %g", (double)p->opt.penaltyStart);
-  PetscCheck(p->opt.lagRtol > 0 && p->opt.lagRtol < 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_rtol: must be in (0, 1), got %g", (double)p->opt.lagRtol);
-  PetscCheck(p->opt.lagMaxIt >= 1, p->comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_friction_lag_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.lagMaxIt);
-  PetscCheck(p->opt.forceRtol >= 0 && p->opt.forceRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stop_force_rtol: must be in [0, 1), got %g", (double)p->opt.forceRtol);
-  PetscCheck(p->opt.stageRtol > 0 && p->opt.stageRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -stage_rtol: must be in (0, 1), got %g", (double)p->opt.stageRtol);
-  PetscCheck(p->opt.h0Refresh >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_h0_refresh: must be >= 1, got %" PetscInt_FMT, p->opt.h0Refresh);
-  PetscCheck(p->opt.lmvmRestarts >= 0, p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_restarts: must be >= 0, got %" PetscInt_FMT, p->opt.lmvmRestarts);
-  PetscCheck(!setDecrement || (p->opt.decrementRtol >= 0 && p->opt.decrementRtol < 1), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_rtol: must be in [0, 1), got %g", (double)p->opt.decrementRtol);
-  PetscCheck(p->opt.decrementFloor >= 1 && !PetscIsInfOrNanReal(p->opt.decrementFloor), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_decrement_floor: must be a finite number >= 1, got %g", (double)p->opt.decrementFloor);
-  PetscCheck(p->opt.pairRatio >= 1 && !PetscIsInfOrNanReal(p->opt.pairRatio), p->comm, PETSC_ERR_USER_INPUT, "option -lmvm_pair_ratio: must be a finite number >= 1, got %g", (double)p->opt.pairRatio);
-  PetscCheck(p->opt.controlMaxIt >= 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_max_it: must be >= 1, got %" PetscInt_FMT, p->opt.controlMaxIt);
-  PetscCheck(p->opt.controlRtol > 0 && p->opt.controlRtol < 1, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_rtol: must be in (0, 1), got %g", (double)p->opt.controlRtol);
-  PetscCheck(p->opt.controlStep > 0 && !PetscIsInfOrNanReal(p->opt.controlStep), p->comm, PETSC_ERR_USER_INPUT, "option -force_control_step: must be a finite number > 0, got %g", (double)p->opt.controlStep);
-  {
-    PetscErrorCode (*solve)(void) = NULL;
-    PetscCall(PetscFunctionListFind(ForceControlList, p->opt.controlType, &solve));
-    PetscCheck(solve, p->comm, PETSC_ERR_USER_INPUT, "option -force_control_type: unknown type '%s' (known: coupled, outer)", p->opt.controlType);
-  }
-  p->sched.loadSteps     = p->opt.loadSteps;
-  p->res.load            = (PetscReal)p->opt.loadStages; /* the bodies are set up at the last stage's end */
-  p->sched.penaltyStages = p->opt.penaltyStages;
-  p->sched.penaltyStart  = p->opt.penaltyStart;
-  p->sched.decrementRtol = p->opt.decrementRtol;
-  PetscCall(ProblemCheckSolverOptions(p));
+  PetscCall(ContactOptionsResolvePath(NULL, "-mesh_dir", o->meshDir, sizeof(o->meshDir), NULL, 0)); /* relative to the options file that names it */
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (help && !(set && nb > 0)) { /* -help without a scene: a body's options under a placeholder name */
-    PetscCall(PetscStrallocpy("<body>", &names[0]));
+    PetscCall(PetscStrallocpy("<body>", &o->bodies[0]));
     nb  = 1;
     set = PETSC_TRUE;
   }
-  PetscCheck(set && nb > 0, p->comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
-  PetscCheck(!setMeshSize || (p->opt.meshSize > 0 && !PetscIsInfOrNanReal(p->opt.meshSize)), p->comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)p->opt.meshSize);
-  if (!setMeshSize) p->opt.meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
-  PetscCheck(!setMaxDofs || (p->opt.maxDofs >= 1 && !PetscIsInfOrNanReal(p->opt.maxDofs)), p->comm, PETSC_ERR_USER_INPUT, "option -max_dofs: must be a finite number >= 1, got %g", (double)p->opt.maxDofs);
-  if (!setMaxDofs) p->opt.maxDofs = 0.0; /* from the machine's memory (ProblemDofLimit) */
-  p->nbodies = nb;
+  PetscCheck(set && nb > 0, comm, PETSC_ERR_USER_INPUT, "no bodies: give -bodies name1,name2,... (usually in the scene's -options_file)");
+  o->nbodies = nb;
   for (PetscInt i = 0; i < nb; ++i) {
     for (PetscInt j = 0; j < i; ++j) {
       PetscBool same;
-      PetscCall(PetscStrcmp(names[i], names[j], &same));
-      PetscCheck(!same, p->comm, PETSC_ERR_USER_INPUT, "option -bodies: body '%s' given twice", names[i]);
+      PetscCall(PetscStrcmp(o->bodies[i], o->bodies[j], &same));
+      PetscCheck(!same, comm, PETSC_ERR_USER_INPUT, "option -bodies: body '%s' given twice", o->bodies[i]);
     }
-    PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
-    p->bodies[i]->axisym  = p->opt.axisymmetric;
-    p->bodies[i]->nstages = p->opt.loadStages;
-    PetscCall(PetscFree(names[i]));
   }
-  for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->opt.meshSize));
+  PetscCheck(!setMeshSize || (o->meshSize > 0 && !PetscIsInfOrNanReal(o->meshSize)), comm, PETSC_ERR_USER_INPUT, "option -mesh_size: must be a finite number > 0, got %g", (double)o->meshSize);
+  if (!setMeshSize) o->meshSize = -1.0; /* each body's own (-<body>_mesh_size) */
+  PetscCheck(!setMaxDofs || (o->maxDofs >= 1 && !PetscIsInfOrNanReal(o->maxDofs)), comm, PETSC_ERR_USER_INPUT, "option -max_dofs: must be a finite number >= 1, got %g", (double)o->maxDofs);
+  if (!setMaxDofs) o->maxDofs = 0.0; /* from the machine's memory (ProblemDofLimit) */
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TaylorOptionsSetFromOptions(MPI_Comm comm, TaylorOptions *o)
+{
+  PetscFunctionBeginUser;
+  o->test  = PETSC_FALSE;
+  o->scale = 1e-4;
+  PetscOptionsBegin(comm, NULL, "Taylor test options", NULL);
+  PetscCall(PetscOptionsBool("-taylor_test", "Taylor-remainder check of the gradient and Hessian at the solution", NULL, o->test, &o->test, NULL));
+  PetscCall(PetscOptionsReal("-taylor_scale", "Size of the Taylor direction relative to max |u| (small, so that no contact point changes sides along it)", NULL, o->scale, &o->scale, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->scale > 0 && !PetscIsInfOrNanReal(o->scale), comm, PETSC_ERR_USER_INPUT, "option -taylor_scale: must be a finite number > 0, got %g", (double)o->scale);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HessianOptionsSetFromOptions(MPI_Comm comm, HessianOptions *o)
+{
+  PetscFunctionBeginUser;
+  o->type       = HESSIAN_AUTO;
+  o->switchRtol = 1e-4;
+  PetscOptionsBegin(comm, NULL, "Contact Hessian options", NULL);
+  PetscCall(PetscOptionsEnum("-contact_hessian", "Contact Hessian: gauss_newton (SPD), exact (adds the second derivative of the gap; may be indefinite) or auto (gauss_newton, exact once the gradient is small)", NULL, HessianTypes, (PetscEnum)o->type, (PetscEnum *)&o->type, NULL));
+  PetscCall(PetscOptionsReal("-contact_hessian_switch", "auto: add the second-order term once ||g|| < this times ||g|| at the first iterate", NULL, o->switchRtol, &o->switchRtol, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->switchRtol >= 0 && o->switchRtol <= 1, comm, PETSC_ERR_USER_INPUT, "option -contact_hessian_switch: must be in [0, 1], got %g", (double)o->switchRtol);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProblemSetFromOptions(Problem p)
+{
+  char   **names;
+  PetscInt nb;
+
+  PetscFunctionBeginUser;
+  PetscCall(SolverConfigSetFromOptions(p->cfg));
+  PetscCall(ProblemCheckSolverOptions(p));
+  names = p->cfg->scene.bodies;
+  nb    = p->cfg->scene.nbodies;
+  p->exactHessian = (PetscBool)(p->cfg->hessian.type == HESSIAN_EXACT); /* auto starts with Gauss-Newton */
+  p->res.load     = (PetscReal)p->cfg->load.stages;                      /* the bodies are set up at the last stage's end */
+  PetscCall(ProblemScheduleSetUp(p));
+  p->nbodies = nb;
+  for (PetscInt i = 0; i < nb; ++i) {
+    PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
+    p->bodies[i]->axisym  = p->cfg->scene.axisymmetric;
+    p->bodies[i]->nstages = p->cfg->load.stages;
+  }
+  for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->cfg->scene.meshSize));
   PetscFunctionReturn(0);
 }
 
@@ -269,9 +219,9 @@ PetscErrorCode ProblemGenerateMeshes(Problem p)
   PetscFunctionBeginUser;
   PetscCall(ProblemDofLimit(p, limit, sizeof(limit)));
   /* every body's size checked before any is meshed */
-  left = p->opt.maxDofs;
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->opt.meshDir, &left, limit, PETSC_TRUE));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->opt.meshDir, NULL, limit, PETSC_FALSE));
+  left = p->cfg->scene.maxDofs;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->cfg->scene.meshDir, &left, limit, PETSC_TRUE));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyGenerateMesh(p->bodies[i], p->cfg->scene.meshDir, NULL, limit, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
@@ -283,14 +233,6 @@ PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
   p->terms[p->nterms++] = t;
   for (PetscInt i = 0; i < p->nbodies; ++i)
     if (t->couples[i]) p->bodies[i]->npairs++;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode ProblemSetPenaltyContinuation(Problem p, PetscInt stages, PetscReal start)
-{
-  PetscFunctionBeginUser;
-  if (!p->opt.penaltyStagesSet) p->sched.penaltyStages = stages;
-  if (!p->opt.penaltyStartSet) p->sched.penaltyStart = start;
   PetscFunctionReturn(0);
 }
 
@@ -323,7 +265,7 @@ PetscErrorCode ProblemSetNewtonContinuation(Problem p)
   PetscReal stiff;
 
   PetscFunctionBeginUser;
-  if (p->opt.penaltyStagesSet || p->opt.penaltyStartSet || p->sched.penaltyStages > 1) PetscFunctionReturn(0);
+  if (p->cfg->penalty.stagesSet || p->cfg->penalty.startSet || p->sched.penaltyStages > 1) PetscFunctionReturn(0);
   PetscCall(ProblemGetPenaltyStiffness(p, &stiff));
   if (!(stiff > NEWTON_STIFF_PENALTY)) PetscFunctionReturn(0);
   PetscCall(ProblemSetPenaltyContinuation(p, 2, NEWTON_FIRST_STAGE / stiff));
@@ -637,7 +579,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body in a contact of a loaded scene may be held by it (anchors.c) */
     Body b = p->bodies[i];
     for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
-    PetscCall(BodySetUp(b, p->opt.partitioner, p->opt.partitionView));
+    PetscCall(BodySetUp(b, p->cfg->partition.type, p->cfg->partition.view));
   }
   PetscCall(ProblemCheckDimensions(p));
   PetscCall(PetscLogStagePush(contactLog.setup));
@@ -831,10 +773,10 @@ static PetscErrorCode ProblemSelectHessian(Problem p, Tao tao)
   PetscBool          exact;
 
   PetscFunctionBeginUser;
-  if (p->opt.hessianType != HESSIAN_AUTO) PetscFunctionReturn(0);
+  if (p->cfg->hessian.type != HESSIAN_AUTO) PetscFunctionReturn(0);
   PetscCall(TaoGetSolutionStatus(tao, &its, &f, &gnorm, &cnorm, &step, &reason));
   if (p->hessianG0 < 0) p->hessianG0 = gnorm; /* the first Hessian of this TaoSolve */
-  exact = (PetscBool)(gnorm > 0 && gnorm < p->opt.hessianSwitch * p->hessianG0);
+  exact = (PetscBool)(gnorm > 0 && gnorm < p->cfg->hessian.switchRtol * p->hessianG0);
   if (exact != p->exactHessian) PetscCall(PetscInfo(tao, "contact Hessian: %s from iteration %" PetscInt_FMT " (||g|| = %g)\n", exact ? "exact" : "Gauss-Newton", its, (double)gnorm));
   p->exactHessian = exact;
   for (PetscInt t = 0; t < p->nterms; ++t)
@@ -858,7 +800,7 @@ PetscBool ProblemTangentVaries(Problem p)
 
 PetscBool ProblemTangentReassembled(Problem p)
 {
-  return (PetscBool)(ProblemTangentVaries(p) && !p->opt.tangentAtRest);
+  return (PetscBool)(ProblemTangentVaries(p) && !p->cfg->newton.tangentAtRest);
 }
 
 /* Newton without -tangent_at_rest: the stiffness at rest serves while two
@@ -871,7 +813,7 @@ PetscBool ProblemTangentReassembled(Problem p)
 
 PetscBool ProblemTangentChosen(Problem p)
 {
-  return (PetscBool)(ProblemTangentVaries(p) && !p->opt.tangentAtRestSet);
+  return (PetscBool)(ProblemTangentVaries(p) && !p->cfg->newton.tangentAtRestSet);
 }
 
 /* P = K + the terms' Hessians at X, in their current order (exact or
@@ -901,7 +843,7 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
       if (gnorm > TANGENT_SLOW * p->tangentG[(its - 2) % 3]) p->tangentSlow = PETSC_TRUE;
       p->tangentG[its % 3] = gnorm;
     }
-    p->tangentFull = (PetscBool)(p->tangentForce || p->tangentSlow || its >= p->opt.tangentIts);
+    p->tangentFull = (PetscBool)(p->tangentForce || p->tangentSlow || its >= p->cfg->newton.tangentIts);
     PetscCall(PetscInfo(NULL, "Hessian at iteration %" PetscInt_FMT ": %s\n", its, p->tangentFull ? "the tangent" : "the stiffness at rest"));
   }
   if (p->tangentFull) {
@@ -997,8 +939,8 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     p->res.bodyEnergy[i] = parts[i];
     PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
   }
-  if (converged && p->opt.forceRtol > 0 && p->res.contactForceNorm > 0 && p->res.gnorm > p->opt.forceRtol * p->res.contactForceNorm)
-    PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: the solve stopped with its gradient %.1e of the contacts' nodal forces, above -stop_force_rtol %g: the forces are about that far from converged\n", (double)(p->res.gnorm / p->res.contactForceNorm), (double)p->opt.forceRtol));
+  if (converged && p->cfg->stop.forceRtol > 0 && p->res.contactForceNorm > 0 && p->res.gnorm > p->cfg->stop.forceRtol * p->res.contactForceNorm)
+    PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: the solve stopped with its gradient %.1e of the contacts' nodal forces, above -stop_force_rtol %g: the forces are about that far from converged\n", (double)(p->res.gnorm / p->res.contactForceNorm), (double)p->cfg->stop.forceRtol));
   if (p->res.contactForceNorm > 0) PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e (%.1e of the contacts' nodal forces)\n", (double)p->res.energy, (double)p->res.gnorm, (double)(p->res.gnorm / p->res.contactForceNorm)));
   else PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a rigid body: its motion and the contact's force on it */
@@ -1006,7 +948,7 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
     if (!p->bodies[i]->rigid) continue;
     PetscReal        f[2], mo;
     BodyRigidContactForce(p->bodies[i], f, &mo);
-    if (p->opt.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)f[1]));
+    if (p->cfg->scene.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)f[1]));
     else PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", p->bodies[i]->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
   }
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
@@ -1067,7 +1009,7 @@ PetscErrorCode ProblemTaylorTest(Problem p)
   PetscCall(VecSetRandom(V, rnd));
   PetscCall(VecNorm(U, NORM_INFINITY, &umax));
   if (umax == 0.0) umax = 1e-3;
-  PetscCall(VecScale(V, p->opt.taylorScale * umax));
+  PetscCall(VecScale(V, p->cfg->taylor.scale * umax));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p));
   p->tangentForce = PETSC_TRUE; /* the Hessian's remainder is measured against the tangent */
   PetscCall(ProblemComputeHessian(p->tao, U, p->Htao, p->Htao, p));
@@ -1100,7 +1042,7 @@ PetscErrorCode ProblemTaylorTest(Problem p)
      larger steps: say what keeps it inside */
   roundE = (PetscBool)(p->res.taylorRemainders[0][n - 1] <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(f0));
   roundH = (PetscBool)(p->res.taylorRemainders[1][0] <= 1e-9);
-  if ((!roundE && PetscAbsReal(p->res.taylorRates[0] - 2.0) > 0.1) || (!roundH && PetscAbsReal(p->res.taylorRates[1] - 2.0) > 0.1)) PetscCall(PetscPrintf(p->comm, "  note: an order off 2 may be the direction's steps crossing a kink of the energy (a node entering the contact, or turning from stick to slip): a smaller -taylor_scale (now %g) keeps them inside\n", (double)p->opt.taylorScale));
+  if ((!roundE && PetscAbsReal(p->res.taylorRates[0] - 2.0) > 0.1) || (!roundH && PetscAbsReal(p->res.taylorRates[1] - 2.0) > 0.1)) PetscCall(PetscPrintf(p->comm, "  note: an order off 2 may be the direction's steps crossing a kink of the energy (a node entering the contact, or turning from stick to slip): a smaller -taylor_scale (now %g) keeps them inside\n", (double)p->cfg->taylor.scale));
   if (roundE) PetscCall(PetscPrintf(p->comm, "  note: the energy remainder is at round-off (%.1e against |E| = %.3e): its order is not measured\n", (double)p->res.taylorRemainders[0][n - 1], (double)f0));
   if (roundH) PetscCall(PetscPrintf(p->comm, "  note: the Hessian remainder is at round-off (at most %.1e of |H v|): the energy is quadratic along v, the Hessian exact; its order is not measured\n", (double)p->res.taylorRemainders[1][0]));
   PetscCall(ProblemComputeObjectiveGradient(p->tao, U, &f0, G0, p)); /* the bodies back at the answer: a rigid body's force is its last evaluation's */
@@ -1129,6 +1071,7 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(MatDestroy(&p->H));
   PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(SubdomainDestroy(&p->sub));
+  PetscCall(SolverConfigDestroy(&p->cfg));
   PetscCall(MatDestroy(&p->K));
   PetscCall(VecDestroy(&p->X0));
   PetscCall(VecDestroy(&p->X));

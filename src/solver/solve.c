@@ -88,14 +88,14 @@ PetscErrorCode ProblemSolve(Problem p, PetscBool *converged)
   PetscCall(TaoGetType(p->tao, &type));
   *converged = reason > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(PetscPrintf(p->comm, "TAO %s: %s after %" PetscInt_FMT " iterations, %" PetscInt_FMT " energy evaluations, %" PetscInt_FMT " Hessian evaluations", type, TaoConvergedReasons[reason], its, p->res.nEnergyEvals, p->res.nHessianEvals));
-  if (p->opt.iterative) {
+  if (p->cfg->newton.iterative) {
     PetscInt lits;
     PetscCall(TaoGetLinearSolveIterations(p->tao, &lits));
     PetscCall(PetscPrintf(p->comm, ", %" PetscInt_FMT " CG iterations", lits));
   }
   if (p->fc.n) PetscCall(PetscPrintf(p->comm, " (force control: %" PetscInt_FMT " solves)", p->res.controlSolves));
   else if (p->res.cutbacks > 0) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " stages; the load cut back %" PetscInt_FMT " time%s, the last converged load %g)", p->res.stagesDone, p->res.cutbacks, p->res.cutbacks > 1 ? "s" : "", (double)p->res.loadDone));
-  else if (p->opt.loadStages * p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->opt.loadStages * p->sched.loadSteps * p->sched.penaltyStages)); /* -load_stages: each load stage's -load_steps */
+  else if (p->cfg->load.stages * p->sched.loadSteps * p->sched.penaltyStages > 1) PetscCall(PetscPrintf(p->comm, " (%" PetscInt_FMT " of %" PetscInt_FMT " stages)", p->res.stagesDone, p->cfg->load.stages * p->sched.loadSteps * p->sched.penaltyStages)); /* -load_stages: each load stage's -load_steps */
   PetscCall(PetscPrintf(p->comm, "\n"));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);

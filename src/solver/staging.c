@@ -35,7 +35,7 @@ static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penal
 static PetscErrorCode ProblemGradientAtRest(Problem p, PetscReal *g0)
 {
   const PetscReal small = 1e-6;
-  const PetscInt  S     = p->opt.loadStages;
+  const PetscInt  S     = p->cfg->load.stages;
   PetscReal       f, g;
   Vec             X;
 
@@ -174,10 +174,10 @@ static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, Pet
     PetscCall(ProblemStateLag(p, &change));
     PetscCall(PetscInfo(p->tao, "fixed point %" PetscInt_FMT ": the lagged pressure changed by %g (%" PetscInt_FMT " iterations so far)\n", k, (double)change, *its));
     p->res.lagSolves++;
-    if (change <= p->opt.lagRtol) break;
-    if (k >= p->opt.lagMaxIt) {
+    if (change <= p->cfg->lag.rtol) break;
+    if (k >= p->cfg->lag.maxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "friction: the normal pressure still changes by %g of its largest after -contact_friction_lag_max_it %" PetscInt_FMT " solves of the increment", (double)change, p->opt.lagMaxIt));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "friction: the normal pressure still changes by %g of its largest after -contact_friction_lag_max_it %" PetscInt_FMT " solves of the increment", (double)change, p->cfg->lag.maxIt));
       break;
     }
     PetscCall(ProblemTaoSolve(p, &n, reason));
@@ -352,7 +352,7 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
   Vec       X = p->X;
 
   PetscFunctionBeginUser;
-  if (!p->opt.loadPath) PetscFunctionReturn(0);
+  if (!p->cfg->load.path) PetscFunctionReturn(0);
   for (PetscInt i = 0; i < p->nbodies; ++i) ngroups += p->bodies[i]->nbc;
   if (atRest) lp->n = 0;
   PetscCall(LoadPathReserve(lp, ngroups));
@@ -392,7 +392,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
   PetscCall(ProblemStateBegin(p));
   for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
     const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
-    const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->opt.loadPath || ProblemHasState(p)) && s == sc->penaltyStages); /* stops at the final tolerance (every load where a term keeps its state from it) */
+    const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->cfg->load.path || ProblemHasState(p)) && s == sc->penaltyStages); /* stops at the final tolerance (every load where a term keeps its state from it) */
     const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
@@ -405,7 +405,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
       g0 = gd;
     }
     if (tight) PetscCall(TaoSetTolerances(p->tao, PetscMax(tol[0], tol[2] * g0), tol[1], 0.0));
-    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->opt.stageRtol));
+    else PetscCall(TaoSetTolerances(p->tao, tol[0], tol[1], p->cfg->stop.stageRtol));
     PetscCall(ProblemForceStopSetActive(p, tight));
     if (s > 1 && s == sc->penaltyStages && p->res.loadDone == 0.0 && !p->X0 && ProblemHasState(p)) { /* from rest: the lag at the softer stage's answer (friction.c) */
       PetscReal change;
@@ -437,7 +437,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
    load is recorded). */
 static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedReason *reason)
 {
-  const PetscReal S = (PetscReal)p->opt.loadStages;
+  const PetscReal S = (PetscReal)p->cfg->load.stages;
   PetscReal       tol[3], g0 = -1.0, step = 1.0 / p->sched.loadSteps;
   PetscBool       cut;
   Vec             Xs;
@@ -464,7 +464,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
     PetscCall(ProblemStageSolve(p, p->X0 ? S : 0.0, S, 1.0, PETSC_TRUE, its, reason));
     p->res.stagesDone = 1;
     PetscCall(ProblemCutbackApplies(p, *reason, &cut));
-    cut = (PetscBool)(cut && p->opt.maxCutbacks > 0);
+    cut = (PetscBool)(cut && p->cfg->load.cutbacks > 0);
     if (!cut) {
       if (*reason > 0) PetscCall(ProblemStateAccept(p, S));
       if (*reason > 0) p->res.loadDone = S;
@@ -495,7 +495,7 @@ static PetscErrorCode ProblemSolveStages(Problem p, PetscInt *its, TaoConvergedR
       continue;
     }
     PetscCall(ProblemCutbackApplies(p, *reason, &cut));
-    if (!cut || p->res.cutbacks >= p->opt.maxCutbacks) break;
+    if (!cut || p->res.cutbacks >= p->cfg->load.cutbacks) break;
     PetscCall(PetscInfo(p->tao, "load %g stopped (%s): back to load %g, step %g\n", (double)load, TaoConvergedReasons[*reason], (double)p->res.loadDone, (double)(0.5 * step)));
     p->res.cutbacks++;
     step *= 0.5;
