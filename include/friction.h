@@ -1,4 +1,5 @@
 #pragma once
+#include "configtypes.h"
 #include "contactterm.h"
 
 /* Coulomb friction on a mortar pair's slave surface (friction.c; derivation
@@ -75,11 +76,5 @@ PetscErrorCode FrictionShearForce(Friction, PetscReal F[2]);
 PetscErrorCode FrictionCountStuck(Friction, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded);
 /* The same, and the largest trial slip |e_j| of the nodes that carry a bound. */
 PetscErrorCode FrictionSlipState(Friction, const ContactSurface S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded, PetscReal *slip);
-/* Friction's fixed point on the normal pressure within each load increment
-   (staging.c runs it): -contact_friction_lag_rtol, -contact_friction_lag_max_it
-   ("Friction lag options"; the problem's configuration, config.h). */
-typedef struct {
-  PetscReal rtol;  /* a term's lagged quantity (friction's pressure) is converged when its largest change is below this, relative */
-  PetscInt  maxIt; /* the most solves of one increment's fixed point */
-} FrictionLagOptions;
+/* -contact_friction_lag_* ("Friction lag options"; FrictionLagOptions: configtypes.h). */
 PetscErrorCode FrictionLagOptionsSetFromOptions(MPI_Comm, FrictionLagOptions *);

@@ -9,9 +9,11 @@
    config.h, and the bodies' options, and nothing else), GenerateMeshes (each body's mesh, sizes
    checked first), AddTerm (the contact terms, created by the caller), SetUp,
    Solve (solve.c), PostProcess, View, Destroy. */
-PetscErrorCode ProblemCreate(MPI_Comm, Problem *);
-/* Collective: the configuration (SolverConfigSetFromOptions, config.h), the
-   schedule it gives, and the bodies it names with their options. */
+/* cfg: the configuration, read (config.h); the problem borrows it, and its
+   creator destroys it after the problem (run.c). */
+PetscErrorCode ProblemCreate(MPI_Comm, SolverConfig cfg, Problem *);
+/* Collective: the schedule the configuration gives, and the bodies it names
+   with their options. */
 PetscErrorCode ProblemSetFromOptions(Problem);
 /* The options of this file's concerns, each with its defaults and checks
    (config.h): -scene, -bodies, -axisymmetric and the meshing's ("Contact

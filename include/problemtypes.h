@@ -8,7 +8,7 @@
 #include "energyterm.h"
 #include "subdomain.h"
 #include "unheld.h"
-#include "config.h"
+#include "configtypes.h"
 
 #define CONTACT_MAX_TERMS    16
 

@@ -2,7 +2,8 @@
 /* The driver (src/driver): the one pipeline of a run over a Problem, which
    main() runs once and -accuracy runs in a loop (accuracy.c):
 
-     RunCreateProblem   the scene's options read, its contact terms created
+     RunCreateProblem   the scene's options read (the configuration, config.h,
+                        then the problem's), its contact terms created
      RunMesh            each body meshed (a size field per body, or none)
      RunSetUp           meshes read and distributed, the stiffness assembled
      RunSolve           TAO, from rest or from a given first iterate
@@ -58,6 +59,8 @@ typedef struct {
    the scene by default). */
 PetscErrorCode RunOptionsSetFromOptions(MPI_Comm, const char scene[], RunOptions *);
 PetscErrorCode RunCreateProblem(MPI_Comm, Problem *);
+/* The problem and the configuration it borrows. */
+PetscErrorCode RunDestroyProblem(Problem *);
 /* fields: each body's size field, or NULL (none). */
 PetscErrorCode RunMesh(Problem, char fields[][PETSC_MAX_PATH_LEN]);
 PetscErrorCode RunSetUp(Problem, RunRecord *);

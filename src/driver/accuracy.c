@@ -570,7 +570,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
     PetscCall(AccuracyProfilesGet(cur, &pc));
     st->iterations = cur->res.iterations;
     PetscCall(AccuracyStepEstimate(acc, k, &pp, &pc, st));
-    PetscCall(ProblemDestroy(&prev));
+    PetscCall(RunDestroyProblem(&prev));
     PetscCall(AccuracyProfilesDestroy(&pp));
     pp   = pc;
     prev = cur;
@@ -579,7 +579,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
     if (AccuracyStepLast(acc, k, steps, prev->cfg->scene.maxDofs, &reached, stop, sizeof(stop))) break;
     PetscCall(AccuracyRefine(acc, prev, k + 1, fields));
   }
-  PetscCall(ProblemDestroy(&cur)); /* a step that did not converge: the answer is the last one that did */
+  PetscCall(RunDestroyProblem(&cur)); /* a step that did not converge: the answer is the last one that did */
   if (prev) {
     rec->accuracyTarget = acc->tol;
     rec->errorEstimate  = steps[last].est[ACCURACY_ESTIMATE];
@@ -596,7 +596,7 @@ PetscErrorCode AccuracySolve(Accuracy acc, Problem *first, RunRecord *rec)
     ContactOutputDiscard();
     rec->status = 2;
   }
-  PetscCall(ProblemDestroy(&prev));
+  PetscCall(RunDestroyProblem(&prev));
   PetscCall(AccuracyProfilesDestroy(&pp));
   PetscCall(PetscFree(fields));
   PetscCall(PetscFree(steps));

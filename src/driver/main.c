@@ -134,7 +134,7 @@ static PetscErrorCode Run(int *status)
       PetscCall(RunFinish(problem, &rec));
     }
   }
-  PetscCall(ProblemDestroy(&problem));
+  PetscCall(RunDestroyProblem(&problem));
   PetscCall(AccuracyDestroy(&acc));
   *status = rec.status;
   PetscFunctionReturn(0);

@@ -2,6 +2,7 @@
    step, with the progress phase it announces and the time slot it fills. */
 #include "run.h"
 #include "contactpair.h"
+#include "config.h"
 #include "options.h"
 #include "outputset.h"
 #include "progress.h"
@@ -35,13 +36,16 @@ PetscErrorCode RunOptionsSetFromOptions(MPI_Comm comm, const char scene[], RunOp
    and the contact terms created and handed to the problem. */
 PetscErrorCode RunCreateProblem(MPI_Comm comm, Problem *problem)
 {
-  Problem    p;
-  EnergyTerm terms[CONTACT_MAX_TERMS];
-  PetscInt   nterms;
-  PetscBool  autoPenalty;
+  Problem      p;
+  SolverConfig cfg;
+  EnergyTerm   terms[CONTACT_MAX_TERMS];
+  PetscInt     nterms;
+  PetscBool    autoPenalty;
 
   PetscFunctionBeginUser;
-  PetscCall(ProblemCreate(comm, &p));
+  PetscCall(SolverConfigCreate(comm, &cfg));
+  PetscCall(SolverConfigSetFromOptions(cfg));
+  PetscCall(ProblemCreate(comm, cfg, &p));
   PetscCall(ProblemSetFromOptions(p));
   PetscCall(ContactPairsCreateFromOptions(comm, p->nbodies, p->bodies, CONTACT_MAX_TERMS, &nterms, terms, &autoPenalty));
   for (PetscInt t = 0; t < nterms; ++t) PetscCall(ProblemAddTerm(p, terms[t]));
@@ -50,6 +54,18 @@ PetscErrorCode RunCreateProblem(MPI_Comm comm, Problem *problem)
      (docs/formulations.md, "The penalty") */
   if (autoPenalty) PetscCall(ProblemSetPenaltyContinuation(p, 2, 0.03));
   *problem = p;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunDestroyProblem(Problem *problem)
+{
+  SolverConfig cfg;
+
+  PetscFunctionBeginUser;
+  if (!*problem) PetscFunctionReturn(0);
+  cfg = (*problem)->cfg;
+  PetscCall(ProblemDestroy(problem));
+  PetscCall(SolverConfigDestroy(&cfg));
   PetscFunctionReturn(0);
 }
 

@@ -44,6 +44,7 @@
    The JSON's `force_residual` is ||g|| / ||f_c|| at the solution. */
 #include "forcestop.h"
 #include "problem.h"
+#include "options.h"
 
 #define FORCESTOP_STALL 10
 

@@ -179,6 +179,8 @@
 #include "forceborder.h"
 #include "schedule.h"
 
+const char *const H0Types[]      = {"none", "elastic", "contact", "H0Type", "H0_", NULL};
+
 #define LMVM_STIFF_PENALTY   1e4   /* k_p h / E* above which the last stage stops by the decrement (10 times the automatic penalty's) */
 #define LMVM_DECREMENT_RTOL  1e-13 /* -lmvm_decrement_rtol there */
 #define LMVM_START_STIFFNESS 1.0   /* the continuation's first stage no stiffer than this k_p h / E* */

@@ -13,6 +13,8 @@
 #include "forceborder.h"
 #include "tangentswitch.h"
 
+const char *const SchurTypes[]   = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
+
 /* MUMPS's factorisation works in an array sized at the analysis, from the
    pattern alone, plus ICNTL(14) per cent (20 by default). An indefinite
    Hessian (a neohookean body's tangent with the exact contact Hessian)

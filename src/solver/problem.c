@@ -15,7 +15,9 @@
 #include "forcecontrol.h"
 #include "schedule.h"
 
-PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
+const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
+
+PetscErrorCode ProblemCreate(MPI_Comm comm, SolverConfig cfg, Problem *problem)
 {
   Problem p;
 
@@ -23,7 +25,7 @@ PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
   PetscCall(PetscNew(&p));
   p->comm     = comm;
   p->res.load = 1.0;
-  PetscCall(SolverConfigCreate(comm, &p->cfg));
+  p->cfg      = cfg;
   *problem = p;
   PetscFunctionReturn(0);
 }
@@ -194,7 +196,6 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   PetscInt nb;
 
   PetscFunctionBeginUser;
-  PetscCall(SolverConfigSetFromOptions(p->cfg));
   PetscCall(ProblemCheckSolverOptions(p));
   names = p->cfg->scene.bodies;
   nb    = p->cfg->scene.nbodies;
@@ -1071,7 +1072,6 @@ PetscErrorCode ProblemDestroy(Problem *problem)
   PetscCall(MatDestroy(&p->H));
   PetscCall(ISDestroy(&p->surfaceDofs));
   PetscCall(SubdomainDestroy(&p->sub));
-  PetscCall(SolverConfigDestroy(&p->cfg));
   PetscCall(MatDestroy(&p->K));
   PetscCall(VecDestroy(&p->X0));
   PetscCall(VecDestroy(&p->X));

@@ -17,17 +17,20 @@
 
    and -config_view here, which prints them all as read. A bad value stops
    the run in its concern's reader, before anything is meshed. The names the
-   enumerations choose among are here too, beside their types (config.h). */
+   enumerations choose among are defined by their readers (lmvm.c,
+   newtonstep.c, problem.c). The driver creates and reads the configuration
+   before the problem, which borrows it (run.c): nothing below reads it back
+   up here. */
+#include "config.h"
 #include "problem.h"
 #include "lmvm.h"
 #include "newtonstep.h"
 #include "schedule.h"
 #include "forcestop.h"
 #include "forcecontrol.h"
+#include "friction.h"
+#include "partition.h"
 
-const char *const H0Types[]      = {"none", "elastic", "contact", "H0Type", "H0_", NULL};
-const char *const SchurTypes[]   = {"substructure", "mumps", "SchurType", "SCHUR_", NULL};
-const char *const HessianTypes[] = {"gauss_newton", "exact", "auto", "HessianType", "HESSIAN_", NULL};
 
 PetscErrorCode SolverConfigCreate(MPI_Comm comm, SolverConfig *config)
 {
