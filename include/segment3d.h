@@ -19,6 +19,7 @@ typedef struct {
 } Segment3dPoint;
 
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
+#define SEGMENT3D_EDGE_MARGIN 0.0   /* a closest point this far inside the piece's master face is its (no other face tried) */
 
 PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);

@@ -43,7 +43,11 @@
    Newton with K_ab = t_a . t_b + (x - p) . x_ab (Gauss-Newton's t_a . t_b
    where K is not positive definite), steps capped at 1/2 in xi. The point
    is on the face where eta* lies in the reference domain (Face3dContains,
-   a tolerance in xi): the in/out test.
+   a tolerance in xi): the in/out test. Else the closest point of the face
+   is on its boundary (Face3dClosestPointOnFace: each edge's quadratic curve
+   by Newton, clamped at the corners): behind a convex edge between two
+   faces (a fan of normals, as at a corner node in 2D), or past the end of
+   the master surface; segment3d.c tells the two apart.
 
    Box. The convex hull of a quadratic Bezier patch's control points holds
    the patch (its Bernstein basis is positive and sums to 1). A Lagrange
@@ -197,7 +201,8 @@ void Face3dWeights(Face3dType t, const PetscReal A[], const PetscReal xi[2], Pet
 }
 
 /* Newton on r_a = (x(eta) - p) . t_a = 0 from eta (updated); returns whether
-   it converged (|step| < 1e-14 in xi within 50 steps). */
+   it converged (a step below 1e-12 in xi, taken, within 50 steps: Newton
+   then leaves an error of the order of its square, round-off). */
 PetscBool Face3dClosestPoint(Face3dType t, const PetscReal x[], const PetscReal p[3], PetscReal eta[2], PetscInt *its)
 {
   for (PetscInt it = 0; it < 50; ++it) {
@@ -231,9 +236,75 @@ PetscBool Face3dClosestPoint(Face3dType t, const PetscReal x[], const PetscReal 
     eta[0] += s[0];
     eta[1] += s[1];
     if (its) *its = it + 1;
-    if (len < 1e-14) return PETSC_TRUE;
+    if (len < 1e-12) return PETSC_TRUE;
   }
   return PETSC_FALSE;
+}
+
+/* The closest point on the face's boundary: each edge a quadratic curve
+   x(s) = L_-(s) x_a + L_0(s) x_e + L_+(s) x_b, s in [-1, 1], by Newton on
+   (x(s) - p) . x'(s) = 0 (Gauss-Newton where x' . x' + (x - p) . x'' is not
+   positive), clamped to the ends (the corners); the nearest of the edges.
+   eta is the point's face parameters (the edges are straight in xi). */
+static void Face3dClosestBoundaryPoint(Face3dType t, const PetscReal x[], const PetscReal p[3], PetscReal eta[2])
+{
+  static const PetscInt tri[3][3] = {{0, 3, 1}, {1, 4, 2}, {2, 5, 0}}, quad[4][3] = {{0, 4, 1}, {1, 5, 2}, {2, 6, 3}, {3, 7, 0}};
+  const PetscInt        ne = t == FACE3D_TRI6 ? 3 : 4;
+  PetscReal             best = PETSC_MAX_REAL;
+
+  for (PetscInt e = 0; e < ne; ++e) {
+    const PetscInt *v = t == FACE3D_TRI6 ? tri[e] : quad[e];
+    PetscReal       s = 0.0, X[3], d2 = 0.0, xa[2], xb[2];
+    for (PetscInt it = 0; it < 50; ++it) {
+      const PetscReal L[3] = {0.5 * s * (s - 1), 1 - s * s, 0.5 * s * (s + 1)}, dL[3] = {s - 0.5, -2 * s, s + 0.5}, d2L[3] = {1, -2, 1};
+      PetscReal       r = 0, K = 0, F = 0, step;
+      for (PetscInt d = 0; d < 3; ++d) {
+        const PetscReal xd  = L[0] * x[3 * v[0] + d] + L[1] * x[3 * v[1] + d] + L[2] * x[3 * v[2] + d];
+        const PetscReal td  = dL[0] * x[3 * v[0] + d] + dL[1] * x[3 * v[1] + d] + dL[2] * x[3 * v[2] + d];
+        const PetscReal t2d = d2L[0] * x[3 * v[0] + d] + d2L[1] * x[3 * v[1] + d] + d2L[2] * x[3 * v[2] + d];
+        r += (xd - p[d]) * td;
+        K += td * td;
+        F += (xd - p[d]) * t2d;
+      }
+      if (K + F > 0) K += F;
+      if (!(K > 0)) break;
+      step = -r / K;
+      step = PetscMax(-0.5, PetscMin(0.5, step));
+      s    = PetscMax(-1.0, PetscMin(1.0, s + step));
+      if (PetscAbsReal(step) < 1e-12) break;
+    }
+    {
+      const PetscReal L[3] = {0.5 * s * (s - 1), 1 - s * s, 0.5 * s * (s + 1)};
+      for (PetscInt d = 0; d < 3; ++d) {
+        X[d] = L[0] * x[3 * v[0] + d] + L[1] * x[3 * v[1] + d] + L[2] * x[3 * v[2] + d];
+        d2 += (X[d] - p[d]) * (X[d] - p[d]);
+      }
+    }
+    if (d2 < best) {
+      best = d2;
+      Face3dNodeXi(t, v[0], xa);
+      Face3dNodeXi(t, v[2], xb);
+      eta[0] = 0.5 * (1 - s) * xa[0] + 0.5 * (1 + s) * xb[0];
+      eta[1] = 0.5 * (1 - s) * xa[1] + 0.5 * (1 + s) * xb[1];
+    }
+  }
+}
+
+/* The closest point of the face itself (its reference domain) to p: that of
+   the polynomial surface where it lies in the domain (within tol), else the
+   nearest point of its boundary (*clamped). */
+void Face3dClosestPointOnFace(Face3dType t, const PetscReal x[], const PetscReal p[3], PetscReal tol, PetscReal eta[2], PetscBool *clamped)
+{
+  PetscReal e[2] = {eta[0], eta[1]};
+
+  if (Face3dClosestPoint(t, x, p, e, NULL) && Face3dContains(t, e, tol)) {
+    eta[0]   = e[0];
+    eta[1]   = e[1];
+    *clamped = PETSC_FALSE;
+    return;
+  }
+  Face3dClosestBoundaryPoint(t, x, p, eta);
+  *clamped = PETSC_TRUE;
 }
 
 /* The box (lo[3], hi[3]) of the face's Bezier control points. */

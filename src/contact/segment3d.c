@@ -34,8 +34,12 @@
    the master face whose closest point lies in its reference domain (within
    SEGMENT3D_IN_TOL): that of the piece, else another of the faces given
    (on a curved master the flat sub-triangles' footprint and the closest
-   point's differ near a face's edge), else none: the point lies beyond the
-   master's edge and is dropped (S' ends there).
+   point's differ near a face's edge), else the face whose closest point
+   on its boundary is nearest, if another face shares that point (behind a
+   convex edge between two faces, the fan of normals where, as at a 2D
+   corner, g is the signed distance to the edge's point and n the unit
+   vector from it: g stays continuous), else none: the point lies beyond
+   the master surface's end and is dropped (S' ends there).
 
    First derivatives (Segment3dEvaluate), the points fixed in the slave's
    xi (the segments are not differentiated: the exact integral of an
@@ -52,7 +56,9 @@
      K_ab = t_a . t_b + d . x_ab,
      dr_a/dx_i = -N_i t_a (slave node i),
      dr_a/dx_k = M_k t_a + d M_k,a (master node k),
-   deta = -K^-1 dr/dx dx. */
+   deta = -K^-1 dr/dx dx. Behind an edge (the fan) x_m moves along the
+   edge, orthogonal to x_s - x_m = g n, so dg has the same form with that
+   n; Segment3dProjectionDerivative is the interior's. */
 #include "segment3d.h"
 #include "clip.h"
 
@@ -108,26 +114,59 @@ static void SubPlaneSetUp(const Face3d *f, const PetscInt v[3], SubPlane *P)
   P->xiArea = ClipSignedArea(3, P->xi);
 }
 
-/* The face among the nm given whose closest point to p lies on it: face
-   m0 first from eta (updated), then the others from their centres; -1 if
-   none. */
+/* The master face that owns the point p: face m0 (from eta) where p's
+   closest point lies inside it (inside a concave edge between two faces,
+   where a point has a closest point in each, the piece's face is kept, not
+   the nearer: not measured yet; 2D cuts at the tie); else the face whose own closest point
+   (Face3dClosestPointOnFace) is the nearest, if that point is inside it or
+   on an edge another face shares (the same point of another face: a fan
+   behind a convex edge); -1 where it is on an edge no other face reaches
+   (past the master surface's end). eta is updated. */
 static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], PetscInt m0, const PetscReal p[3], PetscReal eta[2])
 {
-  PetscReal e[2] = {eta[0], eta[1]};
+  PetscReal e[2] = {eta[0], eta[1]}, best = PETSC_MAX_REAL, X[3], Xb[3], be[2] = {0, 0}, size;
+  PetscBool clamped, bclamped = PETSC_FALSE;
+  PetscInt  owner = -1;
 
-  if (Face3dClosestPoint(master[m0].type, master[m0].x, p, e, NULL) && Face3dContains(master[m0].type, e, SEGMENT3D_IN_TOL)) {
+  Face3dClosestPointOnFace(master[m0].type, master[m0].x, p, SEGMENT3D_IN_TOL, e, &clamped);
+  if (!clamped) {
     eta[0] = e[0];
     eta[1] = e[1];
     return m0;
   }
   for (PetscInt m = 0; m < nm; ++m) {
-    if (m == m0) continue;
-    e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
-    if (Face3dClosestPoint(master[m].type, master[m].x, p, e, NULL) && Face3dContains(master[m].type, e, SEGMENT3D_IN_TOL)) {
-      eta[0] = e[0];
-      eta[1] = e[1];
-      return m;
+    PetscReal d2 = 0.0;
+    if (m == m0) {
+      e[0] = eta[0];
+      e[1] = eta[1];
+    } else e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
+    Face3dClosestPointOnFace(master[m].type, master[m].x, p, SEGMENT3D_IN_TOL, e, &clamped);
+    Face3dEval(master[m].type, master[m].x, e, X, NULL, NULL);
+    for (PetscInt d = 0; d < 3; ++d) d2 += (X[d] - p[d]) * (X[d] - p[d]);
+    if (d2 < best) {
+      best     = d2;
+      owner    = m;
+      bclamped = clamped;
+      be[0]    = e[0];
+      be[1]    = e[1];
+      for (PetscInt d = 0; d < 3; ++d) Xb[d] = X[d];
     }
+  }
+  if (owner < 0) return -1;
+  eta[0] = be[0];
+  eta[1] = be[1];
+  if (!bclamped) return owner;
+  size = 0.0; /* the owner's first edge's length: the scale of "the same point" */
+  for (PetscInt d = 0; d < 3; ++d) size += PetscSqr(master[owner].x[3 + d] - master[owner].x[d]);
+  size = PetscSqrtReal(size);
+  for (PetscInt m = 0; m < nm; ++m) {
+    PetscReal d2 = 0.0;
+    if (m == owner) continue;
+    e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
+    Face3dClosestPointOnFace(master[m].type, master[m].x, Xb, SEGMENT3D_IN_TOL, e, &clamped);
+    Face3dEval(master[m].type, master[m].x, e, X, NULL, NULL);
+    for (PetscInt d = 0; d < 3; ++d) d2 += (X[d] - Xb[d]) * (X[d] - Xb[d]);
+    if (PetscSqrtReal(d2) <= 1e-8 * size) return owner;
   }
   return -1;
 }
@@ -252,16 +291,23 @@ PetscErrorCode Segment3dEvaluate(const Face3d *Xref, const PetscReal xs[], const
     Segment3dPoint *pt = &pts[q];
     const Face3d   *M  = &master[pt->m];
     PetscReal       N[FACE3D_MAX_NODES], Nm[FACE3D_MAX_NODES], W[FACE3D_MAX_NODES], X[3], T[6], n[3], x[3], xm[3], dS, g;
+    PetscBool       clamped;
     Face3dEval(Xref->type, Xref->x, pt->xi, X, T, NULL);
     dS = Face3dNormal(T, n) * pt->w;
     Face3dShape(Xref->type, pt->xi, N, NULL, NULL);
     Face3dWeights(Xref->type, Adual, pt->xi, W);
     Face3dEval(Xref->type, xs, pt->xi, x, NULL, NULL);
-    PetscCheck(Face3dClosestPoint(M->type, M->x, x, pt->eta, NULL), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "closest point of slave point (%g, %g, %g) on master face %" PetscInt_FMT ": Newton did not converge", (double)x[0], (double)x[1], (double)x[2], pt->m);
+    Face3dClosestPointOnFace(M->type, M->x, x, SEGMENT3D_IN_TOL, pt->eta, &clamped);
     Face3dEval(M->type, M->x, pt->eta, xm, T, NULL);
     Face3dNormal(T, n);
     Face3dShape(M->type, pt->eta, Nm, NULL, NULL);
     g = (x[0] - xm[0]) * n[0] + (x[1] - xm[1]) * n[1] + (x[2] - xm[2]) * n[2];
+    if (clamped) { /* behind an edge: g the signed distance to the edge's point, n along it */
+      const PetscReal dist = PetscSqrtReal(PetscSqr(x[0] - xm[0]) + PetscSqr(x[1] - xm[1]) + PetscSqr(x[2] - xm[2]));
+      PetscCheck(dist > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "slave point (%g, %g, %g) on the edge of master face %" PetscInt_FMT ": no normal", (double)x[0], (double)x[1], (double)x[2], pt->m);
+      g = g < 0 ? -dist : dist;
+      for (PetscInt d = 0; d < 3; ++d) n[d] = (x[d] - xm[d]) / g;
+    }
     for (PetscInt j = 0; j < ns; ++j) {
       const PetscReal wj = W[j] * dS;
       A[j] += wj;
