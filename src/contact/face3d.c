@@ -23,7 +23,7 @@
    still a partition of unity (each N_e gives alpha to two corners and keeps
    1 - 2 alpha); on a flat face of area A, int Nt_c dS = 2 alpha A/3 and
    int Nt_e dS = (1 - 2 alpha) A/3: positive for 0 < alpha < 1/2. alpha =
-   1/5 (FACE3D_TRI6_ALPHA) gives the corners A/15 and the mid-edge nodes
+   1/5 (FACE3D_TRI6_ALPHA) gives the corners 2A/15 and the mid-edge nodes
    A/5. A Quad9's corner functions integrate positive (A/36 on a
    parallelogram, mid-edge A/9, centre 4A/9): Nt = N.
    The weights are the dual basis of Nt, biorthogonal over the face:
