@@ -47,6 +47,17 @@ static PetscErrorCode MeshDestroy(Mesh *m)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MeshAlloc(Face3dType t, PetscInt nf, PetscInt nv, Mesh *m)
+{
+  PetscFunctionBeginUser;
+  m->type = t;
+  m->nf   = nf;
+  m->nv   = nv;
+  PetscCall(PetscMalloc1(Face3dNodes(t) * nf, &m->conn));
+  PetscCall(PetscMalloc1(3 * nv, &m->x));
+  PetscFunctionReturn(0);
+}
+
 static void FaceCoords(const Mesh *m, PetscInt f, PetscReal *xf)
 {
   const PetscInt n = Face3dNodes(m->type);
@@ -62,11 +73,7 @@ static PetscErrorCode MeshFlatTri6(PetscInt nx, Mesh *m)
   const PetscReal h = 1.0 / nx;
 
   PetscFunctionBeginUser;
-  m->type = FACE3D_TRI6;
-  m->nf   = 2 * nx * nx;
-  m->nv   = G * G;
-  PetscCall(PetscMalloc1(6 * m->nf, &m->conn));
-  PetscCall(PetscMalloc1(3 * m->nv, &m->x));
+  PetscCall(MeshAlloc(FACE3D_TRI6, 2 * nx * nx, G * G, m));
   for (PetscInt j = 0; j < G; j += 2)
     for (PetscInt i = 0; i < G; i += 2) {
       const PetscBool in = (PetscBool)(i > 0 && j > 0 && i < G - 1 && j < G - 1);
@@ -115,11 +122,7 @@ static PetscErrorCode MeshFlatQuad9(PetscInt mx, PetscInt my, PetscReal x0, Pets
   const PetscReal hx = (x1 - x0) / mx, hy = (y1 - y0) / my;
 
   PetscFunctionBeginUser;
-  m->type = FACE3D_QUAD9;
-  m->nf   = mx * my;
-  m->nv   = Gx * Gy;
-  PetscCall(PetscMalloc1(9 * m->nf, &m->conn));
-  PetscCall(PetscMalloc1(3 * m->nv, &m->x));
+  PetscCall(MeshAlloc(FACE3D_QUAD9, mx * my, Gx * Gy, m));
   for (PetscInt j = 0; j < Gy; j += 2)
     for (PetscInt i = 0; i < Gx; i += 2) {
       const PetscBool in = (PetscBool)(i > 0 && j > 0 && i < Gx - 1 && j < Gy - 1);
@@ -239,32 +242,18 @@ static PetscErrorCode MeshSphereTri6(PetscInt n, PetscReal R, Mesh *m)
   PetscInt nv = 0;
 
   PetscFunctionBeginUser;
-  m->type = FACE3D_TRI6;
-  m->nf   = 8 * n * n;
-  m->nv   = 6 * m->nf;
-  PetscCall(PetscMalloc1(6 * m->nf, &m->conn));
-  PetscCall(PetscMalloc1(3 * m->nv, &m->x));
+  PetscCall(MeshAlloc(FACE3D_TRI6, 8 * n * n, 48 * n * n, m));
   for (PetscInt o = 0, f = 0; o < 8; ++o) {
     const PetscReal A[3] = {o & 1 ? -1.0 : 1.0, 0, 0}, B[3] = {0, o & 2 ? -1.0 : 1.0, 0}, C[3] = {0, 0, o & 4 ? -1.0 : 1.0};
     for (PetscInt j = 0; j < n; ++j)
       for (PetscInt i = 0; i + j < n; ++i)
         for (PetscInt up = 0; up < 2; ++up) {
-          PetscReal b[6][2];
+          static const PetscReal corner[2][3][2] = {{{0, 0}, {1, 0}, {0, 1}}, {{1, 0}, {1, 1}, {0, 1}}}; /* the triangles below and above the diagonal */
+          PetscReal              b[6][2];
           if (up && i + j + 1 >= n) continue;
-          if (!up) {
-            const PetscReal c0[2] = {(PetscReal)i, (PetscReal)j}, c1[2] = {i + 1.0, (PetscReal)j}, c2[2] = {(PetscReal)i, j + 1.0};
-            for (PetscInt d = 0; d < 2; ++d) {
-              b[0][d] = c0[d];
-              b[1][d] = c1[d];
-              b[2][d] = c2[d];
-            }
-          } else {
-            const PetscReal c0[2] = {i + 1.0, (PetscReal)j}, c1[2] = {i + 1.0, j + 1.0}, c2[2] = {(PetscReal)i, j + 1.0};
-            for (PetscInt d = 0; d < 2; ++d) {
-              b[0][d] = c0[d];
-              b[1][d] = c1[d];
-              b[2][d] = c2[d];
-            }
+          for (PetscInt k = 0; k < 3; ++k) {
+            b[k][0] = i + corner[up][k][0];
+            b[k][1] = j + corner[up][k][1];
           }
           for (PetscInt d = 0; d < 2; ++d) {
             b[3][d] = 0.5 * (b[0][d] + b[1][d]);
@@ -294,11 +283,7 @@ static PetscErrorCode MeshSphereQuad9(PetscInt n, PetscReal R, Mesh *m)
   PetscInt nv = 0;
 
   PetscFunctionBeginUser;
-  m->type = FACE3D_QUAD9;
-  m->nf   = 6 * n * n;
-  m->nv   = 9 * m->nf;
-  PetscCall(PetscMalloc1(9 * m->nf, &m->conn));
-  PetscCall(PetscMalloc1(3 * m->nv, &m->x));
+  PetscCall(MeshAlloc(FACE3D_QUAD9, 6 * n * n, 54 * n * n, m));
   for (PetscInt c = 0, f = 0; c < 6; ++c)
     for (PetscInt j = 0; j < n; ++j)
       for (PetscInt i = 0; i < n; ++i, ++f) {
@@ -436,23 +421,17 @@ static PetscErrorCode CheckBases(const Face3dRule *trule, const Face3dRule *qrul
   PetscReal xf[27];
 
   PetscFunctionBeginUser;
-  /* flat: affine images of the reference faces (Tri6) and a parallelogram with moved mid-edge nodes in its plane (Quad9) */
-  for (PetscInt i = 0; i < 6; ++i) {
-    PetscReal xi[2];
-    Face3dNodeXi(FACE3D_TRI6, i, xi);
-    xf[3 * i]     = 0.3 + 1.1 * xi[0] + 0.4 * xi[1];
-    xf[3 * i + 1] = -0.2 + 0.2 * xi[0] + 0.9 * xi[1];
-    xf[3 * i + 2] = 0.5 + 0.3 * xi[0] - 0.6 * xi[1];
+  for (PetscInt t = 0; t < 2; ++t) { /* flat: affine images of the reference faces (a Quad9's a parallelogram) */
+    const Face3dType ty = t ? FACE3D_QUAD9 : FACE3D_TRI6;
+    for (PetscInt i = 0; i < Face3dNodes(ty); ++i) {
+      PetscReal xi[2];
+      Face3dNodeXi(ty, i, xi);
+      xf[3 * i]     = 0.3 + 1.1 * xi[0] + 0.4 * xi[1];
+      xf[3 * i + 1] = -0.2 + 0.2 * xi[0] + 0.9 * xi[1];
+      xf[3 * i + 2] = 0.5 + 0.3 * xi[0] - 0.6 * xi[1];
+    }
+    PetscCall(CheckBasis(t ? "quad9_flat" : "tri6_flat", ty, xf, t ? qrule : trule));
   }
-  PetscCall(CheckBasis("tri6_flat", FACE3D_TRI6, xf, trule));
-  for (PetscInt i = 0; i < 9; ++i) {
-    PetscReal xi[2];
-    Face3dNodeXi(FACE3D_QUAD9, i, xi);
-    xf[3 * i]     = 0.3 + 1.1 * xi[0] + 0.4 * xi[1];
-    xf[3 * i + 1] = -0.2 + 0.2 * xi[0] + 0.9 * xi[1];
-    xf[3 * i + 2] = 0.5 + 0.3 * xi[0] - 0.6 * xi[1];
-  }
-  PetscCall(CheckBasis("quad9_flat", FACE3D_QUAD9, xf, qrule));
   /* curved: a Tri6 over an octant of the unit sphere, a Quad9 over a cube's face of it (one sixth) */
   for (PetscInt i = 0; i < 6; ++i) {
     PetscReal xi[2], p[3], l;
