@@ -11,7 +11,7 @@
            g_j = Q_j / A_j against g0 (nodes with |A_j| >= 0.05 max A: a
            node whose support the master covers partly can have A_j near 0),
            |Q_j - g0 A_j| / (g0 max A) at every node, and sum A_j against the
-           overlap's area;
+           overlap's area; and a Quad9 slave under a Tri6 master, tilted;
            level, tilted (a rotation and a shift of both), and with the
            master ending inside the slave (partial).
    sphere  a slave sphere of radius 1 (an octahedron's faces divided n x n,
@@ -457,7 +457,7 @@ static PetscErrorCode CheckBases(const Face3dRule *trule, const Face3dRule *qrul
 }
 
 /* (2) The flat patch: level, tilted, partial. */
-static PetscErrorCode CheckPatch(const char *name, PetscBool tilt, PetscReal xend, const Face3dRule *rule, const Face3dRule *frule)
+static PetscErrorCode CheckPatch(const char *name, PetscBool quadSlave, PetscBool tilt, PetscReal xend, const Face3dRule *rule, const Face3dRule *frule)
 {
   const PetscReal g0 = 0.05, axis[3] = {1.0, -2.0, 0.7}, shift[3] = {0.3, -0.1, 0.2};
   Mesh            S, M;
@@ -465,15 +465,23 @@ static PetscErrorCode CheckPatch(const char *name, PetscBool tilt, PetscReal xen
   PetscInt        nneg = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(MeshFlatTri6(7, &S));
-  PetscCall(MeshFlatQuad9(5, 6, -0.13, xend, -0.11, 1.17, g0, &M));
+  if (quadSlave) { /* the roles swapped: 5 x 4 Quad9 on [0.1, 0.9]^2 turned over (normal +z) under 72 Tri6 on the unit square (normal -z) */
+    const PetscReal xaxis[3] = {1.0, 0.0, 0.0}, up[3] = {0.0, 1.0, 0.0}, over[3] = {0.0, 1.0, g0};
+    PetscCall(MeshFlatQuad9(5, 4, 0.1, 0.9, 0.1, 0.9, 0.0, &S));
+    PetscCall(MeshFlatTri6(6, &M));
+    MeshMove(&S, xaxis, PI, up);
+    MeshMove(&M, xaxis, PI, over);
+  } else {
+    PetscCall(MeshFlatTri6(7, &S));
+    PetscCall(MeshFlatQuad9(5, 6, -0.13, xend, -0.11, 1.17, g0, &M));
+  }
   if (tilt) {
     MeshMove(&S, axis, 0.7, shift);
     MeshMove(&M, axis, 0.7, shift);
   }
   PetscCall(PetscMalloc2(S.nv, &A, S.nv, &Q));
   PetscCall(Integrate(&S, &M, 2 * g0, rule, frule, A, Q));
-  area = PetscMin(xend, 1.0) * 1.0;
+  area = quadSlave ? 0.64 : PetscMin(xend, 1.0);
   for (PetscInt v = 0; v < S.nv; ++v) {
     sumA += A[v];
     amax = PetscMax(amax, A[v]);
@@ -803,9 +811,10 @@ int main(int argc, char **argv)
   PetscCall(Face3dRuleCreate(FACE3D_TRI6, 10, &trule)); /* the faces' own rules (dual coefficients) */
   PetscCall(Face3dRuleCreate(FACE3D_QUAD9, 10, &qrule));
   PetscCall(CheckBases(&trule, &qrule));
-  PetscCall(CheckPatch("level", PETSC_FALSE, 1.1, &rule, &trule));
-  PetscCall(CheckPatch("tilted", PETSC_TRUE, 1.1, &rule, &trule));
-  PetscCall(CheckPatch("partial", PETSC_TRUE, 0.63, &rule, &trule));
+  PetscCall(CheckPatch("level", PETSC_FALSE, PETSC_FALSE, 1.1, &rule, &trule));
+  PetscCall(CheckPatch("tilted", PETSC_FALSE, PETSC_TRUE, 1.1, &rule, &trule));
+  PetscCall(CheckPatch("partial", PETSC_FALSE, PETSC_TRUE, 0.63, &rule, &trule));
+  PetscCall(CheckPatch("quad9slave", PETSC_TRUE, PETSC_TRUE, 0.0, &rule, &qrule));
   PetscCall(CheckSphere(&rule, &trule));
   PetscCall(CheckDerivatives("tri6_quad9", FACE3D_TRI6, FACE3D_QUAD9, &rule, &trule));
   PetscCall(CheckDerivatives("quad9_tri6", FACE3D_QUAD9, FACE3D_TRI6, &rule, &qrule));
