@@ -48,6 +48,11 @@ bin/material-check: tests/kernels/material_check.c tests/kernels/checkutil.h $(M
 bin/element-check: tests/kernels/element_check.c tests/kernels/checkutil.h build/obj/body/element.o $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< build/obj/body/element.o $(MATERIAL_OBJS) $(LDLIBS)
+# and the 3D mortar kernels: faces, clipping, segments, the tree (tests/test_mortar3d_kernels.py)
+MORTAR3D_OBJS = build/obj/contact/face3d.o build/obj/contact/clip.o build/obj/contact/segment3d.o build/obj/contact/bvh.o
+bin/mortar3d-check: tests/kernels/mortar3d_check.c tests/kernels/checkutil.h $(MORTAR3D_OBJS)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $< $(MORTAR3D_OBJS) $(LDLIBS)
 
 meshes: bin/contact
 	./bin/contact -options_file meshes/hertz/hertz.opts -mesh_only
