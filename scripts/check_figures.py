@@ -14,8 +14,8 @@ function, whose cases share the docstring). A quoted figure is flagged when a
 recorded value lies outside [LO / 3, 3 HI] (absolute values; a range across
 zero, -LO to HI, is [0, 3 max(LO, HI)], and so is `name` = up to HI, a
 figure at round-off whose last bits vary from run to run, quoted by its
-largest value; a figure quoted below ROUNDOFF = 1e-9 is at round-off too,
-and its lower end is not checked: the last bits of a rank comparison vary
+largest value; a figure (or a range's lower end) quoted below ROUNDOFF =
+1e-9 is at round-off too, and its lower end is not checked: the last bits of a rank comparison vary
 from run to run and from kernel to kernel, and a smaller one misstates
 nothing; a quoted 0 takes no recorded value
 above 1e-300), or when the test ran and recorded other
@@ -88,7 +88,7 @@ def check(quotes, records):
                 flags.append(f"{key[0]}::{key[1]}: {text}: not recorded (recorded: {', '.join(sorted(rec))})")
                 continue
             low, high = (lo / FACTOR, hi * FACTOR) if hi > 0 else (0.0, 1e-300)
-            if hi < ROUNDOFF:
+            if lo < ROUNDOFF:
                 low = 0.0
             bad = [(v, k) for v, k in vals if not low <= abs(v) <= high]
             if bad:

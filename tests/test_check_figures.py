@@ -49,7 +49,8 @@ def test_outside_factor_flagged(tmp_path):
 
 
 def test_roundoff_checked_above_only(tmp_path):
-    """A figure quoted below 1e-9 (`dE` = 2e-15) is round-off: a recorded
+    """A figure quoted below 1e-9 (`dE` = 2e-15), or a range whose lower end
+    is (`dP` = 1.1e-8 to 3.0e-7 is not), is round-off there: a recorded
     value far below it is not flagged, one 3.5 times above it is."""
     p = check(tmp_path, [("test_a", "dP", 1e-7, "auto"), ("test_a", "dE", 1e-18, "Nehalem")])
     assert p.returncode == 0, p.stdout

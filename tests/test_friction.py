@@ -240,9 +240,11 @@ def test_taylor(tmp_path):
     smallest step (the contact is small against the disc: a = 0.05). The
     energy's remainder falls at order 2 (`gradient_order_error` = 2.2e-7
     to 1.7e-6 off 2), the gradient's with the exact Hessian too
-    (`hessian_order_error` = -8.0e-5 to 9.0e-5 off 2; the relative remainder at the
+    (`hessian_order_error` = -8.0e-5 to 2.3e-4 off 2; the relative remainder at the
     smallest step `remainder` = 5.8e-7, round-off showing below it).
-    Bounds: orders within 2.5e-4 of 2, the smallest remainder 1.8e-6. With
+    Bounds: orders within 1e-3 of 2 (the round-off in the solution and the
+    remainder moves the fitted order by up to 2.3e-4 from kernel to kernel;
+    a missing Hessian term gives order 1), the smallest remainder 1.8e-6. With
     the default the report says that an order off 2 may be the steps
     crossing a kink, and that a smaller -taylor_scale keeps them inside;
     along 2e-5 it does not."""
@@ -252,8 +254,8 @@ def test_taylor(tmp_path):
     res = run_contact(CATTANEO + ["-taylor_test", "-taylor_scale", "2e-5"], tmp_path)
     assert note not in res.stdout
     t = res.summary["taylor"]
-    assert abs(figure("gradient_order_error", t["gradient_order"] - 2.0)) <= 2.5e-4
-    assert abs(figure("hessian_order_error", t["hessian_order"] - 2.0)) <= 2.5e-4
+    assert abs(figure("gradient_order_error", t["gradient_order"] - 2.0)) <= 1e-3
+    assert abs(figure("hessian_order_error", t["hessian_order"] - 2.0)) <= 1e-3
     assert figure("remainder", t["hessian_relative_remainder"][-1]) <= 1.8e-6
 
 

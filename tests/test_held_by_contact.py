@@ -50,7 +50,7 @@ def test_held_ranks(tmp_path):
     """1 and 2 ranks: the same contact force to 1e-11 of the load and anchor
     displacements to 1e-12 (the anchors are chosen by coordinates, the same on
     every partition). Both solved to -force_control_rtol 1e-11 and -tao_gttol
-    1e-12, so that the stop adds nothing: measured `dP` = 2.7e-14 to 1.7e-13
+    1e-12, so that the stop adds nothing: measured `dP` = up to 2.7e-13
     and `du` = 0 to 5.4e-16 over the five kernels."""
     tight = ["-output", "none", "-force_control_rtol", "1e-11", "-tao_gttol", "1e-12"]
     one = run_contact(HELD + tight, tmp_path, name="np1").summary

@@ -383,7 +383,7 @@ def test_roller_ranks_and_gpts(roller, tmp_path):
     in y (the roller's force and the race's reaction less the 1000 asked),
     relative to the load, moves the motion by as much relative to it (the
     contacts' force grows about in proportion to the approach, which is most of
-    the motion), taken 3 times: measured `dt` = 1.3e-5 to 1.8e-4 of that bound
+    the motion), taken 3 times: measured `dt` = 4.8e-6 to 1.8e-4 of that bound
     over the five kernels. With gpts the symmetry holds (1e-9;
     `sym_gpts` = 1.0e-14 to 6.5e-14 in magnitude) and Hertz within 2.5 %
     (measured `dp_gpts` = 0.011, `da_gpts` = -8.6e-4)."""
