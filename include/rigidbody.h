@@ -25,28 +25,6 @@
    reference point) is its reaction, and the unknowns' gradient. */
 #include "bodycore.h"
 
-struct _n_BodyRigid {
-  PetscInt   nn;        /* nodes of the curves */
-  PetscInt  *ids;       /* [nn] Gmsh node numbers, sorted */
-  PetscReal *X;         /* [nn][2] reference coordinates */
-  PetscInt   ne;        /* second-order line elements */
-  PetscInt  *enodes;    /* [ne][3] node indices: the ends, then the middle */
-  PetscInt  *etag;      /* [ne] physical tag */
-  PetscReal  centre[2]; /* reference point c */
-  PetscReal  rotation[CONTACT_MAX_STAGES]; /* the rotation at each stage's end (radians) */
-  PetscReal  tEnd[CONTACT_MAX_STAGES][2];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
-  PetscReal  t[2], theta; /* the motion at the current load parameter */
-  PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
-  PetscReal  curl;      /* -sum g.(x - c - t) at the last evaluation: d2Pi/dtheta2 beyond the contact's Hessian */
-  PetscReal  L;         /* the curves' size (their bounding box's diagonal): the rotation's unknown is L theta */
-  PetscBool  unknown[3];  /* component q (x, y, the rotation) is an unknown */
-  PetscBool  control[3];  /* a force control (a condition's _control force); else held by the contact alone */
-  PetscReal  qforce[3];   /* an unknown's force at the full load (a control's; 0: held by the contact) */
-  PetscInt   qbc[3];      /* the condition that controls component q, or -1 */
-  Vec        B[3];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
-  PetscReal  D[9];        /* and this rank's part of the contact's coupling between the unknowns */
-};
-
 /* The rigid options (-<body>_rigid_centre, -<body>_rigid_rotation), in the body's options block's place. */
 PetscErrorCode BodyRigidSetFromOptions(Body, const char prefix[]);
 /* Collective: reads the curves of b->msh (rank 0, broadcast), the reference

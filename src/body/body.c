@@ -15,6 +15,7 @@
 #include "partition.h"
 #include "options.h"
 #include "element.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
 {

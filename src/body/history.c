@@ -27,6 +27,7 @@
 #include "history.h"
 #include "loads.h"
 #include "rigidbody.h"
+#include "bodyimpl.h"
 
 /* The conditions' displacement values (not the force-controlled
    components, whose value is the control's displacement) and the loads at

@@ -9,6 +9,7 @@
    translations, three rotations), counted alike from a 6 x 6 Gram matrix
    (BodyCountFreeRigidModes). */
 #include "rigid.h"
+#include "bodyimpl.h"
 
 /* The rank of the n x n symmetric matrix M (Gaussian elimination with full
    pivoting, pivots below 1e-10 of its trace taken as zero). */

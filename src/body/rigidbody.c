@@ -44,6 +44,7 @@
 #include "options.h"
 #include "mshcheck.h"
 #include "meshgen.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
 {

@@ -3,6 +3,7 @@
    formulations from which each pair's energy term is created by name. */
 #include "contactpair.h"
 #include "options.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 PetscFunctionList ContactFormulationList = NULL;
 

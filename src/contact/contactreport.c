@@ -7,6 +7,7 @@
 #include "contactreport.h"
 #include "outputwrite.h"
 #include "xdmf.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 #define CONTACT_MIRROR_ROW_TOL 1e-10 /* a row this close to the line, relative to the arc length, is on it */
 

@@ -2,6 +2,7 @@
    its surfaces and searches, and the operations that touch nothing else. */
 #include "contactterm.h"
 #include "gap.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* The penalty against the mesh. The penalty adds a compliance 1/k_p per unit
    area to the contact: the bodies overlap by d = p/k_p where an element of

@@ -25,6 +25,7 @@
    condition holds are forces of zero, as in the solve. */
 #include "contactterm.h"
 #include "support.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* The outward unit normal of a flat surface, or PETSC_FALSE if it is not. */
 static PetscBool FlatNormal(const ContactSurface *M, PetscReal n[2])

@@ -148,6 +148,7 @@
 #include "gap.h"
 #include "options.h"
 #include "outputwrite.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 #define MORTAR_MAX_SEG   64
 #define MORTAR_MAX_DEPTH 12

@@ -14,6 +14,7 @@
    at h = 0.015 on 2 ranks). */
 #include "surface.h"
 #include "edge.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
 {

@@ -74,6 +74,7 @@
 #include "outputset.h"
 #include "gather.h"
 #include "transfer.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 struct _n_Accuracy {
   MPI_Comm  comm;

@@ -12,6 +12,7 @@
 #include "outputwrite.h"
 #include "xdmf.h"
 #include "stages.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* The XDMF grid of each body (rank 0): its cells and reference coordinates
    from /bodies/<body>, its fields from the group fields/<body> of the HDF5

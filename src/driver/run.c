@@ -5,6 +5,7 @@
 #include "options.h"
 #include "outputset.h"
 #include "progress.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 const char *const RunTimeNames[] = {"mesh", "setup", "solve", "output", "total"};
 

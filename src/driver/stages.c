@@ -6,6 +6,7 @@
    /stages, results.c). The last stage's end is the final state, whose
    results are the run's own; the bodies and the terms are left holding it. */
 #include "stages.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 PetscErrorCode StagesSetState(Problem p, PetscInt k)
 {

@@ -54,6 +54,7 @@
    of X. problem.c calls it; the solves by type are forcesolve.c's and
    forceouter.c's, above it. */
 #include "forcecontrol.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* The size of body b: its reference bounding box's diagonal. */
 static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)

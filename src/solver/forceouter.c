@@ -26,6 +26,7 @@
 #include "staging.h"
 #include "problem.h"
 #include <petscblaslapack.h>
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* Sets the controls' displacements U and solves, from X0 (or rest, with the
    scene's stages, when X0 is NULL); R: the controlled groups' reactions. */

@@ -46,6 +46,7 @@
 #include "problem.h"
 #include "body.h"
 #include "energyterm.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 #define FORCESTOP_STALL 10
 

@@ -32,6 +32,7 @@
    CG applies; the exact one, which auto adds only once the gradient is
    small, leaves H positive definite there. */
 #include "iterative.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[], PetscBool constant)
 {

@@ -12,6 +12,7 @@
 #include "iterative.h"
 #include "forceborder.h"
 #include "tangentswitch.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* MUMPS's factorisation works in an array sized at the analysis, from the
    pattern alone, plus ICNTL(14) per cent (20 by default). An indefinite

@@ -14,6 +14,7 @@
 #include "partition.h"
 #include "options.h"
 #include "forcecontrol.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 PetscErrorCode ProblemCreate(MPI_Comm comm, Problem *problem)
 {

@@ -35,6 +35,7 @@
 #include "slidewatch.h"
 #include "problem.h"
 #include "energyterm.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 #define SLIDE_GROWING 3
 

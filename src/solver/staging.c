@@ -14,6 +14,7 @@
 #include "forcecontrol.h"
 #include "lmvm.h"
 #include "newtonstep.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 static PetscErrorCode ProblemSetStage(Problem p, PetscReal load, PetscReal penalty)
 {

@@ -13,6 +13,7 @@
    of the subdomain's nodes having all its cells on this rank). */
 #include "subdomain.h"
 #include "pattern.h"
+#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* A node's distinct columns (pattern.c), the count of each of its rows. */
 typedef struct {
