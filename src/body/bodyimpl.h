@@ -7,6 +7,33 @@
    body's set-up (body.c: elastic, rigidbody.c: rigid). */
 #include "body.h"
 
+/* What differs between an elastic body (body.c, boundary.c) and a rigid one
+   (rigidbody.c, rigidsurface.c): the body's functions of include/body.h
+   call through this table, a NULL slot being a no-op, so that no caller asks
+   which kind a body is. BodyCreate fills the elastic table,
+   BodySetFromOptions the rigid one where -<body>_rigid says so. */
+typedef struct {
+  PetscErrorCode (*setup)(Body, PetscInt partitioner, PetscBool partitionView);
+  PetscErrorCode (*globaltolocal)(Body, Vec Xg, Vec Xl);
+  PetscErrorCode (*energygradient)(Body, Vec Xl, PetscReal *energy, Vec Gl);
+  PetscErrorCode (*hessian)(Body, Mat H);
+  PetscErrorCode (*tangent)(Body, Vec Xl, Mat H);
+  PetscErrorCode (*applytangent)(Body, Vec Xl, Vec El, Vec Yl);
+  PetscErrorCode (*reactions)(Body, Vec Gl);
+  PetscErrorCode (*errors)(Body, Vec Xl, BodyErrors *);
+  PetscErrorCode (*setjoinednumbering)(Body, PetscInt first);
+  PetscErrorCode (*addjoinedgradient)(Body, PetscScalar g[]);
+  PetscErrorCode (*checkheld)(Body, PetscBool contact);
+  PetscErrorCode (*viewsolution)(Body, PetscBool axisymmetric);
+  PetscErrorCode (*groupedges)(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
+  PetscErrorCode (*boundaryedgesat)(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);
+  PetscErrorCode (*mapnodes)(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
+  PetscErrorCode (*nodedisplacements)(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, PetscReal u[]);
+  PetscErrorCode (*addnodeforces)(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, const PetscReal g[]);
+  PetscErrorCode (*addsurfacehessian)(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
+  PetscErrorCode (*destroy)(Body);
+} BodyOps;
+
 /* One elastic body: its own DMPlex (P2 on Tri6 and Tet10, Q2 on Quad9 and Hex27), material, Dirichlet
    conditions and the per-cell geometry cache used by the element loops; or a rigid body (rg). */
 struct _n_Body {
@@ -65,6 +92,7 @@ struct _n_Body {
   PetscBool rigid;      /* -<body>_rigid: a rigid body (rigidbody.c): no cells, no dofs; rg its curves and motion */
   BodyRigid *rg;
   PetscBool axisym;     /* set before BodySetUp (-axisymmetric): x is the radius r >= 0, y the axis; every volume and surface measure carries 2 pi r (axis.c) */
+  BodyOps   ops;
 };
 
 /* A rigid body's curves and motion (rigidbody.h describes the motion). */
@@ -89,6 +117,25 @@ struct _n_BodyRigid {
   Vec        B[3];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
   PetscReal  D[9];        /* and this rank's part of the contact's coupling between the unknowns */
 };
+
+/* The elastic body's operations (body.c, boundary.c) and the rigid body's (rigidbody.c, rigidsurface.c). */
+void BodyElasticSetOps(Body);
+void BodyRigidSetOps(Body);
+/* The elastic implementations of other files than body.c, for its table. */
+PetscErrorCode BodySetJoinedNumbering_Elastic(Body, PetscInt first);
+PetscErrorCode BodyAddJoinedGradient_Elastic(Body, PetscScalar g[]);
+PetscErrorCode BodyCheckHeld_Elastic(Body, PetscBool contact);
+PetscErrorCode BodyGetGroupEdges_Elastic(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
+PetscErrorCode BodyBoundaryEdgesAt_Elastic(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);
+PetscErrorCode BodyMapNodes_Elastic(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
+PetscErrorCode BodyGetNodeDisplacements_Elastic(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, PetscReal u[]);
+PetscErrorCode BodyAddNodeForces_Elastic(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, const PetscReal g[]);
+/* rigidsurface.c's, for the rigid table (rigidbody.c) */
+PetscErrorCode BodyRigidGroupEdgesAsSurface(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
+PetscErrorCode BodyRigidBoundaryEdgesAt(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);
+PetscErrorCode BodyRigidMapNodes(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
+PetscErrorCode BodyRigidNodeDisplacements(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, PetscReal u[]);
+PetscErrorCode BodyRigidAddNodeForces(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, const PetscReal g[]);
 
 /* The measure a point at radius x sweeps per unit area or length: 2 pi x in
    axisymmetry, 1 in plane strain. */

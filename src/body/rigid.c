@@ -184,3 +184,23 @@ PetscInt BodyRigidRank(const PetscReal M[9])
 {
   return RigidRankN(3, M);
 }
+
+PetscErrorCode BodyCheckHeld(Body b, PetscBool contact)
+{
+  PetscFunctionBeginUser;
+  if (b->ops.checkheld) PetscCall(b->ops.checkheld(b, contact));
+  PetscFunctionReturn(0);
+}
+
+/* An elastic body whose conditions leave a rigid motion free: frictionless
+   contact pushes it but does not hold it. */
+PetscErrorCode BodyCheckHeld_Elastic(Body b, PetscBool contact)
+{
+  PetscInt nfree;
+
+  PetscFunctionBeginUser;
+  PetscCall(BodyCountFreeRigidModes(b, &nfree));
+  if (!nfree) PetscFunctionReturn(0);
+  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
+          contact ? " (frictionless contact pushes but does not hold it; a load pressing it on, -<body>_load, would)" : " and it is in no contact pair", b->name);
+}

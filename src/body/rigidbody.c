@@ -40,6 +40,7 @@
    of the conditions that hold the translation, as the reaction of an
    elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
 #include "rigidbody.h"
+#include "history.h"
 #include "stagedvalues.h"
 #include "options.h"
 #include "mshcheck.h"
@@ -464,4 +465,86 @@ PetscErrorCode BodyRigidDestroy(Body b)
   PetscCall(PetscFree2(b->rg->enodes, b->rg->etag));
   PetscCall(PetscFree(b->rg));
   PetscFunctionReturn(0);
+}
+
+/* Its curves and motion alone: no cells, no dofs. */
+static PetscErrorCode BodySetUp_Rigid(Body b, PetscInt partitioner, PetscBool partitionView)
+{
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  (void)partitioner;
+  (void)partitionView;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.mesh));
+  PetscCall(BodyRigidSetUp(b));
+  b->stage = 0;
+  PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscTime(&t1));
+  b->tmesh += t1 - t0;
+  PetscFunctionReturn(0);
+}
+
+/* No elastic energy; the contact terms add its force. */
+static PetscErrorCode BodyComputeEnergyGradient_Rigid(Body b, Vec Xl, PetscReal *energy, Vec Gl)
+{
+  PetscFunctionBeginUser;
+  (void)Xl;
+  (void)Gl;
+  BodyRigidZeroForce(b);
+  *energy = 0.0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeReactions_Rigid(Body b, Vec Gl)
+{
+  PetscFunctionBeginUser;
+  (void)Gl;
+  PetscCall(BodyRigidComputeReactions(b));
+  PetscFunctionReturn(0);
+}
+
+/* Its unknowns are held by its contacts, or by nothing. */
+static PetscErrorCode BodyCheckHeld_Rigid(Body b, PetscBool contact)
+{
+  const BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < 3 && !contact; ++q)
+    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
+               q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");
+  PetscFunctionReturn(0);
+}
+
+/* Its motion and the contact's force on it. */
+static PetscErrorCode BodyViewSolution_Rigid(Body b, PetscBool axisymmetric)
+{
+  const BodyRigid *r = b->rg;
+  PetscReal        f[2], mo;
+
+  PetscFunctionBeginUser;
+  BodyRigidContactForce(b, f, &mo);
+  if (axisymmetric) PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", b->name, (double)r->t[1], (double)f[1]));
+  else PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", b->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
+  PetscFunctionReturn(0);
+}
+
+void BodyRigidSetOps(Body b)
+{
+  BodyOps *ops = &b->ops;
+
+  PetscMemzero(ops, sizeof(*ops));
+  ops->setup             = BodySetUp_Rigid;
+  ops->energygradient    = BodyComputeEnergyGradient_Rigid;
+  ops->reactions         = BodyComputeReactions_Rigid;
+  ops->checkheld         = BodyCheckHeld_Rigid;
+  ops->viewsolution      = BodyViewSolution_Rigid;
+  ops->groupedges        = BodyRigidGroupEdgesAsSurface;
+  ops->boundaryedgesat   = BodyRigidBoundaryEdgesAt;
+  ops->mapnodes          = BodyRigidMapNodes;
+  ops->nodedisplacements = BodyRigidNodeDisplacements;
+  ops->addnodeforces     = BodyRigidAddNodeForces;
+  ops->addsurfacehessian = BodyRigidAddHessian;
+  ops->destroy           = BodyRigidDestroy;
 }
