@@ -5,6 +5,7 @@
    gathers for the callers of the body. */
 #include "bodycore.h"
 #include "conditions.h"
+#include "controls.h"
 #include "history.h"
 #include "loads.h"
 #include "rigid.h"
@@ -93,6 +94,16 @@ void            BodyGetElasticConstants(Body, PetscReal *E, PetscReal *nu);
 const Material *BodyGetMaterial(Body);
 /* Whether its tangent stiffness is the same at every state (a rigid body's: none, constant). */
 PetscBool       BodyHasConstantTangent(Body);
+/* A rigid body's motion and the contact's force and moment on it (about its
+   current reference point), and its curves' node count: PETSC_TRUE for a
+   body given by its motion (a rigid one), PETSC_FALSE (m untouched) else. */
+typedef struct {
+  PetscReal t[2], theta, centre[2], force[2], moment;
+  PetscInt  nodes;
+} BodyRigidMotion;
+PetscBool       BodyGetRigidMotion(Body, BodyRigidMotion *m);
+/* Its nodes per cell (6, 9, 10, 27). */
+PetscInt        BodyGetNodesPerCell(Body);
 /* Its mesh file (.msh, read or generated) and mesh size; its global counts of dofs and cells. */
 const char     *BodyGetMeshFile(Body);
 PetscReal       BodyGetMeshSize(Body);

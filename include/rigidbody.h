@@ -68,6 +68,21 @@ static inline PetscBool ContactRigidDofDecode(PetscInt i, PetscInt *j, PetscInt 
   *d = (-2 - i) % 2;
   return PETSC_TRUE;
 }
+/* The border of a Hessian (forcecontrol.c): from Begin to End, the
+   contact's coupling of unknown q to the joined vector's dofs goes into B
+   (borrowed) and among the unknowns into the body's D (this rank's part,
+   summed over ranks by Sum); Coupling: D's entry (q, s), with the rotation's
+   curl beyond the contact's Hessian. */
+void           BodyRigidBorderBegin(Body, PetscInt q, Vec B);
+PetscErrorCode BodyRigidBorderSum(Body);
+void           BodyRigidBorderEnd(Body, PetscInt q);
+PetscReal      BodyRigidBorderCoupling(Body, PetscInt q, PetscInt s);
+/* Its outline for the plots: its curves' nodes at their current positions,
+   x[2 nn] (PetscFree), and each line's nodes, enodes[3 ne] (the ends, then
+   the middle; the body's). */
+PetscErrorCode BodyRigidGetOutline(Body, PetscInt *nn, PetscReal **x, PetscInt *ne, const PetscInt **enodes);
+/* The curves' size L: the rotation's unknown is the arc L theta. */
+PetscReal      BodyRigidGetLength(Body);
 /* The conditions' reactions: each group's held components' share of the force (the whole force). */
 PetscErrorCode BodyRigidComputeReactions(Body);
 PetscErrorCode BodyRigidDestroy(Body);

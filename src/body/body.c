@@ -847,4 +847,9 @@ void BodyElasticSetOps(Body b)
   ops->mapnodes           = BodyMapNodes_Elastic;
   ops->nodedisplacements  = BodyGetNodeDisplacements_Elastic;
   ops->addnodeforces      = BodyAddNodeForces_Elastic;
+  ops->getcontrols        = BodyGetControls_Elastic;
+  ops->setcontrol         = BodySetControlValue_Elastic;
+  ops->controlforce       = BodyGetControlForce_Elastic;
+  ops->controlreaction    = BodyGetControlReaction_Elastic;
+  ops->controlcomponent   = BodyGetControlComponent_Elastic;
 }

@@ -22,7 +22,7 @@ typedef struct {
   PetscErrorCode (*reactions)(Body, Vec Gl);
   PetscErrorCode (*errors)(Body, Vec Xl, BodyErrors *);
   PetscErrorCode (*setjoinednumbering)(Body, PetscInt first);
-  PetscErrorCode (*addjoinedgradient)(Body, PetscScalar g[]);
+  PetscErrorCode (*addjoinedgradient)(Body, Vec Yl, PetscScalar g[]);
   PetscErrorCode (*checkheld)(Body, PetscBool contact);
   PetscErrorCode (*viewsolution)(Body, PetscBool axisymmetric);
   PetscErrorCode (*groupedges)(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
@@ -31,6 +31,11 @@ typedef struct {
   PetscErrorCode (*nodedisplacements)(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, PetscReal u[]);
   PetscErrorCode (*addnodeforces)(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, const PetscReal g[]);
   PetscErrorCode (*addsurfacehessian)(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
+  PetscErrorCode (*getcontrols)(Body, PetscInt *n, BodyControl ctl[]);
+  PetscErrorCode (*setcontrol)(Body, PetscInt bc, PetscInt c, PetscReal U);
+  PetscReal (*controlforce)(Body, PetscInt bc, PetscInt c);
+  PetscReal (*controlreaction)(Body, PetscInt bc, PetscInt c);
+  const char *(*controlcomponent)(Body, PetscInt bc, PetscInt c);
   PetscErrorCode (*destroy)(Body);
 } BodyOps;
 
@@ -123,7 +128,12 @@ void BodyElasticSetOps(Body);
 void BodyRigidSetOps(Body);
 /* The elastic implementations of other files than body.c, for its table. */
 PetscErrorCode BodySetJoinedNumbering_Elastic(Body, PetscInt first);
-PetscErrorCode BodyAddJoinedGradient_Elastic(Body, PetscScalar g[]);
+PetscErrorCode BodyAddJoinedGradient_Elastic(Body, Vec Yl, PetscScalar g[]);
+PetscErrorCode BodyGetControls_Elastic(Body, PetscInt *n, BodyControl ctl[]);
+PetscErrorCode BodySetControlValue_Elastic(Body, PetscInt bc, PetscInt c, PetscReal U);
+PetscReal      BodyGetControlForce_Elastic(Body, PetscInt bc, PetscInt c);
+PetscReal      BodyGetControlReaction_Elastic(Body, PetscInt bc, PetscInt c);
+const char    *BodyGetControlComponent_Elastic(Body, PetscInt bc, PetscInt c);
 PetscErrorCode BodyCheckHeld_Elastic(Body, PetscBool contact);
 PetscErrorCode BodyGetGroupEdges_Elastic(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
 PetscErrorCode BodyBoundaryEdgesAt_Elastic(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);

@@ -5,6 +5,7 @@
    an elastic and a rigid body is asked by name (BodyHasCells), not by the
    body's kind. */
 #include "body.h"
+#include "rigidbody.h"
 #include "bodyimpl.h"
 
 const char *BodyGetName(Body b)
@@ -36,6 +37,26 @@ void BodyGetElasticConstants(Body b, PetscReal *E, PetscReal *nu)
 {
   *E  = b->E;
   *nu = b->nu;
+}
+
+PetscBool BodyGetRigidMotion(Body b, BodyRigidMotion *m)
+{
+  const BodyRigid *r = b->rg;
+
+  if (!b->rigid) return PETSC_FALSE;
+  m->t[0]      = r->t[0];
+  m->t[1]      = r->t[1];
+  m->theta     = r->theta;
+  m->centre[0] = r->centre[0];
+  m->centre[1] = r->centre[1];
+  m->nodes     = r->nn;
+  BodyRigidContactForce(b, m->force, &m->moment);
+  return PETSC_TRUE;
+}
+
+PetscInt BodyGetNodesPerCell(Body b)
+{
+  return b->nb;
 }
 
 const Material *BodyGetMaterial(Body b)

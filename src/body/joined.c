@@ -52,16 +52,23 @@ PetscErrorCode BodySetJoinedSolution(Body b, const PetscScalar x[])
 PetscErrorCode BodyAddJoinedGradient(Body b, PetscScalar g[])
 {
   PetscFunctionBeginUser;
-  if (b->ops.addjoinedgradient) PetscCall(b->ops.addjoinedgradient(b, g));
+  if (b->ops.addjoinedgradient) PetscCall(b->ops.addjoinedgradient(b, b->Gl, g));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodyAddJoinedGradient_Elastic(Body b, PetscScalar g[])
+PetscErrorCode BodyAddLocalToJoined(Body b, Vec Yl, PetscScalar g[])
+{
+  PetscFunctionBeginUser;
+  if (b->ops.addjoinedgradient) PetscCall(b->ops.addjoinedgradient(b, Yl, g));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyAddJoinedGradient_Elastic(Body b, Vec Yl, PetscScalar g[])
 {
   PetscFunctionBeginUser;
   PetscCall(VecPlaceArray(b->Gg, g));
-  PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
-  PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
+  PetscCall(DMLocalToGlobalBegin(b->dm, Yl, ADD_VALUES, b->Gg));
+  PetscCall(DMLocalToGlobalEnd(b->dm, Yl, ADD_VALUES, b->Gg));
   PetscCall(VecResetArray(b->Gg));
   PetscFunctionReturn(0);
 }

@@ -530,6 +530,89 @@ static PetscErrorCode BodyViewSolution_Rigid(Body b, PetscBool axisymmetric)
   PetscFunctionReturn(0);
 }
 
+/* Its unknowns (rigidbody.h): a force-controlled component with its
+   condition's force, the others (held by the contact alone) anchors of
+   force 0. */
+static PetscErrorCode BodyGetControls_Rigid(Body b, PetscInt *n, BodyControl ctl[])
+{
+  const BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < 3; ++q) {
+    BodyControl *k;
+    if (!r->unknown[q]) continue;
+    k         = &ctl[(*n)++];
+    k->bc     = r->qbc[q];
+    k->c      = q;
+    k->force  = r->qforce[q];
+    k->anchor = (PetscBool)!r->control[q];
+    k->scale  = k->force != 0.0 ? PetscAbsReal(k->force) : 1.0;
+    k->L      = r->L;
+    k->kref   = b->axisym ? r->L : 1.0;
+    k->motion = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The motion itself, whatever the load factor. */
+static PetscErrorCode BodySetControlValue_Rigid(Body b, PetscInt bc, PetscInt q, PetscReal U)
+{
+  PetscFunctionBeginUser;
+  (void)bc;
+  BodyRigidSetUnknown(b, q, U);
+  PetscFunctionReturn(0);
+}
+
+static PetscReal BodyGetControlForce_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)bc;
+  return BodyRigidControlForce(b, q);
+}
+
+/* dPi/dq: the contact's force, or its moment over L. */
+static PetscReal BodyGetControlReaction_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)bc;
+  return BodyRigidUnknownGradient(b, q);
+}
+
+static const char *BodyGetControlComponent_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)b;
+  (void)bc;
+  return q == 2 ? "rotation" : (q ? "y" : "x");
+}
+
+void BodyRigidBorderBegin(Body b, PetscInt q, Vec B)
+{
+  b->rg->B[q] = B;
+  PetscArrayzero(b->rg->D, 9);
+}
+
+PetscErrorCode BodyRigidBorderSum(Body b)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, b->rg->D, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscFunctionReturn(0);
+}
+
+void BodyRigidBorderEnd(Body b, PetscInt q)
+{
+  b->rg->B[q] = NULL;
+}
+
+PetscReal BodyRigidBorderCoupling(Body b, PetscInt q, PetscInt s)
+{
+  const BodyRigid *r = b->rg;
+
+  return r->D[3 * q + s] + (q == 2 && s == 2 ? r->curl / PetscSqr(r->L) : 0.0);
+}
+
+PetscReal BodyRigidGetLength(Body b)
+{
+  return b->rg->L;
+}
+
 void BodyRigidSetOps(Body b)
 {
   BodyOps *ops = &b->ops;
@@ -546,5 +629,10 @@ void BodyRigidSetOps(Body b)
   ops->nodedisplacements = BodyRigidNodeDisplacements;
   ops->addnodeforces     = BodyRigidAddNodeForces;
   ops->addsurfacehessian = BodyRigidAddHessian;
+  ops->getcontrols       = BodyGetControls_Rigid;
+  ops->setcontrol        = BodySetControlValue_Rigid;
+  ops->controlforce      = BodyGetControlForce_Rigid;
+  ops->controlreaction   = BodyGetControlReaction_Rigid;
+  ops->controlcomponent  = BodyGetControlComponent_Rigid;
   ops->destroy           = BodyRigidDestroy;
 }

@@ -87,3 +87,21 @@ PetscErrorCode BodyRigidAddNodeForces(Body b, PetscInt nn, const PetscReal X[], 
   BodyRigidAddForce(b, nn, X, g);
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode BodyRigidGetOutline(Body b, PetscInt *nn, PetscReal **x, PetscInt *ne, const PetscInt **enodes)
+{
+  const BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  *nn     = r->nn;
+  *ne     = r->ne;
+  *enodes = r->enodes;
+  PetscCall(PetscMalloc1(2 * r->nn + 1, x));
+  for (PetscInt i = 0; i < r->nn; ++i) {
+    PetscReal u[2];
+    BodyRigidDisplacement(b, &r->X[2 * i], u);
+    (*x)[2 * i]     = r->X[2 * i] + u[0];
+    (*x)[2 * i + 1] = r->X[2 * i + 1] + u[1];
+  }
+  PetscFunctionReturn(0);
+}
