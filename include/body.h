@@ -102,8 +102,15 @@ typedef struct {
   PetscInt  nodes;
 } BodyRigidMotion;
 PetscBool       BodyGetRigidMotion(Body, BodyRigidMotion *m);
-/* Its nodes per cell (6, 9, 10, 27). */
+/* Its nodes per cell (6, 9, 10, 27), this rank's cells, and their nodes'
+   reference coordinates, xnode[ncells][nb][dim] (the body's cache). */
 PetscInt        BodyGetNodesPerCell(Body);
+PetscInt        BodyGetNumLocalCells(Body);
+const PetscReal *BodyGetCellNodeCoordinates(Body);
+/* Its node points (the chart pStart..pEnd of its DMPlex), whether this rank
+   owns each (owned[p - pStart]) and their reference coordinates
+   (xpoint[(p - pStart) dim + d]). */
+void            BodyGetNodePoints(Body, PetscInt *pStart, PetscInt *pEnd, const PetscBool **owned, const PetscReal **xpoint);
 /* Its mesh file (.msh, read or generated) and mesh size; its global counts of dofs and cells. */
 const char     *BodyGetMeshFile(Body);
 PetscReal       BodyGetMeshSize(Body);

@@ -59,6 +59,24 @@ PetscInt BodyGetNodesPerCell(Body b)
   return b->nb;
 }
 
+PetscInt BodyGetNumLocalCells(Body b)
+{
+  return b->ncells;
+}
+
+const PetscReal *BodyGetCellNodeCoordinates(Body b)
+{
+  return b->xnode;
+}
+
+void BodyGetNodePoints(Body b, PetscInt *pStart, PetscInt *pEnd, const PetscBool **owned, const PetscReal **xpoint)
+{
+  *pStart = b->pStart;
+  *pEnd   = b->pEnd;
+  *owned  = b->owned;
+  *xpoint = b->xpoint;
+}
+
 const Material *BodyGetMaterial(Body b)
 {
   return b->mat;

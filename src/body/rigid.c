@@ -185,6 +185,12 @@ PetscInt BodyRigidRank(const PetscReal M[9])
   return RigidRankN(3, M);
 }
 
+PetscInt BodyGetNumRigidModes(Body b)
+{
+  if (b->rigid) return 0;
+  return b->dim == 3 ? 6 : 3;
+}
+
 PetscErrorCode BodyCheckHeld(Body b, PetscBool contact)
 {
   PetscFunctionBeginUser;

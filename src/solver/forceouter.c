@@ -26,7 +26,6 @@
 #include "staging.h"
 #include "problem.h"
 #include <petscblaslapack.h>
-#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* Sets the controls' displacements U and solves, from X0 (or rest, with the
    scene's stages, when X0 is NULL); R: the controlled groups' reactions. */
@@ -56,7 +55,7 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   PetscCall(ProblemComputeReactions(p, p->X));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     ForceControl *fc = &p->fc.c[k];
-    const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
+    const BodyBC *bc = BodyGetCondition(p->bodies[fc->body], fc->bc);
     fc->R            = bc->reaction[bc->comps[fc->c]];
     R[k]             = fc->R;
   }
@@ -144,7 +143,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
     PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
     if (p->res.controlSolves >= p->opt.controlMaxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->opt.controlMaxIt, BodyGetCondition(p->bodies[p->fc.c[0].body], p->fc.c[0].bc)->group, (double)R[0], (double)p->fc.c[0].force));
       break;
     }
     for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->fc.c[k].force;

@@ -46,7 +46,6 @@
 #include "problem.h"
 #include "body.h"
 #include "energyterm.h"
-#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 #define FORCESTOP_STALL 10
 
@@ -61,7 +60,7 @@ PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
   *fc = 0.0;
   if (!p->nterms) PetscFunctionReturn(0);
   PetscCall(ProblemScatterToBodies(p, X));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(BodyGetLocalGradient(p->bodies[i])));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
   PetscCall(VecDuplicate(X, &W));
   PetscCall(ProblemGatherGradient(p, W));

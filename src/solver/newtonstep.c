@@ -12,7 +12,6 @@
 #include "iterative.h"
 #include "forceborder.h"
 #include "tangentswitch.h"
-#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
 
 /* MUMPS's factorisation works in an array sized at the analysis, from the
    pattern alone, plus ICNTL(14) per cent (20 by default). An indefinite
@@ -142,7 +141,7 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   PetscInt N;
 
   PetscFunctionBeginUser;
-  if (p->opt.iterativeSet || !p->Xb || p->nbodies == 0 || p->bodies[0]->dim != 3) PetscFunctionReturn(0);
+  if (p->opt.iterativeSet || !p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
   p->opt.iterative = (PetscBool)(N > p->opt.iterativeDofs);
   PetscCall(PetscPrintf(p->comm, "Newton step: %s (3D, %" PetscInt_FMT " dofs, %s -newton_iterative_dofs %" PetscInt_FMT "; -newton_iterative 0 or 1 forces either)\n",

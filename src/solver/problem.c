@@ -427,11 +427,12 @@ typedef struct {
 
 static PetscErrorCode StiffnessCountNode(void *ctx, PetscInt dof, PetscInt n, const PetscInt cols[])
 {
-  StiffnessCount *sc = (StiffnessCount *)ctx;
+  StiffnessCount *sc  = (StiffnessCount *)ctx;
+  const PetscInt *l2b = BodyGetJoinedMap(sc->body);
 
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < BodyGetDimension(sc->body); ++d) {
-    const PetscInt g = BodyGetJoinedMap(sc->body)[dof + d];
+    const PetscInt g = l2b[dof + d];
     PetscInt       lo = sc->rstart, hi = sc->rend, dc = 0;
     PetscMPIInt    o;
 

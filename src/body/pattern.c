@@ -11,7 +11,7 @@
    deduplicated: the exact count, at a sort of at most 8 x 81 entries a
    node. */
 #include "pattern.h"
-#include "../body/bodyimpl.h" /* reads the Body's members: to go through include/body.h's functions */
+#include "bodyimpl.h"
 
 PetscErrorCode BodyNodeColumns(Body b, const PetscInt map[], PatternNodeFn fn, void *ctx)
 {
