@@ -1,8 +1,10 @@
 #pragma once
-/* An elastic body (body.c): its life (create, options, mesh, set-up,
-   destroy), its energy and stiffness, and the post-processing of a solution.
-   body.c orchestrates the body's files below, whose headers this one
-   gathers for the callers of the body. */
+/* A body, elastic or rigid (body.c): its life (create, options, mesh,
+   set-up, destroy), its energy and stiffness, and the post-processing of a
+   solution. body.c orchestrates the body's files below, whose headers this
+   one gathers for the callers of the body; a caller never asks which kind a
+   body is (the body dispatches, bodyimpl.h), only what it has (BodyHasCells,
+   BodyGetRigidMotion). */
 #include "bodycore.h"
 #include "conditions.h"
 #include "controls.h"

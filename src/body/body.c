@@ -4,7 +4,10 @@
    over the pointwise kernels of its material (material.h: elasticity.c,
    neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
-   take what they share from bodycore.c and rigid.c, below them all. */
+   take what they share from bodycore.c and rigid.c, below them all. Each
+   function that differs for a rigid body calls through the body's table of
+   operations (bodyimpl.h): this file's _Elastic implementations fill it in
+   BodyCreate, rigidbody.c's in BodySetFromOptions where -<body>_rigid. */
 #include "support.h"
 #include "body.h"
 #include "simplexcoords.h"
