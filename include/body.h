@@ -200,5 +200,5 @@ PetscErrorCode  BodyGetNodeDisplacements(Body, PetscInt nn, const PetscReal X[],
 PetscErrorCode  BodyAddNodeForces(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, const PetscReal g[]);
 /* A contact's Hessian block K over the joined indices idx at the surface's
    current coordinates x: what the joined matrix cannot hold of it (a rigid
-   body's: its unknowns' border, BodyRigidAddHessian); nothing for an elastic body. */
+   body's: its unknowns' border, rigidbody.h); nothing for an elastic body. */
 PetscErrorCode  BodyAddSurfaceHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);

@@ -25,37 +25,11 @@
    reference point) is its reaction, and the unknowns' gradient. */
 #include "bodycore.h"
 
-/* The rigid options (-<body>_rigid_centre, -<body>_rigid_rotation), in the body's options block's place. */
-PetscErrorCode BodyRigidSetFromOptions(Body, const char prefix[]);
-/* Collective: reads the curves of b->msh (rank 0, broadcast), the reference
-   point, the conditions' translation; b->nlocal = 0. */
-PetscErrorCode BodyRigidSetUp(Body);
-/* The prescribed motion at the load parameter b->stage and b->loadWeight say (history.c). */
-void           BodyRigidSetLoad(Body);
-/* Sets unknown q of the motion (x, y translation, or the arc L theta). */
-void           BodyRigidSetUnknown(Body, PetscInt q, PetscReal value);
-/* Unknown q's value, and its gradient dPi/dq at the last evaluation (the force, or the moment over L). */
-PetscReal      BodyRigidGetUnknown(const Body, PetscInt q);
-PetscReal      BodyRigidUnknownGradient(const Body, PetscInt q);
-/* The contact's force and moment on the body: minus its unknowns' gradient
-   (a support's reaction is the gradient: the two balance at equilibrium). */
-void           BodyRigidContactForce(const Body, PetscReal f[2], PetscReal *moment);
-/* The derivative of the current position x of a point with respect to
-   unknown q: J[q] = (1, 0), (0, 1), or perp(x - c - t) / L. */
-void           BodyRigidJacobian(const Body, const PetscReal x[2], PetscReal J[3][2]);
-/* Adds to the border a Hessian block K (n x n, row-major, symmetric) over
-   the joined vector's indices idx, where the negative ones below -1 are
-   this body's surface nodes' components (ContactRigidDofDecode), at their
-   current positions x: K's coupling of them to the other indices into
-   r->B, among themselves into r->D. */
-PetscErrorCode BodyRigidAddHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
-/* The displacement of the reference point X under the current motion. */
-void           BodyRigidDisplacement(const Body, const PetscReal X[2], PetscReal u[2]);
-/* Zeroes the force and moment (before an evaluation). */
-void           BodyRigidZeroForce(Body);
-/* Adds the gradient g[n][2] at the nodes of reference coordinates X[n][2]
-   (summed over ranks) to the body's force and moment. */
-void           BodyRigidAddForce(Body, PetscInt n, const PetscReal X[], const PetscReal g[]);
+/* What the rest of the program asks of a rigid body beyond body.h: the
+   encoding of its surface nodes in the joined indices, the border of its
+   unknowns (forcecontrol.c), its outline and size (results.c), and the
+   region its lines enclose (surface.c). Its set-up, motion and forces are
+   the body's own (src/body/bodyimpl.h). */
 /* A surface node's component in the joined vector's indices: -2 - (2 j + d), node j of the surface, d its component. */
 static inline PetscInt ContactRigidDof(PetscInt j, PetscInt d)
 {
@@ -83,12 +57,7 @@ PetscReal      BodyRigidBorderCoupling(Body, PetscInt q, PetscInt s);
 PetscErrorCode BodyRigidGetOutline(Body, PetscInt *nn, PetscReal **x, PetscInt *ne, const PetscInt **enodes);
 /* The curves' size L: the rotation's unknown is the arc L theta. */
 PetscReal      BodyRigidGetLength(Body);
-/* The conditions' reactions: each group's held components' share of the force (the whole force). */
-PetscErrorCode BodyRigidComputeReactions(Body);
-PetscErrorCode BodyRigidDestroy(Body);
 /* Whether the body's lines close on themselves (every corner on two lines): it is then the region they enclose. */
 PetscBool      BodyRigidClosed(const Body);
 /* Whether the reference point p lies inside the region the lines enclose (even-odd rule; meaningful where BodyRigidClosed). */
 PetscBool      BodyRigidInside(const Body, const PetscReal p[2]);
-/* The line elements of physical tag: their count, and (PetscFree) their indices. */
-PetscErrorCode BodyRigidGroupEdges(Body, PetscInt tag, PetscInt *n, PetscInt **edges);
