@@ -1,7 +1,8 @@
-/* A contact surface: extraction of a physical curve's edges from the body's
-   DMPlex, replication on every rank, node numbering, the walk that gives the
-   arc position, and the exchange of the surface's coordinates and gradient
-   with the body's local vectors.
+/* A contact surface: a physical curve's edges as the body gives them
+   (BodyGetGroupEdges: an elastic body's from its DMPlex, a rigid body's from
+   its lines), replication on every rank, node numbering, the walk that gives
+   the arc position, and the exchange of the surface's coordinates and
+   gradient with the body (BodyGetNodeDisplacements, BodyAddNodeForces).
 
    Parallel. Surfaces are curves, small beside the bodies: every rank holds
    the whole surface (nodes, edges, current coordinates gathered at each
@@ -23,7 +24,7 @@ static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
   return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* Every rank's owned edges gathered on every rank (in rank order): the
+/* Every rank's edges (BodyGetGroupEdges) gathered on every rank (in rank order): the
    surface's nodes (sorted unique global numbers), their reference
    coordinates, each edge's nodes and sign, and which edges are this rank's. */
 static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const char pair[], PetscInt n, const PetscInt eid[], const PetscReal erl[])
@@ -194,38 +195,41 @@ static PetscReal ContactSurfaceEndTurn(const ContactSurface *S, PetscInt e, Pets
   return PetscAtan2Real(t2[0] * nin[0] + t2[1] * nin[1], t2[0] * tout[0] + t2[1] * tout[1]);
 }
 
+/* BodyBoundaryEdgesAt's callback: the turn at end node v to the body's edge
+   xf through it, into turn[v]. */
+typedef struct {
+  const ContactSurface *S;
+  PetscReal            *turn;
+} EndTurnCtx;
+
+static void ContactSurfaceEndTurnAt(void *ctx, PetscInt v, const PetscReal xf[6], PetscBool first)
+{
+  const EndTurnCtx *c = (const EndTurnCtx *)ctx;
+
+  for (PetscInt e = 0; e < c->S->ne; ++e)
+    for (PetscInt j = 0; j < 2; ++j)
+      if (c->S->enodes[3 * e + j] == v) c->turn[v] = ContactSurfaceEndTurn(c->S, e, j, xf, first);
+}
+
 /* Where the surface ends, how the body goes on (endTurn): at each end node,
    the boundary edge of the body through it that is not in the surface's
-   group (DMPlexMarkBoundaryFaces: the body's boundary, not the partition's),
+   group (BodyBoundaryEdgesAt: the body's boundary, not the partition's),
    found by the rank whose cells hold it. A slave point past the end is then
    judged against that continuation (gap.c), not against the surface's own
    tangent line, which runs on into the open beside a corner. */
-/* BodyBoundaryEdgesAt's callback: the turn at end node v to the body's edge
-   xf through it (ends[0]: the surface; ends[1]: the turn array). */
-static void ContactSurfaceEndTurnAt(void *ctx, PetscInt v, const PetscReal xf[6], PetscBool first)
-{
-  void          **ends = (void **)ctx;
-  ContactSurface *S    = (ContactSurface *)ends[0];
-  PetscReal      *turn = (PetscReal *)ends[1];
-
-  for (PetscInt e = 0; e < S->ne; ++e)
-    for (PetscInt j = 0; j < 2; ++j)
-      if (S->enodes[3 * e + j] == v) turn[v] = ContactSurfaceEndTurn(S, e, j, xf, first);
-}
-
 static PetscErrorCode ContactSurfaceSetUpEnds(ContactSurface *S, Body b, const char pair[])
 {
   const PetscReal none = -10.0; /* below any angle */
   PetscReal      *turn;
-  void           *ends[2];
+  EndTurnCtx      ctx;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(S->nn, &S->endTurn));
   PetscCall(PetscMalloc1(S->nn, &turn));
   for (PetscInt v = 0; v < S->nn; ++v) turn[v] = none;
-  ends[0] = S;
-  ends[1] = turn;
-  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, ends));
+  ctx.S    = S;
+  ctx.turn = turn;
+  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, &ctx));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, turn, S->nn, MPIU_REAL, MPI_MAX, BodyGetComm(b)));
   for (PetscInt v = 0; v < S->nn; ++v) {
     if (!S->endNode[v]) continue;
@@ -279,7 +283,7 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
 PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const ContactSurface *M, const char pair[])
 {
   const PetscBool  closed = BodyRigidClosed(b);
-  void            *ends[2];
+  EndTurnCtx       ctx;
   PetscInt        *chain, nchain = 0;
 
   PetscFunctionBeginUser;
@@ -334,9 +338,9 @@ PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const Contac
   }
   PetscCall(PetscFree(chain));
   /* the ends: the body's other lines through them */
-  ends[0] = S;
-  ends[1] = S->endTurn;
-  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, ends));
+  ctx.S    = S;
+  ctx.turn = S->endTurn;
+  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, &ctx));
   for (PetscInt v = 0; v < S->nn; ++v)
     if (S->endNode[v]) PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of rigid body %s: an end at (%g, %g), the boundary turns there by %g degrees\n", pair, S->group, BodyGetName(b), (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI)));
   PetscFunctionReturn(0);

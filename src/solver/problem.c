@@ -361,8 +361,9 @@ PetscErrorCode ProblemSetInitialGuess(Problem p, Vec X0)
   PetscFunctionReturn(0);
 }
 
-/* For each body, local dof -> index in X (-1 for constrained dofs): the global
-   indices are scattered to the local vector, which leaves constrained dofs alone. */
+/* For each body, local dof -> index in X (-1 for constrained dofs; a rigid
+   body has none): BodySetJoinedNumbering, from the body's first index on
+   this rank. */
 static PetscErrorCode ProblemBuildIndexMaps(Problem p)
 {
   PetscInt rstart;
@@ -378,7 +379,8 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
    singular, and frictionless contact does not fix it either (it pushes, it
    does not hold; a body can slide along it, or leave it). Refused here, with
    the cause, rather than left to a factorisation that meets a zero pivot or a
-   solver that never converges. */
+   solver that never converges (BodyCheckHeld; a rigid body's free unknowns
+   alike, in no contact pair). */
 static PetscErrorCode ProblemCheckSupports(Problem p)
 {
   PetscFunctionBeginUser;
