@@ -134,7 +134,7 @@ PetscInt        BodyGetLocalSize(Body);
 const PetscInt *BodyGetJoinedMap(Body);
 /* Its Dirichlet conditions and loads (conditions.h, loads.h) by index. */
 PetscInt        BodyGetNumConditions(Body);
-BodyBC         *BodyGetCondition(Body, PetscInt j);
+const BodyBC   *BodyGetCondition(Body, PetscInt j);
 PetscInt        BodyGetNumLoads(Body);
 const BodyLoad *BodyGetLoad(Body, PetscInt l);
 /* -load_stages and -axisymmetric, set by the problem before BodySetFromOptions. */

@@ -3,15 +3,16 @@
    holds a Body as an opaque handle and asks it through the functions of
    include/body.h and the headers it gathers, as PETSc's objects keep their
    structs in include/petsc/private/ *impl.h. The operations that differ
-   between an elastic and a rigid body are a table (ops), filled by the
-   body's set-up (body.c: elastic, rigidbody.c: rigid). */
+   between an elastic and a rigid body are a table (ops), below. */
 #include "body.h"
 
 /* What differs between an elastic body (body.c, boundary.c) and a rigid one
    (rigidbody.c, rigidsurface.c): the body's functions of include/body.h
-   call through this table, a NULL slot being a no-op, so that no caller asks
-   which kind a body is. BodyCreate fills the elastic table,
-   BodySetFromOptions the rigid one where -<body>_rigid says so. */
+   call through this table, so that no caller asks which kind a body is.
+   BodyCreate fills the elastic table, BodySetFromOptions the rigid one where
+   -<body>_rigid says so. A rigid body leaves NULL what it has nothing for
+   (its cells' Hessian, tangent and errors, its dofs' numbering and scatter),
+   and the body's function is then a no-op. */
 typedef struct {
   PetscErrorCode (*setup)(Body, PetscInt partitioner, PetscBool partitionView);
   PetscErrorCode (*globaltolocal)(Body, Vec Xg, Vec Xl);

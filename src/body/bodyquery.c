@@ -148,7 +148,7 @@ PetscInt BodyGetNumConditions(Body b)
   return b->nbc;
 }
 
-BodyBC *BodyGetCondition(Body b, PetscInt j)
+const BodyBC *BodyGetCondition(Body b, PetscInt j)
 {
   return &b->bc[j];
 }
