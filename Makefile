@@ -31,7 +31,7 @@ $(DEPS_STAMP): scripts/install-deps.sh
 	@touch $@
 deps: $(DEPS_STAMP)
 
-build/obj/%.o: src/%.c $(wildcard include/*.h) $(DEPS_STAMP)
+build/obj/%.o: src/%.c $(wildcard include/*.h src/body/*.h) $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
 
@@ -44,10 +44,11 @@ MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/ob
 bin/material-check: tests/kernels/material_check.c tests/kernels/checkutil.h $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< $(MATERIAL_OBJS) $(LDLIBS)
-# and the element loop on one 3D cell (Hex27, Tet10)
-bin/element-check: tests/kernels/element_check.c tests/kernels/checkutil.h build/obj/body/element.o $(MATERIAL_OBJS)
+# and the element loop on one 3D cell (Hex27, Tet10), on a body it fills in
+# itself: it reads the body's private header (src/body/bodyimpl.h)
+bin/element-check: tests/kernels/element_check.c tests/kernels/checkutil.h src/body/bodyimpl.h build/obj/body/element.o $(MATERIAL_OBJS)
 	@mkdir -p bin
-	$(CC) $(CFLAGS) -o $@ $< build/obj/body/element.o $(MATERIAL_OBJS) $(LDLIBS)
+	$(CC) $(CFLAGS) -Isrc/body -o $@ $< build/obj/body/element.o $(MATERIAL_OBJS) $(LDLIBS)
 # and the 3D mortar kernels: faces, clipping, segments, the tree (tests/test_mortar3d_kernels.py)
 MORTAR3D_OBJS = build/obj/contact/face3d.o build/obj/contact/clip.o build/obj/contact/segment3d.o build/obj/contact/bvh.o
 bin/mortar3d-check: tests/kernels/mortar3d_check.c tests/kernels/checkutil.h $(MORTAR3D_OBJS)

@@ -1,10 +1,13 @@
 #pragma once
-/* An elastic body (body.c): its life (create, options, mesh, set-up,
-   destroy), its energy and stiffness, and the post-processing of a solution.
-   body.c orchestrates the body's files below, whose headers this one
-   gathers for the callers of the body. */
+/* A body, elastic or rigid (body.c): its life (create, options, mesh,
+   set-up, destroy), its energy and stiffness, and the post-processing of a
+   solution. body.c orchestrates the body's files below, whose headers this
+   one gathers for the callers of the body; a caller never asks which kind a
+   body is (the body dispatches, bodyimpl.h), only what it has (BodyHasCells,
+   BodyGetRigidMotion). */
 #include "bodycore.h"
 #include "conditions.h"
+#include "controls.h"
 #include "history.h"
 #include "loads.h"
 #include "rigid.h"
@@ -78,3 +81,124 @@ PetscErrorCode BodyComputeStrainPeak(Body, Vec Xl, BodyStrainPeak *);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
    of the recovered (nodal-average) stress minus the cell's stress. */
 PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);
+
+/* What the rest of the program may read of a body (bodyquery.c). */
+const char     *BodyGetName(Body);
+MPI_Comm        BodyGetComm(Body);
+/* 2 or 3, the components of its displacement; a rigid body's curves: 2. */
+PetscInt        BodyGetDimension(Body);
+PetscBool       BodyIsAxisymmetric(Body);
+/* Whether it has cells (and dofs, stress, strain, fields to write): an
+   elastic body; a rigid one has curves and a motion alone. */
+PetscBool       BodyHasCells(Body);
+/* Its Young's modulus and Poisson's ratio at rest (a rigid body: E = inf, nu = 0). */
+void            BodyGetElasticConstants(Body, PetscReal *E, PetscReal *nu);
+const Material *BodyGetMaterial(Body);
+/* Whether its tangent stiffness is the same at every state (a rigid body's: none, constant). */
+PetscBool       BodyHasConstantTangent(Body);
+/* A rigid body's motion and the contact's force and moment on it (about its
+   current reference point), and its curves' node count: PETSC_TRUE for a
+   body given by its motion (a rigid one), PETSC_FALSE (m untouched) else. */
+typedef struct {
+  PetscReal t[2], theta, centre[2], force[2], moment;
+  PetscInt  nodes;
+} BodyRigidMotion;
+PetscBool       BodyGetRigidMotion(Body, BodyRigidMotion *m);
+/* Its nodes per cell (6, 9, 10, 27), this rank's cells, and their nodes'
+   reference coordinates, xnode[ncells][nb][dim] (the body's cache). */
+PetscInt        BodyGetNodesPerCell(Body);
+PetscInt        BodyGetNumLocalCells(Body);
+const PetscReal *BodyGetCellNodeCoordinates(Body);
+/* Its node points (the chart pStart..pEnd of its DMPlex), whether this rank
+   owns each (owned[p - pStart]) and their reference coordinates
+   (xpoint[(p - pStart) dim + d]). */
+void            BodyGetNodePoints(Body, PetscInt *pStart, PetscInt *pEnd, const PetscBool **owned, const PetscReal **xpoint);
+/* Its mesh file (.msh, read or generated) and mesh size; its global counts of dofs and cells. */
+const char     *BodyGetMeshFile(Body);
+PetscReal       BodyGetMeshSize(Body);
+PetscBool       BodyIsSimplex(Body);
+void            BodyGetGlobalSizes(Body, PetscInt *ndofs, PetscInt *ncells);
+/* Wall time spent meshing and reading its mesh. */
+PetscLogDouble  BodyGetMeshTime(Body);
+/* The exact solution it is compared with, or NULL. */
+const ExactSolution *BodyGetExactSolution(Body);
+/* Its local vectors: the displacement of the last scatter (Dirichlet values
+   included) and the gradient of the last evaluation (this rank's cells' part). */
+Vec             BodyGetLocalSolution(Body);
+Vec             BodyGetLocalGradient(Body);
+/* Its DMPlex (NULL for a rigid body). */
+DM              BodyGetDM(Body);
+/* The size of its part of the joined vector on this rank (0 for a rigid
+   body), and each local dof's index in the joined vector (-1: constrained). */
+PetscInt        BodyGetLocalSize(Body);
+const PetscInt *BodyGetJoinedMap(Body);
+/* Its Dirichlet conditions and loads (conditions.h, loads.h) by index. */
+PetscInt        BodyGetNumConditions(Body);
+const BodyBC   *BodyGetCondition(Body, PetscInt j);
+PetscInt        BodyGetNumLoads(Body);
+const BodyLoad *BodyGetLoad(Body, PetscInt l);
+/* -load_stages and -axisymmetric, set by the problem before BodySetFromOptions. */
+PetscInt        BodyGetNumStages(Body);
+void            BodySetNumStages(Body, PetscInt);
+void            BodySetAxisymmetric(Body, PetscBool);
+/* The contact pairs it takes part in: one more, and how many. */
+void            BodyAddContactPair(Body);
+PetscInt        BodyGetNumContactPairs(Body);
+/* Before BodySetUp: the body is in a contact and loaded, so that its free
+   rigid motions are anchored (anchors.c); a rigid body has none to anchor. */
+void            BodySetMayAnchor(Body, PetscBool);
+/* The factor on what every stage shares at the load parameter (history.c). */
+PetscReal       BodyGetLoadFactor(Body);
+
+/* The joined vector (problem.c): each rank's part is its bodies' owned
+   unconstrained dofs in turn. Collective: the body's dofs number from first
+   on this rank; X's and G's parts of this body start at x and g. */
+PetscErrorCode  BodySetJoinedNumbering(Body, PetscInt first);
+PetscErrorCode  BodySetJoinedSolution(Body, const PetscScalar x[]);
+PetscErrorCode  BodyAddJoinedGradient(Body, PetscScalar g[]);
+/* Collective: refuses a body whose conditions (and contacts: contact, it is
+   in one) leave a motion free, so that the problem is singular. */
+PetscErrorCode  BodyCheckHeld(Body, PetscBool contact);
+/* Collective: prints what the solve found of the body beyond its fields (a
+   rigid body's motion and the contact's force on it). */
+PetscErrorCode  BodyViewSolution(Body, PetscBool axisymmetric);
+
+/* The body's boundary as a contact surface sees it (boundary.c for an
+   elastic body, rigidsurface.c for a rigid one). */
+/* A group's boundary edges this rank gives (an elastic body: those its owned
+   points hold; a rigid body: rank 0 all of them), with their nodes' global
+   numbers (eid, 3 an edge: the ends, then the middle) and, in erl (7 an
+   edge), their reference coordinates and the outward normal's sign (a rigid
+   body: +1, its side chosen by the surface); tag: the group's physical tag;
+   what: who asks, for the errors. PetscFree2(eid, erl). */
+PetscErrorCode  BodyGetGroupEdges(Body, const char group[], const char what[], PetscInt *tag, PetscInt *n, PetscInt **eid, PetscReal **erl);
+/* For each node of global number ids[v] with end[v] (of nn, sorted), the
+   body's boundary edges through it outside the group tag: fn(ctx, v, xf,
+   first), xf the edge's nodes' reference coordinates (ends, middle), first:
+   the node is its first end. An elastic body calls fn on the rank whose
+   cells hold the edge, a rigid body on every rank. */
+typedef void (*BodyEdgeFn)(void *ctx, PetscInt v, const PetscReal xf[6], PetscBool first);
+PetscErrorCode  BodyBoundaryEdgesAt(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);
+/* The surface nodes (global numbers ids, nn of them, sorted) among this
+   rank's owned points: map->n of them, node (their index among the nn) and
+   off (their offset in the body's local vector); joined[2 nn], on every rank:
+   each node's components' indices in the joined vector (-1: constrained; a
+   rigid body: ContactRigidDof, through its motion). */
+typedef struct {
+  PetscInt  n;
+  PetscInt *node, *off;
+} BodyNodeMap;
+PetscErrorCode  BodyMapNodes(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
+PetscErrorCode  BodyNodeMapDestroy(BodyNodeMap *);
+/* Collective: the displacement u[2 nn] of the nodes of reference coordinates
+   X[2 nn] (the same to the bit on every rank: each node's from the one rank
+   that owns it). */
+PetscErrorCode  BodyGetNodeDisplacements(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, PetscReal u[]);
+/* Adds the gradient g[2 nn] (summed over ranks, the same on every rank) at
+   the nodes to the body's: an elastic body's local gradient at its owned
+   nodes, a rigid body's force and moment. */
+PetscErrorCode  BodyAddNodeForces(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, const PetscReal g[]);
+/* A contact's Hessian block K over the joined indices idx at the surface's
+   current coordinates x: what the joined matrix cannot hold of it (a rigid
+   body's: its unknowns' border, rigidbody.h); nothing for an elastic body. */
+PetscErrorCode  BodyAddSurfaceHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);

@@ -1,6 +1,6 @@
 #pragma once
-/* A body's data (bodycore.c): the Body struct, its Dirichlet conditions and
-   loads as data, and the queries of its mesh that the body's files share
+/* A body's handle (its struct is private to src/body/, in bodyimpl.h), its
+   Dirichlet conditions and loads as data, and the queries of its mesh that the body's files share
    (body.c, conditions.c, loads.c, axis.c, anchors.c, rigid.c, transfer.c).
    It calls none of them. */
 #include "contact.h"
@@ -38,74 +38,12 @@ typedef struct {
   PetscReal stageTraction[CONTACT_MAX_STAGES][3], stagePressure[CONTACT_MAX_STAGES]; /* -load_stages: each stage's end value; traction and pressure hold the active stage's */
 } BodyLoad;
 
-/* One elastic body: its own DMPlex (P2 on Tri6 and Tet10, Q2 on Quad9 and Hex27), material, Dirichlet
-   conditions and the per-cell geometry cache used by the element loops. */
+/* A body, elastic or rigid: an opaque handle (src/body/bodyimpl.h holds its
+   data); everyone outside src/body/ asks it through the functions declared in
+   include/body.h and the headers it gathers. */
 typedef struct _n_Body *Body;
-typedef struct _n_BodyRigid BodyRigid; /* a rigid body's curves and motion (rigidbody.h) */
-struct _n_Body {
-  char      name[CONTACT_NAME_LEN];
-  MPI_Comm  comm;
-  char      geo[PETSC_MAX_PATH_LEN], msh[PETSC_MAX_PATH_LEN];
-  PetscReal h;
-  PetscInt  ngeoparams;
-  char     *geoparams[16];
-  char      bgm[PETSC_MAX_PATH_LEN]; /* size field for Gmsh (-accuracy's refinement, BodySetSizeField), or empty */
-  PetscReal E, nu, param[MATERIAL_MAX_PARAMS]; /* E, nu: small-strain at rest (the material's); param: the material's own (material.h) */
-  const Material *mat;       /* -<body>_material: its kernels (material.h) */
-  PetscInt  inverted; PetscReal invertedAt[2]; /* energy evaluations that found J <= 0, and where the last one did (reference x, y) */
-  PetscInt  nbc, qdeg;
-  void     *bcctx[CONTACT_MAX_BC][2];
-  BodyBC    bc[CONTACT_MAX_BC];
-  PetscInt  nload;
-  BodyLoad  load[CONTACT_MAX_BC];
-  Vec       Fl;         /* the loads' consistent nodal forces at the active stage's end (local vector; this rank's edges), or NULL */
-  Vec       FlFrom;     /* the same at the active stage's start (NULL in the first stage: rest) */
-  PetscInt  nstages, stage; /* -load_stages (set before BodySetFromOptions), and the active stage, 1..nstages (history.c) */
-  PetscReal loadWeight[2]; /* the weights of the active stage's start and end values at the load parameter (history.c) */
-  PetscReal loadFactor; /* the factor on what every stage shares (a force control's displacement, the exact solution): the load parameter in the first stage, then 1 */
-  ExactSolution exact;
-  PetscBool hasExact;
+typedef struct _n_BodyRigid BodyRigid; /* a rigid body's curves and motion (src/body/bodyimpl.h) */
 
-  PetscInt  nphys;
-  char    **physNames;
-  PetscInt *physDims, *physTags;
-
-  DM        dm;
-  PetscFE   fe, feScalar;
-  PetscBool simplex;
-  PetscInt  dim, ncells, nb, nq, ncellsGlobal; /* dim: 2 (plane strain, r-z) or 3, the components of u too */
-  PetscInt *cpts;  /* [ncells][nb]: node points of each cell, in basis order */
-  PetscInt *cdof;  /* [ncells][nb]: local offset of the first component of each node */
-  PetscReal *dNdx; /* [ncells][nq][nb][dim] */
-  PetscReal *wdetJ;/* [ncells][nq] */
-  PetscReal *xq;   /* [ncells][nq][dim] */
-  PetscReal *xnode;/* [ncells][nb][dim] node coordinates */
-  const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
-  Vec       Xg, Gg, Xl, Gl, bcl, bclFull, bclFrom; /* bcl: Dirichlet values of the load step, bclFull: the active stage's end, bclFrom: its start (NULL in the first stage) */
-  PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
-  PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
-  PetscInt  pStart, pEnd;   /* chart */
-  PetscReal *xpoint;        /* [chart][dim] reference coordinates of node points */
-  PetscBool *owned;         /* [chart] point owned by this rank */
-  PetscSection nodeGS;      /* global numbering of the node points */
-  PetscLogDouble tmesh; /* wall time of meshing and mesh reading */
-  PetscBool generate;   /* the mesh is generated from -geo by Gmsh */
-  PetscBool mayAnchor;  /* set before BodySetUp: the body is in a contact and loaded, so a free rigid motion is anchored (anchors.c) */
-  PetscInt  npairs;     /* the contact pairs it takes part in (ProblemAddTerm) */
-  PetscInt  nsupport;   /* the inward unit normals of its contact surfaces ([nsupport][2], reference configuration) and the largest friction of their pairs (support.c) */
-  PetscReal *support, supportMu;
-  PetscReal axisTol;    /* axisymmetry: a node within this of x = 0 is on the axis */
-  PetscBool rigid;      /* -<body>_rigid: a rigid body (rigidbody.c): no cells, no dofs; rg its curves and motion */
-  BodyRigid *rg;
-  PetscBool axisym;     /* set before BodySetUp (-axisymmetric): x is the radius r >= 0, y the axis; every volume and surface measure carries 2 pi r (axis.c) */
-};
-
-/* The measure a point at radius x sweeps per unit area or length: 2 pi x in
-   axisymmetry, 1 in plane strain. */
-static inline PetscReal BodyRadialWeight(Body b, PetscReal x)
-{
-  return b->axisym ? 2.0 * PETSC_PI * x : 1.0;
-}
 
 /* Refuses a group named twice in the list of option opt (-<body>_bc, -<body>_load). */
 PetscErrorCode BodyCheckGroupsUnique(Body, const char opt[], PetscInt n, char *const names[]);

@@ -15,8 +15,7 @@ typedef struct {
   PetscReal       kp;          /* penalty in use (continuation) */
   PetscBool       exactHessian; /* add the second-order terms to the Hessian */
   PetscBool       built;       /* the searches have been built (at the surfaces' current coordinates) */
-  Body            rigid;       /* the surfaces' rigid body, or NULL: its Hessian's part goes to its unknowns' border (rigidbody.h) */
-  PetscInt        rigidSide;   /* and which surface is its */
+  Body            body[2];     /* the surfaces' bodies (a rigid one takes its part of the Hessian to its unknowns' border, BodyAddSurfaceHessian) */
   ContactReport   report;
 } ContactTerm;
 
@@ -33,7 +32,7 @@ PetscErrorCode ContactTermReportBegin(ContactTerm *, const PetscBool slave[2]);
 /* Adds a formulation's Hessian block K (n x n, symmetric) over the joined
    vector's indices idx to H (a constrained dof's -1 and a rigid body's
    surface dofs are left out) and a rigid body's part to its unknowns'
-   border (BodyRigidAddHessian). */
+   border (BodyAddSurfaceHessian). */
 PetscErrorCode ContactTermAddHessian(const ContactTerm *, Mat H, PetscInt n, const PetscInt idx[], const PetscScalar K[]);
 /* Collective, before solving (givenforces.c): a body held by this frictional
    pair alone against a flat partner, whose scene gives it a force that friction

@@ -19,3 +19,7 @@ PetscReal BodyControlForce(Body, PetscInt i, PetscInt c);
 PetscReal BodyRigidControlForce(Body, PetscInt q);
 /* Load l's resultant at the load parameter last set, into f[dim] (f[3]). */
 void BodyLoadResultant(Body, PetscInt l, PetscReal f[3]);
+/* Whether anything of the body can push it into a contact: a load, a
+   nonzero Dirichlet value (a force control's force included) or an exact
+   solution imposed, in any stage. */
+PetscBool BodyIsLoaded(Body);

@@ -26,7 +26,7 @@ typedef struct {
   PetscReal scale; /* what |R - force| is measured against: |force| and the body's loads */
   PetscBool anchor; /* the anchor of a body held by contact (anchors.c): force 0 */
   PetscReal kref;   /* an anchor: a motion stiffer than this is held by the contact (forceborder.c) */
-  PetscBool rigid;  /* unknown c (x, y, or the arc L theta) of rigid body `body` (rigidbody.h); bc: its condition, or -1 */
+  PetscBool motion; /* unknown c (x, y, or the arc L theta) of rigid body `body`'s motion (rigidbody.h): no stiffness of its own, its border the contact's at each Hessian; bc: its condition, or -1 */
 } ForceControl;
 
 /* Force control's state (forcecontrol.c): the controlled components, and

@@ -3,6 +3,8 @@
    that counts how many of them its Dirichlet conditions leave free. */
 #include "bodycore.h"
 
+/* The rigid modes of the body's dofs: 3 in 2D, 6 in 3D, none for a rigid body (no dofs). */
+PetscInt       BodyGetNumRigidModes(Body);
 PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[]);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
 /* Adds to the rigid-motion constraint Gram matrix M the row of component c

@@ -25,59 +25,11 @@
    reference point) is its reaction, and the unknowns' gradient. */
 #include "bodycore.h"
 
-struct _n_BodyRigid {
-  PetscInt   nn;        /* nodes of the curves */
-  PetscInt  *ids;       /* [nn] Gmsh node numbers, sorted */
-  PetscReal *X;         /* [nn][2] reference coordinates */
-  PetscInt   ne;        /* second-order line elements */
-  PetscInt  *enodes;    /* [ne][3] node indices: the ends, then the middle */
-  PetscInt  *etag;      /* [ne] physical tag */
-  PetscReal  centre[2]; /* reference point c */
-  PetscReal  rotation[CONTACT_MAX_STAGES]; /* the rotation at each stage's end (radians) */
-  PetscReal  tEnd[CONTACT_MAX_STAGES][2];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
-  PetscReal  t[2], theta; /* the motion at the current load parameter */
-  PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
-  PetscReal  curl;      /* -sum g.(x - c - t) at the last evaluation: d2Pi/dtheta2 beyond the contact's Hessian */
-  PetscReal  L;         /* the curves' size (their bounding box's diagonal): the rotation's unknown is L theta */
-  PetscBool  unknown[3];  /* component q (x, y, the rotation) is an unknown */
-  PetscBool  control[3];  /* a force control (a condition's _control force); else held by the contact alone */
-  PetscReal  qforce[3];   /* an unknown's force at the full load (a control's; 0: held by the contact) */
-  PetscInt   qbc[3];      /* the condition that controls component q, or -1 */
-  Vec        B[3];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
-  PetscReal  D[9];        /* and this rank's part of the contact's coupling between the unknowns */
-};
-
-/* The rigid options (-<body>_rigid_centre, -<body>_rigid_rotation), in the body's options block's place. */
-PetscErrorCode BodyRigidSetFromOptions(Body, const char prefix[]);
-/* Collective: reads the curves of b->msh (rank 0, broadcast), the reference
-   point, the conditions' translation; b->nlocal = 0. */
-PetscErrorCode BodyRigidSetUp(Body);
-/* The prescribed motion at the load parameter b->stage and b->loadWeight say (history.c). */
-void           BodyRigidSetLoad(Body);
-/* Sets unknown q of the motion (x, y translation, or the arc L theta). */
-void           BodyRigidSetUnknown(Body, PetscInt q, PetscReal value);
-/* Unknown q's value, and its gradient dPi/dq at the last evaluation (the force, or the moment over L). */
-PetscReal      BodyRigidGetUnknown(const Body, PetscInt q);
-PetscReal      BodyRigidUnknownGradient(const Body, PetscInt q);
-/* The contact's force and moment on the body: minus its unknowns' gradient
-   (a support's reaction is the gradient: the two balance at equilibrium). */
-void           BodyRigidContactForce(const Body, PetscReal f[2], PetscReal *moment);
-/* The derivative of the current position x of a point with respect to
-   unknown q: J[q] = (1, 0), (0, 1), or perp(x - c - t) / L. */
-void           BodyRigidJacobian(const Body, const PetscReal x[2], PetscReal J[3][2]);
-/* Adds to the border a Hessian block K (n x n, row-major, symmetric) over
-   the joined vector's indices idx, where the negative ones below -1 are
-   this body's surface nodes' components (ContactRigidDofDecode), at their
-   current positions x: K's coupling of them to the other indices into
-   r->B, among themselves into r->D. */
-PetscErrorCode BodyRigidAddHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
-/* The displacement of the reference point X under the current motion. */
-void           BodyRigidDisplacement(const Body, const PetscReal X[2], PetscReal u[2]);
-/* Zeroes the force and moment (before an evaluation). */
-void           BodyRigidZeroForce(Body);
-/* Adds the gradient g[n][2] at the nodes of reference coordinates X[n][2]
-   (summed over ranks) to the body's force and moment. */
-void           BodyRigidAddForce(Body, PetscInt n, const PetscReal X[], const PetscReal g[]);
+/* What the rest of the program asks of a rigid body beyond body.h: the
+   encoding of its surface nodes in the joined indices, the border of its
+   unknowns (forcecontrol.c), its outline and size (results.c), and the
+   region its lines enclose (surface.c). Its set-up, motion and forces are
+   the body's own (src/body/bodyimpl.h). */
 /* A surface node's component in the joined vector's indices: -2 - (2 j + d), node j of the surface, d its component. */
 static inline PetscInt ContactRigidDof(PetscInt j, PetscInt d)
 {
@@ -90,12 +42,22 @@ static inline PetscBool ContactRigidDofDecode(PetscInt i, PetscInt *j, PetscInt 
   *d = (-2 - i) % 2;
   return PETSC_TRUE;
 }
-/* The conditions' reactions: each group's held components' share of the force (the whole force). */
-PetscErrorCode BodyRigidComputeReactions(Body);
-PetscErrorCode BodyRigidDestroy(Body);
+/* The border of a Hessian (forcecontrol.c): from Begin to End, the
+   contact's coupling of unknown q to the joined vector's dofs goes into B
+   (borrowed) and among the unknowns into the body's D (this rank's part,
+   summed over ranks by Sum); Coupling: D's entry (q, s), with the rotation's
+   curl beyond the contact's Hessian. */
+void           BodyRigidBorderBegin(Body, PetscInt q, Vec B);
+PetscErrorCode BodyRigidBorderSum(Body);
+void           BodyRigidBorderEnd(Body, PetscInt q);
+PetscReal      BodyRigidBorderCoupling(Body, PetscInt q, PetscInt s);
+/* Its outline for the plots: its curves' nodes at their current positions,
+   x[2 nn] (PetscFree), and each line's nodes, enodes[3 ne] (the ends, then
+   the middle; the body's). */
+PetscErrorCode BodyRigidGetOutline(Body, PetscInt *nn, PetscReal **x, PetscInt *ne, const PetscInt **enodes);
+/* The curves' size L: the rotation's unknown is the arc L theta. */
+PetscReal      BodyRigidGetLength(Body);
 /* Whether the body's lines close on themselves (every corner on two lines): it is then the region they enclose. */
 PetscBool      BodyRigidClosed(const Body);
 /* Whether the reference point p lies inside the region the lines enclose (even-odd rule; meaningful where BodyRigidClosed). */
 PetscBool      BodyRigidInside(const Body, const PetscReal p[2]);
-/* The line elements of physical tag: their count, and (PetscFree) their indices. */
-PetscErrorCode BodyRigidGroupEdges(Body, PetscInt tag, PetscInt *n, PetscInt **edges);

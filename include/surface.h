@@ -27,7 +27,7 @@ typedef struct {
   PetscInt  *mnodes;      /* [ne][7] as master: own nodes (eta = -1, +1, 0), the other nodes of the neighbour at eta = -1, at +1 */
   PetscReal *mcorr;       /* [ne][2][7] end-tangent corrections at eta = -1, +1 over those nodes */
   PetscReal  blend;       /* W: width in eta of the blend zone at each end (0: none) */
-  PetscInt   nloc, *locNode, *locOff; /* owned node points: surface node, local offset */
+  BodyNodeMap map;        /* the surface nodes among the body's owned points, and their local offsets (BodyMapNodes) */
   PetscInt   nown, *ownEdges;          /* edges this rank integrates as slave */
   PetscBool  axisym;      /* the body is axisymmetric: every dS is 2 pi r dS (ContactSurfaceMeasure) */
 } ContactSurface;

@@ -26,6 +26,7 @@
 #include "anchors.h"
 #include "conditions.h"
 #include "rigid.h"
+#include "bodyimpl.h"
 
 /* Whether vertex v is on an edge of a loaded group (faces: the mesh's
    "Face Sets", tags: the loaded groups' physical tags). */

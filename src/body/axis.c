@@ -13,6 +13,7 @@
    node at x < 0 is not in the meridian half-plane: refused. */
 #include "axis.h"
 #include "conditions.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyAddAxis(Body b)
 {

@@ -4,7 +4,10 @@
    over the pointwise kernels of its material (material.h: elasticity.c,
    neohookean.c). It orchestrates the body's
    files: it alone calls conditions.c, axis.c, anchors.c and loads.c, which
-   take what they share from bodycore.c and rigid.c, below them all. */
+   take what they share from bodycore.c and rigid.c, below them all. Each
+   function that differs for a rigid body calls through the body's table of
+   operations (bodyimpl.h): this file's _Elastic implementations fill it in
+   BodyCreate, rigidbody.c's in BodySetFromOptions where -<body>_rigid. */
 #include "support.h"
 #include "body.h"
 #include "simplexcoords.h"
@@ -15,6 +18,7 @@
 #include "partition.h"
 #include "options.h"
 #include "element.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
 {
@@ -30,6 +34,7 @@ PetscErrorCode BodyCreate(MPI_Comm comm, const char name[], Body *body)
   b->loadFactor = 1.0;
   b->nstages    = 1;
   b->loadWeight[1] = 1.0;
+  BodyElasticSetOps(b);
   *body = b;
   PetscFunctionReturn(0);
 }
@@ -73,6 +78,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     nbc = 1;
   }
   PetscCheck(help || hasGeo || hasMsh, b->comm, PETSC_ERR_USER_INPUT, "body %s: give -%sgeo FILE.geo or -%smesh FILE.msh", b->name, prefix, prefix);
+  if (b->rigid) BodyRigidSetOps(b);
   if (b->rigid || help) PetscCall(BodyRigidSetFromOptions(b, prefix));
   if (b->rigid && !help) { /* E and nu are not asked for; a rigid body has no cells to load */
     PetscBool setE, setNu;
@@ -406,6 +412,13 @@ PetscErrorCode BodyGetNodeNumber(Body b, PetscInt p, PetscInt *node)
 
 PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
 {
+  PetscFunctionBeginUser;
+  PetscCall(b->ops.setup(b, partitioner, partitionView));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodySetUp_Elastic(Body b, PetscInt partitioner, PetscBool partitionView)
+{
   PetscQuadrature q;
   PetscDS         ds;
   PetscInt        qdeg = b->qdeg;
@@ -414,15 +427,6 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(contactLog.mesh));
-  if (b->rigid) { /* its curves and motion alone */
-    PetscCall(BodyRigidSetUp(b));
-    b->stage = 0;
-    PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
-    PetscCall(PetscLogStagePop());
-    PetscCall(PetscTime(&t1));
-    b->tmesh += t1 - t0;
-    PetscFunctionReturn(0);
-  }
   PetscCall(BodyReadMesh(b, partitioner, partitionView));
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&t1));
@@ -468,7 +472,13 @@ PetscErrorCode BodySetUp(Body b, PetscInt partitioner, PetscBool partitionView)
 PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
 {
   PetscFunctionBeginUser;
-  if (b->rigid) PetscFunctionReturn(0);
+  if (b->ops.globaltolocal) PetscCall(b->ops.globaltolocal(b, Xg, Xl));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyGlobalToLocal_Elastic(Body b, Vec Xg, Vec Xl)
+{
+  PetscFunctionBeginUser;
   PetscCall(VecCopy(b->bcl, Xl));
   PetscCall(DMGlobalToLocalBegin(b->dm, Xg, INSERT_VALUES, Xl));
   PetscCall(DMGlobalToLocalEnd(b->dm, Xg, INSERT_VALUES, Xl));
@@ -482,6 +492,13 @@ PetscErrorCode BodyGlobalToLocal(Body b, Vec Xg, Vec Xl)
    and b->inverted counts the evaluation. */
 PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec Gl)
 {
+  PetscFunctionBeginUser;
+  PetscCall(b->ops.energygradient(b, Xl, energy, Gl));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeEnergyGradient_Elastic(Body b, Vec Xl, PetscReal *energy, Vec Gl)
+{
   const PetscScalar *x;
   PetscScalar       *g;
   PetscReal          e = 0.0;
@@ -489,11 +506,6 @@ PetscErrorCode BodyComputeEnergyGradient(Body b, Vec Xl, PetscReal *energy, Vec 
   PetscBool          inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  if (b->rigid) { /* no elastic energy; the contact terms add its force */
-    BodyRigidZeroForce(b);
-    *energy = 0.0;
-    PetscFunctionReturn(0);
-  }
   PetscCheck(nb <= ELEMENT_MAX_NODES && dim <= 3, b->comm, PETSC_ERR_SUP, "body %s: cells of %" PetscInt_FMT " nodes in %" PetscInt_FMT "D; the element loop takes up to %d nodes in up to 3D", b->name, nb, dim, ELEMENT_MAX_NODES);
   PetscCall(PetscLogEventBegin(contactLog.elasEnergyGrad, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(Xl, &x));
@@ -540,7 +552,13 @@ PetscErrorCode BodyGetInversions(Body b, PetscInt *n, PetscReal xy[2])
 PetscErrorCode BodyAssembleHessian(Body b, Mat H)
 {
   PetscFunctionBeginUser;
-  if (b->rigid) PetscFunctionReturn(0);
+  if (b->ops.hessian) PetscCall(b->ops.hessian(b, H));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyAssembleHessian_Elastic(Body b, Mat H)
+{
+  PetscFunctionBeginUser;
   PetscCall(BodyAssembleHessianMapped(b, b->l2b, H));
   PetscFunctionReturn(0);
 }
@@ -591,10 +609,16 @@ PetscErrorCode BodyAssembleHessianMapped(Body b, const PetscInt map[], Mat H)
 
 PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
 {
+  PetscFunctionBeginUser;
+  if (b->ops.tangent) PetscCall(b->ops.tangent(b, Xl, H));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyAssembleTangent_Elastic(Body b, Vec Xl, Mat H)
+{
   const PetscScalar *x;
 
   PetscFunctionBeginUser;
-  if (b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(BodyAssembleTangentMapped(b, b->mat->constantTangent ? NULL : x, b->l2b, H));
   PetscCall(VecRestoreArrayRead(Xl, &x));
@@ -607,13 +631,19 @@ PetscErrorCode BodyAssembleTangent(Body b, Vec Xl, Mat H)
    tangents. Like a gradient, Yl holds this rank's cells' part alone. */
 PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
 {
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(Yl));
+  if (b->ops.applytangent) PetscCall(b->ops.applytangent(b, Xl, El, Yl));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyApplyTangentLocal_Elastic(Body b, Vec Xl, Vec El, Vec Yl)
+{
   const PetscInt     dim = b->dim, nb = b->nb, n = dim * nb;
   const PetscScalar *x = NULL, *e;
   PetscScalar       *y, *K;
 
   PetscFunctionBeginUser;
-  PetscCall(VecZeroEntries(Yl));
-  if (b->rigid) PetscFunctionReturn(0);
   if (Xl && !b->mat->constantTangent) PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArrayRead(El, &e));
   PetscCall(VecGetArray(Yl, &y));
@@ -641,14 +671,17 @@ PetscErrorCode BodyApplyTangentLocal(Body b, Vec Xl, Vec El, Vec Yl)
    point of the group on every rank counts each cell once. */
 PetscErrorCode BodyComputeReactions(Body b, Vec Gl)
 {
+  PetscFunctionBeginUser;
+  PetscCall(b->ops.reactions(b, Gl));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeReactions_Elastic(Body b, Vec Gl)
+{
   PetscSection       s;
   const PetscScalar *g;
 
   PetscFunctionBeginUser;
-  if (b->rigid) {
-    PetscCall(BodyRigidComputeReactions(b));
-    PetscFunctionReturn(0);
-  }
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(VecGetArrayRead(Gl, &g));
   for (PetscInt i = 0; i < b->nbc; ++i) {
@@ -699,13 +732,19 @@ static void StressSquared(const PetscReal param[], const PetscReal H[], PetscRea
 
 PetscErrorCode BodyComputeErrors(Body b, Vec Xl, BodyErrors *E)
 {
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(E, sizeof(*E)));
+  if (b->hasExact && b->ops.errors) PetscCall(b->ops.errors(b, Xl, E));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeErrors_Elastic(Body b, Vec Xl, BodyErrors *E)
+{
   const PetscScalar *x;
   PetscReal          loc[6] = {0, 0, 0, 0, 0, 0}, glob[6];
   const PetscInt     dim = b->dim, nq = b->nq;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMemzero(E, sizeof(*E)));
-  if (!b->hasExact || b->rigid) PetscFunctionReturn(0);
   PetscCall(VecGetArrayRead(Xl, &x));
   for (PetscInt c = 0; c < b->ncells; ++c) {
     PetscReal u[ELEMENT_MAX_DOFS];
@@ -777,8 +816,43 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(PetscFEDestroy(&b->fe));
   PetscCall(PetscFEDestroy(&b->feScalar));
   PetscCall(DMDestroy(&b->dm));
-  PetscCall(BodyRigidDestroy(b));
+  if (b->ops.destroy) PetscCall(b->ops.destroy(b));
   PetscCall(PetscFree(b));
   *body = NULL;
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyViewSolution(Body b, PetscBool axisymmetric)
+{
+  PetscFunctionBeginUser;
+  if (b->ops.viewsolution) PetscCall(b->ops.viewsolution(b, axisymmetric));
+  PetscFunctionReturn(0);
+}
+
+void BodyElasticSetOps(Body b)
+{
+  BodyOps *ops = &b->ops;
+
+  PetscMemzero(ops, sizeof(*ops));
+  ops->setup              = BodySetUp_Elastic;
+  ops->globaltolocal      = BodyGlobalToLocal_Elastic;
+  ops->energygradient     = BodyComputeEnergyGradient_Elastic;
+  ops->hessian            = BodyAssembleHessian_Elastic;
+  ops->tangent            = BodyAssembleTangent_Elastic;
+  ops->applytangent       = BodyApplyTangentLocal_Elastic;
+  ops->reactions          = BodyComputeReactions_Elastic;
+  ops->errors             = BodyComputeErrors_Elastic;
+  ops->setjoinednumbering = BodySetJoinedNumbering_Elastic;
+  ops->addjoinedgradient  = BodyAddJoinedGradient_Elastic;
+  ops->checkheld          = BodyCheckHeld_Elastic;
+  ops->groupedges         = BodyGetGroupEdges_Elastic;
+  ops->boundaryedgesat    = BodyBoundaryEdgesAt_Elastic;
+  ops->mapnodes           = BodyMapNodes_Elastic;
+  ops->nodedisplacements  = BodyGetNodeDisplacements_Elastic;
+  ops->addnodeforces      = BodyAddNodeForces_Elastic;
+  ops->getcontrols        = BodyGetControls_Elastic;
+  ops->setcontrol         = BodySetControlValue_Elastic;
+  ops->controlforce       = BodyGetControlForce_Elastic;
+  ops->controlreaction    = BodyGetControlReaction_Elastic;
+  ops->controlcomponent   = BodyGetControlComponent_Elastic;
 }

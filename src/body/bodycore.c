@@ -2,9 +2,10 @@
    the physical groups by name, the element's reference nodes and cell
    corners, the vertices' coordinates and their bounding box, whether the
    mesh is second order, and a boundary edge's nodes and outward side. The
-   Body struct (bodycore.h) is read here and in the files above; this file
+   Body struct (bodyimpl.h) is read here and in the files above; this file
    calls none of them, so that body.c, which orchestrates, can call each. */
 #include "bodycore.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyCheckGroupsUnique(Body b, const char opt[], PetscInt n, char *const names[])
 {

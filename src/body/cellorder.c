@@ -29,6 +29,7 @@
    another order; its code and interpolation use this one), then the
    centre. */
 #include "body.h"
+#include "bodyimpl.h"
 
 static const PetscInt TetEdges[6][2]  = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
 static const PetscInt HexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};

@@ -39,6 +39,7 @@
 #include "loads.h"
 #include "stagedvalues.h"
 #include "options.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyBCSetFromOptions(Body b, const char prefix[], BodyBC *bc)
 {

@@ -3,7 +3,7 @@
    material's pointwise kernels of H (material.h), and their contraction with
    the basis into the cell's energy, gradient and tangent.
 
-   It reads the cell cache (bodycore.h) with stride dim (2 or 3): the basis
+   It reads the cell cache (bodyimpl.h) with stride dim (2 or 3): the basis
    gradients dNdx[c][q][a][J] = dN_a/dX_J, the weights wdetJ[c][q] (dV: dA,
    2 pi r dA in axisymmetry, the volume in 3D) and the quadrature points
    xq[c][q][dim], for any element of up to ELEMENT_MAX_NODES nodes.
@@ -25,6 +25,7 @@
    body's numbers are those of the 2D loops they replace (a zero entry of
    A adds an exact zero: linear elasticity's r-z terms are its old ones). */
 #include "element.h"
+#include "bodyimpl.h"
 
 /* Each loop is written once with dim an argument, inlined where dim is the
    constant 2 or 3 (the public functions below choose), so that the

@@ -9,6 +9,7 @@
 #include <petscsf.h>
 #include "body.h"
 #include "element.h"
+#include "bodyimpl.h"
 
 static PetscErrorCode CreateBlockVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
 {

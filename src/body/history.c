@@ -27,6 +27,7 @@
 #include "history.h"
 #include "loads.h"
 #include "rigidbody.h"
+#include "bodyimpl.h"
 
 /* The conditions' displacement values (not the force-controlled
    components, whose value is the control's displacement) and the loads at
@@ -107,9 +108,9 @@ PetscErrorCode BodySetLoad(Body b, PetscReal lambda)
   b->loadWeight[0] = k > 1 ? 1.0 - t : 0.0;
   b->loadWeight[1] = t;
   b->loadFactor    = k > 1 ? 1.0 : t;
-  if (b->rigid) { /* its motion: the same weights on its translation's and rotation's stage ends */
+  if (b->ops.setload) { /* a rigid body's motion: the same weights on its translation's and rotation's stage ends */
     b->stage = k;
-    BodyRigidSetLoad(b);
+    PetscCall(b->ops.setload(b));
     PetscFunctionReturn(0);
   }
   if (k != b->stage) {
@@ -153,4 +154,20 @@ void BodyLoadResultant(Body b, PetscInt l, PetscReal f[3])
   const BodyLoad *L = &b->load[l];
 
   for (PetscInt d = 0; d < b->dim; ++d) f[d] = b->loadWeight[1] * L->force[d] + (b->stage > 1 ? b->loadWeight[0] * L->forceFrom[d] : 0.0);
+}
+
+/* Any stage's load, Dirichlet value or exact solution imposed that is not
+   zero. */
+PetscBool BodyIsLoaded(Body b)
+{
+  for (PetscInt l = 0; l < b->nload; ++l)
+    for (PetscInt st = 0; st < b->nstages; ++st)
+      if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0 || b->load[l].stageTraction[st][2] != 0) return PETSC_TRUE;
+  for (PetscInt j = 0; j < b->nbc; ++j) {
+    if (b->bc[j].exact) return PETSC_TRUE;
+    for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
+      for (PetscInt st = 0; st < b->nstages; ++st)
+        if (b->bc[j].stage[st][c] != 0) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
 }

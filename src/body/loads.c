@@ -51,6 +51,7 @@
 #include "loads.h"
 #include "stagedvalues.h"
 #include "options.h"
+#include "bodyimpl.h"
 
 static PetscErrorCode BodyLoadSetFromOptions(Body b, const char prefix[], PetscBool help, BodyLoad *L)
 {

@@ -9,6 +9,7 @@
    translations, three rotations), counted alike from a 6 x 6 Gram matrix
    (BodyCountFreeRigidModes). */
 #include "rigid.h"
+#include "bodyimpl.h"
 
 /* The rank of the n x n symmetric matrix M (Gaussian elimination with full
    pivoting, pivots below 1e-10 of its trace taken as zero). */
@@ -182,4 +183,30 @@ void BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y)
 PetscInt BodyRigidRank(const PetscReal M[9])
 {
   return RigidRankN(3, M);
+}
+
+PetscInt BodyGetNumRigidModes(Body b)
+{
+  if (b->rigid) return 0;
+  return b->dim == 3 ? 6 : 3;
+}
+
+PetscErrorCode BodyCheckHeld(Body b, PetscBool contact)
+{
+  PetscFunctionBeginUser;
+  if (b->ops.checkheld) PetscCall(b->ops.checkheld(b, contact));
+  PetscFunctionReturn(0);
+}
+
+/* An elastic body whose conditions leave a rigid motion free: frictionless
+   contact pushes it but does not hold it. */
+PetscErrorCode BodyCheckHeld_Elastic(Body b, PetscBool contact)
+{
+  PetscInt nfree;
+
+  PetscFunctionBeginUser;
+  PetscCall(BodyCountFreeRigidModes(b, &nfree));
+  if (!nfree) PetscFunctionReturn(0);
+  SETERRQ(b->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
+          contact ? " (frictionless contact pushes but does not hold it; a load pressing it on, -<body>_load, would)" : " and it is in no contact pair", b->name);
 }

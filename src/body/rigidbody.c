@@ -40,10 +40,12 @@
    of the conditions that hold the translation, as the reaction of an
    elastic body's Dirichlet group is the sum of dPi/du over its nodes. */
 #include "rigidbody.h"
+#include "history.h"
 #include "stagedvalues.h"
 #include "options.h"
 #include "mshcheck.h"
 #include "meshgen.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
 {
@@ -278,15 +280,17 @@ PetscErrorCode BodyRigidSetUp(Body b)
   PetscFunctionReturn(0);
 }
 
-void BodyRigidSetLoad(Body b)
+static PetscErrorCode BodySetLoad_Rigid(Body b)
 {
   BodyRigid      *r = b->rg;
   const PetscInt  k = b->stage;
   const PetscReal w0 = b->loadWeight[0], w1 = b->loadWeight[1];
 
+  PetscFunctionBeginUser;
   for (PetscInt c = 0; c < 2; ++c)
     if (!r->unknown[c]) r->t[c] = (k > 1 ? w0 * r->tEnd[k - 2][c] : 0.0) + w1 * r->tEnd[k - 1][c];
   if (!r->unknown[2]) r->theta = (k > 1 ? w0 * r->rotation[k - 2] : 0.0) + w1 * r->rotation[k - 1];
+  PetscFunctionReturn(0);
 }
 
 void BodyRigidSetUnknown(Body b, PetscInt q, PetscReal v)
@@ -463,4 +467,175 @@ PetscErrorCode BodyRigidDestroy(Body b)
   PetscCall(PetscFree2(b->rg->enodes, b->rg->etag));
   PetscCall(PetscFree(b->rg));
   PetscFunctionReturn(0);
+}
+
+/* Its curves and motion alone: no cells, no dofs. */
+static PetscErrorCode BodySetUp_Rigid(Body b, PetscInt partitioner, PetscBool partitionView)
+{
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  (void)partitioner;
+  (void)partitionView;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogStagePush(contactLog.mesh));
+  PetscCall(BodyRigidSetUp(b));
+  b->stage = 0;
+  PetscCall(BodySetLoad(b, (PetscReal)b->nstages)); /* the last stage's end, until the solve sets another */
+  PetscCall(PetscLogStagePop());
+  PetscCall(PetscTime(&t1));
+  b->tmesh += t1 - t0;
+  PetscFunctionReturn(0);
+}
+
+/* No elastic energy; the contact terms add its force. */
+static PetscErrorCode BodyComputeEnergyGradient_Rigid(Body b, Vec Xl, PetscReal *energy, Vec Gl)
+{
+  PetscFunctionBeginUser;
+  (void)Xl;
+  (void)Gl;
+  BodyRigidZeroForce(b);
+  *energy = 0.0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BodyComputeReactions_Rigid(Body b, Vec Gl)
+{
+  PetscFunctionBeginUser;
+  (void)Gl;
+  PetscCall(BodyRigidComputeReactions(b));
+  PetscFunctionReturn(0);
+}
+
+/* Its unknowns are held by its contacts, or by nothing. */
+static PetscErrorCode BodyCheckHeld_Rigid(Body b, PetscBool contact)
+{
+  const BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < 3 && !contact; ++q)
+    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
+               q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");
+  PetscFunctionReturn(0);
+}
+
+/* Its motion and the contact's force on it. */
+static PetscErrorCode BodyViewSolution_Rigid(Body b, PetscBool axisymmetric)
+{
+  const BodyRigid *r = b->rg;
+  PetscReal        f[2], mo;
+
+  PetscFunctionBeginUser;
+  BodyRigidContactForce(b, f, &mo);
+  if (axisymmetric) PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", b->name, (double)r->t[1], (double)f[1]));
+  else PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", b->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
+  PetscFunctionReturn(0);
+}
+
+/* Its unknowns (rigidbody.h): a force-controlled component with its
+   condition's force, the others (held by the contact alone) anchors of
+   force 0. */
+static PetscErrorCode BodyGetControls_Rigid(Body b, PetscInt *n, BodyControl ctl[])
+{
+  const BodyRigid *r = b->rg;
+
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < 3; ++q) {
+    BodyControl *k;
+    if (!r->unknown[q]) continue;
+    k         = &ctl[(*n)++];
+    k->bc     = r->qbc[q];
+    k->c      = q;
+    k->force  = r->qforce[q];
+    k->anchor = (PetscBool)!r->control[q];
+    k->scale  = k->force != 0.0 ? PetscAbsReal(k->force) : 1.0;
+    k->L      = r->L;
+    k->kref   = b->axisym ? r->L : 1.0;
+    k->motion = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The motion itself, whatever the load factor. */
+static PetscErrorCode BodySetControlValue_Rigid(Body b, PetscInt bc, PetscInt q, PetscReal U)
+{
+  PetscFunctionBeginUser;
+  (void)bc;
+  BodyRigidSetUnknown(b, q, U);
+  PetscFunctionReturn(0);
+}
+
+static PetscReal BodyGetControlForce_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)bc;
+  return BodyRigidControlForce(b, q);
+}
+
+/* dPi/dq: the contact's force, or its moment over L. */
+static PetscReal BodyGetControlReaction_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)bc;
+  return BodyRigidUnknownGradient(b, q);
+}
+
+static const char *BodyGetControlComponent_Rigid(Body b, PetscInt bc, PetscInt q)
+{
+  (void)b;
+  (void)bc;
+  return q == 2 ? "rotation" : (q ? "y" : "x");
+}
+
+void BodyRigidBorderBegin(Body b, PetscInt q, Vec B)
+{
+  b->rg->B[q] = B;
+  PetscArrayzero(b->rg->D, 9);
+}
+
+PetscErrorCode BodyRigidBorderSum(Body b)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, b->rg->D, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscFunctionReturn(0);
+}
+
+void BodyRigidBorderEnd(Body b, PetscInt q)
+{
+  b->rg->B[q] = NULL;
+}
+
+PetscReal BodyRigidBorderCoupling(Body b, PetscInt q, PetscInt s)
+{
+  const BodyRigid *r = b->rg;
+
+  return r->D[3 * q + s] + (q == 2 && s == 2 ? r->curl / PetscSqr(r->L) : 0.0);
+}
+
+PetscReal BodyRigidGetLength(Body b)
+{
+  return b->rg->L;
+}
+
+void BodyRigidSetOps(Body b)
+{
+  BodyOps *ops = &b->ops;
+
+  PetscMemzero(ops, sizeof(*ops));
+  ops->setup             = BodySetUp_Rigid;
+  ops->energygradient    = BodyComputeEnergyGradient_Rigid;
+  ops->reactions         = BodyComputeReactions_Rigid;
+  ops->checkheld         = BodyCheckHeld_Rigid;
+  ops->viewsolution      = BodyViewSolution_Rigid;
+  ops->groupedges        = BodyRigidGroupEdgesAsSurface;
+  ops->boundaryedgesat   = BodyRigidBoundaryEdgesAt;
+  ops->mapnodes          = BodyRigidMapNodes;
+  ops->nodedisplacements = BodyRigidNodeDisplacements;
+  ops->addnodeforces     = BodyRigidAddNodeForces;
+  ops->addsurfacehessian = BodyRigidAddHessian;
+  ops->getcontrols       = BodyGetControls_Rigid;
+  ops->setcontrol        = BodySetControlValue_Rigid;
+  ops->controlforce      = BodyGetControlForce_Rigid;
+  ops->controlreaction   = BodyGetControlReaction_Rigid;
+  ops->controlcomponent  = BodyGetControlComponent_Rigid;
+  ops->setload           = BodySetLoad_Rigid;
+  ops->destroy           = BodyRigidDestroy;
 }

@@ -4,6 +4,7 @@
    loads, a rigid body's motion) call this; history.c puts the body at a
    load parameter from what they stored. */
 #include "stagedvalues.h"
+#include "bodyimpl.h"
 
 void LoadHistoryLocate(PetscInt S, PetscReal lambda, PetscInt *k, PetscReal *t)
 {

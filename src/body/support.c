@@ -28,6 +28,7 @@
    the ring). Rotations are not checked (a moment the contacts cannot react
    is left to the solve). */
 #include "support.h"
+#include "bodyimpl.h"
 
 #define SUPPORT_MARGIN 1e-6
 

@@ -13,6 +13,7 @@
    reference coordinates. */
 #include "transfer.h"
 #include "gather.h"
+#include "bodyimpl.h"
 
 /* The old mesh's cells on every rank: a record of R = 8 + 2 nb reals per
    cell (4 vertices, the last repeated in a triangle, then the nb nodal

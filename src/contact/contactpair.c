@@ -160,21 +160,24 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
       spec.body[s] = -1;
       for (PetscInt b = 0; b < nbodies; ++b) {
         PetscBool same;
-        PetscCall(PetscStrcmp(bodies[b]->name, surf[s], &same));
+        PetscCall(PetscStrcmp(BodyGetName(bodies[b]), surf[s], &same));
         if (same) spec.body[s] = b;
       }
       PetscCheck(spec.body[s] >= 0, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: no body named '%s'", prefix, surf[s]);
       PetscCall(PetscStrncpy(spec.group[s], colon + 1, sizeof(spec.group[s])));
       PetscCall(PetscFree(surf[s]));
     }
-    PetscCheck(spec.body[0] != spec.body[1], comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: both surfaces are on body %s: a pair joins two bodies (self-contact is not modelled)", prefix, bodies[spec.body[0]]->name);
+    PetscCheck(spec.body[0] != spec.body[1], comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: both surfaces are on body %s: a pair joins two bodies (self-contact is not modelled)", prefix, BodyGetName(bodies[spec.body[0]]));
     PetscCheck(!spec.mirror || !PetscIsInfOrNanReal(spec.mirrorY), comm, PETSC_ERR_USER_INPUT, "option -%smirror_y: must be a finite number, got %g", prefix, (double)spec.mirrorY);
     for (PetscInt s = 0; s < 2; ++s) PetscCheck(!spec.hertz || (spec.radii[s] >= 0 && !PetscIsInfOrNanReal(spec.radii[s])), comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: radius %g must be >= 0", prefix, (double)spec.radii[s]);
     PetscCheck(!spec.hertz || spec.radii[0] > 0 || spec.radii[1] > 0, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: at least one surface must be curved", prefix);
     {
       const Body b0 = bodies[spec.body[0]], b1 = bodies[spec.body[1]];
-      spec.Estar    = 1.0 / ((1.0 - b0->nu * b0->nu) / b0->E + (1.0 - b1->nu * b1->nu) / b1->E);
-      spec.axisym   = b0->axisym;
+      PetscReal  E0, nu0, E1, nu1;
+      BodyGetElasticConstants(b0, &E0, &nu0);
+      BodyGetElasticConstants(b1, &E1, &nu1);
+      spec.Estar = 1.0 / ((1.0 - nu0 * nu0) / E0 + (1.0 - nu1 * nu1) / E1);
+      spec.axisym = BodyIsAxisymmetric(b0);
     }
     PetscCheck(!spec.axisym || !spec.mirror, comm, PETSC_ERR_USER_INPUT, "option -%smirror_y: an axisymmetric scene is not mirrored (its axis is x = 0)", prefix);
     if (spec.hertz) {

@@ -181,8 +181,10 @@ static PetscReal ContactDundursBeta(Body a, Body b)
   Body      ab[2] = {a, b};
 
   for (PetscInt k = 0; k < 2; ++k) {
-    const PetscReal nu = ab[k]->nu, G = ab[k]->E / (2.0 * (1.0 + nu));
-    if (ab[k]->rigid || !(G > 0)) continue;
+    PetscReal E, nu, G;
+    BodyGetElasticConstants(ab[k], &E, &nu);
+    G = E / (2.0 * (1.0 + nu));
+    if (!(G > 0) || PetscIsInfReal(G)) continue; /* a rigid body (E = inf): no compliance */
     n += (k == 0 ? 1.0 : -1.0) * (1.0 - 2.0 * nu) / G;
     d += 2.0 * (1.0 - nu) / G;
   }
@@ -197,15 +199,15 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
-  else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, bodies[spec->body[0]]->name, spec->group[0], bodies[spec->body[1]]->name, spec->group[1]));
+  if (spec->kpAuto) PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g, auto: %g E*/h, E* = %g, h = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, (double)CONTACT_PENALTY_AUTO, (double)spec->Estar, (double)spec->kpH, BodyGetName(bodies[spec->body[0]]), spec->group[0], BodyGetName(bodies[spec->body[1]]), spec->group[1]));
+  else PetscCall(PetscPrintf(comm, "Contact pair %s (%s, k_p = %g): %s:%s against %s:%s\n", spec->name, spec->formulation, (double)R->kp, BodyGetName(bodies[spec->body[0]]), spec->group[0], BodyGetName(bodies[spec->body[1]]), spec->group[1]));
   PetscCall(ContactForceString(R->resultant, spec->axisym, fs[0], sizeof(fs[0])));
   if (R->friction) { /* the whole force, and its parts */
     const PetscReal whole[2] = {R->resultant[0] + R->shearForce[0], R->resultant[1] + R->shearForce[1]};
     char            ws[128];
     PetscCall(ContactForceString(whole, spec->axisym, ws, sizeof(ws)));
-    PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s = pressure %s + shear (%.6e, %.6e), P = %.6e\n", bodies[spec->body[0]]->name, spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", ws, fs[0], (double)R->shearForce[0], (double)R->shearForce[1], (double)R->P));
-  } else PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", bodies[spec->body[0]]->name, spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
+    PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s = pressure %s + shear (%.6e, %.6e), P = %.6e\n", BodyGetName(bodies[spec->body[0]]), spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", ws, fs[0], (double)R->shearForce[0], (double)R->shearForce[1], (double)R->P));
+  } else PetscCall(PetscPrintf(comm, "  contact force on %s%s: %s, P = %.6e\n", BodyGetName(bodies[spec->body[0]]), spec->mirror ? " (with its mirror image)" : spec->axisym ? " (the whole circle's; radial 0 by symmetry)" : "", fs[0], (double)R->P));
   PetscCall(PetscPrintf(comm, "  largest penetration %.6e (p_max/k_p = %.6e)\n", (double)R->maxPen, (double)(R->femPmax / R->kp)));
   if (R->friction) {
     PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e); the whole force %.6e along the contact zone's normal, Q = %.6e across, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)R->normalLoad, (double)R->tangentialLoad, (double)(R->normalLoad > 0 ? R->tangentialLoad / (spec->friction * R->normalLoad) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
@@ -231,13 +233,13 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
           last = i;
         }
       if (!S->slave && !S->n) {
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s:%s: master only\n", bodies[spec->body[s]]->name, spec->group[s]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s:%s: master only\n", BodyGetName(bodies[spec->body[s]]), spec->group[s]));
         continue;
       }
-      if (S->slave) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc));
+      if (S->slave) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s (centre s = %.6g):\n", BodyGetName(bodies[spec->body[s]]), spec->group[s], (double)S->fig.sc));
       else {
         PetscCall(ContactForceString(S->force, spec->axisym, fs[0], sizeof(fs[0])));
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's pressure at its closest points (centre s = %.6g, peak %.6g, force %s):\n", bodies[spec->body[s]]->name, spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, fs[0]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "  pressure on %s:%s, master: the slave's pressure at its closest points (centre s = %.6g, peak %.6g, force %s):\n", BodyGetName(bodies[spec->body[s]]), spec->group[s], (double)S->fig.sc, (double)S->fig.pmax, fs[0]));
       }
       if (first < 0) {
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "    no contact\n"));
@@ -262,7 +264,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
     const PetscReal *a = R->side[0].force, *b = R->side[1].force, na = PetscSqrtReal(a[0] * a[0] + a[1] * a[1]);
     PetscCall(ContactForceString(a, spec->axisym, fs[0], sizeof(fs[0])));
     PetscCall(ContactForceString(b, spec->axisym, fs[1], sizeof(fs[1])));
-    PetscCall(PetscPrintf(comm, "  nodal contact forces%s: %s:%s %s, %s:%s %s; |sum| / |force| = %.1e\n", spec->mirror ? " (the half model)" : "", bodies[spec->body[0]]->name, spec->group[0], fs[0], bodies[spec->body[1]]->name, spec->group[1], fs[1], (double)(na > 0 ? PetscSqrtReal(PetscSqr(a[0] + b[0]) + PetscSqr(a[1] + b[1])) / na : 0.0)));
+    PetscCall(PetscPrintf(comm, "  nodal contact forces%s: %s:%s %s, %s:%s %s; |sum| / |force| = %.1e\n", spec->mirror ? " (the half model)" : "", BodyGetName(bodies[spec->body[0]]), spec->group[0], fs[0], BodyGetName(bodies[spec->body[1]]), spec->group[1], fs[1], (double)(na > 0 ? PetscSqrtReal(PetscSqr(a[0] + b[0]) + PetscSqr(a[1] + b[1])) / na : 0.0)));
   }
   if (spec->hertz && !(R->P > 0)) PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
   else if (spec->hertz) {
@@ -329,7 +331,7 @@ PetscErrorCode ContactReportWriteJSON(const ContactReport *R, const ContactPairS
   fprintf(fp, ", \"surfaces\": [");
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S = &R->side[s];
-    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"slave\": %s", s ? ", " : "", bodies[spec->body[s]]->name, spec->group[s], (int)S->nedges, S->slave ? "true" : "false");
+    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"edges\": %d, \"slave\": %s", s ? ", " : "", BodyGetName(bodies[spec->body[s]]), spec->group[s], (int)S->nedges, S->slave ? "true" : "false");
     ContactJSONKeyReal(fp, ", ", "pmax", S->fig.pmax);
     ContactJSONKeyReal(fp, ", ", "a", S->fig.a);
     ContactJSONKeyReal(fp, ", ", "a_moment", S->fig.am);
@@ -384,7 +386,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
     const PetscInt     cols[7]  = {CONTACT_ROW_S, CONTACT_ROW_X, CONTACT_ROW_XC, CONTACT_ROW_GAP, CONTACT_ROW_P, CONTACT_ROW_W, CONTACT_ROW_FX}, bs[7] = {1, 2, 2, 1, 1, 1, 2};
     const PetscInt     n        = rank ? 0 : S->n, nsets = R->nodal ? 7 : 6; /* nodal forces: nodes only */
 
-    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", spec->name, bodies[spec->body[s]]->name, spec->group[s]));
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", spec->name, BodyGetName(bodies[spec->body[s]]), spec->group[s]));
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     for (PetscInt k = 0; k < nsets; ++k) {
       Vec          vec;
@@ -438,7 +440,7 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *R, const ContactPairS
         ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, lc[1] == 3 ? "Edge_3" : "Polyline"));
       }
     }
-    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, bodies[spec->body[s]]->name));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, BodyGetName(bodies[spec->body[s]])));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, spec->group[s]));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "centre", PETSC_REAL, &S->fig.sc));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "zone_start", PETSC_REAL, &S->fig.zone[0]));
@@ -489,7 +491,7 @@ PetscErrorCode ContactReportWriteXDMF(const ContactReport *R, const ContactPairS
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) {
     const ContactSide *S = &R->side[s];
-    const char        *body = bodies[spec->body[s]]->name, *grp = spec->group[s];
+    const char        *body = BodyGetName(bodies[spec->body[s]]), *grp = spec->group[s];
     PetscInt           nc, nper;
     char               g[4 * CONTACT_NAME_LEN], path[PETSC_MAX_PATH_LEN];
 

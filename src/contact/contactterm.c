@@ -65,7 +65,7 @@ static PetscErrorCode ContactTermCheckOverlap(ContactTerm *b, Body bodies[])
   }
   if (deepest >= 0 && depth > CONTACT_OVERLAP_WARN * hmean) {
     const ContactSurface *S = &b->S[deepest], *M = &b->S[1 - deepest];
-    PetscCall(PetscFPrintf(bodies[S->body]->comm, PETSC_STDERR, "contact: warning: pair %s: before any load, surface %s of body %s lies inside body %s by up to %.3g, %.3g times the contact edges' mean length %.3g: an interference fit is solved as given; if it is not one, check the bodies' geometry\n", b->spec.name, S->group, bodies[S->body]->name, bodies[M->body]->name, (double)depth, (double)(depth / hmean), (double)hmean));
+    PetscCall(PetscFPrintf(BodyGetComm(bodies[S->body]), PETSC_STDERR, "contact: warning: pair %s: before any load, surface %s of body %s lies inside body %s by up to %.3g, %.3g times the contact edges' mean length %.3g: an interference fit is solved as given; if it is not one, check the bodies' geometry\n", b->spec.name, S->group, BodyGetName(bodies[S->body]), BodyGetName(bodies[M->body]), (double)depth, (double)(depth / hmean), (double)hmean));
   }
   PetscCall(PetscInfo(NULL, "pair %s: largest overlap before any load %g (edges' mean length %g)\n", b->spec.name, (double)depth, (double)hmean));
   PetscFunctionReturn(0);
@@ -77,13 +77,11 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
 
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < 2; ++s) PetscCall(ContactSurfaceSetUp(&b->S[s], bodies[b->S[s].body], b->spec.name, 2.0 * blend)); /* blend width in eta */
-  PetscCheck(!bodies[b->S[0].body]->rigid || !bodies[b->S[1].body]->rigid, bodies[b->S[0].body]->comm, PETSC_ERR_USER_INPUT, "contact pair %s: bodies %s and %s are both rigid: a contact between them has no elastic side", b->spec.name, bodies[b->S[0].body]->name, bodies[b->S[1].body]->name);
-  for (PetscInt s = 0; s < 2; ++s)
-    if (bodies[b->S[s].body]->rigid) {
-      PetscCall(ContactSurfaceOrientRigid(&b->S[s], bodies[b->S[s].body], &b->S[1 - s], b->spec.name));
-      b->rigid     = bodies[b->S[s].body];
-      b->rigidSide = s;
-    }
+  PetscCheck(BodyHasCells(bodies[b->S[0].body]) || BodyHasCells(bodies[b->S[1].body]), BodyGetComm(bodies[b->S[0].body]), PETSC_ERR_USER_INPUT, "contact pair %s: bodies %s and %s are both rigid: a contact between them has no elastic side", b->spec.name, BodyGetName(bodies[b->S[0].body]), BodyGetName(bodies[b->S[1].body]));
+  for (PetscInt s = 0; s < 2; ++s) {
+    b->body[s] = bodies[b->S[s].body];
+    if (!BodyHasCells(b->body[s])) PetscCall(ContactSurfaceOrientRigid(&b->S[s], b->body[s], &b->S[1 - s], b->spec.name)); /* lines alone: oriented against the partner */
+  }
   for (PetscInt s = 0; s < 2; ++s) {
     ContactSurface *S = &b->S[s];
     if (b->spec.mirror) PetscCall(ContactSurfaceSetMirror(S, b->spec.mirrorY));
@@ -95,7 +93,7 @@ PetscErrorCode ContactTermSetUpSurfaces(ContactTerm *b, Body bodies[], PetscReal
   PetscCall(ContactTermAddSupport(b, bodies));
   if (!b->spec.kpAuto && ContactPairPenaltyStiffness(&b->spec) < CONTACT_PENALTY_SOFT) {
     const ContactPairSpec *spec = &b->spec;
-    PetscCall(PetscFPrintf(bodies[b->S[0].body]->comm, PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)ContactPairPenaltyStiffness(spec), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));
+    PetscCall(PetscFPrintf(BodyGetComm(bodies[b->S[0].body]), PETSC_STDERR, "contact: warning: pair %s: k_p = %g is soft for its mesh (k_p h / E* = %.3g with h = %.3g, E* = %.6g): its error in the force and the pressure is likely as large as the mesh's; -contact_%s_penalty auto gives %.3g\n", spec->name, (double)spec->kp, (double)ContactPairPenaltyStiffness(spec), (double)spec->kpH, (double)spec->Estar, spec->name, (double)(CONTACT_PENALTY_AUTO * spec->Estar / spec->kpH)));
   }
   PetscFunctionReturn(0);
 }
@@ -114,7 +112,7 @@ PetscErrorCode ContactTermUpdate(ContactTerm *b, Body bodies[], PetscLogEvent se
     PetscCall(ContactSurfaceUpdateCoordinates(&b->S[s], bodies[b->S[s].body], &c));
     moved = (PetscBool)(moved || c);
   }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &moved, 1, MPIU_BOOL, MPI_LOR, bodies[b->S[0].body]->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &moved, 1, MPIU_BOOL, MPI_LOR, BodyGetComm(bodies[b->S[0].body])));
   moved = (PetscBool)(moved || !b->built);
   if (moved) {
     PetscCall(PetscLogEventBegin(search, 0, 0, 0, 0));
@@ -142,7 +140,7 @@ PetscErrorCode ContactTermAddHessian(const ContactTerm *b, Mat H, PetscInt n, co
 {
   PetscFunctionBeginUser;
   PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
-  if (b->rigid) PetscCall(BodyRigidAddHessian(b->rigid, b->S[b->rigidSide].x, n, idx, K));
+  for (PetscInt s = 0; s < 2; ++s) PetscCall(BodyAddSurfaceHessian(b->body[s], b->S[s].x, n, idx, K)); /* a rigid body's part: its unknowns' border */
   PetscFunctionReturn(0);
 }
 

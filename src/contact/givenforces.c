@@ -59,14 +59,14 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
     const Body B = bodies[b->S[s].body];
     PetscReal  F[CONTACT_MAX_STAGES][2], n[2];
 
-    if (B->npairs != 1 || !BodyGivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
-    for (PetscInt k = 0; k < B->nstages; ++k) {
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
+    for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
       const PetscReal Fn = F[k][0] * n[0] + F[k][1] * n[1];
       const PetscReal Ft = PetscSqrtReal(PetscSqr(F[k][0] - Fn * n[0]) + PetscSqr(F[k][1] - Fn * n[1]));
 
-      PetscCheck(Ft <= mu * PetscAbsReal(Fn) * (1.0 + 1e-12), B->comm, PETSC_ERR_USER_INPUT,
+      PetscCheck(Ft <= mu * PetscAbsReal(Fn) * (1.0 + 1e-12), BodyGetComm(B), PETSC_ERR_USER_INPUT,
                  "pair %s: the forces given on body %s at stage %" PetscInt_FMT " are %g along %s:%s and %g across it, more than friction holds (mu = %g times %g = %g; Q/(mu P) = %.6g): it would slide without end; lower the tangential force or raise -contact_%s_friction",
-                 spec->name, B->name, k + 1, (double)Ft, bodies[b->S[1 - s].body]->name, b->S[1 - s].group, (double)PetscAbsReal(Fn), (double)mu, (double)PetscAbsReal(Fn), (double)(mu * PetscAbsReal(Fn)), (double)(Ft / (mu * PetscAbsReal(Fn))), spec->name);
+                 spec->name, BodyGetName(B), k + 1, (double)Ft, BodyGetName(bodies[b->S[1 - s].body]), b->S[1 - s].group, (double)PetscAbsReal(Fn), (double)mu, (double)PetscAbsReal(Fn), (double)(mu * PetscAbsReal(Fn)), (double)(Ft / (mu * PetscAbsReal(Fn))), spec->name);
     }
   }
   PetscFunctionReturn(0);

@@ -1569,9 +1569,10 @@ static void MortarChooseSlaves(Mortar *m, Body bodies[])
   PetscBool   on[2];
 
   for (PetscInt s = 0; s < 2; ++s) {
-    const Body b = bodies[m->b.S[s].body];
-    Es[s]        = b->E / (1.0 - b->nu * b->nu);
-    on[s]        = MortarEndsOn(&m->b.S[s], &m->b.S[1 - s]);
+    PetscReal E, nu;
+    BodyGetElasticConstants(bodies[m->b.S[s].body], &E, &nu);
+    Es[s] = E / (1.0 - nu * nu);
+    on[s] = MortarEndsOn(&m->b.S[s], &m->b.S[1 - s]);
   }
   switch ((MortarSlave)m->slaveChoice) {
   case MORTAR_SLAVE_AUTO:
@@ -1597,7 +1598,7 @@ static void MortarChooseSlaves(Mortar *m, Body bodies[])
     break;
   }
   m->c = 1.0 / (m->slave[0] + m->slave[1]);
-  if (why) (void)PetscInfo(NULL, "pair %s: slave surface %s:%s (-contact_mortar_slave auto: %s)\n", m->b.spec.name, bodies[m->b.S[m->slave[0] ? 0 : 1].body]->name, m->b.S[m->slave[0] ? 0 : 1].group, why);
+  if (why) (void)PetscInfo(NULL, "pair %s: slave surface %s:%s (-contact_mortar_slave auto: %s)\n", m->b.spec.name, BodyGetName(bodies[m->b.S[m->slave[0] ? 0 : 1].body]), m->b.S[m->slave[0] ? 0 : 1].group, why);
 }
 
 static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
@@ -1836,20 +1837,20 @@ static PetscErrorCode MortarWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v
 
   PetscFunctionBeginUser;
   PetscCall(ContactReportWriteHDF5(&m->b.report, &m->b.spec, bodies, v));
-  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, bodies[m->b.S[s].body]->name, m->b.S[s].group));
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, BodyGetName(bodies[m->b.S[s].body]), m->b.S[s].group));
   PetscCall(PetscViewerHDF5PushGroup(v, group));
   PetscCall(FrictionWriteHDF5(m->fr, m->side[s].A, v));
   PetscCall(PetscViewerHDF5PopGroup(v));
   if (m->fr) {
     PetscInt         n;
     const PetscReal *c;
-    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, bodies[m->b.S[1 - s].body]->name, m->b.S[1 - s].group));
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->b.spec.name, BodyGetName(bodies[m->b.S[1 - s].body]), m->b.S[1 - s].group));
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     PetscCall(MortarWriteMasterShear(m, 1 - s, v, t->comm));
     PetscCall(PetscViewerHDF5PopGroup(v));
     PetscCall(FrictionGetStages(m->fr, &n, &c));
     for (PetscInt k = 1; k < n; ++k) { /* -load_stages: each earlier stage's end (the last is the sets above) */
-      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/contact/%s/%s_%s", (int)k, m->b.spec.name, bodies[m->b.S[s].body]->name, m->b.S[s].group));
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/contact/%s/%s_%s", (int)k, m->b.spec.name, BodyGetName(bodies[m->b.S[s].body]), m->b.S[s].group));
       PetscCall(PetscViewerHDF5PushGroup(v, group));
       PetscCall(FrictionWriteStageHDF5(m->fr, k, m->side[s].A, v));
       PetscCall(PetscViewerHDF5PopGroup(v));

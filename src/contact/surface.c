@@ -1,7 +1,8 @@
-/* A contact surface: extraction of a physical curve's edges from the body's
-   DMPlex, replication on every rank, node numbering, the walk that gives the
-   arc position, and the exchange of the surface's coordinates and gradient
-   with the body's local vectors.
+/* A contact surface: a physical curve's edges as the body gives them
+   (BodyGetGroupEdges: an elastic body's from its DMPlex, a rigid body's from
+   its lines), replication on every rank, node numbering, the walk that gives
+   the arc position, and the exchange of the surface's coordinates and
+   gradient with the body (BodyGetNodeDisplacements, BodyAddNodeForces).
 
    Parallel. Surfaces are curves, small beside the bodies: every rank holds
    the whole surface (nodes, edges, current coordinates gathered at each
@@ -23,76 +24,7 @@ static PetscBool NodeBefore(const ContactSurface *S, PetscInt a, PetscInt b)
   return S->X[2 * a + 1] < S->X[2 * b + 1] ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* This rank's owned edges of the surface's physical group: *n of them, each
-   with its nodes' global numbers (eid, 3 per edge) and, in erl (7 per edge),
-   their reference coordinates and the outward normal's sign. */
-static PetscErrorCode ContactSurfaceOwnedEdges(ContactSurface *S, Body b, const char pair[], PetscInt *n, PetscInt **eid, PetscReal **erl)
-{
-  DMLabel         faces;
-  IS              is = NULL;
-  PetscInt        np = 0, k = 0;
-  const PetscInt *pts = NULL;
-  char            what[2 * CONTACT_NAME_LEN];
-
-  PetscFunctionBeginUser;
-  PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
-  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
-  if (faces) PetscCall(DMLabelGetStratumIS(faces, S->tag, &is));
-  if (is) {
-    PetscCall(ISGetLocalSize(is, &np));
-    PetscCall(ISGetIndices(is, &pts));
-  }
-  PetscCall(PetscMalloc2(3 * np + 1, eid, 7 * np + 1, erl));
-  PetscCall(PetscSNPrintf(what, sizeof(what), "contact pair %s", pair));
-  for (PetscInt i = 0; i < np; ++i) {
-    const PetscInt e = pts[i];
-    PetscInt       nodes[3];
-    PetscReal     *x = &(*erl)[7 * k];
-
-    if (!b->owned[e - b->pStart]) continue;
-    PetscCall(BodyEdgeNodes(b, e, nodes, x));
-    for (PetscInt j = 0; j < 3; ++j) PetscCall(BodyGetNodeNumber(b, nodes[j], &(*eid)[3 * k + j]));
-    PetscCall(BodyEdgeOutwardSign(b, e, x, what, S->group, &x[6]));
-    k++;
-  }
-  *n = k;
-  if (is) {
-    PetscCall(ISRestoreIndices(is, &pts));
-    PetscCall(ISDestroy(&is));
-  }
-  PetscFunctionReturn(0);
-}
-
-/* A rigid body's lines of the group, given once, by rank 0 (every rank holds
-   the body's curves), with the sign +1: the outward side is chosen once the
-   partner surface is known (ContactSurfaceOrientRigid). */
-static PetscErrorCode ContactSurfaceRigidEdges(ContactSurface *S, Body b, PetscInt *n, PetscInt **eid, PetscReal **erl)
-{
-  const BodyRigid *r = b->rg;
-  PetscMPIInt      rank;
-  PetscInt         ne, *edges;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  PetscCall(BodyGetPhysicalTag(b, S->group, 1, &S->tag));
-  PetscCall(BodyRigidGroupEdges(b, S->tag, &ne, &edges));
-  if (rank) ne = 0;
-  PetscCall(PetscMalloc2(3 * ne + 1, eid, 7 * ne + 1, erl));
-  for (PetscInt k = 0; k < ne; ++k) {
-    const PetscInt *en = &r->enodes[3 * edges[k]];
-    for (PetscInt j = 0; j < 3; ++j) {
-      (*eid)[3 * k + j]         = r->ids[en[j]];
-      (*erl)[7 * k + 2 * j]     = r->X[2 * en[j]];
-      (*erl)[7 * k + 2 * j + 1] = r->X[2 * en[j] + 1];
-    }
-    (*erl)[7 * k + 6] = 1.0;
-  }
-  *n = ne;
-  PetscCall(PetscFree(edges));
-  PetscFunctionReturn(0);
-}
-
-/* Every rank's owned edges gathered on every rank (in rank order): the
+/* Every rank's edges (BodyGetGroupEdges) gathered on every rank (in rank order): the
    surface's nodes (sorted unique global numbers), their reference
    coordinates, each edge's nodes and sign, and which edges are this rank's. */
 static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const char pair[], PetscInt n, const PetscInt eid[], const PetscReal erl[])
@@ -102,14 +34,14 @@ static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const
   PetscReal   *allr;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(b->comm, &size));
-  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(BodyGetComm(b), &size));
+  PetscCallMPI(MPI_Comm_rank(BodyGetComm(b), &rank));
   PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
-  PetscCallMPI(MPI_Allgather(&cntl, 1, MPI_INT, cnt, 1, MPI_INT, b->comm));
+  PetscCallMPI(MPI_Allgather(&cntl, 1, MPI_INT, cnt, 1, MPI_INT, BodyGetComm(b)));
   disp[0] = 0;
   for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
   S->ne = disp[size];
-  PetscCheck(S->ne > 0, b->comm, PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: surface '%s' of body %s has no edges", pair, S->group, b->name);
+  PetscCheck(S->ne > 0, BodyGetComm(b), PETSC_ERR_FILE_UNEXPECTED, "contact pair %s: surface '%s' of body %s has no edges", pair, S->group, BodyGetName(b));
   PetscCall(PetscMalloc4(size, &c3, size, &d3, size, &c7, size, &d7));
   for (PetscMPIInt r = 0; r < size; ++r) {
     c3[r] = 3 * cnt[r];
@@ -118,8 +50,8 @@ static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const
     d7[r] = 7 * disp[r];
   }
   PetscCall(PetscMalloc2(3 * S->ne, &alle, 7 * S->ne, &allr));
-  PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, b->comm));
-  PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, b->comm));
+  PetscCallMPI(MPI_Allgatherv(eid, 3 * cntl, MPIU_INT, alle, c3, d3, MPIU_INT, BodyGetComm(b)));
+  PetscCallMPI(MPI_Allgatherv(erl, 7 * cntl, MPIU_REAL, allr, c7, d7, MPIU_REAL, BodyGetComm(b)));
   PetscCall(PetscFree4(c3, d3, c7, d7));
   /* surface nodes: sorted unique global numbers */
   nall = 3 * S->ne;
@@ -145,51 +77,10 @@ static PetscErrorCode ContactSurfaceGatherEdges(ContactSurface *S, Body b, const
   PetscCall(PetscMalloc1(n + 1, &S->ownEdges));
   S->nown = n;
   for (PetscInt k = 0; k < n; ++k) S->ownEdges[k] = disp[rank] + k;
-  PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: %" PetscInt_FMT " edges, %" PetscInt_FMT " in this rank's cells\n", pair, S->group, b->name, S->ne, n));
+  PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: %" PetscInt_FMT " edges, %" PetscInt_FMT " in this rank's cells\n", pair, S->group, BodyGetName(b), S->ne, n));
   PetscCall(PetscFree2(alle, allr));
   PetscCall(PetscFree2(cnt, disp));
   PetscCall(PetscArraycpy(S->x, S->X, 2 * S->nn));
-  PetscFunctionReturn(0);
-}
-
-/* The surface nodes among this rank's owned points (locNode, with their
-   offsets in the body's local vector, locOff), and every node's indices in
-   the joined vector (big, on every rank). */
-static PetscErrorCode ContactSurfaceMapNodes(ContactSurface *S, Body b)
-{
-  PetscSection s;
-  PetscInt    *bigl, k = 0;
-
-  PetscFunctionBeginUser;
-  if (b->rigid) { /* no dofs: the nodes follow the body's motion */
-    PetscCall(PetscMalloc2(1, &S->locNode, 1, &S->locOff));
-    S->nloc = 0;
-    for (PetscInt j = 0; j < S->nn; ++j)
-      for (PetscInt d = 0; d < 2; ++d) S->big[2 * j + d] = ContactRigidDof(j, d); /* through the body's motion (rigidbody.h) */
-    PetscFunctionReturn(0);
-  }
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(PetscMalloc2(b->pEnd - b->pStart, &S->locNode, b->pEnd - b->pStart, &S->locOff));
-  PetscCall(PetscMalloc1(2 * S->nn, &bigl));
-  for (PetscInt i = 0; i < 2 * S->nn; ++i) bigl[i] = -2;
-  for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
-    PetscInt dof, id, loc, off;
-    if (!b->owned[pt - b->pStart]) continue;
-    PetscCall(PetscSectionGetDof(s, pt, &dof));
-    if (!dof) continue;
-    PetscCall(BodyGetNodeNumber(b, pt, &id));
-    PetscCall(PetscFindInt(id, S->nn, S->nodeId, &loc));
-    if (loc < 0) continue;
-    PetscCall(PetscSectionGetOffset(s, pt, &off));
-    S->locNode[k]     = loc;
-    S->locOff[k]      = off;
-    bigl[2 * loc]     = b->l2b[off];
-    bigl[2 * loc + 1] = b->l2b[off + 1];
-    k++;
-  }
-  S->nloc = k;
-  PetscCall(MPIU_Allreduce(bigl, S->big, 2 * S->nn, MPIU_INT, MPI_MAX, b->comm));
-  PetscCall(PetscFree(bigl));
   PetscFunctionReturn(0);
 }
 
@@ -304,55 +195,46 @@ static PetscReal ContactSurfaceEndTurn(const ContactSurface *S, PetscInt e, Pets
   return PetscAtan2Real(t2[0] * nin[0] + t2[1] * nin[1], t2[0] * tout[0] + t2[1] * tout[1]);
 }
 
+/* BodyBoundaryEdgesAt's callback: the turn at end node v to the body's edge
+   xf through it, into turn[v]. */
+typedef struct {
+  const ContactSurface *S;
+  PetscReal            *turn;
+} EndTurnCtx;
+
+static void ContactSurfaceEndTurnAt(void *ctx, PetscInt v, const PetscReal xf[6], PetscBool first)
+{
+  const EndTurnCtx *c = (const EndTurnCtx *)ctx;
+
+  for (PetscInt e = 0; e < c->S->ne; ++e)
+    for (PetscInt j = 0; j < 2; ++j)
+      if (c->S->enodes[3 * e + j] == v) c->turn[v] = ContactSurfaceEndTurn(c->S, e, j, xf, first);
+}
+
 /* Where the surface ends, how the body goes on (endTurn): at each end node,
    the boundary edge of the body through it that is not in the surface's
-   group (DMPlexMarkBoundaryFaces: the body's boundary, not the partition's),
+   group (BodyBoundaryEdgesAt: the body's boundary, not the partition's),
    found by the rank whose cells hold it. A slave point past the end is then
    judged against that continuation (gap.c), not against the surface's own
    tangent line, which runs on into the open beside a corner. */
 static PetscErrorCode ContactSurfaceSetUpEnds(ContactSurface *S, Body b, const char pair[])
 {
   const PetscReal none = -10.0; /* below any angle */
-  DMLabel         bnd, faces;
-  PetscInt        vStart, vEnd;
   PetscReal      *turn;
+  EndTurnCtx      ctx;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(S->nn, &S->endTurn));
   PetscCall(PetscMalloc1(S->nn, &turn));
   for (PetscInt v = 0; v < S->nn; ++v) turn[v] = none;
-  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "boundary", &bnd));
-  PetscCall(DMPlexMarkBoundaryFaces(b->dm, 1, bnd));
-  PetscCall(DMGetLabel(b->dm, "Face Sets", &faces));
-  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vStart, &vEnd));
-  for (PetscInt pt = vStart; pt < vEnd; ++pt) {
-    const PetscInt *supp;
-    PetscInt        id, v, ns;
-    PetscCall(BodyGetNodeNumber(b, pt, &id));
-    PetscCall(PetscFindInt(id, S->nn, S->nodeId, &v));
-    if (v < 0 || !S->endNode[v]) continue;
-    PetscCall(DMPlexGetSupportSize(b->dm, pt, &ns));
-    PetscCall(DMPlexGetSupport(b->dm, pt, &supp));
-    for (PetscInt k = 0; k < ns; ++k) {
-      PetscInt  val, nodes[3];
-      PetscBool in = PETSC_FALSE;
-      PetscReal xf[6];
-      PetscCall(DMLabelGetValue(bnd, supp[k], &val));
-      if (val != 1) continue;
-      if (faces) PetscCall(DMLabelStratumHasPoint(faces, S->tag, supp[k], &in));
-      if (in) continue;
-      PetscCall(BodyEdgeNodes(b, supp[k], nodes, xf));
-      for (PetscInt e = 0; e < S->ne; ++e)
-        for (PetscInt j = 0; j < 2; ++j)
-          if (S->enodes[3 * e + j] == v) turn[v] = ContactSurfaceEndTurn(S, e, j, xf, nodes[0] == pt ? PETSC_TRUE : PETSC_FALSE);
-    }
-  }
-  PetscCall(DMLabelDestroy(&bnd));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, turn, S->nn, MPIU_REAL, MPI_MAX, b->comm));
+  ctx.S    = S;
+  ctx.turn = turn;
+  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, &ctx));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, turn, S->nn, MPIU_REAL, MPI_MAX, BodyGetComm(b)));
   for (PetscInt v = 0; v < S->nn; ++v) {
     if (!S->endNode[v]) continue;
     if (turn[v] > none) S->endTurn[v] = turn[v];
-    PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: an end at (%g, %g), the boundary turns there by %g degrees%s\n", pair, S->group, b->name, (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI), turn[v] > none ? "" : " (no boundary edge continues it: taken as straight on)"));
+    PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: an end at (%g, %g), the boundary turns there by %g degrees%s\n", pair, S->group, BodyGetName(b), (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI), turn[v] > none ? "" : " (no boundary edge continues it: taken as straight on)"));
   }
   PetscCall(PetscFree(turn));
   PetscFunctionReturn(0);
@@ -366,20 +248,21 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
 {
   PetscInt  n = 0, *eid = NULL, *deg = NULL, *adj = NULL, *adjStart = NULL;
   PetscReal *erl = NULL;
+  char       what[2 * CONTACT_NAME_LEN];
 
   PetscFunctionBeginUser;
   S->blend  = blend;
-  S->axisym = b->axisym;
-  if (b->rigid) PetscCall(ContactSurfaceRigidEdges(S, b, &n, &eid, &erl));
-  else PetscCall(ContactSurfaceOwnedEdges(S, b, pair, &n, &eid, &erl));
+  S->axisym = BodyIsAxisymmetric(b);
+  PetscCall(PetscSNPrintf(what, sizeof(what), "contact pair %s", pair));
+  PetscCall(BodyGetGroupEdges(b, S->group, what, &S->tag, &n, &eid, &erl)); /* this rank's */
   PetscCall(ContactSurfaceGatherEdges(S, b, pair, n, eid, erl));
   PetscCall(PetscFree2(eid, erl));
-  PetscCall(ContactSurfaceMapNodes(S, b));
+  PetscCall(BodyMapNodes(b, S->nn, S->nodeId, &S->map, S->big));
   PetscCall(ContactSurfaceAdjacency(S, &deg, &adj, &adjStart));
   PetscCall(ContactSurfaceSetUpBlend(S, deg, adj, adjStart));
   PetscCall(ContactSurfaceWalk(S, adj, adjStart));
-  if (b->rigid) PetscCall(PetscCalloc1(S->nn, &S->endTurn)); /* once oriented (ContactSurfaceOrientRigid) */
-  else PetscCall(ContactSurfaceSetUpEnds(S, b, pair));
+  if (BodyHasCells(b)) PetscCall(ContactSurfaceSetUpEnds(S, b, pair)); /* its cells tell its outward side */
+  else PetscCall(PetscCalloc1(S->nn, &S->endTurn)); /* lines alone: once oriented against the partner (ContactSurfaceOrientRigid) */
   PetscCall(PetscFree2(deg, adjStart));
   PetscCall(PetscFree(adj));
   PetscFunctionReturn(0);
@@ -399,8 +282,8 @@ PetscErrorCode ContactSurfaceSetUp(ContactSurface *S, Body b, const char pair[],
    that node (its other curves), as an elastic body's boundary does. */
 PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const ContactSurface *M, const char pair[])
 {
-  const BodyRigid *r = b->rg;
   const PetscBool  closed = BodyRigidClosed(b);
+  EndTurnCtx       ctx;
   PetscInt        *chain, nchain = 0;
 
   PetscFunctionBeginUser;
@@ -448,30 +331,18 @@ PetscErrorCode ContactSurfaceOrientRigid(ContactSurface *S, Body b, const Contac
         }
         votes += side > 1e-12 * best ? 1 : (side < -1e-12 * best ? -1 : 0);
       }
-    PetscCheck(votes != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pair %s: surface '%s' of rigid body %s: its lines do not close on themselves and the partner surface lies as much on one side of it as on the other, so its outward side is not known (close the body's outline in its .geo)", pair, S->group, b->name);
+    PetscCheck(votes != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "contact pair %s: surface '%s' of rigid body %s: its lines do not close on themselves and the partner surface lies as much on one side of it as on the other, so its outward side is not known (close the body's outline in its .geo)", pair, S->group, BodyGetName(b));
     if (votes < 0)
       for (PetscInt e = 0; e < S->ne; ++e)
         if (chain[e] == c) S->esign[e] = -S->esign[e];
   }
   PetscCall(PetscFree(chain));
   /* the ends: the body's other lines through them */
-  for (PetscInt e = 0; e < S->ne; ++e)
-    for (PetscInt j = 0; j < 2; ++j) {
-      const PetscInt v = S->enodes[3 * e + j];
-      if (!S->endNode[v]) continue;
-      for (PetscInt f = 0; f < r->ne; ++f) {
-        const PetscInt *fn = &r->enodes[3 * f];
-        PetscReal       xf[6];
-        if (r->etag[f] == S->tag) continue;
-        if (r->ids[fn[0]] != S->nodeId[v] && r->ids[fn[1]] != S->nodeId[v]) continue;
-        for (PetscInt k = 0; k < 3; ++k) {
-          xf[2 * k]     = r->X[2 * fn[k]];
-          xf[2 * k + 1] = r->X[2 * fn[k] + 1];
-        }
-        S->endTurn[v] = ContactSurfaceEndTurn(S, e, j, xf, r->ids[fn[0]] == S->nodeId[v] ? PETSC_TRUE : PETSC_FALSE);
-      }
-      PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of rigid body %s: an end at (%g, %g), the boundary turns there by %g degrees\n", pair, S->group, b->name, (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI)));
-    }
+  ctx.S    = S;
+  ctx.turn = S->endTurn;
+  PetscCall(BodyBoundaryEdgesAt(b, S->tag, S->nn, S->nodeId, S->endNode, ContactSurfaceEndTurnAt, &ctx));
+  for (PetscInt v = 0; v < S->nn; ++v)
+    if (S->endNode[v]) PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of rigid body %s: an end at (%g, %g), the boundary turns there by %g degrees\n", pair, S->group, BodyGetName(b), (double)S->X[2 * v], (double)S->X[2 * v + 1], (double)(S->endTurn[v] * 180.0 / PETSC_PI)));
   PetscFunctionReturn(0);
 }
 
@@ -522,39 +393,18 @@ PetscErrorCode ContactSurfaceSetMirror(ContactSurface *S, PetscReal y)
    bit on every rank); changed: whether any differs from the last x. */
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscBool *changed)
 {
-  const PetscScalar *u;
-  PetscReal         *du, *x;
+  PetscReal *x;
 
   PetscFunctionBeginUser;
-  if (b->rigid) { /* the body's motion, the same on every rank */
-    *changed = PETSC_FALSE;
-    for (PetscInt v = 0; v < S->nn; ++v) {
-      PetscReal uv[2];
-      BodyRigidDisplacement(b, &S->X[2 * v], uv);
-      for (PetscInt d = 0; d < 2; ++d) {
-        const PetscReal xv = S->X[2 * v + d] + uv[d];
-        if (xv != S->x[2 * v + d]) *changed = PETSC_TRUE;
-        S->x[2 * v + d] = xv;
-      }
-    }
-    if (S->mirror) ContactSurfaceMirrorReach(S);
-    PetscFunctionReturn(0);
-  }
-  PetscCall(PetscCalloc2(2 * S->nn, &du, 2 * S->nn, &x));
-  PetscCall(VecGetArrayRead(b->Xl, &u));
-  for (PetscInt k = 0; k < S->nloc; ++k) {
-    du[2 * S->locNode[k]]     = PetscRealPart(u[S->locOff[k]]);
-    du[2 * S->locNode[k] + 1] = PetscRealPart(u[S->locOff[k] + 1]);
-  }
-  PetscCall(VecRestoreArrayRead(b->Xl, &u));
-  PetscCall(MPIU_Allreduce(du, x, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscCall(PetscMalloc1(2 * S->nn, &x));
+  PetscCall(BodyGetNodeDisplacements(b, S->nn, S->X, &S->map, x));
   *changed = PETSC_FALSE;
   for (PetscInt k = 0; k < 2 * S->nn; ++k) {
     x[k] += S->X[k];
     if (x[k] != S->x[k]) *changed = PETSC_TRUE;
   }
   PetscCall(PetscArraycpy(S->x, x, 2 * S->nn));
-  PetscCall(PetscFree2(du, x));
+  PetscCall(PetscFree(x));
   if (S->mirror) ContactSurfaceMirrorReach(S);
   PetscFunctionReturn(0);
 }
@@ -581,23 +431,12 @@ void ContactSurfaceSplitEdges(const ContactSurface *S, PetscMPIInt size, const P
 /* Sums the surface gradient over ranks and adds it where the node is owned. */
 PetscErrorCode ContactSurfaceAddGradient(ContactSurface *S, Body b)
 {
-  PetscScalar *g;
-  PetscReal   *sum;
+  PetscReal *sum;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(2 * S->nn, &sum));
-  PetscCall(MPIU_Allreduce(S->g, sum, 2 * S->nn, MPIU_REAL, MPIU_SUM, b->comm));
-  if (b->rigid) { /* the force and moment on the body */
-    BodyRigidAddForce(b, S->nn, S->X, sum);
-    PetscCall(PetscFree(sum));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(VecGetArray(b->Gl, &g));
-  for (PetscInt k = 0; k < S->nloc; ++k) {
-    g[S->locOff[k]] += sum[2 * S->locNode[k]];
-    g[S->locOff[k] + 1] += sum[2 * S->locNode[k] + 1];
-  }
-  PetscCall(VecRestoreArray(b->Gl, &g));
+  PetscCall(MPIU_Allreduce(S->g, sum, 2 * S->nn, MPIU_REAL, MPIU_SUM, BodyGetComm(b)));
+  PetscCall(BodyAddNodeForces(b, S->nn, S->X, &S->map, sum)); /* a rigid body: the force and moment on it */
   PetscCall(PetscFree(sum));
   PetscFunctionReturn(0);
 }
@@ -691,7 +530,7 @@ PetscErrorCode ContactSurfaceDestroy(ContactSurface *S)
   PetscCall(PetscFree(S->endTurn));
   PetscCall(PetscFree(S->cutNode));
   PetscCall(PetscFree2(S->mnodes, S->mcorr));
-  PetscCall(PetscFree2(S->locNode, S->locOff));
+  PetscCall(BodyNodeMapDestroy(&S->map));
   PetscCall(PetscFree(S->ownEdges));
   PetscCall(PetscFree(S->walk));
   PetscFunctionReturn(0);

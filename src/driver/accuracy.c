@@ -153,8 +153,10 @@ static PetscBool AccuracyForceGiven(Problem p, PetscInt t, PetscInt d)
 
     if (!p->terms[t]->couples[i]) continue;
     for (PetscInt u = 0; u < p->nterms; ++u) nterms += p->terms[u]->couples[i] ? 1 : 0;
-    for (PetscInt k = 0; k < b->nbc; ++k)
-      for (PetscInt c = 0; c < b->bc[k].ncomp; ++c) computed += (b->bc[k].comps[c] == d && !b->bc[k].control[c]) ? 1 : 0;
+    for (PetscInt k = 0; k < BodyGetNumConditions(b); ++k) {
+      const BodyBC *bc = BodyGetCondition(b, k);
+      for (PetscInt c = 0; c < bc->ncomp; ++c) computed += (bc->comps[c] == d && !bc->control[c]) ? 1 : 0;
+    }
     if (nterms == 1 && !computed) return PETSC_TRUE;
   }
   return PETSC_FALSE;
@@ -174,7 +176,7 @@ static PetscErrorCode AccuracyProfilesGet(Problem p, AccuracyProfiles *P)
     }
   }
   for (PetscInt k = 0; k < p->fc.n; ++k)
-    if (!p->bodies[p->fc.c[k].body]->bc[p->fc.c[k].bc].anchor) P->U[P->ncontrols++] = p->fc.c[k].U;
+    if (!BodyGetCondition(p->bodies[p->fc.c[k].body], p->fc.c[k].bc)->anchor) P->U[P->ncontrols++] = p->fc.c[k].U;
   PetscFunctionReturn(0);
 }
 
@@ -241,37 +243,41 @@ static void AccuracyEstimate(const AccuracyProfiles *prev, const AccuracyProfile
 
 /* Every rank: the reference coordinates of the nodes of body b on which a
    contact term exerts a force at the state in the bodies' local vectors
-   (the terms' gradient, evaluated by the caller into b->Gl). */
+   (the terms' gradient, evaluated by the caller into BodyGetLocalGradient(b)). */
 static PetscErrorCode AccuracyZone(Body b, PetscInt *nz, PetscReal **z)
 {
+  const MPI_Comm     comm = BodyGetComm(b);
   PetscSection       sec;
   const PetscScalar *g;
+  const PetscBool   *owned;
+  const PetscReal   *xpoint;
   PetscReal          gmax = 0.0, *loc;
-  PetscInt           m = 0;
+  PetscInt           m = 0, pStart, pEnd;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &sec));
-  PetscCall(VecGetArrayRead(b->Gl, &g));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+  BodyGetNodePoints(b, &pStart, &pEnd, &owned, &xpoint);
+  PetscCall(DMGetLocalSection(BodyGetDM(b), &sec));
+  PetscCall(VecGetArrayRead(BodyGetLocalGradient(b), &g));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
     PetscInt dof, off;
     PetscCall(PetscSectionGetDof(sec, p, &dof));
     PetscCall(PetscSectionGetOffset(sec, p, &off));
     if (dof == 2) gmax = PetscMax(gmax, PetscSqrtReal(PetscSqr(PetscRealPart(g[off])) + PetscSqr(PetscRealPart(g[off + 1]))));
   }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gmax, 1, MPIU_REAL, MPIU_MAX, b->comm));
-  PetscCall(PetscMalloc1(2 * (b->pEnd - b->pStart) + 1, &loc));
-  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gmax, 1, MPIU_REAL, MPIU_MAX, comm));
+  PetscCall(PetscMalloc1(2 * (pEnd - pStart) + 1, &loc));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
     PetscInt dof, off;
     PetscCall(PetscSectionGetDof(sec, p, &dof));
     PetscCall(PetscSectionGetOffset(sec, p, &off));
-    if (dof != 2 || !b->owned[p - b->pStart]) continue;
+    if (dof != 2 || !owned[p - pStart]) continue;
     if (PetscSqrtReal(PetscSqr(PetscRealPart(g[off])) + PetscSqr(PetscRealPart(g[off + 1]))) <= 1e-8 * gmax || gmax == 0) continue;
-    loc[2 * m]     = b->xpoint[2 * (p - b->pStart)];
-    loc[2 * m + 1] = b->xpoint[2 * (p - b->pStart) + 1];
+    loc[2 * m]     = xpoint[2 * (p - pStart)];
+    loc[2 * m + 1] = xpoint[2 * (p - pStart) + 1];
     ++m;
   }
-  PetscCall(VecRestoreArrayRead(b->Gl, &g));
-  PetscCall(ContactGatherReals(b->comm, PETSC_TRUE, 2 * m, loc, nz, z));
+  PetscCall(VecRestoreArrayRead(BodyGetLocalGradient(b), &g));
+  PetscCall(ContactGatherReals(comm, PETSC_TRUE, 2 * m, loc, nz, z));
   *nz /= 2;
   PetscCall(PetscFree(loc));
   PetscFunctionReturn(0);
@@ -301,16 +307,19 @@ static int CompareRecords(const void *a, const void *b)
    does not depend on the number of ranks). */
 static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[], const PetscReal eta[], PetscReal eta2min, PetscReal grading, const char path[])
 {
-  PetscReal   ref[2 * 64], *rec, hz[2] = {0, 0}, *all = NULL;
-  PetscInt    corner[4], nv = 0, ntot;
-  PetscMPIInt rank;
+  const MPI_Comm   comm = BodyGetComm(b);
+  const PetscInt   ncells = BodyGetNumLocalCells(b), nb = BodyGetNodesPerCell(b);
+  const PetscReal *xnode  = BodyGetCellNodeCoordinates(b);
+  PetscReal        ref[2 * 64], *rec, hz[2] = {0, 0}, *all = NULL;
+  PetscInt         corner[4], nv = 0, ntot;
+  PetscMPIInt      rank;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(BodyGetCellCorners(b, ref, corner, &nv));
-  PetscCall(PetscMalloc1(FIELD_REC * b->ncells + 1, &rec));
-  for (PetscInt c = 0; c < b->ncells; ++c) { /* first each cell's size, its vertices and their distances from the zone; h_z */
-    const PetscReal *x = &b->xnode[2 * b->nb * c];
+  PetscCall(PetscMalloc1(FIELD_REC * ncells + 1, &rec));
+  for (PetscInt c = 0; c < ncells; ++c) { /* first each cell's size, its vertices and their distances from the zone; h_z */
+    const PetscReal *x = &xnode[2 * nb * c];
     PetscReal       *r = &rec[FIELD_REC * c], h = 0.0, dmin = PETSC_MAX_REAL;
     for (PetscInt v = 0; v < nv; ++v) {
       const PetscReal *p = &x[2 * corner[v]], *q = &x[2 * corner[(v + 1) % nv]];
@@ -328,8 +337,8 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
       hz[1] += 1;
     }
   }
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hz, 2, MPIU_REAL, MPIU_SUM, b->comm));
-  for (PetscInt c = 0; c < b->ncells; ++c) { /* then the sizes at the vertices */
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hz, 2, MPIU_REAL, MPIU_SUM, comm));
+  for (PetscInt c = 0; c < ncells; ++c) { /* then the sizes at the vertices */
     PetscReal      *r = &rec[FIELD_REC * c];
     const PetscReal h = PetscSqr(eta[c]) >= eta2min ? 0.5 * r[0] : r[0]; /* a marked cell: halved */
     r[0]              = (PetscReal)nv;
@@ -340,7 +349,7 @@ static PetscErrorCode AccuracyWriteField(Body b, PetscInt nz, const PetscReal z[
       } else r[3 + 3 * v] = h;
     }
   }
-  PetscCall(ContactGatherReals(b->comm, PETSC_FALSE, FIELD_REC * b->ncells, rec, &ntot, &all));
+  PetscCall(ContactGatherReals(comm, PETSC_FALSE, FIELD_REC * ncells, rec, &ntot, &all));
   if (!rank) {
     const PetscInt n  = ntot / FIELD_REC;
     FILE          *fp = fopen(path, "w");
@@ -377,14 +386,14 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   /* the stress indicators; the threshold of the largest that make up the fraction -accuracy_bulk of the total */
   PetscCall(ProblemScatterToBodies(p, p->X));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscCall(PetscMalloc1(p->bodies[i]->ncells + 1, &eta[i]));
-    PetscCall(BodyComputeStressIndicator(p->bodies[i], p->bodies[i]->Xl, eta[i]));
-    n += p->bodies[i]->ncells;
+    PetscCall(PetscMalloc1(BodyGetNumLocalCells(p->bodies[i]) + 1, &eta[i]));
+    PetscCall(BodyComputeStressIndicator(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), eta[i]));
+    n += BodyGetNumLocalCells(p->bodies[i]);
   }
   PetscCall(PetscMalloc1(n + 1, &e2));
   n = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i)
-    for (PetscInt c = 0; c < p->bodies[i]->ncells; ++c) e2[n++] = PetscSqr(eta[i][c]);
+    for (PetscInt c = 0; c < BodyGetNumLocalCells(p->bodies[i]); ++c) e2[n++] = PetscSqr(eta[i][c]);
   PetscCall(ContactGatherReals(p->comm, PETSC_FALSE, n, e2, &ntot, &all));
   if (!rank) {
     PetscReal total = 0.0, sum = 0.0;
@@ -399,7 +408,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
   PetscCallMPI(MPI_Bcast(&eta2min, 1, MPIU_REAL, 0, p->comm));
   PetscCall(PetscFree(e2));
   /* the contact zones: where the terms' gradient is not zero */
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(BodyGetLocalGradient(p->bodies[i])));
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscReal e;
     PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &e));
@@ -409,7 +418,7 @@ static PetscErrorCode AccuracyRefine(Accuracy acc, Problem p, PetscInt step, cha
     PetscInt   nz = 0;
     PetscReal *z  = NULL;
     PetscCall(AccuracyZone(b, &nz, &z));
-    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->cfg->scene.meshDir, b->name, (int)getpid(), (int)step));
+    PetscCall(PetscSNPrintf(paths[i], PETSC_MAX_PATH_LEN, "%s/%s-field%d-step%d.pos", p->cfg->scene.meshDir, BodyGetName(b), (int)getpid(), (int)step));
     PetscCall(AccuracyWriteField(b, nz, z, eta[i], eta2min, acc->grading, paths[i]));
     PetscCall(PetscFree(z));
     PetscCall(PetscFree(eta[i]));
@@ -425,7 +434,7 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(prev, prev->X));
   PetscCall(VecZeroEntries(X0));
-  for (PetscInt i = 0; i < cur->nbodies; ++i) PetscCall(BodyTransferDisplacement(prev->bodies[i], prev->bodies[i]->Xl, cur->bodies[i], X0));
+  for (PetscInt i = 0; i < cur->nbodies; ++i) PetscCall(BodyTransferDisplacement(prev->bodies[i], BodyGetLocalSolution(prev->bodies[i]), cur->bodies[i], X0));
   PetscCall(VecAssemblyBegin(X0));
   PetscCall(VecAssemblyEnd(X0));
   PetscFunctionReturn(0);
@@ -437,7 +446,7 @@ static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
   PetscFunctionBeginUser;
   PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
   PetscCheck(p->cfg->load.stages == 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: with -load_stages %" PetscInt_FMT " it would refine for the last stage's end alone; -accuracy with a load history is not supported yet", p->cfg->load.stages);
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->bodies[i]->rigid, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", p->bodies[i]->name, p->bodies[i]->name);
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(BodyHasCells(p->bodies[i]), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", BodyGetName(p->bodies[i]), BodyGetName(p->bodies[i]));
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscBool gpts;
     PetscCall(PetscStrcmp(p->terms[t]->type, "gpts", &gpts));

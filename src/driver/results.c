@@ -22,17 +22,17 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body               b   = p->bodies[i];
-    const PetscBool    d3  = (PetscBool)(b->dim == 3);
-    const char        *tt  = d3 ? (b->simplex ? "Tetrahedron_10" : "Hexahedron_27") : (b->simplex ? "Triangle_6" : "Quadrilateral_9");
-    const char        *g   = b->name;
-    const char *const *sc  = d3 ? XdmfBodyScalars3D : XdmfBodyScalarNames(b->axisym);
+    const PetscBool    d3  = (PetscBool)(BodyGetDimension(b) == 3);
+    const char        *tt  = d3 ? (BodyIsSimplex(b) ? "Tetrahedron_10" : "Hexahedron_27") : (BodyIsSimplex(b) ? "Triangle_6" : "Quadrilateral_9");
+    const char        *g   = BodyGetName(b);
+    const char *const *sc  = d3 ? XdmfBodyScalars3D : XdmfBodyScalarNames(BodyIsAxisymmetric(b));
     const PetscInt     nsc = d3 ? XDMF_BODY_SCALARS_3D : XDMF_BODY_SCALARS;
     PetscInt           N = F[i].nnodes, C = F[i].ncells;
     char               path[PETSC_MAX_PATH_LEN];
-    if (b->rigid) continue; /* no cells: its contact surfaces are the terms' grids */
+    if (!BodyHasCells(b)) continue; /* its contact surfaces are the terms' grids */
     fprintf(fp, "   <Grid Name=\"%s\" GridType=\"Uniform\">\n", g);
     fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", tt, (int)C);
-    fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)b->nb, (int)sizeof(PetscInt), base, g);
+    fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/bodies/%s/topology</DataItem>\n    </Topology>\n", (int)C, (int)BodyGetNodesPerCell(b), (int)sizeof(PetscInt), base, g);
     fprintf(fp, "    <Geometry GeometryType=\"%s\">\n     <DataItem Dimensions=\"%d %d\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/bodies/%s/geometry</DataItem>\n    </Geometry>\n", d3 ? "XYZ" : "XY", (int)N, d3 ? 3 : 2, base, g);
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:%s/%s/displacement_xyz", base, fields, g));
     XdmfWriteAttribute(fp, "displacement", (int)N, 3, path);
@@ -166,33 +166,30 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, Pets
    middle), for the plots. */
 static PetscErrorCode WriteRigidOutline(Body b, PetscViewer v)
 {
-  const BodyRigid *r = b->rg;
-  PetscMPIInt      rank;
-  Vec              x;
-  IS               lines;
-  PetscScalar     *a;
-  PetscInt         nn, ne;
+  PetscMPIInt     rank;
+  Vec             x;
+  IS              lines;
+  PetscScalar    *a;
+  PetscReal      *xo;
+  const PetscInt *enodes;
+  PetscInt        nn, ne;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(b->comm, &rank));
-  nn = rank ? 0 : r->nn;
-  ne = rank ? 0 : r->ne;
-  PetscCall(VecCreate(b->comm, &x));
+  PetscCallMPI(MPI_Comm_rank(BodyGetComm(b), &rank));
+  PetscCall(BodyRigidGetOutline(b, &nn, &xo, &ne, &enodes));
+  if (rank) nn = ne = 0;
+  PetscCall(VecCreate(BodyGetComm(b), &x));
   PetscCall(VecSetSizes(x, 2 * nn, PETSC_DETERMINE));
   PetscCall(VecSetBlockSize(x, 2));
   PetscCall(VecSetType(x, VECSTANDARD));
   PetscCall(PetscObjectSetName((PetscObject)x, "line_x"));
   PetscCall(VecGetArray(x, &a));
-  for (PetscInt i = 0; i < nn; ++i) {
-    PetscReal u[2];
-    BodyRigidDisplacement(b, &r->X[2 * i], u);
-    a[2 * i]     = r->X[2 * i] + u[0];
-    a[2 * i + 1] = r->X[2 * i + 1] + u[1];
-  }
+  for (PetscInt i = 0; i < 2 * nn; ++i) a[i] = xo[i];
   PetscCall(VecRestoreArray(x, &a));
+  PetscCall(PetscFree(xo));
   ContactOutputCall(v, VecView(x, v));
   PetscCall(VecDestroy(&x));
-  PetscCall(ISCreateGeneral(b->comm, 3 * ne, r->enodes, PETSC_COPY_VALUES, &lines));
+  PetscCall(ISCreateGeneral(BodyGetComm(b), 3 * ne, enodes, PETSC_COPY_VALUES, &lines));
   PetscCall(ISSetBlockSize(lines, 3));
   PetscCall(PetscObjectSetName((PetscObject)lines, "lines"));
   ContactOutputCall(v, ISView(lines, v));
@@ -235,14 +232,14 @@ static PetscErrorCode WriteHDF5Stages(Problem p, BodyNodalFields F[], PetscViewe
     PetscCall(PetscViewerHDF5PopGroup(v));
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       BodyNodalFields Fk;
-      if (p->bodies[i]->rigid) continue;
-      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/bodies/%s", (int)k, p->bodies[i]->name));
+      if (!BodyHasCells(p->bodies[i])) continue; /* no fields */
+      PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/bodies/%s", (int)k, BodyGetName(p->bodies[i])));
       PetscCall(PetscViewerHDF5PushGroup(v, group));
-      if (k == S) PetscCall(WriteBodyFields(&F[i], p->bodies[i]->axisym, v));
+      if (k == S) PetscCall(WriteBodyFields(&F[i], BodyIsAxisymmetric(p->bodies[i]), v));
       else {
         PetscCall(PetscMemzero(&Fk, sizeof(Fk)));
-        PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &Fk));
-        PetscCall(WriteBodyFields(&Fk, p->bodies[i]->axisym, v));
+        PetscCall(BodyComputeNodalFields(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), &Fk));
+        PetscCall(WriteBodyFields(&Fk, BodyIsAxisymmetric(p->bodies[i]), v));
         PetscCall(BodyNodalFieldsDestroy(&Fk));
       }
       PetscCall(PetscViewerHDF5PopGroup(v));
@@ -260,30 +257,32 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     char group[2 * CONTACT_NAME_LEN];
-    PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", p->bodies[i]->name));
-    if (p->bodies[i]->rigid) { /* its motion and force, no fields */
-      const BodyRigid *r = p->bodies[i]->rg;
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", BodyGetName(p->bodies[i])));
+    BodyRigidMotion m;
+    if (BodyGetRigidMotion(p->bodies[i], &m)) { /* its motion and force, no fields */
       PetscCall(PetscViewerHDF5PushGroup(v, group));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rigid", PETSC_INT, &(PetscInt){1}));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_x", PETSC_REAL, &r->t[0]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_y", PETSC_REAL, &r->t[1]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rotation", PETSC_REAL, &r->theta));
-      PetscReal        f[2], mo;
-      BodyRigidContactForce(p->bodies[i], f, &mo);
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &f[0]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &f[1]));
-      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &mo));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_x", PETSC_REAL, &m.t[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "translation_y", PETSC_REAL, &m.t[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rotation", PETSC_REAL, &m.theta));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_x", PETSC_REAL, &m.force[0]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "force_y", PETSC_REAL, &m.force[1]));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "moment", PETSC_REAL, &m.moment));
       PetscCall(WriteRigidOutline(p->bodies[i], v));
       PetscCall(PetscViewerHDF5PopGroup(v));
       continue;
     }
     PetscCall(PetscViewerHDF5PushGroup(v, group));
     ContactOutputCall(v, VecView(F[i].coords, v));
-    PetscCall(WriteBodyFields(&F[i], p->bodies[i]->axisym, v));
+    PetscCall(WriteBodyFields(&F[i], BodyIsAxisymmetric(p->bodies[i]), v));
     ContactOutputCall(v, ISView(F[i].topo, v));
-    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, p->bodies[i]->dim == 3 ? (p->bodies[i]->simplex ? "Tet10" : "Hex27") : (p->bodies[i]->simplex ? "Tri6" : "Quad9")));
-    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &p->bodies[i]->E));
-    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &p->bodies[i]->nu));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "cell_type", PETSC_STRING, BodyGetDimension(p->bodies[i]) == 3 ? (BodyIsSimplex(p->bodies[i]) ? "Tet10" : "Hex27") : (BodyIsSimplex(p->bodies[i]) ? "Tri6" : "Quad9")));
+    {
+      PetscReal E, nu;
+      BodyGetElasticConstants(p->bodies[i], &E, &nu);
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "E", PETSC_REAL, &E));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "nu", PETSC_REAL, &nu));
+    }
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermWriteHDF5(p->terms[t], p->bodies, v));
@@ -335,10 +334,10 @@ static PetscErrorCode WriteHDF5CheckRoom(Problem p, BodyNodalFields F[])
   if (size == 1) PetscFunctionReturn(0);
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     PetscInt nodes, cells;
-    if (p->bodies[i]->rigid) continue; /* no fields */
+    if (!BodyHasCells(p->bodies[i])) continue; /* no fields */
     PetscCall(VecGetSize(F[i].vm, &nodes));
     PetscCall(ISGetSize(F[i].topo, &cells));
-    bytes += (size_t)nodes * (p->bodies[i]->dim == 3 ? HDF5_NODE_VALUES_3D : HDF5_NODE_VALUES) * sizeof(PetscReal) * (p->cfg->load.stages > 1 ? p->cfg->load.stages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
+    bytes += (size_t)nodes * (BodyGetDimension(p->bodies[i]) == 3 ? HDF5_NODE_VALUES_3D : HDF5_NODE_VALUES) * sizeof(PetscReal) * (p->cfg->load.stages > 1 ? p->cfg->load.stages + 1 : 1) + (size_t)cells * sizeof(PetscInt); /* -load_stages: each stage's fields too */
   }
   PetscCall(ContactOutputCheckRoom(p->comm, bytes));
   PetscFunctionReturn(0);
@@ -376,13 +375,13 @@ static PetscErrorCode WriteHDF5(Problem p, const RunRecord *rec, BodyNodalFields
    end. */
 static void JSONReactionSet(FILE *fp, Problem p, const char sep[], const char indent[], const char end[], const PetscReal R[])
 {
-  const PetscInt nd = !p->bodies[0]->rigid && p->bodies[0]->dim == 3 ? 3 : 2;
+  const PetscInt nd = BodyGetDimension(p->bodies[0]);
 
   fprintf(fp, "%s\"reactions\": {", sep);
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, ++k) {
+    for (PetscInt j = 0; j < BodyGetNumConditions(p->bodies[i]); ++j, ++k) {
       char key[2 * CONTACT_NAME_LEN + 2];
-      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, p->bodies[i]->bc[j].group);
+      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", BodyGetName(p->bodies[i]), BodyGetCondition(p->bodies[i], j)->group);
       fprintf(fp, "%s", k ? "," : "");
       ContactJSONKeyVector(fp, indent, key, nd, R + 3 * k);
     }
@@ -395,7 +394,7 @@ static PetscErrorCode JSONReactions(FILE *fp, Problem p)
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0, k = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, k += 3) PetscCall(PetscArraycpy(R + k, p->bodies[i]->bc[j].reaction, 3));
+    for (PetscInt j = 0; j < BodyGetNumConditions(p->bodies[i]); ++j, k += 3) PetscCall(PetscArraycpy(R + k, BodyGetCondition(p->bodies[i], j)->reaction, 3));
   JSONReactionSet(fp, p, ",\n  ", "\n    ", "\n  ", R);
   PetscFunctionReturn(0);
 }
@@ -457,14 +456,14 @@ static void JSONLoads(FILE *fp, Problem p)
   PetscInt n = 0;
 
   for (PetscInt i = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nload; ++j, ++n) {
-      const BodyLoad *L = &p->bodies[i]->load[j];
+    for (PetscInt j = 0; j < BodyGetNumLoads(p->bodies[i]); ++j, ++n) {
+      const BodyLoad *L = BodyGetLoad(p->bodies[i], j);
       char            key[2 * CONTACT_NAME_LEN + 2];
       PetscReal       f[3] = {0, 0, 0};
       BodyLoadResultant(p->bodies[i], j, f);
       if (p->cfg->scene.axisymmetric) f[0] = 0.0;
-      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", p->bodies[i]->name, L->group);
-      ContactJSONKeyVector(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, p->bodies[i]->dim, f); /* [fx, fy], a 3D body's [fx, fy, fz] */
+      (void)PetscSNPrintf(key, sizeof(key), "%s:%s", BodyGetName(p->bodies[i]), L->group);
+      ContactJSONKeyVector(fp, n ? ",\n    " : ",\n  \"loads\": {\n    ", key, BodyGetDimension(p->bodies[i]), f); /* [fx, fy], a 3D body's [fx, fy, fz] */
     }
   if (n) fprintf(fp, "\n  }");
 }
@@ -477,9 +476,9 @@ static void JSONForceControl(FILE *fp, Problem p)
   fprintf(fp, ",\n  \"force_control_solves\": %d,\n  \"force_control\": [", (int)p->res.controlSolves);
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     const ForceControl *fc = &p->fc.c[k];
-    const PetscReal     L  = fc->rigid && fc->c == 2 ? p->bodies[fc->body]->rg->L : 1.0; /* a rotation: radians and moments */
-    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", p->bodies[fc->body]->name, ProblemControlGroup(p, k), fc->anchor ? "true" : "false", ProblemControlComponent(p, k));
-    if (fc->rigid) fprintf(fp, ", \"rigid\": true");
+    const PetscReal     L  = fc->motion && fc->c == 2 ? BodyRigidGetLength(p->bodies[fc->body]) : 1.0; /* a rotation: radians and moments */
+    fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", BodyGetName(p->bodies[fc->body]), ProblemControlGroup(p, k), fc->anchor ? "true" : "false", ProblemControlComponent(p, k));
+    if (fc->motion) fprintf(fp, ", \"rigid\": true");
     ContactJSONKeyReal(fp, ", ", "force", fc->force * L);
     ContactJSONKeyReal(fp, ", ", "displacement", fc->U / L);
     ContactJSONKeyReal(fp, ", ", "reaction", fc->R * L);
@@ -509,32 +508,32 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     Body              b = p->bodies[i];
     const BodyErrors *e = &F[i].err;
-    if (b->rigid) { /* its motion, and the contact's force and moment on it */
-      const BodyRigid *r = b->rg;
-      fprintf(fp, "%s\n    \"%s\": {\"rigid\": true, \"dofs\": 0, \"nodes\": %d", i ? "," : "", b->name, (int)r->nn);
-      ContactJSONKeyPair(fp, ", ", "translation", r->t);
-      ContactJSONKeyReal(fp, ", ", "rotation", r->theta);
-      ContactJSONKeyPair(fp, ", ", "centre", r->centre);
-      PetscReal        f[2], mo;
-      BodyRigidContactForce(b, f, &mo);
-      ContactJSONKeyPair(fp, ", ", "force", f);
-      ContactJSONKeyReal(fp, ", ", "moment", mo);
-      fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
-      ContactJSONKeyReal(fp, ", ", "h", b->h);
+    PetscInt          ndofs, ncells;
+    BodyRigidMotion   m;
+    if (BodyGetRigidMotion(b, &m)) { /* its motion, and the contact's force and moment on it */
+      fprintf(fp, "%s\n    \"%s\": {\"rigid\": true, \"dofs\": 0, \"nodes\": %d", i ? "," : "", BodyGetName(b), (int)m.nodes);
+      ContactJSONKeyPair(fp, ", ", "translation", m.t);
+      ContactJSONKeyReal(fp, ", ", "rotation", m.theta);
+      ContactJSONKeyPair(fp, ", ", "centre", m.centre);
+      ContactJSONKeyPair(fp, ", ", "force", m.force);
+      ContactJSONKeyReal(fp, ", ", "moment", m.moment);
+      fprintf(fp, ", \"mesh\": \"%s\"", BodyGetMeshFile(b));
+      ContactJSONKeyReal(fp, ", ", "h", BodyGetMeshSize(b));
       fprintf(fp, "}");
       continue;
     }
-    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", b->name, (int)b->nglobal, (int)b->ncellsGlobal, (int)F[i].nnodes, b->dim == 3 ? (b->simplex ? "Tet10" : "Hex27") : (b->simplex ? "Tri6" : "Quad9"));
+    BodyGetGlobalSizes(b, &ndofs, &ncells);
+    fprintf(fp, "%s\n    \"%s\": {\"dofs\": %d, \"cells\": %d, \"nodes\": %d, \"cell_type\": \"%s\"", i ? "," : "", BodyGetName(b), (int)ndofs, (int)ncells, (int)F[i].nnodes, BodyGetDimension(b) == 3 ? (BodyIsSimplex(b) ? "Tet10" : "Hex27") : (BodyIsSimplex(b) ? "Tri6" : "Quad9"));
     ContactJSONKeyReal(fp, ", ", "energy", p->res.bodyEnergy[i]);
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
-    fprintf(fp, ", \"material\": \"%s\"", b->mat->name);
+    fprintf(fp, ", \"material\": \"%s\"", BodyGetMaterial(b)->name);
     ContactJSONKeyReal(fp, ", ", "max_green_lagrange_strain", F[i].maxStrain);
-    fprintf(fp, ", \"mesh\": \"%s\"", b->msh);
-    ContactJSONKeyReal(fp, ", ", "h", b->h);
-    if (b->hasExact) { /* each error with the exact solution's norm */
+    fprintf(fp, ", \"mesh\": \"%s\"", BodyGetMeshFile(b));
+    ContactJSONKeyReal(fp, ", ", "h", BodyGetMeshSize(b));
+    if (BodyGetExactSolution(b)) { /* each error with the exact solution's norm */
       const char     *keys[6] = {"l2_error", "l2_norm", "energy_error", "energy_norm", "stress_l2_error", "stress_l2_norm"};
       const PetscReal vals[6] = {e->l2, e->l2norm, e->energy, e->energynorm, e->stress, e->stressnorm};
-      fprintf(fp, ", \"exact\": \"%s\"", b->exact.name);
+      fprintf(fp, ", \"exact\": \"%s\"", BodyGetExactSolution(b)->name);
       for (PetscInt k = 0; k < 6; ++k) ContactJSONKeyReal(fp, ", ", keys[k], vals[k]);
     }
     fprintf(fp, "}");
@@ -668,7 +667,7 @@ PetscErrorCode RunWriteResults(Problem p, RunRecord *rec)
   PetscCall(PetscMemzero(F, sizeof(F)));
   PetscCall(StagesComputeFigures(p)); /* -load_stages: each stage end's reactions and contact forces */
   PetscCall(ProblemScatterToBodies(p, p->X)); /* the fields of the solution */
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], p->bodies[i]->Xl, &F[i]));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeNodalFields(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), &F[i]));
   if (out.h5[0]) {
     PetscCall(WriteHDF5(p, rec, F, &out));
     PetscCall(WriteXDMF(p, F, &out));

@@ -87,7 +87,7 @@ PetscErrorCode RunSetUp(Problem p, RunRecord *rec)
   PetscFunctionBeginUser;
   PetscCall(ProblemSetUp(p));
   PetscCall(PetscTime(&t));
-  for (PetscInt i = 0; i < p->nbodies; ++i) tmesh += p->bodies[i]->tmesh;
+  for (PetscInt i = 0; i < p->nbodies; ++i) tmesh += BodyGetMeshTime(p->bodies[i]);
   rec->time[RUN_TIME_MESH] += tmesh;
   rec->time[RUN_TIME_SETUP] += (t - rec->mark) - tmesh;
   PetscFunctionReturn(0);
@@ -126,7 +126,7 @@ static PetscErrorCode RunSayNotConverged(Problem p)
     PetscReal xy[2];
     PetscCall(BodyGetInversions(p->bodies[i], &n, xy));
     if (n && p->res.reason != TAO_DIVERGED_MAXITS) {
-      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations (smaller load steps, -load_steps, or a finer mesh there may pass)", p->bodies[i]->name, (double)xy[0], (double)xy[1], n));
+      PetscCall(PetscSNPrintf(why, sizeof(why), "body %s inverts: J <= 0 near (%g, %g) in %" PetscInt_FMT " of the energy evaluations (smaller load steps, -load_steps, or a finer mesh there may pass)", BodyGetName(p->bodies[i]), (double)xy[0], (double)xy[1], n));
       break;
     }
   }
@@ -151,15 +151,15 @@ static PetscErrorCode RunReportStrains(Problem p)
     BodyStrainPeak pk;
     PetscReal      e;
     char           at[96];
-    if (b->rigid) continue; /* no strain */
-    PetscCall(BodyComputeStrainPeak(b, b->Xl, &pk));
+    if (!BodyHasCells(b)) continue; /* no strain */
+    PetscCall(BodyComputeStrainPeak(b, BodyGetLocalSolution(b), &pk));
     e = pk.emax;
-    PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", b->name, b->mat->name, (double)(100 * e)));
-    if (!b->mat->constantTangent || !(e > 0.02)) continue;
-    if (b->dim == 3) PetscCall(PetscSNPrintf(at, sizeof(at), "(%.4g, %.4g, %.4g)", (double)pk.x[0], (double)pk.x[1], (double)pk.x[2]));
+    PetscCall(PetscPrintf(p->comm, "  body %s (%s): largest Green-Lagrange strain %.3g %%\n", BodyGetName(b), BodyGetMaterial(b)->name, (double)(100 * e)));
+    if (!BodyGetMaterial(b)->constantTangent || !(e > 0.02)) continue;
+    if (BodyGetDimension(b) == 3) PetscCall(PetscSNPrintf(at, sizeof(at), "(%.4g, %.4g, %.4g)", (double)pk.x[0], (double)pk.x[1], (double)pk.x[2]));
     else PetscCall(PetscSNPrintf(at, sizeof(at), "(%.4g, %.4g)", (double)pk.x[0], (double)pk.x[1]));
-    if (pk.ring < BODY_STRAIN_POINT * pk.emax) PetscCall(PetscPrintf(p->comm, "  warning: body %s: its largest strain, %.3g %%, is concentrated at %s, falling to %.3g %% %d to %d elements from it: a singular point (a corner, the end of a held boundary or a contact's edge), where the strain grows as the mesh is refined whatever the material: -%s_material neohookean would not remove it, and the linear model's 2 %% limit is about the strain away from such points\n", b->name, (double)(100 * e), at, (double)(100 * pk.ring), (int)(0.5 * BODY_STRAIN_RING), (int)BODY_STRAIN_RING, b->name));
-    else PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", b->name, (double)(100 * e), b->name));
+    if (pk.ring < BODY_STRAIN_POINT * pk.emax) PetscCall(PetscPrintf(p->comm, "  warning: body %s: its largest strain, %.3g %%, is concentrated at %s, falling to %.3g %% %d to %d elements from it: a singular point (a corner, the end of a held boundary or a contact's edge), where the strain grows as the mesh is refined whatever the material: -%s_material neohookean would not remove it, and the linear model's 2 %% limit is about the strain away from such points\n", BodyGetName(b), (double)(100 * e), at, (double)(100 * pk.ring), (int)(0.5 * BODY_STRAIN_RING), (int)BODY_STRAIN_RING, BodyGetName(b)));
+    else PetscCall(PetscPrintf(p->comm, "  warning: body %s is linear at a strain of %.3g %%, above 2 %%, where small-strain elasticity's error is of the order of the strain: -%s_material neohookean models it\n", BodyGetName(b), (double)(100 * e), BodyGetName(b)));
   }
   PetscFunctionReturn(0);
 }

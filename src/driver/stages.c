@@ -28,8 +28,8 @@ static PetscErrorCode StagesRecordFigures(Problem p, PetscInt k, PetscBool react
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0, g = 0; i < p->nbodies; ++i) {
-    if (react) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, g += 3) PetscCall(PetscArraycpy(&e->reaction[k - 1][g], p->bodies[i]->bc[j].reaction, 3));
+    if (react) PetscCall(BodyComputeReactions(p->bodies[i], BodyGetLocalGradient(p->bodies[i])));
+    for (PetscInt j = 0; j < BodyGetNumConditions(p->bodies[i]); ++j, g += 3) PetscCall(PetscArraycpy(&e->reaction[k - 1][g], BodyGetCondition(p->bodies[i], j)->reaction, 3));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) {
     PetscInt   n = 0;
@@ -68,6 +68,6 @@ PetscErrorCode StagesComputeFigures(Problem p)
     PetscCall(StagesRecordFigures(p, k, PETSC_TRUE));
   }
   PetscCall(StagesEvaluate(p, S)); /* the final state again, in the bodies and the terms */
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], BodyGetLocalGradient(p->bodies[i])));
   PetscFunctionReturn(0);
 }

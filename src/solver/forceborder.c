@@ -364,7 +364,7 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
   }
   c->solves = p->cfg->control.borderSolves;
   c->D = p->fc.D;
-  for (PetscInt k = 0; k < c->m; ++k) c->floor[k] = p->fc.c[k].rigid ? p->fc.c[k].kref : 0.0;
+  for (PetscInt k = 0; k < c->m; ++k) c->floor[k] = p->fc.c[k].motion ? p->fc.c[k].kref : 0.0;
   c->varies = p->fc.rigid; /* a rigid body's columns change with the Hessian: condensed anew at each */
   c->unheld = &p->fc.unheld;
   PetscCall(PetscObjectReference((PetscObject)Hin));

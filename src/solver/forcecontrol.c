@@ -56,89 +56,52 @@
 #include "forcecontrol.h"
 #include "options.h"
 
-/* The size of body b: its reference bounding box's diagonal. */
-static PetscErrorCode ControlBodySize(Problem p, PetscInt body, PetscReal *L)
+/* Adds body i's controls (controls.h) to the problem's, those of kind
+   motion (a rigid body's unknowns) or not; a motion's kref is the least E
+   of the elastic bodies (Emin) times its own factor (the body's size in r-z). */
+static PetscErrorCode ProblemAddBodyControls(Problem p, PetscInt i, PetscInt n, const BodyControl ctl[], PetscBool motion, PetscReal Emin)
 {
-  Body      b = p->bodies[body];
-  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
-  PetscInt  dim = b->dim;
-
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < b->ncells * b->nb; ++k) /* every node of this rank's cells */
-    for (PetscInt d = 0; d < dim; ++d) {
-      lo[d] = PetscMin(lo[d], b->xnode[dim * k + d]);
-      hi[d] = PetscMax(hi[d], b->xnode[dim * k + d]);
-    }
-  for (PetscInt d = 0; d < dim; ++d) lo[d] = -lo[d];
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, lo, dim, MPIU_REAL, MPIU_MAX, p->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, hi, dim, MPIU_REAL, MPIU_MAX, p->comm));
-  if (dim == 3) *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]) + PetscSqr(hi[2] + lo[2]));
-  else *L = PetscSqrtReal(PetscSqr(hi[0] + lo[0]) + PetscSqr(hi[1] + lo[1]));
-  PetscFunctionReturn(0);
-}
-
-/* A rigid body's unknowns (rigidbody.h) as controls: a force-controlled
-   component with its condition's force, the others (held by the contact
-   alone) as anchors of force zero, whose kref is the least E of the
-   elastic bodies (times the body's size in r-z). */
-static PetscErrorCode ProblemCollectRigidUnknowns(Problem p)
-{
-  PetscReal Emin = PETSC_MAX_REAL;
-
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < p->nbodies; ++i)
-    if (!p->bodies[i]->rigid) Emin = PetscMin(Emin, p->bodies[i]->E);
-  for (PetscInt i = 0; i < p->nbodies; ++i)
-    for (PetscInt q = 0; q < 3 && p->bodies[i]->rigid; ++q) {
-      const BodyRigid *r = p->bodies[i]->rg;
-      ForceControl    *fc;
-      if (!r->unknown[q]) continue;
-      PetscCheck(p->fc.n < CONTACT_MAX_CONTROLS, p->comm, PETSC_ERR_USER_INPUT, "more than %d force-controlled components and rigid bodies' unknowns", CONTACT_MAX_CONTROLS);
-      fc         = &p->fc.c[p->fc.n++];
-      fc->body   = i;
-      fc->bc     = r->qbc[q];
-      fc->c      = q;
-      fc->rigid  = PETSC_TRUE;
-      fc->force  = r->qforce[q];
-      fc->U      = 0.0;
-      fc->anchor = (PetscBool)!r->control[q];
-      fc->scale  = fc->force != 0.0 ? PetscAbsReal(fc->force) : 1.0;
-      fc->L      = r->L;
-      fc->kref   = Emin * (p->bodies[i]->axisym ? r->L : 1.0);
-      p->fc.rigid = PETSC_TRUE;
-    }
+  for (PetscInt j = 0; j < n; ++j) {
+    ForceControl *fc;
+    if (ctl[j].motion != motion) continue;
+    PetscCheck(p->fc.n < CONTACT_MAX_CONTROLS, p->comm, PETSC_ERR_USER_INPUT, motion ? "more than %d force-controlled components and rigid bodies' unknowns" : "more than %d force-controlled components", CONTACT_MAX_CONTROLS);
+    fc         = &p->fc.c[p->fc.n++];
+    fc->body   = i;
+    fc->bc     = ctl[j].bc;
+    fc->c      = ctl[j].c;
+    fc->motion = ctl[j].motion;
+    fc->force  = ctl[j].force;
+    fc->U      = 0.0;
+    fc->anchor = ctl[j].anchor;
+    fc->scale  = ctl[j].scale;
+    fc->L      = ctl[j].L;
+    fc->kref   = motion ? Emin * ctl[j].kref : ctl[j].kref;
+    if (motion) p->fc.rigid = PETSC_TRUE;
+  }
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ProblemCollectControls(Problem p)
 {
-  PetscBool anchor[CONTACT_MAX_CONTROLS];
-  PetscReal kref[CONTACT_MAX_CONTROLS];
+  PetscBool    anchor[CONTACT_MAX_CONTROLS];
+  PetscReal    kref[CONTACT_MAX_CONTROLS], Emin = PETSC_MAX_REAL;
+  PetscInt     n[CONTACT_MAX_BODIES];
+  BodyControl *ctl;
 
   PetscFunctionBeginUser;
   p->fc.n     = 0;
   p->fc.rigid = PETSC_FALSE;
-  for (PetscInt i = 0; i < p->nbodies; ++i)
-    for (PetscInt j = 0; j < p->bodies[i]->nbc && !p->bodies[i]->rigid; ++j)
-      for (PetscInt c = 0; c < p->bodies[i]->bc[j].ncomp; ++c) {
-        const Body    b = p->bodies[i];
-        ForceControl *fc;
-        if (!b->bc[j].control[c]) continue;
-        PetscCheck(p->fc.n < CONTACT_MAX_CONTROLS, p->comm, PETSC_ERR_USER_INPUT, "more than %d force-controlled components", CONTACT_MAX_CONTROLS);
-        fc         = &p->fc.c[p->fc.n++];
-        fc->body   = i;
-        fc->bc     = j;
-        fc->c      = c;
-        fc->force  = b->bc[j].force[c];
-        fc->U      = 0.0;
-        fc->anchor = b->bc[j].anchor;
-        fc->scale  = PetscAbsReal(fc->force);
-        for (PetscInt l = 0; l < b->nload; ++l) fc->scale += PetscSqrtReal(PetscSqr(b->load[l].force[0]) + PetscSqr(b->load[l].force[1]));
-        if (!(fc->scale > 0)) fc->scale = 1.0;
-        PetscCall(ControlBodySize(p, i, &fc->L));
-        fc->kref = b->E * (b->axisym ? fc->L : 1.0); /* a stiffness (force per length per unit thickness; r-z: over the whole circle) */
-      }
-  PetscCall(ProblemCollectRigidUnknowns(p));
+  PetscCall(PetscMalloc1(p->nbodies * (3 * CONTACT_MAX_BC + 3), &ctl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) {
+    PetscReal E, nu;
+    PetscCall(BodyGetControls(p->bodies[i], &n[i], &ctl[i * (3 * CONTACT_MAX_BC + 3)]));
+    BodyGetElasticConstants(p->bodies[i], &E, &nu);
+    if (BodyHasCells(p->bodies[i])) Emin = PetscMin(Emin, E);
+  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(ProblemAddBodyControls(p, i, n[i], &ctl[i * (3 * CONTACT_MAX_BC + 3)], PETSC_FALSE, Emin)); /* the conditions' first, then the rigid bodies' unknowns */
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(ProblemAddBodyControls(p, i, n[i], &ctl[i * (3 * CONTACT_MAX_BC + 3)], PETSC_TRUE, Emin));
+  PetscCall(PetscFree(ctl));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     anchor[k] = p->fc.c[k].anchor;
     kref[k]   = p->fc.c[k].kref;
@@ -162,12 +125,13 @@ PetscErrorCode ProblemControlSceneForce(Problem p, PetscReal *S)
   *S = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     const Body b = p->bodies[i];
-    PetscCall(BodyComputeReactions(b, b->Gl));
-    for (PetscInt l = 0; l < b->nload; ++l) *S = PetscMax(*S, PetscSqrtReal(PetscSqr(b->load[l].force[0]) + PetscSqr(b->load[l].force[1])));
-    for (PetscInt j = 0; j < b->nbc; ++j) {
-      *S = PetscMax(*S, PetscSqrtReal(PetscSqr(b->bc[j].reaction[0]) + PetscSqr(b->bc[j].reaction[1])));
-      for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
-        if (b->bc[j].control[c]) *S = PetscMax(*S, PetscAbsReal(BodyControlForce(b, j, c)));
+    PetscCall(BodyComputeReactions(b, BodyGetLocalGradient(b)));
+    for (PetscInt l = 0; l < BodyGetNumLoads(b); ++l) *S = PetscMax(*S, PetscSqrtReal(PetscSqr(BodyGetLoad(b, l)->force[0]) + PetscSqr(BodyGetLoad(b, l)->force[1])));
+    for (PetscInt j = 0; j < BodyGetNumConditions(b); ++j) {
+      const BodyBC *bc = BodyGetCondition(b, j);
+      *S               = PetscMax(*S, PetscSqrtReal(PetscSqr(bc->reaction[0]) + PetscSqr(bc->reaction[1])));
+      for (PetscInt c = 0; c < bc->ncomp; ++c)
+        if (bc->control[c]) *S = PetscMax(*S, PetscAbsReal(BodyControlForce(b, j, c)));
     }
   }
   PetscFunctionReturn(0);
@@ -187,59 +151,22 @@ static PetscErrorCode ProblemControlColumn(Problem p, PetscInt k, Vec Xl)
 {
   const ForceControl *fc = &p->fc.c[k];
   Body                b  = p->bodies[fc->body];
-  const PetscReal     v0 = b->bc[fc->bc].values[fc->c];
-  Vec                 e, y;
+  Vec                 y;
   PetscScalar        *a;
-  PetscReal           en, saved[CONTACT_MAX_BC][2];
+  PetscReal           R[CONTACT_MAX_BC][3];
 
   PetscFunctionBeginUser;
-  if (p->fc.E[k]) e = p->fc.E[k];
-  else {
-    PetscCall(VecDuplicate(b->Xl, &e));
-    PetscCall(BodySetBCValue(b, fc->bc, fc->c, 1.0));
-    PetscCall(VecCopy(b->bclFull, e));
-    PetscCall(BodySetBCValue(b, fc->bc, fc->c, 0.0));
-    PetscCall(VecAXPY(e, -1.0, b->bclFull));
-    PetscCall(BodySetBCValue(b, fc->bc, fc->c, v0));
-    if (!b->mat->constantTangent) p->fc.E[k] = e; /* kept: the column is made again at each Hessian */
-  }
-  PetscCall(VecDuplicate(b->Xl, &y));
-  if (b->mat->constantTangent) {
-    Vec z, g0;
-    PetscCall(VecDuplicate(b->Xl, &z));
-    PetscCall(VecDuplicate(b->Xl, &g0));
-    PetscCall(VecZeroEntries(z));
-    PetscCall(VecZeroEntries(g0));
-    PetscCall(BodyComputeEnergyGradient(b, z, &en, g0));
-    PetscCall(VecZeroEntries(y));
-    PetscCall(BodyComputeEnergyGradient(b, e, &en, y));
-    PetscCall(VecAXPY(y, -1.0, g0));
-    PetscCall(VecDestroy(&z));
-    PetscCall(VecDestroy(&g0));
-  } else PetscCall(BodyApplyTangentLocal(b, Xl, e, y));
-  for (PetscInt j = 0; j < b->nbc; ++j) {
-    saved[j][0] = b->bc[j].reaction[0];
-    saved[j][1] = b->bc[j].reaction[1];
-  }
-  PetscCall(BodyComputeReactions(b, y));
+  PetscCall(VecDuplicate(BodyGetLocalSolution(b), &y));
+  PetscCall(BodyControlColumn(b, fc->bc, fc->c, Xl, &p->fc.E[k], y, R));
   for (PetscInt l = 0; l < p->fc.n; ++l) {
     const ForceControl *fl = &p->fc.c[l];
-    const BodyBC       *bc = fl->rigid ? NULL : &p->bodies[fl->body]->bc[fl->bc];
-    p->fc.D[l * p->fc.n + k] = bc && fl->body == fc->body ? bc->reaction[bc->comps[fl->c]] : 0.0;
-  }
-  for (PetscInt j = 0; j < b->nbc; ++j) {
-    b->bc[j].reaction[0] = saved[j][0];
-    b->bc[j].reaction[1] = saved[j][1];
+    p->fc.D[l * p->fc.n + k] = !fl->motion && fl->body == fc->body ? R[fl->bc][BodyGetCondition(b, fl->bc)->comps[fl->c]] : 0.0;
   }
   if (!p->fc.B[k]) PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
   PetscCall(VecZeroEntries(p->fc.B[k]));
   PetscCall(VecGetArray(p->fc.B[k], &a));
-  PetscCall(VecPlaceArray(b->Gg, a + p->offset[fc->body]));
-  PetscCall(DMLocalToGlobalBegin(b->dm, y, ADD_VALUES, b->Gg));
-  PetscCall(DMLocalToGlobalEnd(b->dm, y, ADD_VALUES, b->Gg));
-  PetscCall(VecResetArray(b->Gg));
+  PetscCall(BodyAddLocalToJoined(b, y, a + p->offset[fc->body]));
   PetscCall(VecRestoreArray(p->fc.B[k], &a));
-  if (e != p->fc.E[k]) PetscCall(VecDestroy(&e));
   PetscCall(VecDestroy(&y));
   PetscFunctionReturn(0);
 }
@@ -252,7 +179,7 @@ static void ProblemControlSymmetrise(Problem p)
 
   for (PetscInt k = 0; k < m; ++k)
     for (PetscInt l = 0; l < k; ++l)
-      if (!p->fc.c[k].rigid && !p->fc.c[l].rigid) p->fc.D[k * m + l] = p->fc.D[l * m + k] = 0.5 * (p->fc.D[k * m + l] + p->fc.D[l * m + k]);
+      if (!p->fc.c[k].motion && !p->fc.c[l].motion) p->fc.D[k * m + l] = p->fc.D[l * m + k] = 0.5 * (p->fc.D[k * m + l] + p->fc.D[l * m + k]);
 }
 
 PetscErrorCode ProblemSetUpControlBorder(Problem p)
@@ -262,7 +189,7 @@ PetscErrorCode ProblemSetUpControlBorder(Problem p)
   PetscFunctionBeginUser;
   if (!p->fc.coupled) PetscFunctionReturn(0);
   for (PetscInt k = 0; k < m; ++k) {
-    if (!p->fc.c[k].rigid) PetscCall(ProblemControlColumn(p, k, NULL));
+    if (!p->fc.c[k].motion) PetscCall(ProblemControlColumn(p, k, NULL));
     else { /* the contact's, at each Hessian (ProblemRigidBorderEnd) */
       PetscCall(VecDuplicate(p->Xb, &p->fc.B[k]));
       PetscCall(VecZeroEntries(p->fc.B[k]));
@@ -270,8 +197,8 @@ PetscErrorCode ProblemSetUpControlBorder(Problem p)
     }
   }
   for (PetscInt k = 0; k < m; ++k) {
-    if (p->fc.c[k].rigid) continue;
-    PetscCheck(p->fc.D[k * m + k] > 0, p->comm, PETSC_ERR_USER_INPUT, "body %s: force-controlled group %s has no stiffness of its own (no cell touches it on any rank)", p->bodies[p->fc.c[k].body]->name, p->bodies[p->fc.c[k].body]->bc[p->fc.c[k].bc].group);
+    if (p->fc.c[k].motion) continue;
+    PetscCheck(p->fc.D[k * m + k] > 0, p->comm, PETSC_ERR_USER_INPUT, "body %s: force-controlled group %s has no stiffness of its own (no cell touches it on any rank)", BodyGetName(p->bodies[p->fc.c[k].body]), BodyGetCondition(p->bodies[p->fc.c[k].body], p->fc.c[k].bc)->group);
   }
   ProblemControlSymmetrise(p);
   PetscFunctionReturn(0);
@@ -293,8 +220,8 @@ PetscErrorCode ProblemUpdateControlBorder(Problem p, PetscBool tangent)
   PetscCall(PetscLogEventBegin(ControlColumns, 0, 0, 0, 0));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     const Body b = p->bodies[p->fc.c[k].body];
-    if (p->fc.c[k].rigid || b->mat->constantTangent) continue;
-    PetscCall(ProblemControlColumn(p, k, tangent ? b->Xl : NULL));
+    if (p->fc.c[k].motion || BodyHasConstantTangent(b)) continue;
+    PetscCall(ProblemControlColumn(p, k, tangent ? BodyGetLocalSolution(b) : NULL));
     any = PETSC_TRUE;
   }
   if (any) ProblemControlSymmetrise(p);
@@ -323,12 +250,9 @@ PetscErrorCode ProblemSetControlDisplacements(Problem p, Vec X)
   PetscCall(PetscMPIIntCast(p->fc.n, &m));
   PetscCallMPI(MPI_Bcast(U, m, MPIU_REAL, 0, p->comm));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
-    ForceControl   *fc = &p->fc.c[k];
-    Body            b  = p->bodies[fc->body];
-    const PetscReal v  = b->loadFactor > 0 ? U[k] / b->loadFactor : 0.0;
-    fc->U              = U[k];
-    if (fc->rigid) BodyRigidSetUnknown(b, fc->c, U[k]); /* the motion itself, whatever the load factor */
-    else if (b->bc[fc->bc].values[fc->c] != v) PetscCall(BodySetBCValue(b, fc->bc, fc->c, v));
+    ForceControl *fc = &p->fc.c[k];
+    fc->U            = U[k];
+    PetscCall(BodySetControlValue(p->bodies[fc->body], fc->bc, fc->c, U[k]));
   }
   PetscFunctionReturn(0);
 }
@@ -351,10 +275,10 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
     ForceControl *fc = &p->fc.c[k];
     Body          b  = p->bodies[fc->body];
     PetscReal     F;
-    if (!done[fc->body]) PetscCall(BodyComputeReactions(b, b->Gl)); /* Gl: the evaluation's, before its sum over ranks */
+    if (!done[fc->body]) PetscCall(BodyComputeReactions(b, BodyGetLocalGradient(b))); /* Gl: the evaluation's, before its sum over ranks */
     done[fc->body] = PETSC_TRUE;
     fc->R          = ProblemControlReaction(p, k); /* a rigid body's dPi/dq: the contact's force, or moment over L */
-    F              = fc->rigid ? BodyRigidControlForce(b, fc->c) : BodyControlForce(b, fc->bc, fc->c); /* at the load parameter (history.c) */
+    F              = BodyGetControlForce(b, fc->bc, fc->c); /* at the load parameter (history.c) */
     gU[k]          = fc->R - F;
     *f -= F * fc->U;
   }
@@ -372,25 +296,22 @@ PetscErrorCode ProblemAddControlWork(Problem p, PetscReal *f, Vec G)
 PetscReal ProblemControlReaction(Problem p, PetscInt k)
 {
   const ForceControl *fc = &p->fc.c[k];
-  const Body          b  = p->bodies[fc->body];
 
-  if (fc->rigid) return BodyRigidUnknownGradient(b, fc->c);
-  return b->bc[fc->bc].reaction[b->bc[fc->bc].comps[fc->c]];
+  return BodyGetControlReaction(p->bodies[fc->body], fc->bc, fc->c);
 }
 
 const char *ProblemControlGroup(Problem p, PetscInt k)
 {
   const ForceControl *fc = &p->fc.c[k];
 
-  return fc->bc < 0 ? "" : p->bodies[fc->body]->bc[fc->bc].group;
+  return fc->bc < 0 ? "" : BodyGetCondition(p->bodies[fc->body], fc->bc)->group;
 }
 
 const char *ProblemControlComponent(Problem p, PetscInt k)
 {
   const ForceControl *fc = &p->fc.c[k];
 
-  if (fc->rigid) return fc->c == 2 ? "rotation" : (fc->c ? "y" : "x");
-  return p->bodies[fc->body]->bc[fc->bc].comps[fc->c] ? "y" : "x";
+  return BodyGetControlComponent(p->bodies[fc->body], fc->bc, fc->c);
 }
 
 PetscErrorCode ProblemRigidBorderBegin(Problem p)
@@ -399,11 +320,9 @@ PetscErrorCode ProblemRigidBorderBegin(Problem p)
   if (!p->fc.rigid) PetscFunctionReturn(0);
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     const ForceControl *fc = &p->fc.c[k];
-    BodyRigid          *r  = p->bodies[fc->body]->rg;
-    if (!fc->rigid) continue;
+    if (!fc->motion) continue;
     PetscCall(VecZeroEntries(p->fc.B[k]));
-    r->B[fc->c] = p->fc.B[k];
-    PetscCall(PetscArrayzero(r->D, 9));
+    BodyRigidBorderBegin(p->bodies[fc->body], fc->c, p->fc.B[k]);
   }
   PetscFunctionReturn(0);
 }
@@ -414,19 +333,18 @@ PetscErrorCode ProblemRigidBorderEnd(Problem p)
 
   PetscFunctionBeginUser;
   if (!p->fc.rigid) PetscFunctionReturn(0);
-  for (PetscInt i = 0; i < p->nbodies; ++i)
-    if (p->bodies[i]->rigid) PetscCall(MPIU_Allreduce(MPI_IN_PLACE, p->bodies[i]->rg->D, 9, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt k = 0; k < m; ++k) /* each body's coupling among its unknowns, summed over ranks once */
+    if (p->fc.c[k].motion && (k == 0 || p->fc.c[k - 1].body != p->fc.c[k].body || !p->fc.c[k - 1].motion)) PetscCall(BodyRigidBorderSum(p->bodies[p->fc.c[k].body]));
   for (PetscInt k = 0; k < m; ++k) {
     const ForceControl *fc = &p->fc.c[k];
-    BodyRigid          *r  = p->bodies[fc->body]->rg;
-    if (!fc->rigid) continue;
+    if (!fc->motion) continue;
     PetscCall(VecAssemblyBegin(p->fc.B[k]));
     PetscCall(VecAssemblyEnd(p->fc.B[k]));
-    r->B[fc->c] = NULL;
+    BodyRigidBorderEnd(p->bodies[fc->body], fc->c);
     for (PetscInt l = 0; l < m; ++l) {
       const ForceControl *fl = &p->fc.c[l];
-      if (!fl->rigid || fl->body != fc->body) continue;
-      p->fc.D[k * m + l] = r->D[3 * fc->c + fl->c] + (fc->c == 2 && fl->c == 2 ? r->curl / PetscSqr(r->L) : 0.0);
+      if (!fl->motion || fl->body != fc->body) continue;
+      p->fc.D[k * m + l] = BodyRigidBorderCoupling(p->bodies[fc->body], fc->c, fl->c);
     }
   }
   PetscFunctionReturn(0);

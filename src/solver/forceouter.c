@@ -54,7 +54,7 @@ static PetscErrorCode ProblemSolveAtControls(Problem p, const PetscReal U[], Vec
   PetscCall(ProblemComputeReactions(p, p->X));
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     ForceControl *fc = &p->fc.c[k];
-    const BodyBC *bc = &p->bodies[fc->body]->bc[fc->bc];
+    const BodyBC *bc = BodyGetCondition(p->bodies[fc->body], fc->bc);
     fc->R            = bc->reaction[bc->comps[fc->c]];
     R[k]             = fc->R;
   }
@@ -142,7 +142,7 @@ PetscErrorCode ProblemSolveControlledOuter(Problem p, PetscInt *its, TaoConverge
     PetscReal R1[CONTACT_MAX_CONTROLS], ss = 0, Js[CONTACT_MAX_CONTROLS];
     if (p->res.controlSolves >= p->cfg->control.maxIt) {
       *reason = TAO_DIVERGED_MAXITS;
-      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->cfg->control.maxIt, p->bodies[p->fc.c[0].body]->bc[p->fc.c[0].bc].group, (double)R[0], (double)p->fc.c[0].force));
+      PetscCall(PetscSNPrintf(p->res.why, sizeof(p->res.why), "force control: the reactions are not the forces after -force_control_max_it %" PetscInt_FMT " solves (%s: reaction %g, force %g)", p->cfg->control.maxIt, BodyGetCondition(p->bodies[p->fc.c[0].body], p->fc.c[0].bc)->group, (double)R[0], (double)p->fc.c[0].force));
       break;
     }
     for (PetscInt k = 0; k < m; ++k) r[k] = R[k] - p->fc.c[k].force;

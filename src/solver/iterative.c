@@ -47,9 +47,9 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
     PetscScalar *a[6];
     PetscInt     first = n, nm;
 
-    if (bodies[i]->rigid) continue; /* no dofs: its motion is the border's (forceborder.c) */
-    dim = bodies[i]->dim;
-    nm = bodies[i]->dim == 3 ? 6 : 3;
+    nm = BodyGetNumRigidModes(bodies[i]);
+    if (!nm) continue; /* no dofs (a rigid body): its motion is the border's (forceborder.c) */
+    dim = BodyGetDimension(bodies[i]);
     for (PetscInt k = 0; k < nm; ++k) {
       PetscCall(MatCreateVecs(H, &v[k], NULL));
       PetscCall(VecZeroEntries(v[k]));

@@ -143,7 +143,7 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   PetscInt N;
 
   PetscFunctionBeginUser;
-  if (p->cfg->newton.iterativeSet || !p->Xb || p->nbodies == 0 || p->bodies[0]->dim != 3) PetscFunctionReturn(0);
+  if (p->cfg->newton.iterativeSet || !p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
   p->cfg->newton.iterative = (PetscBool)(N > p->cfg->newton.iterativeDofs);
   PetscCall(PetscPrintf(p->comm, "Newton step: %s (3D, %" PetscInt_FMT " dofs, %s -newton_iterative_dofs %" PetscInt_FMT "; -newton_iterative 0 or 1 forces either)\n",

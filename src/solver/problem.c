@@ -205,8 +205,8 @@ PetscErrorCode ProblemSetFromOptions(Problem p)
   p->nbodies = nb;
   for (PetscInt i = 0; i < nb; ++i) {
     PetscCall(BodyCreate(p->comm, names[i], &p->bodies[i]));
-    p->bodies[i]->axisym  = p->cfg->scene.axisymmetric;
-    p->bodies[i]->nstages = p->cfg->load.stages;
+    BodySetAxisymmetric(p->bodies[i], p->cfg->scene.axisymmetric);
+    BodySetNumStages(p->bodies[i], p->cfg->load.stages);
   }
   for (PetscInt i = 0; i < nb; ++i) PetscCall(BodySetFromOptions(p->bodies[i], p->cfg->scene.meshSize));
   PetscFunctionReturn(0);
@@ -233,7 +233,7 @@ PetscErrorCode ProblemAddTerm(Problem p, EnergyTerm t)
   PetscCall(EnergyTermSetHessianExact(t, p->exactHessian));
   p->terms[p->nterms++] = t;
   for (PetscInt i = 0; i < p->nbodies; ++i)
-    if (t->couples[i]) p->bodies[i]->npairs++;
+    if (t->couples[i]) BodyAddContactPair(p->bodies[i]);
   PetscFunctionReturn(0);
 }
 
@@ -303,34 +303,16 @@ PetscErrorCode ProblemSetInitialGuess(Problem p, Vec X0)
   PetscFunctionReturn(0);
 }
 
-/* For each body, local dof -> index in X (-1 for constrained dofs): the global
-   indices are scattered to the local vector, which leaves constrained dofs alone. */
+/* For each body, local dof -> index in X (-1 for constrained dofs; a rigid
+   body has none): BodySetJoinedNumbering, from the body's first index on
+   this rank. */
 static PetscErrorCode ProblemBuildIndexMaps(Problem p)
 {
   PetscInt rstart;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetOwnershipRange(p->Xb, &rstart, NULL));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body               b = p->bodies[i];
-    PetscScalar       *a;
-    const PetscScalar *l;
-    PetscInt           n;
-
-    if (b->rigid) continue; /* no dofs */
-    PetscCall(VecGetArray(b->Xg, &a));
-    for (PetscInt k = 0; k < b->nlocal; ++k) a[k] = (PetscScalar)(rstart + p->offset[i] + k);
-    PetscCall(VecRestoreArray(b->Xg, &a));
-    PetscCall(VecSet(b->Xl, -1.0));
-    PetscCall(DMGlobalToLocalBegin(b->dm, b->Xg, INSERT_VALUES, b->Xl));
-    PetscCall(DMGlobalToLocalEnd(b->dm, b->Xg, INSERT_VALUES, b->Xl));
-    PetscCall(VecGetLocalSize(b->Xl, &n));
-    PetscCall(PetscMalloc1(n, &b->l2b));
-    PetscCall(VecGetArrayRead(b->Xl, &l));
-    for (PetscInt k = 0; k < n; ++k) b->l2b[k] = (PetscInt)PetscFloorReal(PetscRealPart(l[k]) + 0.5);
-    PetscCall(VecRestoreArrayRead(b->Xl, &l));
-    PetscCall(VecZeroEntries(b->Xg));
-  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetJoinedNumbering(p->bodies[i], rstart + p->offset[i]));
   PetscFunctionReturn(0);
 }
 
@@ -339,27 +321,16 @@ static PetscErrorCode ProblemBuildIndexMaps(Problem p)
    singular, and frictionless contact does not fix it either (it pushes, it
    does not hold; a body can slide along it, or leave it). Refused here, with
    the cause, rather than left to a factorisation that meets a zero pivot or a
-   solver that never converges. */
+   solver that never converges (BodyCheckHeld; a rigid body's free unknowns
+   alike, in no contact pair). */
 static PetscErrorCode ProblemCheckSupports(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body      b = p->bodies[i];
-    PetscInt  nfree;
     PetscBool contact = PETSC_FALSE;
 
     for (PetscInt t = 0; t < p->nterms; ++t) contact = (PetscBool)(contact || p->terms[t]->couples[i]);
-    if (b->rigid) { /* its unknowns are held by its contacts, or by nothing */
-      const BodyRigid *r = b->rg;
-      for (PetscInt q = 0; q < 3 && !contact; ++q)
-        PetscCheck(!r->unknown[q], p->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
-                   q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");
-      continue;
-    }
-    PetscCall(BodyCountFreeRigidModes(b, &nfree));
-    if (!nfree) continue;
-    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "body %s: %s leave %" PetscInt_FMT " rigid motion(s) free%s, so the problem is singular; constrain it with -%s_bc", b->name, b->nbc ? "its Dirichlet conditions" : "no Dirichlet conditions", nfree,
-            contact ? " (frictionless contact pushes but does not hold it; a load pressing it on, -<body>_load, would)" : " and it is in no contact pair", b->name);
+    PetscCall(BodyCheckHeld(p->bodies[i], contact));
   }
   PetscFunctionReturn(0);
 }
@@ -400,11 +371,12 @@ typedef struct {
 
 static PetscErrorCode StiffnessCountNode(void *ctx, PetscInt dof, PetscInt n, const PetscInt cols[])
 {
-  StiffnessCount *sc = (StiffnessCount *)ctx;
+  StiffnessCount *sc  = (StiffnessCount *)ctx;
+  const PetscInt *l2b = BodyGetJoinedMap(sc->body);
 
   PetscFunctionBeginUser;
-  for (PetscInt d = 0; d < sc->body->dim; ++d) {
-    const PetscInt g = sc->body->l2b[dof + d];
+  for (PetscInt d = 0; d < BodyGetDimension(sc->body); ++d) {
+    const PetscInt g = l2b[dof + d];
     PetscInt       lo = sc->rstart, hi = sc->rend, dc = 0;
     PetscMPIInt    o;
 
@@ -463,7 +435,7 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
     sc.ov     = ov;
     for (PetscInt i = 0; i < p->nbodies; ++i) {
       sc.body = p->bodies[i];
-      PetscCall(BodyNodeColumns(sc.body, sc.body->l2b, StiffnessCountNode, &sc));
+      PetscCall(BodyNodeColumns(sc.body, BodyGetJoinedMap(sc.body), StiffnessCountNode, &sc));
     }
   }
   if (size > 1) {
@@ -539,18 +511,8 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
 {
   PetscFunctionBeginUser;
   *loaded = PETSC_FALSE;
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    const Body b = p->bodies[i];
-    for (PetscInt l = 0; l < b->nload; ++l)
-      for (PetscInt st = 0; st < b->nstages; ++st)
-        if (b->load[l].isPressure ? b->load[l].stagePressure[st] != 0 : b->load[l].stageTraction[st][0] != 0 || b->load[l].stageTraction[st][1] != 0 || b->load[l].stageTraction[st][2] != 0) *loaded = PETSC_TRUE;
-    for (PetscInt j = 0; j < b->nbc; ++j) {
-      if (b->bc[j].exact) *loaded = PETSC_TRUE;
-      for (PetscInt c = 0; c < b->bc[j].ncomp; ++c)
-        for (PetscInt st = 0; st < b->nstages; ++st)
-          if (b->bc[j].stage[st][c] != 0) *loaded = PETSC_TRUE;
-    }
-  }
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (BodyIsLoaded(p->bodies[i])) *loaded = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -560,12 +522,12 @@ static PetscErrorCode ProblemCheckDimensions(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 1; i < p->nbodies; ++i) {
-    const Body a = p->bodies[0], b = p->bodies[i];
-    const PetscInt da = a->rigid ? 2 : a->dim, db = b->rigid ? 2 : b->dim;
-    PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", a->name, da, a->rigid ? "rigid: curves" : a->msh, b->name, db, b->rigid ? "rigid: curves" : b->msh);
+    const Body     a = p->bodies[0], b = p->bodies[i];
+    const PetscInt da = BodyGetDimension(a), db = BodyGetDimension(b);
+    PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", BodyGetName(a), da, BodyHasCells(a) ? BodyGetMeshFile(a) : "rigid: curves", BodyGetName(b), db, BodyHasCells(b) ? BodyGetMeshFile(b) : "rigid: curves");
   }
   for (PetscInt t = 0; t < p->nterms; ++t)
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || p->bodies[i]->rigid || p->bodies[i]->dim == 2, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, p->bodies[i]->name);
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || BodyGetDimension(p->bodies[i]) == 2, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, BodyGetName(p->bodies[i]));
   PetscFunctionReturn(0);
 }
 
@@ -579,7 +541,8 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(ProblemIsLoaded(p, &loaded));
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* a body in a contact of a loaded scene may be held by it (anchors.c) */
     Body b = p->bodies[i];
-    for (PetscInt t = 0; t < p->nterms; ++t) b->mayAnchor = (PetscBool)(!b->rigid && (b->mayAnchor || (p->terms[t]->couples[i] && loaded)));
+    for (PetscInt t = 0; t < p->nterms; ++t)
+      if (p->terms[t]->couples[i] && loaded) BodySetMayAnchor(b, PETSC_TRUE);
     PetscCall(BodySetUp(b, p->cfg->partition.type, p->cfg->partition.view));
   }
   PetscCall(ProblemCheckDimensions(p));
@@ -588,7 +551,7 @@ PetscErrorCode ProblemSetUp(Problem p)
   PetscCall(ProblemCollectControls(p));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->offset[i] = nloc;
-    nloc += p->bodies[i]->nlocal;
+    nloc += BodyGetLocalSize(p->bodies[i]);
   }
   PetscCall(VecCreateMPI(p->comm, nloc, PETSC_DETERMINE, &p->Xb));
   PetscCall(PetscObjectSetName((PetscObject)p->Xb, "u"));
@@ -634,12 +597,7 @@ PetscErrorCode ProblemScatterToBodies(Problem p, Vec X)
   PetscFunctionBeginUser;
   PetscCall(ProblemSetControlDisplacements(p, X));
   PetscCall(VecGetArrayRead(X, &x));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body b = p->bodies[i];
-    PetscCall(VecPlaceArray(b->Xg, x + p->offset[i]));
-    PetscCall(BodyGlobalToLocal(b, b->Xg, b->Xl));
-    PetscCall(VecResetArray(b->Xg));
-  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodySetJoinedSolution(p->bodies[i], x + p->offset[i]));
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscFunctionReturn(0);
 }
@@ -672,11 +630,11 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   PetscFunctionBeginUser;
   PetscCall(ProblemScatterToBodies(p, X));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscCall(VecZeroEntries(p->bodies[i]->Gl));
-    PetscCall(BodyComputeEnergyGradient(p->bodies[i], p->bodies[i]->Xl, &eb, p->bodies[i]->Gl));
-    if (PetscIsInfReal(eb) && eb > 0 && !p->bodies[i]->mat->constantTangent) eb = (PetscReal)INFINITY; /* an inverted element: Pi = +inf, for the line search */
+    PetscCall(VecZeroEntries(BodyGetLocalGradient(p->bodies[i])));
+    PetscCall(BodyComputeEnergyGradient(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), &eb, BodyGetLocalGradient(p->bodies[i])));
+    if (PetscIsInfReal(eb) && eb > 0 && !BodyHasConstantTangent(p->bodies[i])) eb = (PetscReal)INFINITY; /* an inverted element: Pi = +inf, for the line search */
     else if (PetscIsInfOrNanReal(eb)) bad[i] = 1.0;
-    else PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &bad[i]));
+    else PetscCall(VecHasNonFinite(BodyGetLocalGradient(p->bodies[i]), &bad[i]));
     sum[0] += eb;
     part[i] = eb;
   }
@@ -688,7 +646,7 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
   }
   if (p->nterms) {
     PetscReal gbad = 0.0;
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecHasNonFinite(p->bodies[i]->Gl, &gbad));
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecHasNonFinite(BodyGetLocalGradient(p->bodies[i]), &gbad));
     if (gbad != 0.0)
       for (PetscInt t = 0; t < p->nterms; ++t) bad[p->nbodies + t] = 1.0;
   }
@@ -697,7 +655,7 @@ PetscErrorCode ProblemEvaluate(Problem p, Vec X, PetscReal *f, Vec G, PetscReal 
     PetscInt its = 0;
     if (all[1 + k] == 0.0) continue;
     if (p->tao) PetscCall(TaoGetIterationNumber(p->tao, &its));
-    SETERRQ(p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair", k < p->nbodies ? p->bodies[k]->name : p->terms[k - p->nbodies]->name, its);
+    SETERRQ(p->comm, PETSC_ERR_FP, "non-finite (NaN or Inf) energy or gradient in %s %s at TAO iteration %" PetscInt_FMT "; check the scene's magnitudes (loads, moduli, penalty)", k < p->nbodies ? "body" : "contact pair", k < p->nbodies ? BodyGetName(p->bodies[k]) : p->terms[k - p->nbodies]->name, its);
   }
   if (parts) PetscCall(PetscArraycpy(parts, all + 1 + nparts, nparts));
   PetscCall(ProblemGatherGradient(p, G));
@@ -712,14 +670,7 @@ PetscErrorCode ProblemGatherGradient(Problem p, Vec G)
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(G));
   PetscCall(VecGetArray(G, &g));
-  for (PetscInt i = 0; i < p->nbodies; ++i) {
-    Body b = p->bodies[i];
-    if (b->rigid) continue; /* no dofs: its gradient is its force (rigidbody.c) */
-    PetscCall(VecPlaceArray(b->Gg, g + p->offset[i]));
-    PetscCall(DMLocalToGlobalBegin(b->dm, b->Gl, ADD_VALUES, b->Gg));
-    PetscCall(DMLocalToGlobalEnd(b->dm, b->Gl, ADD_VALUES, b->Gg));
-    PetscCall(VecResetArray(b->Gg));
-  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAddJoinedGradient(p->bodies[i], g + p->offset[i])); /* a rigid body: none, its gradient is its force (rigidbody.c) */
   PetscCall(VecRestoreArray(G, &g));
   PetscFunctionReturn(0);
 }
@@ -735,7 +686,7 @@ PetscErrorCode ProblemContactForceNorm(Problem p, Vec X, PetscReal *fc)
   *fc = 0.0;
   if (!p->nterms) PetscFunctionReturn(0);
   PetscCall(ProblemScatterToBodies(p, X));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(p->bodies[i]->Gl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(VecZeroEntries(BodyGetLocalGradient(p->bodies[i])));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeEnergyGradient(p->terms[t], p->bodies, &et));
   PetscCall(VecDuplicate(X, &W));
   PetscCall(ProblemGatherGradient(p, W));
@@ -795,7 +746,7 @@ PetscErrorCode ProblemSetHessianSwitchReference(Problem p, PetscReal g0)
 PetscBool ProblemTangentVaries(Problem p)
 {
   for (PetscInt i = 0; i < p->nbodies; ++i)
-    if (p->bodies[i]->mat && !p->bodies[i]->mat->constantTangent) return PETSC_TRUE;
+    if (!BodyHasConstantTangent(p->bodies[i])) return PETSC_TRUE;
   return PETSC_FALSE;
 }
 
@@ -849,7 +800,7 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
   }
   if (p->tangentFull) {
     PetscCall(MatZeroEntries(P));
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], p->bodies[i]->Xl, P));
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), P));
   } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
   PetscCall(ProblemUpdateControlBorder(p, p->tangentFull)); /* an anchor of a neohookean body: its column of the same stiffness */
   PetscCall(ProblemRigidBorderBegin(p));
@@ -938,28 +889,22 @@ PetscErrorCode ProblemPostProcess(Problem p, Vec X, PetscBool converged)
   PetscCall(VecNorm(p->G, NORM_2, &p->res.gnorm));
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     p->res.bodyEnergy[i] = parts[i];
-    PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+    PetscCall(BodyComputeReactions(p->bodies[i], BodyGetLocalGradient(p->bodies[i])));
   }
   if (converged && p->cfg->stop.forceRtol > 0 && p->res.contactForceNorm > 0 && p->res.gnorm > p->cfg->stop.forceRtol * p->res.contactForceNorm)
     PetscCall(PetscFPrintf(p->comm, PETSC_STDERR, "contact: warning: the solve stopped with its gradient %.1e of the contacts' nodal forces, above -stop_force_rtol %g: the forces are about that far from converged\n", (double)(p->res.gnorm / p->res.contactForceNorm), (double)p->cfg->stop.forceRtol));
   if (p->res.contactForceNorm > 0) PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e (%.1e of the contacts' nodal forces)\n", (double)p->res.energy, (double)p->res.gnorm, (double)(p->res.gnorm / p->res.contactForceNorm)));
   else PetscCall(PetscPrintf(p->comm, "  energy %.12e, gradient norm %.3e\n", (double)p->res.energy, (double)p->res.gnorm));
-  for (PetscInt i = 0; i < p->nbodies; ++i) { /* a rigid body: its motion and the contact's force on it */
-    const BodyRigid *r = p->bodies[i]->rg;
-    if (!p->bodies[i]->rigid) continue;
-    PetscReal        f[2], mo;
-    BodyRigidContactForce(p->bodies[i], f, &mo);
-    if (p->cfg->scene.axisymmetric) PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", p->bodies[i]->name, (double)r->t[1], (double)f[1]));
-    else PetscCall(PetscPrintf(p->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", p->bodies[i]->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
-  }
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyViewSolution(p->bodies[i], p->cfg->scene.axisymmetric)); /* a rigid body: its motion and the contact's force on it */
   for (PetscInt i = 0; i < p->nbodies; ++i) { /* verification scenes: the error against the manufactured solution */
-    Body       b = p->bodies[i];
-    BodyErrors e;
+    Body                 b  = p->bodies[i];
+    const ExactSolution *ex = BodyGetExactSolution(b);
+    BodyErrors           e;
 
-    if (!b->hasExact) continue;
-    PetscCall(BodyComputeErrors(b, b->Xl, &e)); /* Xl: X, scattered by ProblemEvaluate() */
-    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", b->name, b->exact.name, (double)(e.l2norm > 0 ? e.l2 / e.l2norm : e.l2)));
-    PetscCall(PetscPrintf(p->comm, "  body %s: relative energy-norm error %.6e, relative L2 error of the stress %.6e\n", b->name, (double)(e.energynorm > 0 ? e.energy / e.energynorm : e.energy), (double)(e.stressnorm > 0 ? e.stress / e.stressnorm : e.stress)));
+    if (!ex) continue;
+    PetscCall(BodyComputeErrors(b, BodyGetLocalSolution(b), &e)); /* X, scattered by ProblemEvaluate() */
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative L2 error against the exact solution (%s): %.6e\n", BodyGetName(b), ex->name, (double)(e.l2norm > 0 ? e.l2 / e.l2norm : e.l2)));
+    PetscCall(PetscPrintf(p->comm, "  body %s: relative energy-norm error %.6e, relative L2 error of the stress %.6e\n", BodyGetName(b), (double)(e.energynorm > 0 ? e.energy / e.energynorm : e.energy), (double)(e.stressnorm > 0 ? e.stress / e.stressnorm : e.stress)));
   }
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermPostProcess(p->terms[t], p->bodies));
   PetscCall(PetscLogStagePop());
@@ -979,7 +924,7 @@ PetscErrorCode ProblemComputeReactions(Problem p, Vec X)
 
   PetscFunctionBeginUser;
   PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
-  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyComputeReactions(p->bodies[i], BodyGetLocalGradient(p->bodies[i])));
   PetscFunctionReturn(0);
 }
 

@@ -48,14 +48,14 @@ static PetscReal ProblemImposedDisplacement(Problem p)
 
   for (PetscInt i = 0; i < p->nbodies; ++i) {
     const Body b = p->bodies[i];
-    for (PetscInt g = 0; g < b->nbc; ++g) {
-      const BodyBC *bc = &b->bc[g];
+    for (PetscInt g = 0; g < BodyGetNumConditions(b); ++g) {
+      const BodyBC *bc = BodyGetCondition(b, g);
       if (bc->anchor) continue;
       if (bc->exact) return PETSC_INFINITY;
       for (PetscInt c = 0; c < bc->ncomp; ++c) {
         if (bc->control[c]) continue;
         D = PetscMax(D, PetscAbsReal(bc->values[c]));
-        for (PetscInt k = 0; k < PetscMin(b->nstages, CONTACT_MAX_STAGES); ++k) D = PetscMax(D, PetscAbsReal(bc->stage[k][c]));
+        for (PetscInt k = 0; k < PetscMin(BodyGetNumStages(b), CONTACT_MAX_STAGES); ++k) D = PetscMax(D, PetscAbsReal(bc->stage[k][c]));
       }
     }
   }

@@ -353,7 +353,7 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
 
   PetscFunctionBeginUser;
   if (!p->cfg->load.path) PetscFunctionReturn(0);
-  for (PetscInt i = 0; i < p->nbodies; ++i) ngroups += p->bodies[i]->nbc;
+  for (PetscInt i = 0; i < p->nbodies; ++i) ngroups += BodyGetNumConditions(p->bodies[i]);
   if (atRest) lp->n = 0;
   PetscCall(LoadPathReserve(lp, ngroups));
   if (atRest) {
@@ -363,8 +363,8 @@ static PetscErrorCode ProblemLoadPathAppend(Problem p, PetscReal load, PetscBool
   PetscCall(ProblemEvaluate(p, X, &f, p->G, NULL));
   R = lp->reaction + 3 * lp->n * ngroups;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    PetscCall(BodyComputeReactions(p->bodies[i], p->bodies[i]->Gl));
-    for (PetscInt j = 0; j < p->bodies[i]->nbc; ++j, R += 3) PetscCall(PetscArraycpy(R, p->bodies[i]->bc[j].reaction, 3));
+    PetscCall(BodyComputeReactions(p->bodies[i], BodyGetLocalGradient(p->bodies[i])));
+    for (PetscInt j = 0; j < BodyGetNumConditions(p->bodies[i]); ++j, R += 3) PetscCall(PetscArraycpy(R, BodyGetCondition(p->bodies[i], j)->reaction, 3));
   }
   lp->load[lp->n]   = load;
   lp->energy[lp->n] = f;

@@ -27,7 +27,7 @@ static PetscErrorCode SubdomainCountNode(void *ctx, PetscInt dof, PetscInt n, co
 
   PetscFunctionBeginUser;
   (void)cols;
-  for (PetscInt d = 0; d < sc->body->dim; ++d)
+  for (PetscInt d = 0; d < BodyGetDimension(sc->body); ++d)
     if (sc->map[dof + d] >= 0) sc->nnz[sc->map[dof + d]] += n;
   PetscFunctionReturn(0);
 }
@@ -40,31 +40,34 @@ PetscErrorCode SubdomainCreate(PetscInt nbodies, Body bodies[], Subdomain *sub)
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
   for (PetscInt i = 0; i < nbodies; ++i) {
-    PetscInt nl;
-    PetscCall(VecGetLocalSize(bodies[i]->Xl, &nl));
-    for (PetscInt k = 0; k < nl; ++k) n += bodies[i]->l2b[k] >= 0;
+    const PetscInt *l2b = BodyGetJoinedMap(bodies[i]);
+    PetscInt        nl;
+    PetscCall(VecGetLocalSize(BodyGetLocalSolution(bodies[i]), &nl));
+    for (PetscInt k = 0; k < nl; ++k) n += l2b[k] >= 0;
   }
   PetscCall(PetscMalloc1(n + 1, &s->dofs));
   n = 0;
   for (PetscInt i = 0; i < nbodies; ++i) {
-    PetscInt nl;
-    PetscCall(VecGetLocalSize(bodies[i]->Xl, &nl));
+    const PetscInt *l2b = BodyGetJoinedMap(bodies[i]);
+    PetscInt        nl;
+    PetscCall(VecGetLocalSize(BodyGetLocalSolution(bodies[i]), &nl));
     for (PetscInt k = 0; k < nl; ++k)
-      if (bodies[i]->l2b[k] >= 0) s->dofs[n++] = bodies[i]->l2b[k];
+      if (l2b[k] >= 0) s->dofs[n++] = l2b[k];
   }
   PetscCall(PetscSortRemoveDupsInt(&n, s->dofs));
   s->n = n;
 
   PetscCall(PetscCalloc1(n + 1, &nnz));
   for (PetscInt i = 0; i < nbodies; ++i) {
-    Body     b = bodies[i];
-    PetscInt nl;
+    Body            b   = bodies[i];
+    const PetscInt *l2b = BodyGetJoinedMap(b);
+    PetscInt        nl;
 
-    PetscCall(VecGetLocalSize(b->Xl, &nl));
+    PetscCall(VecGetLocalSize(BodyGetLocalSolution(b), &nl));
     PetscCall(PetscMalloc1(nl + 1, &map[i]));
     for (PetscInt k = 0; k < nl; ++k) {
       map[i][k] = -1;
-      if (b->l2b[k] >= 0) PetscCall(PetscFindInt(b->l2b[k], n, s->dofs, &map[i][k]));
+      if (l2b[k] >= 0) PetscCall(PetscFindInt(l2b[k], n, s->dofs, &map[i][k]));
     }
     {
       SubdomainCount sc = {b, map[i], nnz};

@@ -18,6 +18,7 @@
 #include <petscfe.h>
 #include <petscdt.h>
 #include "element.h"
+#include "bodyimpl.h" /* the test fills in a body of one cell itself */
 
 #include "checkutil.h"
 

@@ -11,6 +11,7 @@
    deduplicated: the exact count, at a sort of at most 8 x 81 entries a
    node. */
 #include "pattern.h"
+#include "bodyimpl.h"
 
 PetscErrorCode BodyNodeColumns(Body b, const PetscInt map[], PatternNodeFn fn, void *ctx)
 {
