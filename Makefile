@@ -40,7 +40,7 @@ bin/contact: $(OBJS)
 	$(CC) -o $@ $(OBJS) $(LDLIBS)
 
 # the materials' kernels checked at random 3D states (tests/test_material_kernels.py)
-MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/obj/body/mooneyrivlin.o build/obj/body/material.o build/obj/io/options.o
+MATERIAL_OBJS = build/obj/body/elasticity.o build/obj/body/neohookean.o build/obj/body/mooneyrivlin.o build/obj/body/plasticity.o build/obj/body/material.o build/obj/io/options.o
 bin/material-check: tests/kernels/material_check.c tests/kernels/checkutil.h $(MATERIAL_OBJS)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $< $(MATERIAL_OBJS) $(LDLIBS)

@@ -58,6 +58,8 @@ typedef struct {
   PetscReal umax, unorm2;
   BodyErrors err; /* against the body's exact solution, if any */
   PetscReal maxStrain; /* the largest principal Green-Lagrange strain (BodyComputeMaxStrain) */
+  PetscInt  nstate;    /* a material with history: its state values' smallest and largest over the quadrature points (BodyGetStateRange) */
+  PetscReal stateMin[MATERIAL_MAX_STATE], stateMax[MATERIAL_MAX_STATE];
 } BodyNodalFields;
 PetscErrorCode BodyComputeNodalFields(Body, Vec Xl, BodyNodalFields *);
 /* Cell c's nb global node numbers in the order of its XDMF / VTK cell type
@@ -81,6 +83,21 @@ PetscErrorCode BodyComputeStrainPeak(Body, Vec Xl, BodyStrainPeak *);
 /* Zienkiewicz-Zhu error indicator of each local cell (fields.c): the L2 norm
    of the recovered (nodal-average) stress minus the cell's stress. */
 PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);
+
+/* The state of a material with history at the body's quadrature points
+   (bodystate.c; material.h): the lifecycle the energy terms' state has
+   (energyterm.h). BodyAcceptState: an increment converged at the body's
+   local solution, whose state becomes the accepted one; BodyRestoreState:
+   back to the accepted state (a cut-back); BodyResetState: back to rest.
+   Collective in spirit, local in fact (each point's own); a no-op for a
+   body without history. BodyGetStateRange: collective, the smallest and
+   largest value k over every rank's points (BodyHasState: the material's
+   nstate > 0). */
+PetscBool       BodyHasState(Body);
+PetscErrorCode  BodyAcceptState(Body);
+PetscErrorCode  BodyRestoreState(Body);
+PetscErrorCode  BodyResetState(Body);
+PetscErrorCode  BodyGetStateRange(Body, PetscInt k, PetscReal *vmin, PetscReal *vmax);
 
 /* What the rest of the program may read of a body (bodyquery.c). */
 const char     *BodyGetName(Body);

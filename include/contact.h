@@ -35,5 +35,10 @@ void ContactJSONKeyPair(FILE *fp, const char sep[], const char key[], const Pets
 void ElasticityEnergyDensity(const PetscReal params[], const PetscReal H[], PetscReal *W);
 void ElasticityStress(const PetscReal params[], const PetscReal H[], PetscReal sigma[]);
 void ElasticityTangent(const PetscReal params[], PetscReal C[]);
+/* The strain's components e = {xx, yy, zz, xy, xz, yz} of H, and its
+   trace; the energy density and stress of a strain e (an elastic strain:
+   plasticity.c), the same sums as of H's. */
+PetscReal ElasticityStrain(const PetscReal H[], PetscReal e[6]);
+void ElasticityStrainEnergyStress(const PetscReal params[], const PetscReal e[6], PetscReal *W, PetscReal sigma[]);
 PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r);
 PetscReal ElasticityVonMises(const PetscReal sigma[]);

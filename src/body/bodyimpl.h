@@ -85,6 +85,7 @@ struct _n_Body {
   PetscReal *xq;   /* [ncells][nq][dim] */
   PetscReal *xnode;/* [ncells][nb][dim] node coordinates */
   const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
+  PetscReal *state;/* [ncells][nq][mat->nstate]: a material with history's last accepted state at each point (bodystate.c), or NULL */
   Vec       Xg, Gg, Xl, Gl, bcl, bclFull, bclFrom; /* bcl: Dirichlet values of the load step, bclFull: the active stage's end, bclFrom: its start (NULL in the first stage) */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */
@@ -164,6 +165,10 @@ PetscErrorCode BodyRigidComputeReactions(Body);
 PetscErrorCode BodyRigidDestroy(Body);
 /* The line elements of physical tag: their count, and (PetscFree) their indices. */
 PetscErrorCode BodyRigidGroupEdges(Body, PetscInt tag, PetscInt *n, PetscInt **edges);
+
+/* Collective: the quadrature points' state of a material with history, at
+   rest (bodystate.c), once the cell cache is built. */
+PetscErrorCode BodyStateSetUp(Body);
 
 /* The elastic body's operations (body.c, boundary.c) and the rigid body's (rigidbody.c, rigidsurface.c). */
 void BodyElasticSetOps(Body);

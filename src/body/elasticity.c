@@ -65,6 +65,19 @@ void ElasticityStress(const PetscReal params[], const PetscReal H[], PetscReal s
   Stress(params[0], params[1], e, tr, sigma);
 }
 
+PetscReal ElasticityStrain(const PetscReal H[], PetscReal e[6])
+{
+  return Strain(H, e);
+}
+
+void ElasticityStrainEnergyStress(const PetscReal params[], const PetscReal e[6], PetscReal *W, PetscReal sigma[])
+{
+  const PetscReal tr = e[0] + e[1] + e[2];
+
+  *W = Energy(params[0], params[1], e, tr);
+  Stress(params[0], params[1], e, tr, sigma);
+}
+
 PetscReal ElasticityHoopStrain(PetscReal ur, PetscReal durdr, PetscReal r)
 {
   return r > 0 ? ur / r : durdr;
@@ -88,19 +101,27 @@ PetscReal ElasticityVonMises(const PetscReal s[])
   return PetscSqrtReal(0.5 * d + 3.0 * s[1] * s[1] + 3.0 * s[2] * s[2] + 3.0 * s[5] * s[5]);
 }
 
-static PetscBool LinearEnergy(const PetscReal param[], const PetscReal H[], PetscReal *W, PetscReal P[])
+static PetscBool LinearEnergy(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal *W, PetscReal P[])
 {
   PetscReal e[6], tr = Strain(H, e);
 
+  (void)state; /* no history (nstate = 0) */
   *W = Energy(param[0], param[1], e, tr);
   Stress(param[0], param[1], e, tr, P);
   return PETSC_TRUE;
 }
 
-static void LinearModuli(const PetscReal param[], const PetscReal H[], PetscReal A[])
+static void LinearModuli(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal A[])
 {
+  (void)state; /* no history (nstate = 0) */
   (void)H;
   ElasticityTangent(param, A);
 }
 
-const Material MaterialLinear = {"linear", MaterialElasticConstantsSetFromOptions, PETSC_TRUE, LinearEnergy, LinearModuli, ElasticityStress};
+static void LinearCauchy(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal sigma[])
+{
+  (void)state; /* no history (nstate = 0) */
+  ElasticityStress(param, H, sigma);
+}
+
+const Material MaterialLinear = {"linear", MaterialElasticConstantsSetFromOptions, PETSC_TRUE, LinearEnergy, LinearModuli, LinearCauchy, 0, NULL};

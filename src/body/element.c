@@ -6,7 +6,9 @@
    It reads the cell cache (bodyimpl.h) with stride dim (2 or 3): the basis
    gradients dNdx[c][q][a][J] = dN_a/dX_J, the weights wdetJ[c][q] (dV: dA,
    2 pi r dA in axisymmetry, the volume in 3D) and the quadrature points
-   xq[c][q][dim], for any element of up to ELEMENT_MAX_NODES nodes.
+   xq[c][q][dim], for any element of up to ELEMENT_MAX_NODES nodes, and a
+   material with history's state[c][q][nstate] (bodystate.c), each point's
+   given to the kernels (the tangent at rest: the virgin state's, NULL).
 
    At a quadrature point, H_iJ = sum_a u_(a i) dN_a/dX_J for i, J < dim,
    and in axisymmetry (x = r) H_22 = u_r / r = sum_a u_(a 0) N_a / r, so
@@ -103,7 +105,7 @@ static void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
     for (PetscInt i = 0; i < dim; ++i)
       ELEMENT_UNROLL
       for (PetscInt J = 0; J < dim; ++J) H[i * 3 + J] = du[i * dim + J];
-    b->mat->moduli(b->param, H, A);
+    b->mat->moduli(b->param, NULL, H, A); /* a material without history (BodySetFromOptions) */
     ELEMENT_UNROLL
     for (PetscInt i = 0; i < dim; ++i) {
       f[i] = 0.0;
@@ -123,10 +125,10 @@ static void ElementExactForce(Body b, const PetscReal x[], PetscReal f[])
    written out at the end: a stride-dim loop as fast as the 2D one was. */
 ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscScalar x[], PetscReal *e, PetscScalar ge[], PetscInt *iqBad, const PetscInt dim)
 {
-  const PetscInt   nb = b->nb, nq = b->nq, *dof = &b->cdof[c * nb];
+  const PetscInt   nb = b->nb, nq = b->nq, *dof = &b->cdof[c * nb], ns = b->mat->nstate;
   const PetscBool  axisym = b->axisym, hasExact = b->hasExact, canInvert = (PetscBool)!b->mat->constantTangent;
-  const PetscReal *xq = &b->xq[c * nq * dim], *wdetJ = &b->wdetJ[c * nq], *param = b->param;
-  PetscBool (*energy)(const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]) = b->mat->energy;
+  const PetscReal *xq = &b->xq[c * nq * dim], *wdetJ = &b->wdetJ[c * nq], *param = b->param, *state = ns ? &b->state[c * nq * ns] : NULL;
+  PetscBool (*energy)(const PetscReal[], const PetscReal[], const PetscReal[], PetscReal *, PetscReal[]) = b->mat->energy;
   PetscReal u[ELEMENT_MAX_DOFS], g[ELEMENT_MAX_DOFS], el = *e;
   PetscBool ok = PETSC_TRUE;
 
@@ -141,7 +143,7 @@ ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscScalar
     /* in r-z a hoop stretch 1 + u_r/r <= 0 is a point through the axis,
        inverted whatever J = det F says (the linear material is defined for
        every H) */
-    if (!energy(param, H, &W, P) || (axisym && canInvert && !(1.0 + H[8] > 0.0))) {
+    if (!energy(param, state ? &state[iq * ns] : NULL, H, &W, P) || (axisym && canInvert && !(1.0 + H[8] > 0.0))) {
       *iqBad = iq;
       ok     = PETSC_FALSE;
       break;
@@ -182,8 +184,9 @@ ELEMENT_INLINE PetscBool EnergyGradientDim(Body b, PetscInt c, const PetscScalar
 
 ELEMENT_INLINE void TangentDim(Body b, PetscInt c, const PetscReal u[], PetscScalar K[], const PetscInt dim)
 {
-  const PetscInt nb = b->nb, nq = b->nq, n = dim * nb;
-  PetscReal      G[ELEMENT_MAX_NODES][3][3][3]; /* w dN_a/dX_J A_iJjL, summed over J: 5.8 KB */
+  const PetscInt   nb = b->nb, nq = b->nq, n = dim * nb, ns = b->mat->nstate;
+  const PetscReal *state = ns && u ? &b->state[c * nq * ns] : NULL; /* at rest (u NULL): the virgin state's */
+  PetscReal        G[ELEMENT_MAX_NODES][3][3][3]; /* w dN_a/dX_J A_iJjL, summed over J: 5.8 KB */
 
   const PetscBool constant = (PetscBool)(!u || b->mat->constantTangent); /* A the same at every point: asked once */
   PetscReal       A[81];
@@ -191,7 +194,7 @@ ELEMENT_INLINE void TangentDim(Body b, PetscInt c, const PetscReal u[], PetscSca
   for (PetscInt k = 0; k < n * n; ++k) K[k] = 0.0;
   if (constant) {
     const PetscReal H[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    b->mat->moduli(b->param, H, A);
+    b->mat->moduli(b->param, NULL, H, A);
   }
   for (PetscInt iq = 0; iq < nq; ++iq) {
     const PetscReal *dN = &b->dNdx[(c * nq + iq) * nb * dim], *B = &b->B[iq * nb];
@@ -200,7 +203,7 @@ ELEMENT_INLINE void TangentDim(Body b, PetscInt c, const PetscReal u[], PetscSca
     if (!constant) {
       PetscReal H[9];
       PointGradientDim(b, c, iq, u, NULL, H, dim);
-      b->mat->moduli(b->param, H, A);
+      b->mat->moduli(b->param, state ? &state[iq * ns] : NULL, H, A);
     }
     for (PetscInt a = 0; a < nb; ++a)
       ELEMENT_UNROLL

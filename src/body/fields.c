@@ -5,7 +5,9 @@
    xx, yy, zz, xy, yz, xz) and von Mises stress recovered at the nodes
    by averaging each cell's stress there over the cells around the node.
    The stress is the material's Cauchy stress (material.h): of the deformed
-   configuration, attached to each node's reference position. */
+   configuration, attached to each node's reference position; a material
+   with history is given the accepted state of the quadrature point nearest
+   the node (NodeState). */
 #include <petscsf.h>
 #include "body.h"
 #include "element.h"
@@ -34,6 +36,27 @@ static inline void StressComponents(PetscInt dim, const PetscReal sig[9], PetscR
     s[4] = sig[5];
     s[5] = sig[2];
   }
+}
+
+/* The accepted state (material.h) the stress at node a of cell c is
+   evaluated with: a material with history keeps it at the quadrature
+   points alone, so the node takes that of its cell's nearest point (exact
+   where the state is uniform over the cell); NULL for a material without. */
+static const PetscReal *NodeState(Body b, PetscInt c, PetscInt a)
+{
+  const PetscInt   dim = b->dim, nq = b->nq, ns = b->mat->nstate;
+  const PetscReal *x = &b->xnode[(c * b->nb + a) * dim];
+  PetscInt         best = 0;
+  PetscReal        dmin = PETSC_MAX_REAL;
+
+  if (!ns) return NULL;
+  for (PetscInt iq = 0; iq < nq; ++iq) {
+    const PetscReal *y = &b->xq[(c * nq + iq) * dim];
+    PetscReal        d = 0.0;
+    for (PetscInt i = 0; i < dim; ++i) d += PetscSqr(y[i] - x[i]);
+    if (d < dmin) dmin = d, best = iq;
+  }
+  return &b->state[(c * nq + best) * ns];
 }
 
 /* Per local point: the sums of the stress components (StressComponents)
@@ -65,7 +88,7 @@ static PetscErrorCode BodyStressSums(Body b, const PetscScalar ua[], PetscReal s
       (void)BodyElementGradientsDim(dim, nb, x, &Tn->T[1][a * nb * dim], dNdx);
       ElementFormGradient(dim, nb, u, dNdx, H);
       if (b->axisym) H[8] = ElasticityHoopStrain(u[a * dim], H[0], x[a * dim] > b->axisTol ? x[a * dim] : 0.0); /* the node's own u_r and r */
-      b->mat->cauchy(b->param, H, sig);
+      b->mat->cauchy(b->param, NodeState(b, c, a), H, sig);
       StressComponents(dim, sig, st);
       for (PetscInt j = 0; j < ns; ++j) acc[j] += st[j];
       acc[ns] += 1.0;
@@ -116,7 +139,7 @@ PetscErrorCode BodyComputeStressIndicator(Body b, Vec Xl, PetscReal eta[])
         for (PetscInt j = 0; j < ns; ++j) rec[j] += B[a] * st[j] / st[ns];
       }
       ElementPointGradient(b, c, iq, u, NULL, H);
-      b->mat->cauchy(b->param, H, sig);
+      b->mat->cauchy(b->param, b->mat->nstate ? &b->state[(c * nq + iq) * b->mat->nstate] : NULL, H, sig);
       StressComponents(b->dim, sig, h);
       if (ns == 4) e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * PetscSqr(rec[3] - h[3]));
       else e2 += b->wdetJ[c * nq + iq] * (PetscSqr(rec[0] - h[0]) + PetscSqr(rec[1] - h[1]) + PetscSqr(rec[2] - h[2]) + 2 * (PetscSqr(rec[3] - h[3]) + PetscSqr(rec[4] - h[4]) + PetscSqr(rec[5] - h[5])));
@@ -338,6 +361,8 @@ PetscErrorCode BodyComputeNodalFields(Body b, Vec Xl, BodyNodalFields *F)
   F->ncells = b->ncellsGlobal;
   PetscCall(BodyComputeErrors(b, Xl, &F->err));
   PetscCall(BodyComputeMaxStrain(b, Xl, &F->maxStrain));
+  F->nstate = BodyHasState(b) ? b->mat->nstate : 0;
+  for (PetscInt k = 0; k < F->nstate; ++k) PetscCall(BodyGetStateRange(b, k, &F->stateMin[k], &F->stateMax[k]));
   PetscFunctionReturn(0);
 }
 

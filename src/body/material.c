@@ -1,6 +1,7 @@
 /* The materials a body may have, registered by name (-<body>_material):
-   linear (elasticity.c, the default), neohookean (neohookean.c) and
-   mooneyrivlin (mooneyrivlin.c). A new material is one file (its kernels
+   linear (elasticity.c, the default), neohookean (neohookean.c),
+   mooneyrivlin (mooneyrivlin.c) and plastic (plasticity.c: J2 plasticity,
+   a material with history). A new material is one file (its kernels
    and its options, material.h) and one line here. Here too: the elastic
    constants E and nu, the options of linear and neohookean. */
 #include "material.h"
@@ -26,6 +27,12 @@ static PetscErrorCode MaterialGetMooneyRivlin(const Material **m)
   return 0;
 }
 
+static PetscErrorCode MaterialGetPlastic(const Material **m)
+{
+  *m = &MaterialPlastic;
+  return 0;
+}
+
 PetscErrorCode MaterialElasticConstantsSetFromOptions(MPI_Comm comm, const char prefix[], PetscBool help, PetscReal param[], PetscReal *E, PetscReal *nu)
 {
   char      name[64], opt[128];
@@ -36,7 +43,7 @@ PetscErrorCode MaterialElasticConstantsSetFromOptions(MPI_Comm comm, const char 
   PetscCall(PetscStrncpy(name, prefix, sizeof(name))); /* the body's name: the prefix without its '_' */
   PetscCall(PetscStrlen(name, &len));
   if (len) name[len - 1] = 0;
-  PetscOptionsBegin(comm, prefix, "Elastic constants (-<body>_material linear, neohookean)", NULL);
+  PetscOptionsBegin(comm, prefix, "Elastic constants (-<body>_material linear, neohookean, plastic)", NULL);
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-E", "Young's modulus (required)", "required", PETSC_FALSE, E, &setE));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-nu", "Poisson's ratio (required)", "required", PETSC_FALSE, nu, &setNu));
   PetscOptionsEnd();
@@ -63,6 +70,7 @@ PetscErrorCode MaterialRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&MaterialList, "linear", MaterialGetLinear));
   PetscCall(PetscFunctionListAdd(&MaterialList, "neohookean", MaterialGetNeoHookean));
   PetscCall(PetscFunctionListAdd(&MaterialList, "mooneyrivlin", MaterialGetMooneyRivlin));
+  PetscCall(PetscFunctionListAdd(&MaterialList, "plastic", MaterialGetPlastic));
   PetscFunctionReturn(0);
 }
 

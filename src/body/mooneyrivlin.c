@@ -95,12 +95,13 @@ static void MRGradients(const MRState *s, PetscReal g1[9], PetscReal g2[9], Pets
     }
 }
 
-static PetscBool MooneyRivlinEnergy(const PetscReal param[], const PetscReal H[9], PetscReal *W, PetscReal P[9])
+static PetscBool MooneyRivlinEnergy(const PetscReal param[], const PetscReal state[], const PetscReal H[9], PetscReal *W, PetscReal P[9])
 {
   const PetscReal C10 = param[0], C01 = param[1], D1 = param[2];
   MRState         s;
   PetscReal       lnJ, j23, j43, W1, W2, WJ, g1[9], g2[9], gJ[9];
 
+  (void)state; /* no history (nstate = 0) */
   if (!MRKinematics(H, &s)) {
     *W = (PetscReal)INFINITY;
     for (PetscInt k = 0; k < 9; ++k) P[k] = 0.0;
@@ -118,12 +119,13 @@ static PetscBool MooneyRivlinEnergy(const PetscReal param[], const PetscReal H[9
   return PETSC_TRUE;
 }
 
-static void MooneyRivlinModuli(const PetscReal param[], const PetscReal H[9], PetscReal A[81])
+static void MooneyRivlinModuli(const PetscReal param[], const PetscReal state[], const PetscReal H[9], PetscReal A[81])
 {
   const PetscReal C10 = param[0], C01 = param[1], D1 = param[2];
   MRState         s;
   PetscReal       J, a23, a43, W1, W2, WJ, W1J, W2J, WJJ, g1[9], g2[9], gJ[9];
 
+  (void)state; /* no history (nstate = 0) */
   for (PetscInt k = 0; k < 81; ++k) A[k] = 0.0;
   if (!MRKinematics(H, &s)) return; /* never asked: an inverted state is never accepted */
   J   = s.J;
@@ -151,11 +153,12 @@ static void MooneyRivlinModuli(const PetscReal param[], const PetscReal H[9], Pe
         }
 }
 
-static void MooneyRivlinCauchy(const PetscReal param[], const PetscReal H[9], PetscReal sigma[9])
+static void MooneyRivlinCauchy(const PetscReal param[], const PetscReal state[], const PetscReal H[9], PetscReal sigma[9])
 {
   PetscReal W, P[9], F[9], J;
 
-  if (!MooneyRivlinEnergy(param, H, &W, P)) {
+  (void)state; /* no history (nstate = 0) */
+  if (!MooneyRivlinEnergy(param, NULL, H, &W, P)) {
     for (PetscInt k = 0; k < 9; ++k) sigma[k] = (PetscReal)NAN;
     return;
   }
@@ -198,4 +201,4 @@ static PetscErrorCode MooneyRivlinSetFromOptions(MPI_Comm comm, const char prefi
   PetscFunctionReturn(0);
 }
 
-const Material MaterialMooneyRivlin = {"mooneyrivlin", MooneyRivlinSetFromOptions, PETSC_FALSE, MooneyRivlinEnergy, MooneyRivlinModuli, MooneyRivlinCauchy};
+const Material MaterialMooneyRivlin = {"mooneyrivlin", MooneyRivlinSetFromOptions, PETSC_FALSE, MooneyRivlinEnergy, MooneyRivlinModuli, MooneyRivlinCauchy, 0, NULL};

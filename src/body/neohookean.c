@@ -103,11 +103,12 @@ static PetscBool NeoHookeanKinematics(const PetscReal H[], PetscBool block, Pets
   return PETSC_TRUE;
 }
 
-static PetscBool NeoHookeanEnergy(const PetscReal param[], const PetscReal H[], PetscReal *W, PetscReal P[])
+static PetscBool NeoHookeanEnergy(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal *W, PetscReal P[])
 {
   const PetscReal lambda = param[0], mu = param[1];
   PetscReal       F[9], Fi[9], J, lnJ, I1m3, ll;
 
+  (void)state; /* no history (nstate = 0) */
   if (!NeoHookeanKinematics(H, NeoHookeanBlock(H), F, Fi, &J, &lnJ)) {
     *W = (PetscReal)INFINITY;
     for (PetscInt k = 0; k < 9; ++k) P[k] = 0.0;
@@ -130,11 +131,12 @@ static PetscBool NeoHookeanEnergy(const PetscReal param[], const PetscReal H[], 
   return PETSC_TRUE;
 }
 
-static void NeoHookeanCauchy(const PetscReal param[], const PetscReal H[], PetscReal sigma[])
+static void NeoHookeanCauchy(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal sigma[])
 {
   const PetscReal lambda = param[0], mu = param[1];
   PetscReal       F[9], Fi[9], J, lnJ;
 
+  (void)state; /* no history (nstate = 0) */
   if (!NeoHookeanKinematics(H, NeoHookeanBlock(H), F, Fi, &J, &lnJ)) {
     for (PetscInt k = 0; k < 9; ++k) sigma[k] = (PetscReal)NAN;
     return;
@@ -158,12 +160,13 @@ static inline void ModuliEntry(PetscReal mu, const PetscReal mFi[], const PetscR
 /* The tangent at H: A[(i*3+J)*9+k*3+L] = A_iJkL. Where F is block diagonal
    the entries with an odd number of indices 2 are zero (each term pairs its
    indices): the 41 others alone are formed. */
-static void NeoHookeanModuli(const PetscReal param[], const PetscReal H[], PetscReal A[])
+static void NeoHookeanModuli(const PetscReal param[], const PetscReal state[], const PetscReal H[], PetscReal A[])
 {
   const PetscReal lambda = param[0], mu = param[1];
   const PetscBool block = NeoHookeanBlock(H);
   PetscReal       F[9], Fi[9], J, lnJ, m, mFi[9], lFi[9];
 
+  (void)state; /* no history (nstate = 0) */
   if (!NeoHookeanKinematics(H, block, F, Fi, &J, &lnJ)) { /* never asked: an inverted state is never accepted */
     for (PetscInt k = 0; k < 81; ++k) A[k] = 0.0;
     return;
@@ -195,4 +198,4 @@ static void NeoHookeanModuli(const PetscReal param[], const PetscReal H[], Petsc
   ModuliEntry(mu, mFi, lFi, Fi, 2, 2, 2, 2, A);
 }
 
-const Material MaterialNeoHookean = {"neohookean", MaterialElasticConstantsSetFromOptions, PETSC_FALSE, NeoHookeanEnergy, NeoHookeanModuli, NeoHookeanCauchy};
+const Material MaterialNeoHookean = {"neohookean", MaterialElasticConstantsSetFromOptions, PETSC_FALSE, NeoHookeanEnergy, NeoHookeanModuli, NeoHookeanCauchy, 0, NULL};

@@ -528,6 +528,10 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
     ContactJSONKeyReal(fp, ", ", "max_displacement", F[i].umax);
     fprintf(fp, ", \"material\": \"%s\"", BodyGetMaterial(b)->name);
     ContactJSONKeyReal(fp, ", ", "max_green_lagrange_strain", F[i].maxStrain);
+    if (F[i].nstate) { /* a material with history: each state value's range over the quadrature points */
+      ContactJSONKeyVector(fp, ", ", "state_min", F[i].nstate, F[i].stateMin);
+      ContactJSONKeyVector(fp, ", ", "state_max", F[i].nstate, F[i].stateMax);
+    }
     fprintf(fp, ", \"mesh\": \"%s\"", BodyGetMeshFile(b));
     ContactJSONKeyReal(fp, ", ", "h", BodyGetMeshSize(b));
     if (BodyGetExactSolution(b)) { /* each error with the exact solution's norm */

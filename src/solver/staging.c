@@ -129,6 +129,15 @@ static PetscBool ProblemHasState(Problem p)
   return PETSC_FALSE;
 }
 
+/* A body whose material has history (plastic: bodystate.c): its state
+   follows the terms' lifecycle (accept, restore, reset), without a lag. */
+static PetscBool ProblemBodiesHaveState(Problem p)
+{
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    if (BodyHasState(p->bodies[i])) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 /* A term with state holds a quantity lagged within the increment (the
    friction's normal pressure): after a converged solve the lag is updated
    from the solution, and the increment solved again from there, until the
@@ -188,15 +197,17 @@ static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, Pet
   PetscFunctionReturn(0);
 }
 
-/* The terms' state: the bodies' state (p->X, converged at load) accepted. */
+/* The terms' state and the bodies' (a material's history): the bodies'
+   displacement (p->X, converged at load) accepted. */
 static PetscErrorCode ProblemStateAccept(Problem p, PetscReal load)
 {
   PetscReal f;
 
   PetscFunctionBeginUser;
-  if (!ProblemHasState(p)) PetscFunctionReturn(0);
+  if (!ProblemHasState(p) && !ProblemBodiesHaveState(p)) PetscFunctionReturn(0);
   PetscCall(ProblemEvaluate(p, p->X, &f, p->G, NULL));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermAccept(p->terms[t], p->bodies, load));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAcceptState(p->bodies[i]));
   PetscFunctionReturn(0);
 }
 
@@ -212,6 +223,7 @@ static PetscErrorCode ProblemStateBegin(Problem p)
 static PetscErrorCode ProblemStateRestore(Problem p)
 {
   PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyRestoreState(p->bodies[i]));
   if (!ProblemHasState(p)) PetscFunctionReturn(0);
   PetscCall(ProblemScatterToBodies(p, p->X));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermRestore(p->terms[t], p->bodies));
@@ -223,6 +235,7 @@ static PetscErrorCode ProblemStateReset(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermReset(p->terms[t], p->bodies));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyResetState(p->bodies[i]));
   PetscFunctionReturn(0);
 }
 
@@ -392,7 +405,7 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
   PetscCall(ProblemStateBegin(p));
   for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
     const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
-    const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->cfg->load.path || ProblemHasState(p)) && s == sc->penaltyStages); /* stops at the final tolerance (every load where a term keeps its state from it) */
+    const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->cfg->load.path || ProblemHasState(p) || ProblemBodiesHaveState(p)) && s == sc->penaltyStages); /* stops at the final tolerance (every load where a term or a body keeps its state from it) */
     const PetscReal penalty = sc->penaltyStages > 1 ? PetscPowReal(sc->penaltyStart, (PetscReal)(sc->penaltyStages - s) / (sc->penaltyStages - 1)) : 1.0;
     PetscInt        n;
 
