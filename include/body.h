@@ -87,14 +87,18 @@ PetscErrorCode BodyComputeStressIndicator(Body, Vec Xl, PetscReal eta[]);
 /* The state of a material with history at the body's quadrature points
    (bodystate.c; material.h): the lifecycle the energy terms' state has
    (energyterm.h). BodyAcceptState: an increment converged at the body's
-   local solution, whose state becomes the accepted one; BodyRestoreState:
-   back to the accepted state (a cut-back); BodyResetState: back to rest.
-   Collective in spirit, local in fact (each point's own); a no-op for a
-   body without history. BodyGetStateRange: collective, the smallest and
-   largest value k over every rank's points (BodyHasState: the material's
-   nstate > 0). */
+   local solution, whose state is recorded; BodyBeginState: the next
+   increment begins, the recorded state becomes the accepted one (until
+   then the body's energy is still the converged increment's);
+   BodyRestoreState: back to the accepted state (a cut-back);
+   BodyResetState: back to rest. Collective in spirit, local in fact (each
+   point's own); a no-op for a body without history. BodyGetStateRange:
+   collective, the smallest and largest value k of the latest state
+   (recorded, else accepted) over every rank's points (BodyHasState: the
+   material's nstate > 0). */
 PetscBool       BodyHasState(Body);
 PetscErrorCode  BodyAcceptState(Body);
+PetscErrorCode  BodyBeginState(Body);
 PetscErrorCode  BodyRestoreState(Body);
 PetscErrorCode  BodyResetState(Body);
 PetscErrorCode  BodyGetStateRange(Body, PetscInt k, PetscReal *vmin, PetscReal *vmax);

@@ -422,7 +422,7 @@ def test_tangent_at_rest(tmp_path):
 
 
 @pytest.mark.parametrize("args,needle", [
-    (["-indenter_material", "rubber"], "option -indenter_material: unknown material 'rubber' (known: linear, neohookean, mooneyrivlin)"),
+    (["-indenter_material", "rubber"], "option -indenter_material: unknown material 'rubber' (known: linear, neohookean, mooneyrivlin, plastic)"),
     (["-indenter_material", "neohookean", "-indenter_nu", "0.5"], "option -indenter_nu: Poisson's ratio must be in (-1, 0.5), got 0.5"),
 ])
 def test_bad_material(args, needle, tmp_path):

@@ -64,7 +64,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
   PetscCall(PetscOptionsReal("-mesh_size", "Gmsh mesh size h (overridden by -mesh_size)", NULL, b->h, &b->h, NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-geo_params", "Geometry parameters name=value passed to Gmsh -setnumber", NULL, b->geoparams, &ngp, NULL));
   PetscCall(PetscOptionsBool("-rigid", "A rigid body: its mesh gives only its curves, its motion is rigid (-<body>_rigid_centre, _rigid_rotation); E and nu are not asked for", NULL, b->rigid, &b->rigid, NULL));
-  PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain, -E, -nu), neohookean (compressible neo-Hookean, finite strain, -E, -nu) mooneyrivlin (compressible Mooney-Rivlin, -C10, -C01, -D1) or plastic (small-strain J2 plasticity, linear isotropic hardening, -E, -nu, -yield, -hardening)", NULL, MaterialList, material, material, sizeof(material), NULL));
+  PetscCall(ContactOptionsFList(PetscOptionsObject, "-material", "Material: linear (small strain, -E, -nu), neohookean (compressible neo-Hookean, finite strain, -E, -nu), mooneyrivlin (compressible Mooney-Rivlin, -C10, -C01, -D1) or plastic (small-strain J2 plasticity, linear isotropic hardening, -E, -nu, -yield, -hardening)", NULL, MaterialList, material, material, sizeof(material), NULL));
   PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-bc", "Dirichlet physical groups (see -<body>_bc_<group>_components, _values)", NULL, bcnames, &nbc, NULL));
   PetscCall(ContactOptionsString(PetscOptionsObject, "-exact", "Exact solution for verification: none, affine, trig (plane strain or 3D), lame (-axisymmetric), sphere (3D)", NULL, exact, exact, sizeof(exact), NULL));
   b->exact.nparams = 16;
@@ -132,7 +132,7 @@ PetscErrorCode BodySetFromOptions(Body b, PetscReal meshSizeOverride)
     PetscCall(ExactSolutionSetType(&b->exact, exact));
     PetscCheck(b->exact.axisymmetric == b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' is a solution %s, and the scene is %s", prefix, exact, b->exact.axisymmetric ? "in r-z" : "in plane strain", b->axisym ? "axisymmetric (-axisymmetric)" : "in plane strain (give -axisymmetric for lame)");
     /* another material's body force comes from the solution's second derivatives (BodyExactForce) */
-    PetscCheck(!b->mat->nstate, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: -%smaterial %s has history (its stress is not a function of the displacement gradient alone), and no exact solution's body force is", prefix, prefix, b->mat->name);
+    PetscCheck(!b->mat->nstate, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: -%smaterial %s has history (its stress is not a function of the displacement gradient alone): no exact solution's body force holds for it", prefix, prefix, b->mat->name);
     PetscCheck(b->mat->constantTangent || b->exact.d2u, b->comm, PETSC_ERR_USER_INPUT, "option -%sexact: '%s' has linear elasticity's body force only; with -%smaterial %s, affine and trig are exact", prefix, exact, prefix, b->mat->name);
     b->hasExact      = PETSC_TRUE;
     b->exact.lambda  = b->E * b->nu / ((1.0 + b->nu) * (1.0 - 2.0 * b->nu)); /* linear elasticity's body force (a constant tangent's) */
@@ -804,6 +804,7 @@ PetscErrorCode BodyDestroy(Body *body)
   PetscCall(PetscFree2(b->physDims, b->physTags));
   PetscCall(PetscFree6(b->cpts, b->cdof, b->dNdx, b->wdetJ, b->xq, b->xnode));
   PetscCall(PetscFree(b->state));
+  PetscCall(PetscFree(b->stateNew));
   PetscCall(PetscFree(b->l2b));
   PetscCall(PetscFree2(b->xpoint, b->owned));
   PetscCall(PetscSectionDestroy(&b->nodeGS));

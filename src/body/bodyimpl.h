@@ -85,7 +85,8 @@ struct _n_Body {
   PetscReal *xq;   /* [ncells][nq][dim] */
   PetscReal *xnode;/* [ncells][nb][dim] node coordinates */
   const PetscReal *B; /* [nq][nb] reference basis at quadrature points */
-  PetscReal *state;/* [ncells][nq][mat->nstate]: a material with history's last accepted state at each point (bodystate.c), or NULL */
+  PetscReal *state;/* [ncells][nq][mat->nstate]: a material with history's accepted state at each point (bodystate.c), or NULL */
+  PetscReal *stateNew; PetscBool statePending; /* the state a converged increment recorded, and whether it waits for the next increment's begin */
   Vec       Xg, Gg, Xl, Gl, bcl, bclFull, bclFrom; /* bcl: Dirichlet values of the load step, bclFull: the active stage's end, bclFrom: its start (NULL in the first stage) */
   PetscInt  nlocal, nglobal; /* sizes of the body's global (unconstrained) vector */
   PetscInt *l2b;   /* local dof -> index in the joined vector, or -1 if constrained */

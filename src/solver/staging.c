@@ -130,7 +130,8 @@ static PetscBool ProblemHasState(Problem p)
 }
 
 /* A body whose material has history (plastic: bodystate.c): its state
-   follows the terms' lifecycle (accept, restore, reset), without a lag. */
+   follows the terms' lifecycle (accept, begin, restore, reset), without a
+   lag. */
 static PetscBool ProblemBodiesHaveState(Problem p)
 {
   for (PetscInt i = 0; i < p->nbodies; ++i)
@@ -216,6 +217,7 @@ static PetscErrorCode ProblemStateBegin(Problem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermBegin(p->terms[t]));
+  for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyBeginState(p->bodies[i]));
   PetscFunctionReturn(0);
 }
 

@@ -143,7 +143,7 @@ static PetscErrorCode Check(const char cell[], PetscBool simplex, const Material
       for (PetscInt a = 0; a < nb; ++a)
         for (PetscInt i = 0; i < dim; ++i) u[a * dim + i] = H0[i * 3] * xn[a * dim] + H0[i * 3 + 1] * xn[a * dim + 1] + H0[i * 3 + 2] * xn[a * dim + 2];
       e = EnergyGradient(b, u, g);
-      (void)m->energy(param, H0, &W, P);
+      (void)m->energy(param, NULL, H0, &W, P);
       for (PetscInt a = 0; a < nb; ++a)
         for (PetscInt i = 0; i < dim; ++i) s[i] += g[a * dim + i];
       printf("%s %s patch_W_rel %.6e\n%s %s patch_g_sum_rel %.6e\n", cell, m->name, (double)(PetscAbsReal(e - W * vol) / PetscAbsReal(W * vol)), cell, m->name, (double)(MaxAbs(3, s) / MaxAbs(n, g)));

@@ -40,7 +40,7 @@
 static PetscReal Energy(const Material *m, const PetscReal p[], const PetscReal H[9], PetscReal P[9])
 {
   PetscReal W, Pl[9];
-  (void)m->energy(p, H, &W, P ? P : Pl);
+  (void)m->energy(p, NULL, H, &W, P ? P : Pl);
   return W;
 }
 
@@ -98,8 +98,8 @@ static void Check(const Material *m, const PetscReal p[], PetscReal lambda0, Pet
     } while (!(J >= 0.5 && J <= 2.0));
     for (PetscInt k = 0; k < 9; ++k) E[k] = Uniform(-1.0, 1.0);
     W = Energy(m, p, H, P);
-    m->moduli(p, H, A);
-    m->cauchy(p, H, sig);
+    m->moduli(p, NULL, H, A);
+    m->cauchy(p, NULL, H, sig);
     { /* Taylor remainders of W and P */
       PetscReal rW[4], rP[4], PE = 0.0, AE[9];
       for (PetscInt k = 0; k < 9; ++k) PE += P[k] * E[k];
@@ -205,7 +205,7 @@ static void Check(const Material *m, const PetscReal p[], PetscReal lambda0, Pet
   { /* at rest: C */
     const PetscReal H0[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, lambda = lambda0, mu = mu0;
     PetscReal       A[81], C[81], d = 0.0;
-    m->moduli(p, H0, A);
+    m->moduli(p, NULL, H0, A);
     for (PetscInt i = 0; i < 3; ++i)
       for (PetscInt j = 0; j < 3; ++j)
         for (PetscInt k = 0; k < 3; ++k)
@@ -213,6 +213,95 @@ static void Check(const Material *m, const PetscReal p[], PetscReal lambda0, Pet
     for (PetscInt k = 0; k < 81; ++k) d = PetscMax(d, PetscAbsReal(A[k] - C[k]));
     printf("%s rest_A_rel %.6e\n", m->name, (double)(d / MaxAbs(81, C)));
   }
+}
+
+/* The plastic material (plasticity.c), E = 1, nu = 0.3, sigma_y = 2e-3,
+   Hh = 0.1, at NSAMPLE random accepted states (a deviatoric plastic strain
+   of entries in [-1e-3, 1e-3], alpha in [0, 2e-3]; a quarter of them zero:
+   virgin, with H a quarter the size) and random H (entries in [-s, s],
+   s = 3e-3), each in the branch
+   its return takes (plastic: update raises alpha), with central differences
+   at h = 1e-4 s along a random E where H - hE and H + hE return in the same
+   branch as H:
+     fd_P_{elastic,plastic}_rel   |difference of W - P:E| / max(|P:E|, |P| |E|);
+     fd_A_{elastic,plastic}_rel   |difference of P - A:E| / (|A| |E|), the largest component;
+     sym_A_rel                    max |A_iJkL - A_kLiJ| / max |A|;
+     linear_diff                  the largest difference of W, P and A from the linear
+                                  material's at a zero state and H in the elastic branch
+                                  (0: the same sums, to the bit);
+     accept_P_rel, accept_W_rel   P and W at H from the updated state against those from the
+                                  accepted one (the increment's stress and work are kept);
+     accept_yield_rel             the new state's return at the same H: its increment of
+                                  alpha, relative to the increment's own (0 up to round-off:
+                                  the state is on its yield surface);
+     samples_elastic, samples_plastic, samples_linear  how many samples each
+                                  branch had, and the virgin elastic ones. */
+static void CheckPlastic(const Material *m, const Material *lin)
+{
+  const PetscReal E = 1.0, nu = 0.3, p[4] = {E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu)), 2e-3, 0.1}, sc = 3e-3, h = 1e-4 * sc;
+  PetscReal       fdP[2] = {0, 0}, fdA[2] = {0, 0}, symA = 0, lind = 0, accP = 0, accW = 0, accY = 0;
+  PetscInt        count[2] = {0, 0}, nlin = 0;
+
+  for (PetscInt s = 0; s < NSAMPLE; ++s) {
+    PetscReal st[7] = {0, 0, 0, 0, 0, 0, 0}, sn[7], sp[7], sm[7], H[9], Ev[9], Hp[9], Hm[9], W, P[9], A[81], Wp, Pp[9], Wm, Pm[9], PE = 0, AE[9];
+    PetscInt  br;
+    if (s >= NSAMPLE / 4) {
+      for (PetscInt k = 0; k < 6; ++k) st[k] = Uniform(-1e-3, 1e-3);
+      const PetscReal t = (st[0] + st[1] + st[2]) / 3.0;
+      for (PetscInt k = 0; k < 3; ++k) st[k] -= t;
+      st[6] = Uniform(0.0, 2e-3);
+    }
+    for (PetscInt k = 0; k < 9; ++k) {
+      H[k]  = Uniform(-sc, sc) * (s < NSAMPLE / 4 ? 0.25 : 1.0);
+      Ev[k] = Uniform(-1.0, 1.0);
+      Hp[k] = H[k] + h * Ev[k];
+      Hm[k] = H[k] - h * Ev[k];
+    }
+    m->update(p, st, H, sn);
+    m->update(p, st, Hp, sp);
+    m->update(p, st, Hm, sm);
+    br = sn[6] > st[6];
+    if (br != (sp[6] > st[6]) || br != (sm[6] > st[6])) continue; /* across the yield surface: A jumps there */
+    count[br]++;
+    (void)m->energy(p, st, H, &W, P);
+    m->moduli(p, st, H, A);
+    (void)m->energy(p, st, Hp, &Wp, Pp);
+    (void)m->energy(p, st, Hm, &Wm, Pm);
+    for (PetscInt a = 0; a < 9; ++a) {
+      PE += P[a] * Ev[a];
+      AE[a] = 0.0;
+      for (PetscInt b = 0; b < 9; ++b) AE[a] += A[a * 9 + b] * Ev[b];
+    }
+    {
+      const PetscReal nE = 3.0 * MaxAbs(9, Ev);
+      fdP[br] = PetscMax(fdP[br], PetscAbsReal((Wp - Wm) / (2 * h) - PE) / PetscMax(PetscAbsReal(PE), MaxAbs(9, P) * nE));
+      for (PetscInt k = 0; k < 9; ++k) fdA[br] = PetscMax(fdA[br], PetscAbsReal((Pp[k] - Pm[k]) / (2 * h) - AE[k]) / (MaxAbs(81, A) * nE));
+    }
+    for (PetscInt a = 0; a < 9; ++a)
+      for (PetscInt b = 0; b < 9; ++b) symA = PetscMax(symA, PetscAbsReal(A[a * 9 + b] - A[b * 9 + a]) / MaxAbs(81, A));
+    if (!br && s < NSAMPLE / 4) { /* virgin and elastic: linear elasticity's sums */
+      PetscReal Wl, Pl[9], Al[81];
+      nlin++;
+      (void)lin->energy(p, NULL, H, &Wl, Pl);
+      lin->moduli(p, NULL, H, Al);
+      lind = PetscMax(lind, PetscAbsReal(W - Wl));
+      for (PetscInt k = 0; k < 9; ++k) lind = PetscMax(lind, PetscAbsReal(P[k] - Pl[k]));
+      for (PetscInt k = 0; k < 81; ++k) lind = PetscMax(lind, PetscAbsReal(A[k] - Al[k]));
+    }
+    if (br) { /* the accepted increment: the same stress and work from the new state */
+      PetscReal Wn, Pn[9], s2[7];
+      (void)m->energy(p, sn, H, &Wn, Pn);
+      accW = PetscMax(accW, PetscAbsReal(Wn - W) / PetscAbsReal(W));
+      for (PetscInt k = 0; k < 9; ++k) accP = PetscMax(accP, PetscAbsReal(Pn[k] - P[k]) / MaxAbs(9, P));
+      m->update(p, sn, H, s2);
+      accY = PetscMax(accY, (s2[6] - sn[6]) / (sn[6] - st[6]));
+    }
+  }
+  printf("plastic fd_P_elastic_rel %.6e\nplastic fd_P_plastic_rel %.6e\n", (double)fdP[0], (double)fdP[1]);
+  printf("plastic fd_A_elastic_rel %.6e\nplastic fd_A_plastic_rel %.6e\n", (double)fdA[0], (double)fdA[1]);
+  printf("plastic sym_A_rel %.6e\nplastic linear_diff %.6e\n", (double)symA, (double)lind);
+  printf("plastic accept_P_rel %.6e\nplastic accept_W_rel %.6e\nplastic accept_yield_rel %.6e\n", (double)accP, (double)accW, (double)accY);
+  printf("plastic samples_elastic %d\nplastic samples_plastic %d\nplastic samples_linear %d\n", (int)count[0], (int)count[1], (int)nlin);
 }
 
 int main(int argc, char **argv)
@@ -231,6 +320,13 @@ int main(int argc, char **argv)
     PetscCheck(m, PETSC_COMM_SELF, PETSC_ERR_PLIB, "material %s is not registered", names[k]);
     if (k < 2) Check(m, p, p[0], p[1], PETSC_TRUE);
     else Check(m, q, lq, muq, PETSC_FALSE);
+  }
+  {
+    const Material *m, *lin;
+    PetscCall(MaterialFind("plastic", &m));
+    PetscCall(MaterialFind("linear", &lin));
+    PetscCheck(m && lin, PETSC_COMM_SELF, PETSC_ERR_PLIB, "material plastic is not registered");
+    CheckPlastic(m, lin);
   }
   PetscCall(MaterialFinalize());
   PetscCall(PetscFinalize());
