@@ -235,10 +235,12 @@ def test_taylor(tmp_path):
     assert abs(figure("hessian_order_error", t["hessian_order"] - 2.0)) <= 1e-3
 
 
-@pytest.mark.parametrize("case", ["no_yield", "bad_hardening", "exact"])
+@pytest.mark.parametrize("case", ["no_yield", "bad_hardening", "exact", "accuracy"])
 def test_refused(case, tmp_path):
-    """-yield is required and > 0, -hardening >= 0, and no exact solution's
-    body force holds a material with history: one line each, status 1."""
+    """-yield is required and > 0, -hardening >= 0, no exact solution's
+    body force holds a material with history, and -accuracy's refined meshes
+    would lose it (the state's transfer to a new mesh is not written): one
+    line each, status 1."""
     args = bar() + rollers() + ["-blk_bc_xmax_values", "0.001"]
     if case == "no_yield":
         args = [a for a in args if a not in ("-blk_yield", repr(SY))]
@@ -246,9 +248,12 @@ def test_refused(case, tmp_path):
     elif case == "bad_hardening":
         args += ["-blk_hardening", "-1"]
         want = "-blk_hardening"
-    else:
+    elif case == "exact":
         args += ["-blk_exact", "affine", "-blk_exact_params", ",".join(["0"] * 12)]
         want = "-blk_exact"
+    else:
+        args += ["-accuracy", "0.01"]
+        want = "-accuracy: body blk's material (-blk_material plastic) has history"
     res = run_contact(args + ["-output", "none"], tmp_path, check=False)
     errors = [l for l in res.stderr.splitlines() if l.startswith("contact: error:")]
     assert res.returncode == 1, res.stderr[-2000:]

@@ -444,6 +444,8 @@ static PetscErrorCode AccuracyInterpolate(Problem prev, Problem cur, Vec X0)
 static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
 {
   PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i) /* each step's meshes start from rest, or from the last step's displacement as one increment */
+    PetscCheck(!BodyHasState(p->bodies[i]), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s's material (-%s_material %s) has history, and its transfer to the refined meshes is not written yet", BodyGetName(p->bodies[i]), BodyGetName(p->bodies[i]), BodyGetMaterial(p->bodies[i])->name);
   PetscCheck(p->nterms > 0, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: the scene has no contact pair, whose pressure it refines for");
   PetscCheck(p->cfg->load.stages == 1, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: with -load_stages %" PetscInt_FMT " it would refine for the last stage's end alone; -accuracy with a load history is not supported yet", p->cfg->load.stages);
   for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(BodyHasCells(p->bodies[i]), acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is rigid (-%s_rigid), and -accuracy with a rigid body is not supported yet", BodyGetName(p->bodies[i]), BodyGetName(p->bodies[i]));
