@@ -32,6 +32,307 @@
    CG applies; the exact one, which auto adds only once the gradient is
    small, leaves H positive definite there. */
 #include "iterative.h"
+#include "rigid.h"
+
+/* GAMG by nodes. The Hessian's rows are the free dofs only: a node on a
+   roller (a symmetry plane) keeps two of its three components, so H has
+   no block size and GAMG aggregates single components, not nodes. Its
+   coarse spaces then mix components of different nodes, and a 3D body
+   needs more iterations with them (Lame's octant, three symmetry planes:
+   53 CG iterations). Here H is copied into Hn, in which every node of a 3D
+   body has its three components as consecutive rows, a constrained one an
+   identity row and column (decoupled, its right-hand side zero): Hn has
+   block size 3 and GAMG aggregates nodes. The preconditioner of H is
+   R GAMG(Hn) R^T, R the injection of H's rows into Hn's: symmetric
+   positive definite as GAMG(Hn) is, so CG applies. Hn's rows on a rank are
+   its nodes' in the order of their first free row, so that each row's
+   columns keep H's order. The near-nullspace is the bodies' rigid motions
+   as on H, injected (zero on the constrained components). */
+typedef struct {
+  PC           gamg;   /* on Hn */
+  Mat          Hn;     /* H in the nodes' numbering, block size 3 */
+  Vec          xn, yn; /* Hn's vectors (xn zero on the constrained rows) */
+  VecScatter   inject; /* R^T: H's vectors into Hn's */
+  MatNullSpace nsp;    /* on Hn */
+  PetscInt     nrows;  /* Hn's rows on this rank */
+  PetscInt    *slot;   /* Hn's row rstart_n + k: H's row, or -1 (a constrained component) */
+  PetscInt    *row;    /* H's row rstart + i: Hn's row */
+  PCMGCycleType cycle; /* -newton_iterative_cycle */
+  Vec          rowOf;  /* the same as a vector of H's layout, for columns on other ranks */
+} NodalPC;
+
+/* Hn from H's values: each free row's entries at Hn's columns, a constrained
+   row's diagonal 1 (CSR, then MatXAIJ's preallocation from it). */
+static PetscErrorCode NodalPCBuildMatrix(NodalPC *np, Mat H)
+{
+  PetscInt        rstart, rend, nstart, noff = 0, *ii, *jj, nnz = 0, *garray = NULL, *dnz, *onz;
+  PetscScalar    *vv, *offRow = NULL;
+  PetscMPIInt     size;
+  MPI_Comm        comm = PetscObjectComm((PetscObject)H);
+  Vec             offVec = NULL;
+  VecScatter      offScatter = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  PetscCallMPI(MPI_Scan(&np->nrows, &nstart, 1, MPIU_INT, MPI_SUM, comm));
+  nstart -= np->nrows;
+  if (size > 1) { /* Hn's rows of H's columns on other ranks */
+    Mat Ad, Ao;
+    IS  is;
+    PetscCall(MatMPIAIJGetSeqAIJ(H, &Ad, &Ao, (const PetscInt **)&garray));
+    PetscCall(MatGetSize(Ao, NULL, &noff));
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, noff, garray, PETSC_USE_POINTER, &is));
+    PetscCall(VecCreateSeq(PETSC_COMM_SELF, noff, &offVec));
+    PetscCall(VecScatterCreate(np->rowOf, is, offVec, NULL, &offScatter));
+    PetscCall(VecScatterBegin(offScatter, np->rowOf, offVec, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(offScatter, np->rowOf, offVec, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(ISDestroy(&is));
+    PetscCall(VecGetArray(offVec, &offRow));
+  }
+  for (PetscInt k = 0; k < np->nrows; ++k) {
+    PetscInt n = 1, m;
+    if (np->slot[k] >= 0) {
+      PetscCall(MatGetRow(H, np->slot[k], &n, NULL, NULL));
+      m = n; /* MatRestoreRow() zeroes it */
+      PetscCall(MatRestoreRow(H, np->slot[k], &m, NULL, NULL));
+    }
+    nnz += n;
+  }
+  PetscCall(PetscMalloc3(np->nrows + 1, &ii, nnz, &jj, nnz, &vv));
+  ii[0] = 0;
+  for (PetscInt k = 0; k < np->nrows; ++k) {
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscInt           n, *j = &jj[ii[k]];
+    PetscScalar       *v = &vv[ii[k]];
+
+    if (np->slot[k] < 0) {
+      j[0]      = nstart + k;
+      v[0]      = 1.0;
+      ii[k + 1] = ii[k] + 1;
+      continue;
+    }
+    PetscCall(MatGetRow(H, np->slot[k], &n, &cols, &vals));
+    for (PetscInt e = 0; e < n; ++e) {
+      if (cols[e] >= rstart && cols[e] < rend) j[e] = np->row[cols[e] - rstart];
+      else {
+        PetscInt loc;
+        PetscCall(PetscFindInt(cols[e], noff, garray, &loc));
+        PetscCheck(loc >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "column %" PetscInt_FMT " of the Hessian not among its off-rank columns", cols[e]);
+        j[e] = (PetscInt)PetscRealPart(offRow[loc]);
+      }
+      v[e] = vals[e];
+    }
+    ii[k + 1] = ii[k] + n;
+    PetscCall(MatRestoreRow(H, np->slot[k], &n, &cols, &vals));
+  }
+  if (offVec) {
+    PetscCall(VecRestoreArray(offVec, &offRow));
+    PetscCall(VecDestroy(&offVec));
+    PetscCall(VecScatterDestroy(&offScatter));
+  }
+  PetscCall(PetscCalloc2(np->nrows, &dnz, np->nrows, &onz));
+  for (PetscInt k = 0; k < np->nrows; ++k)
+    for (PetscInt e = ii[k]; e < ii[k + 1]; ++e) {
+      if (jj[e] >= nstart && jj[e] < nstart + np->nrows) ++dnz[k];
+      else ++onz[k];
+    }
+  PetscCall(MatDestroy(&np->Hn));
+  PetscCall(MatCreate(comm, &np->Hn));
+  PetscCall(MatSetSizes(np->Hn, np->nrows, np->nrows, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetType(np->Hn, MATAIJ));
+  PetscCall(MatSetBlockSize(np->Hn, 3));
+  PetscCall(MatSeqAIJSetPreallocation(np->Hn, 0, dnz));
+  PetscCall(MatMPIAIJSetPreallocation(np->Hn, 0, dnz, 0, onz));
+  for (PetscInt k = 0; k < np->nrows; ++k) {
+    const PetscInt r = nstart + k;
+    PetscCall(MatSetValues(np->Hn, 1, &r, ii[k + 1] - ii[k], &jj[ii[k]], &vv[ii[k]], INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(np->Hn, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(np->Hn, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscFree2(dnz, onz));
+  PetscCall(MatSetOption(np->Hn, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatSetNearNullSpace(np->Hn, np->nsp));
+  PetscCall(PetscFree3(ii, jj, vv));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode NodalPCSetUp(PC pc)
+{
+  NodalPC *np;
+  Mat      H;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &np));
+  PetscCall(PCGetOperators(pc, NULL, &H));
+  PetscCall(NodalPCBuildMatrix(np, H));
+  PetscCall(PCSetOperators(np->gamg, np->Hn, np->Hn));
+  PetscCall(PCSetUp(np->gamg));
+  PetscCall(PCMGSetCycleType(np->gamg, np->cycle)); /* PCMG's levels exist once it is set up */
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode NodalPCApply(PC pc, Vec x, Vec y)
+{
+  NodalPC *np;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &np));
+  PetscCall(VecScatterBegin(np->inject, x, np->xn, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(np->inject, x, np->xn, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(PCApply(np->gamg, np->xn, np->yn));
+  PetscCall(VecScatterBegin(np->inject, np->yn, y, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(np->inject, np->yn, y, INSERT_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode NodalPCView(PC pc, PetscViewer viewer)
+{
+  NodalPC *np;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &np));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "GAMG by nodes: the Hessian with every node's 3 components (constrained ones identity), block size 3:\n"));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  PetscCall(PCView(np->gamg, viewer));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode NodalPCDestroy(PC pc)
+{
+  NodalPC *np;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &np));
+  PetscCall(PCDestroy(&np->gamg));
+  PetscCall(MatDestroy(&np->Hn));
+  PetscCall(VecDestroy(&np->xn));
+  PetscCall(VecDestroy(&np->yn));
+  PetscCall(VecDestroy(&np->rowOf));
+  PetscCall(VecScatterDestroy(&np->inject));
+  PetscCall(MatNullSpaceDestroy(&np->nsp));
+  PetscCall(PetscFree2(np->slot, np->row));
+  PetscCall(PetscFree(np));
+  PetscFunctionReturn(0);
+}
+
+/* The nodes of every body on this rank (all 3D), ordered by their first free
+   row: np->slot, np->row, np->nrows; *ok false on every rank where a rank's
+   rows are not all its nodes' (a 2D body, a node split between ranks,
+   rows of no node). */
+static PetscErrorCode NodalPCNumber(NodalPC *np, Mat H, PetscInt nbodies, Body bodies[], PetscBool *ok)
+{
+  PetscInt  rstart, rend, nn = 0, nstart, covered = 0, *idx, *key, *perm;
+  PetscBool mine = PETSC_TRUE;
+  MPI_Comm  comm = PetscObjectComm((PetscObject)H);
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  for (PetscInt i = 0; i < nbodies; ++i) {
+    PetscInt n;
+    if (bodies[i]->rigid) continue;
+    if (bodies[i]->dim != 3) mine = PETSC_FALSE;
+    PetscCall(BodyGetOwnedNodeRows(bodies[i], rstart, rend, &n, NULL));
+    nn += n;
+  }
+  PetscCall(PetscMalloc3(3 * nn + 1, &idx, nn + 1, &key, nn + 1, &perm));
+  nn = 0;
+  for (PetscInt i = 0; i < nbodies && mine; ++i) {
+    PetscInt n;
+    if (bodies[i]->rigid) continue;
+    PetscCall(BodyGetOwnedNodeRows(bodies[i], rstart, rend, &n, &idx[3 * nn]));
+    nn += n;
+  }
+  for (PetscInt k = 0; k < nn && mine; ++k) {
+    key[k]  = PETSC_MAX_INT;
+    perm[k] = k;
+    for (PetscInt d = 0; d < 3; ++d) {
+      const PetscInt g = idx[3 * k + d];
+      if (g < 0) continue;
+      if (g < rstart || g >= rend) mine = PETSC_FALSE; /* a node split between ranks */
+      key[k] = PetscMin(key[k], g);
+      ++covered;
+    }
+  }
+  if (covered != rend - rstart) mine = PETSC_FALSE;
+  PetscCall(MPIU_Allreduce(&mine, ok, 1, MPIU_BOOL, MPI_LAND, comm));
+  if (*ok) {
+    PetscCall(PetscSortIntWithArray(nn, key, perm));
+    np->nrows = 3 * nn;
+    PetscCallMPI(MPI_Scan(&np->nrows, &nstart, 1, MPIU_INT, MPI_SUM, comm));
+    nstart -= np->nrows;
+    PetscCall(PetscMalloc2(np->nrows, &np->slot, rend - rstart, &np->row));
+    for (PetscInt k = 0; k < nn; ++k)
+      for (PetscInt d = 0; d < 3; ++d) {
+        const PetscInt g = idx[3 * perm[k] + d];
+        np->slot[3 * k + d] = g;
+        if (g >= 0) np->row[g - rstart] = nstart + 3 * k + d;
+      }
+  }
+  PetscCall(PetscFree3(idx, key, perm));
+  PetscFunctionReturn(0);
+}
+
+/* The preconditioner of H as GAMG by nodes (above), near-nullspace the
+   rigid modes on H's rows, modes[n]; *ok false (pc untouched) where a rank's
+   rows are not whole 3D nodes. */
+static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[], PetscInt n, Vec modes[], PCMGCycleType cycle, PetscBool *ok)
+{
+  NodalPC    *np;
+  MPI_Comm    comm = PetscObjectComm((PetscObject)H);
+  Vec         x, nmodes[6 * CONTACT_MAX_BODIES];
+  IS          is;
+  PetscInt    rstart, rend;
+  const char *prefix;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&np));
+  PetscCall(NodalPCNumber(np, H, nbodies, bodies, ok));
+  if (!*ok) {
+    PetscCall(PetscFree(np));
+    PetscFunctionReturn(0);
+  }
+  np->cycle = cycle;
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  PetscCall(VecCreateMPI(comm, np->nrows, PETSC_DETERMINE, &np->xn));
+  PetscCall(VecSetBlockSize(np->xn, 3));
+  PetscCall(VecZeroEntries(np->xn));
+  PetscCall(VecDuplicate(np->xn, &np->yn));
+  PetscCall(MatCreateVecs(H, &x, NULL));
+  PetscCall(VecDuplicate(x, &np->rowOf));
+  for (PetscInt i = rstart; i < rend; ++i) PetscCall(VecSetValue(np->rowOf, i, (PetscScalar)np->row[i - rstart], INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(np->rowOf));
+  PetscCall(VecAssemblyEnd(np->rowOf));
+  PetscCall(ISCreateGeneral(comm, rend - rstart, np->row, PETSC_USE_POINTER, &is));
+  PetscCall(VecScatterCreate(x, NULL, np->xn, is, &np->inject));
+  PetscCall(ISDestroy(&is));
+  PetscCall(VecDestroy(&x));
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscCall(VecDuplicate(np->xn, &nmodes[k]));
+    PetscCall(VecZeroEntries(nmodes[k]));
+    PetscCall(VecScatterBegin(np->inject, modes[k], nmodes[k], INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(np->inject, modes[k], nmodes[k], INSERT_VALUES, SCATTER_FORWARD));
+  }
+  PetscCall(MatNullSpaceCreate(comm, PETSC_FALSE, n, nmodes, &np->nsp));
+  for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&nmodes[k]));
+  PetscCall(PCCreate(comm, &np->gamg));
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PCSetOptionsPrefix(np->gamg, prefix));
+  PetscCall(PCSetType(np->gamg, PCGAMG));
+  PetscCall(PCGAMGSetReuseInterpolation(np->gamg, PETSC_FALSE));
+  PetscCall(PCGAMGSetNSmooths(np->gamg, 0));
+  PetscCall(PCSetFromOptions(np->gamg));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, np));
+  PetscCall(PCShellSetName(pc, "GAMG by nodes"));
+  PetscCall(PCShellSetSetUp(pc, NodalPCSetUp));
+  PetscCall(PCShellSetApply(pc, NodalPCApply));
+  PetscCall(PCShellSetView(pc, NodalPCView));
+  PetscCall(PCShellSetDestroy(pc, NodalPCDestroy));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[], PetscBool constant)
 {
@@ -39,7 +340,8 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PetscInt     n = 0, rstart, rend, dim = 2;
   MatNullSpace nsp;
   PC           pc;
-
+  PetscBool    nodal = PETSC_TRUE;
+  PCMGCycleType cycle = PC_MG_CYCLE_W;
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
   for (PetscInt i = 0; i < nbodies; ++i) {
@@ -76,13 +378,21 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)H), PETSC_FALSE, n, modes, &nsp));
   PetscCall(MatSetNearNullSpace(H, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
-  for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
   PetscCall(KSPSetType(ksp, KSPCG));
   PetscCall(KSPSetTolerances(ksp, constant ? 1e-9 : 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCGAMG));
-  PetscCall(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE));
-  if (dim == 3) PetscCall(PCGAMGSetNSmooths(pc, 0));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)H), NULL, "Newton step by CG + GAMG", NULL);
+  PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, nodal, &nodal, NULL));
+  PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)cycle, (PetscEnum *)&cycle, NULL));
+  PetscOptionsEnd();
+  if (dim == 3 && nodal) PetscCall(NodalPCCreate(pc, H, nbodies, bodies, n, modes, cycle, &nodal));
+  else nodal = PETSC_FALSE;
+  for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
+  if (!nodal) {
+    PetscCall(PCSetType(pc, PCGAMG));
+    PetscCall(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE));
+    if (dim == 3) PetscCall(PCGAMGSetNSmooths(pc, 0));
+  }
   PetscCall(KSPSetReusePreconditioner(ksp, constant));
   PetscFunctionReturn(0);
 }
