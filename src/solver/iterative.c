@@ -63,20 +63,21 @@
    iterations but its first coarse level has 1277 entries a row (set-up 30
    times longer). */
 typedef struct {
-  PC           gamg;   /* on Hn */
-  Mat          Hn;     /* H in the nodes' numbering, block size 3 */
-  Vec          xn, yn; /* Hn's vectors (xn zero on the constrained rows) */
-  VecScatter   inject; /* R^T: H's vectors into Hn's */
-  MatNullSpace nsp;    /* on Hn */
-  PetscInt     nrows;  /* Hn's rows on this rank */
-  PetscInt    *slot;   /* Hn's row rstart_n + k: H's row, or -1 (a constrained component) */
-  PetscInt    *row;    /* H's row rstart + i: Hn's row */
-  PCMGCycleType cycle; /* -newton_iterative_cycle */
-  Vec          rowOf;  /* the same as a vector of H's layout, for columns on other ranks */
+  PC            gamg;   /* on Hn */
+  Mat           Hn;     /* H in the nodes' numbering, block size 3 */
+  Vec           xn, yn; /* Hn's vectors (xn zero on the constrained rows) */
+  VecScatter    inject; /* R^T: H's vectors into Hn's */
+  MatNullSpace  nsp;    /* on Hn */
+  PetscInt      nrows;  /* Hn's rows on this rank */
+  PetscInt     *slot;   /* Hn's row rstart_n + k: H's row, or -1 (a constrained component) */
+  PetscInt     *row;    /* H's row rstart + i: Hn's row */
+  PCMGCycleType cycle;  /* -newton_iterative_cycle */
+  Vec           rowOf;  /* row as a vector of H's layout, for columns on other ranks */
 } NodalPC;
 
 /* Hn from H's values: each free row's entries at Hn's columns, a constrained
-   row's diagonal 1 (CSR, then MatXAIJ's preallocation from it). */
+   row's diagonal 1: gathered as CSR, preallocated by its rows' counts, inserted
+   row by row (Hn is made anew at each set-up: H's pattern may change). */
 static PetscErrorCode NodalPCBuildMatrix(NodalPC *np, Mat H)
 {
   PetscInt        rstart, rend, nstart, noff = 0, *ii, *jj, nnz = 0, *garray = NULL, *dnz, *onz;
@@ -350,12 +351,13 @@ static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[
 
 PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[], PetscBool constant)
 {
-  Vec          modes[6 * CONTACT_MAX_BODIES];
-  PetscInt     n = 0, rstart, rend, dim = 2;
-  MatNullSpace nsp;
-  PC           pc;
-  PetscBool    nodal = PETSC_TRUE;
+  Vec           modes[6 * CONTACT_MAX_BODIES];
+  PetscInt      n = 0, rstart, rend, dim = 2;
+  MatNullSpace  nsp;
+  PC            pc;
+  PetscBool     nodal = PETSC_TRUE;
   PCMGCycleType cycle = PC_MG_CYCLE_W;
+
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
   for (PetscInt i = 0; i < nbodies; ++i) {
