@@ -107,28 +107,34 @@ def shell(h):
 @pytest.mark.roundoff
 @pytest.mark.parametrize("ranks", [1, 2])
 def test_nodal_gamg_matches(ranks, tmp_path):
-    """GAMG by nodes (src/solver/iterative.c: the Hessian with every node's
-    three components, a roller's held one an identity row, block size 3)
-    against GAMG on the free dofs alone (-newton_iterative_nodal 0) and the
-    direct step, on Lame's octant at h = 0.25 (7226 free dofs; rollers hold
-    one component of each node on the symmetry planes, so the free dofs are
-    not whole nodes there), all to -tao_gttol 1e-12: the answers differ by
-    H^-1 of the gradients the stops leave (as test_iterative_matches_direct);
-    bound 1e-9 on the relative difference of the displacement's norm and of
-    the energy, 1e-6 on that of the L2 error against Lame's solution
-    (1.6e-3 of the norm) (measured `nodal_du` = up to 3.3e-16, `nodal_dE` =
-    up to 2.0e-15, `nodal_derr` = up to 1.8e-13). The nodal run's KSP view
-    names it and its block size 3."""
+    """The iterative step's preconditioners (src/solver/iterative.c) on
+    Lame's octant at h = 0.25 (7226 free dofs; rollers hold one component
+    of each node on the symmetry planes, so the free dofs are not whole
+    nodes there): the default (on one rank two levels, the nodes by
+    Chebyshev and the cells' vertices by GAMG; on two GAMG by nodes, the
+    Hessian with every node's three components, a held one an identity row,
+    block size 3), GAMG by nodes (-newton_iterative_two_levels 0), GAMG on
+    the free dofs alone (-newton_iterative_nodal 0) and the direct step, all
+    to -tao_gttol 1e-12: the answers differ by H^-1 of the gradients the
+    stops leave (as test_iterative_matches_direct); bound 1e-9 on the
+    relative difference of the displacement's norm and of the energy, 1e-6
+    on that of the L2 error against Lame's solution (1.6e-3 of the norm)
+    (measured `nodal_du` = up to 2.2e-16, `nodal_dE` = up to 1.8e-15,
+    `nodal_derr` = up to 1.9e-13). The default's KSP view names what it
+    ran: two levels on one rank, GAMG by nodes of block size 3 on two."""
     runs = {}
-    for name, opts in (("nodal", ["-newton_iterative", "1", "-tao_nls_ksp_view"]),
+    for name, opts in (("default", ["-newton_iterative", "1", "-tao_nls_ksp_view"]),
+                       ("nodes", ["-newton_iterative", "1", "-newton_iterative_two_levels", "0"]),
                        ("free", ["-newton_iterative", "1", "-newton_iterative_nodal", "0"]),
                        ("direct", ["-newton_iterative", "0"])):
         runs[name] = run_contact(shell(0.25) + opts + ["-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name=name)
-    assert "GAMG by nodes" in runs["nodal"].stdout and re.search(r"rows=\d+, cols=\d+, bs=3", runs["nodal"].stdout)
+    view = runs["default"].stdout
+    assert "GAMG by nodes" in view and re.search(r"rows=\d+, cols=\d+, bs=3", view)
+    assert ("two levels: the nodes" in view) == (ranks == 1)
     assert "GAMG by nodes" not in runs["free"].stdout
-    n = runs["nodal"].summary
+    n = runs["default"].summary
     assert n["dofs"] == 7226
-    for other in ("free", "direct"):
+    for other in ("nodes", "free", "direct"):
         o = runs[other].summary
         assert o["dofs"] == n["dofs"]
         bn, bo = n["bodies"]["sh"], o["bodies"]["sh"]

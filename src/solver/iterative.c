@@ -73,7 +73,78 @@ typedef struct {
   PetscInt     *row;    /* H's row rstart + i: Hn's row */
   PCMGCycleType cycle;  /* -newton_iterative_cycle */
   Vec           rowOf;  /* row as a vector of H's layout, for columns on other ranks */
+  Mat           P;      /* two levels (one rank): the cells' vertices' displacements interpolated to every node */
+  PC            mg;     /* two levels: the nodes, then the vertices by GAMG */
+  Mat           Ac;     /* P^T Hn P */
 } NodalPC;
+
+/* The node of a body's point (its first free component's row in Hn / 3),
+   -1 for a point with no free component. */
+static PetscInt NodalPCPointNode(NodalPC *np, Body b, PetscSection sec, PetscInt rstart, PetscInt q)
+{
+  PetscInt dof, off, node = -1;
+
+  if (PetscSectionGetDof(sec, q, &dof) || PetscSectionGetOffset(sec, q, &off)) return -1;
+  for (PetscInt d = PetscMin(dof, 3) - 1; d >= 0; --d)
+    if (b->l2b[off + d] >= 0) node = np->row[b->l2b[off + d] - rstart] / 3;
+  return node;
+}
+
+/* P: each node's displacement the mean of its cell's vertices' around it,
+   the vertices of its point's closure (an edge's two, a face's, a cell's:
+   the linear (P1, Q1) interpolation at a quadratic node, exact for
+   Tet10's and Hex27's), component by component; a vertex is a coarse node,
+   in Hn's order. One rank (the vertices of a closure are then all here). */
+static PetscErrorCode NodalPCBuildInterpolation(NodalPC *np, Mat H, PetscInt nbodies, Body bodies[])
+{
+  PetscInt rstart, rend, nn = np->nrows / 3, *cidx, nc = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  PetscCall(PetscMalloc1(nn + 1, &cidx));
+  for (PetscInt k = 0; k < nn; ++k) cidx[k] = -1;
+  for (PetscInt i = 0; i < nbodies; ++i) {
+    PetscSection sec;
+    PetscInt     vs, ve;
+    if (bodies[i]->rigid) continue;
+    PetscCall(DMGetLocalSection(bodies[i]->dm, &sec));
+    PetscCall(DMPlexGetDepthStratum(bodies[i]->dm, 0, &vs, &ve));
+    for (PetscInt q = vs; q < ve; ++q) {
+      const PetscInt node = NodalPCPointNode(np, bodies[i], sec, rstart, q);
+      if (node >= 0) cidx[node] = 1;
+    }
+  }
+  for (PetscInt k = 0; k < nn; ++k)
+    if (cidx[k] > 0) cidx[k] = nc++;
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, 3 * nn, 3 * nc, 8, NULL, &np->P));
+  for (PetscInt i = 0; i < nbodies; ++i) {
+    Body         b = bodies[i];
+    PetscSection sec;
+    PetscInt     vs, ve;
+    if (b->rigid) continue;
+    PetscCall(DMGetLocalSection(b->dm, &sec));
+    PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+    for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+      const PetscInt node = NodalPCPointNode(np, b, sec, rstart, p);
+      PetscInt       ncl, *cl = NULL, nv = 0, vn[8];
+
+      if (node < 0) continue;
+      PetscCall(DMPlexGetTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
+      for (PetscInt j = 0; j < ncl; ++j)
+        if (cl[2 * j] >= vs && cl[2 * j] < ve && nv < 8) vn[nv++] = NodalPCPointNode(np, b, sec, rstart, cl[2 * j]);
+      PetscCall(DMPlexRestoreTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
+      for (PetscInt j = 0; j < nv; ++j) /* a vertex with every component held: no coarse node, no term */
+        if (vn[j] >= 0)
+          for (PetscInt d = 0; d < 3; ++d) PetscCall(MatSetValue(np->P, 3 * node + d, 3 * cidx[vn[j]] + d, 1.0 / nv, INSERT_VALUES));
+    }
+  }
+  PetscCall(MatAssemblyBegin(np->P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(np->P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetBlockSizes(np->P, 3, 3));
+  PetscCall(PetscInfo(H, "two levels: %" PetscInt_FMT " nodes, %" PetscInt_FMT " vertices\n", nn, nc));
+  PetscCall(PetscFree(cidx));
+  PetscFunctionReturn(0);
+}
 
 /* Hn from H's values: each free row's entries at Hn's columns, a constrained
    row's diagonal 1: gathered as CSR, preallocated by its rows' counts, inserted
@@ -182,6 +253,68 @@ static PetscErrorCode NodalPCSetUp(PC pc)
   PetscCall(PCShellGetContext(pc, &np));
   PetscCall(PCGetOperators(pc, NULL, &H));
   PetscCall(NodalPCBuildMatrix(np, H));
+  if (np->P) { /* two levels: Chebyshev on Hn, GAMG on P^T Hn P */
+    KSP          smooth, coarse;
+    PC           spc, cpc;
+    MatNullSpace cn;
+    Vec          cm[6 * CONTACT_MAX_BODIES];
+    const Vec   *fm;
+    PetscInt     nf, m;
+
+    PetscCall(MatDestroy(&np->Ac));
+    PetscCall(MatPtAP(np->Hn, np->P, MAT_INITIAL_MATRIX, 2.0, &np->Ac));
+    PetscCall(MatSetBlockSize(np->Ac, 3));
+    /* the coarse near-nullspace: the fine one at the vertices (P's rows there are the identity) */
+    PetscCall(MatNullSpaceGetVecs(np->nsp, NULL, &nf, &fm));
+    PetscCall(MatGetSize(np->P, &m, NULL));
+    for (PetscInt k = 0; k < nf; ++k) {
+      const PetscScalar *f;
+      PetscScalar       *c;
+      PetscCall(MatCreateVecs(np->Ac, &cm[k], NULL));
+      PetscCall(VecZeroEntries(cm[k]));
+      PetscCall(VecGetArrayRead(fm[k], &f));
+      PetscCall(VecGetArray(cm[k], &c));
+      for (PetscInt r = 0; r < m; ++r) {
+        PetscInt           ncols;
+        const PetscInt    *cols;
+        const PetscScalar *vals;
+        PetscCall(MatGetRow(np->P, r, &ncols, &cols, &vals));
+        if (ncols == 1 && vals[0] == 1.0) c[cols[0]] = f[r];
+        PetscCall(MatRestoreRow(np->P, r, &ncols, &cols, &vals));
+      }
+      PetscCall(VecRestoreArrayRead(fm[k], &f));
+      PetscCall(VecRestoreArray(cm[k], &c));
+    }
+    PetscCall(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, nf, cm, &cn));
+    PetscCall(MatSetNearNullSpace(np->Ac, cn));
+    PetscCall(MatNullSpaceDestroy(&cn));
+    for (PetscInt k = 0; k < nf; ++k) PetscCall(VecDestroy(&cm[k]));
+    if (!np->mg) {
+      PetscCall(PCCreate(PETSC_COMM_SELF, &np->mg));
+      PetscCall(PCSetType(np->mg, PCMG));
+      PetscCall(PCMGSetLevels(np->mg, 2, NULL));
+      PetscCall(PCMGSetInterpolation(np->mg, 1, np->P));
+      PetscCall(PCMGSetGalerkin(np->mg, PC_MG_GALERKIN_NONE));
+      PetscCall(PCMGGetSmoother(np->mg, 1, &smooth));
+      PetscCall(KSPSetType(smooth, KSPCHEBYSHEV));
+      PetscCall(KSPGetPC(smooth, &spc));
+      PetscCall(PCSetType(spc, PCJACOBI));
+      PetscCall(KSPChebyshevEstEigSet(smooth, 0, 0.1, 0, 1.1));
+      PetscCall(KSPSetTolerances(smooth, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2));
+      PetscCall(PCMGGetCoarseSolve(np->mg, &coarse));
+      PetscCall(KSPSetType(coarse, KSPPREONLY));
+      PetscCall(KSPGetPC(coarse, &cpc));
+      PetscCall(PCSetType(cpc, PCGAMG));
+      PetscCall(PCGAMGSetNSmooths(cpc, 1));
+    }
+    PetscCall(PCMGGetSmoother(np->mg, 1, &smooth));
+    PetscCall(KSPSetOperators(smooth, np->Hn, np->Hn));
+    PetscCall(PCMGGetCoarseSolve(np->mg, &coarse));
+    PetscCall(KSPSetOperators(coarse, np->Ac, np->Ac));
+    PetscCall(PCSetOperators(np->mg, np->Hn, np->Hn));
+    PetscCall(PCSetUp(np->mg));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PCSetOperators(np->gamg, np->Hn, np->Hn));
   PetscCall(PCSetUp(np->gamg));
   PetscCall(PCMGSetCycleType(np->gamg, np->cycle)); /* PCMG's levels exist once it is set up */
@@ -196,7 +329,7 @@ static PetscErrorCode NodalPCApply(PC pc, Vec x, Vec y)
   PetscCall(PCShellGetContext(pc, &np));
   PetscCall(VecScatterBegin(np->inject, x, np->xn, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(np->inject, x, np->xn, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(PCApply(np->gamg, np->xn, np->yn));
+  PetscCall(PCApply(np->mg ? np->mg : np->gamg, np->xn, np->yn));
   PetscCall(VecScatterBegin(np->inject, np->yn, y, INSERT_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(np->inject, np->yn, y, INSERT_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
@@ -210,7 +343,8 @@ static PetscErrorCode NodalPCView(PC pc, PetscViewer viewer)
   PetscCall(PCShellGetContext(pc, &np));
   PetscCall(PetscViewerASCIIPrintf(viewer, "GAMG by nodes: the Hessian with every node's 3 components (constrained ones identity), block size 3:\n"));
   PetscCall(PetscViewerASCIIPushTab(viewer));
-  PetscCall(PCView(np->gamg, viewer));
+  if (np->mg) PetscCall(PetscViewerASCIIPrintf(viewer, "two levels: the nodes (Chebyshev), the cells' vertices (GAMG)\n"));
+  PetscCall(PCView(np->mg ? np->mg : np->gamg, viewer));
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(0);
 }
@@ -222,6 +356,9 @@ static PetscErrorCode NodalPCDestroy(PC pc)
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &np));
   PetscCall(PCDestroy(&np->gamg));
+  PetscCall(PCDestroy(&np->mg));
+  PetscCall(MatDestroy(&np->P));
+  PetscCall(MatDestroy(&np->Ac));
   PetscCall(MatDestroy(&np->Hn));
   PetscCall(VecDestroy(&np->xn));
   PetscCall(VecDestroy(&np->yn));
@@ -293,7 +430,7 @@ static PetscErrorCode NodalPCNumber(NodalPC *np, Mat H, PetscInt nbodies, Body b
 /* The preconditioner of H as GAMG by nodes (above), near-nullspace the
    rigid modes on H's rows, modes[n]; *ok false (pc untouched) where a rank's
    rows are not whole 3D nodes. */
-static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[], PetscInt n, Vec modes[], PCMGCycleType cycle, PetscBool *ok)
+static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[], PetscInt n, Vec modes[], PCMGCycleType cycle, PetscBool twolevel, PetscBool *ok)
 {
   NodalPC    *np;
   MPI_Comm    comm = PetscObjectComm((PetscObject)H);
@@ -332,6 +469,11 @@ static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[
   }
   PetscCall(MatNullSpaceCreate(comm, PETSC_FALSE, n, nmodes, &np->nsp));
   for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&nmodes[k]));
+  if (twolevel) { /* one rank only: the closures' vertices are all this rank's */
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(comm, &size));
+    if (size == 1) PetscCall(NodalPCBuildInterpolation(np, H, nbodies, bodies));
+  }
   PetscCall(PCCreate(comm, &np->gamg));
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
   PetscCall(PCSetOptionsPrefix(np->gamg, prefix));
@@ -357,6 +499,7 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PC            pc;
   PetscBool     nodal = PETSC_TRUE;
   PCMGCycleType cycle = PC_MG_CYCLE_W;
+  PetscBool     twolevel = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
@@ -400,9 +543,10 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PetscCall(KSPGetPC(ksp, &pc));
   PetscOptionsBegin(PetscObjectComm((PetscObject)H), NULL, "Newton step by CG + GAMG", NULL);
   PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, nodal, &nodal, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes", NULL, twolevel, &twolevel, NULL));
   PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)cycle, (PetscEnum *)&cycle, NULL));
   PetscOptionsEnd();
-  if (dim == 3 && nodal) PetscCall(NodalPCCreate(pc, H, nbodies, bodies, n, modes, cycle, &nodal));
+  if (dim == 3 && nodal) PetscCall(NodalPCCreate(pc, H, nbodies, bodies, n, modes, cycle, twolevel, &nodal));
   else nodal = PETSC_FALSE;
   for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
   if (!nodal) {
