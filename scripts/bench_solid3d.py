@@ -211,14 +211,15 @@ def table(out):
                   "| code | dofs | wall [s] | set-up [s] | solve [s] | CG its | peak MB | relative L2 error of u (volume) | of u_r over the nodes | load |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         rows = ([("this program before (main's build: CG + GAMG on the free dofs, V-cycle)", before)] if before else []) + \
-               [("this program (default: CG + GAMG by nodes, W-cycle)", ours)]
+               [("this program (default: CG, two levels: Chebyshev on the nodes, GAMG on the vertices)", ours)]
         for label, r in rows:
             lines.append(f"| {label} | {r['dofs']:,} | {r['wall']:.2f} ({runs(r, 'wall')}) | {r['setup']:.2f} | {r['solve']:.2f} ({runs(r, 'solve')}) | "
                          f"{r['cg']} | {r['rss_mb'][0]:.0f} | {r['error']:.3e} | | {r['load']:.1f} ({runs(r, 'load', '{:.1f}')}) |")
         lines += [f"| GetFEM 5.4 (P2 isoparametric, MUMPS, one core) | {theirs['dofs']:,} | {theirs['wall']:.2f} ({runs(theirs, 'wall')}) | | "
                   f"{theirs['solve']:.2f} ({runs(theirs, 'solve')}) | | {theirs['rss_mb'][0]:.0f} | {theirs['error']:.3e} | {theirs['error_nodes']:.3e} | "
                   f"{theirs['load']:.1f} ({runs(theirs, 'load', '{:.1f}')}) |", "",
-                  f"Our whole process takes {ours['wall'] / theirs['wall']:.2f} of GetFEM's (the target: 1/3, not reached), "
+                  f"Our whole process takes {ours['wall'] / theirs['wall']:.2f} of GetFEM's (the target: 1/3, "
+                  f"{'reached' if ours['wall'] <= theirs['wall'] / 3 else 'not reached'}), "
                   f"our solve {ours['solve'] / theirs['solve']:.2f} of its assembly and factorisation"
                   + (f"; before, {before['wall'] / theirs['wall']:.2f} and {before['solve'] / theirs['solve']:.2f}." if before else ".")]
     for name, title in (("preallocation.json", "direct"), ("preallocation-cg.json", "CG + GAMG, unsmoothed")):

@@ -722,9 +722,9 @@ def render_solid3d_getfem():
     text = (f"the default takes {ours['wall']:.1f} s for the whole process against GetFEM's {theirs['wall']:.1f} s on the same "
             f"mesh (P2, MUMPS, one core; its assembly and factorisation {theirs['solve']:.1f} s, our solve {ours['solve']:.1f} s, "
             f"{ours['cg']} CG iterations), at the same error ({ours['error']:.2e} against {theirs['error']:.2e}, relative L2 of u): "
-            f"{ours['wall'] / theirs['wall']:.2f} of its time, short of the third aimed at")
+            f"{ours['wall'] / theirs['wall']:.2f} of its time" + (", within the third aimed at" if ours['wall'] <= theirs['wall'] / 3 else ", short of the third aimed at"))
     if before:
-        text += (f" (before GAMG by nodes, in the same sitting: {before['wall']:.1f} s, {before['cg']} CG iterations, "
+        text += (f" (before, GAMG on the free dofs, in the same sitting: {before['wall']:.1f} s, {before['cg']} CG iterations, "
                  f"{before['wall'] / theirs['wall']:.2f})")
     return text
 

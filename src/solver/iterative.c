@@ -61,7 +61,21 @@
    nor 1 or 3 Chebyshev steps a level, nor SOR on the finest, did better;
    smoothed aggregation without the aggressive first coarsening takes 18
    iterations but its first coarse level has 1277 entries a row (set-up 30
-   times longer). */
+   times longer).
+   Two levels (one rank, the default there): what limits GAMG on quadratic
+   cells is its first coarse space, aggregates of some 40 nodes with the
+   rigid modes alone. A quadratic mesh holds a better one, its linear
+   (P1, Q1) displacements on the same cells: P interpolates each node from
+   the vertices of its point's closure (an edge's midpoint the mean of its
+   two, a Hex27 face's of four, a cell's of eight), and the coarse operator
+   is P^T Hn P, some 7 times smaller on Tet10, as sparse as a linear mesh's.
+   The nodes are smoothed by Chebyshev (2 steps, Jacobi) and the vertices
+   solved by one GAMG V-cycle, with smoothed aggregation there (its Galerkin
+   products on rows of 40 entries cost little). Lame's octant: 20 CG
+   iterations against 46 by nodes (both to the true 1e-9), the CG 0.95 s
+   against 2.3 s, the set-up 0.58 s against 0.8; tet10-1e5 16 against 34,
+   hex27-1e5 13 against 26. On several ranks a closure's vertices may be
+   another rank's, which P does not gather: GAMG by nodes there. */
 typedef struct {
   PC            gamg;   /* on Hn */
   Mat           Hn;     /* H in the nodes' numbering, block size 3 */
