@@ -7,6 +7,11 @@
 PetscInt       BodyGetNumRigidModes(Body);
 PetscErrorCode BodyAddRigidModes(Body, PetscInt rstart, PetscInt rend, PetscScalar *modes[]);
 PetscErrorCode BodyCountFreeRigidModes(Body, PetscInt *nfree);
+/* The body's nodes whose free dofs are rows rstart..rend-1 of the joined
+   vector: for each, its dim components' rows (-1 where constrained), dim
+   entries a node in idx (NULL: only counted); n: how many. A node with every
+   component constrained is left out. */
+PetscErrorCode BodyGetOwnedNodeRows(Body, PetscInt rstart, PetscInt rend, PetscInt *n, PetscInt idx[]);
 /* Adds to the rigid-motion constraint Gram matrix M the row of component c
    fixed at (x, y) (coordinates centred and scaled): (e_c, r_c), r = (-y, x). */
 void           BodyRigidGramAddRow(PetscReal M[9], PetscInt c, PetscReal x, PetscReal y);

@@ -89,3 +89,56 @@ def test_default_by_size(tmp_path):
                         "-sheet_bc", "bottom", "-sheet_bc_bottom_values", "0,-0.01", "-newton_iterative_dofs", "1",
                         "-output", "none"], tmp_path, name="flat")
     assert chosen(flat) == (None, False)
+
+
+def shell(h):
+    """Lame's octant (tests/meshes/solid/shell.geo: radii 1 and 2, Tet10 at
+    size h) under inner pressure 10, on rollers on its three symmetry planes
+    (one component held per node there), with Lame's exact solution."""
+    p, a, b, E, nu = 10.0, 1.0, 2.0, 1000.0, 0.3
+    A = p * a ** 3 * (1 - 2 * nu) / (E * (b ** 3 - a ** 3))
+    B = p * a ** 3 * b ** 3 * (1 + nu) / (2 * E * (b ** 3 - a ** 3))
+    return ["-bodies", "sh", "-sh_geo", "tests/meshes/solid/shell.geo", "-mesh_size", repr(h), "-sh_E", repr(E),
+            "-sh_nu", repr(nu), "-sh_bc", "symx,symy,symz", "-sh_bc_symx_components", "x", "-sh_bc_symy_components", "y",
+            "-sh_bc_symz_components", "z", "-sh_load", "inner", "-sh_load_inner_pressure", repr(p), "-sh_exact", "sphere",
+            "-sh_exact_params", f"{A!r},{B!r}", "-output", "none"]
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("ranks", [1, 2])
+def test_nodal_gamg_matches(ranks, tmp_path):
+    """The iterative step's preconditioners (src/solver/iterative.c) on
+    Lame's octant at h = 0.25 (7226 free dofs; rollers hold one component
+    of each node on the symmetry planes, so the free dofs are not whole
+    nodes there): the default (on one rank two levels, the nodes by
+    Chebyshev and the cells' vertices by GAMG; on two GAMG by nodes, the
+    Hessian with every node's three components, a held one an identity row,
+    block size 3), GAMG by nodes (-newton_iterative_two_levels 0), GAMG on
+    the free dofs alone (-newton_iterative_nodal 0) and the direct step, all
+    to -tao_gttol 1e-12: the answers differ by H^-1 of the gradients the
+    stops leave (as test_iterative_matches_direct); bound 1e-9 on the
+    relative difference of the displacement's norm and of the energy, 1e-6
+    on that of the L2 error against Lame's solution (1.6e-3 of the norm)
+    (measured `nodal_du` = up to 2.2e-16, `nodal_dE` = up to 1.8e-15,
+    `nodal_derr` = up to 1.9e-13). The default's KSP view names what it
+    ran: two levels on one rank, GAMG by nodes of block size 3 on two."""
+    runs = {}
+    for name, opts in (("default", ["-newton_iterative", "1", "-tao_nls_ksp_view"]),
+                       ("nodes", ["-newton_iterative", "1", "-newton_iterative_two_levels", "0"]),
+                       ("free", ["-newton_iterative", "1", "-newton_iterative_nodal", "0"]),
+                       ("direct", ["-newton_iterative", "0"])):
+        runs[name] = run_contact(shell(0.25) + opts + ["-tao_gttol", "1e-12"], tmp_path, ranks=ranks, name=name)
+    view = runs["default"].stdout
+    assert "GAMG by nodes" in view and re.search(r"rows=\d+, cols=\d+, bs=3", view)
+    assert ("two levels: the nodes" in view) == (ranks == 1)
+    assert "GAMG by nodes" not in runs["free"].stdout
+    n = runs["default"].summary
+    assert n["dofs"] == 7226
+    for other in ("nodes", "free", "direct"):
+        o = runs[other].summary
+        assert o["dofs"] == n["dofs"]
+        bn, bo = n["bodies"]["sh"], o["bodies"]["sh"]
+        assert figure("nodal_du", abs(n["displacement_norm"] / o["displacement_norm"] - 1)) <= 1e-9
+        assert figure("nodal_dE", abs(bn["energy"] / bo["energy"] - 1)) <= 1e-9
+        assert figure("nodal_derr", abs(bn["l2_error"] / bo["l2_error"] - 1)) <= 1e-6
+    assert n["bodies"]["sh"]["l2_error"] / n["bodies"]["sh"]["l2_norm"] < 3e-3  # the discretisation's

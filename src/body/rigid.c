@@ -101,6 +101,32 @@ PetscErrorCode BodyAddRigidModes(Body b, PetscInt rstart, PetscInt rend, PetscSc
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyGetOwnedNodeRows(Body b, PetscInt rstart, PetscInt rend, PetscInt *n, PetscInt idx[])
+{
+  const PetscInt dim = b->dim;
+  PetscSection   s;
+
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (b->rigid) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalSection(b->dm, &s));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt dof, off;
+
+    PetscCall(PetscSectionGetDof(s, p, &dof));
+    PetscCall(PetscSectionGetOffset(s, p, &off));
+    for (PetscInt k = off; k + dim <= off + dof; k += dim) { /* a point's nodes, dim components each */
+      PetscBool owned = PETSC_FALSE;
+      for (PetscInt d = 0; d < dim; ++d) owned = (PetscBool)(owned || (b->l2b[k + d] >= rstart && b->l2b[k + d] < rend));
+      if (!owned) continue;
+      if (idx)
+        for (PetscInt d = 0; d < dim; ++d) idx[*n * dim + d] = b->l2b[k + d] >= 0 ? b->l2b[k + d] : -1;
+      ++*n;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Number of rigid motions (x and y translation, rotation; a 3D body's six)
    that the Dirichlet conditions leave free. A constrained component c at
    node x removes the part of the rigid motion in that component, a row of
