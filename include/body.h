@@ -177,6 +177,10 @@ PetscReal       BodyGetLoadFactor(Body);
 PetscErrorCode  BodySetJoinedNumbering(Body, PetscInt first);
 PetscErrorCode  BodySetJoinedSolution(Body, const PetscScalar x[]);
 PetscErrorCode  BodyAddJoinedGradient(Body, PetscScalar g[]);
+/* Every point carrying a node: its dim joined rows (nodeRows[n][dim]), and
+   the rows of the nv[k] <= 8 vertices of its closure (vertexRows[n][8][dim]),
+   -1 for a constrained component (PetscFree3 the three; none without cells). */
+PetscErrorCode  BodyGetNodeVertexRows(Body, PetscInt *n, PetscInt **nodeRows, PetscInt **nv, PetscInt **vertexRows);
 /* Collective: refuses a body whose conditions (and contacts: contact, it is
    in one) leave a motion free, so that the problem is singular. */
 PetscErrorCode  BodyCheckHeld(Body, PetscBool contact);

@@ -7,6 +7,7 @@
    derives from them (the schedule, the Newton step's kind, the Hessian in
    force) lives in the Problem. */
 #include "contact.h"
+#include <petscksp.h>
 
 /* Friction's fixed point on the normal pressure within each load increment
    (staging.c runs it): -contact_friction_lag_rtol, -contact_friction_lag_max_it
@@ -75,6 +76,9 @@ typedef struct {
   SchurType schurType;
   PetscBool tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
   PetscInt  tangentIts;       /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */
+  PetscBool iterativeNodal;   /* -newton_iterative_nodal: 3D, GAMG aggregates nodes (iterative.c) */
+  PetscBool iterativeTwoLevels; /* -newton_iterative_two_levels: 3D, one rank, by nodes: the vertices' level first */
+  PCMGCycleType iterativeCycle; /* -newton_iterative_cycle: by nodes, the multigrid cycle */
 } NewtonOptions;
 
 /* Load stepping and the load history (schedule.c: "Load stepping options"). */

@@ -8,8 +8,8 @@ so that a new option is classified when it is added. PETSc's own options
 The values of a kind (bad_values: a number non-numeric, NaN, Inf, -Inf and,
 where its domain excludes them, below its least; an integer non-integer and
 below its least; a fraction or a unit interval's number outside it; a choice
-an unknown name; a switch neither true nor false) make 303 cases, all run by
-`make stress`. `make test` runs a pairwise selection of them (FAST, 98 runs),
+an unknown name; a switch neither true nor false) make 306 cases, all run by
+`make stress`. `make test` runs a pairwise selection of them (FAST, 101 runs),
 one run per bad value, since the program stops at the first:
 
 - every option at least once, with a value its own check must refuse (own_values:
@@ -64,7 +64,7 @@ DOMAINS = {
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",), "indenter_material": ("choice",), "block_material": ("choice",),
     "mesh_only": ("bool",), "config_view": ("bool",), "progress": ("bool",), "quiet": ("bool",), "output_wait": ("bool",),
-    "partition_view": ("bool",), "load_path": ("bool",), "tangent_at_rest": ("bool",), "newton_iterative": ("bool",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
+    "partition_view": ("bool",), "load_path": ("bool",), "tangent_at_rest": ("bool",), "newton_iterative": ("bool",), "newton_iterative_nodal": ("bool",), "newton_iterative_two_levels": ("bool",), "newton_iterative_cycle": ("choice",), "newton_schur_type": ("choice",), "taylor_test": ("bool",), "axisymmetric": ("bool",), "newton_schur": ("bool",), "contact_disable": ("bool",),
     "indenter_bc_clamp_exact": ("bool",), "block_bc_push_exact": ("bool",),
     "indenter_rigid": ("bool",), "block_rigid": ("bool",),
     "indenter_rigid_centre": ("reals", None, False), "block_rigid_centre": ("reals", None, False),

@@ -72,3 +72,44 @@ PetscErrorCode BodyAddJoinedGradient_Elastic(Body b, Vec Yl, PetscScalar g[])
   PetscCall(VecResetArray(b->Gg));
   PetscFunctionReturn(0);
 }
+
+/* For the iterative step's coarse level (iterative.c): every point of the
+   chart that carries a node (dim components), its joined rows, and the
+   joined rows of the vertices of its closure (an edge's two, a face's, a
+   cell's; at most 8), -1 for a constrained component. A body without cells
+   has none. */
+PetscErrorCode BodyGetNodeVertexRows(Body b, PetscInt *n, PetscInt **nodeRows, PetscInt **nv, PetscInt **vertexRows)
+{
+  const PetscInt dim = b->dim;
+  PetscSection   sec;
+  PetscInt       vs, ve, k = 0;
+
+  PetscFunctionBeginUser;
+  *n = 0;
+  *nodeRows = *nv = *vertexRows = NULL;
+  if (!b->dm || !b->l2b) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalSection(b->dm, &sec));
+  PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
+  PetscCall(PetscMalloc3(dim * (b->pEnd - b->pStart) + 1, nodeRows, b->pEnd - b->pStart + 1, nv, 8 * dim * (b->pEnd - b->pStart) + 1, vertexRows));
+  for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
+    PetscInt dof, off, ncl, *cl = NULL, m = 0;
+
+    PetscCall(PetscSectionGetDof(sec, p, &dof));
+    if (dof < dim) continue;
+    PetscCall(PetscSectionGetOffset(sec, p, &off));
+    for (PetscInt d = 0; d < dim; ++d) (*nodeRows)[dim * k + d] = b->l2b[off + d];
+    PetscCall(DMPlexGetTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
+    for (PetscInt j = 0; j < ncl && m < 8; ++j) {
+      const PetscInt q = cl[2 * j];
+      PetscInt       voff;
+      if (q < vs || q >= ve) continue;
+      PetscCall(PetscSectionGetOffset(sec, q, &voff));
+      for (PetscInt d = 0; d < dim; ++d) (*vertexRows)[(8 * k + m) * dim + d] = b->l2b[voff + d];
+      ++m;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
+    (*nv)[k++] = m;
+  }
+  *n = k;
+  PetscFunctionReturn(0);
+}

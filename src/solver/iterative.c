@@ -92,15 +92,14 @@ typedef struct {
   Mat           Ac;     /* P^T Hn P */
 } NodalPC;
 
-/* The node of a body's point (its first free component's row in Hn / 3),
-   -1 for a point with no free component. */
-static PetscInt NodalPCPointNode(NodalPC *np, Body b, PetscSection sec, PetscInt rstart, PetscInt q)
+/* Hn's node of a point's joined rows (its last free component's row in Hn
+   / 3), -1 for a point with no free component. */
+static PetscInt NodalPCRowsNode(NodalPC *np, const PetscInt rows[3], PetscInt rstart)
 {
-  PetscInt dof, off, node = -1;
+  PetscInt node = -1;
 
-  if (PetscSectionGetDof(sec, q, &dof) || PetscSectionGetOffset(sec, q, &off)) return -1;
-  for (PetscInt d = PetscMin(dof, 3) - 1; d >= 0; --d)
-    if (b->l2b[off + d] >= 0) node = np->row[b->l2b[off + d] - rstart] / 3;
+  for (PetscInt d = 2; d >= 0; --d)
+    if (rows[d] >= 0) node = np->row[rows[d] - rstart] / 3;
   return node;
 }
 
@@ -108,7 +107,8 @@ static PetscInt NodalPCPointNode(NodalPC *np, Body b, PetscSection sec, PetscInt
    the vertices of its point's closure (an edge's two, a face's, a cell's:
    the linear (P1, Q1) interpolation at a quadratic node, exact for
    Tet10's and Hex27's), component by component; a vertex is a coarse node,
-   in Hn's order. One rank (the vertices of a closure are then all here). */
+   in Hn's order. One rank (the vertices of a closure are then all here;
+   BodyGetNodeVertexRows gives them). */
 static PetscErrorCode NodalPCBuildInterpolation(NodalPC *np, Mat H, PetscInt nbodies, Body bodies[])
 {
   PetscInt rstart, rend, nn = np->nrows / 3, *cidx, nc = 0;
@@ -117,39 +117,28 @@ static PetscErrorCode NodalPCBuildInterpolation(NodalPC *np, Mat H, PetscInt nbo
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
   PetscCall(PetscMalloc1(nn + 1, &cidx));
   for (PetscInt k = 0; k < nn; ++k) cidx[k] = -1;
-  for (PetscInt i = 0; i < nbodies; ++i) {
-    PetscSection sec;
-    PetscInt     vs, ve;
-    if (bodies[i]->rigid) continue;
-    PetscCall(DMGetLocalSection(bodies[i]->dm, &sec));
-    PetscCall(DMPlexGetDepthStratum(bodies[i]->dm, 0, &vs, &ve));
-    for (PetscInt q = vs; q < ve; ++q) {
-      const PetscInt node = NodalPCPointNode(np, bodies[i], sec, rstart, q);
-      if (node >= 0) cidx[node] = 1;
+  for (PetscInt pass = 0; pass < 2; ++pass) { /* the vertices numbered, then the interpolation */
+    if (pass == 1) {
+      for (PetscInt k = 0; k < nn; ++k)
+        if (cidx[k] > 0) cidx[k] = nc++;
+      PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, 3 * nn, 3 * nc, 8, NULL, &np->P));
     }
-  }
-  for (PetscInt k = 0; k < nn; ++k)
-    if (cidx[k] > 0) cidx[k] = nc++;
-  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, 3 * nn, 3 * nc, 8, NULL, &np->P));
-  for (PetscInt i = 0; i < nbodies; ++i) {
-    Body         b = bodies[i];
-    PetscSection sec;
-    PetscInt     vs, ve;
-    if (b->rigid) continue;
-    PetscCall(DMGetLocalSection(b->dm, &sec));
-    PetscCall(DMPlexGetDepthStratum(b->dm, 0, &vs, &ve));
-    for (PetscInt p = b->pStart; p < b->pEnd; ++p) {
-      const PetscInt node = NodalPCPointNode(np, b, sec, rstart, p);
-      PetscInt       ncl, *cl = NULL, nv = 0, vn[8];
+    for (PetscInt i = 0; i < nbodies; ++i) {
+      PetscInt n, *rows, *nv, *vrows;
 
-      if (node < 0) continue;
-      PetscCall(DMPlexGetTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
-      for (PetscInt j = 0; j < ncl; ++j)
-        if (cl[2 * j] >= vs && cl[2 * j] < ve && nv < 8) vn[nv++] = NodalPCPointNode(np, b, sec, rstart, cl[2 * j]);
-      PetscCall(DMPlexRestoreTransitiveClosure(b->dm, p, PETSC_TRUE, &ncl, &cl));
-      for (PetscInt j = 0; j < nv; ++j) /* a vertex with every component held: no coarse node, no term */
-        if (vn[j] >= 0)
-          for (PetscInt d = 0; d < 3; ++d) PetscCall(MatSetValue(np->P, 3 * node + d, 3 * cidx[vn[j]] + d, 1.0 / nv, INSERT_VALUES));
+      PetscCall(BodyGetNodeVertexRows(bodies[i], &n, &rows, &nv, &vrows));
+      for (PetscInt k = 0; k < n; ++k) {
+        const PetscInt node = NodalPCRowsNode(np, &rows[3 * k], rstart);
+        if (node < 0) continue;
+        for (PetscInt j = 0; j < nv[k]; ++j) { /* a vertex with every component held: no coarse node, no term */
+          const PetscInt v = NodalPCRowsNode(np, &vrows[(8 * k + j) * 3], rstart);
+          if (v < 0) continue;
+          if (pass == 0) cidx[v] = 1;
+          else
+            for (PetscInt d = 0; d < 3; ++d) PetscCall(MatSetValue(np->P, 3 * node + d, 3 * cidx[v] + d, 1.0 / nv[k], INSERT_VALUES));
+        }
+      }
+      PetscCall(PetscFree3(rows, nv, vrows));
     }
   }
   PetscCall(MatAssemblyBegin(np->P, MAT_FINAL_ASSEMBLY));
@@ -398,8 +387,8 @@ static PetscErrorCode NodalPCNumber(NodalPC *np, Mat H, PetscInt nbodies, Body b
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
   for (PetscInt i = 0; i < nbodies; ++i) {
     PetscInt n;
-    if (bodies[i]->rigid) continue;
-    if (bodies[i]->dim != 3) mine = PETSC_FALSE;
+    if (!BodyHasCells(bodies[i])) continue;
+    if (BodyGetDimension(bodies[i]) != 3) mine = PETSC_FALSE;
     PetscCall(BodyGetOwnedNodeRows(bodies[i], rstart, rend, &n, NULL));
     nn += n;
   }
@@ -407,7 +396,7 @@ static PetscErrorCode NodalPCNumber(NodalPC *np, Mat H, PetscInt nbodies, Body b
   nn = 0;
   for (PetscInt i = 0; i < nbodies && mine; ++i) {
     PetscInt n;
-    if (bodies[i]->rigid) continue;
+    if (!BodyHasCells(bodies[i])) continue;
     PetscCall(BodyGetOwnedNodeRows(bodies[i], rstart, rend, &n, &idx[3 * nn]));
     nn += n;
   }
@@ -505,15 +494,13 @@ static PetscErrorCode NodalPCCreate(PC pc, Mat H, PetscInt nbodies, Body bodies[
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[], PetscBool constant)
+PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body bodies[], PetscBool constant, const NewtonOptions *o)
 {
   Vec           modes[6 * CONTACT_MAX_BODIES];
   PetscInt      n = 0, rstart, rend, dim = 2;
   MatNullSpace  nsp;
   PC            pc;
-  PetscBool     nodal = PETSC_TRUE;
-  PCMGCycleType cycle = PC_MG_CYCLE_W;
-  PetscBool     twolevel = PETSC_TRUE;
+  PetscBool     nodal = o->iterativeNodal;
 
   PetscFunctionBeginUser;
   PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
@@ -555,12 +542,7 @@ PetscErrorCode ContactIterativeKSPSetUp(KSP ksp, Mat H, PetscInt nbodies, Body b
   PetscCall(KSPSetTolerances(ksp, constant ? 1e-9 : 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
   if (constant) PetscCall(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED)); /* the gradient Newton's step leaves: below 1e-9 of g0 */
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscOptionsBegin(PetscObjectComm((PetscObject)H), NULL, "Newton step by CG + GAMG", NULL);
-  PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, nodal, &nodal, NULL));
-  PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes", NULL, twolevel, &twolevel, NULL));
-  PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)cycle, (PetscEnum *)&cycle, NULL));
-  PetscOptionsEnd();
-  if (dim == 3 && nodal) PetscCall(NodalPCCreate(pc, H, nbodies, bodies, n, modes, cycle, twolevel, &nodal));
+  if (dim == 3 && nodal) PetscCall(NodalPCCreate(pc, H, nbodies, bodies, n, modes, o->iterativeCycle, o->iterativeTwoLevels, &nodal));
   else nodal = PETSC_FALSE;
   for (PetscInt k = 0; k < n; ++k) PetscCall(VecDestroy(&modes[k]));
   if (!nodal) {

@@ -109,7 +109,7 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PetscCall(KSPGetPC(ksp, &pc));
   p->tangentAuto = PETSC_FALSE;
   if (p->cfg->newton.iterative) {
-    if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies, (PetscBool)(p->nterms == 0 && !varies && !choose)));
+    if (p->K) PetscCall(ContactIterativeKSPSetUp(ksp, p->H, p->nbodies, p->bodies, (PetscBool)(p->nterms == 0 && !varies && !choose), &p->cfg->newton));
   } else if (p->cfg->newton.schur && p->nterms > 0 && choose && p->K) {
     PC rest, full;
     PetscCheck(p->cfg->newton.schurType != SCHUR_MUMPS || size == 1, p->comm, PETSC_ERR_USER_INPUT, "option -newton_schur_type mumps: one rank only (MUMPS Schur complements are sequential in PETSc 3.18); use substructure on %d ranks", (int)size);
@@ -189,9 +189,15 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   o->tangentAtRest    = PETSC_FALSE;
   o->tangentAtRestSet = PETSC_FALSE;
   o->tangentIts       = 10;
+  o->iterativeNodal     = PETSC_TRUE;
+  o->iterativeTwoLevels = PETSC_TRUE;
+  o->iterativeCycle     = PC_MG_CYCLE_W;
   PetscOptionsBegin(comm, NULL, "Newton step options", NULL);
   PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes direct; 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
   PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, o->iterativeDofs, &o->iterativeDofs, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies, CG + GAMG: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, o->iterativeNodal, &o->iterativeNodal, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, NULL));
+  PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)o->iterativeCycle, (PetscEnum *)&o->iterativeCycle, NULL));
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, o->schur, &o->schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)o->schurType, (PetscEnum *)&o->schurType, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, o->tangentAtRest, &o->tangentAtRest, &o->tangentAtRestSet));
