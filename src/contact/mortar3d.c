@@ -46,8 +46,12 @@
 
    Master faces near a slave face: a bounding-volume tree over the master
    faces' boxes (current coordinates), queried with the slave face's box
-   widened by the largest corner chord of the two surfaces: a slave point
-   whose gap is less than that finds the face of its closest point. */
+   widened by the face's size (its longest corner chord): a slave point
+   whose gap is less than that finds the face of its closest point, and a
+   point farther from the master is apart (a node's support, of the face's
+   size, is not both in contact and that far but where the surfaces meet
+   at more than 45 degrees). Where a master much finer than the slave gives
+   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
 #include "mortar3d.h"
 #include "bvh.h"
 #include "segment3d.h"
@@ -75,8 +79,8 @@ typedef struct {
   PetscReal       *Adual;        /* [slave nf][81] the dual weights' coefficients */
   PetscReal       *A, *C, *Q, *gj; /* [slave nn] */
   PetscBool       *active;       /* [slave nn] C_j >= A_j / 2 */
+  PetscBool       *nearNode, *integrate; /* [slave nn], [slave nf]: Mortar3dUpdate */
   PetscInt        *nodeFaceStart, *nodeFace; /* the slave faces at each slave node */
-  PetscReal        margin;
   Bvh              tree;
   PetscReal       *boxes;        /* [master nf][6] */
   PetscReal       *xm;           /* [MORTAR3D_MAX_MASTER][27] work */
@@ -88,6 +92,20 @@ typedef struct {
 } Mortar3d;
 
 static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
+
+/* A face's size: its longest chord between corners. */
+static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
+{
+  const PetscInt nc = t == FACE3D_TRI6 ? 3 : 4;
+  PetscReal      h  = 0.0;
+
+  for (PetscInt j = 0; j < nc; ++j) {
+    PetscReal l = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) l += PetscSqr(x[3 * j + d] - x[3 * ((j + 1) % nc) + d]);
+    h = PetscMax(h, l);
+  }
+  return PetscSqrtReal(h);
+}
 
 /* The boxes of the master faces and their tree at the current coordinates. */
 static PetscErrorCode Mortar3dBuildTree(Mortar3d *m)
@@ -105,31 +123,72 @@ static PetscErrorCode Mortar3dBuildTree(Mortar3d *m)
   PetscFunctionReturn(0);
 }
 
+/* Of the n master faces found (more than MORTAR3D_MAX_MASTER, where the
+   master is much finer than the slave), the MORTAR3D_MAX_MASTER whose boxes'
+   centres are nearest the slave face's corners' centroid, in keep:
+   the faraway ones hold no closest point of the slave face's points. */
+static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], PetscInt n, const PetscInt found[], PetscInt keep[])
+{
+  PetscReal *d2, c[3];
+  PetscInt  *perm;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(n, &d2, n, &perm));
+  for (PetscInt d = 0; d < 3; ++d) {
+    const PetscInt nc = m->S[m->s].type == FACE3D_TRI6 ? 3 : 4;
+    c[d]              = 0.0;
+    for (PetscInt j = 0; j < nc; ++j) c[d] += xs[3 * j + d] / nc;
+  }
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal *b = &m->boxes[6 * found[k]];
+    d2[k]              = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) d2[k] += PetscSqr(0.5 * (b[d] + b[3 + d]) - c[d]);
+    perm[k] = k;
+  }
+  PetscCall(PetscSortRealWithPermutation(n, d2, perm));
+  for (PetscInt k = 0; k < MORTAR3D_MAX_MASTER; ++k) keep[k] = found[perm[k]];
+  PetscCall(PetscSortInt(MORTAR3D_MAX_MASTER, keep)); /* the faces' order as the tree gives it, whatever the distances' ties */
+  PetscCall(PetscInfo(NULL, "pair %s: a slave face meets %" PetscInt_FMT " master faces; the %d nearest kept\n", m->spec.name, n, MORTAR3D_MAX_MASTER));
+  PetscCall(PetscFree2(d2, perm));
+  PetscFunctionReturn(0);
+}
+
 /* Slave face f against the master faces near it (deriv: with dQ). */
 static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, Mortar3dFace *E)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
-  PetscReal               xs[27], Xs[27], box[6];
+  PetscReal               xs[27], Xs[27], box[6], margin;
   Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
   const PetscInt         *found;
   PetscInt                nfound, np;
   Segment3dPoint         *pts;
 
   PetscFunctionBeginUser;
+  if (!m->integrate[f]) { /* far from the master */
+    E->nm   = 0;
+    E->ndof = 3 * S->nb;
+    PetscCall(PetscArrayzero(E->a, FACE3D_MAX_NODES));
+    PetscCall(PetscArrayzero(E->q, FACE3D_MAX_NODES));
+    PetscCall(PetscFree(E->dQ));
+    if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof, &E->dQ));
+    PetscFunctionReturn(0);
+  }
   ContactSurface3dFaceCoords(S, f, S->x, xs);
   ContactSurface3dFaceCoords(S, f, S->X, Xs);
   Face3dBox(S->type, xs, box);
+  margin = Mortar3dFaceSize(S->type, xs);
   for (PetscInt d = 0; d < 3; ++d) {
-    box[d] -= m->margin;
-    box[3 + d] += m->margin;
+    box[d] -= margin;
+    box[3 + d] += margin;
   }
   PetscCall(BvhQuery(m->tree, box, &nfound, &found));
-  PetscCheck(nfound <= MORTAR3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_SUP, "contact pair %s: a face of slave surface '%s' meets %" PetscInt_FMT " faces of master surface '%s', %d at most: name the finer surface's side slave (-contact_mortar_slave)", m->spec.name, S->group, nfound, M->group, MORTAR3D_MAX_MASTER);
+  if (nfound > MORTAR3D_MAX_MASTER) PetscCall(Mortar3dKeepNearest(m, xs, nfound, found, E->mf));
+  else PetscCall(PetscArraycpy(E->mf, found, nfound));
+  nfound  = PetscMin(nfound, MORTAR3D_MAX_MASTER);
   E->nm   = nfound;
   E->ndof = 3 * (S->nb + nfound * M->nb);
   for (PetscInt k = 0; k < nfound; ++k) {
-    E->mf[k] = found[k];
-    ContactSurface3dFaceCoords(M, found[k], M->x, &m->xm[27 * k]);
+    ContactSurface3dFaceCoords(M, E->mf[k], M->x, &m->xm[27 * k]);
     mf[k].type = M->type;
     mf[k].x    = &m->xm[27 * k];
   }
@@ -140,7 +199,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscArrayzero(E->a, FACE3D_MAX_NODES));
   PetscCall(PetscArrayzero(E->q, FACE3D_MAX_NODES));
   PetscCall(PetscFree(E->dQ));
-  if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof, &E->dQ));
+  if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
   PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
@@ -164,15 +223,44 @@ static inline void Mortar3dColumn(const Mortar3d *m, PetscInt f, const Mortar3dF
   }
 }
 
-/* Both surfaces' current coordinates and the master's tree. */
+/* Both surfaces' current coordinates, the master's tree, and the slave
+   faces to integrate: those with a node near the master (on a face whose
+   box, widened by MORTAR3D_NEAR of its size, meets a master face's box),
+   so that a node near the master has every face around it integrated
+   (its C_j and Q_j whole) and a node far from it none (C_j = 0: not
+   counted, as its gap is positive wherever its faces are). */
+#define MORTAR3D_NEAR 0.25
 static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
 {
+  const ContactSurface3d *S = &m->S[m->s];
+
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < 2; ++k) {
     PetscBool changed;
     PetscCall(ContactSurface3dUpdateCoordinates(&m->S[k], m->body[k], &changed));
   }
   PetscCall(Mortar3dBuildTree(m));
+  PetscCall(PetscArrayzero(m->nearNode, S->nn));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscReal       xs[27], box[6], margin;
+    const PetscInt *found;
+    PetscInt        nfound;
+    ContactSurface3dFaceCoords(S, f, S->x, xs);
+    Face3dBox(S->type, xs, box);
+    margin = MORTAR3D_NEAR * Mortar3dFaceSize(S->type, xs);
+    for (PetscInt d = 0; d < 3; ++d) {
+      box[d] -= margin;
+      box[3 + d] += margin;
+    }
+    PetscCall(BvhQuery(m->tree, box, &nfound, &found));
+    if (nfound)
+      for (PetscInt i = 0; i < S->nb; ++i) m->nearNode[S->fnodes[S->nb * f + i]] = PETSC_TRUE;
+  }
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    m->integrate[f] = PETSC_FALSE;
+    for (PetscInt i = 0; i < S->nb; ++i)
+      if (m->nearNode[S->fnodes[S->nb * f + i]]) m->integrate[f] = PETSC_TRUE;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -359,6 +447,7 @@ static PetscErrorCode Mortar3dSetUpSlave(Mortar3d *m)
     }
   PetscCall(PetscFree(cnt));
   PetscCall(PetscCalloc1(S->nown + 1, &m->own));
+  PetscCall(PetscCalloc2(S->nn, &m->nearNode, S->nf, &m->integrate));
   m->spec.kpH = S->hmin;
   if (m->spec.kpAuto) m->spec.kp = CONTACT_PENALTY_AUTO * m->spec.Estar / S->hmin;
   m->kp = m->spec.kp;
@@ -401,7 +490,6 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(Mortar3dChooseSlave(m));
   PetscCall(Face3dRuleCreate(FACE3D_TRI6, 2 * m->spec.nqp - 1 > 6 ? 2 * m->spec.nqp - 1 : 6, &m->rule)); /* the pieces': degree 7 at the default 4 points */
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
-  m->margin = PetscMax(m->S[0].hmax, m->S[1].hmax);
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
   PetscCall(Mortar3dSetUpSlave(m));
   PetscFunctionReturn(0);
@@ -484,7 +572,24 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
   fprintf(fp, ", \"nodes_in_contact\": %d, \"nodes_counted\": %d", (int)m->ncontact, (int)m->nactive);
   ContactJSONKeyReal(fp, ", ", "contact_area", m->area);
   ContactJSONKeyReal(fp, ", ", "max_penetration", m->maxPen);
-  fprintf(fp, ", \"hessian\": \"gauss-newton\", \"surfaces\": [");
+  fprintf(fp, ", \"hessian\": \"gauss-newton\"");
+  { /* the slave nodes in contact: reference position, pressure, weight A_j */
+    const ContactSurface3d *S = &m->S[m->s];
+    PetscInt                n = 0;
+    fprintf(fp, ", \"contact_nodes\": {\"columns\": [\"X\", \"Y\", \"Z\", \"p\", \"A\"], \"rows\": [");
+    for (PetscInt j = 0; j < S->nn; ++j) {
+      const PetscReal row[5] = {S->X[3 * j], S->X[3 * j + 1], S->X[3 * j + 2], -m->kp * m->gj[j], m->A[j]};
+      if (!m->active[j] || !(m->gj[j] < 0)) continue;
+      fprintf(fp, "%s[", n++ ? ", " : "");
+      for (PetscInt k = 0; k < 5; ++k) {
+        if (k) fprintf(fp, ", ");
+        ContactJSONReal(fp, row[k]);
+      }
+      fprintf(fp, "]");
+    }
+    fprintf(fp, "]}");
+  }
+  fprintf(fp, ", \"surfaces\": [");
   for (PetscInt k = 0; k < 2; ++k) {
     const ContactSurface3d *T = &m->S[k];
     fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"faces\": %d, \"face_type\": \"%s\", \"nodes\": %d, \"slave\": %s", k ? ", " : "", BodyGetName(bodies[m->spec.body[k]]), m->spec.group[k], (int)T->nf, T->nb == 6 ? "Tri6" : "Quad9", (int)T->nn, k == m->s ? "true" : "false");
@@ -552,6 +657,7 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscCall(PetscFree(m->Adual));
   PetscCall(PetscFree5(m->A, m->C, m->Q, m->gj, m->active));
   PetscCall(PetscFree2(m->nodeFaceStart, m->nodeFace));
+  PetscCall(PetscFree2(m->nearNode, m->integrate));
   if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
   if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
   PetscCall(PetscFree(m));
