@@ -1,0 +1,158 @@
+"""Contact between 3D bodies (mortar on Tri6 and Quad9 faces,
+src/contact/mortar3d.c) on scenes of our own: two boxes of
+tests/meshes/contact3d/box.geo (Hex27 transfinite, n cells across and m in
+height, or Tet10 of size h) pressed together, the upper's bottom on the
+lower's top, through -contact_pairs and -contact_<pair>_surfaces.
+
+The patch scene: the lower box [0, 1]^2 x [0, 0.5] held at its bottom in z,
+the upper [0, 1]^2 x [0.5, 1] pushed down by D on its top, every lateral
+face of both on rollers (its normal component held). Its exact solution is
+uniaxial strain in both boxes: sigma_zz = -p uniform, with
+
+    D = p (H_l / M_l + H_u / M_u) + p / k_p,   M = E (1 - nu) / ((1 + nu)(1 - 2 nu)),
+
+the penetration p / k_p uniform on the interface (the faces stay flat, the
+footprints flush), so every slave node's pressure is p and the pair's force
+on the upper box is p times the area, (0, 0, p), which the reactions of the
+lower's bottom and of the upper's top balance."""
+import pytest
+
+from conftest import figure, run_contact
+
+GEO = "tests/meshes/contact3d/box.geo"
+E, NU, D = 1000.0, 0.3, 0.01
+M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
+# the stop pinned: a gradient of 1e-10 (the nodal forces are 1e-1 to 1, the
+# penetration 4e-6 of a displacement 1e-2: the pressure to 1e-10 of itself)
+SOLVE = ["-tao_gatol", "1e-10", "-tao_grtol", "0", "-tao_gttol", "0"]
+LOWER = "hex=1,n=3,m=2"
+UPPERS = {"hex27-on-hex27": "hex=1,n=4,m=2,z0=0.5", "tet10-on-hex27": "hex=0,h=0.3,z0=0.5"}
+
+
+def box(name, params, top):
+    """A box body (E 1000, nu 0.3), its lateral faces on rollers, held in z
+    at its bottom (top: at its top, pushed down by D)."""
+    held = "top" if top else "bottom"
+    args = ["-" + name + "_geo", GEO, f"-{name}_geo_params", params, f"-{name}_E", E, f"-{name}_nu", NU,
+            f"-{name}_bc", f"{held},xmin,xmax,ymin,ymax", f"-{name}_bc_{held}_components", "z"]
+    if top:
+        args += [f"-{name}_bc_top_values", -D]
+    for g, c in (("xmin", "x"), ("xmax", "x"), ("ymin", "y"), ("ymax", "y")):
+        args += [f"-{name}_bc_{g}_components", c]
+    return args
+
+
+def patch_args(upper, extra=()):
+    return (["-bodies", "lower,upper"] + box("lower", LOWER, False) + box("upper", upper, True)
+            + ["-contact_pairs", "p", "-contact_p_surfaces", "upper:bottom,lower:top", "-output", "none"] + list(extra))
+
+
+def exact_pressure(kp):
+    return D / (0.5 / M + 0.5 / M + 1.0 / kp)
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("slave", ["first", "second"])
+@pytest.mark.parametrize("case", list(UPPERS))
+def test_patch(case, slave, tmp_path):
+    """The contact patch test, non-matching meshes (the upper box Hex27 4 x 4
+    on the lower's 3 x 3, or Tet10 of size 0.3 on it), either surface as
+    slave: every slave node is in contact and its pressure k_p <-g_j>_+ is
+    the exact p of the uniaxial strain (the pair's reported k_p in D's
+    formula) to 1e-8 (measured: `pressure_error` = up to 6.3e-11 relative
+    at the stop's gradient 1e-10); the pair's forces on its two bodies
+    balance to round-off (`pair_balance` = up to 1e-16 of P), its lateral
+    components are round-off (`lateral` = up to 3.6e-14 of P), and its normal
+    component equals p times the area (`force_error` = up to 2.3e-12) and the
+    reactions of the lower's bottom and of the upper's top to what the stop
+    leaves (`reaction_balance` = up to 2.3e-12 of P; the residual gradient,
+    at most 1e-10, bounds each reaction's miss)."""
+    s = run_contact(patch_args(UPPERS[case], SOLVE + ["-contact_mortar_slave", slave]), tmp_path).summary
+    c = s["contact"]["p"]
+    assert c["dimension"] == 3 and c["penalty_auto"]
+    slave_side = 0 if slave == "first" else 1
+    assert c["surfaces"][slave_side]["slave"]
+    nslave = c["surfaces"][slave_side]["nodes"]
+    assert c["nodes_in_contact"] == nslave == c["nodes_counted"]
+    p = exact_pressure(c["penalty"])
+    err = max(abs(c["pmax"] - p), abs(c["pmin"] - p)) / p
+    assert figure("pressure_error", err) <= 1e-8
+    F = c["surfaces"][0]["force"]       # on the upper box
+    G = c["surfaces"][1]["force"]       # on the lower box
+    P = abs(F[2])
+    assert figure("pair_balance", max(abs(a + b) for a, b in zip(F, G)) / P) <= 1e-13
+    assert figure("lateral", max(abs(F[0]), abs(F[1])) / P) <= 1e-10
+    assert figure("force_error", abs(F[2] - p) / p) <= 1e-8
+    stop = 3 * s["gradient_norm"] * nslave ** 0.5 + 1e-13 * P
+    Rl, Ru = s["reactions"]["lower:bottom"], s["reactions"]["upper:top"]
+    miss = max(abs(Rl[2] - P), abs(Ru[2] + P))
+    figure("reaction_balance", miss / P)
+    assert miss <= stop
+    assert abs(s["contact_force"] - P) <= 1e-12 * P and abs(s["fem_pmax"] - c["pmax"]) <= 1e-12 * p
+
+
+@pytest.mark.roundoff
+def test_taylor(tmp_path):
+    """The Taylor test (-taylor_test) of the Tet10-on-Hex27 patch at its
+    solution: the gradient's remainder falls as eps^2, the energy and its
+    gradient consistent (`gradient_order` = 2.000, bounds [1.9, 2.1]). The
+    Hessian is Gauss-Newton (k_p G_j G_j^T / A_j, without the gap's second
+    derivative, which the master normal's turning under a random direction
+    gives): its remainder is first order, `hessian_order` = 1.000, a
+    relative `hessian_remainder` = 2.3e-5 of |H v| at the smallest step."""
+    s = run_contact(patch_args(UPPERS["tet10-on-hex27"], ["-taylor_test"]), tmp_path).summary
+    t = s["taylor"]
+    assert 1.9 <= figure("gradient_order", t["gradient_order"]) <= 2.1
+    figure("hessian_order", t["hessian_order"])
+    assert 0.9 <= t["hessian_order"] <= 2.1
+    assert figure("hessian_remainder", t["hessian_relative_remainder"][-1]) <= 1e-3
+
+
+@pytest.mark.roundoff
+def test_ranks_agree(tmp_path):
+    """The Tet10-on-Hex27 patch on 1 and 2 ranks: the pair's force and the
+    nodal pressures agree to what the stop guarantees (each run's residual
+    gradient, at most 1e-10, moves a nodal force by at most that, and a
+    nodal pressure by that over the node's weight, bounded here by n over
+    the contact area; `dF` = up to 1.2e-12 of P, `dp` = up to 2.4e-11
+    relative)."""
+    one = run_contact(patch_args(UPPERS["tet10-on-hex27"], SOLVE), tmp_path, name="one").summary
+    two = run_contact(patch_args(UPPERS["tet10-on-hex27"], SOLVE), tmp_path, ranks=2, name="two").summary
+    assert two["ranks"] == 2
+    c1, c2 = one["contact"]["p"], two["contact"]["p"]
+    P = c1["P"]
+    n = c1["surfaces"][0]["nodes"]
+    bound = 3 * n ** 0.5 * (one["gradient_norm"] + two["gradient_norm"]) + 1e-13 * P
+    dF = max(abs(a - b) for a, b in zip(c1["force"], c2["force"]))
+    figure("dF", dF / P)
+    assert dF <= bound
+    for k in ("pmax", "pmin"):
+        figure("dp", abs(c1[k] - c2[k]) / c1[k])
+        assert abs(c1[k] - c2[k]) <= bound / c1["contact_area"] * n
+    assert c1["nodes_in_contact"] == c2["nodes_in_contact"]
+
+
+def refused(args, tmp_path):
+    res = run_contact(args, tmp_path, check=False)
+    errors = [l for l in res.stderr.splitlines() if l.startswith("contact: error:")]
+    assert res.returncode == 1, res.stderr[-2000:]
+    assert len(errors) == 1, res.stderr[-2000:]
+    assert "PETSC ERROR" not in res.stderr
+    return errors[0]
+
+
+def test_refused(tmp_path):
+    """What 3D contact does not do yet, one line each naming the pair: gpts
+    (a 2D formulation), friction, a 2D half model's mirror, the 2D Hertz
+    report, and -contact_mortar_slave both."""
+    up = UPPERS["hex27-on-hex27"]
+    line = refused(patch_args(up, ["-contact_formulation", "gpts"]), tmp_path)
+    assert "contact pair p" in line and "gpts" in line and "mortar" in line
+    line = refused(patch_args(up, ["-contact_p_friction", "0.3"]), tmp_path)
+    assert "contact pair p" in line and "friction" in line
+    line = refused(patch_args(up, ["-contact_p_mirror_y", "0"]), tmp_path)
+    assert "mirror" in line and "contact pair p" in line
+    line = refused(patch_args(up, ["-contact_p_hertz_radii", "1,0"]), tmp_path)
+    assert "hertz" in line and "contact pair p" in line
+    line = refused(patch_args(up, ["-contact_mortar_slave", "both"]), tmp_path)
+    assert "contact pair p" in line and "both" in line
