@@ -2,8 +2,9 @@
 #include "body.h"
 
 /* A 3D elastic body's boundary faces as a 3D contact surface sees them
-   (src/body/faces.c; the 2D analogue is BodyGetGroupEdges and BodyMapNodes,
-   boundary.c). */
+   (src/body/faces.c; the 2D analogue is BodyGetGroupEdges, boundary.c; the
+   nodes' map, displacements and forces are body.h's BodyMapNodes,
+   BodyGetNodeDisplacements and BodyAddNodeForces in either dimension). */
 
 /* The faces of a physical surface held by this rank's owned face points,
    each a Tri6 (a Tet10's face, nb = 6) or a Quad9 (a Hex27's, nb = 9) with
@@ -26,14 +27,3 @@ typedef struct {
    tag: its physical tag; what: who asks, for the errors. */
 PetscErrorCode BodyGetGroupFaces(Body, const char group[], const char what[], PetscInt *tag, BodyFaces *);
 PetscErrorCode BodyFacesDestroy(BodyFaces *);
-/* The 3D BodyMapNodes: the surface nodes (global numbers ids, nn of them,
-   sorted) among this rank's owned points, map->node their index among the
-   nn and map->off their local offsets; joined[3 nn], on every rank, each
-   node's components' indices in the joined vector (-1: constrained). */
-PetscErrorCode BodyMapFaceNodes(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
-/* Collective: the displacements u[3 nn] of the nodes from the body's local
-   vector, each from the rank that owns it (the same bits on every rank). */
-PetscErrorCode BodyGetFaceNodeDisplacements(Body, PetscInt nn, const BodyNodeMap *, PetscReal u[]);
-/* Adds g[3 nn] (the same on every rank) at this rank's owned nodes into the
-   body's local gradient. */
-PetscErrorCode BodyAddFaceNodeForces(Body, const BodyNodeMap *, const PetscReal g[]);

@@ -109,17 +109,23 @@ def test_taylor(tmp_path):
 
 
 @pytest.mark.roundoff
-def test_ranks_agree(tmp_path):
-    """The Tet10-on-Hex27 patch on 1 and 2 ranks: the pair's force and the
-    nodal pressures agree to what the stop guarantees (each run's residual
-    gradient, at most 1e-10, moves a nodal force by at most that, and a
-    nodal pressure by that over the node's weight, bounded here by n over
-    the contact area; `dF` = up to 1.2e-12 of P, `dp` = up to 2.4e-11
-    relative)."""
-    one = run_contact(patch_args(UPPERS["tet10-on-hex27"], SOLVE), tmp_path, name="one").summary
-    two = run_contact(patch_args(UPPERS["tet10-on-hex27"], SOLVE), tmp_path, ranks=2, name="two").summary
+@pytest.mark.parametrize("scene", ["patch", "hertz"])
+def test_ranks_agree(scene, tmp_path):
+    """The Tet10-on-Hex27 patch and the quarter Hertz ball at h = 0.04
+    (test_hertz_quarter: a curved slave, a contact zone that ends inside
+    both surfaces) on 1 and 2 ranks: the pair's force and the nodal
+    pressures agree to what the stop guarantees (each run's residual
+    gradient moves a nodal force by at most that, and a nodal pressure by
+    that over the node's weight, bounded here by n over the contact area;
+    `dF` = up to 2.0e-12 of P, `dp` = up to 1.8e-10 relative, the largest
+    at the Hertz zone's edge, where p is 0.4 of a peak of 69), and the same
+    nodes are in contact."""
+    args = patch_args(UPPERS["tet10-on-hex27"], SOLVE) if scene == "patch" else hertz_args(0.04)
+    one = run_contact(args, tmp_path, name="one").summary
+    two = run_contact(args, tmp_path, ranks=2, name="two").summary
     assert two["ranks"] == 2
-    c1, c2 = one["contact"]["p"], two["contact"]["p"]
+    pair = "p" if scene == "patch" else "c"
+    c1, c2 = one["contact"][pair], two["contact"][pair]
     P = c1["P"]
     n = c1["surfaces"][0]["nodes"]
     bound = 3 * n ** 0.5 * (one["gradient_norm"] + two["gradient_norm"]) + 1e-13 * P

@@ -1,6 +1,7 @@
 /* A 3D elastic body's boundary faces of a physical surface, as a 3D contact
-   surface sees them (surface3d.c), and the exchange of its nodes'
-   displacements and forces with the body's local vectors.
+   surface sees them (surface3d.c); the surface's nodes are then mapped, and
+   their displacements and forces exchanged, by boundary.c's functions of
+   any dimension (BodyMapNodes, BodyGetNodeDisplacements, BodyAddNodeForces).
 
    A face point of the DMPlex (depth 2) has edges for its cone and vertices
    below them. Its corners are put in a cycle by walking its edges (each
@@ -163,63 +164,5 @@ PetscErrorCode BodyFacesDestroy(BodyFaces *F)
   PetscFunctionBeginUser;
   PetscCall(PetscFree5(F->point, F->id, F->off, F->joined, F->X));
   F->n = 0;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyMapFaceNodes(Body b, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[])
-{
-  PetscSection s;
-  PetscInt    *bigl, k = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalSection(b->dm, &s));
-  PetscCall(PetscMalloc2(b->pEnd - b->pStart, &map->node, b->pEnd - b->pStart, &map->off));
-  PetscCall(PetscMalloc1(3 * nn + 1, &bigl));
-  for (PetscInt i = 0; i < 3 * nn; ++i) bigl[i] = -2;
-  for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
-    PetscInt dof, id, loc, off;
-    if (!b->owned[pt - b->pStart]) continue;
-    PetscCall(PetscSectionGetDof(s, pt, &dof));
-    if (!dof) continue;
-    PetscCall(BodyGetNodeNumber(b, pt, &id));
-    PetscCall(PetscFindInt(id, nn, ids, &loc));
-    if (loc < 0) continue;
-    PetscCall(PetscSectionGetOffset(s, pt, &off));
-    map->node[k] = loc;
-    map->off[k]  = off;
-    for (PetscInt d = 0; d < 3; ++d) bigl[3 * loc + d] = b->l2b[off + d];
-    k++;
-  }
-  map->n = k;
-  PetscCall(MPIU_Allreduce(bigl, joined, 3 * nn, MPIU_INT, MPI_MAX, b->comm));
-  PetscCall(PetscFree(bigl));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyGetFaceNodeDisplacements(Body b, PetscInt nn, const BodyNodeMap *map, PetscReal u[])
-{
-  const PetscScalar *xl;
-  PetscReal         *du;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(3 * nn + 1, &du));
-  PetscCall(VecGetArrayRead(b->Xl, &xl));
-  for (PetscInt k = 0; k < map->n; ++k)
-    for (PetscInt d = 0; d < 3; ++d) du[3 * map->node[k] + d] = PetscRealPart(xl[map->off[k] + d]);
-  PetscCall(VecRestoreArrayRead(b->Xl, &xl));
-  PetscCall(MPIU_Allreduce(du, u, 3 * nn, MPIU_REAL, MPIU_SUM, b->comm));
-  PetscCall(PetscFree(du));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode BodyAddFaceNodeForces(Body b, const BodyNodeMap *map, const PetscReal g[])
-{
-  PetscScalar *gl;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArray(b->Gl, &gl));
-  for (PetscInt k = 0; k < map->n; ++k)
-    for (PetscInt d = 0; d < 3; ++d) gl[map->off[k] + d] += g[3 * map->node[k] + d];
-  PetscCall(VecRestoreArray(b->Gl, &gl));
   PetscFunctionReturn(0);
 }

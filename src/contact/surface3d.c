@@ -1,8 +1,8 @@
 /* A 3D contact surface: a physical surface's faces as the body gives them
    (BodyGetGroupFaces, src/body/faces.c), replicated on every rank, its
    nodes numbered (sorted unique global numbers), and the exchange of its
-   coordinates and gradient with the body (BodyGetFaceNodeDisplacements,
-   BodyAddFaceNodeForces).
+   coordinates and gradient with the body (BodyMapNodes,
+   BodyGetNodeDisplacements, BodyAddNodeForces: three components a node).
 
    Parallel, as in 2D (surface.c): every rank holds the whole surface (its
    nodes, faces, current coordinates gathered at each evaluation, the same
@@ -84,7 +84,7 @@ PetscErrorCode ContactSurface3dSetUp(ContactSurface3d *S, Body b, const char pai
   PetscCall(PetscArraycpy(S->x, S->X, 3 * S->nn));
   PetscCall(PetscArrayzero(S->g, 3 * S->nn));
   PetscCall(PetscArrayzero(S->gsum, 3 * S->nn));
-  PetscCall(BodyMapFaceNodes(b, S->nn, S->nodeId, &S->map, S->big));
+  PetscCall(BodyMapNodes(b, S->nn, S->nodeId, &S->map, S->big));
   PetscCall(PetscInfo(NULL, "contact pair %s, surface '%s' of body %s: %" PetscInt_FMT " %s faces, %" PetscInt_FMT " nodes, %" PetscInt_FMT " faces on this rank\n", pair, S->group, BodyGetName(b), S->nf, S->nb == 6 ? "Tri6" : "Quad9", S->nn, S->nown));
   PetscFunctionReturn(0);
 }
@@ -106,7 +106,7 @@ PetscErrorCode ContactSurface3dUpdateCoordinates(ContactSurface3d *S, Body b, Pe
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(3 * S->nn, &u));
-  PetscCall(BodyGetFaceNodeDisplacements(b, S->nn, &S->map, u));
+  PetscCall(BodyGetNodeDisplacements(b, S->nn, S->X, &S->map, u));
   *changed = PETSC_FALSE;
   for (PetscInt k = 0; k < 3 * S->nn; ++k) {
     const PetscReal x = S->X[k] + u[k];
@@ -121,6 +121,6 @@ PetscErrorCode ContactSurface3dAddGradient(ContactSurface3d *S, Body b)
 {
   PetscFunctionBeginUser;
   PetscCall(MPIU_Allreduce(S->g, S->gsum, 3 * S->nn, MPIU_REAL, MPIU_SUM, BodyGetComm(b)));
-  PetscCall(BodyAddFaceNodeForces(b, &S->map, S->gsum));
+  PetscCall(BodyAddNodeForces(b, S->nn, S->X, &S->map, S->gsum));
   PetscFunctionReturn(0);
 }
