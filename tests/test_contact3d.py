@@ -161,7 +161,8 @@ def refused(args, tmp_path):
 def test_refused(tmp_path):
     """What 3D contact does not do yet, one line each naming the pair: gpts
     (a 2D formulation), friction, a 2D half model's mirror, the 2D Hertz
-    report, and -contact_mortar_slave both."""
+    report, and -contact_mortar_slave both; and a surface its body's mesh
+    has not, one line naming the body and the group."""
     up = UPPERS["hex27-on-hex27"]
     line = refused(patch_args(up, ["-contact_formulation", "gpts"]), tmp_path)
     assert "contact pair p" in line and "gpts" in line and "mortar" in line
@@ -173,6 +174,8 @@ def test_refused(tmp_path):
     assert "hertz" in line and "contact pair p" in line
     line = refused(patch_args(up, ["-contact_mortar_slave", "both"]), tmp_path)
     assert "contact pair p" in line and "both" in line
+    line = refused(patch_args(up, ["-contact_p_surfaces", "upper:bottom,lower:nosuch"]), tmp_path)
+    assert "body lower" in line and "no physical surface 'nosuch'" in line
 
 
 # The Hertz scene: a quarter ball (tests/meshes/contact3d/ball.geo, R = 1,
