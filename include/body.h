@@ -206,20 +206,21 @@ typedef void (*BodyEdgeFn)(void *ctx, PetscInt v, const PetscReal xf[6], PetscBo
 PetscErrorCode  BodyBoundaryEdgesAt(Body, PetscInt tag, PetscInt nn, const PetscInt ids[], const PetscBool end[], BodyEdgeFn fn, void *ctx);
 /* The surface nodes (global numbers ids, nn of them, sorted) among this
    rank's owned points: map->n of them, node (their index among the nn) and
-   off (their offset in the body's local vector); joined[2 nn], on every rank:
-   each node's components' indices in the joined vector (-1: constrained; a
-   rigid body: ContactRigidDof, through its motion). */
+   off (their offset in the body's local vector); joined[dim nn] (dim the
+   body's dimension), on every rank: each node's components' indices in the
+   joined vector (-1: constrained; a rigid body: ContactRigidDof, through its
+   motion). */
 typedef struct {
   PetscInt  n;
   PetscInt *node, *off;
 } BodyNodeMap;
 PetscErrorCode  BodyMapNodes(Body, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[]);
 PetscErrorCode  BodyNodeMapDestroy(BodyNodeMap *);
-/* Collective: the displacement u[2 nn] of the nodes of reference coordinates
-   X[2 nn] (the same to the bit on every rank: each node's from the one rank
-   that owns it). */
+/* Collective: the displacement u[dim nn] of the nodes of reference
+   coordinates X[dim nn] (the same to the bit on every rank: each node's from
+   the one rank that owns it). */
 PetscErrorCode  BodyGetNodeDisplacements(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, PetscReal u[]);
-/* Adds the gradient g[2 nn] (summed over ranks, the same on every rank) at
+/* Adds the gradient g[dim nn] (summed over ranks, the same on every rank) at
    the nodes to the body's: an elastic body's local gradient at its owned
    nodes, a rigid body's force and moment. */
 PetscErrorCode  BodyAddNodeForces(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, const PetscReal g[]);

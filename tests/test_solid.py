@@ -79,13 +79,14 @@ def test_components(tmp_path):
 
 
 def test_contact_refused(tmp_path):
-    """A contact pair with a 3D body: refused in one line (3D contact is the
-    next capability)."""
+    """A contact pair of 3D bodies in gpts, a 2D formulation: refused in one
+    line naming the pair (3D pairs are mortar's: tests/test_contact3d.py)."""
     args = block() + ["-blk_bc", "xmin"]
     args[1] = "blk,top"
-    args += block(name="top")[2:-2] + ["-top_bc", "xmax", "-contact_pairs", "p", "-contact_p_surfaces", "blk:zmax,top:zmin"]
+    args += block(name="top")[2:-2] + ["-top_bc", "xmax", "-contact_pairs", "p", "-contact_p_surfaces", "blk:zmax,top:zmin",
+                                       "-contact_formulation", "gpts"]
     line = refused(args, tmp_path)
-    assert "contact pair p" in line and "3D" in line
+    assert "contact pair p" in line and "3D" in line and "gpts" in line
 
 
 # ---------------------------------------------------------------- solved

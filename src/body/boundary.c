@@ -6,7 +6,7 @@
    the surface nodes among the owned points with their offsets in the local
    vector and indices in the joined one; their displacements gathered from
    the local vector, and the contact's gradient added into the local
-   gradient. The dispatchers of the table (bodyimpl.h) are here too:
+   gradient (dim components a node: a 3D body's surfaces too, faces.c). The dispatchers of the table (bodyimpl.h) are here too:
    rigidsurface.c is the rigid body's side of each. */
 #include "body.h"
 #include "bodyimpl.h"
@@ -138,8 +138,8 @@ PetscErrorCode BodyMapNodes_Elastic(Body b, PetscInt nn, const PetscInt ids[], B
   PetscFunctionBeginUser;
   PetscCall(DMGetLocalSection(b->dm, &s));
   PetscCall(PetscMalloc2(b->pEnd - b->pStart, &map->node, b->pEnd - b->pStart, &map->off));
-  PetscCall(PetscMalloc1(2 * nn, &bigl));
-  for (PetscInt i = 0; i < 2 * nn; ++i) bigl[i] = -2;
+  PetscCall(PetscMalloc1(b->dim * nn + 1, &bigl));
+  for (PetscInt i = 0; i < b->dim * nn; ++i) bigl[i] = -2;
   for (PetscInt pt = b->pStart; pt < b->pEnd; ++pt) {
     PetscInt dof, id, loc, off;
     if (!b->owned[pt - b->pStart]) continue;
@@ -149,14 +149,13 @@ PetscErrorCode BodyMapNodes_Elastic(Body b, PetscInt nn, const PetscInt ids[], B
     PetscCall(PetscFindInt(id, nn, ids, &loc));
     if (loc < 0) continue;
     PetscCall(PetscSectionGetOffset(s, pt, &off));
-    map->node[k]      = loc;
-    map->off[k]       = off;
-    bigl[2 * loc]     = b->l2b[off];
-    bigl[2 * loc + 1] = b->l2b[off + 1];
+    map->node[k] = loc;
+    map->off[k]  = off;
+    for (PetscInt d = 0; d < b->dim; ++d) bigl[b->dim * loc + d] = b->l2b[off + d];
     k++;
   }
   map->n = k;
-  PetscCall(MPIU_Allreduce(bigl, joined, 2 * nn, MPIU_INT, MPI_MAX, b->comm));
+  PetscCall(MPIU_Allreduce(bigl, joined, b->dim * nn, MPIU_INT, MPI_MAX, b->comm));
   PetscCall(PetscFree(bigl));
   PetscFunctionReturn(0);
 }
@@ -168,14 +167,12 @@ PetscErrorCode BodyGetNodeDisplacements_Elastic(Body b, PetscInt nn, const Petsc
 
   PetscFunctionBeginUser;
   (void)X;
-  PetscCall(PetscCalloc1(2 * nn, &du));
+  PetscCall(PetscCalloc1(b->dim * nn + 1, &du));
   PetscCall(VecGetArrayRead(b->Xl, &xl));
-  for (PetscInt k = 0; k < map->n; ++k) {
-    du[2 * map->node[k]]     = PetscRealPart(xl[map->off[k]]);
-    du[2 * map->node[k] + 1] = PetscRealPart(xl[map->off[k] + 1]);
-  }
+  for (PetscInt k = 0; k < map->n; ++k)
+    for (PetscInt d = 0; d < b->dim; ++d) du[b->dim * map->node[k] + d] = PetscRealPart(xl[map->off[k] + d]);
   PetscCall(VecRestoreArrayRead(b->Xl, &xl));
-  PetscCall(MPIU_Allreduce(du, u, 2 * nn, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscCall(MPIU_Allreduce(du, u, b->dim * nn, MPIU_REAL, MPIU_SUM, b->comm));
   PetscCall(PetscFree(du));
   PetscFunctionReturn(0);
 }
@@ -188,10 +185,8 @@ PetscErrorCode BodyAddNodeForces_Elastic(Body b, PetscInt nn, const PetscReal X[
   (void)nn;
   (void)X;
   PetscCall(VecGetArray(b->Gl, &gl));
-  for (PetscInt k = 0; k < map->n; ++k) {
-    gl[map->off[k]] += g[2 * map->node[k]];
-    gl[map->off[k] + 1] += g[2 * map->node[k] + 1];
-  }
+  for (PetscInt k = 0; k < map->n; ++k)
+    for (PetscInt d = 0; d < b->dim; ++d) gl[map->off[k] + d] += g[b->dim * map->node[k] + d];
   PetscCall(VecRestoreArray(b->Gl, &gl));
   PetscFunctionReturn(0);
 }

@@ -2,6 +2,7 @@
    into a ContactPairSpec whatever the formulation, and the registry of
    formulations from which each pair's energy term is created by name. */
 #include "contactpair.h"
+#include "mortar3d.h"
 #include "options.h"
 
 PetscFunctionList ContactFormulationList = NULL;
@@ -18,7 +19,7 @@ PetscErrorCode ContactFormulationRegisterAll(void)
   PetscFunctionBeginUser;
   if (ContactFormulationList) PetscFunctionReturn(0);
   PetscCall(ContactFormulationRegister("gpts", ContactTermCreate_GPTS));
-  PetscCall(ContactFormulationRegister("mortar", ContactTermCreate_Mortar));
+  PetscCall(ContactFormulationRegister("mortar", ContactTermCreate_MortarAnyDim));
   PetscFunctionReturn(0);
 }
 

@@ -114,6 +114,19 @@ static void SubPlaneSetUp(const Face3d *f, const PetscInt v[3], SubPlane *P)
   P->xiArea = ClipSignedArea(3, P->xi);
 }
 
+/* The squared distance from p to the box b (lo[3], hi[3]): 0 inside, and no
+   more than the distance to anything in it. */
+static inline PetscReal BoxDistance2(const PetscReal b[6], const PetscReal p[3])
+{
+  PetscReal d2 = 0.0;
+
+  for (PetscInt d = 0; d < 3; ++d) {
+    const PetscReal o = p[d] < b[d] ? b[d] - p[d] : (p[d] > b[3 + d] ? p[d] - b[3 + d] : 0.0);
+    d2 += o * o;
+  }
+  return d2;
+}
+
 /* The master face that owns the point p: face m0 (from eta) where p's
    closest point lies inside it (inside a concave edge between two faces,
    where a point has a closest point in each, the piece's face is kept, not
@@ -121,8 +134,11 @@ static void SubPlaneSetUp(const Face3d *f, const PetscInt v[3], SubPlane *P)
    (Face3dClosestPointOnFace) is the nearest, if that point is inside it or
    on an edge another face shares (the same point of another face: a fan
    behind a convex edge); -1 where it is on an edge no other face reaches
-   (past the master surface's end). eta is updated. */
-static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], PetscInt m0, const PetscReal p[3], PetscReal eta[2])
+   (past the master surface's end). eta is updated. A face whose box
+   (Face3dBox: it holds the curved face) is no nearer than the best so far
+   is not tried: the same owner as trying every face, at a cost that no
+   longer grows with the faces given where few are near. */
+static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m0, const PetscReal p[3], PetscReal eta[2])
 {
   PetscReal e[2] = {eta[0], eta[1]}, best = PETSC_MAX_REAL, X[3], Xb[3], be[2] = {0, 0}, size;
   PetscBool clamped, bclamped = PETSC_FALSE;
@@ -136,6 +152,7 @@ static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], PetscInt m0, 
   }
   for (PetscInt m = 0; m < nm; ++m) {
     PetscReal d2 = 0.0;
+    if (m != m0 && BoxDistance2(&boxes[6 * m], p) >= best) continue; /* not nearer than the best: its closest point is in its box */
     if (m == m0) {
       e[0] = eta[0];
       e[1] = eta[1];
@@ -161,7 +178,7 @@ static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], PetscInt m0, 
   size = PetscSqrtReal(size);
   for (PetscInt m = 0; m < nm; ++m) {
     PetscReal d2 = 0.0;
-    if (m == owner) continue;
+    if (m == owner || BoxDistance2(&boxes[6 * m], Xb) > PetscSqr(1e-8 * size)) continue;
     e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
     Face3dClosestPointOnFace(master[m].type, master[m].x, Xb, SEGMENT3D_IN_TOL, e, &clamped);
     Face3dEval(master[m].type, master[m].x, e, X, NULL, NULL);
@@ -193,7 +210,7 @@ static PetscErrorCode PointListPush(PointList *L, const Segment3dPoint *q)
 
 /* The points of one clipped triangle piece tri[6] of the slave plane P,
    master sub-triangle mt2d (its vertices' master parameters meta). */
-static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *P, PetscInt nm, const Face3d master[], PetscInt m, const PetscReal tri[6], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PointList *L)
+static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *P, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, const PetscReal tri[6], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PointList *L)
 {
   const PetscReal area = ClipSignedArea(3, tri), scale = P->xiArea / ClipSignedArea(3, P->v2d);
 
@@ -211,7 +228,7 @@ static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *
     }
     pt.w = 2.0 * rule->w[q] * area * scale;
     Face3dEval(slave->type, slave->x, pt.xi, xs, NULL, NULL);
-    pt.m = Segment3dOwner(nm, master, m, xs, pt.eta);
+    pt.m = Segment3dOwner(nm, master, boxes, m, xs, pt.eta);
     if (pt.m >= 0) PetscCall(PointListPush(L, &pt));
   }
   PetscFunctionReturn(0);
@@ -225,8 +242,11 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PointList       L = {0, 0, NULL};
   PetscInt        ns, nsm;
   const PetscInt(*sub)[3], (*msub)[3];
+  PetscReal      *boxes;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(6 * nm + 1, &boxes));
+  for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
   Face3dSubTriangles(slave->type, &ns, &sub);
   for (PetscInt t = 0; t < ns; ++t) {
     SubPlane P;
@@ -262,10 +282,11 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
           PetscCall(PetscArraycpy(meta, te, 6));
         }
         ntri = ClipTriangulate(npoly, poly, 1e-14 * ClipSignedArea(3, P.v2d), tri);
-        for (PetscInt k = 0; k < ntri; ++k) PetscCall(Segment3dPiecePoints(slave, &P, nm, master, m, &tri[6 * k], mt2d, meta, rule, &L));
+        for (PetscInt k = 0; k < ntri; ++k) PetscCall(Segment3dPiecePoints(slave, &P, nm, master, boxes, m, &tri[6 * k], mt2d, meta, rule, &L));
       }
     }
   }
+  PetscCall(PetscFree(boxes));
   *np  = L.n;
   *pts = L.p;
   PetscFunctionReturn(0);

@@ -517,7 +517,7 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
 }
 
 /* A scene's bodies are all 2D (a rigid body's curves included) or all 3D,
-   and its contact pairs 2D. */
+   and a pair of 3D bodies is mortar's (mortar3d.c). */
 static PetscErrorCode ProblemCheckDimensions(Problem p)
 {
   PetscFunctionBeginUser;
@@ -526,8 +526,11 @@ static PetscErrorCode ProblemCheckDimensions(Problem p)
     const PetscInt da = BodyGetDimension(a), db = BodyGetDimension(b);
     PetscCheck(da == db, p->comm, PETSC_ERR_USER_INPUT, "body %s is %" PetscInt_FMT "D (%s) and body %s is %" PetscInt_FMT "D (%s): a scene's bodies are all 2D or all 3D", BodyGetName(a), da, BodyHasCells(a) ? BodyGetMeshFile(a) : "rigid: curves", BodyGetName(b), db, BodyHasCells(b) ? BodyGetMeshFile(b) : "rigid: curves");
   }
-  for (PetscInt t = 0; t < p->nterms; ++t)
-    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || BodyGetDimension(p->bodies[i]) == 2, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and contact is 2D (3D contact comes next)", p->terms[t]->name, BodyGetName(p->bodies[i]));
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscBool mortar;
+    PetscCall(PetscStrcmp(p->terms[t]->type, "mortar", &mortar));
+    for (PetscInt i = 0; i < p->nbodies; ++i) PetscCheck(!p->terms[t]->couples[i] || BodyGetDimension(p->bodies[i]) == 2 || mortar, p->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is 3D, and formulation %s is 2D only (3D pairs use mortar)", p->terms[t]->name, BodyGetName(p->bodies[i]), p->terms[t]->type);
+  }
   PetscFunctionReturn(0);
 }
 

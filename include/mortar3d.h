@@ -1,0 +1,9 @@
+#pragma once
+#include "contactterm.h"
+
+/* Contact formulation "mortar" between 3D bodies (mortar3d.c): the weighted-gap
+   penalty on Tri6 and Quad9 faces, frictionless. */
+PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *, EnergyTerm);
+/* "mortar" as registered: mortar.c's 2D term, which becomes the 3D one at
+   its set-up where the pair's bodies are 3D. */
+PetscErrorCode ContactTermCreate_MortarAnyDim(const ContactPairSpec *, EnergyTerm);

@@ -1,0 +1,867 @@
+/* Contact formulation "mortar" between 3D bodies: the weighted-gap penalty
+   on curved quadratic faces (Tri6, Quad9), integrated segment by segment
+   (face3d.c, clip.c, segment3d.c, bvh.c), one surface as slave.
+
+   With S the slave surface, W_j the dual weights of its faces (face3d.c)
+   and dS its reference measure (the slave's reference configuration: A_j
+   and the weights do not move with u),
+     A_j = int_S W_j dS              (the whole surface's: constant),
+     Q_j = int_S' W_j g dS,  g_j = Q_j / A_j,
+     E   = 1/2 k_p sum_j A_j <-g_j>_+^2,   p_j = k_p <-g_j>_+,
+   g = (x_s - x_m) . n the gap to the closest point of the curved master
+   (n its outward normal, g > 0 apart; behind a convex edge between two
+   master faces the signed distance to the edge's point, segment3d.c), S'
+   the part of S whose closest point lies on the master. A node whose
+   covered part C_j = int_S' W_j dS carries less than half of A_j is left
+   out (its g_j would be a part's, as 2D leaves out the nodes that face the
+   master over less than half: surfaces that end); where S' is all of S,
+   C_j = A_j and a uniform gap gives g_j = g at every node and the
+   consistent nodal forces of a uniform pressure: the contact patch test.
+
+   Gradient: dE = sum_j k_p A_j g_j dg_j over the nodes in contact (g_j < 0)
+   with dg_j = G_j / A_j, G_j = dQ_j (Segment3dEvaluate: the points fixed in
+   the slave's parameters, the motion of the closest point and of n drop
+   out at the closest point), so dE = -sum_j p_j G_j. Hessian:
+     H = k_p sum_{j: g_j < 0} (G_j G_j^T / A_j + g_j d2Q_j),
+   the first part Gauss-Newton's (SPD), the second, with the exact Hessian
+   (-contact_hessian exact, or auto near the solution), a sum over the
+   points of lambda d2g, lambda = k_p sum_j g_j W_j dS (Mortar3dGapHessian:
+   the master normal's turning and the closest point's motion; a point
+   behind a master edge, in the fan, keeps the Gauss-Newton part). The
+   segments are found again at every evaluation (current coordinates);
+   their motion is not differentiated (segment3d.c: no term where the
+   integrand is continuous across the master's face edges), which on
+   curved faces leaves the Gauss rule's motion out: the Hessian's Taylor
+   remainder is second order on the flat patch test and levels at 2.9e-6
+   of |H v| on the curved Hertz cap (tests/test_contact3d.py).
+
+   Slave: -contact_mortar_slave first|second, or auto (the default): the
+   softer body's surface (E/(1 - nu^2)), else the first named (2D's rule
+   that a surface which ends on the other is the slave is not made in 3D
+   yet). The automatic penalty k_p = 1000 E* / h, h the shortest chord
+   between corners of the slave's faces.
+
+   Parallel: every rank holds both surfaces whole (surface3d.c). For the
+   energy and gradient each rank integrates the slave faces it gave (its
+   owned face points), the A_j, C_j, Q_j are summed over ranks, and each
+   rank adds the gradient of its own faces, summed over ranks and added at
+   the owned nodes. The Hessian: every rank integrates every slave face and
+   adds the blocks G_j G_j^T of the nodes j = rank mod size (the simplest
+   correct scheme: each G_j needs all the faces around j).
+
+   Master faces near a slave face: a bounding-volume tree over the master
+   faces' boxes (current coordinates), queried with the slave face's box
+   widened by the face's size (its longest corner chord): a slave point
+   whose gap is less than that finds the face of its closest point, and a
+   point farther from the master is apart (a node's support, of the face's
+   size, is not both in contact and that far but where the surfaces meet
+   at more than 45 degrees). Where a master much finer than the slave gives
+   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
+#include "mortar3d.h"
+#include "bvh.h"
+#include "segment3d.h"
+#include "surface3d.h"
+
+#define MORTAR3D_MAX_MASTER 64 /* master faces near one slave face (Segment3dEvaluate's limit) */
+
+/* One slave face's integrals at the current coordinates: a[j] = C_j's and
+   q[j] = Q_j's parts, the master faces mf[nm] it met, and dQ[j ndof + c]
+   over its dofs (slave nodes, then each master face's nodes, 3 each). */
+typedef struct {
+  PetscInt        nm, ndof, mf[MORTAR3D_MAX_MASTER];
+  PetscReal       a[FACE3D_MAX_NODES], q[FACE3D_MAX_NODES];
+  PetscReal      *dQ;
+  PetscInt        np;  /* its points, kept where keep (the exact Hessian's second-order term) */
+  Segment3dPoint *pts;
+} Mortar3dFace;
+
+typedef struct {
+  ContactPairSpec  spec;
+  ContactSurface3d S[2];
+  Body             body[2];
+  PetscInt         s;            /* the slave surface (0 or 1) */
+  PetscReal        kp;           /* the penalty in use (continuation) */
+  PetscBool        exactHessian; /* asked for: the Hessian stays Gauss-Newton (above) */
+  Face3dRule       rule, frule;  /* the clipped pieces' rule; the slave faces' own (dual coefficients, A_j) */
+  PetscReal       *Adual;        /* [slave nf][81] the dual weights' coefficients */
+  PetscReal       *A, *C, *Q, *gj; /* [slave nn] */
+  PetscBool       *active;       /* [slave nn] C_j >= A_j / 2 */
+  PetscBool       *nearNode, *integrate; /* [slave nn], [slave nf]: Mortar3dUpdate */
+  PetscInt        *nodeFaceStart, *nodeFace; /* the slave faces at each slave node */
+  Bvh              tree;
+  PetscReal       *boxes;        /* [master nf][6] */
+  PetscReal       *xm;           /* [MORTAR3D_MAX_MASTER][27] work */
+  Mortar3dFace    *own;          /* [slave nown] the last evaluation of this rank's faces */
+  /* the results (post-processing) */
+  PetscBool done;
+  PetscReal force[2][3], pmax, pmin, maxPen, area;
+  PetscInt  ncontact, nactive;
+} Mortar3d;
+
+static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
+
+/* A face's size: its longest chord between corners. */
+static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
+{
+  const PetscInt nc = t == FACE3D_TRI6 ? 3 : 4;
+  PetscReal      h  = 0.0;
+
+  for (PetscInt j = 0; j < nc; ++j) {
+    PetscReal l = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) l += PetscSqr(x[3 * j + d] - x[3 * ((j + 1) % nc) + d]);
+    h = PetscMax(h, l);
+  }
+  return PetscSqrtReal(h);
+}
+
+/* The boxes of the master faces and their tree at the current coordinates. */
+static PetscErrorCode Mortar3dBuildTree(Mortar3d *m)
+{
+  const ContactSurface3d *M = &m->S[1 - m->s];
+
+  PetscFunctionBeginUser;
+  PetscCall(BvhDestroy(&m->tree));
+  for (PetscInt f = 0; f < M->nf; ++f) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(M, f, M->x, xf);
+    Face3dBox(M->type, xf, &m->boxes[6 * f]);
+  }
+  PetscCall(BvhCreate(M->nf, m->boxes, &m->tree));
+  PetscFunctionReturn(0);
+}
+
+/* Of the n master faces found (more than MORTAR3D_MAX_MASTER, where the
+   master is much finer than the slave), the MORTAR3D_MAX_MASTER whose boxes'
+   centres are nearest the slave face's corners' centroid, in keep:
+   the faraway ones hold no closest point of the slave face's points. */
+static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], PetscInt n, const PetscInt found[], PetscInt keep[])
+{
+  PetscReal *d2, c[3];
+  PetscInt  *perm;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(n, &d2, n, &perm));
+  for (PetscInt d = 0; d < 3; ++d) {
+    const PetscInt nc = m->S[m->s].type == FACE3D_TRI6 ? 3 : 4;
+    c[d]              = 0.0;
+    for (PetscInt j = 0; j < nc; ++j) c[d] += xs[3 * j + d] / nc;
+  }
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal *b = &m->boxes[6 * found[k]];
+    d2[k]              = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) d2[k] += PetscSqr(0.5 * (b[d] + b[3 + d]) - c[d]);
+    perm[k] = k;
+  }
+  PetscCall(PetscSortRealWithPermutation(n, d2, perm));
+  for (PetscInt k = 0; k < MORTAR3D_MAX_MASTER; ++k) keep[k] = found[perm[k]];
+  PetscCall(PetscSortInt(MORTAR3D_MAX_MASTER, keep)); /* the faces' order as the tree gives it, whatever the distances' ties */
+  PetscCall(PetscInfo(NULL, "pair %s: a slave face meets %" PetscInt_FMT " master faces; the %d nearest kept\n", m->spec.name, n, MORTAR3D_MAX_MASTER));
+  PetscCall(PetscFree2(d2, perm));
+  PetscFunctionReturn(0);
+}
+
+/* Slave face f against the master faces near it (deriv: with dQ; keep:
+   its points kept in E, PetscFree(E->pts)). */
+static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, PetscBool keep, Mortar3dFace *E)
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  PetscReal               xs[27], Xs[27], box[6], margin;
+  Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
+  const PetscInt         *found;
+  PetscInt                nfound, np;
+  Segment3dPoint         *pts;
+
+  PetscFunctionBeginUser;
+  E->np  = 0;
+  E->pts = NULL;
+  if (!m->integrate[f]) { /* far from the master */
+    E->nm   = 0;
+    E->ndof = 3 * S->nb;
+    PetscCall(PetscArrayzero(E->a, FACE3D_MAX_NODES));
+    PetscCall(PetscArrayzero(E->q, FACE3D_MAX_NODES));
+    PetscCall(PetscFree(E->dQ));
+    if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof, &E->dQ));
+    PetscFunctionReturn(0);
+  }
+  ContactSurface3dFaceCoords(S, f, S->x, xs);
+  ContactSurface3dFaceCoords(S, f, S->X, Xs);
+  Face3dBox(S->type, xs, box);
+  margin = Mortar3dFaceSize(S->type, xs);
+  for (PetscInt d = 0; d < 3; ++d) {
+    box[d] -= margin;
+    box[3 + d] += margin;
+  }
+  PetscCall(BvhQuery(m->tree, box, &nfound, &found));
+  if (nfound > MORTAR3D_MAX_MASTER) PetscCall(Mortar3dKeepNearest(m, xs, nfound, found, E->mf));
+  else PetscCall(PetscArraycpy(E->mf, found, nfound));
+  nfound  = PetscMin(nfound, MORTAR3D_MAX_MASTER);
+  E->nm   = nfound;
+  E->ndof = 3 * (S->nb + nfound * M->nb);
+  for (PetscInt k = 0; k < nfound; ++k) {
+    ContactSurface3dFaceCoords(M, E->mf[k], M->x, &m->xm[27 * k]);
+    mf[k].type = M->type;
+    mf[k].x    = &m->xm[27 * k];
+  }
+  sf.type  = S->type;
+  sf.x     = xs;
+  ref.type = S->type;
+  ref.x    = Xs;
+  PetscCall(PetscArrayzero(E->a, FACE3D_MAX_NODES));
+  PetscCall(PetscArrayzero(E->q, FACE3D_MAX_NODES));
+  PetscCall(PetscFree(E->dQ));
+  if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
+  if (!nfound) PetscFunctionReturn(0);
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts));
+  PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
+  if (keep) {
+    E->np  = np;
+    E->pts = pts;
+  } else PetscCall(PetscFree(pts));
+  PetscFunctionReturn(0);
+}
+
+/* Column c of face f's dQ: the surface (0 slave, 1 master) and the index of
+   the node's component in its arrays (3 node + d). */
+static inline void Mortar3dColumn(const Mortar3d *m, PetscInt f, const Mortar3dFace *E, PetscInt c, PetscInt *side, PetscInt *k)
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+
+  if (c < 3 * S->nb) {
+    *side = 0;
+    *k    = 3 * S->fnodes[S->nb * f + c / 3] + c % 3;
+  } else {
+    const PetscInt r = c - 3 * S->nb, face = E->mf[r / (3 * M->nb)], i = (r % (3 * M->nb)) / 3;
+    *side = 1;
+    *k    = 3 * M->fnodes[M->nb * face + i] + r % 3;
+  }
+}
+
+/* Both surfaces' current coordinates, the master's tree, and the slave
+   faces to integrate: those with a node near the master (on a face whose
+   box, widened by MORTAR3D_NEAR of its size, meets a master face's box),
+   so that a node near the master has every face around it integrated
+   (its C_j and Q_j whole) and a node far from it none (C_j = 0: not
+   counted, as its gap is positive wherever its faces are). */
+#define MORTAR3D_NEAR 0.25
+static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 2; ++k) {
+    PetscBool changed;
+    PetscCall(ContactSurface3dUpdateCoordinates(&m->S[k], m->body[k], &changed));
+  }
+  PetscCall(Mortar3dBuildTree(m));
+  PetscCall(PetscArrayzero(m->nearNode, S->nn));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscReal       xs[27], box[6], margin;
+    const PetscInt *found;
+    PetscInt        nfound;
+    ContactSurface3dFaceCoords(S, f, S->x, xs);
+    Face3dBox(S->type, xs, box);
+    margin = MORTAR3D_NEAR * Mortar3dFaceSize(S->type, xs);
+    for (PetscInt d = 0; d < 3; ++d) {
+      box[d] -= margin;
+      box[3 + d] += margin;
+    }
+    PetscCall(BvhQuery(m->tree, box, &nfound, &found));
+    if (nfound)
+      for (PetscInt i = 0; i < S->nb; ++i) m->nearNode[S->fnodes[S->nb * f + i]] = PETSC_TRUE;
+  }
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    m->integrate[f] = PETSC_FALSE;
+    for (PetscInt i = 0; i < S->nb; ++i)
+      if (m->nearNode[S->fnodes[S->nb * f + i]]) m->integrate[f] = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* g_j and the nodes counted from C_j and Q_j (summed over the faces). */
+static void Mortar3dNodalGaps(Mortar3d *m)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    m->active[j] = (PetscBool)(m->A[j] > 0 && m->C[j] >= 0.5 * m->A[j]);
+    m->gj[j]     = m->active[j] ? m->Q[j] / m->A[j] : PETSC_INFINITY;
+  }
+}
+
+/* The energy (rank 0's: the whole), and with gradient the gradient on both
+   surfaces summed over ranks (S->gsum), added to the bodies' local
+   gradients where add. */
+static PetscErrorCode Mortar3dEvaluate(Mortar3d *m, PetscBool gradient, PetscBool add, PetscReal *energy)
+{
+  ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  PetscMPIInt       rank;
+  PetscReal        *buf;
+
+  PetscFunctionBeginUser;
+  PetscCall(Mortar3dUpdate(m));
+  PetscCall(PetscCalloc1(2 * S->nn, &buf));
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt f  = S->ownFaces[k];
+    Mortar3dFace  *E  = &m->own[k];
+    PetscCall(Mortar3dFaceEvaluate(m, f, gradient, PETSC_FALSE, E));
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      buf[S->fnodes[S->nb * f + i]] += E->a[i];
+      buf[S->nn + S->fnodes[S->nb * f + i]] += E->q[i];
+    }
+  }
+  PetscCall(MPIU_Allreduce(buf, m->C, S->nn, MPIU_REAL, MPIU_SUM, BodyGetComm(m->body[0])));
+  PetscCall(MPIU_Allreduce(buf + S->nn, m->Q, S->nn, MPIU_REAL, MPIU_SUM, BodyGetComm(m->body[0])));
+  PetscCall(PetscFree(buf));
+  Mortar3dNodalGaps(m);
+  PetscCallMPI(MPI_Comm_rank(BodyGetComm(m->body[0]), &rank));
+  *energy = 0.0;
+  if (!rank)
+    for (PetscInt j = 0; j < S->nn; ++j)
+      if (m->active[j] && m->gj[j] < 0) *energy += 0.5 * m->kp * m->A[j] * m->gj[j] * m->gj[j];
+  if (!gradient) PetscFunctionReturn(0);
+  PetscCall(PetscArrayzero(S->g, 3 * S->nn));
+  PetscCall(PetscArrayzero(M->g, 3 * M->nn));
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt      f = S->ownFaces[k];
+    const Mortar3dFace *E = &m->own[k];
+    if (!E->nm) continue;
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt  j = S->fnodes[S->nb * f + i];
+      const PetscReal lam = m->kp * m->gj[j]; /* -p_j */
+      if (!m->active[j] || !(m->gj[j] < 0)) continue;
+      for (PetscInt c = 0; c < E->ndof; ++c) {
+        PetscInt side, idx;
+        Mortar3dColumn(m, f, E, c, &side, &idx);
+        (side ? M : S)->g[idx] += lam * E->dQ[i * E->ndof + c];
+      }
+    }
+  }
+  for (PetscInt k = 0; k < 2; ++k) {
+    ContactSurface3d *T = k ? M : S;
+    if (add) PetscCall(ContactSurface3dAddGradient(T, m->body[k ? 1 - m->s : m->s]));
+    else PetscCall(MPIU_Allreduce(T->g, T->gsum, 3 * T->nn, MPIU_REAL, MPIU_SUM, BodyGetComm(m->body[0])));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(PetscLogEventBegin(MORTAR3D_EnergyGrad, 0, 0, 0, 0));
+  PetscCall(Mortar3dEvaluate(m, PETSC_TRUE, PETSC_TRUE, energy));
+  PetscCall(PetscLogEventEnd(MORTAR3D_EnergyGrad, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The second derivative of the gap g at one point (slave face xs at xi,
+   master face xm at its closest point eta, inside the face) over the two
+   faces' dofs (slave first, n = 3 (ns + nm)), K[n][n]. With D = x_s - x_m =
+   g n at the closest point, dg = n . (sum N_i dx_i - sum M_k dx_k) (the
+   motions of eta and n drop out), so
+     d2g(u, v) = dn(v) . (D_u) - sum_k (M_k,a deta_a(v)) n . u_k,
+   D_u = sum N_i u_i - sum M_k u_k, deta from the closest point's
+   conditions (Segment3dProjectionDerivative), and the unit normal's
+   derivative dn = (I - n n^T) dc / |c|, c = t_1 x t_2,
+   dt_a = sum M_k,a dx_k + x_,ab deta_b. Symmetrised (it is symmetric where
+   eta is the closest point). PETSC_FALSE (K untouched) where the closest
+   point's Hessian is not positive definite (a point deeper than the
+   master's radius of curvature): the Gauss-Newton part alone there. */
+static PetscErrorCode Mortar3dGapHessian(const Face3d *sf, const PetscReal xi[2], const Face3d *mf, const PetscReal eta[2], PetscReal K[], PetscBool *ok)
+{
+  const PetscInt ns = Face3dNodes(sf->type), nm = Face3dNodes(mf->type), n = 3 * (ns + nm);
+  PetscReal      N[FACE3D_MAX_NODES], M[FACE3D_MAX_NODES], dM[2 * FACE3D_MAX_NODES], xs[3], xm[3], T[6], H[9], c[3], nrm[3], len, d[3], Kc[3];
+  PetscReal      deta[2 * 3 * 2 * FACE3D_MAX_NODES], dn[3 * 3 * 2 * FACE3D_MAX_NODES];
+
+  PetscFunctionBeginUser;
+  *ok = PETSC_FALSE;
+  Face3dShape(sf->type, xi, N, NULL, NULL);
+  Face3dShape(mf->type, eta, M, dM, NULL);
+  Face3dEval(sf->type, sf->x, xi, xs, NULL, NULL);
+  Face3dEval(mf->type, mf->x, eta, xm, T, H);
+  for (PetscInt k = 0; k < 3; ++k) d[k] = xm[k] - xs[k];
+  Kc[0] = T[0] * T[0] + T[1] * T[1] + T[2] * T[2] + d[0] * H[0] + d[1] * H[1] + d[2] * H[2];
+  Kc[1] = T[0] * T[3] + T[1] * T[4] + T[2] * T[5] + d[0] * H[3] + d[1] * H[4] + d[2] * H[5];
+  Kc[2] = T[3] * T[3] + T[4] * T[4] + T[5] * T[5] + d[0] * H[6] + d[1] * H[7] + d[2] * H[8];
+  if (!(Kc[0] * Kc[2] - Kc[1] * Kc[1] > 0)) PetscFunctionReturn(0);
+  PetscCall(Segment3dProjectionDerivative(sf, xi, mf, eta, deta));
+  c[0] = T[1] * T[5] - T[2] * T[4];
+  c[1] = T[2] * T[3] - T[0] * T[5];
+  c[2] = T[0] * T[4] - T[1] * T[3];
+  len  = PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  for (PetscInt k = 0; k < 3; ++k) nrm[k] = c[k] / len;
+  for (PetscInt col = 0; col < n; ++col) { /* dn along dof col */
+    PetscReal dt[6], dc[3], nd;
+    const PetscInt node = col / 3, dd = col % 3;
+    for (PetscInt a = 0; a < 2; ++a)
+      for (PetscInt k = 0; k < 3; ++k) dt[3 * a + k] = H[3 * a + k] * deta[col] + H[3 * (a + 1) + k] * deta[n + col];
+    if (node >= ns)
+      for (PetscInt a = 0; a < 2; ++a) dt[3 * a + dd] += dM[2 * (node - ns) + a];
+    dc[0] = dt[1] * T[5] - dt[2] * T[4] + T[1] * dt[5] - T[2] * dt[4];
+    dc[1] = dt[2] * T[3] - dt[0] * T[5] + T[2] * dt[3] - T[0] * dt[5];
+    dc[2] = dt[0] * T[4] - dt[1] * T[3] + T[0] * dt[4] - T[1] * dt[3];
+    nd    = nrm[0] * dc[0] + nrm[1] * dc[1] + nrm[2] * dc[2];
+    for (PetscInt k = 0; k < 3; ++k) dn[3 * col + k] = (dc[k] - nd * nrm[k]) / len;
+  }
+  for (PetscInt r = 0; r < n; ++r)
+    for (PetscInt col = 0; col < n; ++col) {
+      const PetscInt node = col / 3, dd = col % 3;
+      PetscReal      v;
+      if (node < ns) v = dn[3 * r + dd] * N[node];
+      else {
+        const PetscInt k = node - ns;
+        v = -dn[3 * r + dd] * M[k] - (dM[2 * k] * deta[r] + dM[2 * k + 1] * deta[n + r]) * nrm[dd];
+      }
+      K[r * n + col] = v;
+    }
+  for (PetscInt r = 0; r < n; ++r)
+    for (PetscInt col = 0; col < r; ++col) K[r * n + col] = K[col * n + r] = 0.5 * (K[r * n + col] + K[col * n + r]);
+  *ok = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+/* The exact Hessian's second-order part, k_p sum_j g_j d2Q_j = sum over the
+   points of this rank's slave faces of lambda d2g, lambda = k_p sum_j g_j
+   W_j dS over the face's nodes in contact (Mortar3dGapHessian; a point
+   behind a master edge, in the fan, keeps the Gauss-Newton part alone). */
+static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace all[], Mat H)
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  const PetscInt          n = 3 * (S->nb + M->nb);
+  PetscReal               xs[27], Xs[27], xm[27], K[54 * 54], W[FACE3D_MAX_NODES];
+  PetscInt                idx[54];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt      f = S->ownFaces[k];
+    const Mortar3dFace *E = &all[f];
+    Face3d              sf;
+    sf.type = S->type;
+    sf.x    = xs;
+    ContactSurface3dFaceCoords(S, f, S->x, xs);
+    ContactSurface3dFaceCoords(S, f, S->X, Xs);
+    for (PetscInt q = 0; q < E->np; ++q) {
+      const Segment3dPoint *pt = &E->pts[q];
+      const PetscInt        face = E->mf[pt->m];
+      PetscReal             X[3], T[6], nrm[3], x[3], e2[2] = {pt->eta[0], pt->eta[1]}, dS, lam = 0.0;
+      PetscBool             clamped, ok;
+      Face3d                mf;
+      Face3dEval(S->type, Xs, pt->xi, X, T, NULL);
+      dS = Face3dNormal(T, nrm) * pt->w;
+      Face3dWeights(S->type, &m->Adual[81 * f], pt->xi, W);
+      for (PetscInt i = 0; i < S->nb; ++i) {
+        const PetscInt j = S->fnodes[S->nb * f + i];
+        if (m->active[j] && m->gj[j] < 0) lam += m->kp * m->gj[j] * W[i] * dS;
+      }
+      if (lam == 0.0) continue;
+      ContactSurface3dFaceCoords(M, face, M->x, xm);
+      mf.type = M->type;
+      mf.x    = xm;
+      Face3dEval(S->type, xs, pt->xi, x, NULL, NULL);
+      Face3dClosestPointOnFace(M->type, xm, x, SEGMENT3D_IN_TOL, e2, &clamped);
+      if (clamped) continue;
+      PetscCall(Mortar3dGapHessian(&sf, pt->xi, &mf, e2, K, &ok));
+      if (!ok) continue;
+      for (PetscInt i = 0; i < S->nb; ++i)
+        for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
+      for (PetscInt i = 0; i < M->nb; ++i)
+        for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
+      for (PetscInt r = 0; r < n * n; ++r) K[r] *= lam;
+      PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The Hessian: the Gauss-Newton part k_p G_j G_j^T / A_j of the nodes j in
+   contact that are this rank's (j mod size), every slave face integrated on
+   every rank (G_j sums the faces around j), and with the exact Hessian the
+   second-order part of this rank's faces (Mortar3dHessianSecondOrder). */
+static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
+{
+  Mortar3d         *m = (Mortar3d *)t->data;
+  ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  Mortar3dFace     *all;
+  PetscMPIInt       size, rank;
+  PetscInt          cap = 0, *idx = NULL;
+  PetscReal        *val = NULL, *K = NULL;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(PetscLogEventBegin(MORTAR3D_Hessian, 0, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_size(t->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(t->comm, &rank));
+  PetscCall(Mortar3dUpdate(m));
+  PetscCall(PetscCalloc1(S->nf, &all));
+  PetscCall(PetscArrayzero(m->C, S->nn));
+  PetscCall(PetscArrayzero(m->Q, S->nn));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_TRUE, m->exactHessian, &all[f]));
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      m->C[S->fnodes[S->nb * f + i]] += all[f].a[i];
+      m->Q[S->fnodes[S->nb * f + i]] += all[f].q[i];
+    }
+  }
+  Mortar3dNodalGaps(m);
+  for (PetscInt j = rank; j < S->nn; j += size) {
+    PetscInt n = 0;
+    if (!m->active[j] || !(m->gj[j] < 0)) continue;
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) n += all[m->nodeFace[r]].ndof;
+    if (n > cap) {
+      PetscCall(PetscFree3(idx, val, K));
+      cap = n;
+      PetscCall(PetscMalloc3(cap, &idx, cap, &val, cap * cap, &K));
+    }
+    n = 0;
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) { /* G_j's entries by joined index, summed over the faces */
+      const PetscInt      f = m->nodeFace[r];
+      const Mortar3dFace *E = &all[f];
+      PetscInt            i;
+      for (i = 0; i < S->nb && S->fnodes[S->nb * f + i] != j; ++i) {}
+      for (PetscInt c = 0; c < E->ndof; ++c) {
+        PetscInt side, k, big, at = -1;
+        Mortar3dColumn(m, f, E, c, &side, &k);
+        big = (side ? M : S)->big[k];
+        if (big < 0) continue;
+        for (PetscInt l = 0; l < n && at < 0; ++l)
+          if (idx[l] == big) at = l;
+        if (at < 0) {
+          at      = n++;
+          idx[at] = big;
+          val[at] = 0.0;
+        }
+        val[at] += E->dQ[i * E->ndof + c];
+      }
+    }
+    for (PetscInt a = 0; a < n; ++a)
+      for (PetscInt b = 0; b < n; ++b) K[a * n + b] = m->kp * val[a] * val[b] / m->A[j];
+    PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  }
+  if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscCall(PetscFree(all[f].dQ));
+    PetscCall(PetscFree(all[f].pts));
+  }
+  PetscCall(PetscFree(all));
+  PetscCall(PetscFree3(idx, val, K));
+  PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The slave's constants: the dual coefficients of each face and A_j =
+   int W_j dS over the whole surface (reference), the slave faces at each
+   node, the penalty. */
+static PetscErrorCode Mortar3dSetUpSlave(Mortar3d *m)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscInt               *cnt;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(81 * S->nf, &m->Adual));
+  PetscCall(PetscCalloc5(S->nn, &m->A, S->nn, &m->C, S->nn, &m->Q, S->nn, &m->gj, S->nn, &m->active));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscReal X[27], W[FACE3D_MAX_NODES];
+    ContactSurface3dFaceCoords(S, f, S->X, X);
+    PetscCall(Face3dDualCoefficients(S->type, X, &m->frule, &m->Adual[81 * f]));
+    for (PetscInt q = 0; q < m->frule.nq; ++q) {
+      PetscReal x[3], T[6], nrm[3], dS;
+      Face3dEval(S->type, X, &m->frule.xi[2 * q], x, T, NULL);
+      dS = Face3dNormal(T, nrm) * m->frule.w[q];
+      Face3dWeights(S->type, &m->Adual[81 * f], &m->frule.xi[2 * q], W);
+      for (PetscInt i = 0; i < S->nb; ++i) m->A[S->fnodes[S->nb * f + i]] += W[i] * dS;
+    }
+  }
+  PetscCall(PetscCalloc2(S->nn + 1, &m->nodeFaceStart, S->nb * S->nf, &m->nodeFace));
+  PetscCall(PetscCalloc1(S->nn, &cnt));
+  for (PetscInt k = 0; k < S->nb * S->nf; ++k) m->nodeFaceStart[S->fnodes[k] + 1]++;
+  for (PetscInt j = 0; j < S->nn; ++j) m->nodeFaceStart[j + 1] += m->nodeFaceStart[j];
+  for (PetscInt f = 0; f < S->nf; ++f)
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt j = S->fnodes[S->nb * f + i];
+      m->nodeFace[m->nodeFaceStart[j] + cnt[j]++] = f;
+    }
+  PetscCall(PetscFree(cnt));
+  PetscCall(PetscCalloc1(S->nown + 1, &m->own));
+  PetscCall(PetscCalloc2(S->nn, &m->nearNode, S->nf, &m->integrate));
+  m->spec.kpH = S->hmin;
+  if (m->spec.kpAuto) m->spec.kp = CONTACT_PENALTY_AUTO * m->spec.Estar / S->hmin;
+  m->kp = m->spec.kp;
+  PetscCall(PetscInfo(NULL, "pair %s (3D): slave surface '%s', k_p = %g (h = %g, E* = %g)\n", m->spec.name, S->group, (double)m->kp, (double)S->hmin, (double)m->spec.Estar));
+  PetscFunctionReturn(0);
+}
+
+/* -contact_mortar_slave: first, second or auto (both is 2D's alone). */
+static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
+{
+  char      value[64] = "auto";
+  PetscBool set, first, second, autoc;
+  PetscReal E[2], nu[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-contact_mortar_slave", value, sizeof(value), &set));
+  PetscCall(PetscStrcmp(value, "first", &first));
+  PetscCall(PetscStrcmp(value, "second", &second));
+  PetscCall(PetscStrcmp(value, "auto", &autoc));
+  PetscCheck(first || second || autoc, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "option -contact_mortar_slave %s: contact pair %s is 3D, where the slave is first, second or auto", value, m->spec.name);
+  for (PetscInt k = 0; k < 2; ++k) BodyGetElasticConstants(m->body[k], &E[k], &nu[k]);
+  if (first) m->s = 0;
+  else if (second) m->s = 1;
+  else m->s = E[1] / (1 - nu[1] * nu[1]) < E[0] / (1 - nu[0] * nu[0]) ? 1 : 0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 2; ++k) {
+    m->body[k]    = bodies[m->spec.body[k]];
+    m->S[k].body  = m->spec.body[k];
+    PetscCall(PetscStrncpy(m->S[k].group, m->spec.group[k], sizeof(m->S[k].group)));
+    PetscCheck(BodyHasCells(m->body[k]) && BodyGetDimension(m->body[k]) == 3, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is not a 3D elastic body (a 3D pair joins two)", m->spec.name, BodyGetName(m->body[k]));
+  }
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dSetUp(&m->S[k], m->body[k], m->spec.name));
+  PetscCall(Mortar3dChooseSlave(m));
+  PetscCall(Face3dRuleCreate(FACE3D_TRI6, 2 * m->spec.nqp - 1 > 6 ? 2 * m->spec.nqp - 1 : 6, &m->rule)); /* the pieces': degree 7 at the default 4 points */
+  PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
+  PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
+  PetscCall(Mortar3dSetUpSlave(m));
+  PetscFunctionReturn(0);
+}
+
+/* The results at the state in the bodies' local vectors: the pair's force
+   on each surface's body (minus the gradient on its nodes), the nodal
+   pressures p_j = k_p <-g_j>_+ of the nodes counted, the deepest weighted
+   penetration, and the contact area sum A_j over the nodes in contact. */
+static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
+{
+  Mortar3d               *m = (Mortar3d *)t->data;
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscReal               e;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(Mortar3dEvaluate(m, PETSC_TRUE, PETSC_FALSE, &e));
+  for (PetscInt k = 0; k < 2; ++k) {
+    const ContactSurface3d *T = &m->S[k];
+    for (PetscInt d = 0; d < 3; ++d) m->force[k][d] = 0.0;
+    for (PetscInt v = 0; v < T->nn; ++v)
+      for (PetscInt d = 0; d < 3; ++d) m->force[k][d] -= T->gsum[3 * v + d];
+  }
+  m->pmax = m->maxPen = m->area = 0.0;
+  m->pmin = PETSC_MAX_REAL;
+  m->ncontact = m->nactive = 0;
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    if (!m->active[j]) continue;
+    m->nactive++;
+    if (!(m->gj[j] < 0)) continue;
+    m->ncontact++;
+    m->pmax   = PetscMax(m->pmax, -m->kp * m->gj[j]);
+    m->pmin   = PetscMin(m->pmin, -m->kp * m->gj[j]);
+    m->maxPen = PetscMax(m->maxPen, -m->gj[j]);
+    m->area += m->A[j];
+  }
+  if (!m->ncontact) m->pmin = 0.0;
+  m->done = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dView(EnergyTerm t, Body bodies[])
+{
+  const Mortar3d *m = (const Mortar3d *)t->data;
+  const PetscReal *F = m->force[0];
+
+  PetscFunctionBeginUser;
+  if (!m->done) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(t->comm, "Contact pair %s (mortar, 3D; slave %s:%s, %" PetscInt_FMT " %s faces; master %s:%s, %" PetscInt_FMT " faces), k_p %.6g:\n", m->spec.name, BodyGetName(bodies[m->spec.body[m->s]]), m->spec.group[m->s], m->S[m->s].nf, m->S[m->s].nb == 6 ? "Tri6" : "Quad9",
+                        BodyGetName(bodies[m->spec.body[1 - m->s]]), m->spec.group[1 - m->s], m->S[1 - m->s].nf, (double)m->kp));
+  PetscCall(PetscPrintf(t->comm, "  force on %s: (%.6g, %.6g, %.6g), |F| %.6g; nodal pressure %.6g to %.6g at %" PetscInt_FMT " of %" PetscInt_FMT " slave nodes, contact area %.6g, deepest weighted penetration %.3g\n", BodyGetName(bodies[m->spec.body[0]]), (double)F[0], (double)F[1], (double)F[2],
+                        (double)PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]), (double)m->pmin, (double)m->pmax, m->ncontact, m->S[m->s].nn, (double)m->area, (double)m->maxPen));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0. summary: the top-level figures; else the pair's object. */
+static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, PetscBool summary)
+{
+  const Mortar3d  *m = (const Mortar3d *)t->data;
+  const PetscReal *F = m->force[0];
+  const PetscReal  P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+
+  PetscFunctionBeginUser;
+  if (summary) {
+    ContactJSONKeyReal(fp, ",\n  ", "contact_force", P);
+    ContactJSONKeyReal(fp, ",\n  ", "max_penetration", m->maxPen);
+    ContactJSONKeyReal(fp, ",\n  ", "fem_pmax", m->pmax);
+    PetscFunctionReturn(0);
+  }
+  fprintf(fp, "{\"formulation\": \"%s\", \"dimension\": 3", m->spec.formulation);
+  ContactJSONKeyReal(fp, ", ", "penalty", m->kp);
+  fprintf(fp, ", \"penalty_auto\": %s", m->spec.kpAuto ? "true" : "false");
+  ContactJSONKeyReal(fp, ", ", "penalty_h", m->spec.kpH);
+  ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(&m->spec));
+  ContactJSONKeyVector(fp, ", ", "force", 3, F);
+  ContactJSONKeyReal(fp, ", ", "P", P);
+  ContactJSONKeyReal(fp, ", ", "pmax", m->pmax);
+  ContactJSONKeyReal(fp, ", ", "pmin", m->pmin);
+  fprintf(fp, ", \"nodes_in_contact\": %d, \"nodes_counted\": %d", (int)m->ncontact, (int)m->nactive);
+  ContactJSONKeyReal(fp, ", ", "contact_area", m->area);
+  ContactJSONKeyReal(fp, ", ", "max_penetration", m->maxPen);
+  fprintf(fp, ", \"hessian\": \"%s\"", m->exactHessian ? "exact" : "gauss-newton"); /* at the solve's end */
+  { /* the slave nodes in contact: reference position, pressure, weight A_j */
+    const ContactSurface3d *S = &m->S[m->s];
+    PetscInt                n = 0;
+    fprintf(fp, ", \"contact_nodes\": {\"columns\": [\"X\", \"Y\", \"Z\", \"p\", \"A\"], \"rows\": [");
+    for (PetscInt j = 0; j < S->nn; ++j) {
+      const PetscReal row[5] = {S->X[3 * j], S->X[3 * j + 1], S->X[3 * j + 2], -m->kp * m->gj[j], m->A[j]};
+      if (!m->active[j] || !(m->gj[j] < 0)) continue;
+      fprintf(fp, "%s[", n++ ? ", " : "");
+      for (PetscInt k = 0; k < 5; ++k) {
+        if (k) fprintf(fp, ", ");
+        ContactJSONReal(fp, row[k]);
+      }
+      fprintf(fp, "]");
+    }
+    fprintf(fp, "]}");
+  }
+  fprintf(fp, ", \"surfaces\": [");
+  for (PetscInt k = 0; k < 2; ++k) {
+    const ContactSurface3d *T = &m->S[k];
+    fprintf(fp, "%s{\"body\": \"%s\", \"group\": \"%s\", \"faces\": %d, \"face_type\": \"%s\", \"nodes\": %d, \"slave\": %s", k ? ", " : "", BodyGetName(bodies[m->spec.body[k]]), m->spec.group[k], (int)T->nf, T->nb == 6 ? "Tri6" : "Quad9", (int)T->nn, k == m->s ? "true" : "false");
+    ContactJSONKeyVector(fp, ", ", "force", 3, m->force[k]);
+    fprintf(fp, "}");
+  }
+  fprintf(fp, "]}");
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
+{
+  const Mortar3d *m = (const Mortar3d *)t->data;
+  PetscInt        c = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(3 * (m->S[0].nn + m->S[1].nn) + 1, idx));
+  for (PetscInt k = 0; k < 2; ++k)
+    for (PetscInt v = 0; v < 3 * m->S[k].nn; ++v)
+      if (m->S[k].big[v] >= 0) (*idx)[c++] = m->S[k].big[v];
+  PetscCall(PetscSortRemoveDupsInt(&c, *idx));
+  *n = c;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dSetPenaltyFactor(EnergyTerm t, PetscReal f)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  m->kp = f * m->spec.kp;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dGetPenaltyStiffness(EnergyTerm t, PetscReal *stiffness)
+{
+  const Mortar3d *m = (const Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  *stiffness = ContactPairPenaltyStiffness(&m->spec);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dSetHessianExact(EnergyTerm t, PetscBool exact)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  m->exactHessian = exact;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 2; ++k)
+    if (m->S[k].nodeId) PetscCall(ContactSurface3dDestroy(&m->S[k]));
+  if (m->own)
+    for (PetscInt k = 0; k < m->S[m->s].nown; ++k) PetscCall(PetscFree(m->own[k].dQ));
+  PetscCall(PetscFree(m->own));
+  PetscCall(BvhDestroy(&m->tree));
+  PetscCall(PetscFree2(m->boxes, m->xm));
+  PetscCall(PetscFree(m->Adual));
+  PetscCall(PetscFree5(m->A, m->C, m->Q, m->gj, m->active));
+  PetscCall(PetscFree2(m->nodeFaceStart, m->nodeFace));
+  PetscCall(PetscFree2(m->nearNode, m->integrate));
+  if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
+  if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
+  PetscCall(PetscFree(m));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTerm t)
+{
+  Mortar3d *m;
+
+  PetscFunctionBeginUser;
+  if (!MORTAR3D_EnergyGrad) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("ContactMortar3d", &id));
+    PetscCall(PetscLogEventRegister("Mortar3dEnergyGrad", id, &MORTAR3D_EnergyGrad));
+    PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
+  }
+  PetscCheck(spec->friction == 0, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: friction (-contact_%s_friction %g) between 3D bodies is not implemented yet: 3D contact is frictionless", spec->name, spec->name, (double)spec->friction);
+  PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
+  PetscCheck(!spec->hertz, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_hertz_radii: the Hertz comparison of the report is 2D's; contact pair %s is 3D", spec->name, spec->name);
+  PetscCall(PetscNew(&m));
+  m->spec                    = *spec;
+  t->data                    = m;
+  t->ops.setup               = Mortar3dSetUp;
+  t->ops.energygradient      = Mortar3dEnergyGradient;
+  t->ops.hessian             = Mortar3dHessian;
+  t->ops.getdofs             = Mortar3dGetDofs;
+  t->ops.setpenaltyfactor    = Mortar3dSetPenaltyFactor;
+  t->ops.getpenaltystiffness = Mortar3dGetPenaltyStiffness;
+  t->ops.sethessianexact     = Mortar3dSetHessianExact;
+  t->ops.postprocess         = Mortar3dPostProcess;
+  t->ops.view                = Mortar3dView;
+  t->ops.writejson           = Mortar3dWriteJSON;
+  t->ops.destroy             = Mortar3dDestroy;
+  PetscFunctionReturn(0);
+}
+
+/* "mortar" in either dimension: the 2D term (mortar.c) until the set-up,
+   where the bodies' meshes give the dimension; a pair of 3D bodies then
+   becomes the 3D term (the 2D one, not yet set up, destroyed), its spec
+   and Hessian switch carried over. Every 2D term's set-up is mortar.c's
+   one function, kept here to be called. */
+static PetscErrorCode (*Mortar2dSetUp)(EnergyTerm, Body[]) = NULL;
+
+static PetscErrorCode MortarSetUpByDimension(EnergyTerm t, Body bodies[])
+{
+  const ContactTerm *b    = (const ContactTerm *)t->data; /* mortar.c's context starts with it */
+  ContactPairSpec    spec = b->spec;
+  const PetscBool    exact = b->exactHessian;
+
+  PetscFunctionBeginUser;
+  if (BodyGetDimension(bodies[spec.body[0]]) == 3 || BodyGetDimension(bodies[spec.body[1]]) == 3) {
+    PetscCall(t->ops.destroy(t));
+    PetscCall(PetscMemzero(&t->ops, sizeof(t->ops)));
+    t->data = NULL;
+    PetscCall(ContactTermCreate_Mortar3d(&spec, t));
+    PetscCall(Mortar3dSetHessianExact(t, exact));
+  } else t->ops.setup = Mortar2dSetUp;
+  PetscCall(t->ops.setup(t, bodies));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ContactTermCreate_MortarAnyDim(const ContactPairSpec *spec, EnergyTerm t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ContactTermCreate_Mortar(spec, t));
+  Mortar2dSetUp = t->ops.setup;
+  t->ops.setup  = MortarSetUpByDimension;
+  PetscFunctionReturn(0);
+}
