@@ -2,7 +2,7 @@
 #include "body.h"
 
 /* A 3D elastic body's boundary faces as a 3D contact surface sees them
-   (src/body/faces.c; the 2D analogue is BodyGetGroupEdges, boundary.c; the
+   (src/body/bodyfaces.c; the 2D analogue is BodyGetGroupEdges, boundary.c; the
    nodes' map, displacements and forces are body.h's BodyMapNodes,
    BodyGetNodeDisplacements and BodyAddNodeForces in either dimension). */
 

@@ -6,7 +6,7 @@
    the surface nodes among the owned points with their offsets in the local
    vector and indices in the joined one; their displacements gathered from
    the local vector, and the contact's gradient added into the local
-   gradient (dim components a node: a 3D body's surfaces too, faces.c). The dispatchers of the table (bodyimpl.h) are here too:
+   gradient (dim components a node: a 3D body's surfaces too, bodyfaces.c). The dispatchers of the table (bodyimpl.h) are here too:
    rigidsurface.c is the rigid body's side of each. */
 #include "body.h"
 #include "bodyimpl.h"
