@@ -114,7 +114,7 @@ PetscErrorCode BodyControlColumn(Body b, PetscInt bc, PetscInt c, Vec Xl, Vec *E
 {
   const PetscReal v0 = b->bc[bc].values[c];
   Vec             e;
-  PetscReal       en, saved[CONTACT_MAX_BC][2];
+  PetscReal       en, saved[CONTACT_MAX_BC][3];
 
   PetscFunctionBeginUser;
   if (*E) e = *E;
@@ -141,14 +141,12 @@ PetscErrorCode BodyControlColumn(Body b, PetscInt bc, PetscInt c, Vec Xl, Vec *E
     PetscCall(VecDestroy(&g0));
   } else PetscCall(BodyApplyTangentLocal(b, Xl, e, y));
   for (PetscInt j = 0; j < b->nbc; ++j) {
-    saved[j][0] = b->bc[j].reaction[0];
-    saved[j][1] = b->bc[j].reaction[1];
+    for (PetscInt d = 0; d < 3; ++d) saved[j][d] = b->bc[j].reaction[d];
   }
   PetscCall(BodyComputeReactions(b, y));
   for (PetscInt j = 0; j < b->nbc; ++j) {
     for (PetscInt d = 0; d < 3; ++d) R[j][d] = b->bc[j].reaction[d];
-    b->bc[j].reaction[0] = saved[j][0]; /* as the column found it (in 3D the third component is left the column's) */
-    b->bc[j].reaction[1] = saved[j][1];
+    for (PetscInt d = 0; d < 3; ++d) b->bc[j].reaction[d] = saved[j][d]; /* as the column found them */
   }
   if (e != *E) PetscCall(VecDestroy(&e));
   PetscFunctionReturn(0);
