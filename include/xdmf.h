@@ -18,12 +18,19 @@ static inline const char *const *XdmfBodyScalarNames(int axisym)
 {
   return axisym ? XdmfBodyScalarsAxisym : XdmfBodyScalars;
 }
-/* A 3D body's (no contact surfaces in 3D yet, and a scene is all 2D or all
-   3D, so every grid of a 3D scene carries these): the stress columns xx,
-   yy, zz, xy, yz, xz, then von Mises. */
+/* A 3D body's (a scene is all 2D or all 3D, so every grid of a 3D scene,
+   the 3D contact surfaces' too, carries these): the stress columns xx, yy,
+   zz, xy, yz, xz, then von Mises. */
 #define XDMF_BODY_SCALARS_3D 7
 static const char *const XdmfBodyScalars3D[XDMF_BODY_SCALARS_3D] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"};
 static const char *const XdmfSurfaceScalars[XDMF_SURFACE_SCALARS] = {"pressure", "gap", "s"};
+/* A 3D scene's contact fields (mortar3d.c's slave surfaces; NaN on the
+   bodies): the nodal pressure, weighted gap and weight A_j, and the vector
+   XDMF_CONTACT_VECTOR_3D, the pair's force on each node. No arc position s
+   (2D's) in 3D. */
+#define XDMF_CONTACT_SCALARS_3D 3
+static const char *const XdmfContactScalars3D[XDMF_CONTACT_SCALARS_3D] = {"pressure", "gap", "weight"};
+#define XDMF_CONTACT_VECTOR_3D "force"
 /* In a scene with friction, also on every grid: a frictional pair's slave
    surface has them (its node_shear, node_slip, node_stick), its master the
    shear (transferred), every other grid NaN. A frictionless scene's file has

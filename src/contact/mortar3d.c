@@ -57,8 +57,11 @@
    size, is not both in contact and that far but where the surfaces meet
    at more than 45 degrees). Where a master much finer than the slave gives
    a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
+#include <petscviewerhdf5.h>
 #include "mortar3d.h"
 #include "bvh.h"
+#include "outputwrite.h"
+#include "xdmf.h"
 #include "segment3d.h"
 #include "surface3d.h"
 
@@ -737,6 +740,148 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
   PetscFunctionReturn(0);
 }
 
+/* Collective: rank 0's n tuples of bs values as dataset name in v's current
+   group (an n x bs dataset where bs > 1), the other ranks none. */
+static PetscErrorCode Mortar3dWriteArray(PetscViewer v, MPI_Comm comm, const char name[], PetscInt n, PetscInt bs, const PetscReal val[])
+{
+  Vec          vec;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, &vec));
+  PetscCall(VecSetSizes(vec, n * bs, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(vec, bs));
+  PetscCall(VecSetType(vec, VECSTANDARD));
+  PetscCall(PetscObjectSetName((PetscObject)vec, name));
+  PetscCall(VecGetArray(vec, &a));
+  for (PetscInt i = 0; i < n * bs; ++i) a[i] = val[i];
+  PetscCall(VecRestoreArray(vec, &a));
+  ContactOutputCall(v, VecView(vec, v));
+  PetscCall(VecDestroy(&vec));
+  PetscFunctionReturn(0);
+}
+
+/* The slave surface, /contact/<pair>/<body>_<group>/, from rank 0 (every
+   rank holds it whole; the others write nothing): its nodes' reference and
+   current coordinates node_X, node_x, their displacement
+   node_displacement (x - X), the nodal pressure node_pressure (p_j =
+   k_p <-g_j>_+, 0 where apart or not counted), the weighted gap node_gap
+   (g_j; NaN where the node is not counted, C_j < A_j / 2), the weight
+   node_weight (A_j), the pair's force on each node node_force (3
+   components, minus the gradient there: sum p_j A_j over the surface's z
+   is the pair's force), its faces node_cells (Tri6 or Quad9, Gmsh's node
+   order, which is XDMF's), xdmf_nan (the bodies' stresses there, xdmf.h);
+   as attributes its body, group, face_type ("Triangle_6" or
+   "Quadrilateral_9"), slave (1) and surface_index. The pair's figures as
+   attributes of /contact/<pair>: formulation, dimension (3), penalty, P,
+   force (3), fem_pmax, contact_area, max_penetration, as the JSON has them
+   (every rank holds them: collective). */
+static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer v)
+{
+  const Mortar3d         *m = (const Mortar3d *)t->data;
+  const ContactSurface3d *S = &m->S[m->s];
+  const PetscReal        *F = m->force[0];
+  const PetscReal         P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+  const PetscInt          dim = 3;
+  MPI_Comm                comm;
+  PetscMPIInt             rank;
+  PetscInt                n, nf;
+  PetscReal              *u, *p, *g, *f, *nan;
+  char                    group[4 * CONTACT_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)v, &comm));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  n  = rank ? 0 : S->nn;
+  nf = rank ? 0 : S->nf;
+  PetscCall(PetscMalloc5(3 * n + 1, &u, n + 1, &p, n + 1, &g, 3 * n + 1, &f, n + 1, &nan));
+  for (PetscInt j = 0; j < n; ++j) {
+    const PetscBool in = (PetscBool)(m->active[j] && m->gj[j] < 0);
+    p[j]               = in ? -m->kp * m->gj[j] : 0.0;
+    g[j]               = m->active[j] ? m->gj[j] : (PetscReal)NAN;
+    nan[j]             = (PetscReal)NAN;
+    for (PetscInt d = 0; d < 3; ++d) {
+      u[3 * j + d] = S->x[3 * j + d] - S->X[3 * j + d];
+      f[3 * j + d] = -S->gsum[3 * j + d];
+    }
+  }
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s/%s_%s", m->spec.name, BodyGetName(bodies[m->spec.body[m->s]]), m->spec.group[m->s]));
+  PetscCall(PetscViewerHDF5PushGroup(v, group));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_X", n, 3, S->X));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_x", n, 3, S->x));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_displacement", n, 3, u));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_pressure", n, 1, p));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_gap", n, 1, g));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_weight", n, 1, m->A));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_force", n, 3, f));
+  PetscCall(Mortar3dWriteArray(v, comm, "xdmf_nan", n, 1, nan));
+  {
+    IS is;
+    PetscCall(ISCreateGeneral(comm, nf * S->nb, S->fnodes, PETSC_USE_POINTER, &is));
+    PetscCall(ISSetBlockSize(is, S->nb));
+    PetscCall(PetscObjectSetName((PetscObject)is, "node_cells"));
+    ContactOutputCall(v, ISView(is, v));
+    PetscCall(ISDestroy(&is));
+  }
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "body", PETSC_STRING, BodyGetName(bodies[m->spec.body[m->s]])));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "group", PETSC_STRING, m->spec.group[m->s]));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "face_type", PETSC_STRING, S->type == FACE3D_TRI6 ? "Triangle_6" : "Quadrilateral_9"));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "slave", PETSC_INT, &(PetscInt){1}));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "surface_index", PETSC_INT, &m->s));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscCall(PetscFree5(u, p, g, f, nan));
+  PetscCall(PetscSNPrintf(group, sizeof(group), "/contact/%s", m->spec.name));
+  PetscCall(PetscViewerHDF5PushGroup(v, group));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, m->spec.formulation));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "dimension", PETSC_INT, &dim));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &m->kp));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &P));
+  for (PetscInt d = 0; d < 3; ++d) {
+    const char *names[3] = {"force_x", "force_y", "force_z"};
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[d], PETSC_REAL, &F[d]));
+  }
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &m->pmax));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "contact_area", PETSC_REAL, &m->area));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &m->maxPen));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0. The slave surface as a grid of its faces (Triangle_6 or
+   Quadrilateral_9) named <pair>:<body>:<group>, on its nodes' reference
+   coordinates with their displacement, as the bodies' grids are (so Warp
+   By Vector moves it with them), with the 3D contact fields (xdmf.h):
+   pressure, gap, weight and force; NaN for the bodies' stresses. */
+static PetscErrorCode Mortar3dWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, const char h5[], PetscBool friction)
+{
+  const Mortar3d         *m = (const Mortar3d *)t->data;
+  const ContactSurface3d *S = &m->S[m->s];
+  const char             *body = BodyGetName(bodies[m->spec.body[m->s]]), *grp = m->spec.group[m->s];
+  const char             *names[XDMF_CONTACT_SCALARS_3D] = {"node_pressure", "node_gap", "node_weight"};
+  const int               nn = (int)S->nn;
+  char                    g[4 * CONTACT_NAME_LEN + PETSC_MAX_PATH_LEN], path[sizeof(g) + 32];
+
+  PetscFunctionBeginUser;
+  (void)friction; /* frictionless in 3D */
+  PetscCall(PetscSNPrintf(g, sizeof(g), "%s:/contact/%s/%s_%s/", h5, m->spec.name, body, grp));
+  fprintf(fp, "   <Grid Name=\"%s:%s:%s\" GridType=\"Uniform\">\n", m->spec.name, body, grp);
+  fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", S->type == FACE3D_TRI6 ? "Triangle_6" : "Quadrilateral_9", (int)S->nf);
+  fprintf(fp, "     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%snode_cells</DataItem>\n    </Topology>\n", (int)S->nf, (int)S->nb, (int)sizeof(PetscInt), g);
+  fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%snode_X</DataItem>\n    </Geometry>\n", nn, g);
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%snode_displacement", g));
+  XdmfWriteAttribute(fp, "displacement", nn, 3, path);
+  for (PetscInt k = 0; k < XDMF_CONTACT_SCALARS_3D; ++k) {
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, names[k]));
+    XdmfWriteAttribute(fp, XdmfContactScalars3D[k], nn, 1, path);
+  }
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%snode_force", g));
+  XdmfWriteAttribute(fp, XDMF_CONTACT_VECTOR_3D, nn, 3, path);
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%sxdmf_nan", g));
+  for (PetscInt k = 0; k < XDMF_BODY_SCALARS_3D; ++k) XdmfWriteAttribute(fp, XdmfBodyScalars3D[k], nn, 1, path);
+  fprintf(fp, "   </Grid>\n");
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Mortar3dGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
 {
   const Mortar3d *m = (const Mortar3d *)t->data;
@@ -828,6 +973,8 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
   t->ops.postprocess         = Mortar3dPostProcess;
   t->ops.view                = Mortar3dView;
   t->ops.writejson           = Mortar3dWriteJSON;
+  t->ops.writehdf5           = Mortar3dWriteHDF5;
+  t->ops.writexdmf           = Mortar3dWriteXDMF;
   t->ops.destroy             = Mortar3dDestroy;
   PetscFunctionReturn(0);
 }

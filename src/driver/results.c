@@ -42,6 +42,13 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
       XdmfWriteAttribute(fp, name, (int)N, 1, path);
     }
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan", base, g));
+    if (d3) { /* a 3D scene's contact fields (xdmf.h): none in a body */
+      for (PetscInt k = 0; k < XDMF_CONTACT_SCALARS_3D; ++k) XdmfWriteAttribute(fp, XdmfContactScalars3D[k], (int)N, 1, path);
+      PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan_xyz", base, g));
+      XdmfWriteAttribute(fp, XDMF_CONTACT_VECTOR_3D, (int)N, 3, path);
+      fprintf(fp, "   </Grid>\n");
+      continue;
+    }
     for (PetscInt k = 0; k < XDMF_SURFACE_SCALARS; ++k) XdmfWriteAttribute(fp, XdmfSurfaceScalars[k], (int)N, 1, path); /* no contact fields in a body (xdmf.h) */
     for (PetscInt k = 0; k < XDMF_FRICTION_SCALARS && friction; ++k) XdmfWriteAttribute(fp, XdmfFrictionScalars[k], (int)N, 1, path);
     fprintf(fp, "   </Grid>\n");
@@ -103,7 +110,8 @@ static PetscErrorCode WriteXDMF(Problem p, BodyNodalFields F[], const ContactOut
    and xdmf_nan, NaN at every node, for the contact fields a body has not.
    A 3D body's: displacement_xyz (a copy of displacement, so that the XDMF
    reads every scene's alike), the six stress columns as stress_xx, _yy,
-   _zz, _xy, _yz, _xz, and xdmf_nan. */
+   _zz, _xy, _yz, _xz, xdmf_nan and xdmf_nan_xyz (NaN vectors: the
+   contact force a body has not). */
 static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, PetscViewer v)
 {
   Vec                d3, c;
@@ -129,6 +137,11 @@ static PetscErrorCode WriteXDMFFields(BodyNodalFields *F, PetscBool axisym, Pets
     PetscCall(PetscObjectSetName((PetscObject)c, "xdmf_nan"));
     ContactOutputCall(v, VecView(c, v));
     PetscCall(VecDestroy(&c));
+    PetscCall(VecDuplicate(F->disp, &d3)); /* the contact force a body has not (xdmf.h) */
+    PetscCall(VecSet(d3, (PetscScalar)NAN));
+    PetscCall(PetscObjectSetName((PetscObject)d3, "xdmf_nan_xyz"));
+    ContactOutputCall(v, VecView(d3, v));
+    PetscCall(VecDestroy(&d3));
     PetscFunctionReturn(0);
   }
   PetscCall(VecGetLocalSize(F->vm, &n));
