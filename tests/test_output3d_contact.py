@@ -1,0 +1,154 @@
+"""A 3D contact pair's fields in the HDF5 and XDMF files (src/contact/
+mortar3d.c, docs/output.md): the slave surface's faces as a Triangle_6 or
+Quadrilateral_9 grid with the nodal pressure, weighted gap, weight A_j and
+the pair's force on each node, on the scenes of tests/test_contact3d.py:
+the patch scene (the upper box Tet10 or Hex27 pressed on the lower Hex27,
+every slave node at the uniform pressure of uniaxial strain) and the
+quarter Hertz ball on a block."""
+import json
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, figure, run_contact
+from test_contact3d import UPPERS, exact_pressure, hertz_args, patch_args, SOLVE
+from test_paraview import colours, display, run_pvpython  # noqa: F401 (display: the session's X server fixture)
+
+CONTACT3D = ROOT / "tests" / "paraview_contact3d.py"
+FACE_TYPES = {"Tri6": "Triangle_6", "Quad9": "Quadrilateral_9"}
+
+
+def patch(tmp_path, case):
+    """The patch scene with output, its stop pinned (tests/test_contact3d.py)."""
+    run = run_contact(patch_args(UPPERS[case], SOLVE), tmp_path, name=case)
+    return run, run.summary["contact"]["p"]
+
+
+def slave_group(h5, pair, c):
+    s = next(s for s in c["surfaces"] if s["slave"])
+    return h5[f"/contact/{pair}/{s['body']}_{s['group']}"], s
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("case", list(UPPERS))
+def test_hdf5_is_the_json(case, tmp_path):
+    """The slave surface's datasets read back with h5py: every node of the
+    JSON's contact_nodes (X, Y, Z, p, A) is a row of node_X with the same
+    node_pressure and node_weight to round-off (`json_diff` = 0, the
+    largest relative difference; bound 1e-14: the JSON prints 17 digits);
+    the pressure is the patch test's uniform exact value to 1e-8
+    (`pressure_error` = 3.7e-11) and node_gap is -p / k_p;
+    node_displacement is node_x - node_X; the nodal forces sum to the slave
+    body's force of the JSON to round-off (`force_sum` = 0, bound 1e-12 of
+    |F|), and their z components and sum p_j A_j to the exact pressure
+    times the interface's area 1 (`nodal_force_error` = 1.8e-12, bound
+    1e-8); the pair's attributes are the JSON's; node_cells names faces of
+    the surface's nodes."""
+    run, c = patch(tmp_path, case)
+    with run.h5() as h5:
+        g, s = slave_group(h5, "p", c)
+        X, x, u = g["node_X"][:], g["node_x"][:], g["node_displacement"][:]
+        p, A, gap, f = g["node_pressure"][:], g["node_weight"][:], g["node_gap"][:], g["node_force"][:]
+        cells = g["node_cells"][:]
+        attrs = dict(h5["/contact/p"].attrs)
+        assert g.attrs["face_type"].decode() == FACE_TYPES[s["face_type"]]
+    n = s["nodes"]
+    assert X.shape == x.shape == u.shape == f.shape == (n, 3) and p.shape == A.shape == gap.shape == (n,)
+    assert cells.shape == (s["faces"], 6 if s["face_type"] == "Tri6" else 9) and cells.min() == 0 and cells.max() == n - 1
+    rows = np.array(c["contact_nodes"]["rows"])
+    worst, matched = 0.0, set()
+    for r in rows:
+        j = int(np.argmin(np.linalg.norm(X - r[:3], axis=1)))
+        assert np.linalg.norm(X[j] - r[:3]) <= 1e-14
+        matched.add(j)
+        worst = max(worst, abs(p[j] / r[3] - 1), abs(A[j] / r[4] - 1))
+    assert figure("json_diff", worst) <= 1e-14
+    assert len(matched) == len(rows) == c["nodes_in_contact"] == n  # the patch: every slave node in contact
+    assert figure("pressure_error", np.abs(p / exact_pressure(c["penalty"]) - 1).max()) <= 1e-8
+    assert np.allclose(gap, -p / c["penalty"], rtol=1e-12, atol=0)
+    assert np.array_equal(u, x - X)
+    F = np.array(s["force"])
+    assert figure("force_sum", np.abs(f.sum(axis=0) - F).max() / np.linalg.norm(F)) <= 1e-12
+    pe = exact_pressure(c["penalty"])
+    assert figure("nodal_force_error", max(abs(f[:, 2].sum() / pe - 1), abs((p * A).sum() / pe - 1))) <= 1e-8
+    assert attrs["dimension"] == 3 and attrs["formulation"].decode() == "mortar"
+    for key, want in (("P", c["P"]), ("fem_pmax", c["pmax"]), ("penalty", c["penalty"]), ("contact_area", c["contact_area"]),
+                      ("force_x", c["force"][0]), ("force_y", c["force"][1]), ("force_z", c["force"][2])):
+        assert attrs[key] == pytest.approx(want, rel=1e-15, abs=1e-300), key
+
+
+@pytest.mark.parametrize("case", list(UPPERS))
+def test_xdmf_names_the_datasets(case, tmp_path):
+    """The XDMF file parses; every HDF item names a dataset of the HDF5 file
+    with the shape it declares; the contact grid <pair>:<body>:<group> has
+    the slave's faces (Triangle_6 for the Tet10 box, Quadrilateral_9 for
+    the Hex27) on node_X with the displacement node_displacement, and the
+    fields pressure, gap, weight, force (3 components); every grid
+    carries the same fields (ParaView's Xdmf3ReaderS colours by a field
+    only where every piece has it): the bodies NaN for the contact fields,
+    the surface NaN for the stresses."""
+    run, c = patch(tmp_path, case)
+    xdmf = run.output_path.with_suffix(".xdmf")
+    root = ET.parse(xdmf).getroot()
+    grids = root.findall("./Domain/Grid/Grid")
+    names = [g.get("Name") for g in grids]
+    s = next(s for s in c["surfaces"] if s["slave"])
+    gname = f"p:{s['body']}:{s['group']}"
+    assert names == ["lower", "upper", gname]
+    with run.h5() as h5:
+        for item in root.iter("DataItem"):
+            assert item.get("Format") == "HDF"
+            fname, path = item.text.strip().split(":", 1)
+            assert fname == run.output_path.name
+            shape = tuple(int(v) for v in item.get("Dimensions").split())
+            assert h5[path].shape == shape, path
+        fields = [sorted(a.get("Name") for a in g.findall("Attribute")) for g in grids]
+        assert all(f == fields[0] for f in fields)
+        grid = grids[2]
+        topo = grid.find("Topology")
+        assert topo.get("TopologyType") == FACE_TYPES[s["face_type"]] and int(topo.get("NumberOfElements")) == s["faces"]
+        base = f"/contact/p/{s['body']}_{s['group']}/"
+        paths = {a.get("Name"): a.find("DataItem").text.split(":", 1)[1] for a in grid.findall("Attribute")}
+        assert grid.find("Geometry/DataItem").text.endswith(base + "node_X")
+        for field, ds in (("displacement", "node_displacement"), ("pressure", "node_pressure"), ("gap", "node_gap"),
+                          ("weight", "node_weight"), ("force", "node_force")):
+            assert paths[field] == base + ds
+            assert not np.isnan(h5[paths[field]][:]).any()
+        assert np.isnan(h5[paths["von_mises"]][:]).all()
+        body = {a.get("Name"): a.find("DataItem").text.split(":", 1)[1] for a in grids[0].findall("Attribute")}
+        for field in ("pressure", "gap", "weight", "force"):
+            assert np.isnan(h5[body[field]][:]).all()
+
+
+def test_paraview_renders_pressure(tmp_path, display):  # noqa: F811
+    """What a user sees: the quarter Hertz ball's XDMF file opened by
+    ParaView (OpenDataFile: Xdmf3ReaderS), the contact surface kept (a
+    Threshold on its weight, NaN on the bodies), warped by its displacement
+    and coloured by pressure, seen from below: the cap's quarter disc blue
+    with the red contact spot at the axis (looked at). ParaView reads the
+    slave's faces as quadratic triangles (VTK type 22), its points warped
+    onto node_x and its pressure node_pressure (bit for bit); the picture
+    has `colours` = 1036 distinct colours (at least 10), both ends of the colour
+    map among them."""
+    run = run_contact(hertz_args(0.04), tmp_path, name="ball")
+    c = run.summary["contact"]["c"]
+    png = tmp_path / "pressure.png"
+    run_pvpython(CONTACT3D, [run.output_path.with_suffix(".xdmf"), tmp_path / "pv.json", png], tmp_path, display)
+    got = json.loads((tmp_path / "pv.json").read_text())
+    assert len(got["grids"]) == 1
+    g = got["grids"][0]
+    with run.h5() as h5:
+        grp, s = slave_group(h5, "c", c)
+        x, p = grp["node_x"][:], grp["node_pressure"][:]
+    assert g["cells"] == s["faces"] and g["points"] == s["nodes"] and g["cell_types"] == [22]
+    xyz, pv = np.array(g["xyz"]), np.array(g["arrays"]["pressure"])
+    order = [int(np.argmin(np.linalg.norm(x - q, axis=1))) for q in xyz]
+    assert sorted(order) == list(range(len(x)))
+    assert np.abs(xyz - x[order]).max() <= 1e-12
+    assert np.array_equal(pv, p[order]) and pv.max() == c["pmax"]
+    assert figure("colours", colours(png)) >= 10
+    import matplotlib.image
+    img = (matplotlib.image.imread(png)[:, :, :3] * 255).round().astype(int).reshape(-1, 3)
+    red = img[:, 0] - img[:, 2]
+    assert red.max() > 100 and red.min() < -60  # warm and cool ends of the colour map both shown
