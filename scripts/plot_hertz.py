@@ -10,6 +10,17 @@ Usage:
         Hertz curve centred on the axis) with the Hertz curve when the scene
         declares one;
         a scene without contact pairs is skipped with one line (exit status 0)
+    python3 scripts/plot_hertz.py out/ball.h5 [--hertz-3d R,E*[,k]] -o out/ball.png
+        a 3D pair (dimension 3): the slave's nodal pressures p_j against the
+        distance r from the contact centre (the node of largest pressure),
+        measured in the plane normal to the pair's force (current
+        positions), with the computed P, p_max and a from the second moment
+        (sum p_j A_j r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile);
+        with --hertz-3d the Hertz curve of a sphere of radius R (E* the
+        contact modulus) under k P (k: the model's share, 4 for a quarter
+        model, 2 for a half; default 1), a = (3 k P R / (4 E*))^(1/3),
+        p0 = 3 k P / (2 pi a^2), and the relative L2 error of the nodal
+        pressures (weights A_j) from it
     python3 scripts/plot_hertz.py out/cattaneo.h5 --shear -o out/cattaneo-shear.png
         the shear traction q of each pair with friction along its slave
         surface (node_shear), with Coulomb's bound mu p, the stick zone
@@ -500,7 +511,76 @@ def thin_markers(ax, lines):
         line.set_markevery(max(1, int(np.ceil(inside / MARKERS_SHOWN))))
 
 
-def plot_pressure(f, axes, units, zoom=None, axis="s"):
+def parse_hertz_3d(text):
+    """--hertz-3d R,E*[,k]: three positive finite numbers (k default 1)."""
+    try:
+        vals = [float(v) for v in text.split(",")]
+    except ValueError:
+        vals = []
+    if len(vals) == 2:
+        vals.append(1.0)
+    if len(vals) != 3 or not all(np.isfinite(v) and v > 0 for v in vals):
+        raise argparse.ArgumentTypeError(f"expected R,E* or R,E*,k (positive numbers), not '{text}'")
+    return tuple(vals)
+
+
+def hertz_3d(P, R, Es):
+    """Hertz's sphere on a plane: contact radius a and peak pressure p0 under the load P."""
+    a = (3 * P * R / (4 * Es)) ** (1 / 3)
+    return a, 3 * P / (2 * np.pi * a * a)
+
+
+def radial_profile(side, force):
+    """A 3D slave surface's nodes: (r, p, A), r the distance from the node
+    of largest pressure in the plane normal to force (current positions)."""
+    x, p, A = side["node_x"][:], side["node_pressure"][:], side["node_weight"][:]
+    n = np.asarray(force, float)
+    n = n / np.linalg.norm(n) if np.linalg.norm(n) > 0 else np.array([0.0, 0.0, 1.0])
+    d = x - x[int(np.argmax(p))]
+    d -= np.outer(d @ n, n)
+    return np.linalg.norm(d, axis=1), p, A
+
+
+def plot_pressure_3d(ax, pair, g, units, hertz=None):
+    """A 3D pair: the slave's nodal pressures against r (radial_profile),
+    the Hertz curve where hertz = (R, E*, k)."""
+    side = next(v for v in g.values() if isinstance(v, h5py.Group) and "node_pressure" in v)
+    F = [attr(g, f"force_{c}", 0.0) for c in "xyz"]
+    r, p, A = radial_profile(side, F)
+    on = p > 0
+    P = attr(g, "P", float("nan"))
+    if not on.any():
+        raise PlotError(f"pair '{pair}': no slave node in contact")
+    am = np.sqrt(2.5 * np.sum(p * A * r * r) / np.sum(p * A))
+    rmax = 1.6 * max(am, r[on].max())
+    near = r <= rmax
+    name = f"{attr(side, 'body')}:{attr(side, 'group')}"
+    ax.plot(r[near], p[near], "o", ms=3, color=ROLE_COLOURS["slave"], zorder=3, label=f"{name}, nodal pressure (slave)")
+    text = [f"P = {units.value(P, 'force', True)} (the model's)",
+            f"computed: p_max = {units.value(p.max(), 'stress')}, a = {units.value(am, 'length')} (second moment)"]
+    if hertz:
+        R, Es, k = hertz
+        a, p0 = hertz_3d(k * P, R, Es)
+        t = np.linspace(0, max(rmax, 1.2 * a), 401)
+        ax.plot(t, p0 * np.sqrt(np.clip(1 - (t / a) ** 2, 0, None)), "k-", lw=1.5, zorder=2.5,
+                label=f"Hertz (R = {R:g}, E* = {Es:g}, load {k:g} P)")
+        ph = p0 * np.sqrt(np.clip(1 - (r / a) ** 2, 0, None))
+        l2 = np.sqrt(np.sum(A * (p - ph) ** 2) / np.sum(A * ph * ph))
+        text += [f"Hertz: a = {units.value(a, 'length')}, p_max = {units.value(p0, 'stress')}",
+                 f"p_max {100 * (p.max() - p0) / p0:+.2f} %, a (second moment) {100 * (am - a) / a:+.2f} %",
+                 f"relative L2 error of the nodal p: {100 * l2:.2f} %"]
+    ax.set_xlim(0, rmax)
+    ax.set_ylim(0, 1.45 * ax.get_ylim()[1])
+    ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",
+            fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
+    ax.legend(loc="upper right", fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_xlabel(units.label("distance r from the contact centre (current)", "length"))
+    ax.set_ylabel(units.label("pressure p", "stress"))
+    ax.set_title(f"contact pressure, pair '{pair}' (3D)")
+
+
+def plot_pressure(f, axes, units, zoom=None, axis="s", hertz3d=None):
     """Each pair's pressure profiles against the arc position s - s_c (axis
     "s") or the current x or y coordinate (the Hertz curve then centred at
     the slave's centre, its half-width along that axis). A master's curve is
@@ -509,6 +589,9 @@ def plot_pressure(f, axes, units, zoom=None, axis="s"):
     if axisym:   # a meridian section: against the current radius, Hertz centred on the axis
         axis = "x"
     for ax, (pair, g) in zip(axes, f["contact"].items()):
+        if attr(g, "dimension", 2) == 3:
+            plot_pressure_3d(ax, pair, g, units, hertz3d)
+            continue
         hertz = "hertz_a" in g.attrs and "hertz_pmax" in g.attrs
         centre, marked = 0.0, []
         for side, role in surface_roles(g):
@@ -771,6 +854,10 @@ def main():
                         help="the pressure plot's abscissa: the arc position from the "
                              "contact centre (s, the default) or the current x or y "
                              "coordinate (the Hertz curve centred at the slave's centre)")
+    parser.add_argument("--hertz-3d", type=parse_hertz_3d, default=None, metavar="R,E*[,k]",
+                        help="a 3D pair's Hertz curve: a sphere of radius R, contact "
+                             "modulus E*, under k times the pair's force (k = 4 for a "
+                             "quarter model; default 1)")
     parser.add_argument("--quiet", action="store_true",
                         help="skip a file with nothing to draw (no contact pairs; no pair "
                              "with friction for --shear) without a line")
@@ -827,7 +914,7 @@ def main():
                 n = len(f["contact"])
                 fig, axes = plt.subplots(n, 1, figsize=(8, 5 * n), squeeze=False,
                                          layout="constrained")
-                plot_pressure(f, axes[:, 0], units, args.zoom, args.axis)
+                plot_pressure(f, axes[:, 0], units, args.zoom, args.axis, args.hertz_3d)
                 fig.suptitle(label)
         save(fig, args.output)
     except (OSError, KeyError, ValueError, TypeError, PlotError) as err:

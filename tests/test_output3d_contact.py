@@ -121,7 +121,57 @@ def test_xdmf_names_the_datasets(case, tmp_path):
             assert np.isnan(h5[body[field]][:]).all()
 
 
-def test_paraview_renders_pressure(tmp_path, display):  # noqa: F811
+@pytest.fixture(scope="module")
+def ball(tmp_path_factory):
+    """The quarter Hertz ball of tests/test_contact3d.py at h = 0.04, with output."""
+    tmp = tmp_path_factory.mktemp("ball")
+    return run_contact(hertz_args(0.04), tmp, name="ball")
+
+
+def test_plot_hertz_3d(ball, tmp_path):
+    """scripts/plot_hertz.py on the quarter ball with --hertz-3d 1,E*,4 (R
+    1, E* of the two bodies, the quarter's force times 4) draws the
+    slave's nodal pressures against r, the distance from the node of
+    largest pressure in the plane normal to the pair's force (current
+    positions), with Hertz's curve (looked at: the points along the
+    quarter ellipse, a few nodes past a on the coarse rim); its radial
+    profile puts the node of largest pressure at r = 0 and, against Hertz,
+    the second-moment radius `a_error_current` = -0.0029 from a (the
+    reference positions' +1.1 % in tests/test_contact3d.py: the ball's
+    surface slides inward under the load) and the nodal pressures'
+    relative L2 error `l2_error` = 0.083 at about 2.5 elements across a
+    (bounds 0.03 and 0.15). A bad --hertz-3d is argparse's one line,
+    status 2."""
+    import math
+    import subprocess
+    import sys
+    from test_contact3d import E_BALL, E_BASE, NU
+    Es = 1 / ((1 - NU**2) / E_BALL + (1 - NU**2) / E_BASE)
+    png = tmp_path / "p.png"
+    script = ROOT / "scripts" / "plot_hertz.py"
+    res = subprocess.run([sys.executable, script, ball.output_path, "--hertz-3d", f"1,{Es!r},4", "-o", png],
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    assert colours(png) > 10
+    bad = subprocess.run([sys.executable, script, ball.output_path, "--hertz-3d", "1,x", "-o", png],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.strip().splitlines()[-1].startswith("plot_hertz.py: error: argument --hertz-3d")
+    sys.path.insert(0, str(ROOT / "scripts"))
+    import plot_hertz
+    c = ball.summary["contact"]["c"]
+    with ball.h5() as h5:
+        g, _ = slave_group(h5, "c", c)
+        r, p, A = plot_hertz.radial_profile(g, c["force"])
+    assert r[np.argmax(p)] == 0
+    a, p0 = plot_hertz.hertz_3d(4 * c["P"], 1.0, Es)
+    assert a == pytest.approx((3 * 4 * c["P"] / (4 * Es)) ** (1 / 3), rel=1e-14) and p0 == pytest.approx(6 * c["P"] / (math.pi * a * a), rel=1e-14)
+    am = math.sqrt(2.5 * np.sum(p * A * r * r) / np.sum(p * A))
+    ph = p0 * np.sqrt(np.clip(1 - (r / a) ** 2, 0, None))
+    assert abs(figure("a_error_current", am / a - 1)) <= 0.03
+    assert figure("l2_error", math.sqrt(np.sum(A * (p - ph) ** 2) / np.sum(A * ph * ph))) <= 0.15
+
+
+def test_paraview_renders_pressure(ball, tmp_path, display):  # noqa: F811
     """What a user sees: the quarter Hertz ball's XDMF file opened by
     ParaView (OpenDataFile: Xdmf3ReaderS), the contact surface kept (a
     Threshold on its weight, NaN on the bodies), warped by its displacement
@@ -131,7 +181,7 @@ def test_paraview_renders_pressure(tmp_path, display):  # noqa: F811
     onto node_x and its pressure node_pressure (bit for bit); the picture
     has `colours` = 1036 distinct colours (at least 10), both ends of the colour
     map among them."""
-    run = run_contact(hertz_args(0.04), tmp_path, name="ball")
+    run = ball
     c = run.summary["contact"]["c"]
     png = tmp_path / "pressure.png"
     run_pvpython(CONTACT3D, [run.output_path.with_suffix(".xdmf"), tmp_path / "pv.json", png], tmp_path, display)
