@@ -15,17 +15,7 @@ import numpy as np
 from paraview import servermanager, simple
 from vtkmodules.numpy_interface import dataset_adapter as dsa
 
-
-def leaves(data):
-    """The unstructured grids of a filter's output (one, or a composite's blocks)."""
-    if data.IsA("vtkCompositeDataSet"):
-        it = data.NewIterator()
-        it.InitTraversal()
-        while not it.IsDoneWithTraversal():
-            yield it.GetCurrentDataObject()
-            it.GoToNextItem()
-    else:
-        yield data
+from paraview_solid import leaves  # this script's folder is on pvpython's path
 
 
 def main(xdmf, out_json, png):
