@@ -144,7 +144,12 @@ static PetscErrorCode Run(int *status)
    again on another). MPI is started before PETSc so that the options files
    can be read first (options.c): a bad file is one line, not a traceback from
    PetscInitialize(). -log_view's summary, printed by PetscFinalize(), is
-   headed by the BLAS kernel's line. */
+   headed by the BLAS kernel's line. MPI's hardware discovery (hwloc) leaves
+   out its OpenGL component, which probes every X display it can reach
+   (:0, :1, ...): a solver has no use for one, and where a display it
+   connected to goes away (a virtual X server shut down beside the run) Xlib
+   ends the process ("X connection to :2 broken", once in CI). The user's
+   HWLOC_COMPONENTS, if set, is kept. */
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
@@ -153,6 +158,7 @@ int main(int argc, char **argv)
   PetscBool      logView = PETSC_FALSE;
 
   BlasKernelSelect(argc, argv);
+  setenv("HWLOC_COMPONENTS", "-gl", 0);
   MPI_Init_thread(&argc, &argv, PETSC_MPI_THREAD_REQUIRED, &provided);
   if (ContactOptionsExpandFiles(MPI_COMM_WORLD, &argc, &argv, err, sizeof(err))) {
     int rank;
