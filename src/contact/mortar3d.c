@@ -752,6 +752,158 @@ static PetscErrorCode Mortar3dGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
   PetscFunctionReturn(0);
 }
 
+/* The Hessian's pattern (ops.getpattern). With N_j the nodes of G_j (the
+   slave nodes of the faces around slave node j and the nodes of the master
+   faces those faces can meet), the Gauss-Newton part couples N_j x N_j,
+   and the second-order part a slave face's nodes with those of the master
+   faces it meets, inside it. Node a's columns: the union of the N_j that
+   hold a. The master faces a slave face can meet: those of
+   Mortar3dFaceEvaluate's search, on the reference coordinates, its margin
+   widened from one face size to MORTAR3D_PATTERN_MARGIN of them, to cover
+   the solve's motion along the surfaces. A pair that slides farther puts
+   a few entries outside the pattern: the Hessian grows there
+   (problem.c). Nodes: the slave's 0 .. nS - 1, the master's nS + i. */
+#define MORTAR3D_PATTERN_MARGIN 2.0
+static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt **rows, PetscInt **start, PetscInt **cols)
+{
+  const Mortar3d         *m = (const Mortar3d *)t->data;
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  const PetscInt          nS = S->nn, nn = S->nn + M->nn;
+  PetscInt               *nearStart, *near, cap, *mfStart, *mfFace, *mark, *list, *markJ, *markF, *faces, nr = 0, nc = 0, ccap;
+  PetscReal              *boxes;
+  Bvh                     tree;
+
+  PetscFunctionBeginUser;
+  /* the master faces each slave face can meet, and their inverse */
+  PetscCall(PetscMalloc1(6 * M->nf + 1, &boxes));
+  for (PetscInt f = 0; f < M->nf; ++f) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(M, f, M->X, xf);
+    Face3dBox(M->type, xf, &boxes[6 * f]);
+  }
+  PetscCall(BvhCreate(M->nf, boxes, &tree));
+  cap = 16 * S->nf + 1;
+  PetscCall(PetscMalloc1(S->nf + 1, &nearStart));
+  PetscCall(PetscMalloc1(cap, &near)); /* reallocated: apart */
+  nearStart[0] = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscReal       xs[27], box[6], margin;
+    const PetscInt *found;
+    PetscInt        nfound;
+    ContactSurface3dFaceCoords(S, f, S->X, xs);
+    Face3dBox(S->type, xs, box);
+    margin = MORTAR3D_PATTERN_MARGIN * Mortar3dFaceSize(S->type, xs);
+    for (PetscInt d = 0; d < 3; ++d) {
+      box[d] -= margin;
+      box[3 + d] += margin;
+    }
+    PetscCall(BvhQuery(tree, box, &nfound, &found));
+    if (nearStart[f] + nfound > cap) {
+      cap = 2 * (nearStart[f] + nfound);
+      PetscCall(PetscRealloc(sizeof(PetscInt) * cap, &near));
+    }
+    PetscCall(PetscArraycpy(&near[nearStart[f]], found, nfound));
+    nearStart[f + 1] = nearStart[f] + nfound;
+  }
+  PetscCall(BvhDestroy(&tree));
+  PetscCall(PetscFree(boxes));
+  PetscCall(PetscCalloc2(M->nf + 1, &mfStart, nearStart[S->nf] + 1, &mfFace));
+  for (PetscInt k = 0; k < nearStart[S->nf]; ++k) mfStart[near[k] + 1]++;
+  for (PetscInt f = 0; f < M->nf; ++f) mfStart[f + 1] += mfStart[f];
+  {
+    PetscInt *cnt;
+    PetscCall(PetscCalloc1(M->nf + 1, &cnt));
+    for (PetscInt f = 0; f < S->nf; ++f)
+      for (PetscInt k = nearStart[f]; k < nearStart[f + 1]; ++k) mfFace[mfStart[near[k]] + cnt[near[k]]++] = f;
+    PetscCall(PetscFree(cnt));
+  }
+  /* node a's columns: the N_j of the slave nodes j of the slave faces at a
+     (a slave) or of the slave faces that can meet a master face at a */
+  PetscCall(PetscMalloc5(nn, &mark, nn, &list, nS + 1, &markJ, S->nf + 1, &markF, S->nf + 1, &faces));
+  for (PetscInt a = 0; a < nn; ++a) mark[a] = -1;
+  for (PetscInt j = 0; j < nS; ++j) markJ[j] = -1;
+  for (PetscInt f = 0; f < S->nf; ++f) markF[f] = -1;
+  ccap = 64 * nn + 1;
+  PetscCall(PetscMalloc1(ccap, cols));
+  PetscCall(PetscMalloc1(3 * nn + 1, rows));
+  PetscCall(PetscMalloc1(3 * nn + 1, start));
+  (*start)[0] = 0;
+  {
+    PetscInt *mnodeFaceStart, *mnodeFace, *cnt;
+    PetscCall(PetscCalloc3(M->nn + 1, &mnodeFaceStart, M->nb * M->nf + 1, &mnodeFace, M->nn + 1, &cnt));
+    for (PetscInt k = 0; k < M->nb * M->nf; ++k) mnodeFaceStart[M->fnodes[k] + 1]++;
+    for (PetscInt i = 0; i < M->nn; ++i) mnodeFaceStart[i + 1] += mnodeFaceStart[i];
+    for (PetscInt f = 0; f < M->nf; ++f)
+      for (PetscInt i = 0; i < M->nb; ++i) mnodeFace[mnodeFaceStart[M->fnodes[M->nb * f + i]] + cnt[M->fnodes[M->nb * f + i]]++] = f;
+    for (PetscInt a = 0; a < nn; ++a) {
+      const ContactSurface3d *A  = a < nS ? S : M;
+      const PetscInt          ia = a < nS ? a : a - nS;
+      PetscInt                nl = 0;
+      PetscInt                nf = 0;
+      /* the slave faces f around the slave nodes j that have a in N_j (those
+         of the slave faces at a, or that can meet a master face at a), each once */
+      PetscInt fs = a < nS ? m->nodeFaceStart[a] : mnodeFaceStart[ia], fe = a < nS ? m->nodeFaceStart[a + 1] : mnodeFaceStart[ia + 1];
+      for (PetscInt r = fs; r < fe; ++r) {
+        const PetscInt g = a < nS ? m->nodeFace[r] : mnodeFace[r]; /* a slave face at a, or a master face at a */
+        const PetscInt ks = a < nS ? 0 : mfStart[g], ke = a < nS ? 1 : mfStart[g + 1];
+        for (PetscInt k = ks; k < ke; ++k) {
+          const PetscInt f0 = a < nS ? g : mfFace[k];
+          for (PetscInt i = 0; i < S->nb; ++i) {
+            const PetscInt j = S->fnodes[S->nb * f0 + i];
+            if (markJ[j] == a) continue;
+            markJ[j] = a;
+            for (PetscInt q = m->nodeFaceStart[j]; q < m->nodeFaceStart[j + 1]; ++q)
+              if (markF[m->nodeFace[q]] != a) {
+                markF[m->nodeFace[q]] = a;
+                faces[nf++]           = m->nodeFace[q];
+              }
+          }
+        }
+      }
+      for (PetscInt q = 0; q < nf; ++q) { /* their nodes and those of the master faces they can meet: the union of the N_j */
+        const PetscInt f = faces[q];
+        for (PetscInt l = 0; l < S->nb; ++l) {
+          const PetscInt b = S->fnodes[S->nb * f + l];
+          if (mark[b] != a) {
+            mark[b]    = a;
+            list[nl++] = b;
+          }
+        }
+        for (PetscInt e = nearStart[f]; e < nearStart[f + 1]; ++e)
+          for (PetscInt l = 0; l < M->nb; ++l) {
+            const PetscInt b = nS + M->fnodes[M->nb * near[e] + l];
+            if (mark[b] != a) {
+              mark[b]    = a;
+              list[nl++] = b;
+            }
+          }
+      }
+      for (PetscInt d = 0; d < 3; ++d) {
+        if (A->big[3 * ia + d] < 0) continue;
+        if (nc + 3 * nl > ccap) {
+          ccap = 2 * (nc + 3 * nl);
+          PetscCall(PetscRealloc(sizeof(PetscInt) * ccap, cols));
+        }
+        for (PetscInt l = 0; l < nl; ++l) {
+          const ContactSurface3d *B  = list[l] < nS ? S : M;
+          const PetscInt          ib = list[l] < nS ? list[l] : list[l] - nS;
+          for (PetscInt e = 0; e < 3; ++e)
+            if (B->big[3 * ib + e] >= 0) (*cols)[nc++] = B->big[3 * ib + e];
+        }
+        (*rows)[nr++]   = A->big[3 * ia + d];
+        (*start)[nr]    = nc;
+      }
+    }
+    PetscCall(PetscFree3(mnodeFaceStart, mnodeFace, cnt));
+  }
+  PetscCall(PetscFree5(mark, list, markJ, markF, faces));
+  PetscCall(PetscFree2(mfStart, mfFace));
+  PetscCall(PetscFree(nearStart));
+  PetscCall(PetscFree(near));
+  *nrows = nr;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Mortar3dSetPenaltyFactor(EnergyTerm t, PetscReal f)
 {
   Mortar3d *m = (Mortar3d *)t->data;
@@ -822,6 +974,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
   t->ops.energygradient      = Mortar3dEnergyGradient;
   t->ops.hessian             = Mortar3dHessian;
   t->ops.getdofs             = Mortar3dGetDofs;
+  t->ops.getpattern          = Mortar3dGetPattern;
   t->ops.setpenaltyfactor    = Mortar3dSetPenaltyFactor;
   t->ops.getpenaltystiffness = Mortar3dGetPenaltyStiffness;
   t->ops.sethessianexact     = Mortar3dSetHessianExact;
