@@ -82,6 +82,7 @@ typedef struct {
   PetscInt         s;            /* the slave surface (0 or 1) */
   PetscReal        kp;           /* the penalty in use (continuation) */
   PetscBool        exactHessian; /* asked for: the Hessian stays Gauss-Newton (above) */
+  PetscReal        patternMargin; /* -contact_mortar_pattern_margin (Mortar3dGetPattern) */
   Face3dRule       rule, frule;  /* the clipped pieces' rule; the slave faces' own (dual coefficients, A_j) */
   PetscReal       *Adual;        /* [slave nf][81] the dual weights' coefficients */
   PetscReal       *A, *C, *Q, *gj; /* [slave nn] */
@@ -625,6 +626,10 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   }
   for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dSetUp(&m->S[k], m->body[k], m->spec.name));
   PetscCall(Mortar3dChooseSlave(m));
+  m->patternMargin = 2.0;
+  PetscOptionsBegin(t->comm, NULL, "3D mortar contact options", NULL);
+  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it, at rest (the solve's sliding; beyond it the Hessian grows, slower)", NULL, m->patternMargin, &m->patternMargin, NULL));
+  PetscOptionsEnd();
   PetscCall(Face3dRuleCreate(FACE3D_TRI6, 2 * m->spec.nqp - 1 > 6 ? 2 * m->spec.nqp - 1 : 6, &m->rule)); /* the pieces': degree 7 at the default 4 points */
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
@@ -759,11 +764,10 @@ static PetscErrorCode Mortar3dGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
    faces it meets, inside it. Node a's columns: the union of the N_j that
    hold a. The master faces a slave face can meet: those of
    Mortar3dFaceEvaluate's search, on the reference coordinates, its margin
-   widened from one face size to MORTAR3D_PATTERN_MARGIN of them, to cover
-   the solve's motion along the surfaces. A pair that slides farther puts
-   a few entries outside the pattern: the Hessian grows there
+   widened from one face size to -contact_mortar_pattern_margin of them
+   (2), to cover the solve's motion along the surfaces. A pair that slides
+   farther puts a few entries outside the pattern: the Hessian grows there
    (problem.c). Nodes: the slave's 0 .. nS - 1, the master's nS + i. */
-#define MORTAR3D_PATTERN_MARGIN 2.0
 static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt **rows, PetscInt **start, PetscInt **cols)
 {
   const Mortar3d         *m = (const Mortar3d *)t->data;
@@ -792,7 +796,7 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
     PetscInt        nfound;
     ContactSurface3dFaceCoords(S, f, S->X, xs);
     Face3dBox(S->type, xs, box);
-    margin = MORTAR3D_PATTERN_MARGIN * Mortar3dFaceSize(S->type, xs);
+    margin = m->patternMargin * Mortar3dFaceSize(S->type, xs);
     for (PetscInt d = 0; d < 3; ++d) {
       box[d] -= margin;
       box[3 + d] += margin;

@@ -873,6 +873,7 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), P));
   } else PetscCall(MatCopy(p->K, P, p->hessianGrown ? DIFFERENT_NONZERO_PATTERN : SAME_NONZERO_PATTERN));
+  if (p->hessianGrown) PetscCall(MatSetOption(P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE)); /* MatCopy by rows sets it again */
   PetscCall(ProblemUpdateControlBorder(p, p->tangentFull)); /* an anchor of a neohookean body: its column of the same stiffness */
   PetscCall(ProblemRigidBorderBegin(p));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
