@@ -115,6 +115,21 @@ static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
   return PetscSqrtReal(h);
 }
 
+/* Face f's coordinates xs from c and its box widened on every side by
+   factor times the face's size. */
+static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscReal c[], PetscReal factor, PetscReal xs[], PetscReal box[6])
+{
+  PetscReal margin;
+
+  ContactSurface3dFaceCoords(S, f, c, xs);
+  Face3dBox(S->type, xs, box);
+  margin = factor * Mortar3dFaceSize(S->type, xs);
+  for (PetscInt d = 0; d < 3; ++d) {
+    box[d] -= margin;
+    box[3 + d] += margin;
+  }
+}
+
 /* The boxes of the master faces and their tree at the current coordinates. */
 static PetscErrorCode Mortar3dBuildTree(Mortar3d *m)
 {
@@ -166,7 +181,7 @@ static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], Pet
 static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, PetscBool keep, Mortar3dFace *E)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
-  PetscReal               xs[27], Xs[27], box[6], margin;
+  PetscReal               xs[27], Xs[27], box[6];
   Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
   const PetscInt         *found;
   PetscInt                nfound, np;
@@ -184,14 +199,8 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
     if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof, &E->dQ));
     PetscFunctionReturn(0);
   }
-  ContactSurface3dFaceCoords(S, f, S->x, xs);
+  Mortar3dWideBox(S, f, S->x, 1.0, xs, box);
   ContactSurface3dFaceCoords(S, f, S->X, Xs);
-  Face3dBox(S->type, xs, box);
-  margin = Mortar3dFaceSize(S->type, xs);
-  for (PetscInt d = 0; d < 3; ++d) {
-    box[d] -= margin;
-    box[3 + d] += margin;
-  }
   PetscCall(BvhQuery(m->tree, box, &nfound, &found));
   if (nfound > MORTAR3D_MAX_MASTER) PetscCall(Mortar3dKeepNearest(m, xs, nfound, found, E->mf));
   else PetscCall(PetscArraycpy(E->mf, found, nfound));
@@ -256,16 +265,10 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
   PetscCall(Mortar3dBuildTree(m));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
   for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscReal       xs[27], box[6], margin;
+    PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
-    ContactSurface3dFaceCoords(S, f, S->x, xs);
-    Face3dBox(S->type, xs, box);
-    margin = MORTAR3D_NEAR * Mortar3dFaceSize(S->type, xs);
-    for (PetscInt d = 0; d < 3; ++d) {
-      box[d] -= margin;
-      box[3 + d] += margin;
-    }
+    Mortar3dWideBox(S, f, S->x, MORTAR3D_NEAR, xs, box);
     PetscCall(BvhQuery(m->tree, box, &nfound, &found));
     if (nfound)
       for (PetscInt i = 0; i < S->nb; ++i) m->nearNode[S->fnodes[S->nb * f + i]] = PETSC_TRUE;
@@ -791,16 +794,10 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
   PetscCall(PetscMalloc1(cap, &near)); /* reallocated: apart */
   nearStart[0] = 0;
   for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscReal       xs[27], box[6], margin;
+    PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
-    ContactSurface3dFaceCoords(S, f, S->X, xs);
-    Face3dBox(S->type, xs, box);
-    margin = m->patternMargin * Mortar3dFaceSize(S->type, xs);
-    for (PetscInt d = 0; d < 3; ++d) {
-      box[d] -= margin;
-      box[3 + d] += margin;
-    }
+    Mortar3dWideBox(S, f, S->X, m->patternMargin, xs, box);
     PetscCall(BvhQuery(tree, box, &nfound, &found));
     if (nearStart[f] + nfound > cap) {
       cap = 2 * (nearStart[f] + nfound);
