@@ -14,6 +14,9 @@ typedef struct {
   PetscErrorCode (*energygradient)(EnergyTerm, Body[], PetscReal *energy);
   PetscErrorCode (*hessian)(EnergyTerm, Body[], Mat H);
   PetscErrorCode (*getdofs)(EnergyTerm, PetscInt *n, PetscInt **idx);
+  /* optional: the Hessian's sparsity, by row (joined indices, every rank the
+     whole): rows[n] sorted, row k's columns cols[start[k] .. start[k + 1]) */
+  PetscErrorCode (*getpattern)(EnergyTerm, PetscInt *n, PetscInt **rows, PetscInt **start, PetscInt **cols);
   PetscErrorCode (*setpenaltyfactor)(EnergyTerm, PetscReal);
   PetscErrorCode (*getpenaltystiffness)(EnergyTerm, PetscReal *);
   PetscErrorCode (*sethessianexact)(EnergyTerm, PetscBool);
@@ -53,6 +56,9 @@ PetscErrorCode EnergyTermComputeHessian(EnergyTerm, Body[], Mat H);
 /* Indices in the joined vector of the rows and columns the Hessian touches
    (every rank gets all of them; PetscFree the array). */
 PetscErrorCode EnergyTermGetDofs(EnergyTerm, PetscInt *n, PetscInt **idx);
+/* The term's Hessian pattern (ops.getpattern; PetscFree each of rows, start, cols),
+   has false where the term gives none (its block is then EnergyTermGetDofs's, dense). */
+PetscErrorCode EnergyTermGetPattern(EnergyTerm, PetscBool *has, PetscInt *n, PetscInt **rows, PetscInt **start, PetscInt **cols);
 /* Continuation: the term's penalty times factor. */
 PetscErrorCode EnergyTermSetPenaltyFactor(EnergyTerm, PetscReal factor);
 /* After the set-up: the penalty's stiffness against the bodies', k_p h / E*

@@ -85,6 +85,7 @@ typedef struct {
   PetscInt         s;            /* the slave surface (0 or 1) */
   PetscReal        kp;           /* the penalty in use (continuation) */
   PetscBool        exactHessian; /* asked for: the Hessian stays Gauss-Newton (above) */
+  PetscReal        patternMargin; /* -contact_mortar_pattern_margin (Mortar3dGetPattern) */
   Face3dRule       rule, frule;  /* the clipped pieces' rule; the slave faces' own (dual coefficients, A_j) */
   PetscReal       *Adual;        /* [slave nf][81] the dual weights' coefficients */
   PetscReal       *A, *C, *Q, *gj; /* [slave nn] */
@@ -115,6 +116,21 @@ static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
     h = PetscMax(h, l);
   }
   return PetscSqrtReal(h);
+}
+
+/* Face f's coordinates xs from c and its box widened on every side by
+   factor times the face's size. */
+static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscReal c[], PetscReal factor, PetscReal xs[], PetscReal box[6])
+{
+  PetscReal margin;
+
+  ContactSurface3dFaceCoords(S, f, c, xs);
+  Face3dBox(S->type, xs, box);
+  margin = factor * Mortar3dFaceSize(S->type, xs);
+  for (PetscInt d = 0; d < 3; ++d) {
+    box[d] -= margin;
+    box[3 + d] += margin;
+  }
 }
 
 /* The boxes of the master faces and their tree at the current coordinates. */
@@ -168,7 +184,7 @@ static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], Pet
 static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, PetscBool keep, Mortar3dFace *E)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
-  PetscReal               xs[27], Xs[27], box[6], margin;
+  PetscReal               xs[27], Xs[27], box[6];
   Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
   const PetscInt         *found;
   PetscInt                nfound, np;
@@ -186,14 +202,8 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
     if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof, &E->dQ));
     PetscFunctionReturn(0);
   }
-  ContactSurface3dFaceCoords(S, f, S->x, xs);
+  Mortar3dWideBox(S, f, S->x, 1.0, xs, box);
   ContactSurface3dFaceCoords(S, f, S->X, Xs);
-  Face3dBox(S->type, xs, box);
-  margin = Mortar3dFaceSize(S->type, xs);
-  for (PetscInt d = 0; d < 3; ++d) {
-    box[d] -= margin;
-    box[3 + d] += margin;
-  }
   PetscCall(BvhQuery(m->tree, box, &nfound, &found));
   if (nfound > MORTAR3D_MAX_MASTER) PetscCall(Mortar3dKeepNearest(m, xs, nfound, found, E->mf));
   else PetscCall(PetscArraycpy(E->mf, found, nfound));
@@ -258,16 +268,10 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
   PetscCall(Mortar3dBuildTree(m));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
   for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscReal       xs[27], box[6], margin;
+    PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
-    ContactSurface3dFaceCoords(S, f, S->x, xs);
-    Face3dBox(S->type, xs, box);
-    margin = MORTAR3D_NEAR * Mortar3dFaceSize(S->type, xs);
-    for (PetscInt d = 0; d < 3; ++d) {
-      box[d] -= margin;
-      box[3 + d] += margin;
-    }
+    Mortar3dWideBox(S, f, S->x, MORTAR3D_NEAR, xs, box);
     PetscCall(BvhQuery(m->tree, box, &nfound, &found));
     if (nfound)
       for (PetscInt i = 0; i < S->nb; ++i) m->nearNode[S->fnodes[S->nb * f + i]] = PETSC_TRUE;
@@ -595,6 +599,18 @@ static PetscErrorCode Mortar3dSetUpSlave(Mortar3d *m)
   PetscFunctionReturn(0);
 }
 
+/* The 3D pairs' own options (listed by -help whether or not a pair is 3D). */
+PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
+{
+  PetscFunctionBeginUser;
+  *margin = 2.0;
+  PetscOptionsBegin(comm, NULL, "3D mortar contact options", NULL);
+  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it, at rest (the solve's sliding; beyond it the Hessian grows, slower)", NULL, *margin, margin, NULL));
+  PetscOptionsEnd();
+  PetscCheck(!PetscIsInfOrNanReal(*margin) && *margin >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number >= 0, got %g", (double)*margin);
+  PetscFunctionReturn(0);
+}
+
 /* -contact_mortar_slave: first, second or auto (both is 2D's alone). */
 static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
 {
@@ -628,6 +644,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   }
   for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dSetUp(&m->S[k], m->body[k], m->spec.name));
   PetscCall(Mortar3dChooseSlave(m));
+  PetscCall(ContactMortar3dOptionsRead(t->comm, &m->patternMargin));
   PetscCall(Face3dRuleCreate(FACE3D_TRI6, 2 * m->spec.nqp - 1 > 6 ? 2 * m->spec.nqp - 1 : 6, &m->rule)); /* the pieces': degree 7 at the default 4 points */
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
@@ -897,6 +914,151 @@ static PetscErrorCode Mortar3dGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
   PetscFunctionReturn(0);
 }
 
+/* The Hessian's pattern (ops.getpattern). With N_j the nodes of G_j (the
+   slave nodes of the faces around slave node j and the nodes of the master
+   faces those faces can meet), the Gauss-Newton part couples N_j x N_j,
+   and the second-order part a slave face's nodes with those of the master
+   faces it meets, inside it. Node a's columns: the union of the N_j that
+   hold a. The master faces a slave face can meet: those of
+   Mortar3dFaceEvaluate's search, on the reference coordinates, its margin
+   widened from one face size to -contact_mortar_pattern_margin of them
+   (2), to cover the solve's motion along the surfaces. A pair that slides
+   farther puts a few entries outside the pattern: the Hessian grows there
+   (problem.c). Nodes: the slave's 0 .. nS - 1, the master's nS + i. */
+static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt **rows, PetscInt **start, PetscInt **cols)
+{
+  const Mortar3d         *m = (const Mortar3d *)t->data;
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  const PetscInt          nS = S->nn, nn = S->nn + M->nn;
+  PetscInt               *nearStart, *near, cap, *mfStart, *mfFace, *mark, *list, *markJ, *markF, *faces, nr = 0, nc = 0, ccap;
+  PetscReal              *boxes;
+  Bvh                     tree;
+
+  PetscFunctionBeginUser;
+  /* the master faces each slave face can meet, and their inverse */
+  PetscCall(PetscMalloc1(6 * M->nf + 1, &boxes));
+  for (PetscInt f = 0; f < M->nf; ++f) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(M, f, M->X, xf);
+    Face3dBox(M->type, xf, &boxes[6 * f]);
+  }
+  PetscCall(BvhCreate(M->nf, boxes, &tree));
+  cap = 16 * S->nf + 1;
+  PetscCall(PetscMalloc1(S->nf + 1, &nearStart));
+  PetscCall(PetscMalloc1(cap, &near)); /* reallocated: apart */
+  nearStart[0] = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscReal       xs[27], box[6];
+    const PetscInt *found;
+    PetscInt        nfound;
+    Mortar3dWideBox(S, f, S->X, m->patternMargin, xs, box);
+    PetscCall(BvhQuery(tree, box, &nfound, &found));
+    if (nearStart[f] + nfound > cap) {
+      cap = 2 * (nearStart[f] + nfound);
+      PetscCall(PetscRealloc(sizeof(PetscInt) * cap, &near));
+    }
+    PetscCall(PetscArraycpy(&near[nearStart[f]], found, nfound));
+    nearStart[f + 1] = nearStart[f] + nfound;
+  }
+  PetscCall(BvhDestroy(&tree));
+  PetscCall(PetscFree(boxes));
+  PetscCall(PetscCalloc2(M->nf + 1, &mfStart, nearStart[S->nf] + 1, &mfFace));
+  for (PetscInt k = 0; k < nearStart[S->nf]; ++k) mfStart[near[k] + 1]++;
+  for (PetscInt f = 0; f < M->nf; ++f) mfStart[f + 1] += mfStart[f];
+  {
+    PetscInt *cnt;
+    PetscCall(PetscCalloc1(M->nf + 1, &cnt));
+    for (PetscInt f = 0; f < S->nf; ++f)
+      for (PetscInt k = nearStart[f]; k < nearStart[f + 1]; ++k) mfFace[mfStart[near[k]] + cnt[near[k]]++] = f;
+    PetscCall(PetscFree(cnt));
+  }
+  /* node a's columns: the N_j of the slave nodes j of the slave faces at a
+     (a slave) or of the slave faces that can meet a master face at a */
+  PetscCall(PetscMalloc5(nn, &mark, nn, &list, nS + 1, &markJ, S->nf + 1, &markF, S->nf + 1, &faces));
+  for (PetscInt a = 0; a < nn; ++a) mark[a] = -1;
+  for (PetscInt j = 0; j < nS; ++j) markJ[j] = -1;
+  for (PetscInt f = 0; f < S->nf; ++f) markF[f] = -1;
+  ccap = 64 * nn + 1;
+  PetscCall(PetscMalloc1(ccap, cols));
+  PetscCall(PetscMalloc1(3 * nn + 1, rows));
+  PetscCall(PetscMalloc1(3 * nn + 1, start));
+  (*start)[0] = 0;
+  {
+    PetscInt *mnodeFaceStart, *mnodeFace, *cnt;
+    PetscCall(PetscCalloc3(M->nn + 1, &mnodeFaceStart, M->nb * M->nf + 1, &mnodeFace, M->nn + 1, &cnt));
+    for (PetscInt k = 0; k < M->nb * M->nf; ++k) mnodeFaceStart[M->fnodes[k] + 1]++;
+    for (PetscInt i = 0; i < M->nn; ++i) mnodeFaceStart[i + 1] += mnodeFaceStart[i];
+    for (PetscInt f = 0; f < M->nf; ++f)
+      for (PetscInt i = 0; i < M->nb; ++i) mnodeFace[mnodeFaceStart[M->fnodes[M->nb * f + i]] + cnt[M->fnodes[M->nb * f + i]]++] = f;
+    for (PetscInt a = 0; a < nn; ++a) {
+      const ContactSurface3d *A  = a < nS ? S : M;
+      const PetscInt          ia = a < nS ? a : a - nS;
+      PetscInt                nl = 0;
+      PetscInt                nf = 0;
+      /* the slave faces f around the slave nodes j that have a in N_j (those
+         of the slave faces at a, or that can meet a master face at a), each once */
+      PetscInt fs = a < nS ? m->nodeFaceStart[a] : mnodeFaceStart[ia], fe = a < nS ? m->nodeFaceStart[a + 1] : mnodeFaceStart[ia + 1];
+      for (PetscInt r = fs; r < fe; ++r) {
+        const PetscInt g = a < nS ? m->nodeFace[r] : mnodeFace[r]; /* a slave face at a, or a master face at a */
+        const PetscInt ks = a < nS ? 0 : mfStart[g], ke = a < nS ? 1 : mfStart[g + 1];
+        for (PetscInt k = ks; k < ke; ++k) {
+          const PetscInt f0 = a < nS ? g : mfFace[k];
+          for (PetscInt i = 0; i < S->nb; ++i) {
+            const PetscInt j = S->fnodes[S->nb * f0 + i];
+            if (markJ[j] == a) continue;
+            markJ[j] = a;
+            for (PetscInt q = m->nodeFaceStart[j]; q < m->nodeFaceStart[j + 1]; ++q)
+              if (markF[m->nodeFace[q]] != a) {
+                markF[m->nodeFace[q]] = a;
+                faces[nf++]           = m->nodeFace[q];
+              }
+          }
+        }
+      }
+      for (PetscInt q = 0; q < nf; ++q) { /* their nodes and those of the master faces they can meet: the union of the N_j */
+        const PetscInt f = faces[q];
+        for (PetscInt l = 0; l < S->nb; ++l) {
+          const PetscInt b = S->fnodes[S->nb * f + l];
+          if (mark[b] != a) {
+            mark[b]    = a;
+            list[nl++] = b;
+          }
+        }
+        for (PetscInt e = nearStart[f]; e < nearStart[f + 1]; ++e)
+          for (PetscInt l = 0; l < M->nb; ++l) {
+            const PetscInt b = nS + M->fnodes[M->nb * near[e] + l];
+            if (mark[b] != a) {
+              mark[b]    = a;
+              list[nl++] = b;
+            }
+          }
+      }
+      for (PetscInt d = 0; d < 3; ++d) {
+        if (A->big[3 * ia + d] < 0) continue;
+        if (nc + 3 * nl > ccap) {
+          ccap = 2 * (nc + 3 * nl);
+          PetscCall(PetscRealloc(sizeof(PetscInt) * ccap, cols));
+        }
+        for (PetscInt l = 0; l < nl; ++l) {
+          const ContactSurface3d *B  = list[l] < nS ? S : M;
+          const PetscInt          ib = list[l] < nS ? list[l] : list[l] - nS;
+          for (PetscInt e = 0; e < 3; ++e)
+            if (B->big[3 * ib + e] >= 0) (*cols)[nc++] = B->big[3 * ib + e];
+        }
+        (*rows)[nr++]   = A->big[3 * ia + d];
+        (*start)[nr]    = nc;
+      }
+    }
+    PetscCall(PetscFree3(mnodeFaceStart, mnodeFace, cnt));
+  }
+  PetscCall(PetscFree5(mark, list, markJ, markF, faces));
+  PetscCall(PetscFree2(mfStart, mfFace));
+  PetscCall(PetscFree(nearStart));
+  PetscCall(PetscFree(near));
+  *nrows = nr;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Mortar3dSetPenaltyFactor(EnergyTerm t, PetscReal f)
 {
   Mortar3d *m = (Mortar3d *)t->data;
@@ -967,6 +1129,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
   t->ops.energygradient      = Mortar3dEnergyGradient;
   t->ops.hessian             = Mortar3dHessian;
   t->ops.getdofs             = Mortar3dGetDofs;
+  t->ops.getpattern          = Mortar3dGetPattern;
   t->ops.setpenaltyfactor    = Mortar3dSetPenaltyFactor;
   t->ops.getpenaltystiffness = Mortar3dGetPenaltyStiffness;
   t->ops.sethessianexact     = Mortar3dSetHessianExact;

@@ -53,6 +53,16 @@ PetscErrorCode EnergyTermGetDofs(EnergyTerm t, PetscInt *n, PetscInt **idx)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode EnergyTermGetPattern(EnergyTerm t, PetscBool *has, PetscInt *n, PetscInt **rows, PetscInt **start, PetscInt **cols)
+{
+  PetscFunctionBeginUser;
+  *has = (PetscBool)!!t->ops.getpattern;
+  *n   = 0;
+  *rows = *start = *cols = NULL;
+  if (t->ops.getpattern) PetscCall(t->ops.getpattern(t, n, rows, start, cols));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode EnergyTermSetPenaltyFactor(EnergyTerm t, PetscReal factor)
 {
   PetscFunctionBeginUser;

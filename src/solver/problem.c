@@ -358,6 +358,60 @@ static PetscErrorCode ProblemInsertSurfaceBlock(Problem p, Mat A)
   PetscFunctionReturn(0);
 }
 
+/* The terms' Hessian patterns joined (EnergyTermGetPattern), *n = 0 where
+   a term gives none: the block over the surfaces' dofs, dense, in their
+   place (2D's terms, whose surfaces are lines of a few hundred dofs; in 3D
+   the dense block grows as the square of a surface's nodes). */
+static PetscErrorCode ProblemGetPattern(Problem p, PetscInt *n, PetscInt **rows, PetscInt **start, PetscInt **cols)
+{
+  PetscInt nc = 0;
+
+  PetscFunctionBeginUser;
+  *n    = 0;
+  *rows = *start = *cols = NULL;
+  for (PetscInt t = 0; t < p->nterms; ++t) {
+    PetscBool has;
+    PetscInt  m, *r, *s, *c;
+    PetscCall(EnergyTermGetPattern(p->terms[t], &has, &m, &r, &s, &c));
+    if (!has) {
+      PetscCall(PetscFree(*rows));
+      PetscCall(PetscFree(*start));
+      PetscCall(PetscFree(*cols));
+      *n = 0;
+      PetscFunctionReturn(0);
+    }
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (*n + m + 1), rows));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (*n + m + 2), start));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (nc + s[m] + 1), cols));
+    PetscCall(PetscArraycpy(*rows + *n, r, m));
+    PetscCall(PetscArraycpy(*cols + nc, c, s[m]));
+    (*start)[0] = 0;
+    for (PetscInt k = 0; k < m; ++k) (*start)[*n + k + 1] = nc + s[k + 1];
+    *n += m;
+    nc += s[m];
+    PetscCall(PetscFree(r));
+    PetscCall(PetscFree(s));
+    PetscCall(PetscFree(c));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The pattern's entries (zeros) in the rows this rank owns. */
+static PetscErrorCode ProblemInsertPattern(Mat A, PetscInt n, const PetscInt rows[], const PetscInt start[], const PetscInt cols[])
+{
+  PetscInt     rstart, rend, w = 0;
+  PetscScalar *zeros;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
+  for (PetscInt k = 0; k < n; ++k) w = PetscMax(w, start[k + 1] - start[k]);
+  PetscCall(PetscCalloc1(w + 1, &zeros));
+  for (PetscInt k = 0; k < n; ++k)
+    if (rows[k] >= rstart && rows[k] < rend) PetscCall(MatSetValues(A, 1, &rows[k], start[k + 1] - start[k], &cols[start[k]], zeros, ADD_VALUES));
+  PetscCall(PetscFree(zeros));
+  PetscFunctionReturn(0);
+}
+
 /* A node's distinct columns (pattern.c) counted into its rows: apart by
    whether the row's owner owns them (MPIAIJ's diagonal and off-diagonal
    blocks), into the rank's own counts or, for a row owned elsewhere, into
@@ -402,7 +456,8 @@ static PetscErrorCode StiffnessCountNode(void *ctx, PetscInt dof, PetscInt n, co
    block): each node's rows get the distinct columns of the cells around it
    (pattern.c: exact on one rank; a row on the partition's interface gets
    the sum of the ranks' counts, a bound), and each surface row the
-   surface's columns. On several ranks a rank counts the rows its cells
+   surface's columns, or where every term gives its Hessian's pattern (3D
+   mortar) the pattern's. On several ranks a rank counts the rows its cells
    touch, and the counts of rows owned elsewhere go to their owner by a
    vector sum. No pass of MatSetValues is needed for the pattern. */
 static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
@@ -411,8 +466,10 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
   PetscInt      *dnnz, *onnz, rstart, rend, N;
   PetscLayout    layout;
   Vec            dv = NULL, ov = NULL;
+  PetscInt       np, *prow, *pstart, *pcol;
 
   PetscFunctionBeginUser;
+  PetscCall(ProblemGetPattern(p, &np, &prow, &pstart, &pcol));
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   PetscCall(VecGetOwnershipRange(p->Xb, &rstart, &rend));
   PetscCall(VecGetSize(p->Xb, &N));
@@ -455,7 +512,14 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
     PetscCall(VecDestroy(&dv));
     PetscCall(VecDestroy(&ov));
   }
-  if (p->surfaceDofs) {
+  if (np) { /* the terms' patterns (3D): each row's columns, over-counted where they repeat the elastic ones */
+    for (PetscInt k = 0; k < np; ++k)
+      if (prow[k] >= rstart && prow[k] < rend)
+        for (PetscInt e = pstart[k]; e < pstart[k + 1]; ++e) {
+          if (pcol[e] >= rstart && pcol[e] < rend) dnnz[prow[k] - rstart]++;
+          else onnz[prow[k] - rstart]++;
+        }
+  } else if (p->surfaceDofs) {
     const PetscInt *idx;
     PetscInt        n, mine = 0;
     PetscCall(ISGetLocalSize(p->surfaceDofs, &n));
@@ -478,7 +542,11 @@ static PetscErrorCode ProblemPreallocateStiffness(Problem p, PetscInt nloc)
   if (size > 1) PetscCall(MatMPIAIJSetPreallocation(p->K, 0, dnnz, 0, onnz));
   else PetscCall(MatSeqAIJSetPreallocation(p->K, 0, dnnz));
   PetscCall(PetscFree2(dnnz, onnz));
-  if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
+  if (np) PetscCall(ProblemInsertPattern(p->K, np, prow, pstart, pcol));
+  else if (p->surfaceDofs) PetscCall(ProblemInsertSurfaceBlock(p, p->K));
+  PetscCall(PetscFree(prow));
+  PetscCall(PetscFree(pstart));
+  PetscCall(PetscFree(pcol));
   PetscFunctionReturn(0);
 }
 
@@ -804,13 +872,21 @@ PetscErrorCode ProblemAssembleHessian(Problem p, Vec X, Mat P)
   if (p->tangentFull) {
     PetscCall(MatZeroEntries(P));
     for (PetscInt i = 0; i < p->nbodies; ++i) PetscCall(BodyAssembleTangent(p->bodies[i], BodyGetLocalSolution(p->bodies[i]), P));
-  } else PetscCall(MatCopy(p->K, P, SAME_NONZERO_PATTERN));
+  } else PetscCall(MatCopy(p->K, P, p->hessianGrown ? DIFFERENT_NONZERO_PATTERN : SAME_NONZERO_PATTERN));
+  if (p->hessianGrown) PetscCall(MatSetOption(P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE)); /* MatCopy by rows sets it again */
   PetscCall(ProblemUpdateControlBorder(p, p->tangentFull)); /* an anchor of a neohookean body: its column of the same stiffness */
   PetscCall(ProblemRigidBorderBegin(p));
   for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermComputeHessian(p->terms[t], p->bodies, P));
   PetscCall(ProblemRigidBorderEnd(p));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  if (!p->hessianGrown) { /* a term's entries outside its pattern (MAT_NEW_NONZERO_ALLOCATION_ERR false: H grows there) */
+    MatInfo ik, ih;
+    PetscCall(MatGetInfo(p->K, MAT_GLOBAL_SUM, &ik));
+    PetscCall(MatGetInfo(P, MAT_GLOBAL_SUM, &ih));
+    p->hessianGrown = (PetscBool)(ih.nz_used > ik.nz_used);
+    if (p->hessianGrown) PetscCall(PetscInfo(NULL, "the Hessian has %g entries, the stiffness %g: a contact term left its pattern, H grows\n", ih.nz_used, ik.nz_used));
+  }
   PetscFunctionReturn(0);
 }
 
