@@ -1,21 +1,11 @@
 #pragma once
 #include "surface.h"
+#include "shape1d.h"
 
 /* The quadratic edge of a contact surface (edge.c): shape functions, the
    master edge with its C1 blend into the neighbouring edges, and the
    closest-point projection onto it. The evaluations are inline: they sit in
    the innermost loops of every formulation. */
-
-/* Quadratic shape functions on [-1, 1], nodes at eta = -1, +1, 0. */
-static inline void EdgeShape(PetscReal e, PetscReal N[3], PetscReal dN[3])
-{
-  N[0]  = 0.5 * e * (e - 1.0);
-  N[1]  = 0.5 * e * (e + 1.0);
-  N[2]  = 1.0 - e * e;
-  dN[0] = e - 0.5;
-  dN[1] = e + 0.5;
-  dN[2] = -2.0 * e;
-}
 
 /* Point and tangent at e of the quadratic edge through nodes en of x[][2]. */
 static inline void EdgeEval(const PetscReal *x, const PetscInt *en, PetscReal e, PetscReal p[2], PetscReal t[2])

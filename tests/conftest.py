@@ -87,6 +87,19 @@ def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, en
 # compares each figure a docstring quotes as `name` = VALUE (or `name` = LO to
 # HI) with the figures recorded, flagging a factor over 3. A figure's name is
 # local to its test function (parametrised cases share the docstring).
+def check_program_figures(name):
+    """Build bin/<name> (a kernel check program) and run it: its output lines
+    are whitespace-separated keys then a value, read as {keys: value} (the
+    keys a tuple)."""
+    subprocess.run(["make", "-s", "bin/" + name], cwd=ROOT, check=True, capture_output=True)
+    out = subprocess.run([str(ROOT / "bin" / name)], cwd=ROOT, check=True, capture_output=True, text=True).stdout
+    fig = {}
+    for line in out.splitlines():
+        *keys, value = line.split()
+        fig[tuple(keys)] = float(value)
+    return fig
+
+
 def figure(name, value):
     value = float(value)
     test = os.environ.get("PYTEST_CURRENT_TEST", "?").split(" ")[0]

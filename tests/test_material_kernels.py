@@ -24,23 +24,16 @@ patch, the rigid modes, a rigid rotation.
 Figures are the program's, deterministic (a fixed seed; no BLAS): measured
 once on this machine (x86-64, -O2, no FMA)."""
 import math
-import subprocess
 
 import pytest
 
-from conftest import ROOT, figure
+from conftest import check_program_figures, figure
 
 
 @pytest.fixture(scope="module")
 def figures():
     """The check program's figures, {(material, name): value}."""
-    subprocess.run(["make", "-s", "bin/material-check"], cwd=ROOT, check=True, capture_output=True)
-    out = subprocess.run([str(ROOT / "bin" / "material-check")], cwd=ROOT, check=True, capture_output=True, text=True).stdout
-    fig = {}
-    for line in out.splitlines():
-        mat, name, value = line.split()
-        fig[(mat, name)] = float(value)
-    return fig
+    return check_program_figures("material-check")
 
 
 @pytest.mark.roundoff
@@ -143,13 +136,7 @@ def test_plane_strain_reduction(figures):
 @pytest.fixture(scope="module")
 def element_figures():
     """The element loop's figures on one 3D cell, {(cell, material, name): value}."""
-    subprocess.run(["make", "-s", "bin/element-check"], cwd=ROOT, check=True, capture_output=True)
-    out = subprocess.run([str(ROOT / "bin" / "element-check")], cwd=ROOT, check=True, capture_output=True, text=True).stdout
-    fig = {}
-    for line in out.splitlines():
-        cell, mat, name, value = line.split()
-        fig[(cell, mat, name)] = float(value)
-    return fig
+    return check_program_figures("element-check")
 
 
 CELLS = ("hex27", "tet10")

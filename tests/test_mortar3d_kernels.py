@@ -21,23 +21,15 @@ figures asserted here.
 
 Figures are the program's, deterministic (a fixed seed; no BLAS): measured
 once on this machine (x86-64, -O2, no FMA)."""
-import subprocess
-
 import pytest
 
-from conftest import ROOT, figure
+from conftest import check_program_figures, figure
 
 
 @pytest.fixture(scope="module")
 def figures():
     """The check program's figures, {(case, name): value}."""
-    subprocess.run(["make", "-s", "bin/mortar3d-check"], cwd=ROOT, check=True, capture_output=True)
-    out = subprocess.run([str(ROOT / "bin" / "mortar3d-check")], cwd=ROOT, check=True, capture_output=True, text=True).stdout
-    fig = {}
-    for line in out.splitlines():
-        case, name, value = line.split()
-        fig[(case, name)] = float(value)
-    return fig
+    return check_program_figures("mortar3d-check")
 
 
 FACES = ("tri6_flat", "quad9_flat", "tri6_octant", "quad9_cubeface")

@@ -56,6 +56,7 @@
    column. So the box of the control points holds the curved face, which
    the box of its nodes does not (a bulging face rises above its nodes). */
 #include "face3d.h"
+#include "shape1d.h"
 #include <petscdt.h>
 
 static const PetscReal Tri6Xi[6][2]  = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
@@ -85,12 +86,7 @@ void Face3dSubTriangles(Face3dType t, PetscInt *nsub, const PetscInt (**sub)[3])
 
 static inline void Lagrange1d(PetscReal x, PetscReal L[3], PetscReal dL[3], PetscReal d2L[3])
 {
-  L[0]   = 0.5 * x * (x - 1.0);
-  L[1]   = 0.5 * x * (x + 1.0);
-  L[2]   = 1.0 - x * x;
-  dL[0]  = x - 0.5;
-  dL[1]  = x + 0.5;
-  dL[2]  = -2.0 * x;
+  EdgeShape(x, L, dL);
   d2L[0] = 1.0;
   d2L[1] = 1.0;
   d2L[2] = -2.0;
