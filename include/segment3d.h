@@ -23,4 +23,11 @@ typedef struct {
 
 PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
-PetscErrorCode Segment3dProjectionDerivative(const Face3d *, const PetscReal[2], const Face3d *, const PetscReal[2], PetscReal[]);
+/* A slave point's closest point on a master face (Segment3dClosestPointAt). */
+typedef struct {
+  PetscReal N[FACE3D_MAX_NODES], M[FACE3D_MAX_NODES], dM[2 * FACE3D_MAX_NODES]; /* slave, master shapes; master's derivatives */
+  PetscReal xs[3], xm[3], T[6], H[9], d[3], K[3];                              /* points, master's x_,a and x_,ab, d = xm - xs, K */
+} Segment3dClosest;
+
+PetscBool Segment3dClosestPointAt(const Face3d *, const PetscReal[2], const Face3d *, const PetscReal[2], Segment3dClosest *);
+void      Segment3dProjectionDerivative(const Segment3dClosest *, PetscInt, PetscInt, PetscReal[]);

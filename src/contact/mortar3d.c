@@ -379,21 +379,14 @@ static PetscErrorCode Mortar3dEnergyGradient(EnergyTerm t, Body bodies[], PetscR
 static PetscErrorCode Mortar3dGapHessian(const Face3d *sf, const PetscReal xi[2], const Face3d *mf, const PetscReal eta[2], PetscReal K[], PetscBool *ok)
 {
   const PetscInt ns = Face3dNodes(sf->type), nm = Face3dNodes(mf->type), n = 3 * (ns + nm);
-  PetscReal      N[FACE3D_MAX_NODES], M[FACE3D_MAX_NODES], dM[2 * FACE3D_MAX_NODES], xs[3], xm[3], T[6], H[9], c[3], nrm[3], len, d[3], Kc[3];
-  PetscReal      deta[2 * 3 * 2 * FACE3D_MAX_NODES], dn[3 * 3 * 2 * FACE3D_MAX_NODES];
+  PetscReal      c[3], nrm[3], len, deta[2 * 3 * 2 * FACE3D_MAX_NODES], dn[3 * 3 * 2 * FACE3D_MAX_NODES];
+  Segment3dClosest cp;
+  const PetscReal *N = cp.N, *M = cp.M, *dM = cp.dM, *T = cp.T, *H = cp.H;
 
   PetscFunctionBeginUser;
   *ok = PETSC_FALSE;
-  Face3dShape(sf->type, xi, N, NULL, NULL);
-  Face3dShape(mf->type, eta, M, dM, NULL);
-  Face3dEval(sf->type, sf->x, xi, xs, NULL, NULL);
-  Face3dEval(mf->type, mf->x, eta, xm, T, H);
-  for (PetscInt k = 0; k < 3; ++k) d[k] = xm[k] - xs[k];
-  Kc[0] = T[0] * T[0] + T[1] * T[1] + T[2] * T[2] + d[0] * H[0] + d[1] * H[1] + d[2] * H[2];
-  Kc[1] = T[0] * T[3] + T[1] * T[4] + T[2] * T[5] + d[0] * H[3] + d[1] * H[4] + d[2] * H[5];
-  Kc[2] = T[3] * T[3] + T[4] * T[4] + T[5] * T[5] + d[0] * H[6] + d[1] * H[7] + d[2] * H[8];
-  if (!(Kc[0] * Kc[2] - Kc[1] * Kc[1] > 0)) PetscFunctionReturn(0);
-  PetscCall(Segment3dProjectionDerivative(sf, xi, mf, eta, deta));
+  if (!Segment3dClosestPointAt(sf, xi, mf, eta, &cp)) PetscFunctionReturn(0);
+  Segment3dProjectionDerivative(&cp, ns, nm, deta);
   c[0] = T[1] * T[5] - T[2] * T[4];
   c[1] = T[2] * T[3] - T[0] * T[5];
   c[2] = T[0] * T[4] - T[1] * T[3];

@@ -343,41 +343,46 @@ PetscErrorCode Segment3dEvaluate(const Face3d *Xref, const PetscReal xs[], const
   PetscFunctionReturn(0);
 }
 
-/* deta[a n + c] = d eta*_a / d(dof c) of the closest point eta of the slave
-   point at xi on the master face, n = 3 (slave nodes + master nodes), the
-   slave's dofs first. */
-PetscErrorCode Segment3dProjectionDerivative(const Face3d *slave, const PetscReal xi[2], const Face3d *master, const PetscReal eta[2], PetscReal deta[])
+/* The closest point eta on the master of the slave point at xi: the shape
+   values, points, the master's tangents T and second derivatives H there,
+   d = x_m - x_s, and the closest-point conditions' Jacobian
+   K_ab = t_a . t_b + d . x_,ab (symmetric: K[0] = K_11, K[1] = K_12,
+   K[2] = K_22). PETSC_TRUE where K is positive definite (eta a strict
+   minimum: the point nearer than the master's radius of curvature). */
+PetscBool Segment3dClosestPointAt(const Face3d *slave, const PetscReal xi[2], const Face3d *master, const PetscReal eta[2], Segment3dClosest *c)
 {
-  const PetscInt ns = Face3dNodes(slave->type), nm = Face3dNodes(master->type), n = 3 * (ns + nm);
-  PetscReal      N[FACE3D_MAX_NODES], M[FACE3D_MAX_NODES], dM[2 * FACE3D_MAX_NODES], xs[3], xm[3], T[6], H[9], d[3], K[3], det, Ki[3];
+  Face3dShape(slave->type, xi, c->N, NULL, NULL);
+  Face3dShape(master->type, eta, c->M, c->dM, NULL);
+  Face3dEval(slave->type, slave->x, xi, c->xs, NULL, NULL);
+  Face3dEval(master->type, master->x, eta, c->xm, c->T, c->H);
+  for (PetscInt k = 0; k < 3; ++k) c->d[k] = c->xm[k] - c->xs[k];
+  c->K[0] = Dot3(&c->T[0], &c->T[0]) + Dot3(c->d, &c->H[0]);
+  c->K[1] = Dot3(&c->T[0], &c->T[3]) + Dot3(c->d, &c->H[3]);
+  c->K[2] = Dot3(&c->T[3], &c->T[3]) + Dot3(c->d, &c->H[6]);
+  return (PetscBool)(c->K[0] * c->K[2] - c->K[1] * c->K[1] > 0);
+}
 
-  PetscFunctionBeginUser;
-  Face3dShape(slave->type, xi, N, NULL, NULL);
-  Face3dShape(master->type, eta, M, dM, NULL);
-  Face3dEval(slave->type, slave->x, xi, xs, NULL, NULL);
-  Face3dEval(master->type, master->x, eta, xm, T, H);
-  for (PetscInt k = 0; k < 3; ++k) d[k] = xm[k] - xs[k];
-  K[0] = Dot3(&T[0], &T[0]) + Dot3(d, &H[0]);
-  K[1] = Dot3(&T[0], &T[3]) + Dot3(d, &H[3]);
-  K[2] = Dot3(&T[3], &T[3]) + Dot3(d, &H[6]);
-  det  = K[0] * K[2] - K[1] * K[1];
-  PetscCheck(det > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "closest point's Hessian not positive definite (det %g): the point is farther than the master face's radius of curvature", (double)det);
-  Ki[0] = K[2] / det;
-  Ki[1] = -K[1] / det;
-  Ki[2] = K[0] / det;
-  for (PetscInt c = 0; c < n; ++c) {
+/* deta[a n + c] = d eta*_a / d(dof c) of the closest point c (of a slave
+   face of ns nodes on a master face of nm, Segment3dClosestPointAt, K
+   positive definite), n = 3 (ns + nm), the slave's dofs first. */
+void Segment3dProjectionDerivative(const Segment3dClosest *c, PetscInt ns, PetscInt nm, PetscReal deta[])
+{
+  const PetscInt  n   = 3 * (ns + nm);
+  const PetscReal det = c->K[0] * c->K[2] - c->K[1] * c->K[1];
+  const PetscReal Ki[3] = {c->K[2] / det, -c->K[1] / det, c->K[0] / det};
+
+  for (PetscInt col = 0; col < n; ++col) {
     PetscReal      r[2];
-    const PetscInt node = c / 3, dd = c % 3;
+    const PetscInt node = col / 3, dd = col % 3;
     if (node < ns) {
-      r[0] = -N[node] * T[dd];
-      r[1] = -N[node] * T[3 + dd];
+      r[0] = -c->N[node] * c->T[dd];
+      r[1] = -c->N[node] * c->T[3 + dd];
     } else {
       const PetscInt k = node - ns;
-      r[0]             = M[k] * T[dd] + d[dd] * dM[2 * k];
-      r[1]             = M[k] * T[3 + dd] + d[dd] * dM[2 * k + 1];
+      r[0]             = c->M[k] * c->T[dd] + c->d[dd] * c->dM[2 * k];
+      r[1]             = c->M[k] * c->T[3 + dd] + c->d[dd] * c->dM[2 * k + 1];
     }
-    deta[c]     = -(Ki[0] * r[0] + Ki[1] * r[1]);
-    deta[n + c] = -(Ki[1] * r[0] + Ki[2] * r[1]);
+    deta[col]     = -(Ki[0] * r[0] + Ki[1] * r[1]);
+    deta[n + col] = -(Ki[1] * r[0] + Ki[2] * r[1]);
   }
-  PetscFunctionReturn(0);
 }

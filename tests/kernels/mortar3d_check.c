@@ -629,7 +629,11 @@ static PetscErrorCode CheckDerivatives(const char *name, Face3dType st, Face3dTy
         pts[0].eta[1] = p0[0].eta[1];
         PetscCheck(Face3dClosestPoint(M->type, M->x, xp, pts[0].eta, NULL), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "closest point");
       }
-      PetscCall(Segment3dProjectionDerivative(&sf, p0[0].xi, M, pts[0].eta, deta));
+      {
+        Segment3dClosest cp;
+        PetscCheck(Segment3dClosestPointAt(&sf, p0[0].xi, M, pts[0].eta, &cp), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "closest point not a strict minimum");
+        Segment3dProjectionDerivative(&cp, ns, nm, deta);
+      }
       for (PetscInt c = 0; c < n2; ++c) {
         PetscReal *x = c < 3 * ns ? &xs[c] : (PetscReal *)&M->x[c - 3 * ns], x0 = *x, ep[2], em[2], p[3];
         ep[0] = em[0] = pts[0].eta[0];
