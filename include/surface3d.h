@@ -33,6 +33,10 @@ PetscErrorCode ContactSurface3dDestroy(ContactSurface3d *);
 PetscErrorCode ContactSurface3dUpdateCoordinates(ContactSurface3d *, Body, PetscBool *changed);
 /* Collective: sums g over ranks into gsum and adds it to the body's local gradient. */
 PetscErrorCode ContactSurface3dAddGradient(ContactSurface3d *, Body);
+/* The nodes on the border of the surface (bnd[nn], to free): of the edges one face alone has. */
+PetscErrorCode ContactSurface3dBorderNodes(const ContactSurface3d *, PetscBool **);
+/* Whether a border node of A (bndA) has its closest point of B within tol and not on B's border (bndB). */
+PetscErrorCode ContactSurface3dEndsOn(const ContactSurface3d *, const PetscBool[], const ContactSurface3d *, const PetscBool[], PetscReal, PetscBool *);
 /* Face f's node coordinates xf[3 nb] from c (S->X or S->x). */
 static inline void ContactSurface3dFaceCoords(const ContactSurface3d *S, PetscInt f, const PetscReal c[], PetscReal xf[])
 {

@@ -35,10 +35,10 @@
    remainder is second order on the flat patch test and levels at 2.9e-6
    of |H v| on the curved Hertz cap (tests/test_contact3d.py).
 
-   Slave: -contact_mortar_slave first|second, or auto (the default): the
-   softer body's surface (E/(1 - nu^2)), else the first named (2D's rule
-   that a surface which ends on the other is the slave is not made in 3D
-   yet). The automatic penalty k_p = 1000 E* / h, h the shortest chord
+   Slave: -contact_mortar_slave first|second, or auto (the default): as in
+   2D, a surface that ends on the other (ContactSurface3dEndsOn), else the
+   softer body's surface (E/(1 - nu^2)), else the first named
+   (Mortar3dChooseSlave). The automatic penalty k_p = 1000 E* / h, h the shortest chord
    between corners of the slave's faces.
 
    Parallel: every rank holds both surfaces whole (surface3d.c). For the
@@ -604,7 +604,25 @@ PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
   PetscFunctionReturn(0);
 }
 
-/* -contact_mortar_slave: first, second or auto (both is 2D's alone). */
+/* The diagonal of the surface's box (reference). */
+static PetscReal Mortar3dSurfaceSize(const ContactSurface3d *S)
+{
+  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, d2 = 0.0;
+
+  for (PetscInt v = 0; v < S->nn; ++v)
+    for (PetscInt d = 0; d < 3; ++d) {
+      lo[d] = PetscMin(lo[d], S->X[3 * v + d]);
+      hi[d] = PetscMax(hi[d], S->X[3 * v + d]);
+    }
+  for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(hi[d] - lo[d]);
+  return PetscSqrtReal(d2);
+}
+
+/* -contact_mortar_slave: first, second or auto (both is 2D's alone). auto,
+   as in 2D (mortar.c, MortarChooseSlaves): a surface that ends on the
+   other (a punch's face on a block: its border is where the pressure is
+   singular, and as slave its border nodes carry it), else the softer
+   body's by E/(1 - nu^2), else the first named. */
 static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
 {
   char      value[64] = "auto";
@@ -620,7 +638,15 @@ static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
   for (PetscInt k = 0; k < 2; ++k) BodyGetElasticConstants(m->body[k], &E[k], &nu[k]);
   if (first) m->s = 0;
   else if (second) m->s = 1;
-  else m->s = E[1] / (1 - nu[1] * nu[1]) < E[0] / (1 - nu[0] * nu[0]) ? 1 : 0;
+  else {
+    PetscBool *bnd[2], on[2];
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dBorderNodes(&m->S[k], &bnd[k]));
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dEndsOn(&m->S[k], bnd[k], &m->S[1 - k], bnd[1 - k], 0.05 * Mortar3dSurfaceSize(&m->S[k]), &on[k]));
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscFree(bnd[k]));
+    if (on[0] != on[1]) m->s = on[0] ? 0 : 1;
+    else m->s = E[1] / (1 - nu[1] * nu[1]) < E[0] / (1 - nu[0] * nu[0]) ? 1 : 0;
+    PetscCall(PetscInfo(NULL, "pair %s: slave %s (%s)\n", m->spec.name, m->spec.group[m->s], on[0] != on[1] ? "it ends on the other surface" : "the softer body, else the first named"));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -124,3 +124,100 @@ PetscErrorCode ContactSurface3dAddGradient(ContactSurface3d *S, Body b)
   PetscCall(BodyAddNodeForces(b, S->nn, S->X, &S->map, S->gsum));
   PetscFunctionReturn(0);
 }
+
+/* The nodes on the surface's border (bnd[nn]): those of the edges that
+   one face alone has (an edge's mid node is on that edge alone, so it is
+   on the border exactly when its edge is; a corner is where one of its
+   edges is). */
+PetscErrorCode ContactSurface3dBorderNodes(const ContactSurface3d *S, PetscBool **bnd)
+{
+  const PetscInt nc = S->nb == 6 ? 3 : 4;
+  PetscInt      *cnt;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(S->nn, bnd));
+  PetscCall(PetscCalloc1(S->nn, &cnt));
+  for (PetscInt f = 0; f < S->nf; ++f)
+    for (PetscInt e = 0; e < nc; ++e) cnt[S->fnodes[S->nb * f + nc + e]]++;
+  for (PetscInt f = 0; f < S->nf; ++f)
+    for (PetscInt e = 0; e < nc; ++e) {
+      const PetscInt *fn = &S->fnodes[S->nb * f];
+      if (cnt[fn[nc + e]] != 1) continue;
+      (*bnd)[fn[nc + e]] = (*bnd)[fn[e]] = (*bnd)[fn[(e + 1) % nc]] = PETSC_TRUE;
+    }
+  PetscCall(PetscFree(cnt));
+  PetscFunctionReturn(0);
+}
+
+/* Which border node of face f (a corner or an edge's mid node, by bnd) the
+   point eta of its parameters lies on, within tol of the face's edges: -1
+   inside the face; else the node of that edge that tells whether it is a
+   border (the corner at a corner, else the edge's mid node). */
+static PetscInt Surface3dEdgeNodeAt(const ContactSurface3d *S, PetscInt f, const PetscReal eta[2], PetscReal tol)
+{
+  const PetscInt *fn = &S->fnodes[S->nb * f];
+  PetscBool       on[4];
+  PetscInt        nc, first = -1, n = 0;
+
+  if (S->type == FACE3D_TRI6) { /* edges 0-1 (eta_2 = 0), 1-2 (eta_1 + eta_2 = 1), 2-0 (eta_1 = 0) */
+    nc    = 3;
+    on[0] = (PetscBool)(PetscAbsReal(eta[1]) <= tol);
+    on[1] = (PetscBool)(PetscAbsReal(eta[0] + eta[1] - 1.0) <= tol);
+    on[2] = (PetscBool)(PetscAbsReal(eta[0]) <= tol);
+  } else { /* edges 0-1 (eta_2 = -1), 1-2 (eta_1 = 1), 2-3 (eta_2 = 1), 3-0 (eta_1 = -1) */
+    nc    = 4;
+    on[0] = (PetscBool)(PetscAbsReal(eta[1] + 1.0) <= tol);
+    on[1] = (PetscBool)(PetscAbsReal(eta[0] - 1.0) <= tol);
+    on[2] = (PetscBool)(PetscAbsReal(eta[1] - 1.0) <= tol);
+    on[3] = (PetscBool)(PetscAbsReal(eta[0] + 1.0) <= tol);
+  }
+  for (PetscInt e = 0; e < nc; ++e)
+    if (on[e]) {
+      if (first < 0) first = e;
+      ++n;
+    }
+  if (!n) return -1;
+  if (n == 1) return fn[nc + first];
+  for (PetscInt e = 0; e < nc; ++e) /* a corner: the one the two edges share */
+    if (on[e] && on[(e + 1) % nc]) return fn[(e + 1) % nc];
+  return fn[nc + first];
+}
+
+/* Whether surface A ends on surface B, as 2D's rule has it (mortar.c,
+   MortarEndsOn): a node of A's border (bnd, ContactSurface3dBorderNodes)
+   whose closest point of B, in the reference coordinates, is within tol of
+   it and inside B: not on B's border (two surfaces that end flush, or are
+   cut by the same symmetry plane, do not end on each other). */
+PetscErrorCode ContactSurface3dEndsOn(const ContactSurface3d *A, const PetscBool bndA[], const ContactSurface3d *B, const PetscBool bndB[], PetscReal tol, PetscBool *ends)
+{
+  PetscReal xf[3 * FACE3D_MAX_NODES];
+
+  PetscFunctionBeginUser;
+  *ends = PETSC_FALSE;
+  for (PetscInt v = 0; v < A->nn && !*ends; ++v) {
+    PetscReal best = PETSC_MAX_REAL, etab[2] = {0, 0};
+    PetscInt  fb   = -1;
+    if (!bndA[v]) continue;
+    for (PetscInt f = 0; f < B->nf; ++f) {
+      PetscReal eta[2] = {B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0, B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0}, y[3], d2 = 0.0;
+      PetscBool clamped;
+      ContactSurface3dFaceCoords(B, f, B->X, xf);
+      Face3dClosestPointOnFace(B->type, xf, &A->X[3 * v], 0.0, eta, &clamped);
+      Face3dEval(B->type, xf, eta, y, NULL, NULL);
+      for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(y[d] - A->X[3 * v + d]);
+      if (d2 < best) {
+        best    = d2;
+        fb      = f;
+        etab[0] = eta[0];
+        etab[1] = eta[1];
+      }
+    }
+    if (fb < 0 || PetscSqrtReal(best) > tol) continue;
+    {
+      const PetscInt at = Surface3dEdgeNodeAt(B, fb, etab, 1e-6);
+      if (at >= 0 && bndB[at]) continue; /* at or past B's border */
+    }
+    *ends = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
