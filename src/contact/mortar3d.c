@@ -645,7 +645,7 @@ static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
     for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscFree(bnd[k]));
     if (on[0] != on[1]) m->s = on[0] ? 0 : 1;
     else m->s = E[1] / (1 - nu[1] * nu[1]) < E[0] / (1 - nu[0] * nu[0]) ? 1 : 0;
-    PetscCall(PetscInfo(NULL, "pair %s: slave %s (%s)\n", m->spec.name, m->spec.group[m->s], on[0] != on[1] ? "it ends on the other surface" : "the softer body, else the first named"));
+    PetscCall(PetscInfo(NULL, "pair %s: slave %s (%s)\n", m->spec.name, m->spec.group[m->s], on[0] != on[1] ? "it ends on the other surface" : on[0] ? "both end on the other; the softer body, else the first named" : "neither ends on the other; the softer body, else the first named"));
   }
   PetscFunctionReturn(0);
 }
