@@ -220,6 +220,9 @@ PetscErrorCode  BodyNodeMapDestroy(BodyNodeMap *);
    coordinates X[dim nn] (the same to the bit on every rank: each node's from
    the one rank that owns it). */
 PetscErrorCode  BodyGetNodeDisplacements(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, PetscReal u[]);
+/* Collective: the current coordinates x = X + u[dim nn] of the nodes (as
+   BodyGetNodeDisplacements); changed: whether any differs from x's last. */
+PetscErrorCode  BodyUpdateNodeCoordinates(Body, PetscInt nn, const PetscReal X[], const BodyNodeMap *, PetscReal x[], PetscBool *changed);
 /* Adds the gradient g[dim nn] (summed over ranks, the same on every rank) at
    the nodes to the body's: an elastic body's local gradient at its owned
    nodes, a rigid body's force and moment. */

@@ -47,6 +47,24 @@ PetscErrorCode BodyGetNodeDisplacements(Body b, PetscInt nn, const PetscReal X[]
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BodyUpdateNodeCoordinates(Body b, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, PetscReal x[], PetscBool *changed)
+{
+  const PetscInt n = b->dim * nn;
+  PetscReal     *u;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(n, &u));
+  PetscCall(BodyGetNodeDisplacements(b, nn, X, map, u));
+  *changed = PETSC_FALSE;
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal xk = X[k] + u[k];
+    if (xk != x[k]) *changed = PETSC_TRUE;
+    x[k] = xk;
+  }
+  PetscCall(PetscFree(u));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyAddNodeForces(Body b, PetscInt nn, const PetscReal X[], const BodyNodeMap *map, const PetscReal g[])
 {
   PetscFunctionBeginUser;

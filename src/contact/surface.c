@@ -393,18 +393,8 @@ PetscErrorCode ContactSurfaceSetMirror(ContactSurface *S, PetscReal y)
    bit on every rank); changed: whether any differs from the last x. */
 PetscErrorCode ContactSurfaceUpdateCoordinates(ContactSurface *S, Body b, PetscBool *changed)
 {
-  PetscReal *x;
-
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(2 * S->nn, &x));
-  PetscCall(BodyGetNodeDisplacements(b, S->nn, S->X, &S->map, x));
-  *changed = PETSC_FALSE;
-  for (PetscInt k = 0; k < 2 * S->nn; ++k) {
-    x[k] += S->X[k];
-    if (x[k] != S->x[k]) *changed = PETSC_TRUE;
-  }
-  PetscCall(PetscArraycpy(S->x, x, 2 * S->nn));
-  PetscCall(PetscFree(x));
+  PetscCall(BodyUpdateNodeCoordinates(b, S->nn, S->X, &S->map, S->x, changed));
   if (S->mirror) ContactSurfaceMirrorReach(S);
   PetscFunctionReturn(0);
 }

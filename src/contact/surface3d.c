@@ -102,18 +102,8 @@ PetscErrorCode ContactSurface3dDestroy(ContactSurface3d *S)
 
 PetscErrorCode ContactSurface3dUpdateCoordinates(ContactSurface3d *S, Body b, PetscBool *changed)
 {
-  PetscReal *u;
-
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(3 * S->nn, &u));
-  PetscCall(BodyGetNodeDisplacements(b, S->nn, S->X, &S->map, u));
-  *changed = PETSC_FALSE;
-  for (PetscInt k = 0; k < 3 * S->nn; ++k) {
-    const PetscReal x = S->X[k] + u[k];
-    if (x != S->x[k]) *changed = PETSC_TRUE;
-    S->x[k] = x;
-  }
-  PetscCall(PetscFree(u));
+  PetscCall(BodyUpdateNodeCoordinates(b, S->nn, S->X, &S->map, S->x, changed));
   PetscFunctionReturn(0);
 }
 
