@@ -1,7 +1,7 @@
 // A cube [x0, x0 + s] x [y0, y0 + s] x [z0, z0 + s] (rigid body, 3D),
-// Hex27 transfinite n cells a side (hex = 1) or Tet10 of size s / n.
+// Hex27 transfinite n cells a side (hex = 1) or Tet10 of size h.
 // Groups: "bottom" (z = z0), "top" (z = z0 + s), "xmin", "xmax", "ymin",
-// "ymax"; the volume "cube". Parameters: x0, y0, z0, s, n, hex.
+// "ymax"; the volume "cube". Parameters: x0, y0, z0, s, n, hex, h.
 SetFactory("OpenCASCADE");
 If (!Exists(x0)) x0 = 0; EndIf
 If (!Exists(y0)) y0 = 0; EndIf
@@ -18,14 +18,15 @@ Physical Surface("xmax") = Surface In BoundingBox{x0 + s - e, y0 - e, z0 - e, x0
 Physical Surface("ymin") = Surface In BoundingBox{x0 - e, y0 - e, z0 - e, x0 + s + e, y0 + e, z0 + s + e};
 Physical Surface("ymax") = Surface In BoundingBox{x0 - e, y0 + s - e, z0 - e, x0 + s + e, y0 + s + e, z0 + s + e};
 Physical Volume("cube") = {1};
+If (!Exists(h)) h = s / n; EndIf
 If (hex)
   Transfinite Curve{:} = n + 1;
   Transfinite Surface{:};
   Recombine Surface{:};
   Transfinite Volume{1};
 Else
-  Mesh.MeshSizeMin = s / n;
-  Mesh.MeshSizeMax = s / n;
+  Mesh.MeshSizeMin = h;
+  Mesh.MeshSizeMax = h;
 EndIf
 Mesh.ElementOrder = 2;
 Mesh.SecondOrderIncomplete = 0;
