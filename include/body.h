@@ -121,7 +121,8 @@ PetscBool       BodyHasConstantTangent(Body);
    current reference point), and its curves' node count: PETSC_TRUE for a
    body given by its motion (a rigid one), PETSC_FALSE (m untouched) else. */
 typedef struct {
-  PetscReal t[2], theta, centre[2], force[2], moment;
+  PetscInt  dim;  /* 2, or 3: t, centre, force and the rotation vector rot and moment mom have three components */
+  PetscReal t[3], theta, centre[3], force[3], moment, rot[3], mom[3];
   PetscInt  nodes;
 } BodyRigidMotion;
 PetscBool       BodyGetRigidMotion(Body, BodyRigidMotion *m);

@@ -42,6 +42,20 @@ static inline PetscBool ContactRigidDofDecode(PetscInt i, PetscInt *j, PetscInt 
   *d = (-2 - i) % 2;
   return PETSC_TRUE;
 }
+/* A 3D rigid body's surface node's component: -2 - (3 j + d). */
+static inline PetscInt ContactRigidDof3(PetscInt j, PetscInt d)
+{
+  return -2 - (3 * j + d);
+}
+static inline PetscBool ContactRigidDofDecode3(PetscInt i, PetscInt *j, PetscInt *d)
+{
+  if (i > -2) return PETSC_FALSE;
+  *j = (-2 - i) / 3;
+  *d = (-2 - i) % 3;
+  return PETSC_TRUE;
+}
+/* Whether its unknown q is a rotation's (2D's 2, 3D's 3, 4, 5): shown in radians and moments. */
+PetscBool      BodyRigidIsRotation(Body, PetscInt q);
 /* The border of a Hessian (forcecontrol.c): from Begin to End, the
    contact's coupling of unknown q to the joined vector's dofs goes into B
    (borrowed) and among the unknowns into the body's D (this rank's part,

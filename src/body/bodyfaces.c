@@ -89,7 +89,11 @@ PetscErrorCode BodyGetGroupFaces(Body b, const char group[], const char what[], 
   const PetscInt *pts = NULL;
 
   PetscFunctionBeginUser;
-  PetscCheck(BodyHasCells(b) && b->dim == 3, b->comm, PETSC_ERR_USER_INPUT, "%s: body %s is not a 3D elastic body: its surface '%s' has no faces", what, b->name, group);
+  if (b->rigid && b->dim == 3) { /* a rigid 3D body's faces (rigid3d.c) */
+    PetscCall(Rigid3dGroupFaces(b, group, tag, F));
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(BodyHasCells(b) && b->dim == 3, b->comm, PETSC_ERR_USER_INPUT, "%s: body %s is not a 3D body: its surface '%s' has no faces", what, b->name, group);
   PetscCall(PetscMemzero(F, sizeof(*F)));
   PetscCall(BodyGetPhysicalTag(b, group, 2, tag));
   PetscCall(DMGetLocalSection(b->dm, &s));

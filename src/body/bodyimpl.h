@@ -5,6 +5,7 @@
    structs in include/petsc/private/ *impl.h. The operations that differ
    between an elastic and a rigid body are a table (ops), below. */
 #include "body.h"
+#include "bodyfaces.h"
 
 /* What differs between an elastic body (body.c, boundary.c) and a rigid one
    (rigidbody.c, rigidsurface.c): the body's functions of include/body.h
@@ -107,27 +108,46 @@ struct _n_Body {
   BodyOps   ops;
 };
 
-/* A rigid body's curves and motion (rigidbody.h describes the motion). */
+/* A rigid body's curves (2D) or surfaces (3D) and motion (rigidbody.h
+   describes the motion). Its unknowns q: 2D's t_x, t_y and the arc
+   L theta; 3D's t_x, t_y, t_z and L theta_x, L theta_y, L theta_z
+   (theta the rotation vector, rigid3d.c). */
+#define RIGID_MAX_UNKNOWNS 6
 struct _n_BodyRigid {
-  PetscInt   nn;        /* nodes of the curves */
+  PetscInt   dim;       /* 2: curves, 3: surfaces (a Physical Volume in its mesh: rigid3d.c) */
+  PetscInt   nq;        /* the motion's components: 3 (2D) or 6 (3D) */
+  PetscInt   nn;        /* nodes of the curves or surfaces */
   PetscInt  *ids;       /* [nn] Gmsh node numbers, sorted */
-  PetscReal *X;         /* [nn][2] reference coordinates */
-  PetscInt   ne;        /* second-order line elements */
+  PetscReal *X;         /* [nn][dim] reference coordinates */
+  PetscInt   ne;        /* second-order line elements (2D) */
   PetscInt  *enodes;    /* [ne][3] node indices: the ends, then the middle */
   PetscInt  *etag;      /* [ne] physical tag */
-  PetscReal  centre[2]; /* reference point c */
+  PetscInt   nf, nbf;   /* 3D: second-order faces (Tri6 or Quad9), nodes per face (6 or 9) */
+  PetscInt  *fnodes;    /* [nf][nbf] node indices in Gmsh's order, turned so that the corners' right hand points outward */
+  PetscInt  *ftag;      /* [nf] physical tag */
+  PetscReal  centre[3]; /* reference point c */
   PetscReal  rotation[CONTACT_MAX_STAGES]; /* the rotation at each stage's end (radians) */
-  PetscReal  tEnd[CONTACT_MAX_STAGES][2];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
-  PetscReal  t[2], theta; /* the motion at the current load parameter */
-  PetscReal  force[2], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
+  PetscReal  rotEnd[CONTACT_MAX_STAGES][3]; /* 3D: the rotation vector at each stage's end (0 for an unknown) */
+  PetscReal  tEnd[CONTACT_MAX_STAGES][3];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
+  PetscReal  t[3], theta; /* the motion at the current load parameter */
+  PetscReal  rot[3];      /* 3D: the rotation vector theta at the current load parameter */
+  PetscReal  force[3], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
+  PetscReal  mom[3];      /* 3D: the moment sum (x - c - t) x g about c + t */
+  PetscReal  grot[3];     /* 3D: dPi/dtheta = sum g . dx/dtheta */
   PetscReal  curl;      /* -sum g.(x - c - t) at the last evaluation: d2Pi/dtheta2 beyond the contact's Hessian */
+  PetscReal  curl3[9];  /* 3D: sum g . d2x/dtheta_j dtheta_k at the last evaluation */
   PetscReal  L;         /* the curves' size (their bounding box's diagonal): the rotation's unknown is L theta */
-  PetscBool  unknown[3];  /* component q (x, y, the rotation) is an unknown */
-  PetscBool  control[3];  /* a force control (a condition's _control force); else held by the contact alone */
-  PetscReal  qforce[3];   /* an unknown's force at the full load (a control's; 0: held by the contact) */
-  PetscInt   qbc[3];      /* the condition that controls component q, or -1 */
-  Vec        B[3];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
-  PetscReal  D[9];        /* and this rank's part of the contact's coupling between the unknowns */
+  PetscBool  unknown[RIGID_MAX_UNKNOWNS];  /* component q is an unknown */
+  PetscBool  control[RIGID_MAX_UNKNOWNS];  /* a force control (a condition's _control force); else held by the contact alone */
+  PetscReal  qforce[RIGID_MAX_UNKNOWNS];   /* an unknown's force at the full load (a control's; 0: held by the contact) */
+  PetscInt   qbc[RIGID_MAX_UNKNOWNS];      /* the condition that controls component q, or -1 */
+  Vec        B[RIGID_MAX_UNKNOWNS];        /* during a Hessian's assembly (borrowed): column q of the border, the contact's coupling of unknown q to the joined vector's dofs */
+  PetscReal  D[RIGID_MAX_UNKNOWNS * RIGID_MAX_UNKNOWNS]; /* and this rank's part of the contact's coupling between the unknowns, [nq][nq] */
+  char       prefix[CONTACT_NAME_LEN + 2]; /* the options' prefix, and the motion's options as given: read at the set-up, once the mesh says the dimension */
+  char       rotOpt[64 * CONTACT_MAX_STAGES];
+  PetscBool  setRot, setCentre;
+  PetscReal  centreOpt[3];
+  PetscInt   ncentre;
 };
 
 /* rigidbody.c's, for the body's files (rigidbody.h describes the motion). */
@@ -166,6 +186,20 @@ PetscErrorCode BodyRigidComputeReactions(Body);
 PetscErrorCode BodyRigidDestroy(Body);
 /* The line elements of physical tag: their count, and (PetscFree) their indices. */
 PetscErrorCode BodyRigidGroupEdges(Body, PetscInt tag, PetscInt *n, PetscInt **edges);
+
+/* rigid3d.c's: a rigid 3D body. Rigid3dIs: whether the body's mesh has a
+   Physical Volume (rank 0 reads, every rank answers). ReadSurfaces: its
+   faces (rank 0 reads, broadcast), oriented, its size L and default
+   centre. The motion's options, conditions and functions in 3D, which
+   rigidbody.c's call where r->dim == 3. */
+PetscErrorCode Rigid3dIs(Body, PetscBool *);
+PetscErrorCode Rigid3dSetUpSurfaces(Body, BodyRigid *);
+PetscErrorCode Rigid3dParseRotation(Body, BodyRigid *);
+void           Rigid3dDisplacement(const BodyRigid *, const PetscReal X[3], PetscReal u[3]);
+void           Rigid3dAddForce(BodyRigid *, PetscInt n, const PetscReal X[], const PetscReal g[]);
+PetscErrorCode Rigid3dAddHessian(Body, const PetscReal x[], PetscInt n, const PetscInt idx[], const PetscScalar K[]);
+PetscErrorCode Rigid3dGroupFaces(Body, const char group[], PetscInt *tag, BodyFaces *);
+PetscErrorCode Rigid3dViewSolution(Body);
 
 /* Collective: the quadrature points' state of a material with history, at
    rest (bodystate.c), once the cell cache is built. */

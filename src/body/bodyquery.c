@@ -20,7 +20,7 @@ MPI_Comm BodyGetComm(Body b)
 
 PetscInt BodyGetDimension(Body b)
 {
-  return b->rigid ? 2 : b->dim;
+  return b->rigid ? (b->rg && b->rg->dim == 3 ? 3 : 2) : b->dim;
 }
 
 PetscBool BodyIsAxisymmetric(Body b)
@@ -44,13 +44,17 @@ PetscBool BodyGetRigidMotion(Body b, BodyRigidMotion *m)
   const BodyRigid *r = b->rg;
 
   if (!b->rigid) return PETSC_FALSE;
-  m->t[0]      = r->t[0];
-  m->t[1]      = r->t[1];
-  m->theta     = r->theta;
-  m->centre[0] = r->centre[0];
-  m->centre[1] = r->centre[1];
-  m->nodes     = r->nn;
+  m->dim   = r->dim;
+  m->theta = r->theta;
+  m->nodes = r->nn;
+  for (PetscInt d = 0; d < 3; ++d) {
+    m->t[d]      = r->t[d];
+    m->centre[d] = r->centre[d];
+    m->rot[d]    = r->rot[d];
+    m->mom[d]    = -r->mom[d];
+  }
   BodyRigidContactForce(b, m->force, &m->moment);
+  m->force[2] = -r->force[2];
   return PETSC_TRUE;
 }
 

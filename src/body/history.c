@@ -143,7 +143,7 @@ PetscReal BodyRigidControlForce(Body b, PetscInt q)
 {
   const BodyRigid *r = b->rg;
 
-  if (q > 1 || !r->control[q]) return 0.0; /* held by the contact alone: force 0 */
+  if (q >= r->dim || !r->control[q]) return 0.0; /* held by the contact alone: force 0 */
   for (PetscInt k = 0; k < b->bc[r->qbc[q]].ncomp; ++k)
     if (b->bc[r->qbc[q]].comps[k] == q) return BodyControlForce(b, r->qbc[q], k);
   return 0.0;

@@ -47,21 +47,36 @@
 #include "meshgen.h"
 #include "bodyimpl.h"
 
+/* The options as given: what they mean depends on the body's dimension,
+   which its mesh tells (RigidParseMotion, at the set-up). */
 PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
 {
   BodyRigid *r;
-  PetscReal  c[2] = {0, 0}, v[CONTACT_MAX_STAGES + 1];
-  PetscInt   nc   = 2, nv = 0;
-  PetscBool  setc = PETSC_FALSE, setr, free;
-  char       rot[64 * CONTACT_MAX_STAGES] = "0", opt[2 * CONTACT_NAME_LEN], *tok, *save = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&r));
   b->rg = r;
+  PetscCall(PetscStrncpy(r->rotOpt, "0", sizeof(r->rotOpt)));
+  PetscCall(PetscStrncpy(r->prefix, prefix, sizeof(r->prefix)));
+  r->ncentre = 3;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
-  PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y of a rigid body's rotation (default the centroid of its curves, weighted by length)", NULL, c, &nc, &setc));
-  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; with -load_stages S, S values, each stage's end), or free (held by the contact alone: the contact's moment about the reference point is zero)", NULL, rot, rot, sizeof(rot), &setr));
+  PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y (3D: x,y,z) of a rigid body's rotation (default the centroid of its curves, weighted by length; 3D of its surfaces, weighted by area)", NULL, r->centreOpt, &r->ncentre, &r->setCentre));
+  PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; with -load_stages S, S values, each stage's end), or free (held by the contact alone: the contact's moment about the reference point is zero). 3D: a rotation vector ax,ay,az per stage (its direction the axis, its length the angle), each component a number or free, or free (all three)", NULL, r->rotOpt, r->rotOpt, sizeof(r->rotOpt), &r->setRot));
   PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+/* 2D: -rigid_rotation, a number per stage or free, and -rigid_centre x,y. */
+static PetscErrorCode RigidParseMotion2D(Body b, BodyRigid *r)
+{
+  const char *prefix = r->prefix;
+  PetscReal   v[CONTACT_MAX_STAGES + 1];
+  PetscInt    nv = 0;
+  PetscBool   free;
+  char        rot[64 * CONTACT_MAX_STAGES], opt[2 * CONTACT_NAME_LEN], *tok, *save = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(rot, r->rotOpt, sizeof(rot)));
   PetscCall(PetscStrcmp(rot, "free", &free));
   PetscCheck(!free || !b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_rotation: a rigid body in r-z moves along the axis only, and cannot turn freely", prefix);
   r->unknown[2] = free;
@@ -74,13 +89,19 @@ PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
     nv++;
   }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%srigid_rotation", prefix));
-  if (setr && !free) PetscCall(BodyStagedValues(b, opt, nv, 1, v, 1, r->rotation)); /* else 0 at every stage */
-  PetscCheck(!setc || nc == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
-  for (PetscInt k = 0; k < 2 && setc; ++k) PetscCheck(!PetscIsInfOrNanReal(c[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: must be finite, got %g", prefix, (double)c[k]);
-  if (setc) {
-    r->centre[0] = c[0];
-    r->centre[1] = c[1];
-  } else r->centre[0] = r->centre[1] = PETSC_MAX_REAL; /* the centroid, once read */
+  if (r->setRot && !free) PetscCall(BodyStagedValues(b, opt, nv, 1, v, 1, r->rotation)); /* else 0 at every stage */
+  PetscCheck(!r->setCentre || r->ncentre == 2, b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: give two numbers x,y", prefix);
+  PetscFunctionReturn(0);
+}
+
+/* The reference point where given (checked finite), else the centroid, once read. */
+static PetscErrorCode RigidSetCentre(Body b, BodyRigid *r)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < r->ncentre && r->setCentre; ++k) PetscCheck(!PetscIsInfOrNanReal(r->centreOpt[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%srigid_centre: must be finite, got %g", r->prefix, (double)r->centreOpt[k]);
+  if (r->setCentre)
+    for (PetscInt k = 0; k < r->dim; ++k) r->centre[k] = r->centreOpt[k];
+  else r->centre[0] = r->centre[1] = r->centre[2] = PETSC_MAX_REAL; /* the centroid, once read */
   PetscFunctionReturn(0);
 }
 
@@ -165,22 +186,23 @@ static PetscErrorCode RigidReadCurves(Body b, BodyRigid *r)
    by no condition (an unknown the contact holds). */
 static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
 {
-  PetscReal value[CONTACT_MAX_STAGES][2];
-  PetscInt  by[2] = {-1, -1};
+  PetscReal   value[CONTACT_MAX_STAGES][3];
+  PetscInt    by[3] = {-1, -1, -1};
+  const char *axis[3] = {"x", "y", "z"};
 
   PetscFunctionBeginUser;
-  r->qbc[0] = r->qbc[1] = r->qbc[2] = -1;
-  PetscCall(PetscArrayzero(&value[0][0], 2 * CONTACT_MAX_STAGES));
+  for (PetscInt q = 0; q < RIGID_MAX_UNKNOWNS; ++q) r->qbc[q] = -1;
+  PetscCall(PetscArrayzero(&value[0][0], 3 * CONTACT_MAX_STAGES));
   for (PetscInt i = 0; i < b->nbc; ++i) {
     const BodyBC *bc = &b->bc[i];
     PetscInt      tag;
-    PetscCall(BodyGetPhysicalTag(b, bc->group, 1, &tag));
+    PetscCall(BodyGetPhysicalTag(b, bc->group, r->dim - 1, &tag));
     PetscCheck(!bc->exact, b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_exact: body %s is rigid: it has no exact solution", b->name, bc->group, b->name);
     for (PetscInt k = 0; k < bc->ncomp; ++k) {
       const PetscInt c    = bc->comps[k];
       PetscBool      same = PETSC_TRUE;
       for (PetscInt s = 0; s < b->nstages; ++s) same = (PetscBool)(same && value[s][c] == bc->stage[s][k]);
-      PetscCheck(by[c] < 0 || (!bc->control[k] && !r->control[c] && same), b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s both give its translation in %s (%s %g, %s %g); give it once", b->name, b->bc[PetscMax(by[c], 0)].group, bc->group, c ? "y" : "x", by[c] >= 0 && r->control[c] ? "force" : "value", (double)value[b->nstages - 1][c], bc->control[k] ? "force" : "value", (double)(bc->control[k] ? bc->force[k] : bc->values[k]));
+      PetscCheck(by[c] < 0 || (!bc->control[k] && !r->control[c] && same), b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid: groups %s and %s both give its translation in %s (%s %g, %s %g); give it once", b->name, b->bc[PetscMax(by[c], 0)].group, bc->group, axis[c], by[c] >= 0 && r->control[c] ? "force" : "value", (double)value[b->nstages - 1][c], bc->control[k] ? "force" : "value", (double)(bc->control[k] ? bc->force[k] : bc->values[k]));
       PetscCheck(!(c == 0 && b->axisym && bc->control[k]), b->comm, PETSC_ERR_USER_INPUT, "option -%s_bc_%s_control: body %s is rigid in r-z: it moves along the axis only, and a radial force control has nothing to move", b->name, bc->group, b->name);
       by[c] = i;
       for (PetscInt s = 0; s < b->nstages; ++s) value[s][c] = bc->stage[s][k]; /* a displacement, or a control's force */
@@ -191,7 +213,7 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
       }
     }
   }
-  for (PetscInt c = 0; c < 2; ++c) {
+  for (PetscInt c = 0; c < r->dim; ++c) {
     if (c == 0 && b->axisym) { /* r-z: the body moves along the axis alone */
       for (PetscInt s = 0; s < b->nstages; ++s) PetscCheck(by[0] < 0 || value[s][0] == 0.0, b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid in r-z: it moves along the axis only, and group %s gives it a radial motion %g", b->name, b->bc[by[0]].group, (double)value[s][0]);
       continue;
@@ -199,9 +221,8 @@ static PetscErrorCode RigidConditions(Body b, BodyRigid *r)
     if (by[c] < 0) r->unknown[c] = PETSC_TRUE; /* held by the contact alone */
   }
   for (PetscInt s = 0; s < b->nstages; ++s)
-    for (PetscInt c = 0; c < 2; ++c) r->tEnd[s][c] = r->unknown[c] ? 0.0 : value[s][c];
-  r->t[0] = r->tEnd[b->nstages - 1][0]; /* at the last stage's end until BodySetLoad */
-  r->t[1] = r->tEnd[b->nstages - 1][1];
+    for (PetscInt c = 0; c < r->dim; ++c) r->tEnd[s][c] = r->unknown[c] ? 0.0 : value[s][c];
+  for (PetscInt c = 0; c < r->dim; ++c) r->t[c] = r->tEnd[b->nstages - 1][c]; /* at the last stage's end until BodySetLoad */
   PetscFunctionReturn(0);
 }
 
@@ -234,9 +255,9 @@ static PetscErrorCode RigidCurvesCentroid(BodyRigid *r)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BodyRigidSetUp(Body b)
+/* 2D: the curves, read by rank 0 and broadcast, their centroid and size. */
+static PetscErrorCode RigidSetUpCurves(Body b, BodyRigid *r)
 {
-  BodyRigid  *r = b->rg;
   PetscMPIInt rank;
   PetscInt    n[2];
 
@@ -259,7 +280,6 @@ PetscErrorCode BodyRigidSetUp(Body b)
   PetscCallMPI(MPI_Bcast(r->enodes, (PetscMPIInt)(3 * r->ne), MPIU_INT, 0, b->comm));
   PetscCallMPI(MPI_Bcast(r->etag, (PetscMPIInt)r->ne, MPIU_INT, 0, b->comm));
   if (r->centre[0] == PETSC_MAX_REAL) PetscCall(RigidCurvesCentroid(r));
-  PetscCall(RigidConditions(b, r));
   {
     PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
     for (PetscInt i = 0; i < r->nn; ++i)
@@ -269,14 +289,33 @@ PetscErrorCode BodyRigidSetUp(Body b)
       }
     r->L = PetscSqrtReal(PetscSqr(hi[0] - lo[0]) + PetscSqr(hi[1] - lo[1]));
   }
-  b->dim     = 2;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BodyRigidSetUp(Body b)
+{
+  BodyRigid *r = b->rg;
+  PetscBool  is3;
+
+  PetscFunctionBeginUser;
+  PetscCall(Rigid3dIs(b, &is3));
+  r->dim = is3 ? 3 : 2;
+  r->nq  = is3 ? 6 : 3;
+  if (is3) PetscCall(Rigid3dParseRotation(b, r));
+  else PetscCall(RigidParseMotion2D(b, r));
+  PetscCall(RigidSetCentre(b, r));
+  if (is3) PetscCall(Rigid3dSetUpSurfaces(b, r));
+  else PetscCall(RigidSetUpCurves(b, r));
+  PetscCall(RigidConditions(b, r));
+  b->dim     = r->dim;
   b->nlocal  = 0;
   b->nglobal = 0;
   PetscCall(VecCreateMPI(b->comm, 0, 0, &b->Xg));
   PetscCall(VecDuplicate(b->Xg, &b->Gg));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, 0, &b->Xl));
   PetscCall(VecDuplicate(b->Xl, &b->Gl));
-  PetscCall(PetscInfo(NULL, "body %s is rigid: %" PetscInt_FMT " nodes, %" PetscInt_FMT " lines, reference point (%g, %g)\n", b->name, r->nn, r->ne, (double)r->centre[0], (double)r->centre[1]));
+  if (is3) PetscCall(PetscInfo(NULL, "body %s is rigid (3D): %" PetscInt_FMT " nodes, %" PetscInt_FMT " faces, reference point (%g, %g, %g)\n", b->name, r->nn, r->nf, (double)r->centre[0], (double)r->centre[1], (double)r->centre[2]));
+  else PetscCall(PetscInfo(NULL, "body %s is rigid: %" PetscInt_FMT " nodes, %" PetscInt_FMT " lines, reference point (%g, %g)\n", b->name, r->nn, r->ne, (double)r->centre[0], (double)r->centre[1]));
   PetscFunctionReturn(0);
 }
 
@@ -287,25 +326,37 @@ static PetscErrorCode BodySetLoad_Rigid(Body b)
   const PetscReal w0 = b->loadWeight[0], w1 = b->loadWeight[1];
 
   PetscFunctionBeginUser;
-  for (PetscInt c = 0; c < 2; ++c)
+  for (PetscInt c = 0; c < r->dim; ++c)
     if (!r->unknown[c]) r->t[c] = (k > 1 ? w0 * r->tEnd[k - 2][c] : 0.0) + w1 * r->tEnd[k - 1][c];
+  if (r->dim == 3) { /* the rotation vector along the stage: exact at its ends */
+    for (PetscInt c = 0; c < 3; ++c)
+      if (!r->unknown[3 + c]) r->rot[c] = (k > 1 ? w0 * r->rotEnd[k - 2][c] : 0.0) + w1 * r->rotEnd[k - 1][c];
+    PetscFunctionReturn(0);
+  }
   if (!r->unknown[2]) r->theta = (k > 1 ? w0 * r->rotation[k - 2] : 0.0) + w1 * r->rotation[k - 1];
   PetscFunctionReturn(0);
 }
 
 void BodyRigidSetUnknown(Body b, PetscInt q, PetscReal v)
 {
+  if (b->rg->dim == 3) {
+    if (q < 3) b->rg->t[q] = v;
+    else b->rg->rot[q - 3] = v / b->rg->L;
+    return;
+  }
   if (q < 2) b->rg->t[q] = v;
   else b->rg->theta = v / b->rg->L;
 }
 
 PetscReal BodyRigidGetUnknown(const Body b, PetscInt q)
 {
+  if (b->rg->dim == 3) return q < 3 ? b->rg->t[q] : b->rg->rot[q - 3] * b->rg->L;
   return q < 2 ? b->rg->t[q] : b->rg->theta * b->rg->L;
 }
 
 PetscReal BodyRigidUnknownGradient(const Body b, PetscInt q)
 {
+  if (b->rg->dim == 3) return q < 3 ? b->rg->force[q] : b->rg->grot[q - 3] / b->rg->L;
   return q < 2 ? b->rg->force[q] : b->rg->moment / b->rg->L;
 }
 
@@ -333,6 +384,10 @@ PetscErrorCode BodyRigidAddHessian(Body b, const PetscReal x[], PetscInt n, cons
   PetscReal  Jr[1024][3];
 
   PetscFunctionBeginUser;
+  if (r->dim == 3) {
+    PetscCall(Rigid3dAddHessian(b, x, n, idx, K));
+    PetscFunctionReturn(0);
+  }
   for (PetscInt a = 0; a < n; ++a) {
     PetscInt  j, d;
     PetscReal J[3][2];
@@ -371,12 +426,20 @@ void BodyRigidDisplacement(const Body b, const PetscReal X[2], PetscReal u[2])
 void BodyRigidZeroForce(Body b)
 {
   b->rg->force[0] = b->rg->force[1] = b->rg->moment = b->rg->curl = 0.0;
+  b->rg->force[2] = 0.0;
+  PetscArrayzero(b->rg->mom, 3);
+  PetscArrayzero(b->rg->grot, 3);
+  PetscArrayzero(b->rg->curl3, 9);
 }
 
 void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal g[])
 {
   BodyRigid *r = b->rg;
 
+  if (r->dim == 3) {
+    Rigid3dAddForce(r, n, X, g);
+    return;
+  }
   for (PetscInt i = 0; i < n; ++i) {
     PetscReal u[2], d[2];
     BodyRigidDisplacement(b, &X[2 * i], u);
@@ -394,12 +457,12 @@ void BodyRigidAddForce(Body b, PetscInt n, const PetscReal X[], const PetscReal 
    held by several groups: the first carries it). */
 PetscErrorCode BodyRigidComputeReactions(Body b)
 {
-  PetscBool given[2] = {PETSC_FALSE, PETSC_FALSE};
+  PetscBool given[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < b->nbc; ++i) {
     BodyBC *bc = &b->bc[i];
-    bc->reaction[0] = bc->reaction[1] = 0.0;
+    bc->reaction[0] = bc->reaction[1] = bc->reaction[2] = 0.0;
     for (PetscInt k = 0; k < bc->ncomp; ++k) {
       const PetscInt c = bc->comps[k];
       if (given[c]) continue;
@@ -465,6 +528,7 @@ PetscErrorCode BodyRigidDestroy(Body b)
   if (!b->rg) PetscFunctionReturn(0);
   PetscCall(PetscFree2(b->rg->ids, b->rg->X));
   PetscCall(PetscFree2(b->rg->enodes, b->rg->etag));
+  PetscCall(PetscFree2(b->rg->fnodes, b->rg->ftag));
   PetscCall(PetscFree(b->rg));
   PetscFunctionReturn(0);
 }
@@ -513,6 +577,8 @@ static PetscErrorCode BodyCheckHeld_Rigid(Body b, PetscBool contact)
   const BodyRigid *r = b->rg;
 
   PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < r->nq && !contact && r->dim == 3; ++q)
+    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and its %s is %s, so the problem is singular; hold it with -%s_bc or -%s_rigid_rotation", b->name, BodyGetControlComponent(b, -1, q), r->control[q] ? "force-controlled" : "free", b->name, b->name);
   for (PetscInt q = 0; q < 3 && !contact; ++q)
     PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
                q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");
@@ -526,6 +592,10 @@ static PetscErrorCode BodyViewSolution_Rigid(Body b, PetscBool axisymmetric)
   PetscReal        f[2], mo;
 
   PetscFunctionBeginUser;
+  if (r->dim == 3) {
+    PetscCall(Rigid3dViewSolution(b));
+    PetscFunctionReturn(0);
+  }
   BodyRigidContactForce(b, f, &mo);
   if (axisymmetric) PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved %g along the axis; the contact's force on it %.6e along the axis\n", b->name, (double)r->t[1], (double)f[1]));
   else PetscCall(PetscPrintf(b->comm, "  rigid body %s: moved (%g, %g), turned %g about (%g, %g); the contact's force on it (%.6e, %.6e), moment %.6e\n", b->name, (double)r->t[0], (double)r->t[1], (double)r->theta, (double)r->centre[0], (double)r->centre[1], (double)f[0], (double)f[1], (double)mo));
@@ -540,7 +610,7 @@ static PetscErrorCode BodyGetControls_Rigid(Body b, PetscInt *n, BodyControl ctl
   const BodyRigid *r = b->rg;
 
   PetscFunctionBeginUser;
-  for (PetscInt q = 0; q < 3; ++q) {
+  for (PetscInt q = 0; q < r->nq; ++q) {
     BodyControl *k;
     if (!r->unknown[q]) continue;
     k         = &ctl[(*n)++];
@@ -580,21 +650,23 @@ static PetscReal BodyGetControlReaction_Rigid(Body b, PetscInt bc, PetscInt q)
 
 static const char *BodyGetControlComponent_Rigid(Body b, PetscInt bc, PetscInt q)
 {
-  (void)b;
+  const char *name3[6] = {"x", "y", "z", "rotation_x", "rotation_y", "rotation_z"};
+
   (void)bc;
+  if (b->rg->dim == 3) return name3[q];
   return q == 2 ? "rotation" : (q ? "y" : "x");
 }
 
 void BodyRigidBorderBegin(Body b, PetscInt q, Vec B)
 {
   b->rg->B[q] = B;
-  PetscArrayzero(b->rg->D, 9);
+  PetscArrayzero(b->rg->D, b->rg->nq * b->rg->nq);
 }
 
 PetscErrorCode BodyRigidBorderSum(Body b)
 {
   PetscFunctionBeginUser;
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, b->rg->D, 9, MPIU_REAL, MPIU_SUM, b->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, b->rg->D, b->rg->nq * b->rg->nq, MPIU_REAL, MPIU_SUM, b->comm));
   PetscFunctionReturn(0);
 }
 
@@ -607,7 +679,13 @@ PetscReal BodyRigidBorderCoupling(Body b, PetscInt q, PetscInt s)
 {
   const BodyRigid *r = b->rg;
 
+  if (r->dim == 3) return r->D[6 * q + s] + (q >= 3 && s >= 3 ? r->curl3[3 * (q - 3) + s - 3] / PetscSqr(r->L) : 0.0);
   return r->D[3 * q + s] + (q == 2 && s == 2 ? r->curl / PetscSqr(r->L) : 0.0);
+}
+
+PetscBool BodyRigidIsRotation(Body b, PetscInt q)
+{
+  return (PetscBool)(q >= b->rg->dim);
 }
 
 PetscReal BodyRigidGetLength(Body b)

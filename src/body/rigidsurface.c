@@ -63,10 +63,14 @@ PetscErrorCode BodyRigidBoundaryEdgesAt(Body b, PetscInt tag, PetscInt nn, const
 PetscErrorCode BodyRigidMapNodes(Body b, PetscInt nn, const PetscInt ids[], BodyNodeMap *map, PetscInt joined[])
 {
   PetscFunctionBeginUser;
-  (void)b;
   (void)ids;
   PetscCall(PetscMalloc2(1, &map->node, 1, &map->off));
   map->n = 0;
+  if (b->rg->dim == 3) {
+    for (PetscInt j = 0; j < nn; ++j)
+      for (PetscInt d = 0; d < 3; ++d) joined[3 * j + d] = ContactRigidDof3(j, d);
+    PetscFunctionReturn(0);
+  }
   for (PetscInt j = 0; j < nn; ++j)
     for (PetscInt d = 0; d < 2; ++d) joined[2 * j + d] = ContactRigidDof(j, d); /* through the body's motion (rigidbody.h) */
   PetscFunctionReturn(0);
@@ -76,6 +80,10 @@ PetscErrorCode BodyRigidNodeDisplacements(Body b, PetscInt nn, const PetscReal X
 {
   PetscFunctionBeginUser;
   (void)map;
+  if (b->rg->dim == 3) {
+    for (PetscInt v = 0; v < nn; ++v) Rigid3dDisplacement(b->rg, &X[3 * v], &u[3 * v]);
+    PetscFunctionReturn(0);
+  }
   for (PetscInt v = 0; v < nn; ++v) BodyRigidDisplacement(b, &X[2 * v], &u[2 * v]);
   PetscFunctionReturn(0);
 }

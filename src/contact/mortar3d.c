@@ -422,6 +422,19 @@ static PetscErrorCode Mortar3dGapHessian(const Face3d *sf, const PetscReal xi[2]
   PetscFunctionReturn(0);
 }
 
+/* A block K over the joined indices idx into H (negative indices left
+   out) and, where a rigid body's surface components stand among them
+   (indices below -1, ContactRigidDof3), into its unknowns' border
+   (BodyAddSurfaceHessian, at the surface's current coordinates). */
+static PetscErrorCode Mortar3dAddHessianBlock(Mortar3d *m, Mat H, PetscInt n, const PetscInt idx[], const PetscScalar K[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+  for (PetscInt k = 0; k < 2; ++k)
+    if (!BodyHasCells(m->body[k])) PetscCall(BodyAddSurfaceHessian(m->body[k], m->S[k].x, n, idx, K));
+  PetscFunctionReturn(0);
+}
+
 /* The exact Hessian's second-order part, k_p sum_j g_j d2Q_j = sum over the
    points of this rank's slave faces of lambda d2g, lambda = k_p sum_j g_j
    W_j dS over the face's nodes in contact (Mortar3dGapHessian; a point
@@ -469,7 +482,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
       for (PetscInt i = 0; i < M->nb; ++i)
         for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
       for (PetscInt r = 0; r < n * n; ++r) K[r] *= lam;
-      PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+      PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
     }
   }
   PetscFunctionReturn(0);
@@ -524,7 +537,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
         PetscInt side, k, big, at = -1;
         Mortar3dColumn(m, f, E, c, &side, &k);
         big = (side ? M : S)->big[k];
-        if (big < 0) continue;
+        if (big == -1) continue; /* constrained; a rigid body's (below -1) go to its border (Mortar3dAddHessianBlock) */
         for (PetscInt l = 0; l < n && at < 0; ++l)
           if (idx[l] == big) at = l;
         if (at < 0) {
@@ -537,7 +550,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
     }
     for (PetscInt a = 0; a < n; ++a)
       for (PetscInt b = 0; b < n; ++b) K[a * n + b] = m->kp * val[a] * val[b] / m->A[j];
-    PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+    PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
   }
   if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
   for (PetscInt f = 0; f < S->nf; ++f) {
@@ -659,8 +672,9 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
     m->body[k]    = bodies[m->spec.body[k]];
     m->S[k].body  = m->spec.body[k];
     PetscCall(PetscStrncpy(m->S[k].group, m->spec.group[k], sizeof(m->S[k].group)));
-    PetscCheck(BodyHasCells(m->body[k]) && BodyGetDimension(m->body[k]) == 3, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is not a 3D elastic body (a 3D pair joins two)", m->spec.name, BodyGetName(m->body[k]));
+    PetscCheck(BodyGetDimension(m->body[k]) == 3, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: body %s is not a 3D body (a 3D pair joins two)", m->spec.name, BodyGetName(m->body[k]));
   }
+  PetscCheck(BodyHasCells(m->body[0]) || BodyHasCells(m->body[1]), t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: bodies %s and %s are both rigid: a contact between them has no elastic side", m->spec.name, BodyGetName(m->body[0]), BodyGetName(m->body[1]));
   for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dSetUp(&m->S[k], m->body[k], m->spec.name));
   PetscCall(Mortar3dChooseSlave(m));
   PetscCall(ContactMortar3dOptionsRead(t->comm, &m->patternMargin));

@@ -272,6 +272,23 @@ static PetscErrorCode WriteHDF5Contents(Problem p, const RunRecord *rec, BodyNod
     char group[2 * CONTACT_NAME_LEN];
     PetscCall(PetscSNPrintf(group, sizeof(group), "/bodies/%s", BodyGetName(p->bodies[i])));
     BodyRigidMotion m;
+    if (BodyGetRigidMotion(p->bodies[i], &m) && m.dim == 3) { /* its motion and force, as attributes of three components */
+      PetscCall(PetscViewerHDF5PushGroup(v, group));
+      ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rigid", PETSC_INT, &(PetscInt){1}));
+      for (PetscInt d = 0; d < 3; ++d) {
+        char key[32];
+        PetscCall(PetscSNPrintf(key, sizeof(key), "translation_%c", (char)('x' + d)));
+        ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, key, PETSC_REAL, &m.t[d]));
+        PetscCall(PetscSNPrintf(key, sizeof(key), "rotation_%c", (char)('x' + d)));
+        ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, key, PETSC_REAL, &m.rot[d]));
+        PetscCall(PetscSNPrintf(key, sizeof(key), "force_%c", (char)('x' + d)));
+        ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, key, PETSC_REAL, &m.force[d]));
+        PetscCall(PetscSNPrintf(key, sizeof(key), "moment_%c", (char)('x' + d)));
+        ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, key, PETSC_REAL, &m.mom[d]));
+      }
+      PetscCall(PetscViewerHDF5PopGroup(v));
+      continue;
+    }
     if (BodyGetRigidMotion(p->bodies[i], &m)) { /* its motion and force, no fields */
       PetscCall(PetscViewerHDF5PushGroup(v, group));
       ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "rigid", PETSC_INT, &(PetscInt){1}));
@@ -489,7 +506,7 @@ static void JSONForceControl(FILE *fp, Problem p)
   fprintf(fp, ",\n  \"force_control_solves\": %d,\n  \"force_control\": [", (int)p->res.controlSolves);
   for (PetscInt k = 0; k < p->fc.n; ++k) {
     const ForceControl *fc = &p->fc.c[k];
-    const PetscReal     L  = fc->motion && fc->c == 2 ? BodyRigidGetLength(p->bodies[fc->body]) : 1.0; /* a rotation: radians and moments */
+    const PetscReal     L  = fc->motion && BodyRigidIsRotation(p->bodies[fc->body], fc->c) ? BodyRigidGetLength(p->bodies[fc->body]) : 1.0; /* a rotation: radians and moments */
     fprintf(fp, "%s\n    {\"body\": \"%s\", \"group\": \"%s\", \"anchor\": %s, \"component\": \"%s\"", k ? "," : "", BodyGetName(p->bodies[fc->body]), ProblemControlGroup(p, k), fc->anchor ? "true" : "false", ProblemControlComponent(p, k));
     if (fc->motion) fprintf(fp, ", \"rigid\": true");
     ContactJSONKeyReal(fp, ", ", "force", fc->force * L);
@@ -525,6 +542,17 @@ static void JSONBodies(FILE *fp, Problem p, const BodyNodalFields F[])
     BodyRigidMotion   m;
     if (BodyGetRigidMotion(b, &m)) { /* its motion, and the contact's force and moment on it */
       fprintf(fp, "%s\n    \"%s\": {\"rigid\": true, \"dofs\": 0, \"nodes\": %d", i ? "," : "", BodyGetName(b), (int)m.nodes);
+      if (m.dim == 3) { /* the rotation vector, and the moment's three components */
+        ContactJSONKeyVector(fp, ", ", "translation", 3, m.t);
+        ContactJSONKeyVector(fp, ", ", "rotation", 3, m.rot);
+        ContactJSONKeyVector(fp, ", ", "centre", 3, m.centre);
+        ContactJSONKeyVector(fp, ", ", "force", 3, m.force);
+        ContactJSONKeyVector(fp, ", ", "moment", 3, m.mom);
+        fprintf(fp, ", \"mesh\": \"%s\"", BodyGetMeshFile(b));
+        ContactJSONKeyReal(fp, ", ", "h", BodyGetMeshSize(b));
+        fprintf(fp, "}");
+        continue;
+      }
       ContactJSONKeyPair(fp, ", ", "translation", m.t);
       ContactJSONKeyReal(fp, ", ", "rotation", m.theta);
       ContactJSONKeyPair(fp, ", ", "centre", m.centre);
