@@ -437,7 +437,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
   const PetscInt          n = 3 * (S->nb + M->nb);
-  PetscReal               xs[27], Xs[27], xm[27], K[54 * 54], W[FACE3D_MAX_NODES];
+  PetscReal               xs[27], Xs[27], xm[27], K[54 * 54], Ksum[54 * 54], W[FACE3D_MAX_NODES];
   PetscInt                idx[54];
 
   PetscFunctionBeginUser;
@@ -449,34 +449,41 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
     sf.x    = xs;
     ContactSurface3dFaceCoords(S, f, S->x, xs);
     ContactSurface3dFaceCoords(S, f, S->X, Xs);
-    for (PetscInt q = 0; q < E->np; ++q) {
-      const Segment3dPoint *pt = &E->pts[q];
-      const PetscInt        face = E->mf[pt->m];
-      PetscReal             X[3], T[6], nrm[3], x[3], e2[2] = {pt->eta[0], pt->eta[1]}, dS, lam = 0.0;
-      PetscBool             clamped, ok;
-      Face3d                mf;
-      Face3dEval(S->type, Xs, pt->xi, X, T, NULL);
-      dS = Face3dNormal(T, nrm) * pt->w;
-      Face3dWeights(S->type, &m->Adual[81 * f], pt->xi, W);
-      for (PetscInt i = 0; i < S->nb; ++i) {
-        const PetscInt j = S->fnodes[S->nb * f + i];
-        if (m->active[j] && m->gj[j] < 0) lam += m->kp * m->gj[j] * W[i] * dS;
-      }
-      if (lam == 0.0) continue;
+    for (PetscInt mm = 0; mm < E->nm; ++mm) { /* the points of each master face summed, added once */
+      const PetscInt face = E->mf[mm];
+      PetscBool      any  = PETSC_FALSE;
+      Face3d         mf;
       ContactSurface3dFaceCoords(M, face, M->x, xm);
       mf.type = M->type;
       mf.x    = xm;
-      Face3dEval(S->type, xs, pt->xi, x, NULL, NULL);
-      Face3dClosestPointOnFace(M->type, xm, x, SEGMENT3D_IN_TOL, e2, &clamped);
-      if (clamped) continue;
-      PetscCall(Mortar3dGapHessian(&sf, pt->xi, &mf, e2, K, &ok));
-      if (!ok) continue;
+      for (PetscInt q = 0; q < E->np; ++q) {
+        const Segment3dPoint *pt = &E->pts[q];
+        PetscReal             X[3], T[6], nrm[3], x[3], e2[2] = {pt->eta[0], pt->eta[1]}, dS, lam = 0.0;
+        PetscBool             clamped, ok;
+        if (pt->m != mm) continue;
+        Face3dEval(S->type, Xs, pt->xi, X, T, NULL);
+        dS = Face3dNormal(T, nrm) * pt->w;
+        Face3dWeights(S->type, &m->Adual[81 * f], pt->xi, W);
+        for (PetscInt i = 0; i < S->nb; ++i) {
+          const PetscInt j = S->fnodes[S->nb * f + i];
+          if (m->active[j] && m->gj[j] < 0) lam += m->kp * m->gj[j] * W[i] * dS;
+        }
+        if (lam == 0.0) continue;
+        Face3dEval(S->type, xs, pt->xi, x, NULL, NULL);
+        Face3dClosestPointOnFace(M->type, xm, x, SEGMENT3D_IN_TOL, e2, &clamped);
+        if (clamped) continue;
+        PetscCall(Mortar3dGapHessian(&sf, pt->xi, &mf, e2, K, &ok));
+        if (!ok) continue;
+        if (!any) PetscCall(PetscArrayzero(Ksum, n * n));
+        any = PETSC_TRUE;
+        for (PetscInt r = 0; r < n * n; ++r) Ksum[r] += lam * K[r];
+      }
+      if (!any) continue;
       for (PetscInt i = 0; i < S->nb; ++i)
         for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
       for (PetscInt i = 0; i < M->nb; ++i)
         for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
-      for (PetscInt r = 0; r < n * n; ++r) K[r] *= lam;
-      PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
+      PetscCall(MatSetValues(H, n, idx, n, idx, Ksum, ADD_VALUES));
     }
   }
   PetscFunctionReturn(0);
@@ -542,6 +549,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
         val[at] += E->dQ[i * E->ndof + c];
       }
     }
+    PetscCall(PetscSortIntWithScalarArray(n, idx, val)); /* rows' columns in order: MatSetValues finds each from the last */
     for (PetscInt a = 0; a < n; ++a)
       for (PetscInt b = 0; b < n; ++b) K[a * n + b] = m->kp * val[a] * val[b] / m->A[j];
     PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
