@@ -22,7 +22,7 @@ MPIEXEC = mpiexec --oversubscribe -n $(NP)
 # first: 14 s instead of 23 s on 2 cores)
 MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps meshes run test test-kernels check-figures check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy bench-solid3d clean
+.PHONY: all deps meshes run test test-kernels check-figures check-sanitize stress bench bench-quick bench-formulations bench-parallel bench-accuracy bench-solid3d bench-contact3d clean
 all: bin/contact
 
 $(DEPS_STAMP): scripts/install-deps.sh
@@ -153,6 +153,11 @@ bench-parallel: bin/contact meshes
 # in bench/solid3d/results.json): bench/solid3d/RESULTS.md
 bench-solid3d: bin/contact
 	$(PYTHON) scripts/bench_solid3d.py --out bench/solid3d --getfem
+# the quarter Hertz ball beside GetFEM (3 rounds interleaved), L-BFGS against
+# Newton on the 3D scenes, the cost of a Newton step against the linear
+# solve's by size (about 40 minutes): bench/contact3d/RESULTS.md
+bench-contact3d: bin/contact
+	$(PYTHON) scripts/bench_contact3d.py --side-by-side 3 --lmvm 3 --cost
 bench-quick: bin/contact meshes
 	$(PYTHON) scripts/bench.py --quick --out bench
 # mortar / gpts solve time at h = 0.06 and 0.0065 (1.07e6 dofs), interleaved,

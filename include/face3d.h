@@ -35,6 +35,7 @@ PetscBool Face3dContains(Face3dType, const PetscReal[2], PetscReal);
 void      Face3dWeightBasis(Face3dType, const PetscReal[2], PetscReal[]);
 void      Face3dWeights(Face3dType, const PetscReal[], const PetscReal[2], PetscReal[]);
 PetscBool Face3dClosestPoint(Face3dType, const PetscReal[], const PetscReal[3], PetscReal[2], PetscInt *);
+void      Face3dClosestBoundaryPoint(Face3dType, const PetscReal[], const PetscReal[3], PetscReal[2]);
 void      Face3dClosestPointOnFace(Face3dType, const PetscReal[], const PetscReal[3], PetscReal, PetscReal[2], PetscBool *);
 void      Face3dBox(Face3dType, const PetscReal[], PetscReal[6]);
 void      Face3dSubTriangles(Face3dType, PetscInt *, const PetscInt (**)[3]);

@@ -18,6 +18,7 @@ typedef struct {
   PetscReal xi[2], eta[2], w;
 } Segment3dPoint;
 
+#define SEGMENT3D_MAX_MASTER 64 /* master faces against one slave face, at most */
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
 #define SEGMENT3D_EDGE_MARGIN 0.0   /* a closest point this far inside the piece's master face is its (no other face tried) */
 

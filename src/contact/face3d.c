@@ -242,7 +242,7 @@ PetscBool Face3dClosestPoint(Face3dType t, const PetscReal x[], const PetscReal 
    (x(s) - p) . x'(s) = 0 (Gauss-Newton where x' . x' + (x - p) . x'' is not
    positive), clamped to the ends (the corners); the nearest of the edges.
    eta is the point's face parameters (the edges are straight in xi). */
-static void Face3dClosestBoundaryPoint(Face3dType t, const PetscReal x[], const PetscReal p[3], PetscReal eta[2])
+void Face3dClosestBoundaryPoint(Face3dType t, const PetscReal x[], const PetscReal p[3], PetscReal eta[2])
 {
   static const PetscInt tri[3][3] = {{0, 3, 1}, {1, 4, 2}, {2, 5, 0}}, quad[4][3] = {{0, 4, 1}, {1, 5, 2}, {2, 6, 3}, {3, 7, 0}};
   const PetscInt        ne = t == FACE3D_TRI6 ? 3 : 4;

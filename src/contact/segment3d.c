@@ -138,11 +138,18 @@ static inline PetscReal BoxDistance2(const PetscReal b[6], const PetscReal p[3])
    (Face3dBox: it holds the curved face) is no nearer than the best so far
    is not tried: the same owner as trying every face, at a cost that no
    longer grows with the faces given where few are near. */
+/* Squared distance from p to face m's point at e. */
+static inline PetscReal FaceDistance2(const Face3d *f, const PetscReal e[2], const PetscReal p[3], PetscReal X[3])
+{
+  Face3dEval(f->type, f->x, e, X, NULL, NULL);
+  return (X[0] - p[0]) * (X[0] - p[0]) + (X[1] - p[1]) * (X[1] - p[1]) + (X[2] - p[2]) * (X[2] - p[2]);
+}
+
 static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m0, const PetscReal p[3], PetscReal eta[2])
 {
-  PetscReal e[2] = {eta[0], eta[1]}, best = PETSC_MAX_REAL, X[3], Xb[3], be[2] = {0, 0}, size;
-  PetscBool clamped, bclamped = PETSC_FALSE;
-  PetscInt  owner = -1;
+  PetscReal e[2] = {eta[0], eta[1]}, best, X[3], Xb[3], be[2], size, bd[SEGMENT3D_MAX_MASTER];
+  PetscBool clamped, bclamped = PETSC_TRUE, deferred[SEGMENT3D_MAX_MASTER];
+  PetscInt  owner = m0, order[SEGMENT3D_MAX_MASTER], n = 0;
 
   Face3dClosestPointOnFace(master[m0].type, master[m0].x, p, SEGMENT3D_IN_TOL, e, &clamped);
   if (!clamped) {
@@ -150,26 +157,62 @@ static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], const PetscRe
     eta[1] = e[1];
     return m0;
   }
+  /* The owner is the face of least distance to its own closest point
+     (Face3dClosestPointOnFace), the first by index among equals. Found in
+     two passes that give the same face: first the faces' interior closest
+     points (Newton alone), nearest box first, then the boundary points of
+     the faces whose interior one lies outside them, each face skipped
+     where its box is farther than the best so far (no point in it is
+     nearer). m0's is its boundary point, found above. */
+  best  = FaceDistance2(&master[m0], e, p, Xb);
+  be[0] = e[0];
+  be[1] = e[1];
   for (PetscInt m = 0; m < nm; ++m) {
-    PetscReal d2 = 0.0;
-    if (m != m0 && BoxDistance2(&boxes[6 * m], p) >= best) continue; /* not nearer than the best: its closest point is in its box */
-    if (m == m0) {
-      e[0] = eta[0];
-      e[1] = eta[1];
-    } else e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
-    Face3dClosestPointOnFace(master[m].type, master[m].x, p, SEGMENT3D_IN_TOL, e, &clamped);
-    Face3dEval(master[m].type, master[m].x, e, X, NULL, NULL);
-    for (PetscInt d = 0; d < 3; ++d) d2 += (X[d] - p[d]) * (X[d] - p[d]);
-    if (d2 < best) {
+    deferred[m] = PETSC_FALSE;
+    if (m == m0) continue;
+    bd[m] = BoxDistance2(&boxes[6 * m], p);
+    if (bd[m] > best) continue;
+    order[n++] = m;
+  }
+  for (PetscInt i = 1; i < n; ++i) { /* by box distance, then index */
+    const PetscInt m = order[i];
+    PetscInt       k = i;
+    for (; k > 0 && (bd[order[k - 1]] > bd[m] || (bd[order[k - 1]] == bd[m] && order[k - 1] > m)); --k) order[k] = order[k - 1];
+    order[k] = m;
+  }
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscInt m = order[i];
+    PetscReal      d2;
+    if (bd[m] > best) break;
+    e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
+    if (!(Face3dClosestPoint(master[m].type, master[m].x, p, e, NULL) && Face3dContains(master[m].type, e, SEGMENT3D_IN_TOL))) {
+      deferred[m] = PETSC_TRUE;
+      continue;
+    }
+    d2 = FaceDistance2(&master[m], e, p, X);
+    if (d2 < best || (d2 == best && m < owner)) {
       best     = d2;
       owner    = m;
-      bclamped = clamped;
+      bclamped = PETSC_FALSE;
       be[0]    = e[0];
       be[1]    = e[1];
       for (PetscInt d = 0; d < 3; ++d) Xb[d] = X[d];
     }
   }
-  if (owner < 0) return -1;
+  for (PetscInt m = 0; m < nm; ++m) {
+    PetscReal d2;
+    if (!deferred[m] || bd[m] > best) continue;
+    Face3dClosestBoundaryPoint(master[m].type, master[m].x, p, e);
+    d2 = FaceDistance2(&master[m], e, p, X);
+    if (d2 < best || (d2 == best && m < owner)) {
+      best     = d2;
+      owner    = m;
+      bclamped = PETSC_TRUE;
+      be[0]    = e[0];
+      be[1]    = e[1];
+      for (PetscInt d = 0; d < 3; ++d) Xb[d] = X[d];
+    }
+  }
   eta[0] = be[0];
   eta[1] = be[1];
   if (!bclamped) return owner;
@@ -177,13 +220,10 @@ static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], const PetscRe
   for (PetscInt d = 0; d < 3; ++d) size += PetscSqr(master[owner].x[3 + d] - master[owner].x[d]);
   size = PetscSqrtReal(size);
   for (PetscInt m = 0; m < nm; ++m) {
-    PetscReal d2 = 0.0;
     if (m == owner || BoxDistance2(&boxes[6 * m], Xb) > PetscSqr(1e-8 * size)) continue;
     e[0] = e[1] = master[m].type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0;
     Face3dClosestPointOnFace(master[m].type, master[m].x, Xb, SEGMENT3D_IN_TOL, e, &clamped);
-    Face3dEval(master[m].type, master[m].x, e, X, NULL, NULL);
-    for (PetscInt d = 0; d < 3; ++d) d2 += (X[d] - Xb[d]) * (X[d] - Xb[d]);
-    if (PetscSqrtReal(d2) <= 1e-8 * size) return owner;
+    if (PetscSqrtReal(FaceDistance2(&master[m], e, Xb, X)) <= 1e-8 * size) return owner;
   }
   return -1;
 }
@@ -245,6 +285,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PetscReal      *boxes;
 
   PetscFunctionBeginUser;
+  PetscCheck(nm <= SEGMENT3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: %d at most", nm, SEGMENT3D_MAX_MASTER);
   PetscCall(PetscMalloc1(6 * nm + 1, &boxes));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
   Face3dSubTriangles(slave->type, &ns, &sub);
