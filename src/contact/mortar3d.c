@@ -45,9 +45,16 @@
    energy and gradient each rank integrates the slave faces it gave (its
    owned face points), the A_j, C_j, Q_j are summed over ranks, and each
    rank adds the gradient of its own faces, summed over ranks and added at
-   the owned nodes. The Hessian: every rank integrates every slave face and
-   adds the blocks G_j G_j^T of the nodes j = rank mod size (the simplest
-   correct scheme: each G_j needs all the faces around j).
+   the owned nodes. The Hessian: each G_j needs all the faces around j, so
+   node j is assembled by the lowest rank that gave a face around it, which
+   integrates its own faces and the others' around its nodes (a layer one
+   face wide along the borders between the ranks' parts of the surface:
+   Mortar3dSetUpHessianFaces); C_j, Q_j are summed over ranks from the
+   faces' owners as for the gradient. The search's queries are made from
+   the faces that share a node with those integrated. What stays whole on
+   every rank, O(surface) a rank: the surfaces' coordinates (gathered at
+   each evaluation), the sums of C_j, Q_j and the gradient over ranks, and
+   the master's tree (built over all its faces).
 
    Master faces near a slave face: a bounding-volume tree over the master
    faces' boxes (current coordinates), queried with the slave face's box
@@ -96,6 +103,11 @@ typedef struct {
   PetscReal       *boxes;        /* [master nf][6] */
   PetscReal       *xm;           /* [MORTAR3D_MAX_MASTER][27] work */
   Mortar3dFace    *own;          /* [slave nown] the last evaluation of this rank's faces */
+  PetscInt         nhess, *hessFaces; /* the slave faces this rank integrates for the Hessian (Mortar3dSetUpHessianFaces) */
+  PetscInt        *hessSlot;     /* [slave nf] a face's place in hessFaces, -1 if not there */
+  PetscInt        *nodeRank;     /* [slave nn] the rank that assembles node j's G_j G_j^T */
+  PetscInt        *faceRank;     /* [slave nf] the rank that gave face f (integrates it as slave) */
+  PetscInt         nquery, *queryFaces; /* the slave faces whose search decides integrate[] of the hessFaces (Mortar3dUpdate) */
   /* the results (post-processing) */
   PetscBool done;
   PetscReal force[2][3], pmax, pmin, maxPen, area;
@@ -267,7 +279,8 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
   }
   PetscCall(Mortar3dBuildTree(m));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
-  for (PetscInt f = 0; f < S->nf; ++f) {
+  for (PetscInt q = 0; q < m->nquery; ++q) {
+    const PetscInt  f = m->queryFaces[q];
     PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
@@ -432,7 +445,8 @@ static PetscErrorCode Mortar3dGapHessian(const Face3d *sf, const PetscReal xi[2]
 /* The exact Hessian's second-order part, k_p sum_j g_j d2Q_j = sum over the
    points of this rank's slave faces of lambda d2g, lambda = k_p sum_j g_j
    W_j dS over the face's nodes in contact (Mortar3dGapHessian; a point
-   behind a master edge, in the fan, keeps the Gauss-Newton part alone). */
+   behind a master edge, in the fan, keeps the Gauss-Newton part alone);
+   all[] holds the faces of m->hessFaces, this rank's among them. */
 static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace all[], Mat H)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
@@ -443,7 +457,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt      f = S->ownFaces[k];
-    const Mortar3dFace *E = &all[f];
+    const Mortar3dFace *E = &all[m->hessSlot[f]];
     Face3d              sf;
     sf.type = S->type;
     sf.x    = xs;
@@ -482,78 +496,163 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
   PetscFunctionReturn(0);
 }
 
-/* The Hessian: the Gauss-Newton part k_p G_j G_j^T / A_j of the nodes j in
-   contact that are this rank's (j mod size), every slave face integrated on
-   every rank (G_j sums the faces around j), and with the exact Hessian the
-   second-order part of this rank's faces (Mortar3dHessianSecondOrder). */
+/* Node j's Gauss-Newton block k_p G_j G_j^T / A_j into H: G_j's entries
+   summed over the faces around j (all[], by m->hessSlot), joined by their
+   index in the joined vector (held dofs left out); idx, val, K grown to
+   *cap as needed. */
+static PetscErrorCode Mortar3dAddNodeBlock(Mortar3d *m, PetscInt j, const Mortar3dFace all[], PetscInt *cap, PetscInt **idx, PetscReal **val, PetscReal **K, Mat H)
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  PetscInt                n = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) n += all[m->hessSlot[m->nodeFace[r]]].ndof;
+  if (n > *cap) {
+    PetscCall(PetscFree3(*idx, *val, *K));
+    *cap = n;
+    PetscCall(PetscMalloc3(n, idx, n, val, n * n, K));
+  }
+  n = 0;
+  for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) {
+    const PetscInt      f = m->nodeFace[r];
+    const Mortar3dFace *E = &all[m->hessSlot[f]];
+    PetscInt            i;
+    for (i = 0; i < S->nb && S->fnodes[S->nb * f + i] != j; ++i) {}
+    for (PetscInt c = 0; c < E->ndof; ++c) {
+      PetscInt side, k, big, at = -1;
+      Mortar3dColumn(m, f, E, c, &side, &k);
+      big = (side ? M : S)->big[k];
+      if (big < 0) continue;
+      for (PetscInt l = 0; l < n && at < 0; ++l)
+        if ((*idx)[l] == big) at = l;
+      if (at < 0) {
+        at         = n++;
+        (*idx)[at] = big;
+        (*val)[at] = 0.0;
+      }
+      (*val)[at] += E->dQ[i * E->ndof + c];
+    }
+  }
+  for (PetscInt a = 0; a < n; ++a)
+    for (PetscInt b = 0; b < n; ++b) (*K)[a * n + b] = m->kp * (*val)[a] * (*val)[b] / m->A[j];
+  PetscCall(MatSetValues(H, n, *idx, n, *idx, *K, ADD_VALUES));
+  PetscFunctionReturn(0);
+}
+
+/* The Hessian, its work shared by the ranks: each rank integrates its own
+   slave faces and the other ranks' faces around the nodes it assembles
+   (m->hessFaces: a layer one face wide along the borders between the
+   ranks' parts of the surface), C_j and Q_j are its own faces' summed
+   over ranks (as the gradient's), and it adds the Gauss-Newton block
+   k_p G_j G_j^T / A_j of the nodes in contact that are its (m->nodeRank),
+   each G_j whole from the faces around j; with the exact Hessian the
+   second-order part of its own faces (Mortar3dHessianSecondOrder). */
 static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
 {
   Mortar3d         *m = (Mortar3d *)t->data;
-  ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  ContactSurface3d *S = &m->S[m->s];
   Mortar3dFace     *all;
-  PetscMPIInt       size, rank;
+  PetscMPIInt       rank;
   PetscInt          cap = 0, *idx = NULL;
-  PetscReal        *val = NULL, *K = NULL;
+  PetscReal        *val = NULL, *K = NULL, *buf;
 
   PetscFunctionBeginUser;
   (void)bodies;
   PetscCall(PetscLogEventBegin(MORTAR3D_Hessian, 0, 0, 0, 0));
-  PetscCallMPI(MPI_Comm_size(t->comm, &size));
   PetscCallMPI(MPI_Comm_rank(t->comm, &rank));
   PetscCall(Mortar3dUpdate(m));
-  PetscCall(PetscCalloc1(S->nf, &all));
-  PetscCall(PetscArrayzero(m->C, S->nn));
-  PetscCall(PetscArrayzero(m->Q, S->nn));
-  for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_TRUE, m->exactHessian, &all[f]));
+  PetscCall(PetscCalloc1(m->nhess + 1, &all));
+  PetscCall(PetscCalloc1(2 * S->nn, &buf));
+  for (PetscInt k = 0; k < m->nhess; ++k) {
+    const PetscInt  f   = m->hessFaces[k];
+    const PetscBool own = (PetscBool)(m->faceRank[f] == rank);
+    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_TRUE, (PetscBool)(own && m->exactHessian), &all[k]));
+    if (!own) continue;
     for (PetscInt i = 0; i < S->nb; ++i) {
-      m->C[S->fnodes[S->nb * f + i]] += all[f].a[i];
-      m->Q[S->fnodes[S->nb * f + i]] += all[f].q[i];
+      buf[S->fnodes[S->nb * f + i]] += all[k].a[i];
+      buf[S->nn + S->fnodes[S->nb * f + i]] += all[k].q[i];
     }
   }
+  PetscCall(MPIU_Allreduce(buf, m->C, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(MPIU_Allreduce(buf + S->nn, m->Q, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(PetscFree(buf));
   Mortar3dNodalGaps(m);
-  for (PetscInt j = rank; j < S->nn; j += size) {
-    PetscInt n = 0;
-    if (!m->active[j] || !(m->gj[j] < 0)) continue;
-    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) n += all[m->nodeFace[r]].ndof;
-    if (n > cap) {
-      PetscCall(PetscFree3(idx, val, K));
-      cap = n;
-      PetscCall(PetscMalloc3(cap, &idx, cap, &val, cap * cap, &K));
-    }
-    n = 0;
-    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) { /* G_j's entries by joined index, summed over the faces */
-      const PetscInt      f = m->nodeFace[r];
-      const Mortar3dFace *E = &all[f];
-      PetscInt            i;
-      for (i = 0; i < S->nb && S->fnodes[S->nb * f + i] != j; ++i) {}
-      for (PetscInt c = 0; c < E->ndof; ++c) {
-        PetscInt side, k, big, at = -1;
-        Mortar3dColumn(m, f, E, c, &side, &k);
-        big = (side ? M : S)->big[k];
-        if (big < 0) continue;
-        for (PetscInt l = 0; l < n && at < 0; ++l)
-          if (idx[l] == big) at = l;
-        if (at < 0) {
-          at      = n++;
-          idx[at] = big;
-          val[at] = 0.0;
-        }
-        val[at] += E->dQ[i * E->ndof + c];
-      }
-    }
-    for (PetscInt a = 0; a < n; ++a)
-      for (PetscInt b = 0; b < n; ++b) K[a * n + b] = m->kp * val[a] * val[b] / m->A[j];
-    PetscCall(MatSetValues(H, n, idx, n, idx, K, ADD_VALUES));
-  }
+  for (PetscInt j = 0; j < S->nn; ++j)
+    if (m->nodeRank[j] == rank && m->active[j] && m->gj[j] < 0) PetscCall(Mortar3dAddNodeBlock(m, j, all, &cap, &idx, &val, &K, H));
   if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
-  for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscCall(PetscFree(all[f].dQ));
-    PetscCall(PetscFree(all[f].pts));
+  for (PetscInt k = 0; k < m->nhess; ++k) {
+    PetscCall(PetscFree(all[k].dQ));
+    PetscCall(PetscFree(all[k].pts));
   }
   PetscCall(PetscFree(all));
   PetscCall(PetscFree3(idx, val, K));
   PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Which rank does what for the Hessian (Mortar3dHessian), from the faces
+   each rank gave (gathered once): node j is assembled by the lowest rank
+   that gave a face around it (m->nodeRank), which then integrates every
+   face around it (m->hessFaces: its own and, where j's faces lie on more
+   than one rank, the others' next to the border); the search decides
+   which of those to integrate from the faces that share a node with them
+   (m->queryFaces, Mortar3dUpdate). One rank: every face, every node. */
+static PetscErrorCode Mortar3dSetUpHessianFaces(Mortar3d *m, MPI_Comm comm)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscMPIInt             size, rank, nown = (PetscMPIInt)S->nown, *cnt, *disp;
+  PetscInt               *allOwn, *mark, nshared = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Allgather(&nown, 1, MPI_INT, cnt, 1, MPI_INT, comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  PetscCheck(disp[size] == S->nf, comm, PETSC_ERR_PLIB, "contact pair %s: the ranks gave %d slave faces of %" PetscInt_FMT, m->spec.name, disp[size], S->nf);
+  PetscCall(PetscMalloc1(S->nf + 1, &allOwn));
+  PetscCallMPI(MPI_Allgatherv(S->ownFaces, nown, MPIU_INT, allOwn, cnt, disp, MPIU_INT, comm));
+  PetscCall(PetscMalloc3(S->nf, &m->faceRank, S->nf, &m->hessSlot, S->nn, &m->nodeRank));
+  PetscCall(PetscMalloc1(S->nf, &mark));
+  for (PetscMPIInt r = 0; r < size; ++r)
+    for (PetscInt k = disp[r]; k < disp[r + 1]; ++k) m->faceRank[allOwn[k]] = r;
+  PetscCall(PetscFree(allOwn));
+  PetscCall(PetscFree2(cnt, disp));
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    PetscInt lo = size, hi = -1;
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) {
+      lo = PetscMin(lo, m->faceRank[m->nodeFace[r]]);
+      hi = PetscMax(hi, m->faceRank[m->nodeFace[r]]);
+    }
+    m->nodeRank[j] = lo;
+    if (hi > lo) nshared++;
+  }
+  for (PetscInt f = 0; f < S->nf; ++f) mark[f] = m->faceRank[f] == rank;
+  for (PetscInt j = 0; j < S->nn; ++j)
+    if (m->nodeRank[j] == rank)
+      for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) mark[m->nodeFace[r]] = 1;
+  m->nhess = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) m->nhess += mark[f] ? 1 : 0;
+  PetscCall(PetscMalloc1(m->nhess + 1, &m->hessFaces));
+  m->nhess = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    m->hessSlot[f] = mark[f] ? m->nhess : -1;
+    if (mark[f]) m->hessFaces[m->nhess++] = f;
+  }
+  for (PetscInt k = 0; k < m->nhess; ++k) /* the faces sharing a node with a face integrated */
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt j = S->fnodes[S->nb * m->hessFaces[k] + i];
+      for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) mark[m->nodeFace[r]] = 1;
+    }
+  m->nquery = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) m->nquery += mark[f] ? 1 : 0;
+  PetscCall(PetscMalloc1(m->nquery + 1, &m->queryFaces));
+  m->nquery = 0;
+  for (PetscInt f = 0; f < S->nf; ++f)
+    if (mark[f]) m->queryFaces[m->nquery++] = f;
+  PetscCall(PetscFree(mark));
+  PetscCall(PetscInfo(NULL, "pair %s: %" PetscInt_FMT " slave nodes with faces on more than one rank; this rank integrates %" PetscInt_FMT " faces for the Hessian (%" PetscInt_FMT " its own), searches from %" PetscInt_FMT " of %" PetscInt_FMT "\n", m->spec.name, nshared, m->nhess, S->nown, m->nquery, S->nf));
   PetscFunctionReturn(0);
 }
 
@@ -649,6 +748,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
   PetscCall(Mortar3dSetUpSlave(m));
+  PetscCall(Mortar3dSetUpHessianFaces(m, t->comm));
   PetscFunctionReturn(0);
 }
 
@@ -1102,6 +1202,9 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscCall(PetscFree5(m->A, m->C, m->Q, m->gj, m->active));
   PetscCall(PetscFree2(m->nodeFaceStart, m->nodeFace));
   PetscCall(PetscFree2(m->nearNode, m->integrate));
+  PetscCall(PetscFree3(m->faceRank, m->hessSlot, m->nodeRank));
+  PetscCall(PetscFree(m->hessFaces));
+  PetscCall(PetscFree(m->queryFaces));
   if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
   if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
   PetscCall(PetscFree(m));
