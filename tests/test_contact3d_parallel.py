@@ -140,3 +140,82 @@ def test_hessian_ranks(scene, tmp_path):
         figure("dF", dF / P)
         assert dF <= bound
         assert cn["nodes_in_contact"] == c1["nodes_in_contact"]
+
+
+# The sliding scene: half of the Hertz ball (slide_ball.geo, R = 1, E 1000,
+# y >= 0) on a block 100 times stiffer (slide_block.geo, [-1, s + 1] x
+# [0, 1] x [-1, 0], refined along the path), y = 0 on rollers for both, the
+# block held at its bottom; the ball's top pushed down by 0.01 in the first
+# load stage (a/R = 0.10, as the quarter scene), then moved along x by
+# SLIDE / (STAGES - 1) a stage, frictionless.
+SLIDE_BALL, SLIDE_BLOCK = "tests/meshes/contact3d/slide_ball.geo", "tests/meshes/contact3d/slide_block.geo"
+SLIDE, STAGES = 0.4, 5
+
+
+def slide_args(h, slide=SLIDE, stages=STAGES):
+    xs = [0.0] + [slide * k / (stages - 1) for k in range(1, stages)]
+    top = ",".join(f"{x:.6g},-0.01" for x in xs)
+    return ["-bodies", "ball,block",
+            "-ball_geo", SLIDE_BALL, "-ball_geo_params", "rc=0.2,zc=0.1", "-ball_mesh_size", h, "-ball_E", E_BALL, "-ball_nu", NU,
+            "-ball_bc", "top,symy", "-ball_bc_top_components", "x,z", "-ball_bc_symy_components", "y",
+            "-ball_bc_top_values", top,
+            "-block_geo", SLIDE_BLOCK, "-block_geo_params", f"s={slide},rc=0.15", "-block_mesh_size", h, "-block_E", E_BASE, "-block_nu", NU,
+            "-block_bc", "bottom,symy", "-block_bc_symy_components", "y",
+            "-load_stages", stages, "-contact_pairs", "c", "-contact_c_surfaces", "ball:cap,block:top", "-output", "none"]
+
+
+GROWN = "a contact term left its pattern, H grows"
+
+
+WIDENED = "slid past the Hessian's pattern"
+
+
+@pytest.mark.roundoff
+def test_slide(tmp_path):
+    """Large sliding: the half ball pressed on the block, then slid along x
+    by SLIDE = 0.4, four times its contact radius a (0.102), in four load
+    stages, frictionless, on 1 and 2 ranks. On a half-space a frictionless
+    slide keeps the force of a prescribed indentation: the normal force P
+    (twice the reaction on the half ball's top, at each stage's end) stays
+    the first stage's within `slide_dP` = up to 7.1e-6 relative (bound
+    1e-3: the contact zone crosses a mesh it does not match), the lateral
+    force is `slide_Fx` = up to 1.3e-6 of it (bound 1e-3), and at the end a
+    and p0 are Hertz's for that P as on the quarter scene (`slide_a_error`
+    = +1.3 %, `slide_pmax_error` = -2.4 %; bounds 3 % and 5 %): no contact
+    lost. The ball leaves the Hessian's preallocated pattern (the master
+    faces met at the end are ten face sizes from those met at rest, past
+    -contact_mortar_pattern_margin 2): the pair widens the preallocation
+    (its -info line, Mortar3dGrowPattern) rather than letting PETSc grow it
+    entry by entry. 1 and 2 ranks agree at every stage to what the stops
+    leave (`slide_dF` = up to 1e-9 of P)."""
+    args = slide_args(0.04) + ["-info", ":sys"]
+    runs = {n: run_contact(args, tmp_path, ranks=n, name=f"slide{n}", timeout=1800) for n in (1, 2)}
+    for n, res in runs.items():
+        assert WIDENED in res.stdout and GROWN in res.stdout
+        s = res.summary
+        R = [st["reactions"]["ball:top"] for st in s["load_stages"]]
+        assert len(R) == STAGES
+        P = [2 * abs(r[2]) for r in R]
+        for k in range(1, STAGES):
+            assert abs(figure("slide_dP", P[k] / P[0] - 1)) <= 1e-3
+        for r in R:
+            assert figure("slide_Fx", abs(r[0] / r[2])) <= 1e-3
+        c = s["contact"]["c"]
+        assert c["surfaces"][0]["slave"]
+        Es = 1 / ((1 - NU**2) / E_BALL + (1 - NU**2) / E_BASE)
+        a = (3 * P[-1] * 1.0 / (4 * Es)) ** (1 / 3)
+        p0 = 3 * P[-1] / (2 * math.pi * a * a)
+        rows = c["contact_nodes"]["rows"]
+        spa = sum(r[3] * r[4] for r in rows)
+        am = math.sqrt(2.5 * sum(r[3] * r[4] * (r[0] ** 2 + r[1] ** 2) for r in rows) / spa)
+        assert abs(figure("slide_a_error", am / a - 1)) <= 0.03
+        assert abs(figure("slide_pmax_error", c["pmax"] / p0 - 1)) <= 0.05
+        assert SLIDE >= 3 * a
+    one, two = runs[1].summary, runs[2].summary
+    n = one["contact"]["c"]["surfaces"][0]["nodes"]
+    bound = 3 * n ** 0.5 * (one["gradient_norm"] + two["gradient_norm"])
+    for s1, s2 in zip(one["load_stages"], two["load_stages"]):
+        f1, f2 = s1["reactions"]["ball:top"], s2["reactions"]["ball:top"]
+        dF = max(abs(x - y) for x, y in zip(f1, f2))
+        figure("slide_dF", dF / abs(f1[2]))
+        assert dF <= bound + 1e-12 * abs(f1[2])

@@ -65,6 +65,7 @@
    at more than 45 degrees). Where a master much finer than the slave gives
    a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
 #include <petscviewerhdf5.h>
+#include <petsc/private/hashsetij.h>
 #include "mortar3d.h"
 #include "bvh.h"
 #include "outputwrite.h"
@@ -108,6 +109,7 @@ typedef struct {
   PetscInt        *nodeRank;     /* [slave nn] the rank that assembles node j's G_j G_j^T */
   PetscInt        *faceRank;     /* [slave nf] the rank that gave face f (integrates it as slave) */
   PetscInt         nquery, *queryFaces; /* the slave faces whose search decides integrate[] of the hessFaces (Mortar3dUpdate) */
+  PetscHSetIJ      covered;      /* (slave face, master face) pairs the Hessian's pattern holds (Mortar3dGetPattern, Mortar3dGrowPattern) */
   /* the results (post-processing) */
   PetscBool done;
   PetscReal force[2][3], pmax, pmin, maxPen, area;
@@ -539,6 +541,97 @@ static PetscErrorCode Mortar3dAddNodeBlock(Mortar3d *m, PetscInt j, const Mortar
   PetscFunctionReturn(0);
 }
 
+/* This rank's entries of the Hessian into H (all[]: the faces of
+   m->hessFaces, C_j, Q_j and g_j current): the Gauss-Newton blocks of the
+   nodes in contact it assembles and the second-order part of its faces. */
+static PetscErrorCode Mortar3dHessianAdd(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
+{
+  const ContactSurface3d *S   = &m->S[m->s];
+  PetscInt                cap = 0, *idx = NULL;
+  PetscReal              *val = NULL, *K = NULL;
+
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < S->nn; ++j)
+    if (m->nodeRank[j] == rank && m->active[j] && m->gj[j] < 0) PetscCall(Mortar3dAddNodeBlock(m, j, all, &cap, &idx, &val, &K, H));
+  if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  PetscCall(PetscFree3(idx, val, K));
+  PetscFunctionReturn(0);
+}
+
+/* Collective: whether every master face that a face of m->hessFaces meets
+   now is one its pattern holds (m->covered), on every rank. */
+static PetscErrorCode Mortar3dPatternCovers(Mortar3d *m, const Mortar3dFace all[], MPI_Comm comm, PetscBool *covers)
+{
+  PetscBool mine = PETSC_TRUE;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < m->nhess && mine; ++k)
+    for (PetscInt i = 0; i < all[k].nm && mine; ++i) {
+      PetscHashIJKey key;
+      PetscBool      has;
+      key.i = m->hessFaces[k];
+      key.j = all[k].mf[i];
+      PetscCall(PetscHSetIJHas(m->covered, key, &has));
+      if (!has) mine = PETSC_FALSE;
+    }
+  PetscCall(MPIU_Allreduce(&mine, covers, 1, MPIU_BOOL, MPI_LAND, comm));
+  PetscFunctionReturn(0);
+}
+
+/* Collective. The pair has slid past the pattern reserved for its Hessian
+   (Mortar3dGetPattern's margin): H's preallocation is made again, once, as
+   the union of its pattern and the entries this Hessian adds (counted by a
+   MATPREALLOCATOR), its values so far kept, in place of PETSc's growth
+   entry by entry, which copies the whole matrix at each row that overflows
+   (minutes for one Hessian at 2e4 dofs once a ball has slid by its contact
+   width). The master faces met join m->covered. */
+static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
+{
+  Mat      save, pre;
+  MPI_Comm comm;
+  PetscInt rstart, rend, mloc, nloc, M, N, rbs, cbs;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)H, &comm));
+  PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &save));
+  PetscCall(MatGetLocalSize(H, &mloc, &nloc));
+  PetscCall(MatGetSize(H, &M, &N));
+  PetscCall(MatGetBlockSizes(H, &rbs, &cbs));
+  PetscCall(MatCreate(comm, &pre));
+  PetscCall(MatSetSizes(pre, mloc, nloc, M, N));
+  PetscCall(MatSetBlockSizes(pre, rbs, cbs));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetUp(pre));
+  PetscCall(MatGetOwnershipRange(save, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; ++r) {
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscInt           nc;
+    PetscCall(MatGetRow(save, r, &nc, &cols, &vals));
+    PetscCall(MatSetValues(pre, 1, &r, nc, cols, vals, ADD_VALUES));
+    PetscCall(MatRestoreRow(save, r, &nc, &cols, &vals));
+  }
+  PetscCall(Mortar3dHessianAdd(m, all, rank, pre));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, H));
+  PetscCall(MatCopy(save, H, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatSetOption(H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatDestroy(&save));
+  for (PetscInt k = 0; k < m->nhess; ++k)
+    for (PetscInt i = 0; i < all[k].nm; ++i) {
+      PetscHashIJKey key;
+      key.i = m->hessFaces[k];
+      key.j = all[k].mf[i];
+      PetscCall(PetscHSetIJAdd(m->covered, key));
+    }
+  PetscCall(PetscInfo(NULL, "pair %s: slid past the Hessian's pattern (-contact_mortar_pattern_margin %g): its preallocation widened\n", m->spec.name, (double)m->patternMargin));
+  PetscFunctionReturn(0);
+}
+
 /* The Hessian, its work shared by the ranks: each rank integrates its own
    slave faces and the other ranks' faces around the nodes it assembles
    (m->hessFaces: a layer one face wide along the borders between the
@@ -553,8 +646,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
   ContactSurface3d *S = &m->S[m->s];
   Mortar3dFace     *all;
   PetscMPIInt       rank;
-  PetscInt          cap = 0, *idx = NULL;
-  PetscReal        *val = NULL, *K = NULL, *buf;
+  PetscReal        *buf;
 
   PetscFunctionBeginUser;
   (void)bodies;
@@ -577,15 +669,17 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
   PetscCall(MPIU_Allreduce(buf + S->nn, m->Q, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
   PetscCall(PetscFree(buf));
   Mortar3dNodalGaps(m);
-  for (PetscInt j = 0; j < S->nn; ++j)
-    if (m->nodeRank[j] == rank && m->active[j] && m->gj[j] < 0) PetscCall(Mortar3dAddNodeBlock(m, j, all, &cap, &idx, &val, &K, H));
-  if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  if (m->covered) {
+    PetscBool covers;
+    PetscCall(Mortar3dPatternCovers(m, all, t->comm, &covers));
+    if (!covers) PetscCall(Mortar3dGrowPattern(m, all, rank, H));
+  }
+  PetscCall(Mortar3dHessianAdd(m, all, rank, H));
   for (PetscInt k = 0; k < m->nhess; ++k) {
     PetscCall(PetscFree(all[k].dQ));
     PetscCall(PetscFree(all[k].pts));
   }
   PetscCall(PetscFree(all));
-  PetscCall(PetscFree3(idx, val, K));
   PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -1033,8 +1127,11 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
   PetscInt               *nearStart, *near, cap, *mfStart, *mfFace, *mark, *list, *markJ, *markF, *faces, nr = 0, nc = 0, ccap;
   PetscReal              *boxes;
   Bvh                     tree;
+  PetscHSetIJ             covered;
 
   PetscFunctionBeginUser;
+  if (!m->covered) PetscCall(PetscHSetIJCreate(&((Mortar3d *)t->data)->covered)); /* the pairs reserved, for Mortar3dHessian */
+  covered = m->covered;
   /* the master faces each slave face can meet, and their inverse */
   PetscCall(PetscMalloc1(6 * M->nf + 1, &boxes));
   for (PetscInt f = 0; f < M->nf; ++f) {
@@ -1059,6 +1156,12 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
     }
     PetscCall(PetscArraycpy(&near[nearStart[f]], found, nfound));
     nearStart[f + 1] = nearStart[f] + nfound;
+    for (PetscInt k = 0; k < nfound; ++k) {
+      PetscHashIJKey key;
+      key.i = f;
+      key.j = found[k];
+      PetscCall(PetscHSetIJAdd(covered, key));
+    }
   }
   PetscCall(BvhDestroy(&tree));
   PetscCall(PetscFree(boxes));
@@ -1205,6 +1308,7 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscCall(PetscFree3(m->faceRank, m->hessSlot, m->nodeRank));
   PetscCall(PetscFree(m->hessFaces));
   PetscCall(PetscFree(m->queryFaces));
+  if (m->covered) PetscCall(PetscHSetIJDestroy(&m->covered));
   if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
   if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
   PetscCall(PetscFree(m));
