@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""3D contact on 1 against 2 ranks: the quarter Hertz ball of
+"""3D contact on 1 against 2 ranks (bench/contact3d_ranks/RESULTS.md).
+
+The quarter Hertz ball of
 tests/test_contact3d.py (ball.geo on base.geo, Tet10 graded to h within 0.2
 of the contact point) refined to about 2e5 dofs, the iterative Newton step
 (CG + GAMG by nodes above -newton_iterative_dofs), run on 1 and 2 ranks in
