@@ -45,9 +45,16 @@
    energy and gradient each rank integrates the slave faces it gave (its
    owned face points), the A_j, C_j, Q_j are summed over ranks, and each
    rank adds the gradient of its own faces, summed over ranks and added at
-   the owned nodes. The Hessian: every rank integrates every slave face and
-   adds the blocks G_j G_j^T of the nodes j = rank mod size (the simplest
-   correct scheme: each G_j needs all the faces around j).
+   the owned nodes. The Hessian: each G_j needs all the faces around j, so
+   node j is assembled by the lowest rank that gave a face around it, which
+   integrates its own faces and the others' around its nodes (a layer one
+   face wide along the borders between the ranks' parts of the surface:
+   Mortar3dSetUpHessianFaces); C_j, Q_j are summed over ranks from the
+   faces' owners as for the gradient. The search's queries are made from
+   the faces that share a node with those integrated. What stays whole on
+   every rank, O(surface) a rank: the surfaces' coordinates (gathered at
+   each evaluation), the sums of C_j, Q_j and the gradient over ranks, and
+   the master's tree (built over all its faces).
 
    Master faces near a slave face: a bounding-volume tree over the master
    faces' boxes (current coordinates), queried with the slave face's box
@@ -58,6 +65,7 @@
    at more than 45 degrees). Where a master much finer than the slave gives
    a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
 #include <petscviewerhdf5.h>
+#include <petsc/private/hashsetij.h>
 #include "mortar3d.h"
 #include "bvh.h"
 #include "outputwrite.h"
@@ -97,6 +105,13 @@ typedef struct {
   PetscReal       *xm;           /* [MORTAR3D_MAX_MASTER][27] work */
   Mortar3dFace    *own;          /* [slave nown] the last evaluation of this rank's faces */
   PetscBool        ownFresh, ownDeriv, ownPts; /* own[] is at the current coordinates; with dQ; with its points */
+  PetscInt         nhess, *hessFaces; /* the slave faces this rank integrates for the Hessian (Mortar3dSetUpHessianFaces) */
+  PetscInt        *hessSlot;     /* [slave nf] a face's place in hessFaces, -1 if not there */
+  PetscInt        *nodeRank;     /* [slave nn] the rank that assembles node j's G_j G_j^T */
+  PetscInt        *faceRank;     /* [slave nf] the rank that gave face f (integrates it as slave) */
+  PetscInt         nquery, *queryFaces; /* the slave faces whose search decides integrate[] of the hessFaces (Mortar3dUpdate) */
+  PetscBool        counting;     /* Mortar3dGrowPattern: the Hessian added to a MATPREALLOCATOR (no rigid border) */
+  PetscHSetIJ      covered;      /* (slave face, master face) pairs the Hessian's pattern holds (Mortar3dGetPattern, Mortar3dGrowPattern) */
   /* the results (post-processing) */
   PetscBool done;
   PetscReal force[2][3], pmax, pmin, maxPen, area;
@@ -269,7 +284,8 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
   }
   PetscCall(Mortar3dBuildTree(m));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
-  for (PetscInt f = 0; f < S->nf; ++f) {
+  for (PetscInt q = 0; q < m->nquery; ++q) {
+    const PetscInt  f = m->queryFaces[q];
     PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
@@ -438,6 +454,7 @@ static PetscErrorCode Mortar3dGapHessian(const Face3d *sf, const PetscReal xi[2]
 static PetscErrorCode Mortar3dAddRigidBlock(Mortar3d *m, PetscInt n, const PetscInt idx[], const PetscScalar K[])
 {
   PetscFunctionBeginUser;
+  if (m->counting) PetscFunctionReturn(0);
   for (PetscInt k = 0; k < 2; ++k)
     if (!BodyHasCells(m->body[k])) PetscCall(BodyAddSurfaceHessian(m->body[k], m->S[k].x, n, idx, K));
   PetscFunctionReturn(0);
@@ -454,7 +471,8 @@ static PetscErrorCode Mortar3dAddHessianBlock(Mortar3d *m, Mat H, PetscInt n, co
 /* The exact Hessian's second-order part, k_p sum_j g_j d2Q_j = sum over the
    points of this rank's slave faces of lambda d2g, lambda = k_p sum_j g_j
    W_j dS over the face's nodes in contact (Mortar3dGapHessian; a point
-   behind a master edge, in the fan, keeps the Gauss-Newton part alone). */
+   behind a master edge, in the fan, keeps the Gauss-Newton part alone);
+   all[] holds the faces of m->hessFaces, this rank's among them. */
 static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace all[], Mat H)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
@@ -465,7 +483,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt      f = S->ownFaces[k];
-    const Mortar3dFace *E = &all[f];
+    const Mortar3dFace *E = &all[m->hessSlot[f]];
     Face3d              sf;
     sf.type = S->type;
     sf.x    = xs;
@@ -512,15 +530,15 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
 }
 
 /* The Gauss-Newton part k_p sum_j G_j G_j^T / A_j over the nodes j in
-   contact that are this rank's (j mod size), G_j's entries by joined index
-   summed over the faces around j. The blocks of neighbouring nodes overlap
+   contact this rank assembles (m->nodeRank), G_j's entries by joined index
+   summed over the faces around j (all[] by m->hessSlot). The blocks of neighbouring nodes overlap
    (a master node faces many slave nodes), so they are summed first, rows by
    chunks of a dense buffer over the dofs they touch (at most
    MORTAR3D_GN_BUFFER numbers), and each row of the sum is added once, its
    columns in order: one MatSetValues entry per nonzero of the sum, not one
    per node and pair of its dofs. */
 #define MORTAR3D_GN_BUFFER 4000000
-static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, PetscMPIInt size, Mat H)
+static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
   PetscInt                nj = 0, total = 0, nU = 0, *start, *idx, *loc, *U, *cols;
@@ -529,21 +547,21 @@ static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all
   const PetscBool         rigid = (PetscBool)(!BodyHasCells(m->body[0]) || !BodyHasCells(m->body[1]));
 
   PetscFunctionBeginUser;
-  for (PetscInt j = rank; j < S->nn; j += size) {
-    if (!m->active[j] || !(m->gj[j] < 0)) continue;
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    if (m->nodeRank[j] != rank || !m->active[j] || !(m->gj[j] < 0)) continue;
     ++nj;
-    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) total += all[m->nodeFace[r]].ndof;
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) total += all[m->hessSlot[m->nodeFace[r]]].ndof;
   }
   PetscCall(PetscMalloc5(nj + 1, &start, total + 1, &idx, total + 1, &val, total + 1, &loc, nj + 1, &w));
   start[0] = 0;
   nj       = 0;
-  for (PetscInt j = rank; j < S->nn; j += size) { /* G_j: its distinct joined indices, sorted, and values */
+  for (PetscInt j = 0; j < S->nn; ++j) { /* G_j: its distinct joined indices, sorted, and values */
     PetscInt *id = &idx[start[nj]], n = 0;
     PetscReal *v = &val[start[nj]];
-    if (!m->active[j] || !(m->gj[j] < 0)) continue;
+    if (m->nodeRank[j] != rank || !m->active[j] || !(m->gj[j] < 0)) continue;
     for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) {
       const PetscInt      f = m->nodeFace[r];
-      const Mortar3dFace *E = &all[f];
+      const Mortar3dFace *E = &all[m->hessSlot[f]];
       PetscInt            i;
       for (i = 0; i < S->nb && S->fnodes[S->nb * f + i] != j; ++i) {}
       for (PetscInt c = 0; c < E->ndof; ++c) {
@@ -617,48 +635,215 @@ static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all
   PetscFunctionReturn(0);
 }
 
-/* The Hessian: the Gauss-Newton part k_p G_j G_j^T / A_j of the nodes j in
-   contact that are this rank's (j mod size), every slave face integrated on
-   every rank (G_j sums the faces around j), and with the exact Hessian the
-   second-order part of this rank's faces (Mortar3dHessianSecondOrder). */
+/* This rank's entries of the Hessian into H (all[]: the faces of
+   m->hessFaces, C_j, Q_j and g_j current): the Gauss-Newton blocks of the
+   nodes in contact it assembles and the second-order part of its faces. */
+static PetscErrorCode Mortar3dHessianAdd(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Mortar3dAddGaussNewton(m, all, rank, H));
+  if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  PetscFunctionReturn(0);
+}
+
+/* Collective: whether every master face that a face of m->hessFaces meets
+   now is one its pattern holds (m->covered), on every rank. */
+static PetscErrorCode Mortar3dPatternCovers(Mortar3d *m, const Mortar3dFace all[], MPI_Comm comm, PetscBool *covers)
+{
+  PetscBool mine = PETSC_TRUE;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < m->nhess && mine; ++k)
+    for (PetscInt i = 0; i < all[k].nm && mine; ++i) {
+      PetscHashIJKey key;
+      PetscBool      has;
+      key.i = m->hessFaces[k];
+      key.j = all[k].mf[i];
+      PetscCall(PetscHSetIJHas(m->covered, key, &has));
+      if (!has) mine = PETSC_FALSE;
+    }
+  PetscCall(MPIU_Allreduce(&mine, covers, 1, MPIU_BOOL, MPI_LAND, comm));
+  PetscFunctionReturn(0);
+}
+
+/* Collective. The pair has slid past the pattern reserved for its Hessian
+   (Mortar3dGetPattern's margin): H's preallocation is made again, once, as
+   the union of its pattern and the entries this Hessian adds (counted by a
+   MATPREALLOCATOR), its values so far kept, in place of PETSc's growth
+   entry by entry, which copies the whole matrix at each row that overflows
+   (minutes for one Hessian at 2e4 dofs once a ball has slid by its contact
+   width). The master faces met join m->covered. */
+static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
+{
+  Mat      save, pre;
+  MPI_Comm comm;
+  PetscInt rstart, rend, mloc, nloc, M, N, rbs, cbs;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)H, &comm));
+  PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &save));
+  PetscCall(MatGetLocalSize(H, &mloc, &nloc));
+  PetscCall(MatGetSize(H, &M, &N));
+  PetscCall(MatGetBlockSizes(H, &rbs, &cbs));
+  PetscCall(MatCreate(comm, &pre));
+  PetscCall(MatSetSizes(pre, mloc, nloc, M, N));
+  PetscCall(MatSetBlockSizes(pre, rbs, cbs));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetUp(pre));
+  PetscCall(MatGetOwnershipRange(save, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; ++r) {
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscInt           nc;
+    PetscCall(MatGetRow(save, r, &nc, &cols, &vals));
+    PetscCall(MatSetValues(pre, 1, &r, nc, cols, vals, ADD_VALUES));
+    PetscCall(MatRestoreRow(save, r, &nc, &cols, &vals));
+  }
+  m->counting = PETSC_TRUE;
+  PetscCall(Mortar3dHessianAdd(m, all, rank, pre));
+  m->counting = PETSC_FALSE;
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, H));
+  PetscCall(MatCopy(save, H, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatSetOption(H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatDestroy(&save));
+  for (PetscInt k = 0; k < m->nhess; ++k)
+    for (PetscInt i = 0; i < all[k].nm; ++i) {
+      PetscHashIJKey key;
+      key.i = m->hessFaces[k];
+      key.j = all[k].mf[i];
+      PetscCall(PetscHSetIJAdd(m->covered, key));
+    }
+  PetscCall(PetscInfo(NULL, "pair %s: slid past the Hessian's pattern (-contact_mortar_pattern_margin %g): its preallocation widened\n", m->spec.name, (double)m->patternMargin));
+  PetscFunctionReturn(0);
+}
+
+/* The Hessian, its work shared by the ranks: each rank integrates its own
+   slave faces and the other ranks' faces around the nodes it assembles
+   (m->hessFaces: a layer one face wide along the borders between the
+   ranks' parts of the surface), C_j and Q_j are its own faces' summed
+   over ranks (as the gradient's), and it adds the Gauss-Newton block
+   k_p G_j G_j^T / A_j of the nodes in contact that are its (m->nodeRank),
+   each G_j whole from the faces around j; with the exact Hessian the
+   second-order part of its own faces (Mortar3dHessianSecondOrder). */
 static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
 {
   Mortar3d         *m = (Mortar3d *)t->data;
   ContactSurface3d *S = &m->S[m->s];
   Mortar3dFace     *all;
   PetscMPIInt       size, rank;
+  PetscReal        *buf;
   PetscBool         reuse;
 
   PetscFunctionBeginUser;
   (void)bodies;
   PetscCall(PetscLogEventBegin(MORTAR3D_Hessian, 0, 0, 0, 0));
-  PetscCallMPI(MPI_Comm_size(t->comm, &size));
   PetscCallMPI(MPI_Comm_rank(t->comm, &rank));
   PetscCall(Mortar3dUpdate(m));
-  PetscCall(PetscCalloc1(S->nf, &all));
-  PetscCall(PetscArrayzero(m->C, S->nn));
-  PetscCall(PetscArrayzero(m->Q, S->nn));
-  /* on one rank, where the last energy and gradient were evaluated at these coordinates, its faces */
-  reuse = (PetscBool)(size == 1 && S->nown == S->nf && m->ownFresh && m->ownDeriv && (m->ownPts || !m->exactHessian));
+  PetscCallMPI(MPI_Comm_size(t->comm, &size));
+  PetscCall(PetscCalloc1(m->nhess + 1, &all));
+  PetscCall(PetscCalloc1(2 * S->nn, &buf));
+  /* on one rank, where the last energy and gradient were evaluated at these coordinates, its faces (hessFaces = ownFaces = all) */
+  reuse = (PetscBool)(size == 1 && m->nhess == S->nf && S->nown == S->nf && m->ownFresh && m->ownDeriv && (m->ownPts || !m->exactHessian));
   if (reuse)
-    for (PetscInt k = 0; k < S->nown; ++k) all[S->ownFaces[k]] = m->own[k];
-  for (PetscInt f = 0; f < S->nf; ++f) {
-    if (!reuse) PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_TRUE, m->exactHessian, &all[f]));
+    for (PetscInt k = 0; k < S->nown; ++k) all[k] = m->own[k];
+  for (PetscInt k = 0; k < m->nhess; ++k) {
+    const PetscInt  f   = m->hessFaces[k];
+    const PetscBool own = (PetscBool)(m->faceRank[f] == rank);
+    if (!reuse) PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_TRUE, (PetscBool)(own && m->exactHessian), &all[k]));
+    if (!own) continue;
     for (PetscInt i = 0; i < S->nb; ++i) {
-      m->C[S->fnodes[S->nb * f + i]] += all[f].a[i];
-      m->Q[S->fnodes[S->nb * f + i]] += all[f].q[i];
+      buf[S->fnodes[S->nb * f + i]] += all[k].a[i];
+      buf[S->nn + S->fnodes[S->nb * f + i]] += all[k].q[i];
     }
   }
+  PetscCall(MPIU_Allreduce(buf, m->C, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(MPIU_Allreduce(buf + S->nn, m->Q, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(PetscFree(buf));
   Mortar3dNodalGaps(m);
-  PetscCall(Mortar3dAddGaussNewton(m, all, rank, size, H));
-  if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  if (m->covered) {
+    PetscBool covers;
+    PetscCall(Mortar3dPatternCovers(m, all, t->comm, &covers));
+    if (!covers) PetscCall(Mortar3dGrowPattern(m, all, rank, H));
+  }
+  PetscCall(Mortar3dHessianAdd(m, all, rank, H));
   if (!reuse)
-    for (PetscInt f = 0; f < S->nf; ++f) {
-      PetscCall(PetscFree(all[f].dQ));
-      PetscCall(PetscFree(all[f].pts));
+    for (PetscInt k = 0; k < m->nhess; ++k) {
+      PetscCall(PetscFree(all[k].dQ));
+      PetscCall(PetscFree(all[k].pts));
     }
   PetscCall(PetscFree(all));
   PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Which rank does what for the Hessian (Mortar3dHessian), from the faces
+   each rank gave (gathered once): node j is assembled by the lowest rank
+   that gave a face around it (m->nodeRank), which then integrates every
+   face around it (m->hessFaces: its own and, where j's faces lie on more
+   than one rank, the others' next to the border); the search decides
+   which of those to integrate from the faces that share a node with them
+   (m->queryFaces, Mortar3dUpdate). One rank: every face, every node. */
+static PetscErrorCode Mortar3dSetUpHessianFaces(Mortar3d *m, MPI_Comm comm)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscMPIInt             size, rank, nown = (PetscMPIInt)S->nown, *cnt, *disp;
+  PetscInt               *allOwn, *mark, nshared = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMalloc2(size, &cnt, size + 1, &disp));
+  PetscCallMPI(MPI_Allgather(&nown, 1, MPI_INT, cnt, 1, MPI_INT, comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  PetscCheck(disp[size] == S->nf, comm, PETSC_ERR_PLIB, "contact pair %s: the ranks gave %d slave faces of %" PetscInt_FMT, m->spec.name, disp[size], S->nf);
+  PetscCall(PetscMalloc1(S->nf + 1, &allOwn));
+  PetscCallMPI(MPI_Allgatherv(S->ownFaces, nown, MPIU_INT, allOwn, cnt, disp, MPIU_INT, comm));
+  PetscCall(PetscMalloc3(S->nf, &m->faceRank, S->nf, &m->hessSlot, S->nn, &m->nodeRank));
+  PetscCall(PetscMalloc1(S->nf, &mark));
+  for (PetscMPIInt r = 0; r < size; ++r)
+    for (PetscInt k = disp[r]; k < disp[r + 1]; ++k) m->faceRank[allOwn[k]] = r;
+  PetscCall(PetscFree(allOwn));
+  PetscCall(PetscFree2(cnt, disp));
+  for (PetscInt j = 0; j < S->nn; ++j) {
+    PetscInt lo = size, hi = -1;
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) {
+      lo = PetscMin(lo, m->faceRank[m->nodeFace[r]]);
+      hi = PetscMax(hi, m->faceRank[m->nodeFace[r]]);
+    }
+    m->nodeRank[j] = lo;
+    if (hi > lo) nshared++;
+  }
+  for (PetscInt f = 0; f < S->nf; ++f) mark[f] = m->faceRank[f] == rank;
+  for (PetscInt j = 0; j < S->nn; ++j)
+    if (m->nodeRank[j] == rank)
+      for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) mark[m->nodeFace[r]] = 1;
+  m->nhess = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) m->nhess += mark[f] ? 1 : 0;
+  PetscCall(PetscMalloc1(m->nhess + 1, &m->hessFaces));
+  m->nhess = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    m->hessSlot[f] = mark[f] ? m->nhess : -1;
+    if (mark[f]) m->hessFaces[m->nhess++] = f;
+  }
+  for (PetscInt k = 0; k < m->nhess; ++k) /* the faces sharing a node with a face integrated */
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt j = S->fnodes[S->nb * m->hessFaces[k] + i];
+      for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1]; ++r) mark[m->nodeFace[r]] = 1;
+    }
+  m->nquery = 0;
+  for (PetscInt f = 0; f < S->nf; ++f) m->nquery += mark[f] ? 1 : 0;
+  PetscCall(PetscMalloc1(m->nquery + 1, &m->queryFaces));
+  m->nquery = 0;
+  for (PetscInt f = 0; f < S->nf; ++f)
+    if (mark[f]) m->queryFaces[m->nquery++] = f;
+  PetscCall(PetscFree(mark));
+  PetscCall(PetscInfo(NULL, "pair %s: %" PetscInt_FMT " slave nodes with faces on more than one rank; this rank integrates %" PetscInt_FMT " faces for the Hessian (%" PetscInt_FMT " its own), searches from %" PetscInt_FMT " of %" PetscInt_FMT "\n", m->spec.name, nshared, m->nhess, S->nown, m->nquery, S->nf));
   PetscFunctionReturn(0);
 }
 
@@ -710,9 +895,9 @@ PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
   PetscFunctionBeginUser;
   *margin = 2.0;
   PetscOptionsBegin(comm, NULL, "3D mortar contact options", NULL);
-  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it, at rest (the solve's sliding; beyond it the Hessian grows, slower)", NULL, *margin, margin, NULL));
+  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it, at rest (the solve's sliding; beyond it the Hessian's preallocation is widened; negative: the faces' own boxes shrunk)", NULL, *margin, margin, NULL));
   PetscOptionsEnd();
-  PetscCheck(!PetscIsInfOrNanReal(*margin) && *margin >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number >= 0, got %g", (double)*margin);
+  PetscCheck(!PetscIsInfOrNanReal(*margin), comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number, got %g", (double)*margin);
   PetscFunctionReturn(0);
 }
 
@@ -785,6 +970,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
   PetscCall(Mortar3dSetUpSlave(m));
+  PetscCall(Mortar3dSetUpHessianFaces(m, t->comm));
   PetscFunctionReturn(0);
 }
 
@@ -1069,8 +1255,11 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
   PetscInt               *nearStart, *near, cap, *mfStart, *mfFace, *mark, *list, *markJ, *markF, *faces, nr = 0, nc = 0, ccap;
   PetscReal              *boxes;
   Bvh                     tree;
+  PetscHSetIJ             covered;
 
   PetscFunctionBeginUser;
+  if (!m->covered) PetscCall(PetscHSetIJCreate(&((Mortar3d *)t->data)->covered)); /* the pairs reserved, for Mortar3dHessian */
+  covered = m->covered;
   /* the master faces each slave face can meet, and their inverse */
   PetscCall(PetscMalloc1(6 * M->nf + 1, &boxes));
   for (PetscInt f = 0; f < M->nf; ++f) {
@@ -1095,6 +1284,12 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
     }
     PetscCall(PetscArraycpy(&near[nearStart[f]], found, nfound));
     nearStart[f + 1] = nearStart[f] + nfound;
+    for (PetscInt k = 0; k < nfound; ++k) {
+      PetscHashIJKey key;
+      key.i = f;
+      key.j = found[k];
+      PetscCall(PetscHSetIJAdd(covered, key));
+    }
   }
   PetscCall(BvhDestroy(&tree));
   PetscCall(PetscFree(boxes));
@@ -1241,6 +1436,10 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscCall(PetscFree5(m->A, m->C, m->Q, m->gj, m->active));
   PetscCall(PetscFree2(m->nodeFaceStart, m->nodeFace));
   PetscCall(PetscFree2(m->nearNode, m->integrate));
+  PetscCall(PetscFree3(m->faceRank, m->hessSlot, m->nodeRank));
+  PetscCall(PetscFree(m->hessFaces));
+  PetscCall(PetscFree(m->queryFaces));
+  if (m->covered) PetscCall(PetscHSetIJDestroy(&m->covered));
   if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
   if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
   PetscCall(PetscFree(m));
