@@ -35,7 +35,7 @@ PetscErrorCode ContactSurface3dUpdateCoordinates(ContactSurface3d *, Body, Petsc
 PetscErrorCode ContactSurface3dAddGradient(ContactSurface3d *, Body);
 /* The nodes on the border of the surface (bnd[nn], to free): of the edges one face alone has. */
 PetscErrorCode ContactSurface3dBorderNodes(const ContactSurface3d *, PetscBool **);
-/* Whether a border node of A (bndA) has its closest point of B within tol and not on B's border (bndB). */
+/* Whether a border node of A (bndA), within tol of A's least distance to B, has its closest point inside B, away from its border (bndB). */
 PetscErrorCode ContactSurface3dEndsOn(const ContactSurface3d *, const PetscBool[], const ContactSurface3d *, const PetscBool[], PetscReal, PetscBool *);
 /* Face f's node coordinates xf[3 nb] from c (S->X or S->x). */
 static inline void ContactSurface3dFaceCoords(const ContactSurface3d *S, PetscInt f, const PetscReal c[], PetscReal xf[])

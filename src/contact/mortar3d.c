@@ -901,20 +901,6 @@ PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
   PetscFunctionReturn(0);
 }
 
-/* The diagonal of the surface's box (reference). */
-static PetscReal Mortar3dSurfaceSize(const ContactSurface3d *S)
-{
-  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL}, d2 = 0.0;
-
-  for (PetscInt v = 0; v < S->nn; ++v)
-    for (PetscInt d = 0; d < 3; ++d) {
-      lo[d] = PetscMin(lo[d], S->X[3 * v + d]);
-      hi[d] = PetscMax(hi[d], S->X[3 * v + d]);
-    }
-  for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(hi[d] - lo[d]);
-  return PetscSqrtReal(d2);
-}
-
 /* -contact_mortar_slave: first, second or auto (both is 2D's alone). auto,
    as in 2D (mortar.c, MortarChooseSlaves): a surface that ends on the
    other (a punch's face on a block: its border is where the pressure is
@@ -941,7 +927,7 @@ static PetscErrorCode Mortar3dChooseSlave(Mortar3d *m)
   else {
     PetscBool *bnd[2], on[2];
     for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dBorderNodes(&m->S[k], &bnd[k]));
-    for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dEndsOn(&m->S[k], bnd[k], &m->S[1 - k], bnd[1 - k], 0.05 * Mortar3dSurfaceSize(&m->S[k]), &on[k]));
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dEndsOn(&m->S[k], bnd[k], &m->S[1 - k], bnd[1 - k], 0.05 * m->S[k].hmin, &on[k]));
     for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscFree(bnd[k]));
     for (PetscInt k = 0; k < 2; ++k) on[k] = (PetscBool)(on[k] && BodyHasCells(m->body[0]) && BodyHasCells(m->body[1])); /* a rigid face is the master */
     if (on[0] != on[1]) m->s = on[0] ? 0 : 1;

@@ -139,75 +139,69 @@ PetscErrorCode ContactSurface3dBorderNodes(const ContactSurface3d *S, PetscBool 
   PetscFunctionReturn(0);
 }
 
-/* Which border node of face f (a corner or an edge's mid node, by bnd) the
-   point eta of its parameters lies on, within tol of the face's edges: -1
-   inside the face; else the node of that edge that tells whether it is a
-   border (the corner at a corner, else the edge's mid node). */
-static PetscInt Surface3dEdgeNodeAt(const ContactSurface3d *S, PetscInt f, const PetscReal eta[2], PetscReal tol)
+/* The closest point y of surface B to p (reference coordinates), over the
+   faces whose box (box[6 f]) is nearer than the best so far; its distance. */
+static PetscReal Surface3dClosest(const ContactSurface3d *B, const PetscReal box[], const PetscReal p[3], PetscReal y[3])
 {
-  const PetscInt *fn = &S->fnodes[S->nb * f];
-  PetscBool       on[4];
-  PetscInt        nc, first = -1, n = 0;
+  PetscReal best = PETSC_MAX_REAL, xf[3 * FACE3D_MAX_NODES];
 
-  if (S->type == FACE3D_TRI6) { /* edges 0-1 (eta_2 = 0), 1-2 (eta_1 + eta_2 = 1), 2-0 (eta_1 = 0) */
-    nc    = 3;
-    on[0] = (PetscBool)(PetscAbsReal(eta[1]) <= tol);
-    on[1] = (PetscBool)(PetscAbsReal(eta[0] + eta[1] - 1.0) <= tol);
-    on[2] = (PetscBool)(PetscAbsReal(eta[0]) <= tol);
-  } else { /* edges 0-1 (eta_2 = -1), 1-2 (eta_1 = 1), 2-3 (eta_2 = 1), 3-0 (eta_1 = -1) */
-    nc    = 4;
-    on[0] = (PetscBool)(PetscAbsReal(eta[1] + 1.0) <= tol);
-    on[1] = (PetscBool)(PetscAbsReal(eta[0] - 1.0) <= tol);
-    on[2] = (PetscBool)(PetscAbsReal(eta[1] - 1.0) <= tol);
-    on[3] = (PetscBool)(PetscAbsReal(eta[0] + 1.0) <= tol);
-  }
-  for (PetscInt e = 0; e < nc; ++e)
-    if (on[e]) {
-      if (first < 0) first = e;
-      ++n;
+  for (PetscInt f = 0; f < B->nf; ++f) {
+    const PetscReal *b = &box[6 * f];
+    PetscReal        eta[2] = {B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0, B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0}, z[3], d2 = 0.0;
+    PetscBool        clamped;
+    for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(PetscMax(0.0, PetscMax(b[d] - p[d], p[d] - b[3 + d])));
+    if (d2 >= best) continue;
+    d2 = 0.0;
+    ContactSurface3dFaceCoords(B, f, B->X, xf);
+    Face3dClosestPointOnFace(B->type, xf, p, 0.0, eta, &clamped);
+    Face3dEval(B->type, xf, eta, z, NULL, NULL);
+    for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(z[d] - p[d]);
+    if (d2 < best) {
+      best = d2;
+      for (PetscInt d = 0; d < 3; ++d) y[d] = z[d];
     }
-  if (!n) return -1;
-  if (n == 1) return fn[nc + first];
-  for (PetscInt e = 0; e < nc; ++e) /* a corner: the one the two edges share */
-    if (on[e] && on[(e + 1) % nc]) return fn[(e + 1) % nc];
-  return fn[nc + first];
+  }
+  return PetscSqrtReal(best);
 }
 
 /* Whether surface A ends on surface B, as 2D's rule has it (mortar.c,
-   MortarEndsOn): a node of A's border (bnd, ContactSurface3dBorderNodes)
-   whose closest point of B, in the reference coordinates, is within tol of
-   it and inside B: not on B's border (two surfaces that end flush, or are
-   cut by the same symmetry plane, do not end on each other). */
+   MortarEndsOn), in the reference configuration: a node of A's border
+   (bndA, ContactSurface3dBorderNodes) as near B as A comes anywhere
+   (within tol of the least distance of A's nodes to B: a punch's face,
+   flat on the block, all of it), its closest point inside B, farther than
+   half B's longest face chord from every node of B's border (bndB). Two
+   surfaces that end flush, or that the same symmetry plane cuts, do not end
+   on each other (a curved face's closest point to a point on the cut may
+   lie a little inside it), nor does a block's surface whose border lies
+   under a ball's cap that touches it at one point. */
 PetscErrorCode ContactSurface3dEndsOn(const ContactSurface3d *A, const PetscBool bndA[], const ContactSurface3d *B, const PetscBool bndB[], PetscReal tol, PetscBool *ends)
 {
-  PetscReal xf[3 * FACE3D_MAX_NODES];
+  PetscReal *box, *dist, *yb, gmin = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
   *ends = PETSC_FALSE;
+  PetscCall(PetscMalloc3(6 * B->nf, &box, A->nn, &dist, 3 * A->nn, &yb));
+  for (PetscInt f = 0; f < B->nf; ++f) {
+    PetscReal xf[3 * FACE3D_MAX_NODES];
+    ContactSurface3dFaceCoords(B, f, B->X, xf);
+    Face3dBox(B->type, xf, &box[6 * f]);
+  }
+  for (PetscInt v = 0; v < A->nn; ++v) {
+    dist[v] = Surface3dClosest(B, box, &A->X[3 * v], &yb[3 * v]);
+    gmin    = PetscMin(gmin, dist[v]);
+  }
   for (PetscInt v = 0; v < A->nn && !*ends; ++v) {
-    PetscReal best = PETSC_MAX_REAL, etab[2] = {0, 0};
-    PetscInt  fb   = -1;
-    if (!bndA[v]) continue;
-    for (PetscInt f = 0; f < B->nf; ++f) {
-      PetscReal eta[2] = {B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0, B->type == FACE3D_TRI6 ? 1.0 / 3.0 : 0.0}, y[3], d2 = 0.0;
-      PetscBool clamped;
-      ContactSurface3dFaceCoords(B, f, B->X, xf);
-      Face3dClosestPointOnFace(B->type, xf, &A->X[3 * v], 0.0, eta, &clamped);
-      Face3dEval(B->type, xf, eta, y, NULL, NULL);
-      for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(y[d] - A->X[3 * v + d]);
-      if (d2 < best) {
-        best    = d2;
-        fb      = f;
-        etab[0] = eta[0];
-        etab[1] = eta[1];
-      }
+    PetscReal near = PETSC_MAX_REAL;
+    if (!bndA[v] || dist[v] > gmin + tol) continue;
+    for (PetscInt w = 0; w < B->nn; ++w) {
+      PetscReal d2 = 0.0;
+      if (!bndB[w]) continue;
+      for (PetscInt d = 0; d < 3; ++d) d2 += PetscSqr(B->X[3 * w + d] - yb[3 * v + d]);
+      near = PetscMin(near, d2);
     }
-    if (fb < 0 || PetscSqrtReal(best) > tol) continue;
-    {
-      const PetscInt at = Surface3dEdgeNodeAt(B, fb, etab, 1e-6);
-      if (at >= 0 && bndB[at]) continue; /* at or past B's border */
-    }
+    if (PetscSqrtReal(near) <= 0.5 * B->hmax) continue; /* at or past B's border */
     *ends = PETSC_TRUE;
   }
+  PetscCall(PetscFree3(box, dist, yb));
   PetscFunctionReturn(0);
 }

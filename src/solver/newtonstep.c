@@ -136,8 +136,11 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
    results do not move); a 3D scene takes CG + GAMG above
    -newton_iterative_dofs, where a factorisation's fill, growing as N^(4/3)
    in 3D against the multigrid's N, costs more time and memory
-   (bench/solid3d/RESULTS.md: the crossing on elastic blocks). Said in one
-   line where it is chosen by size. */
+   (bench/solid3d/RESULTS.md: the crossing on elastic blocks). A 3D scene
+   with contact pairs keeps the direct step at any size: the penalty's
+   stiffness (k_p = 1000 E* over h) leaves CG + GAMG without convergence (the
+   quarter Hertz ball at 66k dofs: no step in 32 min, the direct step 19 s,
+   bench/contact3d/NOTES.md). Said in one line. */
 static PetscErrorCode ProblemChooseNewtonStep(Problem p)
 {
   PetscInt N;
@@ -145,6 +148,11 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   PetscFunctionBeginUser;
   if (p->cfg->newton.iterativeSet || !p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
+  if (p->nterms > 0) {
+    p->cfg->newton.iterative = PETSC_FALSE;
+    PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation (3D, %" PetscInt_FMT " dofs, with contact: CG + GAMG does not converge under the penalty; -newton_iterative 1 forces it)\n", N));
+    PetscFunctionReturn(0);
+  }
   p->cfg->newton.iterative = (PetscBool)(N > p->cfg->newton.iterativeDofs);
   PetscCall(PetscPrintf(p->comm, "Newton step: %s (3D, %" PetscInt_FMT " dofs, %s -newton_iterative_dofs %" PetscInt_FMT "; -newton_iterative 0 or 1 forces either)\n",
                         p->cfg->newton.iterative ? "CG + GAMG" : "direct factorisation", N, p->cfg->newton.iterative ? "above" : "at most", p->cfg->newton.iterativeDofs));
@@ -193,7 +201,7 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   o->iterativeTwoLevels = PETSC_TRUE;
   o->iterativeCycle     = PC_MG_CYCLE_W;
   PetscOptionsBegin(comm, NULL, "Newton step options", NULL);
-  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes direct; 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
+  PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes and 3D scenes with contact direct; other 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
   PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, o->iterativeDofs, &o->iterativeDofs, NULL));
   PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies, CG + GAMG: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, o->iterativeNodal, &o->iterativeNodal, NULL));
   PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, NULL));
