@@ -2,7 +2,7 @@
 """A rubber ball squeezed between two rigid plates, solved by GetFEM 5.4
 (Debian python3-getfem), an independent code, on its own mesh: the force at
 squeezes of 10, 20 and 30 % of the diameter to compare with ours
-(tests/test_squeeze3d.py, tests/data/getfem-squeeze3d.json).
+(tests/test_squeeze3d.py, tests/data/getfem-squeeze3d-h*.json).
 
 The problem: a ball of radius R = 1 (E = 1, nu = 0.45), an eighth of it
 (x, y, z >= 0: tests/meshes/contact3d/eighthball.geo, meshed here by Gmsh
@@ -26,7 +26,12 @@ weights) and its plate (an elastic block far stiffer than the ball)
 against a penalty at GetFEM's quadrature points of the cap (its
 IM_TETRAHEDRON(ORDER) faces' rule) under a rigid plane.
 
-    /usr/bin/python3 scripts/getfem_squeeze3d.py --h 0.075 --penalty 1.4e4 -o tests/data/getfem-squeeze3d.json
+    /usr/bin/python3 scripts/getfem_squeeze3d.py --h 0.075 --hf 0.15 --penalty 23398.91802171221 \\
+        --steps 6 -o tests/data/getfem-squeeze3d-h0.075.json        # its finer mesh: 13 minutes
+    /usr/bin/python3 scripts/getfem_squeeze3d.py --h 0.1 --hf 0.2 --penalty 23398.91802171221 \\
+        --steps 6 -o tests/data/getfem-squeeze3d-h0.1.json          # the scene's mesh: 7 minutes
+
+(the penalty the scene's k_p, its JSON's contact.squeeze.penalty).
 
 (Debian's python3-getfem is for the system's python3, /usr/bin/python3.)
 """
