@@ -53,8 +53,8 @@ def path_arrays(summary):
 
 
 def work(d, F, rule):
-    """The reaction's work from rest to each recorded state whose index is
-    even (trapezoid) or to every second one (Simpson's rule over pairs of
+    """The reaction's work from rest to every recorded state (the
+    trapezoid rule) or to every second one (Simpson's rule over pairs of
     increments), as {index: work}."""
     if rule == "trapezoid":
         w = np.concatenate([[0.0], np.cumsum(0.5 * (F[1:] + F[:-1]) * np.diff(d))])
