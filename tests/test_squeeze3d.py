@@ -68,6 +68,7 @@ def work(d, F, rule):
 
 
 def getfem_reference(h):
+    """GetFEM's stored run at the mesh size h: ({d: its increment}, the run)."""
     with open(DATA / f"getfem-squeeze3d-h{h:g}.json") as f:
         g = json.load(f)
     return {round(st["d"], 12): st for st in g["steps"]}, g
@@ -144,7 +145,7 @@ def test_getfem_same_mesh(squeeze, tmp_path):
     across, the most); bound 4e-3. And against its stored run on the mesh
     Gmsh makes of eighthball.geo at the scene's sizes
     (tests/data/getfem-squeeze3d-h0.1.json, --h 0.1 --hf 0.2), `stored` =
-    2.9e-13 (both stop at a residual of 1e-10): bound 1e-6."""
+    1.6e-13 to 2.9e-13 (both stop at a residual of 1e-10): bound 1e-6."""
     out = tmp_path / "getfem.json"
     mesh = squeeze["bodies"]["ball"]["mesh"]
     subprocess.run([GETFEM_PYTHON, os.path.join(str(ROOT), "scripts", "getfem_squeeze3d.py"), "--mesh", mesh,
@@ -156,4 +157,4 @@ def test_getfem_same_mesh(squeeze, tmp_path):
     for level, f in zip(LEVELS, F):
         mine = g[round(level * PUSH, 12)]["force"]
         assert abs(figure("dF", f / mine - 1)) <= 4e-3
-        assert abs(figure("stored", stored[round(level * PUSH, 12)]["force"] / mine - 1)) <= 1e-6
+        assert figure("stored", abs(stored[round(level * PUSH, 12)]["force"] / mine - 1)) <= 1e-6
