@@ -145,7 +145,7 @@ def test_getfem_same_mesh(squeeze, tmp_path):
     across, the most); bound 4e-3. And against its stored run on the mesh
     Gmsh makes of eighthball.geo at the scene's sizes
     (tests/data/getfem-squeeze3d-h0.1.json, --h 0.1 --hf 0.2), `stored` =
-    1.6e-13 to 2.9e-13 (both stop at a residual of 1e-10): bound 1e-6."""
+    1.8e-14 to 2.9e-13 (both stop at a residual of 1e-10): bound 1e-6."""
     out = tmp_path / "getfem.json"
     mesh = squeeze["bodies"]["ball"]["mesh"]
     subprocess.run([GETFEM_PYTHON, os.path.join(str(ROOT), "scripts", "getfem_squeeze3d.py"), "--mesh", mesh,
