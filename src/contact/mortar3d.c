@@ -56,7 +56,12 @@
    point farther from the master is apart (a node's support, of the face's
    size, is not both in contact and that far but where the surfaces meet
    at more than 45 degrees). Where a master much finer than the slave gives
-   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
+   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept.
+
+   Friction (-contact_<pair>_friction): friction3d.c, through a few hooks:
+   its energy and gradient in Mortar3dEvaluate, its Hessian in
+   Mortar3dHessian, its lag, state lifecycle and results in the
+   Mortar3dFriction* functions, its sets in the output. */
 #include <petscviewerhdf5.h>
 #include "mortar3d.h"
 #include "bvh.h"
