@@ -37,6 +37,13 @@ static const char *const XdmfContactScalars3D[XDMF_CONTACT_SCALARS_3D] = {"press
    none. */
 #define XDMF_FRICTION_SCALARS 3
 static const char *const XdmfFrictionScalars[XDMF_FRICTION_SCALARS] = {"shear", "slip", "stick"};
+/* In a 3D scene with friction, on every grid: the shear and slip vectors and
+   the stick flag (a frictional pair's slave surface's node_shear, node_slip,
+   node_stick; NaN elsewhere). */
+#define XDMF_FRICTION_FIELDS_3D 3
+static const char *const XdmfFrictionFields3D[XDMF_FRICTION_FIELDS_3D] = {"shear", "slip", "stick"};
+static const char *const XdmfFrictionSets3D[XDMF_FRICTION_FIELDS_3D]   = {"node_shear", "node_slip", "node_stick"};
+static const int         XdmfFrictionComponents3D[XDMF_FRICTION_FIELDS_3D] = {3, 3, 1};
 
 /* One node-centred attribute: n tuples of 1 or 3 components in dataset path. */
 static inline void XdmfWriteAttribute(FILE *fp, const char name[], int n, int components, const char path[])

@@ -63,7 +63,12 @@
    point farther from the master is apart (a node's support, of the face's
    size, is not both in contact and that far but where the surfaces meet
    at more than 45 degrees). Where a master much finer than the slave gives
-   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept. */
+   a face more than MORTAR3D_MAX_MASTER faces, the nearest are kept.
+
+   Friction (-contact_<pair>_friction): friction3d.c, through a few hooks:
+   its energy and gradient in Mortar3dEvaluate, its Hessian in
+   Mortar3dHessian, its lag, state lifecycle and results in the
+   Mortar3dFriction* functions, its sets in the output. */
 #include <petscviewerhdf5.h>
 #include <petsc/private/hashsetij.h>
 #include "mortar3d.h"
@@ -72,6 +77,7 @@
 #include "xdmf.h"
 #include "segment3d.h"
 #include "surface3d.h"
+#include "friction3d.h"
 
 #define MORTAR3D_MAX_MASTER 64 /* master faces near one slave face (Segment3dEvaluate's limit) */
 
@@ -116,9 +122,14 @@ typedef struct {
   PetscBool done;
   PetscReal force[2][3], pmax, pmin, maxPen, area;
   PetscInt  ncontact, nactive;
+  Friction3d fr;                 /* Coulomb friction on the slave (friction3d.c), or NULL */
+  PetscReal  shearForce[3], normalLoad, tangentialLoad, stickArea, stickRadius; /* its results (Mortar3dFrictionResults) */
 } Mortar3d;
 
 static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
+static PetscErrorCode Mortar3dFrictionResults(Mortar3d *);
+static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *, EnergyTerm);
+static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *, Body[], PetscViewer, MPI_Comm, PetscInt);
 
 /* A face's size: its longest chord between corners. */
 static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
@@ -350,7 +361,10 @@ static PetscErrorCode Mortar3dEvaluate(Mortar3d *m, PetscBool gradient, PetscBoo
   if (!rank)
     for (PetscInt j = 0; j < S->nn; ++j)
       if (m->active[j] && m->gj[j] < 0) *energy += 0.5 * m->kp * m->A[j] * m->gj[j] * m->gj[j];
-  if (!gradient) PetscFunctionReturn(0);
+  if (!gradient) {
+    if (m->fr) PetscCall(Friction3dAddEnergyGradient(m->fr, m->S, m->spec.kp, energy)); /* its gradient into S->g, unused here */
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscArrayzero(S->g, 3 * S->nn));
   PetscCall(PetscArrayzero(M->g, 3 * M->nn));
   for (PetscInt k = 0; k < S->nown; ++k) {
@@ -368,6 +382,7 @@ static PetscErrorCode Mortar3dEvaluate(Mortar3d *m, PetscBool gradient, PetscBoo
       }
     }
   }
+  if (m->fr) PetscCall(Friction3dAddEnergyGradient(m->fr, m->S, m->spec.kp, energy)); /* the scene's k_p: k_t is not continued (friction.c) */
   for (PetscInt k = 0; k < 2; ++k) {
     ContactSurface3d *T = k ? M : S;
     if (add) PetscCall(ContactSurface3dAddGradient(T, m->body[k ? 1 - m->s : m->s]));
@@ -643,6 +658,7 @@ static PetscErrorCode Mortar3dHessianAdd(Mortar3d *m, const Mortar3dFace all[], 
   PetscFunctionBeginUser;
   PetscCall(Mortar3dAddGaussNewton(m, all, rank, H));
   if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  if (m->fr) PetscCall(Friction3dAddHessian(m->fr, m->S, m->spec.kp, H));
   PetscFunctionReturn(0);
 }
 
@@ -957,6 +973,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));
   PetscCall(Mortar3dSetUpSlave(m));
   PetscCall(Mortar3dSetUpHessianFaces(m, t->comm));
+  if (m->fr) PetscCall(Friction3dSetUp(m->fr, m->S, m->s));
   PetscFunctionReturn(0);
 }
 
@@ -993,6 +1010,7 @@ static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
     m->area += m->A[j];
   }
   if (!m->ncontact) m->pmin = 0.0;
+  if (m->fr) PetscCall(Mortar3dFrictionResults(m));
   m->done = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -1008,6 +1026,11 @@ static PetscErrorCode Mortar3dView(EnergyTerm t, Body bodies[])
                         BodyGetName(bodies[m->spec.body[1 - m->s]]), m->spec.group[1 - m->s], m->S[1 - m->s].nf, (double)m->kp));
   PetscCall(PetscPrintf(t->comm, "  force on %s: (%.6g, %.6g, %.6g), |F| %.6g; nodal pressure %.6g to %.6g at %" PetscInt_FMT " of %" PetscInt_FMT " slave nodes, contact area %.6g, deepest weighted penetration %.3g\n", BodyGetName(bodies[m->spec.body[0]]), (double)F[0], (double)F[1], (double)F[2],
                         (double)PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]), (double)m->pmin, (double)m->pmax, m->ncontact, m->S[m->s].nn, (double)m->area, (double)m->maxPen));
+  if (m->fr) {
+    const PetscReal mu = Friction3dGetCoefficient(m->fr);
+    PetscCall(PetscPrintf(t->comm, "  friction mu %g: shear force (%.6g, %.6g, %.6g), Q/(mu P) = %.6g (P %.6g, Q %.6g); stick zone area %.6g, the radius of a disc of it %.6g (of the contact's area %.6g: %.6g)\n", (double)mu, (double)m->shearForce[0], (double)m->shearForce[1], (double)m->shearForce[2],
+                          (double)(m->normalLoad > 0 ? m->tangentialLoad / (mu * m->normalLoad) : 0.0), (double)m->normalLoad, (double)m->tangentialLoad, (double)m->stickArea, (double)m->stickRadius, (double)m->area, (double)PetscSqrtReal(m->area / PETSC_PI)));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -1038,6 +1061,14 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
   ContactJSONKeyReal(fp, ", ", "contact_area", m->area);
   ContactJSONKeyReal(fp, ", ", "max_penetration", m->maxPen);
   fprintf(fp, ", \"hessian\": \"%s\"", m->exactHessian ? "exact" : "gauss-newton"); /* at the solve's end */
+  ContactJSONKeyReal(fp, ", ", "friction", m->fr ? Friction3dGetCoefficient(m->fr) : 0.0);
+  if (m->fr) {
+    ContactJSONKeyVector(fp, ", ", "shear_force", 3, m->shearForce);
+    ContactJSONKeyReal(fp, ", ", "normal_load", m->normalLoad);
+    ContactJSONKeyReal(fp, ", ", "tangential_load", m->tangentialLoad);
+    ContactJSONKeyReal(fp, ", ", "stick_area", m->stickArea);
+    ContactJSONKeyReal(fp, ", ", "stick_radius", m->stickRadius);
+  }
   { /* the slave nodes in contact: reference position, pressure, weight A_j */
     const ContactSurface3d *S = &m->S[m->s];
     PetscInt                n = 0;
@@ -1083,6 +1114,35 @@ static PetscErrorCode Mortar3dWriteArray(PetscViewer v, MPI_Comm comm, const cha
   PetscCall(VecRestoreArray(vec, &a));
   ContactOutputCall(v, VecView(vec, v));
   PetscCall(VecDestroy(&vec));
+  PetscFunctionReturn(0);
+}
+
+/* The slave's friction sets into the viewer's current group (rank 0's n
+   nodes, the others none): node_shear (3 components: the shear traction the
+   master puts on the slave, per unit of the slave's reference measure as
+   node_pressure), node_slip (3: the accumulated slip of the slave against
+   the master) and node_stick (1 stuck, 0 slipping or apart); the same at
+   each earlier stage's end (-load_stages) under /stages/<k>/contact/... */
+static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *m, Body bodies[], PetscViewer v, MPI_Comm comm, PetscInt n)
+{
+  const PetscReal *shear, *slip, *stick;
+  PetscInt         nstage;
+  char             group[4 * CONTACT_NAME_LEN + 32];
+
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dGetNodal(m->fr, 0, &shear, &slip, &stick, &nstage));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_shear", n, 3, shear));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_slip", n, 3, slip));
+  PetscCall(Mortar3dWriteArray(v, comm, "node_stick", n, 1, stick));
+  for (PetscInt k = 1; k < nstage; ++k) { /* the last stage's are the sets above */
+    PetscCall(Friction3dGetNodal(m->fr, k, &shear, &slip, &stick, &nstage));
+    PetscCall(PetscSNPrintf(group, sizeof(group), "/stages/%d/contact/%s/%s_%s", (int)k, m->spec.name, BodyGetName(bodies[m->spec.body[m->s]]), m->spec.group[m->s]));
+    PetscCall(PetscViewerHDF5PushGroup(v, group));
+    PetscCall(Mortar3dWriteArray(v, comm, "node_shear", n, 3, shear));
+    PetscCall(Mortar3dWriteArray(v, comm, "node_slip", n, 3, slip));
+    PetscCall(Mortar3dWriteArray(v, comm, "node_stick", n, 1, stick));
+    PetscCall(PetscViewerHDF5PopGroup(v));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -1141,6 +1201,14 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   PetscCall(Mortar3dWriteArray(v, comm, "node_force", n, 3, f));
   PetscCall(Mortar3dWriteArray(v, comm, "xdmf_nan", n, 1, nan));
   {
+    PetscReal *nan3;
+    PetscCall(PetscMalloc1(3 * n + 1, &nan3));
+    for (PetscInt j = 0; j < 3 * n; ++j) nan3[j] = (PetscReal)NAN;
+    PetscCall(Mortar3dWriteArray(v, comm, "xdmf_nan_xyz", n, 3, nan3));
+    PetscCall(PetscFree(nan3));
+  }
+  if (m->fr) PetscCall(Mortar3dWriteFrictionHDF5(m, bodies, v, comm, n));
+  {
     IS is;
     PetscCall(ISCreateGeneral(comm, nf * S->nb, S->fnodes, PETSC_USE_POINTER, &is));
     PetscCall(ISSetBlockSize(is, S->nb));
@@ -1168,6 +1236,14 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &m->pmax));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "contact_area", PETSC_REAL, &m->area));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &m->maxPen));
+  if (m->fr) {
+    const PetscReal mu = Friction3dGetCoefficient(m->fr);
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "friction", PETSC_REAL, &mu));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "normal_load", PETSC_REAL, &m->normalLoad));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "tangential_load", PETSC_REAL, &m->tangentialLoad));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "stick_area", PETSC_REAL, &m->stickArea));
+    ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "stick_radius", PETSC_REAL, &m->stickRadius));
+  }
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
 }
@@ -1187,7 +1263,6 @@ static PetscErrorCode Mortar3dWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, c
   char                    g[4 * CONTACT_NAME_LEN + PETSC_MAX_PATH_LEN], path[sizeof(g) + 32];
 
   PetscFunctionBeginUser;
-  (void)friction; /* frictionless in 3D */
   PetscCall(PetscSNPrintf(g, sizeof(g), "%s:/contact/%s/%s_%s/", h5, m->spec.name, body, grp));
   fprintf(fp, "   <Grid Name=\"%s:%s:%s\" GridType=\"Uniform\">\n", m->spec.name, body, grp);
   fprintf(fp, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\">\n", S->type == FACE3D_TRI6 ? "Triangle_6" : "Quadrilateral_9", (int)S->nf);
@@ -1203,6 +1278,10 @@ static PetscErrorCode Mortar3dWriteXDMF(EnergyTerm t, Body bodies[], FILE *fp, c
   XdmfWriteAttribute(fp, XDMF_CONTACT_VECTOR_3D, nn, 3, path);
   PetscCall(PetscSNPrintf(path, sizeof(path), "%sxdmf_nan", g));
   for (PetscInt k = 0; k < XDMF_BODY_SCALARS_3D; ++k) XdmfWriteAttribute(fp, XdmfBodyScalars3D[k], nn, 1, path);
+  for (PetscInt k = 0; k < XDMF_FRICTION_FIELDS_3D && friction; ++k) { /* this pair's, else NaN (xdmf.h) */
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s%s", g, m->fr ? XdmfFrictionSets3D[k] : (XdmfFrictionComponents3D[k] == 3 ? "xdmf_nan_xyz" : "xdmf_nan")));
+    XdmfWriteAttribute(fp, XdmfFrictionFields3D[k], nn, XdmfFrictionComponents3D[k], path);
+  }
   fprintf(fp, "   </Grid>\n");
   PetscFunctionReturn(0);
 }
@@ -1426,9 +1505,157 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscCall(PetscFree(m->hessFaces));
   PetscCall(PetscFree(m->queryFaces));
   if (m->covered) PetscCall(PetscHSetIJDestroy(&m->covered));
+  PetscCall(Friction3dDestroy(&m->fr));
   if (m->rule.nq) PetscCall(Face3dRuleDestroy(&m->rule));
   if (m->frule.nq) PetscCall(Face3dRuleDestroy(&m->frule));
   PetscCall(PetscFree(m));
+  PetscFunctionReturn(0);
+}
+
+/* Friction's fixed-point lag at the bodies' state (friction3d.c): every
+   slave face integrated on every rank with its points kept (each rank
+   builds every row, as the Hessian's G_j), the nodal pressures p_j =
+   k_p <-g_j>_+ (NULL change: the rows alone, the bound kept). */
+static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal *change)
+{
+  Mortar3d         *m = (Mortar3d *)t->data;
+  ContactSurface3d *S = &m->S[m->s];
+  Mortar3dFace     *all;
+  PetscReal        *p, dummy;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(Mortar3dUpdate(m));
+  PetscCall(PetscCalloc1(S->nf + 1, &all));
+  PetscCall(PetscArrayzero(m->C, S->nn));
+  PetscCall(PetscArrayzero(m->Q, S->nn));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_FALSE, PETSC_TRUE, &all[f]));
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      m->C[S->fnodes[S->nb * f + i]] += all[f].a[i];
+      m->Q[S->fnodes[S->nb * f + i]] += all[f].q[i];
+    }
+  }
+  Mortar3dNodalGaps(m);
+  PetscCall(PetscMalloc1(S->nn, &p));
+  for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
+  PetscCall(Friction3dLagBegin(m->fr, change ? p : NULL));
+  for (PetscInt f = 0; f < S->nf; ++f) {
+    PetscCall(Friction3dLagFace(m->fr, m->S, f, &m->Adual[81 * f], all[f].nm, all[f].mf, all[f].np, all[f].pts));
+    PetscCall(PetscFree(all[f].pts));
+    PetscCall(PetscFree(all[f].dQ));
+  }
+  PetscCall(Friction3dLagEnd(m->fr, m->A, m->C, change ? change : &dummy));
+  PetscCall(PetscFree(p));
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dFrictionAccept(EnergyTerm t, Body bodies[], PetscReal load)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(Mortar3dUpdate(m));
+  PetscCall(Friction3dAccept(m->fr, m->S, m->spec.kp, load));
+  PetscFunctionReturn(0);
+}
+
+/* Back to the accepted state, the bodies holding it again: its bound, and the rows rebuilt there. */
+static PetscErrorCode Mortar3dFrictionRestore(EnergyTerm t, Body bodies[])
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dRestore(m->fr));
+  PetscCall(Mortar3dFrictionLag(t, bodies, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dFrictionBegin(EnergyTerm t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dBegin(((Mortar3d *)t->data)->fr));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dFrictionReset(EnergyTerm t, Body bodies[])
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  (void)bodies;
+  PetscCall(Friction3dReset(m->fr, m->S));
+  PetscFunctionReturn(0);
+}
+
+/* The stick radius (Friction3dStickZone's) at the end of stage k, in the JSON's load_stages. */
+static PetscErrorCode Mortar3dStickRadius(EnergyTerm t, PetscInt k, PetscReal *c, PetscBool *has)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dGetStage(((Mortar3d *)t->data)->fr, k, c, has));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Mortar3dSlipState(EnergyTerm t, PetscInt *stuck, PetscInt *loaded, PetscReal *slip)
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dSlipState(m->fr, m->S, m->spec.kp, stuck, loaded, slip));
+  PetscFunctionReturn(0);
+}
+
+/* Why the solve may have stopped: a contact of which no node sticks at the
+   last iterate slides (a tangential force above what friction holds has no
+   equilibrium), as 2D's. */
+static PetscErrorCode Mortar3dDiagnose(EnergyTerm t, size_t n, char why[])
+{
+  Mortar3d *m = (Mortar3d *)t->data;
+  PetscInt  stuck, loaded;
+  PetscReal slip;
+
+  PetscFunctionBeginUser;
+  why[0] = 0;
+  PetscCall(Friction3dSlipState(m->fr, m->S, m->spec.kp, &stuck, &loaded, &slip));
+  if (loaded > 0 && stuck == 0) PetscCall(PetscSNPrintf(why, n, "pair %s slides: none of its %" PetscInt_FMT " nodes in contact sticks under its friction mu = %g (the tangential load exceeds what friction holds, mu P; -contact_%s_friction)", t->name, loaded, (double)Friction3dGetCoefficient(m->fr), t->name));
+  PetscFunctionReturn(0);
+}
+
+/* The friction's results after the post-processing: its force on the first
+   surface's body (Friction3dShearForce's, on the slave's), the normal load
+   P (the rest of the pair's force) and the tangential one Q, the stick zone. */
+static PetscErrorCode Mortar3dFrictionResults(Mortar3d *m)
+{
+  PetscReal Fs[3], n2 = 0.0, t2 = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dShearForce(m->fr, Fs));
+  for (PetscInt d = 0; d < 3; ++d) {
+    m->shearForce[d] = m->s == 0 ? Fs[d] : -Fs[d];
+    n2 += PetscSqr(m->force[0][d] - m->shearForce[d]);
+    t2 += PetscSqr(m->shearForce[d]);
+  }
+  m->normalLoad     = PetscSqrtReal(n2);
+  m->tangentialLoad = PetscSqrtReal(t2);
+  PetscCall(Friction3dStickZone(m->fr, &m->stickArea, &m->stickRadius));
+  PetscFunctionReturn(0);
+}
+
+/* A frictional pair's ops (the lifecycle of its state: energyterm.h). */
+static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *m, EnergyTerm t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dCreate(t->comm, m->spec.friction, m->spec.frictionPenalty, &m->fr));
+  t->ops.lag            = Mortar3dFrictionLag;
+  t->ops.accept         = Mortar3dFrictionAccept;
+  t->ops.begin          = Mortar3dFrictionBegin;
+  t->ops.restore        = Mortar3dFrictionRestore;
+  t->ops.reset          = Mortar3dFrictionReset;
+  t->ops.stickhalfwidth = Mortar3dStickRadius;
+  t->ops.diagnose       = Mortar3dDiagnose;
+  t->ops.slipstate      = Mortar3dSlipState;
   PetscFunctionReturn(0);
 }
 
@@ -1443,7 +1670,6 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
     PetscCall(PetscLogEventRegister("Mortar3dEnergyGrad", id, &MORTAR3D_EnergyGrad));
     PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
   }
-  PetscCheck(spec->friction == 0, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: friction (-contact_%s_friction %g) between 3D bodies is not implemented yet: 3D contact is frictionless", spec->name, spec->name, (double)spec->friction);
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
   PetscCheck(!spec->hertz, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_hertz_radii: the Hertz comparison of the report is 2D's; contact pair %s is 3D", spec->name, spec->name);
   PetscCall(PetscNew(&m));
@@ -1463,6 +1689,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
   t->ops.writehdf5           = Mortar3dWriteHDF5;
   t->ops.writexdmf           = Mortar3dWriteXDMF;
   t->ops.destroy             = Mortar3dDestroy;
+  if (spec->friction > 0) PetscCall(Mortar3dFrictionCreate(m, t));
   PetscFunctionReturn(0);
 }
 

@@ -46,6 +46,10 @@ static PetscErrorCode WriteXDMFBodies(FILE *fp, Problem p, BodyNodalFields F[], 
       for (PetscInt k = 0; k < XDMF_CONTACT_SCALARS_3D; ++k) XdmfWriteAttribute(fp, XdmfContactScalars3D[k], (int)N, 1, path);
       PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/xdmf_nan_xyz", base, g));
       XdmfWriteAttribute(fp, XDMF_CONTACT_VECTOR_3D, (int)N, 3, path);
+      for (PetscInt k = 0; k < XDMF_FRICTION_FIELDS_3D && friction; ++k) {
+        PetscCall(PetscSNPrintf(path, sizeof(path), "%s:/bodies/%s/%s", base, g, XdmfFrictionComponents3D[k] == 3 ? "xdmf_nan_xyz" : "xdmf_nan"));
+        XdmfWriteAttribute(fp, XdmfFrictionFields3D[k], (int)N, XdmfFrictionComponents3D[k], path);
+      }
       fprintf(fp, "   </Grid>\n");
       continue;
     }

@@ -1,0 +1,53 @@
+// The half y >= 0 of the lower part z <= zt of a ball of radius R centred
+// at (0, 0, R), touching the plane z = 0 at the origin: Tet10, of size h
+// (-mesh_size) within rc of the origin, growing to hf at 3 rc. Its curved
+// surface is two: "cap" (z <= zc, the contact surface) and "side". Groups:
+// symy (y = 0), top (z = zt), cap, side; the volume "body".
+// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zc.
+SetFactory("OpenCASCADE");
+If (!Exists(R)) R = 1; EndIf
+If (!Exists(zt)) zt = 0.5; EndIf
+If (!Exists(h)) h = 0.05; EndIf
+If (!Exists(rc)) rc = 0.15; EndIf
+If (!Exists(hf)) hf = 0.2; EndIf
+If (!Exists(zc)) zc = 0.05; EndIf
+
+Sphere(1) = {0, 0, R, R};
+Box(2) = {-2 * R, 0, 0, 4 * R, 2 * R, zt};
+BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
+Box(4) = {-2 * R, 0, 0, 4 * R, 2 * R, zc};
+BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
+e = 1e-6 * R;
+all[] = Volume{:};
+ball[] = Volume In BoundingBox{-R - e, -e, -e, R + e, R + e, zt + e};
+out[] = all[];
+out[] -= {ball[]};
+Recursive Delete{Volume{out[]};}
+symy[] = Surface In BoundingBox{-R - e, -e, -e, R + e, e, zt + e};
+top[] = Surface In BoundingBox{-R - e, -e, zt - e, R + e, R + e, zt + e};
+cut[] = Surface In BoundingBox{-R - e, -e, zc - e, R + e, R + e, zc + e};
+cap[] = Surface In BoundingBox{-R - e, -e, -e, R + e, R + e, zc + e};
+cap[] -= {symy[], cut[]};
+side[] = Surface{:};
+side[] -= {symy[], top[], cut[], cap[]};
+Physical Surface("symy") = {symy[]};
+Physical Surface("top") = {top[]};
+Physical Surface("cap") = {cap[]};
+Physical Surface("side") = {side[]};
+Physical Volume("body") = {ball[]};
+
+Field[1] = MathEval;
+Field[1].F = "Sqrt(x * x + y * y + z * z)";
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h;
+Field[2].SizeMax = hf;
+Field[2].DistMin = rc;
+Field[2].DistMax = 3 * rc;
+Background Field = 2;
+Mesh.MeshSizeExtendFromBoundary = 0;
+Mesh.MeshSizeFromPoints = 0;
+Mesh.MeshSizeFromCurvature = 0;
+Mesh.ElementOrder = 2;
+Mesh.SecondOrderIncomplete = 0;
+Mesh.MshFileVersion = 2.2;
