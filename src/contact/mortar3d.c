@@ -61,6 +61,7 @@
 #include "mortar3d.h"
 #include "bvh.h"
 #include "outputwrite.h"
+#include "report3d.h"
 #include "xdmf.h"
 #include "segment3d.h"
 #include "surface3d.h"
@@ -100,6 +101,7 @@ typedef struct {
   PetscBool done;
   PetscReal force[2][3], pmax, pmin, maxPen, area;
   PetscInt  ncontact, nactive;
+  ContactReport3d report; /* the whole model's figures and Hertz's (report3d.c) */
 } Mortar3d;
 
 static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
@@ -652,6 +654,21 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscFunctionReturn(0);
 }
 
+/* The report's figures (report3d.c) from the slave's nodal pressures, on
+   every rank (each holds the slave's sums whole). */
+static PetscErrorCode Mortar3dReport(Mortar3d *m)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscReal              *p;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(S->nn + 1, &p));
+  for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
+  ContactReport3dCompute(&m->spec, S->nn, S->X, p, m->A, m->force[0], &m->report);
+  PetscCall(PetscFree(p));
+  PetscFunctionReturn(0);
+}
+
 /* The results at the state in the bodies' local vectors: the pair's force
    on each surface's body (minus the gradient on its nodes), the nodal
    pressures p_j = k_p <-g_j>_+ of the nodes counted, the deepest weighted
@@ -685,6 +702,7 @@ static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
     m->area += m->A[j];
   }
   if (!m->ncontact) m->pmin = 0.0;
+  PetscCall(Mortar3dReport(m));
   m->done = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -700,6 +718,7 @@ static PetscErrorCode Mortar3dView(EnergyTerm t, Body bodies[])
                         BodyGetName(bodies[m->spec.body[1 - m->s]]), m->spec.group[1 - m->s], m->S[1 - m->s].nf, (double)m->kp));
   PetscCall(PetscPrintf(t->comm, "  force on %s: (%.6g, %.6g, %.6g), |F| %.6g; nodal pressure %.6g to %.6g at %" PetscInt_FMT " of %" PetscInt_FMT " slave nodes, contact area %.6g, deepest weighted penetration %.3g\n", BodyGetName(bodies[m->spec.body[0]]), (double)F[0], (double)F[1], (double)F[2],
                         (double)PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]), (double)m->pmin, (double)m->pmax, m->ncontact, m->S[m->s].nn, (double)m->area, (double)m->maxPen));
+  PetscCall(ContactReport3dView(&m->report, &m->spec, t->comm));
   PetscFunctionReturn(0);
 }
 
@@ -708,13 +727,11 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
 {
   const Mortar3d  *m = (const Mortar3d *)t->data;
   const PetscReal *F = m->force[0];
-  const PetscReal  P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
 
   PetscFunctionBeginUser;
   if (summary) {
-    ContactJSONKeyReal(fp, ",\n  ", "contact_force", P);
+    ContactReport3dWriteJSON(&m->report, &m->spec, fp, ",\n  ", "contact_force");
     ContactJSONKeyReal(fp, ",\n  ", "max_penetration", m->maxPen);
-    ContactJSONKeyReal(fp, ",\n  ", "fem_pmax", m->pmax);
     PetscFunctionReturn(0);
   }
   fprintf(fp, "{\"formulation\": \"%s\", \"dimension\": 3", m->spec.formulation);
@@ -723,11 +740,10 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
   ContactJSONKeyReal(fp, ", ", "penalty_h", m->spec.kpH);
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(&m->spec));
   ContactJSONKeyVector(fp, ", ", "force", 3, F);
-  ContactJSONKeyReal(fp, ", ", "P", P);
+  ContactReport3dWriteJSON(&m->report, &m->spec, fp, ", ", "P");
   ContactJSONKeyReal(fp, ", ", "pmax", m->pmax);
   ContactJSONKeyReal(fp, ", ", "pmin", m->pmin);
   fprintf(fp, ", \"nodes_in_contact\": %d, \"nodes_counted\": %d", (int)m->ncontact, (int)m->nactive);
-  ContactJSONKeyReal(fp, ", ", "contact_area", m->area);
   ContactJSONKeyReal(fp, ", ", "max_penetration", m->maxPen);
   fprintf(fp, ", \"hessian\": \"%s\"", m->exactHessian ? "exact" : "gauss-newton"); /* at the solve's end */
   { /* the slave nodes in contact: reference position, pressure, weight A_j */
@@ -754,6 +770,21 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
     fprintf(fp, "}");
   }
   fprintf(fp, "]}");
+  PetscFunctionReturn(0);
+}
+
+/* The report's figures as attributes of the pair's group (report3d.c):
+   model_share, contact_area and P the whole model's, fem_a (from the area),
+   fem_a_moment, and with Hertz radii E_star, R_star, hertz_a, hertz_pmax,
+   pressure_l2_error. */
+static PetscErrorCode Mortar3dWriteHDF5Report(const Mortar3d *m, PetscViewer v, const char group[])
+{
+  const ContactReport3d *R = &m->report;
+  const char            *names[] = {"model_share", "contact_area", "fem_a", "fem_a_moment", "E_star", "R_star", "hertz_a", "hertz_pmax", "pressure_l2_error"};
+  const PetscReal        vals[]  = {R->share, R->area, R->aArea, R->aMoment, m->spec.Estar, m->spec.Rstar, R->hertzA, R->hertzP0, R->l2err};
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < (m->spec.hertz ? 9 : 4); ++k) ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[k], PETSC_REAL, &vals[k]));
   PetscFunctionReturn(0);
 }
 
@@ -798,7 +829,6 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   const Mortar3d         *m = (const Mortar3d *)t->data;
   const ContactSurface3d *S = &m->S[m->s];
   const PetscReal        *F = m->force[0];
-  const PetscReal         P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
   const PetscInt          dim = 3;
   MPI_Comm                comm;
   PetscMPIInt             rank;
@@ -852,14 +882,14 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, m->spec.formulation));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "dimension", PETSC_INT, &dim));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &m->kp));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &P));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &m->report.P));
   for (PetscInt d = 0; d < 3; ++d) {
     const char *names[3] = {"force_x", "force_y", "force_z"};
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[d], PETSC_REAL, &F[d]));
   }
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &m->pmax));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "contact_area", PETSC_REAL, &m->area));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &m->maxPen));
+  PetscCall(Mortar3dWriteHDF5Report(m, v, group));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
 }
@@ -1121,7 +1151,6 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
   }
   PetscCheck(spec->friction == 0, t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: friction (-contact_%s_friction %g) between 3D bodies is not implemented yet: 3D contact is frictionless", spec->name, spec->name, (double)spec->friction);
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
-  PetscCheck(!spec->hertz, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_hertz_radii: the Hertz comparison of the report is 2D's; contact pair %s is 3D", spec->name, spec->name);
   PetscCall(PetscNew(&m));
   m->spec                    = *spec;
   t->data                    = m;
@@ -1162,7 +1191,10 @@ static PetscErrorCode MortarSetUpByDimension(EnergyTerm t, Body bodies[])
     t->data = NULL;
     PetscCall(ContactTermCreate_Mortar3d(&spec, t));
     PetscCall(Mortar3dSetHessianExact(t, exact));
-  } else t->ops.setup = Mortar2dSetUp;
+  } else {
+    PetscCheck(!spec.nsym, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_symmetry: a 3D pair's symmetry planes; contact pair %s is 2D, where a half model gives -contact_%s_mirror_y", spec.name, spec.name, spec.name);
+    t->ops.setup = Mortar2dSetUp;
+  }
   PetscCall(t->ops.setup(t, bodies));
   PetscFunctionReturn(0);
 }
