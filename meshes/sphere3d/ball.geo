@@ -16,6 +16,9 @@ If (!Exists(whole)) whole = 0; EndIf
 
 x0 = whole ? -R : 0;
 Sphere(1) = {0, 0, R, R};
+// the whole ball: the sphere's poles (where its parametrisation degenerates,
+// and Gmsh's cells with it) turned from the contact point onto the cut z = R
+If (whole) Rotate {{1, 0, 0}, {0, 0, R}, Pi / 2} { Volume{1}; } EndIf
 Box(2) = {x0, x0, 0, 2 * R, 2 * R, R};
 BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
 Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
