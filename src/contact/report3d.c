@@ -136,10 +136,5 @@ void ContactReport3dWriteJSON(const ContactReport3d *R, const ContactPairSpec *s
     ContactJSONKeyReal(fp, sep, "model_share", R->share);
     ContactJSONKeyVector(fp, sep, "whole_force", 3, R->force);
   }
-  if (!spec->hertz) return;
-  ContactJSONKeyReal(fp, sep, "E_star", spec->Estar);
-  ContactJSONKeyReal(fp, sep, "R_star", spec->Rstar);
-  ContactJSONKeyReal(fp, sep, "hertz_a", R->hertzA);
-  ContactJSONKeyReal(fp, sep, "hertz_pmax", R->hertzP0);
-  ContactJSONKeyReal(fp, sep, "pressure_l2_error", R->l2err);
+  if (spec->hertz) ContactHertzJSON(fp, sep, spec, R->hertzA, R->hertzP0, R->l2err);
 }
