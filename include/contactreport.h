@@ -68,6 +68,9 @@ PetscErrorCode ContactReportWriteHDF5(const ContactReport *, const ContactPairSp
 PetscErrorCode ContactReportWriteXDMF(const ContactReport *, const ContactPairSpec *, Body[], FILE *, const char h5[], PetscBool friction);
 PetscErrorCode ContactReportReset(ContactReport *);
 
+/* A pair's Hertz figures as JSON members, each preceded by sep: E_star,
+   R_star, hertz_a, hertz_pmax, pressure_l2_error (the 2D and 3D reports'). */
+void      ContactHertzJSON(FILE *, const char sep[], const ContactPairSpec *, PetscReal a, PetscReal pmax, PetscReal l2err);
 /* Hertz's line contact (plane strain) from the force per unit thickness P:
    half-width a = sqrt(4 P R* / (pi E*)), peak 2 P / (pi a) (hertz.c). */
 void      HertzLineContact(PetscReal P, PetscReal Estar, PetscReal Rstar, PetscReal *a, PetscReal *pmax);

@@ -20,6 +20,9 @@ typedef struct {
   PetscBool mirror;       /* the scene is the half y >= mirrorY of a symmetric model */
   PetscBool axisym;       /* the bodies are axisymmetric (-axisymmetric): Hertz's point contact of two spheres, P the force over the whole circle */
   PetscReal mirrorY;
+  PetscInt  nsym;         /* 3D: the scene is a part of a model symmetric about nsym planes X_symAxis[k] = symValue[k] (-contact_<pair>_symmetry x=0,y=0) */
+  PetscInt  symAxis[3];
+  PetscReal symValue[3];
   PetscReal friction;        /* Coulomb's coefficient mu (-contact_<pair>_friction; 0: frictionless, the term has no friction at all) */
   PetscReal frictionPenalty; /* the tangential penalty k_t over k_p (-contact_<pair>_friction_penalty) */
 } ContactPairSpec;

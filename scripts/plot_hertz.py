@@ -17,8 +17,10 @@ Usage:
         positions), with the computed P, p_max and a from the second moment
         (sum p_j A_j r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile);
         with --hertz-3d the Hertz curve of a sphere of radius R (E* the
-        contact modulus) under k P (k: the model's share, 4 for a quarter
-        model, 2 for a half; default 1), a = (3 k P R / (4 E*))^(1/3),
+        contact modulus) under k P (P the scene's part's force, k: the
+        model's share, 4 for a quarter model, 2 for a half; default 1), by
+        default the pair's own (-contact_<pair>_hertz_radii, its share from
+        -contact_<pair>_symmetry), a = (3 k P R / (4 E*))^(1/3),
         p0 = 3 k P / (2 pi a^2), and the relative L2 error of the nodal
         pressures (weights A_j) from it
     python3 scripts/plot_hertz.py out/cattaneo.h5 --shear -o out/cattaneo-shear.png
@@ -548,7 +550,10 @@ def plot_pressure_3d(ax, pair, g, units, hertz=None):
     F = [attr(g, f"force_{c}", 0.0) for c in "xyz"]
     r, p, A = radial_profile(side, F)
     on = p > 0
-    P = attr(g, "P", float("nan"))
+    share = attr(g, "model_share", 1.0)   # the whole model over the scene's part (-contact_<pair>_symmetry)
+    P = attr(g, "P", float("nan")) / share   # the part's
+    if hertz is None and "hertz_a" in g.attrs:   # the scene's own Hertz radii
+        hertz = (attr(g, "R_star"), attr(g, "E_star"), share)
     if not on.any():
         raise PlotError(f"pair '{pair}': no slave node in contact")
     am = np.sqrt(2.5 * np.sum(p * A * r * r) / np.sum(p * A))
@@ -556,7 +561,8 @@ def plot_pressure_3d(ax, pair, g, units, hertz=None):
     near = r <= rmax
     name = f"{attr(side, 'body')}:{attr(side, 'group')}"
     ax.plot(r[near], p[near], "o", ms=3, color=ROLE_COLOURS["slave"], zorder=3, label=f"{name}, nodal pressure (slave)")
-    text = [f"P = {units.value(P, 'force', True)} (the model's)",
+    text = [f"P = {units.value(P, 'force', True)} (the model's)" if share == 1 else
+            f"P = {units.value(share * P, 'force', True)} (the whole model's, {share:g} times the scene's)",
             f"computed: p_max = {units.value(p.max(), 'stress')}, a = {units.value(am, 'length')} (second moment)"]
     if hertz:
         R, Es, k = hertz
@@ -657,6 +663,8 @@ def frictional_pairs(f):
     shear (node_shear: a pair with friction)."""
     out = []
     for pair, g in f.get("contact", {}).items():
+        if attr(g, "dimension", 2) == 3:   # a 3D pair's shear is not drawn here
+            continue
         for side, role in surface_roles(g):
             if role == "slave" and "node_shear" in side:
                 out.append((pair, g, side))

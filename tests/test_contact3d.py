@@ -160,16 +160,15 @@ def refused(args, tmp_path):
 
 def test_refused(tmp_path):
     """What 3D contact does not do yet, one line each naming the pair: gpts
-    (a 2D formulation), a 2D half model's mirror, the 2D Hertz
-    report, and -contact_mortar_slave both; and a surface its body's mesh
-    has not, one line naming the body and the group."""
+    (a 2D formulation), a 2D half model's mirror, and
+    -contact_mortar_slave both; and a surface its body's mesh has not, one
+    line naming the body and the group (friction: tests/test_friction3d.py;
+    the Hertz report of a 3D pair: tests/test_sphere3d.py)."""
     up = UPPERS["hex27-on-hex27"]
     line = refused(patch_args(up, ["-contact_formulation", "gpts"]), tmp_path)
     assert "contact pair p" in line and "gpts" in line and "mortar" in line
     line = refused(patch_args(up, ["-contact_p_mirror_y", "0"]), tmp_path)
     assert "mirror" in line and "contact pair p" in line
-    line = refused(patch_args(up, ["-contact_p_hertz_radii", "1,0"]), tmp_path)
-    assert "hertz" in line and "contact pair p" in line
     line = refused(patch_args(up, ["-contact_mortar_slave", "both"]), tmp_path)
     assert "contact pair p" in line and "both" in line
     line = refused(patch_args(up, ["-contact_p_surfaces", "upper:bottom,lower:nosuch"]), tmp_path)

@@ -18,7 +18,7 @@ def run(args, cwd, timeout=300):
                           timeout=timeout)
 
 
-@pytest.mark.parametrize("scene", ["hertz", "hertz-small", "disc"])
+@pytest.mark.parametrize("scene", ["hertz", "hertz-small", "disc", "sphere3d"])
 def test_scene_runs_from_another_directory(scene, tmp_path):
     """The scene's file named by an absolute path and by a path relative to the
     current directory, from a directory outside the repository: its .geo files

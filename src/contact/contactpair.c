@@ -30,6 +30,26 @@ PetscErrorCode ContactFormulationFinalize(void)
   PetscFunctionReturn(0);
 }
 
+/* -contact_<pair>_symmetry x=0,y=0: planes normal to the axes, each axis at
+   most once, at finite positions (the entries freed). */
+static PetscErrorCode ParseSymmetry(MPI_Comm comm, const char prefix[], PetscInt n, char *entry[], ContactPairSpec *spec)
+{
+  PetscFunctionBeginUser;
+  spec->nsym = n;
+  for (PetscInt k = 0; k < n; ++k) {
+    const char *e = entry[k];
+    char       *end = NULL;
+    PetscInt    axis = e[0] == 'x' ? 0 : e[0] == 'y' ? 1 : e[0] == 'z' ? 2 : -1;
+    PetscReal   v    = axis >= 0 && e[1] == '=' && e[2] ? (PetscReal)strtod(e + 2, &end) : 0.0;
+    PetscCheck(end && !*end && !PetscIsInfOrNanReal(v), comm, PETSC_ERR_USER_INPUT, "option -%ssymmetry: '%s' is not a plane axis=value (x=0, y=0 or z=0: the plane normal to that axis through value)", prefix, e);
+    for (PetscInt j = 0; j < k; ++j) PetscCheck(spec->symAxis[j] != axis, comm, PETSC_ERR_USER_INPUT, "option -%ssymmetry: two planes normal to %c", prefix, e[0]);
+    spec->symAxis[k]  = axis;
+    spec->symValue[k] = v;
+  }
+  for (PetscInt k = 0; k < n; ++k) PetscCall(PetscFree(entry[k]));
+  PetscFunctionReturn(0);
+}
+
 /* A penalty option's value: "auto" or a finite number > 0. */
 static PetscErrorCode ParsePenalty(MPI_Comm comm, const char option[], const char value[], PetscReal *kp, PetscBool *isAuto)
 {
@@ -114,7 +134,9 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   for (PetscInt i = 0; i < np; ++i) {
     ContactPairSpec spec;
     char            prefix[2 * CONTACT_NAME_LEN], option[3 * CONTACT_NAME_LEN], *surf[2] = {NULL, NULL};
-    PetscInt        ns = 2, nr = 2;
+    PetscInt        ns = 2, nr = 2, nsym = 3;
+    char           *sym[3] = {NULL, NULL, NULL};
+    PetscBool       setSym;
     PetscBool       setPair, setForm;
     char            pairPenalty[64];
 
@@ -139,17 +161,20 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-surfaces", "The two surfaces, body:group,body:group (required)", NULL, surf, &ns, &setPair));
     PetscCall(ContactOptionsFList(PetscOptionsObject, "-formulation", "Formulation of this pair (default -contact_formulation)", NULL, ContactFormulationList, spec.formulation, spec.formulation, sizeof(spec.formulation), &setForm));
     PetscCall(ContactOptionsString(PetscOptionsObject, "-penalty", "Penalty k_p of this pair: a number, or auto (default -contact_penalty)", NULL, pairPenalty, pairPenalty, sizeof(pairPenalty), NULL));
-    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat): cylinders in plane strain, spheres with -axisymmetric", NULL, spec.radii, &nr, &spec.hertz));
+    PetscCall(PetscOptionsRealArray("-hertz_radii", "Radii of the two surfaces for the Hertz comparison (0: flat): cylinders in plane strain, spheres with -axisymmetric and between 3D bodies", NULL, spec.radii, &nr, &spec.hertz));
     PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-mirror_y", "Half model mirrored about the line y = value: the contact continues each surface by its mirror image past the line, the report doubles the force across it and mirrors the profiles", "off", PETSC_FALSE, &spec.mirrorY, &spec.mirror));
+    PetscCall(ContactOptionsStringArray(PetscOptionsObject, "-symmetry", "3D: the scene is a part of a model symmetric about these planes, each axis=value (x=0,y=0: a quarter; the planes held on rollers): the report gives the whole model's force, contact area and radii, and compares them with Hertz", NULL, sym, &nsym, &setSym));
     PetscCall(PetscOptionsReal("-friction", "Coulomb friction coefficient mu of this pair (default -contact_friction; 0: frictionless)", NULL, spec.friction, &spec.friction, NULL));
     PetscCall(PetscOptionsReal("-friction_penalty", "Tangential penalty k_t of this pair over its normal penalty k_p (default -contact_friction_penalty)", NULL, spec.frictionPenalty, &spec.frictionPenalty, NULL));
     PetscOptionsEnd();
     PetscCheck(!PetscIsInfOrNanReal(spec.friction) && spec.friction >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -%sfriction: must be a finite number >= 0, got %g", prefix, (double)spec.friction);
     PetscCheck(!PetscIsInfOrNanReal(spec.frictionPenalty) && spec.frictionPenalty > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "option -%sfriction_penalty: must be a finite number > 0, got %g", prefix, (double)spec.frictionPenalty);
     if (help && !setPair) { /* -help: a pair without surfaces (the placeholder) is only listed */
+      for (PetscInt k = 0; k < nsym; ++k) PetscCall(PetscFree(sym[k]));
       for (PetscInt s = 0; s < ns; ++s) PetscCall(PetscFree(surf[s]));
       continue;
     }
+    if (setSym) PetscCall(ParseSymmetry(comm, prefix, nsym, sym, &spec));
     PetscCheck(setPair && ns == 2, comm, PETSC_ERR_USER_INPUT, "option -%ssurfaces: give two surfaces body:group,body:group", prefix);
     PetscCheck(!spec.hertz || nr == 2, comm, PETSC_ERR_USER_INPUT, "option -%shertz_radii: give two radii (0 for a flat surface)", prefix);
     PetscCall(PetscSNPrintf(option, sizeof(option), "-%spenalty", prefix));

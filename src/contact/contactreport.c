@@ -282,6 +282,15 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
   PetscFunctionReturn(0);
 }
 
+void ContactHertzJSON(FILE *fp, const char sep[], const ContactPairSpec *spec, PetscReal a, PetscReal pmax, PetscReal l2err)
+{
+  ContactJSONKeyReal(fp, sep, "E_star", spec->Estar);
+  ContactJSONKeyReal(fp, sep, "R_star", spec->Rstar);
+  ContactJSONKeyReal(fp, sep, "hertz_a", a);
+  ContactJSONKeyReal(fp, sep, "hertz_pmax", pmax);
+  ContactJSONKeyReal(fp, sep, "pressure_l2_error", l2err);
+}
+
 /* The figures of a pair, each preceded by sep. */
 static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairSpec *spec, const char sep[], const char forceKey[])
 {
@@ -293,12 +302,7 @@ static void PairFiguresJSON(FILE *fp, const ContactReport *R, const ContactPairS
   ContactJSONKeyReal(fp, sep, "fem_a_moment", R->femAm);
   ContactJSONKeyPair(fp, sep, "zone", R->zone);
   ContactJSONKeyReal(fp, sep, "zone_width", R->zone[1] - R->zone[0]);
-  if (!spec->hertz) return;
-  ContactJSONKeyReal(fp, sep, "E_star", spec->Estar);
-  ContactJSONKeyReal(fp, sep, "R_star", spec->Rstar);
-  ContactJSONKeyReal(fp, sep, "hertz_a", R->hertzA);
-  ContactJSONKeyReal(fp, sep, "hertz_pmax", R->hertzPmax);
-  ContactJSONKeyReal(fp, sep, "pressure_l2_error", R->l2err);
+  if (spec->hertz) ContactHertzJSON(fp, sep, spec, R->hertzA, R->hertzPmax, R->l2err);
 }
 
 /* Rank 0. summary: the figures as top-level members (",\n  key: value" each);

@@ -261,6 +261,7 @@ PetscErrorCode ContactTermCreate_GPTS(const ContactPairSpec *spec, EnergyTerm t)
     PetscCall(PetscLogEventRegister("ContactReport", id, &GPTS_Report));
   }
   PetscCheck(spec->friction == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -contact_%s_friction (or -contact_friction) %g: formulation gpts has no friction (mortar has)", spec->name, (double)spec->friction);
+  PetscCheck(!spec->nsym, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "option -contact_%s_symmetry: a 3D pair's symmetry planes; formulation gpts is 2D, where a half model gives -contact_%s_mirror_y", spec->name, spec->name);
   PetscCall(PetscNew(&cp));
   PetscCall(PetscDTGaussQuadrature(spec->nqp, -1.0, 1.0, cp->xi, cp->wxi));
   t->data = cp;

@@ -74,6 +74,7 @@
 #include "mortar3d.h"
 #include "bvh.h"
 #include "outputwrite.h"
+#include "report3d.h"
 #include "xdmf.h"
 #include "segment3d.h"
 #include "surface3d.h"
@@ -124,6 +125,7 @@ typedef struct {
   PetscInt  ncontact, nactive;
   Friction3d fr;                 /* Coulomb friction on the slave (friction3d.c), or NULL */
   PetscReal  shearForce[3], normalLoad, tangentialLoad, stickArea, stickRadius; /* its results (Mortar3dFrictionResults) */
+  ContactReport3d report; /* the whole model's figures and Hertz's (report3d.c) */
 } Mortar3d;
 
 static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
@@ -977,6 +979,21 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscFunctionReturn(0);
 }
 
+/* The report's figures (report3d.c) from the slave's nodal pressures, on
+   every rank (each holds the slave's sums whole). */
+static PetscErrorCode Mortar3dReport(Mortar3d *m)
+{
+  const ContactSurface3d *S = &m->S[m->s];
+  PetscReal              *p;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(S->nn + 1, &p));
+  for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
+  ContactReport3dCompute(&m->spec, S->nn, S->X, p, m->A, m->force[0], &m->report);
+  PetscCall(PetscFree(p));
+  PetscFunctionReturn(0);
+}
+
 /* The results at the state in the bodies' local vectors: the pair's force
    on each surface's body (minus the gradient on its nodes), the nodal
    pressures p_j = k_p <-g_j>_+ of the nodes counted, the deepest weighted
@@ -1011,6 +1028,7 @@ static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
   }
   if (!m->ncontact) m->pmin = 0.0;
   if (m->fr) PetscCall(Mortar3dFrictionResults(m));
+  PetscCall(Mortar3dReport(m));
   m->done = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -1031,6 +1049,7 @@ static PetscErrorCode Mortar3dView(EnergyTerm t, Body bodies[])
     PetscCall(PetscPrintf(t->comm, "  friction mu %g: shear force (%.6g, %.6g, %.6g), Q/(mu P) = %.6g (P %.6g, Q %.6g); stick zone area %.6g, the radius of a disc of it %.6g (of the contact's area %.6g: %.6g)\n", (double)mu, (double)m->shearForce[0], (double)m->shearForce[1], (double)m->shearForce[2],
                           (double)(m->normalLoad > 0 ? m->tangentialLoad / (mu * m->normalLoad) : 0.0), (double)m->normalLoad, (double)m->tangentialLoad, (double)m->stickArea, (double)m->stickRadius, (double)m->area, (double)PetscSqrtReal(m->area / PETSC_PI)));
   }
+  PetscCall(ContactReport3dView(&m->report, &m->spec, t->comm));
   PetscFunctionReturn(0);
 }
 
@@ -1039,13 +1058,11 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
 {
   const Mortar3d  *m = (const Mortar3d *)t->data;
   const PetscReal *F = m->force[0];
-  const PetscReal  P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
 
   PetscFunctionBeginUser;
   if (summary) {
-    ContactJSONKeyReal(fp, ",\n  ", "contact_force", P);
+    ContactReport3dWriteJSON(&m->report, &m->spec, fp, ",\n  ", "contact_force");
     ContactJSONKeyReal(fp, ",\n  ", "max_penetration", m->maxPen);
-    ContactJSONKeyReal(fp, ",\n  ", "fem_pmax", m->pmax);
     PetscFunctionReturn(0);
   }
   fprintf(fp, "{\"formulation\": \"%s\", \"dimension\": 3", m->spec.formulation);
@@ -1054,11 +1071,10 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
   ContactJSONKeyReal(fp, ", ", "penalty_h", m->spec.kpH);
   ContactJSONKeyReal(fp, ", ", "penalty_stiffness", ContactPairPenaltyStiffness(&m->spec));
   ContactJSONKeyVector(fp, ", ", "force", 3, F);
-  ContactJSONKeyReal(fp, ", ", "P", P);
+  ContactReport3dWriteJSON(&m->report, &m->spec, fp, ", ", "P");
   ContactJSONKeyReal(fp, ", ", "pmax", m->pmax);
   ContactJSONKeyReal(fp, ", ", "pmin", m->pmin);
   fprintf(fp, ", \"nodes_in_contact\": %d, \"nodes_counted\": %d", (int)m->ncontact, (int)m->nactive);
-  ContactJSONKeyReal(fp, ", ", "contact_area", m->area);
   ContactJSONKeyReal(fp, ", ", "max_penetration", m->maxPen);
   fprintf(fp, ", \"hessian\": \"%s\"", m->exactHessian ? "exact" : "gauss-newton"); /* at the solve's end */
   ContactJSONKeyReal(fp, ", ", "friction", m->fr ? Friction3dGetCoefficient(m->fr) : 0.0);
@@ -1093,6 +1109,21 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
     fprintf(fp, "}");
   }
   fprintf(fp, "]}");
+  PetscFunctionReturn(0);
+}
+
+/* The report's figures as attributes of the pair's group (report3d.c):
+   model_share, contact_area and P the whole model's, fem_a (from the area),
+   fem_a_moment, and with Hertz radii E_star, R_star, hertz_a, hertz_pmax,
+   pressure_l2_error. */
+static PetscErrorCode Mortar3dWriteHDF5Report(const Mortar3d *m, PetscViewer v, const char group[])
+{
+  const ContactReport3d *R = &m->report;
+  const char            *names[] = {"model_share", "contact_area", "fem_a", "fem_a_moment", "E_star", "R_star", "hertz_a", "hertz_pmax", "pressure_l2_error"};
+  const PetscReal        vals[]  = {R->share, R->area, R->aArea, R->aMoment, m->spec.Estar, m->spec.Rstar, R->hertzA, R->hertzP0, R->l2err};
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < (m->spec.hertz ? 9 : 4); ++k) ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[k], PETSC_REAL, &vals[k]));
   PetscFunctionReturn(0);
 }
 
@@ -1166,7 +1197,6 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   const Mortar3d         *m = (const Mortar3d *)t->data;
   const ContactSurface3d *S = &m->S[m->s];
   const PetscReal        *F = m->force[0];
-  const PetscReal         P = PetscSqrtReal(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
   const PetscInt          dim = 3;
   MPI_Comm                comm;
   PetscMPIInt             rank;
@@ -1228,13 +1258,12 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "formulation", PETSC_STRING, m->spec.formulation));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "dimension", PETSC_INT, &dim));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "penalty", PETSC_REAL, &m->kp));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &P));
+  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "P", PETSC_REAL, &m->report.P));
   for (PetscInt d = 0; d < 3; ++d) {
     const char *names[3] = {"force_x", "force_y", "force_z"};
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[d], PETSC_REAL, &F[d]));
   }
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "fem_pmax", PETSC_REAL, &m->pmax));
-  ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "contact_area", PETSC_REAL, &m->area));
   ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "max_penetration", PETSC_REAL, &m->maxPen));
   if (m->fr) {
     const PetscReal mu = Friction3dGetCoefficient(m->fr);
@@ -1244,6 +1273,7 @@ static PetscErrorCode Mortar3dWriteHDF5(EnergyTerm t, Body bodies[], PetscViewer
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "stick_area", PETSC_REAL, &m->stickArea));
     ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, "stick_radius", PETSC_REAL, &m->stickRadius));
   }
+  PetscCall(Mortar3dWriteHDF5Report(m, v, group));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
 }
@@ -1671,7 +1701,6 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
     PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
   }
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
-  PetscCheck(!spec->hertz, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_hertz_radii: the Hertz comparison of the report is 2D's; contact pair %s is 3D", spec->name, spec->name);
   PetscCall(PetscNew(&m));
   m->spec                    = *spec;
   t->data                    = m;
@@ -1713,7 +1742,10 @@ static PetscErrorCode MortarSetUpByDimension(EnergyTerm t, Body bodies[])
     t->data = NULL;
     PetscCall(ContactTermCreate_Mortar3d(&spec, t));
     PetscCall(Mortar3dSetHessianExact(t, exact));
-  } else t->ops.setup = Mortar2dSetUp;
+  } else {
+    PetscCheck(!spec.nsym, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_symmetry: a 3D pair's symmetry planes; contact pair %s is 2D, where a half model gives -contact_%s_mirror_y", spec.name, spec.name, spec.name);
+    t->ops.setup = Mortar2dSetUp;
+  }
   PetscCall(t->ops.setup(t, bodies));
   PetscFunctionReturn(0);
 }

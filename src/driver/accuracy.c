@@ -460,6 +460,18 @@ static PetscErrorCode AccuracyCheckScene(Accuracy acc, Problem p)
   PetscFunctionReturn(0);
 }
 
+/* Step 0's check once its meshes are read (they give the dimension): no 3D
+   body, refused before the solve. The size field written for Gmsh
+   (AccuracyWriteField) and the estimate's profiles along an arc
+   (AccuracyProfilesGet) are a plane section's. */
+static PetscErrorCode AccuracyCheckDimension(Accuracy acc, Problem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->nbodies; ++i)
+    PetscCheck(BodyGetDimension(p->bodies[i]) != 3, acc->comm, PETSC_ERR_USER_INPUT, "option -accuracy: body %s is 3D, and -accuracy refines 2D and axisymmetric scenes only (its size field and error estimate are a plane section's); refine a 3D scene with -mesh_size or -%s_mesh_size", BodyGetName(p->bodies[i]), BodyGetName(p->bodies[i]));
+  PetscFunctionReturn(0);
+}
+
 /* One step's problem meshed (with the last step's size fields, then removed)
    and set up, its first iterate interpolated from the last step's answer. */
 static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, Problem cur, char fields[][PETSC_MAX_PATH_LEN], RunRecord *rec)
@@ -478,6 +490,7 @@ static PetscErrorCode AccuracyStepSetUp(Accuracy acc, PetscInt k, Problem prev, 
   if (acc->maxDofs <= 0) acc->maxDofs = cur->cfg->scene.maxDofs;
   PetscCall(ContactProgressPhase("set-up", "accuracy step %" PetscInt_FMT ": set-up", k));
   PetscCall(RunSetUp(cur, rec));
+  if (k == 0) PetscCall(AccuracyCheckDimension(acc, cur));
   if (!prev) PetscFunctionReturn(0);
   PetscCall(VecGetSize(cur->Xb, &n));
   PetscCall(VecGetSize(prev->Xb, &nprev));

@@ -1,0 +1,65 @@
+// The lower half of a ball of radius R centred at (0, 0, R), touching the
+// plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
+// the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
+// origin, growing to hf at 3 rc. The ball is cut at z = zc so that its
+// curved surface is two: "cap" (z <= zc, the contact surface) and "side".
+// Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
+// symy (y = 0); the volume "body".
+// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, zc, whole.
+SetFactory("OpenCASCADE");
+If (!Exists(R)) R = 1; EndIf
+If (!Exists(h)) h = 0.05; EndIf
+If (!Exists(rc)) rc = 0.3; EndIf
+If (!Exists(hf)) hf = 0.25; EndIf
+If (!Exists(zc)) zc = 0.15; EndIf
+If (!Exists(whole)) whole = 0; EndIf
+
+x0 = whole ? -R : 0;
+Sphere(1) = {0, 0, R, R};
+// the whole ball: the sphere's poles (where its parametrisation degenerates,
+// and Gmsh's cells with it) turned from the contact point onto the cut z = R
+If (whole) Rotate {{1, 0, 0}, {0, 0, R}, Pi / 2} { Volume{1}; } EndIf
+Box(2) = {x0, x0, 0, 2 * R, 2 * R, R};
+BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
+Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
+BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
+e = 1e-6 * R;
+all[] = Volume{:};
+ball[] = Volume In BoundingBox{x0 - e, x0 - e, -e, R + e, R + e, R + e};
+out[] = all[];
+out[] -= {ball[]};
+Recursive Delete{Volume{out[]};}
+sym[] = {};
+If (!whole)
+  symx[] = Surface In BoundingBox{-e, -e, -e, e, R + e, R + e};
+  symy[] = Surface In BoundingBox{-e, -e, -e, R + e, e, R + e};
+  sym[] = {symx[], symy[]};
+  Physical Surface("symx") = {symx[]};
+  Physical Surface("symy") = {symy[]};
+EndIf
+top[] = Surface In BoundingBox{x0 - e, x0 - e, R - e, R + e, R + e, R + e};
+cut[] = Surface In BoundingBox{x0 - e, x0 - e, zc - e, R + e, R + e, zc + e};
+cap[] = Surface In BoundingBox{x0 - e, x0 - e, -e, R + e, R + e, zc + e};
+cap[] -= {sym[], cut[]};
+side[] = Surface{:};
+side[] -= {sym[], top[], cut[], cap[]};
+Physical Surface("top") = {top[]};
+Physical Surface("cap") = {cap[]};
+Physical Surface("side") = {side[]};
+Physical Volume("body") = {ball[]};
+
+Field[1] = MathEval;
+Field[1].F = "Sqrt(x * x + y * y + z * z)";
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h;
+Field[2].SizeMax = hf;
+Field[2].DistMin = rc;
+Field[2].DistMax = 3 * rc;
+Background Field = 2;
+Mesh.MeshSizeExtendFromBoundary = 0;
+Mesh.MeshSizeFromPoints = 0;
+Mesh.MeshSizeFromCurvature = 0;
+Mesh.ElementOrder = 2;
+Mesh.SecondOrderIncomplete = 0;
+Mesh.MshFileVersion = 2.2;
