@@ -170,7 +170,6 @@ GROWN = "a contact term left its pattern, H grows"
 WIDENED = "slid past the Hessian's pattern"
 
 
-@pytest.mark.roundoff
 def test_slide(tmp_path):
     """Large sliding: the half ball pressed on the block, then slid along x
     by SLIDE = 0.4, four times its contact radius a (0.102), in four load
