@@ -283,11 +283,14 @@ static inline void Mortar3dColumn(const Mortar3d *m, PetscInt f, const Mortar3dF
    box, widened by MORTAR3D_NEAR of its size, meets a master face's box),
    so that a node near the master has every face around it integrated
    (its C_j and Q_j whole) and a node far from it none (C_j = 0: not
-   counted, as its gap is positive wherever its faces are). */
+   counted, as its gap is positive wherever its faces are); every: all
+   the slave faces searched, else those this rank's evaluations need
+   (m->queryFaces). */
 #define MORTAR3D_NEAR 0.25
-static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
+static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
 {
   const ContactSurface3d *S = &m->S[m->s];
+  const PetscInt          nq = every ? S->nf : m->nquery;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < 2; ++k) {
@@ -297,8 +300,8 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
   }
   PetscCall(Mortar3dBuildTree(m));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
-  for (PetscInt q = 0; q < m->nquery; ++q) {
-    const PetscInt  f = m->queryFaces[q];
+  for (PetscInt q = 0; q < nq; ++q) {
+    const PetscInt  f = every ? q : m->queryFaces[q];
     PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
@@ -312,6 +315,14 @@ static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
     for (PetscInt i = 0; i < S->nb; ++i)
       if (m->nearNode[S->fnodes[S->nb * f + i]]) m->integrate[f] = PETSC_TRUE;
   }
+  PetscFunctionReturn(0);
+}
+
+/* The faces this rank's evaluations need (m->queryFaces) searched. */
+static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Mortar3dUpdateFaces(m, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
@@ -1555,7 +1566,7 @@ static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal
 
   PetscFunctionBeginUser;
   (void)bodies;
-  PetscCall(Mortar3dUpdate(m));
+  PetscCall(Mortar3dUpdateFaces(m, PETSC_TRUE)); /* every slave face: each rank builds the friction rows whole */
   PetscCall(PetscCalloc1(S->nf + 1, &all));
   PetscCall(PetscArrayzero(m->C, S->nn));
   PetscCall(PetscArrayzero(m->Q, S->nn));
