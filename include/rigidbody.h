@@ -24,36 +24,13 @@
    motion, and the contact's force on it (and moment about its current
    reference point) is its reaction, and the unknowns' gradient. */
 #include "bodycore.h"
+#include "rigiddof.h"
 
 /* What the rest of the program asks of a rigid body beyond body.h: the
    encoding of its surface nodes in the joined indices, the border of its
    unknowns (forcecontrol.c), its outline and size (results.c), and the
    region its lines enclose (surface.c). Its set-up, motion and forces are
    the body's own (src/body/bodyimpl.h). */
-/* A surface node's component in the joined vector's indices: -2 - (2 j + d), node j of the surface, d its component. */
-static inline PetscInt ContactRigidDof(PetscInt j, PetscInt d)
-{
-  return -2 - (2 * j + d);
-}
-static inline PetscBool ContactRigidDofDecode(PetscInt i, PetscInt *j, PetscInt *d)
-{
-  if (i > -2) return PETSC_FALSE;
-  *j = (-2 - i) / 2;
-  *d = (-2 - i) % 2;
-  return PETSC_TRUE;
-}
-/* A 3D rigid body's surface node's component: -2 - (3 j + d). */
-static inline PetscInt ContactRigidDof3(PetscInt j, PetscInt d)
-{
-  return -2 - (3 * j + d);
-}
-static inline PetscBool ContactRigidDofDecode3(PetscInt i, PetscInt *j, PetscInt *d)
-{
-  if (i > -2) return PETSC_FALSE;
-  *j = (-2 - i) / 3;
-  *d = (-2 - i) % 3;
-  return PETSC_TRUE;
-}
 /* Whether its unknown q is a rotation's (2D's 2, 3D's 3, 4, 5): shown in radians and moments. */
 PetscBool      BodyRigidIsRotation(Body, PetscInt q);
 /* The border of a Hessian (forcecontrol.c): from Begin to End, the

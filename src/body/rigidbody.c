@@ -47,6 +47,8 @@
 #include "meshgen.h"
 #include "bodyimpl.h"
 
+static const char *BodyGetControlComponent_Rigid(Body, PetscInt, PetscInt);
+
 /* The options as given: what they mean depends on the body's dimension,
    which its mesh tells (RigidParseMotion, at the set-up). */
 PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
@@ -578,7 +580,7 @@ static PetscErrorCode BodyCheckHeld_Rigid(Body b, PetscBool contact)
 
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < r->nq && !contact && r->dim == 3; ++q)
-    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and its %s is %s, so the problem is singular; hold it with -%s_bc or -%s_rigid_rotation", b->name, BodyGetControlComponent(b, -1, q), r->control[q] ? "force-controlled" : "free", b->name, b->name);
+    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and its %s is %s, so the problem is singular; hold it with -%s_bc or -%s_rigid_rotation", b->name, BodyGetControlComponent_Rigid(b, -1, q), r->control[q] ? "force-controlled" : "free", b->name, b->name);
   for (PetscInt q = 0; q < 3 && !contact; ++q)
     PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
                q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");

@@ -218,6 +218,10 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
     if (spec.kpAuto) *autoPenalty = PETSC_TRUE;
     (*nterms)++;
   }
-  if (help) PetscCall(ContactMortarOptionsHelp(comm)); /* listed once, whether or not a pair is mortar */
+  if (help) { /* listed once, whether or not a pair is mortar, 2D or 3D */
+    PetscReal margin;
+    PetscCall(ContactMortarOptionsHelp(comm));
+    PetscCall(ContactMortar3dOptionsRead(comm, &margin));
+  }
   PetscFunctionReturn(0);
 }

@@ -1950,11 +1950,9 @@ PetscErrorCode ContactMortarOptionsHelp(MPI_Comm comm)
 {
   MortarSlave slave = MORTAR_SLAVE_AUTO;
   MortarBasis basis = MORTAR_BASIS_DUAL;
-  PetscReal   margin;
 
   PetscFunctionBeginUser;
   PetscCall(MortarOptionsRead(comm, &slave, &basis));
-  PetscCall(ContactMortar3dOptionsRead(comm, &margin));
   PetscFunctionReturn(0);
 }
 
