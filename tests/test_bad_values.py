@@ -70,6 +70,7 @@ DOMAINS = {
     "indenter_rigid_centre": ("reals", None, False), "block_rigid_centre": ("reals", None, False),
     "indenter_rigid_rotation": REAL_ANY, "block_rigid_rotation": REAL_ANY,
     # names, paths and lists of names: their own tests (test_bad_input.py, test_scene_files.py)
+    "contact_interface_symmetry": ("name",),  # planes of a 3D pair: test_sphere3d.py::test_symmetry_refused
     "scene": ("name",), "bodies": ("name",), "mesh_dir": ("name",), "output": ("name",), "summary": ("name",),
     "indenter_geo": ("name",), "block_geo": ("name",), "indenter_mesh": ("name",), "block_mesh": ("name",),
     "indenter_geo_params": ("name",), "block_geo_params": ("name",), "indenter_bc": ("name",), "block_bc": ("name",),
