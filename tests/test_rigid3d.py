@@ -96,9 +96,11 @@ def test_taylor(tmp_path):
     sum g . d2x/dq2 are the whole Hessian). The gradient's remainder falls
     at order 2 (`gradient_order` = 2.000) and the Hessian's relative
     remainder halves with the step (order 2 of the remainder itself) over
-    the first four halvings (`hessian_rate` = 0.995 a halving on average,
-    from 1.1e-7 down to 7e-9 of |H v|), before round-off (the penalty 1e7
-    against forces 1) takes over. Where a slave point leaves the master
+    the first four halvings (`hessian_rate` = 0.95 to 1.11 a halving on
+    average over the five BLAS kernels, from 1.1e-7 down to 7e-9 of |H v|:
+    its last step is near round-off, the penalty 1e7 against forces 1;
+    bound 0.75 to 1.25, where a missing term of the Hessian leaves the
+    relative remainder level, a rate of 0). Where a slave point leaves the master
     along the direction (the cube's face the slave on a box's top of the
     same size), the mortar's remainder stalls at 1.5e-6 of |H v|, its
     segments' motion not differentiated (mortar3d.c), elastic or rigid."""
@@ -109,7 +111,7 @@ def test_taylor(tmp_path):
     assert 1.9 <= figure("gradient_order", t["gradient_order"]) <= 2.1
     r = t["hessian_relative_remainder"]
     rate = math.log2(r[0] / r[4]) / 4
-    assert 0.9 <= figure("hessian_rate", rate) <= 1.1 and r[0] <= 1e-5
+    assert 0.75 <= figure("hessian_rate", rate) <= 1.25 and r[0] <= 1e-5
 
 
 @pytest.mark.roundoff
@@ -118,12 +120,12 @@ def test_moment_balance(tmp_path):
     off its face's centre, onto the elastic box (Hex27 6 x 6 x 3), turned by
     0.5 about z and free to turn about x and y: it tilts towards +x about
     +y (`tilt` = 1.6e-3 rad) until the contact's moment about its current
-    reference point is zero (`moment` = 6.0e-10 of F L, bound 1e-7; the
+    reference point is zero (`moment` = up to 3.4e-9 of F L over the kernels, bound 1e-7; the
     stop's gradient bounds it), the contact carries the force (`dF` =
-    1.8e-9, bound 1e-7: the force control's tolerance), and the box's own
+    up to 1.3e-8, bound 1e-7: the force control's tolerance), and the box's own
     nodal forces, summed independently from the HDF5 output at their nodes'
     current positions, have their resultant on the line of action through
-    c + t (`lever` = 1.0e-9 of the face's size, bound 1e-4: the slave's
+    c + t (`lever` = up to 6.0e-9 of the face's size, bound 1e-4: the slave's
     nodes carry them, the master's a gap of 2e-6 apart)."""
     res = run_contact(pressed_cube("0.55,0.5,0.75", "free,free,0.5", "hex=1,n=6,m=3", ["-block_bc", "bottom"]), tmp_path)
     cube = res.summary["bodies"]["cube"]
@@ -209,10 +211,10 @@ def test_boussinesq_punch(h, tmp_path):
 def test_ranks_agree(tmp_path):
     """The tilted cube (test_moment_balance) on 1 and 2 ranks at the default
     stop (each run's gradient 2.2e-9, 1.1e-8 of the contact's nodal
-    forces): the force on the cube agrees to `dF` = 2.6e-12 (bound: the two
+    forces): the force on the cube agrees to `dF` = up to 9.3e-11 (bound: the two
     runs' gradient norms summed, 4.5e-9, each bounding its force's miss),
-    the motion to `dt` = 1.5e-14 of the translation and `drot` = 2.9e-14
-    of the tilt (bound 1e-6: the residual, 1.1e-8 of the nodal forces,
+    the motion to `dt` = up to 1.5e-13 of the translation and `drot` = up
+    to 6.8e-13 of the tilt (bound 1e-6: the residual, 1.1e-8 of the nodal forces,
     through a stiffness 100 times below the contact's)."""
     args = pressed_cube("0.55,0.5,0.75", "free,free,0.5", "hex=1,n=6,m=3", ["-block_bc", "bottom", "-output", "none"])
     s1 = run_contact(args, tmp_path, name="one").summary
