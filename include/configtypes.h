@@ -78,6 +78,7 @@ typedef struct {
   PetscInt  tangentIts;       /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */
   PetscBool iterativeNodal;   /* -newton_iterative_nodal: 3D, GAMG aggregates nodes (iterative.c) */
   PetscBool iterativeTwoLevels; /* -newton_iterative_two_levels: 3D, one rank, by nodes: the vertices' level first */
+  PetscBool iterativeTwoLevelsSet; /* -newton_iterative_two_levels given (else off with contact: newtonstep.c) */
   PCMGCycleType iterativeCycle; /* -newton_iterative_cycle: by nodes, the multigrid cycle */
 } NewtonOptions;
 

@@ -137,20 +137,29 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
    -newton_iterative_dofs, where a factorisation's fill, growing as N^(4/3)
    in 3D against the multigrid's N, costs more time and memory
    (bench/solid3d/RESULTS.md: the crossing on elastic blocks). A 3D scene
-   with contact pairs keeps the direct step at any size: the penalty's
-   stiffness (k_p = 1000 E* over h) leaves CG + GAMG without convergence (the
-   quarter Hertz ball at 66k dofs: no step in 32 min, the direct step 19 s,
-   bench/contact3d/NOTES.md). Said in one line. */
+   with contact pairs keeps the direct step at any size: on the quarter
+   Hertz ball the direct step took a third of CG + GAMG's CPU time at 22k
+   and 66k dofs (2.7 s against 9.5 s, 19 s against 54 s, one rank:
+   docs/solver.md). Said in one line.
+   With contact, CG + GAMG (forced) aggregates the nodes on one level, not
+   on the cells' vertices first (-newton_iterative_two_levels), unless that
+   is given: the vertices' linear displacements cannot meet the mortar's
+   penalty on the quadratic faces, and the two-level preconditioned Hessian
+   of the ball at h = 0.04 spreads its spectrum over 0.038 to 520 (without
+   contact 0.26 to 1.0): CG stalled at 1e-3 for thousands of iterations,
+   where GAMG on the nodes takes 24 to 75. */
 static PetscErrorCode ProblemChooseNewtonStep(Problem p)
 {
   PetscInt N;
 
   PetscFunctionBeginUser;
-  if (p->cfg->newton.iterativeSet || !p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
+  if (!p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
+  if (p->nterms > 0 && !p->cfg->newton.iterativeTwoLevelsSet) p->cfg->newton.iterativeTwoLevels = PETSC_FALSE;
+  if (p->cfg->newton.iterativeSet) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
   if (p->nterms > 0) {
     p->cfg->newton.iterative = PETSC_FALSE;
-    PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation (3D, %" PetscInt_FMT " dofs, with contact: CG + GAMG does not converge under the penalty; -newton_iterative 1 forces it)\n", N));
+    PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation (3D, %" PetscInt_FMT " dofs, with contact pairs; -newton_iterative 1 forces CG + GAMG)\n", N));
     PetscFunctionReturn(0);
   }
   p->cfg->newton.iterative = (PetscBool)(N > p->cfg->newton.iterativeDofs);
@@ -199,12 +208,13 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   o->tangentIts       = 10;
   o->iterativeNodal     = PETSC_TRUE;
   o->iterativeTwoLevels = PETSC_TRUE;
+  o->iterativeTwoLevelsSet = PETSC_FALSE;
   o->iterativeCycle     = PC_MG_CYCLE_W;
   PetscOptionsBegin(comm, NULL, "Newton step options", NULL);
   PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes and 3D scenes with contact direct; other 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
   PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, o->iterativeDofs, &o->iterativeDofs, NULL));
   PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies, CG + GAMG: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, o->iterativeNodal, &o->iterativeNodal, NULL));
-  PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, NULL));
+  PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes. Default: true without contact, false with contact pairs (the vertices cannot meet the penalty)", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, &o->iterativeTwoLevelsSet));
   PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)o->iterativeCycle, (PetscEnum *)&o->iterativeCycle, NULL));
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, o->schur, &o->schur, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)o->schurType, (PetscEnum *)&o->schurType, NULL));
