@@ -12,10 +12,10 @@ Usage:
         a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/ball.h5 [--hertz-3d R,E*[,k]] -o out/ball.png
         a 3D pair (dimension 3): the slave's nodal pressures p_j against the
-        distance r from the contact centre (the node of largest pressure),
-        measured in the plane normal to the pair's force (current
-        positions), with the computed P, p_max and a from the second moment
-        (sum p_j A_j r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile);
+        distance r from the report's axis (through the pressure's centroid
+        along the normal load; reference positions, as the report), with
+        the computed P, p_max and a from the second moment (sum p_j A_j
+        r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile: the report's);
         with --hertz-3d the Hertz curve of a sphere of radius R (E* the
         contact modulus) under k P (P the scene's part's force, k: the
         model's share, 4 for a quarter model, 2 for a half; default 1), by
@@ -30,7 +30,11 @@ Usage:
         transferred shear drawn as the slave's and, where the pair
         declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
         with the computed a (second moment) and p0 = 2 P / (pi a) and his
-        stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
+        stick zone c = a sqrt(1 - Q/(mu P)); a 3D pair's nodal shear along
+        Q against r (as its pressure) with Mindlin's sphere, mu p0/a
+        (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)), p0 = 3 P / (2 pi a^2),
+        c = a (1 - Q/(mu P))^(1/3) from the whole model's loads, and its
+        relative L2 distance (printed); a file without friction is
         skipped with one line (exit status 0; with --quiet without it, as
         make run does)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png

@@ -1,4 +1,4 @@
-"""Run by pvpython (tests/test_output3d_contact.py): opens a 3D contact
+"""Run by pvpython (tests/test_output3d_contact.py, tests/test_view3d.py): opens a 3D contact
 scene's XDMF file as a user would (OpenDataFile, which picks Xdmf3ReaderS:
 the grids read as pieces of one dataset), keeps the contact surface (the
 points with a weight, which is NaN on the bodies: a Threshold on it), warps
