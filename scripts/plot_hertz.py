@@ -638,8 +638,9 @@ def mindlin_figures_3d(g):
     """Mindlin's figures of a 3D pair from its attributes (the report's,
     the whole model's): a the second moment's (fem_a_moment), the normal
     load P and tangential load Q, p0 = 3 P / (2 pi a^2), mu, and
-    c = a (1 - Q/(mu P))^(1/3) (0 at Q >= mu P); None without them."""
-    if "whole_normal_load" not in g.attrs:
+    c = a (1 - Q/(mu P))^(1/3) (0 at Q >= mu P); None without them or
+    where the pair declares no Hertz radii (not a sphere: no Mindlin)."""
+    if "whole_normal_load" not in g.attrs or "hertz_a" not in g.attrs:
         return None
     a, P, Q, mu = attr(g, "fem_a_moment"), attr(g, "whole_normal_load"), attr(g, "whole_tangential_load"), attr(g, "friction")
     if not (a > 0 and P > 0 and mu > 0):
@@ -667,9 +668,9 @@ def plot_shear_3d(ax, pair, g, side, units):
     along Q against r (radial_profile), its stuck nodes filled and the
     slipping or open ones hollow, Coulomb's bound mu p, the computed stick
     radius (the whole model's stick area as a disc; shaded) and Mindlin's
-    curve and stick radius from the computed a and Q/(mu P), with the
-    nodal shear's relative L2 distance from it (weights A_j, every slave
-    node), also printed on stdout."""
+    curve and stick radius from the computed a and Q/(mu P) where the pair
+    declares Hertz radii, with the nodal shear's relative L2 distance from
+    it (weights A_j, every slave node), also printed on stdout."""
     r, p, A = radial_profile(side, g)
     q = shear_along_q(side, g)
     stick = side["node_stick"][:] > 0.5
@@ -710,7 +711,11 @@ def plot_shear_3d(ax, pair, g, side, units):
         print(f"{PROG}: pair '{pair}' (3D): shear along Q against Mindlin's: Q/(mu P) {mf['ratio']:.6g}, "
               f"a {a:.6g}, c {c:.6g}, Mindlin's c {cm:.6g}, relative L2 {l2:.15g}")
     else:
-        text += [f"stick radius c = {units.value(c, 'length')}"]
+        if "whole_normal_load" in g.attrs:
+            P, Q = attr(g, "whole_normal_load"), attr(g, "whole_tangential_load")
+            text += [f"P = {units.value(P, 'force', True)}, Q = {units.value(Q, 'force', True)}, "
+                     f"Q/(mu P) = {Q / (mu * P):.4f}" if P > 0 and mu > 0 else ""]
+        text += [f"stick radius c = {units.value(c, 'length')} (no Hertz radii: no Mindlin curve)"]
     ax.set_xlim(0, rmax)
     lo, hi = ax.get_ylim()
     ax.set_ylim(min(lo, 0.0), hi + 0.5 * (hi - min(lo, 0.0)))

@@ -150,8 +150,8 @@ def test_plot_pressure_agrees_with_report(sheared, tmp_path):
 def test_plot_shear_against_mindlin(sheared, tmp_path):
     """plot_hertz.py --shear on the 3D pair draws the nodal shear along Q
     against r with Mindlin's mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2))
-    (looked at: the stuck disc's nodes below the curve's dip, the slipping
-    annulus on Coulomb's bound); the PNG is written (`shear_png_colours` = 1271
+    (looked at: the stuck nodes scattered about the curve inside c, the
+    slipping annulus's on it where it follows Coulomb's bound); the PNG is written (`shear_png_colours` = 1271
     distinct colours). The relative L2 distance it prints (15 digits),
     `plot_l2` = 0.2015, is recomputed here from whole_figures (the
     reactions and the HDF5's nodal fields): q the nodal shear along S, r
