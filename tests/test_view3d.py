@@ -177,6 +177,19 @@ def test_plot_shear_against_mindlin(sheared, tmp_path):
     assert l2 <= 0.5
 
 
+def hues(png):
+    """The number of 30-degree hue bins that hold at least 0.1 % of an
+    image's pixels among its saturated ones (saturation > 0.4, value >
+    0.2: not the grey-blue background, not the white middle of the colour
+    map)."""
+    import matplotlib.colors
+    import matplotlib.image
+    hsv = matplotlib.colors.rgb_to_hsv(matplotlib.image.imread(png)[:, :, :3].reshape(-1, 3))
+    keep = (hsv[:, 1] > 0.4) & (hsv[:, 2] > 0.2)
+    count = np.bincount(np.minimum((hsv[keep, 0] * 12).astype(int), 11), minlength=12)
+    return int(np.sum(count >= 1e-3 * len(hsv)))
+
+
 def test_paraview_renders_friction(sheared, tmp_path, display):  # noqa: F811
     """What a user sees in ParaView: the sheared half ball's XDMF file
     opened (OpenDataFile), its contact surface kept (Threshold on weight),
@@ -187,7 +200,10 @@ def test_paraview_renders_friction(sheared, tmp_path, display):  # noqa: F811
     half disc, the shear's ring brightest where the annulus slips, the stuck
     disc red in the blue slipping annulus): `pressure_colours` = 1879,
     `shear_colours` = 1974, `stick_colours` = 1306 distinct colours (at least 10),
-    both ends of the colour map (cool and warm) among them."""
+    both ends of the colour map (cool and warm) among them, in at least 2
+    hue bins of 30 degrees (`pressure_hues` = 3, `shear_hues` = 2,
+    `stick_hues` = 3: ParaView's default Cool to Warm map is blue, white
+    and red)."""
     import matplotlib.image
     png = tmp_path / "view.png"
     xdmf = sheared.output_path.with_suffix(".xdmf")
@@ -209,3 +225,4 @@ def test_paraview_renders_friction(sheared, tmp_path, display):  # noqa: F811
         img = (matplotlib.image.imread(path)[:, :, :3] * 255).round().astype(int).reshape(-1, 3)
         red = img[:, 0] - img[:, 2]
         assert red.max() > 100 and red.min() < -60, field
+        assert figure(f"{field}_hues", hues(path)) >= 2, field
