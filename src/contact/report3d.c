@@ -36,8 +36,9 @@
    is not tilted by the part's share of the radial shear a normal load
    locks in. N, not |F|, is Hertz's load and its direction n the axis r
    is measured from: under Q = 0.15 N the force leans 0.15 rad off the
-   normal, which would shorten r by 1 % across the contact and put 0.4 %
-   on Hertz's a. The stuck nodes' area, times share, gives the stick radius
+   normal, which would shorten r along Q by 1.1 % (the second moment's a
+   by 0.56 % on tests/test_view3d.py's half ball) and put +0.4 % on
+   Hertz's a. The stuck nodes' area, times share, gives the stick radius
    c = sqrt(stick area / pi) (a disc of that area, as a_area is), beside
    Mindlin's c = a (1 - Q/(mu N))^(1/3) of a sphere with the computed a
    (the second moment's); 0 at Q >= mu N (full sliding). */
