@@ -12,10 +12,10 @@ Usage:
         a scene without contact pairs is skipped with one line (exit status 0)
     python3 scripts/plot_hertz.py out/ball.h5 [--hertz-3d R,E*[,k]] -o out/ball.png
         a 3D pair (dimension 3): the slave's nodal pressures p_j against the
-        distance r from the contact centre (the node of largest pressure),
-        measured in the plane normal to the pair's force (current
-        positions), with the computed P, p_max and a from the second moment
-        (sum p_j A_j r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile);
+        distance r from the report's axis (through the pressure's centroid
+        along the normal load; reference positions, as the report), with
+        the computed P, p_max and a from the second moment (sum p_j A_j
+        r_j^2 / sum p_j A_j = 2 a^2 / 5 for Hertz's profile: the report's);
         with --hertz-3d the Hertz curve of a sphere of radius R (E* the
         contact modulus) under k P (P the scene's part's force, k: the
         model's share, 4 for a quarter model, 2 for a half; default 1), by
@@ -30,7 +30,11 @@ Usage:
         transferred shear drawn as the slave's and, where the pair
         declares Hertz radii in plane strain, Cattaneo-Mindlin's curve drawn
         with the computed a (second moment) and p0 = 2 P / (pi a) and his
-        stick zone c = a sqrt(1 - Q/(mu P)); a file without friction is
+        stick zone c = a sqrt(1 - Q/(mu P)); a 3D pair's nodal shear along
+        Q against r (as its pressure) with Mindlin's sphere, mu p0/a
+        (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)), p0 = 3 P / (2 pi a^2),
+        c = a (1 - Q/(mu P))^(1/3) from the whole model's loads, and its
+        relative L2 distance (printed); a file without friction is
         skipped with one line (exit status 0; with --quiet without it, as
         make run does)
     python3 scripts/plot_hertz.py out/hertz.h5 --field [--scale S] -o out/vm.png
@@ -532,37 +536,70 @@ def hertz_3d(P, R, Es):
     return a, 3 * P / (2 * np.pi * a * a)
 
 
-def radial_profile(side, force):
-    """A 3D slave surface's nodes: (r, p, A), r the distance from the node
-    of largest pressure in the plane normal to force (current positions)."""
-    x, p, A = side["node_x"][:], side["node_pressure"][:], side["node_weight"][:]
-    n = np.asarray(force, float)
-    n = n / np.linalg.norm(n) if np.linalg.norm(n) > 0 else np.array([0.0, 0.0, 1.0])
-    d = x - x[int(np.argmax(p))]
+def report_axis(g):
+    """The report's centre and axis of a 3D pair (its attributes centre_x,
+    ..., axis_z: the pressure's centroid in reference positions moved onto
+    the symmetry planes, and the whole model's force direction), or None
+    in a file without them."""
+    if "centre_x" not in g.attrs:
+        return None
+    return (np.array([attr(g, f"centre_{c}") for c in "xyz"]),
+            np.array([attr(g, f"axis_{c}") for c in "xyz"]))
+
+
+def radial_profile(side, g):
+    """A 3D slave surface's nodes: (r, p, A), r the distance from the
+    report's axis (report_axis: through the pressure's centroid along the
+    force) in reference positions, as the report measures it
+    (src/contact/report3d.c); in a file without the axis, from the node
+    of largest pressure in the plane normal to the pair's force."""
+    X, p, A = side["node_X"][:], side["node_pressure"][:], side["node_weight"][:]
+    axis = report_axis(g)
+    if axis is None:
+        n = np.array([attr(g, f"force_{c}", 0.0) for c in "xyz"])
+        n = n / np.linalg.norm(n) if np.linalg.norm(n) > 0 else np.array([0.0, 0.0, 1.0])
+        axis = (X[int(np.argmax(p))], n)
+    c, n = axis
+    d = X - c
     d -= np.outer(d @ n, n)
     return np.linalg.norm(d, axis=1), p, A
 
 
+def second_moment_radius(r, p, A):
+    """a from the nodal pressures' second moment: sum p A r^2 / sum p A =
+    2 a^2 / 5 for Hertz's profile (the nodes in contact, p > 0)."""
+    on = p > 0
+    return np.sqrt(2.5 * np.sum(p[on] * A[on] * r[on] ** 2) / np.sum(p[on] * A[on]))
+
+
+def slave_3d(g):
+    """A 3D pair's slave surface group (the one with node_pressure)."""
+    return next(v for v in g.values() if isinstance(v, h5py.Group) and "node_pressure" in v)
+
+
 def plot_pressure_3d(ax, pair, g, units, hertz=None):
     """A 3D pair: the slave's nodal pressures against r (radial_profile),
-    the Hertz curve where hertz = (R, E*, k)."""
-    side = next(v for v in g.values() if isinstance(v, h5py.Group) and "node_pressure" in v)
-    F = [attr(g, f"force_{c}", 0.0) for c in "xyz"]
-    r, p, A = radial_profile(side, F)
+    the Hertz curve where hertz = (R, E*, k), under k times the part's load
+    (with friction its normal load, as the report's Hertz takes); the
+    figures against Hertz's also printed on stdout."""
+    side = slave_3d(g)
+    r, p, A = radial_profile(side, g)
     on = p > 0
     share = attr(g, "model_share", 1.0)   # the whole model over the scene's part (-contact_<pair>_symmetry)
-    P = attr(g, "P", float("nan")) / share   # the part's
+    # the part's load: with friction the normal load (the report's Hertz load), else |F|
+    P = attr(g, "whole_normal_load", attr(g, "P", float("nan"))) / share
     if hertz is None and "hertz_a" in g.attrs:   # the scene's own Hertz radii
         hertz = (attr(g, "R_star"), attr(g, "E_star"), share)
     if not on.any():
         raise PlotError(f"pair '{pair}': no slave node in contact")
-    am = np.sqrt(2.5 * np.sum(p * A * r * r) / np.sum(p * A))
+    am = second_moment_radius(r, p, A)
     rmax = 1.6 * max(am, r[on].max())
     near = r <= rmax
     name = f"{attr(side, 'body')}:{attr(side, 'group')}"
     ax.plot(r[near], p[near], "o", ms=3, color=ROLE_COLOURS["slave"], zorder=3, label=f"{name}, nodal pressure (slave)")
-    text = [f"P = {units.value(P, 'force', True)} (the model's)" if share == 1 else
-            f"P = {units.value(share * P, 'force', True)} (the whole model's, {share:g} times the scene's)",
+    normal = " normal load" if "whole_normal_load" in g.attrs else ""
+    text = [f"P = {units.value(P, 'force', True)} (the model's{normal})" if share == 1 else
+            f"P = {units.value(share * P, 'force', True)} (the whole model's{normal}, {share:g} times the scene's)",
             f"computed: p_max = {units.value(p.max(), 'stress')}, a = {units.value(am, 'length')} (second moment)"]
     if hertz:
         R, Es, k = hertz
@@ -575,15 +612,121 @@ def plot_pressure_3d(ax, pair, g, units, hertz=None):
         text += [f"Hertz: a = {units.value(a, 'length')}, p_max = {units.value(p0, 'stress')}",
                  f"p_max {100 * (p.max() - p0) / p0:+.2f} %, a (second moment) {100 * (am - a) / a:+.2f} %",
                  f"relative L2 error of the nodal p: {100 * l2:.2f} %"]
+        print(f"{PROG}: pair '{pair}' (3D): pressure against Hertz's: a {am:.15g} (second moment), Hertz's a {a:.15g}, "
+              f"p_max {p.max():.15g}, Hertz's p0 {p0:.15g}, relative L2 {l2:.15g}")
     ax.set_xlim(0, rmax)
     ax.set_ylim(0, 1.45 * ax.get_ylim()[1])
     ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top",
             fontsize=8, bbox=dict(boxstyle="round", fc="w", alpha=0.8))
     ax.legend(loc="upper right", fontsize=8)
     ax.grid(alpha=0.3)
-    ax.set_xlabel(units.label("distance r from the contact centre (current)", "length"))
+    ax.set_xlabel(units.label("distance r from the contact's axis (reference positions)", "length"))
     ax.set_ylabel(units.label("pressure p", "stress"))
     ax.set_title(f"contact pressure, pair '{pair}' (3D)")
+
+
+def mindlin_shear_3d(r, a, p0, mu, c):
+    """Mindlin's shear traction of a sphere at the distance r from the axis:
+    mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)), the second term inside the
+    stick disc r < c alone, 0 outside a: Coulomb's bound mu p of Hertz's
+    pressure in the slip annulus, less a Hertz-like profile of radius c
+    inside it."""
+    return mu * p0 / a * (np.sqrt(np.clip(a * a - r * r, 0, None)) - np.sqrt(np.clip(c * c - r * r, 0, None)))
+
+
+def mindlin_figures_3d(g):
+    """Mindlin's figures of a 3D pair from its attributes (the report's,
+    the whole model's): a the second moment's (fem_a_moment), the normal
+    load P and tangential load Q, p0 = 3 P / (2 pi a^2), mu, and
+    c = a (1 - Q/(mu P))^(1/3) (0 at Q >= mu P); None without them or
+    where the pair declares no Hertz radii (not a sphere: no Mindlin)."""
+    if "whole_normal_load" not in g.attrs or "hertz_a" not in g.attrs:
+        return None
+    a, P, Q, mu = attr(g, "fem_a_moment"), attr(g, "whole_normal_load"), attr(g, "whole_tangential_load"), attr(g, "friction")
+    if not (a > 0 and P > 0 and mu > 0):
+        return None
+    ratio = Q / (mu * P)
+    return dict(a=a, P=P, Q=Q, mu=mu, ratio=ratio, p0=3 * P / (2 * np.pi * a * a),
+                c=a * (1 - ratio) ** (1 / 3) if ratio < 1 else 0.0)
+
+
+def shear_along_q(side, g):
+    """Each slave node's shear traction along the whole model's tangential
+    load (the attribute shear_axis_x..z; in a file without it, along the
+    A_j-weighted sum of the nodal shears)."""
+    t = side["node_shear"][:]
+    if "shear_axis_x" in g.attrs:
+        e = np.array([attr(g, f"shear_axis_{c}") for c in "xyz"])
+    else:
+        e = (side["node_weight"][:, None] * t).sum(0)
+        e = e / np.linalg.norm(e) if np.linalg.norm(e) > 0 else e
+    return t @ e
+
+
+def plot_shear_3d(ax, pair, g, side, units):
+    """A 3D pair with friction at the run's end: the slave's nodal shear
+    along Q against r (radial_profile), its stuck nodes filled and the
+    slipping or open ones hollow, Coulomb's bound mu p, the computed stick
+    radius (the whole model's stick area as a disc; shaded) and Mindlin's
+    curve and stick radius from the computed a and Q/(mu P) where the pair
+    declares Hertz radii, with the nodal shear's relative L2 distance from
+    it (weights A_j, every slave node), also printed on stdout."""
+    r, p, A = radial_profile(side, g)
+    q = shear_along_q(side, g)
+    stick = side["node_stick"][:] > 0.5
+    mu = attr(g, "friction")
+    sign = 1.0 if np.sum(A * q) >= 0 else -1.0
+    q = sign * q   # drawn positive along the net shear
+    mf = mindlin_figures_3d(g)
+    on = p > 0
+    if not on.any():
+        raise PlotError(f"pair '{pair}': no slave node in contact")
+    rmax = 1.6 * max(mf["a"] if mf else 0.0, r[on].max())
+    near = r <= rmax
+    colour = ROLE_COLOURS["slave"]
+    name = f"{attr(side, 'body')}:{attr(side, 'group')}"
+    ax.plot(r[near & stick], q[near & stick], "o", ms=3.5, color=colour, zorder=3,
+            label=f"{name}, nodal shear along Q: stuck node")
+    ax.plot(r[near & ~stick], q[near & ~stick], "o", ms=4, mfc="w", mew=0.9, color=colour, zorder=3,
+            label="slipping or open node")
+    ax.plot(r[near], mu * p[near], ".", ms=3, color="0.45", zorder=2, label="Coulomb's bound mu p (computed p)")
+    c = attr(g, "whole_stick_radius", attr(g, "stick_radius", 0.0))
+    if c > 0:
+        ax.axvspan(0.0, c, color=colour, alpha=0.12, zorder=1, label="computed stick radius c (stick area as a disc)")
+    text = [f"mu = {mu:g}"]
+    if mf:
+        a, cm = mf["a"], mf["c"]
+        t = np.unique(np.r_[np.linspace(0, max(rmax, 1.2 * a), 801), [cm, a]])
+        ax.plot(t, mindlin_shear_3d(t, a, mf["p0"], mu, cm), "k-", lw=1.5, zorder=2.5,
+                label="Mindlin (computed a, p0 = 3P/(2 pi a^2))")
+        if cm > 0:
+            ax.axvline(cm, color="k", ls=":", lw=1.0, zorder=2)
+        qm = mindlin_shear_3d(r, a, mf["p0"], mu, cm)
+        l2 = np.sqrt(np.sum(A * (q - qm) ** 2) / np.sum(A * qm * qm))
+        text += [f"P = {units.value(mf['P'], 'force', True)}, Q = {units.value(mf['Q'], 'force', True)} "
+                 f"(the whole model's), Q/(mu P) = {mf['ratio']:.4f}",
+                 f"a = {units.value(a, 'length')} (second moment), mu p0 = {units.value(mu * mf['p0'], 'stress')}",
+                 f"stick radius: c/a = {c / a:.4f}, Mindlin's {cm / a:.4f}" + (" (dotted)" if cm > 0 else " (full sliding)"),
+                 f"relative L2 of q against Mindlin's: {100 * l2:.2f} %"]
+        print(f"{PROG}: pair '{pair}' (3D): shear along Q against Mindlin's: Q/(mu P) {mf['ratio']:.6g}, "
+              f"a {a:.6g}, c {c:.6g}, Mindlin's c {cm:.6g}, relative L2 {l2:.15g}")
+    else:
+        if "whole_normal_load" in g.attrs:
+            P, Q = attr(g, "whole_normal_load"), attr(g, "whole_tangential_load")
+            text += [f"P = {units.value(P, 'force', True)}, Q = {units.value(Q, 'force', True)}, "
+                     f"Q/(mu P) = {Q / (mu * P):.4f}" if P > 0 and mu > 0 else ""]
+        text += [f"stick radius c = {units.value(c, 'length')} (no Hertz radii: no Mindlin curve)"]
+    ax.set_xlim(0, rmax)
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(min(lo, 0.0), hi + 0.5 * (hi - min(lo, 0.0)))
+    ax.axhline(0.0, color="0.6", lw=0.6, zorder=1)
+    ax.text(0.02, 0.97, "\n".join(text), transform=ax.transAxes, va="top", fontsize=8,
+            bbox=dict(boxstyle="round", fc="w", alpha=0.8))
+    ax.legend(loc="upper right", fontsize=7)
+    ax.grid(alpha=0.3)
+    ax.set_xlabel(units.label("distance r from the contact's axis (reference positions)", "length"))
+    ax.set_ylabel(units.label("shear traction q along Q", "stress"))
+    ax.set_title(f"shear traction, pair '{pair}' (3D, friction mu = {mu:g})")
 
 
 def plot_pressure(f, axes, units, zoom=None, axis="s", hertz3d=None):
@@ -663,7 +806,9 @@ def frictional_pairs(f):
     shear (node_shear: a pair with friction)."""
     out = []
     for pair, g in f.get("contact", {}).items():
-        if attr(g, "dimension", 2) == 3:   # a 3D pair's shear is not drawn here
+        if attr(g, "dimension", 2) == 3:
+            if "node_shear" in slave_3d(g):
+                out.append((pair, g, slave_3d(g)))
             continue
         for side, role in surface_roles(g):
             if role == "slave" and "node_shear" in side:
@@ -742,6 +887,9 @@ def plot_shear(f, axes, units, zoom=None, axis="s"):
     if axisym:
         axis = "x"
     for ax, (pair, g, side) in zip(axes, frictional_pairs(f)):
+        if attr(g, "dimension", 2) == 3:
+            plot_shear_3d(ax, pair, g, side, units)
+            continue
         (u, to), s = abscissa(side, axis), sample(side, "s") - attr(side, "centre", 0.0)
         q, p, w = side["node_shear"][()], sample(side, "pressure"), sample(side, "weight")
         stick = side["node_stick"][()] > 0.5

@@ -1000,7 +1000,7 @@ static PetscErrorCode Mortar3dReport(Mortar3d *m)
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(S->nn + 1, &p));
   for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
-  ContactReport3dCompute(&m->spec, S->nn, S->X, p, m->A, m->force[0], &m->report);
+  ContactReport3dCompute(&m->spec, S->nn, S->X, p, m->A, m->force[0], m->fr ? m->shearForce : NULL, &m->report);
   PetscCall(PetscFree(p));
   PetscFunctionReturn(0);
 }
@@ -1040,6 +1040,7 @@ static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
   if (!m->ncontact) m->pmin = 0.0;
   if (m->fr) PetscCall(Mortar3dFrictionResults(m));
   PetscCall(Mortar3dReport(m));
+  if (m->fr) ContactReport3dFriction(Friction3dGetCoefficient(m->fr), m->stickArea, &m->report);
   m->done = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -1095,6 +1096,7 @@ static PetscErrorCode Mortar3dWriteJSON(EnergyTerm t, Body bodies[], FILE *fp, P
     ContactJSONKeyReal(fp, ", ", "tangential_load", m->tangentialLoad);
     ContactJSONKeyReal(fp, ", ", "stick_area", m->stickArea);
     ContactJSONKeyReal(fp, ", ", "stick_radius", m->stickRadius);
+    ContactReport3dWriteFrictionJSON(&m->report, fp, ", ");
   }
   { /* the slave nodes in contact: reference position, pressure, weight A_j */
     const ContactSurface3d *S = &m->S[m->s];
@@ -1132,9 +1134,13 @@ static PetscErrorCode Mortar3dWriteHDF5Report(const Mortar3d *m, PetscViewer v, 
   const ContactReport3d *R = &m->report;
   const char            *names[] = {"model_share", "contact_area", "fem_a", "fem_a_moment", "E_star", "R_star", "hertz_a", "hertz_pmax", "pressure_l2_error"};
   const PetscReal        vals[]  = {R->share, R->area, R->aArea, R->aMoment, m->spec.Estar, m->spec.Rstar, R->hertzA, R->hertzP0, R->l2err};
+  const char            *more[CONTACT_REPORT3D_ATTRS];
+  PetscReal              mval[CONTACT_REPORT3D_ATTRS];
+  const PetscInt         nmore = ContactReport3dAttributes(R, more, mval);
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < (m->spec.hertz ? 9 : 4); ++k) ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, names[k], PETSC_REAL, &vals[k]));
+  for (PetscInt k = 0; k < nmore; ++k) ContactOutputCall(v, PetscViewerHDF5WriteAttribute(v, group, more[k], PETSC_REAL, &mval[k]));
   PetscFunctionReturn(0);
 }
 

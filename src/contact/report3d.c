@@ -21,13 +21,27 @@
              profile has int p r^2 dA / int p dA = 2 a^2 / 5 (a radius from
              the whole profile, not from where its last node happens to be);
      r_j   the distance from X_j to the axis through the centre c along the
-           force's direction n, c the centroid of p_j A_j X_j moved onto
+           normal load's direction n, c the centroid of p_j A_j X_j moved onto
            each symmetry plane (where the whole model's centroid lies).
    Hertz, two spheres (1/R* = 1/R1 + 1/R2, E* of both bodies):
      a = (3 P R* / (4 E*))^(1/3),  p0 = 3 P / (2 pi a^2),
-   P the whole model's force, and the relative L2 distance
+   P the whole model's normal load, and the relative L2 distance
      sqrt(sum_j A_j (p_j - p_H(r_j))^2 / sum_j A_j p_H(r_j)^2)
-   over every slave node, p_H(r) = p0 sqrt(1 - r^2/a^2) inside a. */
+   over every slave node, p_H(r) = p0 sqrt(1 - r^2/a^2) inside a.
+
+   With friction, the friction's force on the first body (the part's shear
+   force s) is made the whole model's as the force is (its components
+   normal to the planes cancel, the rest times share): the tangential load
+   Q = |s| and the normal load N = |F - s| of the whole model, so that Q/(mu N)
+   is not tilted by the part's share of the radial shear a normal load
+   locks in. N, not |F|, is Hertz's load and its direction n the axis r
+   is measured from: under Q = 0.15 N the force leans 0.15 rad off the
+   normal, which would shorten r along Q by 1.1 % (the second moment's a
+   by 0.56 % on tests/test_view3d.py's half ball) and put +0.4 % on
+   Hertz's a. The stuck nodes' area, times share, gives the stick radius
+   c = sqrt(stick area / pi) (a disc of that area, as a_area is), beside
+   Mindlin's c = a (1 - Q/(mu N))^(1/3) of a sphere with the computed a
+   (the second moment's); 0 at Q >= mu N (full sliding). */
 #include "report3d.h"
 #include "contactreport.h"
 
@@ -43,30 +57,44 @@ static PetscReal Report3dRadius2(const ContactReport3d *R, const PetscReal X[3])
   return PetscMax(d2 - dn * dn, 0.0);
 }
 
-/* The whole model's force and its direction. */
-static void Report3dForce(const ContactPairSpec *spec, const PetscReal F[3], ContactReport3d *R)
+/* The whole model's force, its friction part S (with friction), the normal
+   load N = |F - S| and its direction. */
+static void Report3dForce(const ContactPairSpec *spec, const PetscReal F[3], const PetscReal S[], ContactReport3d *R)
 {
-  R->share = 1.0;
-  for (PetscInt k = 0; k < 3; ++k) R->force[k] = F[k];
+  PetscReal n[3], t2 = 0.0;
+
+  R->share    = 1.0;
+  R->friction = (PetscBool)(S != NULL);
+  for (PetscInt k = 0; k < 3; ++k) {
+    R->force[k] = F[k];
+    R->shear[k] = S ? S[k] : 0.0;
+  }
   for (PetscInt s = 0; s < spec->nsym; ++s) {
     R->share *= 2.0;
     R->force[spec->symAxis[s]] = 0.0;
+    R->shear[spec->symAxis[s]] = 0.0;
   }
-  R->P = 0.0;
+  R->P = R->N = 0.0;
   for (PetscInt k = 0; k < 3; ++k) {
     R->force[k] *= R->share;
+    R->shear[k] *= R->share;
+    n[k] = R->force[k] - R->shear[k];
     R->P += R->force[k] * R->force[k];
+    R->N += n[k] * n[k];
+    t2 += R->shear[k] * R->shear[k];
   }
   R->P = PetscSqrtReal(R->P);
-  for (PetscInt k = 0; k < 3; ++k) R->normal[k] = R->P > 0 ? R->force[k] / R->P : (k == 2 ? 1.0 : 0.0);
+  R->N = PetscSqrtReal(R->N);
+  R->Q = PetscSqrtReal(t2);
+  for (PetscInt k = 0; k < 3; ++k) R->normal[k] = R->N > 0 ? n[k] / R->N : (k == 2 ? 1.0 : 0.0);
 }
 
-void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], const PetscReal F[3], ContactReport3d *R)
+void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], const PetscReal F[3], const PetscReal shear[], ContactReport3d *R)
 {
   PetscReal w = 0.0, m2 = 0.0, err = 0.0, nrm = 0.0;
 
   PetscMemzero(R, sizeof(*R));
-  Report3dForce(spec, F, R);
+  Report3dForce(spec, F, shear, R);
   for (PetscInt j = 0; j < n; ++j) {
     if (!(p[j] > 0)) continue;
     w += p[j] * A[j];
@@ -82,14 +110,51 @@ void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const Petsc
   R->aArea   = PetscSqrtReal(R->area / PETSC_PI);
   R->aMoment = w > 0 ? PetscSqrtReal(2.5 * m2 / w) : 0.0;
   R->l2err   = (PetscReal)NAN;
-  if (!spec->hertz || !(R->P > 0)) return;
-  HertzPointContact(R->P, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzP0);
+  if (!spec->hertz || !(R->N > 0)) return;
+  HertzPointContact(R->N, spec->Estar, spec->Rstar, &R->hertzA, &R->hertzP0);
   for (PetscInt j = 0; j < n; ++j) {
     const PetscReal ph = HertzPressure(R->hertzP0, R->hertzA, PetscSqrtReal(Report3dRadius2(R, &X[3 * j])));
     err += A[j] * PetscSqr(p[j] - ph);
     nrm += A[j] * ph * ph;
   }
   R->l2err = nrm > 0 ? PetscSqrtReal(err / nrm) : (PetscReal)NAN;
+}
+
+void ContactReport3dFriction(PetscReal mu, PetscReal stickArea, ContactReport3d *R)
+{
+  R->mu          = mu;
+  R->stickArea   = R->share * stickArea;
+  R->stickRadius = PetscSqrtReal(R->stickArea / PETSC_PI);
+  R->mindlinC    = mu > 0 && R->Q < mu * R->N ? R->aMoment * PetscCbrtReal(1 - R->Q / (mu * R->N)) : 0.0;
+}
+
+PetscInt ContactReport3dAttributes(const ContactReport3d *R, const char *names[], PetscReal vals[])
+{
+  const char *fixed[] = {"centre_x", "centre_y", "centre_z", "axis_x", "axis_y", "axis_z"};
+  const char *fric[]  = {"whole_normal_load", "whole_tangential_load", "whole_stick_area", "whole_stick_radius", "mindlin_c", "shear_axis_x", "shear_axis_y", "shear_axis_z"};
+  PetscInt    n       = 0;
+
+  for (PetscInt k = 0; k < 3; ++k) {
+    names[n]   = fixed[k];
+    vals[n++]  = R->centre[k];
+  }
+  for (PetscInt k = 0; k < 3; ++k) {
+    names[n]  = fixed[3 + k];
+    vals[n++] = R->normal[k];
+  }
+  if (!R->friction) return n;
+  {
+    const PetscReal v[5] = {R->N, R->Q, R->stickArea, R->stickRadius, R->mindlinC};
+    for (PetscInt k = 0; k < 5; ++k) {
+      names[n]  = fric[k];
+      vals[n++] = v[k];
+    }
+  }
+  for (PetscInt k = 0; k < 3; ++k) {
+    names[n]  = fric[5 + k];
+    vals[n++] = R->Q > 0 ? R->shear[k] / R->Q : 0.0;
+  }
+  return n;
 }
 
 static void Report3dPlanes(const ContactPairSpec *spec, char buf[], size_t len)
@@ -111,12 +176,17 @@ PetscErrorCode ContactReport3dView(const ContactReport3d *R, const ContactPairSp
     PetscCall(PetscPrintf(comm, "  the whole model (symmetric about %s: %d times this part): force (%.6g, %.6g, %.6g), P = %.6g, contact area %.6g\n", planes, (int)R->share, (double)F[0], (double)F[1], (double)F[2], (double)R->P, (double)R->area));
   }
   PetscCall(PetscPrintf(comm, "  contact radius a = %.6g from the contact area (sqrt(area/pi)), %.6g from the pressure's second moment (sum p A r^2 / sum p A = 2 a^2/5, reference positions, centre (%.4g, %.4g, %.4g)); p_max = %.6g\n", (double)R->aArea, (double)R->aMoment, (double)R->centre[0], (double)R->centre[1], (double)R->centre[2], (double)R->pmax));
+  if (R->friction) {
+    PetscCall(PetscPrintf(comm, "  %s: P = %.6g (the normal load), Q = %.6g, Q/(mu P) = %.6g; a = %.6g (area), %.6g (second moment); p_max = %.6g; stick radius c = %.6g (sqrt(stick area/pi), c/a = %.4f, a the second moment's); Mindlin's c = %.6g (c/a = (1 - Q/(mu P))^(1/3) = %.4f)\n", spec->nsym ? "the whole model" : "the pair",
+                          (double)R->N, (double)R->Q, (double)(R->N > 0 ? R->Q / (R->mu * R->N) : 0.0), (double)R->aArea, (double)R->aMoment, (double)R->pmax, (double)R->stickRadius, (double)(R->aMoment > 0 ? R->stickRadius / R->aMoment : 0.0), (double)R->mindlinC,
+                          (double)(R->aMoment > 0 ? R->mindlinC / R->aMoment : 0.0)));
+  }
   if (!spec->hertz) PetscFunctionReturn(0);
-  if (!(R->P > 0)) {
+  if (!(R->N > 0)) {
     PetscCall(PetscPrintf(comm, "  no contact force: nothing to compare with Hertz\n"));
     PetscFunctionReturn(0);
   }
-  PetscCall(PetscPrintf(comm, "  Hertz, two spheres (E* = %g, R* = %g, P = %.6g): a = %.6g, p0 = %.6g\n", (double)spec->Estar, (double)spec->Rstar, (double)R->P, (double)R->hertzA, (double)R->hertzP0));
+  PetscCall(PetscPrintf(comm, "  Hertz, two spheres (E* = %g, R* = %g, P = %.6g): a = %.6g, p0 = %.6g\n", (double)spec->Estar, (double)spec->Rstar, (double)R->N, (double)R->hertzA, (double)R->hertzP0));
   PetscCall(PetscPrintf(comm, "  computed: a = %.6g (%+.2f %%) from the second moment, %.6g (%+.2f %%) from the area; p_max = %.6g (%+.2f %%); relative L2 error of the nodal pressure %.2f %%\n", (double)R->aMoment, (double)(100 * (R->aMoment / R->hertzA - 1)), (double)R->aArea, (double)(100 * (R->aArea / R->hertzA - 1)), (double)R->pmax,
                         (double)(100 * (R->pmax / R->hertzP0 - 1)), (double)(100 * R->l2err)));
   PetscFunctionReturn(0);
@@ -137,4 +207,13 @@ void ContactReport3dWriteJSON(const ContactReport3d *R, const ContactPairSpec *s
     ContactJSONKeyVector(fp, sep, "whole_force", 3, R->force);
   }
   if (spec->hertz) ContactHertzJSON(fp, sep, spec, R->hertzA, R->hertzP0, R->l2err);
+}
+
+void ContactReport3dWriteFrictionJSON(const ContactReport3d *R, FILE *fp, const char sep[])
+{
+  ContactJSONKeyReal(fp, sep, "whole_normal_load", R->N);
+  ContactJSONKeyReal(fp, sep, "whole_tangential_load", R->Q);
+  ContactJSONKeyReal(fp, sep, "whole_stick_area", R->stickArea);
+  ContactJSONKeyReal(fp, sep, "whole_stick_radius", R->stickRadius);
+  ContactJSONKeyReal(fp, sep, "mindlin_c", R->mindlinC);
 }
