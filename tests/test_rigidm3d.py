@@ -231,3 +231,36 @@ def test_rigid_slave_moment(tmp_path):
     M = np.cross(x - p, gn).sum(axis=0)
     gap = np.abs(M + Mc).max() / L   # node_force is minus the gradient: its moment is the JSON's, -M_c
     assert figure("sum_gap", gap) <= 1e-8
+
+
+def test_tilted_punch(tmp_path):
+    """A rigid flat circular punch (a = 0.5) tilted by a moment on a block
+    standing in for a half-space: test_rigid3d's quarter punch and quarter
+    block (W = 80 a, Tet10 of size h = a/6 near the punch), with the tilt's
+    antisymmetry on the plane x = 0 (u_y = u_z = 0 there; on y = 0 the
+    rollers), the punch held but for its rotation about y through its face's
+    centre, turned by M_q = (0, 0.01 E* a^3 / 3, 0) (-punch_rigid_moment;
+    theta along M from rest: exact). In the quarter x, y > 0 the pressure is
+    compressive, so the unilateral contact is the bilateral one, whose
+    rocking stiffness is M = 4 E* a^3 theta / 3 (= 8 G a^3 / (3 (1 - nu)),
+    the tilted punch's pressure 3 M x / (2 pi a^3 sqrt(a^2 - r^2))), M = 4
+    M_q for the whole punch: theta = 3 M_q / (E* a^3) = 0.01 to
+    `tilt_error` = -0.78 % (bound 2 %; at h = 0.08, -0.54 % at W = 80 a and
+    -1.05 % at W = 20 a). The block's
+    nodes on x = 0, held in z by the antisymmetry, take a pressure where the
+    punch's face descends over their support (a line of force along the
+    y axis, there in the quarter's force and its moment about x, not about
+    y)."""
+    a, E, nu = 0.5, 1000.0, 0.3
+    es = E / (1 - nu ** 2)
+    Mq = 0.01 * es * a ** 3 / 3
+    args = ["-bodies", "block,punch", "-block_geo", "tests/meshes/rigid3d/halfspace.geo",
+            "-block_geo_params", f"W={80 * a},rc={1.2 * a},g=0.3,c={1.2 * a}", "-block_mesh_size", a / 6, "-block_E", E, "-block_nu", nu,
+            "-block_bc", "symx,symy,bottom", "-block_bc_symx_components", "y,z", "-block_bc_symy_components", "y",
+            "-punch_rigid", "-punch_geo", "tests/meshes/rigid3d/punch.geo", "-punch_geo_params", f"a={a},H={0.4 * a}", "-punch_mesh_size", a / 6,
+            "-punch_bc", "top", "-punch_bc_top_values", "0,0,0", "-punch_rigid_centre", "0,0,0",
+            "-punch_rigid_rotation", "0,free,0", "-punch_rigid_moment", f"0,{Mq!r},0",
+            "-contact_pairs", "c", "-contact_c_surfaces", "block:top,punch:face", "-max_dofs", "1e9", "-output", "none"]
+    punch = run_contact(args, tmp_path).summary["bodies"]["punch"]
+    theta = punch["rotation"][1]
+    assert abs(figure("tilt_error", theta / (3 * Mq / (es * a ** 3)) - 1)) <= 0.02
