@@ -264,3 +264,21 @@ def test_tilted_punch(tmp_path):
     punch = run_contact(args, tmp_path).summary["bodies"]["punch"]
     theta = punch["rotation"][1]
     assert abs(figure("tilt_error", theta / (3 * Mq / (es * a ** 3)) - 1)) <= 0.02
+
+
+@pytest.mark.roundoff
+def test_friction_ranks(tmp_path):
+    """The sheared cube (test_friction_converges) on 1 and 2 ranks, each
+    rank its nodes' friction blocks, their rigid parts summed over the ranks
+    into the border: the force on the cube agrees to `dF` = 3.0e-11 (bound
+    2e-6: each run's force control to -force_control_rtol 1e-6 of F = 1),
+    the tilt to `drot` = 3.6e-10 of it and the sinking t_z to `dt` =
+    1.7e-10 of it (bound 1e-6, as test_rigid3d's ranks: the residuals
+    through a stiffness 100 times below the contact's)."""
+    one = run_contact(friction_args("top,bottom"), tmp_path, name="one").summary
+    two = run_contact(friction_args("top,bottom"), tmp_path, ranks=2, name="two").summary
+    assert two["ranks"] == 2 and one["converged"] and two["converged"]
+    c1, c2 = one["bodies"]["cube"], two["bodies"]["cube"]
+    assert figure("dF", np.abs(np.subtract(c1["force"], c2["force"])).max()) <= 2e-6
+    assert figure("drot", np.abs(np.subtract(c1["rotation"], c2["rotation"]))[:2].max() / abs(c1["rotation"][1])) <= 1e-6
+    assert figure("dt", abs(c1["translation"][2] - c2["translation"][2]) / abs(c1["translation"][2])) <= 1e-6
