@@ -177,6 +177,97 @@ def test_friction_converges(held, block, tmp_path):
     assert cube["force"][2] == pytest.approx(1.0, abs=1e-6)
 
 
+def test_moment_2d_punch(tmp_path):
+    """2D: the rigid flat punch (half-width b = 0.25, meshes/rigid-punch's
+    shapes, coarser: h = 0.0125 in the block, 0.025 on the punch) pressed by
+    P = 0.15 (force-controlled) and turned by the moment M = -0.015
+    (-punch_rigid_moment, clockwise; exact in 2D, the rotation's axis being
+    fixed): the contact's moment on it balances M (`dM` = 4.6e-8 of |M|,
+    bound 1e-6: the force control's -force_control_rtol) and its tilt is
+    Johnson's 4 M / (pi E* b^2) on a half-plane to `tilt_error` = -1.2 %
+    (bound 3 %: the block is 16 b wide, the mesh coarse; the readme's
+    eccentric force e = M / P turned the punch to -0.79 % at h = 0.00625)."""
+    b, P, M, E, nu = 0.25, 0.15, -0.015, 100.0, 0.3
+    args = ["-bodies", "punch,block", "-punch_geo", "meshes/rigid-punch/punch.geo", "-punch_geo_params", f"b={b},Hp=0.25",
+            "-punch_mesh_size", 0.025, "-punch_rigid", "-punch_bc", "push", "-punch_bc_push_components", "x,y",
+            "-punch_bc_push_control", "displacement,force", "-punch_bc_push_values", f"0,{-P}",
+            "-punch_rigid_rotation", "free", "-punch_rigid_moment", M,
+            "-block_geo", "meshes/punch/block.geo", "-block_geo_params", "W=4,H=2,hfar=0.25,dp=0.4,dc=1", "-block_mesh_size", 0.0125,
+            "-block_E", E, "-block_nu", nu, "-block_bc", "base", "-block_bc_base_components", "x,y",
+            "-contact_pairs", "tool", "-contact_tool_surfaces", "punch:contact,block:contact", "-output", "none"]
+    punch = run_contact(args, tmp_path).summary["bodies"]["punch"]
+    assert figure("dM", abs(punch["moment"] + M) / abs(M)) <= 1e-6
+    johnson = 4 * M / (math.pi * E / (1 - nu ** 2) * b * b)
+    assert abs(figure("tilt_error", punch["rotation"] / johnson - 1)) <= 0.03
+
+
+@pytest.mark.roundoff
+def test_rigid_slave_moment(tmp_path):
+    """The cube's face as the mortar slave, pressed through c' (0.05 off its
+    face's centre; test_rigid3d's moment balance with the slave forced,
+    where |M| over its three components was 9.1e-5 of F L against 6e-10
+    with the cube as master). The free components balance: T^T M_c, the
+    rotation's gradient, is `free_moment` = 1.5e-12 of F L on x and y (bound
+    1e-6: the stop). What is left is M_c's z component, the reaction of
+    the held theta_z (`held_moment` = 5.4e-6 of F L here, 9.1e-5 on
+    test_rigid3d's meshes): with the rigid face as slave the traction
+    follows the elastic master's normal, which tilts where the box's top
+    bends around the cube's edges, so the contact's force on the cube has
+    an x, y part (`tangential` = 4.0e-4 of F) whose moment about z the held
+    rotation takes; with the rigid face as master the traction is along
+    its own normal. The cube's nodal forces from the HDF5, summed here at
+    their nodes' current positions about c' + t, give the JSON's moment
+    (`sum_gap` = 1.1e-17 of F L, bound 1e-8)."""
+    cp = FACE + [0.05, 0.0, 0.0]
+    res = run_contact(cube_args(cp), tmp_path)
+    cube = res.summary["bodies"]["cube"]
+    theta, Mc = np.array(cube["rotation"]), -np.array(cube["moment"])
+    dpi = spatial_jacobian(theta).T @ Mc
+    assert figure("free_moment", np.abs(dpi[:2]).max() / L) <= 1e-6
+    figure("held_moment", abs(Mc[2]) / L)
+    figure("tangential", math.hypot(cube["force"][0], cube["force"][1]))
+    with h5py.File(res.output_path, "r") as f:
+        g = f["contact/c/cube_bottom"]
+        x, gn = np.array(g["node_x"]).reshape(-1, 3), np.array(g["node_force"]).reshape(-1, 3)
+    p = cp + np.array(cube["translation"])
+    M = np.cross(x - p, gn).sum(axis=0)
+    gap = np.abs(M + Mc).max() / L   # node_force is minus the gradient: its moment is the JSON's, -M_c
+    assert figure("sum_gap", gap) <= 1e-8
+
+
+def test_tilted_punch(tmp_path):
+    """A rigid flat circular punch (a = 0.5) tilted by a moment on a block
+    standing in for a half-space: test_rigid3d's quarter punch and quarter
+    block (W = 80 a, Tet10 of size h = a/6 near the punch), with the tilt's
+    antisymmetry on the plane x = 0 (u_y = u_z = 0 there; on y = 0 the
+    rollers), the punch held but for its rotation about y through its face's
+    centre, turned by M_q = (0, 0.01 E* a^3 / 3, 0) (-punch_rigid_moment;
+    theta along M from rest: exact). In the quarter x, y > 0 the pressure is
+    compressive, so the unilateral contact is the bilateral one, whose
+    rocking stiffness is M = 4 E* a^3 theta / 3 (= 8 G a^3 / (3 (1 - nu)),
+    the tilted punch's pressure 3 M x / (2 pi a^3 sqrt(a^2 - r^2))), M = 4
+    M_q for the whole punch: theta = 3 M_q / (E* a^3) = 0.01 to
+    `tilt_error` = -0.78 % (bound 2 %; at h = 0.08, -0.54 % at W = 80 a and
+    -1.05 % at W = 20 a). The block's
+    nodes on x = 0, held in z by the antisymmetry, take a pressure where the
+    punch's face descends over their support (a line of force along the
+    y axis, there in the quarter's force and its moment about x, not about
+    y)."""
+    a, E, nu = 0.5, 1000.0, 0.3
+    es = E / (1 - nu ** 2)
+    Mq = 0.01 * es * a ** 3 / 3
+    args = ["-bodies", "block,punch", "-block_geo", "tests/meshes/rigid3d/halfspace.geo",
+            "-block_geo_params", f"W={80 * a},rc={1.2 * a},g=0.3,c={1.2 * a}", "-block_mesh_size", a / 6, "-block_E", E, "-block_nu", nu,
+            "-block_bc", "symx,symy,bottom", "-block_bc_symx_components", "y,z", "-block_bc_symy_components", "y",
+            "-punch_rigid", "-punch_geo", "tests/meshes/rigid3d/punch.geo", "-punch_geo_params", f"a={a},H={0.4 * a}", "-punch_mesh_size", a / 6,
+            "-punch_bc", "top", "-punch_bc_top_values", "0,0,0", "-punch_rigid_centre", "0,0,0",
+            "-punch_rigid_rotation", "0,free,0", "-punch_rigid_moment", f"0,{Mq!r},0",
+            "-contact_pairs", "c", "-contact_c_surfaces", "block:top,punch:face", "-max_dofs", "1e9", "-output", "none"]
+    punch = run_contact(args, tmp_path).summary["bodies"]["punch"]
+    theta = punch["rotation"][1]
+    assert abs(figure("tilt_error", theta / (3 * Mq / (es * a ** 3)) - 1)) <= 0.02
+
+
 @pytest.mark.roundoff
 def test_friction_ranks(tmp_path):
     """The sheared cube (test_friction_converges) on 1 and 2 ranks, each
