@@ -29,6 +29,10 @@ PetscErrorCode Friction3dLagEnd(Friction3d, const PetscReal A[], const PetscReal
 PetscErrorCode Friction3dAddEnergyGradient(Friction3d, ContactSurface3d S[2], PetscReal kp, PetscReal *energy);
 /* This rank's nodes' Hessian blocks into H (joined indices; constrained dofs left out). */
 PetscErrorCode Friction3dAddHessian(Friction3d, const ContactSurface3d S[2], PetscReal kp, Mat H);
+/* A block over joined indices (a rigid body's components as codes below -1, rigiddof.h). */
+typedef PetscErrorCode (*Friction3dBlockFn)(void *ctx, PetscInt n, const PetscInt idx[], const PetscScalar K[]);
+/* fn(ctx, ...) is given each Hessian block too, with a rigid body's codes (its unknowns' border). */
+PetscErrorCode Friction3dSetRigidBlock(Friction3d, Friction3dBlockFn fn, void *ctx);
 /* The lifecycle, as friction.h's: record a converged increment (load: the
    load parameter; a stage's end where whole), make it the accepted state as
    the next begins, restore the bound of the accepted one, reset to rest. */

@@ -15,7 +15,8 @@ PetscErrorCode BodySetBCValue(Body, PetscInt i, PetscInt c, PetscReal U);
 /* The force of condition i's force-controlled component c at the load parameter last set. */
 PetscReal BodyControlForce(Body, PetscInt i, PetscInt c);
 /* A rigid body's unknown q's force at the load parameter last set: its
-   condition's force where force-controlled, else 0 (held by the contact). */
+   condition's force where force-controlled, a rotation's -rigid_moment over
+   the body's size L where moment-controlled, else 0 (held by the contact). */
 PetscReal BodyRigidControlForce(Body, PetscInt q);
 /* Load l's resultant at the load parameter last set, into f[dim] (f[3]). */
 void BodyLoadResultant(Body, PetscInt l, PetscReal f[3]);

@@ -16,7 +16,9 @@
    component force-controlled by a condition (_control force: the contact's
    force on the body balances the condition's), or held by no condition,
    and the rotation where -<body>_rigid_rotation free: these two are held by
-   the contact alone (a moment and a force of zero). The unknowns are
+   the contact alone (a moment and a force of zero), or the rotation turned
+   by -<body>_rigid_moment (a moment control, its energy -M theta; 3D: -M .
+   theta, rigid3d.c). The unknowns are
    force control's (forcecontrol.c): the last entries of X, bordering the
    Hessian. The rotation's unknown is the arc s = L theta, L the curves'
    size, so that every unknown is a length and every stiffness a force per

@@ -69,6 +69,7 @@ DOMAINS = {
     "indenter_rigid": ("bool",), "block_rigid": ("bool",),
     "indenter_rigid_centre": ("reals", None, False), "block_rigid_centre": ("reals", None, False),
     "indenter_rigid_rotation": REAL_ANY, "block_rigid_rotation": REAL_ANY,
+    "indenter_rigid_moment": ("reals", None, False), "block_rigid_moment": ("reals", None, False),
     # names, paths and lists of names: their own tests (test_bad_input.py, test_scene_files.py)
     "contact_interface_symmetry": ("name",),  # planes of a 3D pair: test_sphere3d.py::test_symmetry_refused
     "scene": ("name",), "bodies": ("name",), "mesh_dir": ("name",), "output": ("name",), "summary": ("name",),

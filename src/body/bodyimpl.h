@@ -129,6 +129,7 @@ struct _n_BodyRigid {
   PetscReal  rotation[CONTACT_MAX_STAGES]; /* the rotation at each stage's end (radians) */
   PetscReal  rotEnd[CONTACT_MAX_STAGES][3]; /* 3D: the rotation vector at each stage's end (0 for an unknown) */
   PetscReal  tEnd[CONTACT_MAX_STAGES][3];  /* the translation at each stage's end (the conditions' values; 0 for an unknown) */
+  PetscReal  momEnd[CONTACT_MAX_STAGES][3]; /* -rigid_moment: the moment on the free rotation at each stage's end (2D: [s][0]) */
   PetscReal  t[3], theta; /* the motion at the current load parameter */
   PetscReal  rot[3];      /* 3D: the rotation vector theta at the current load parameter */
   PetscReal  force[3], moment; /* the contact's force on the body and its moment about c + t, at the last evaluation */
@@ -145,9 +146,11 @@ struct _n_BodyRigid {
   PetscReal  D[RIGID_MAX_UNKNOWNS * RIGID_MAX_UNKNOWNS]; /* and this rank's part of the contact's coupling between the unknowns, [nq][nq] */
   char       prefix[CONTACT_NAME_LEN + 2]; /* the options' prefix, and the motion's options as given: read at the set-up, once the mesh says the dimension */
   char       rotOpt[64 * CONTACT_MAX_STAGES];
-  PetscBool  setRot, setCentre;
+  PetscBool  setRot, setCentre, setMom;
   PetscReal  centreOpt[3];
   PetscInt   ncentre;
+  PetscReal  momOpt[3 * CONTACT_MAX_STAGES + 1];
+  PetscInt   nmom;
 };
 
 /* rigidbody.c's, for the body's files (rigidbody.h describes the motion). */

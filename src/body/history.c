@@ -143,7 +143,11 @@ PetscReal BodyRigidControlForce(Body b, PetscInt q)
 {
   const BodyRigid *r = b->rg;
 
-  if (q >= r->dim || !r->control[q]) return 0.0; /* held by the contact alone: force 0 */
+  if (!r->control[q]) return 0.0; /* held by the contact alone: force 0 */
+  if (q >= r->dim) { /* the rotation's: the moment over L (-rigid_moment: rigidbody.c) */
+    const PetscInt c = q - r->dim;
+    return ((b->stage > 1 ? b->loadWeight[0] * r->momEnd[b->stage - 2][c] : 0.0) + b->loadWeight[1] * r->momEnd[b->stage - 1][c]) / r->L;
+  }
   for (PetscInt k = 0; k < b->bc[r->qbc[q]].ncomp; ++k)
     if (b->bc[r->qbc[q]].comps[k] == q) return BodyControlForce(b, r->qbc[q], k);
   return 0.0;

@@ -56,7 +56,15 @@
    gathered with the gradient (Rigid3dAddForce) as 2D's curl. The moment
    reported is M = sum (x - c - t) x g about c + t; dPi/dtheta = T^T M with
    T = d(omega)/d(theta) invertible for |theta| < 2 pi, so M = 0 where the
-   rotation's gradient is. */
+   rotation's gradient is.
+
+   A moment control (-<body>_rigid_moment, rigidbody.c) adds the potential
+   -M_a . theta on the free components: at equilibrium T^T M = M_a there,
+   so the moment the contact balances is T^-T M_a, M_a itself only where
+   T^T M_a = M_a (theta along M_a: a rotation about a fixed axis along the
+   moment); to first order T = I + [theta]x / 2 and T^-T M_a = M_a +
+   theta x M_a / 2. No exact potential gives a fixed spatial moment on a
+   finite rotation vector (its work depends on the path). */
 #include "rigidbody.h"
 #include "mshcheck.h"
 #include "meshgen.h"

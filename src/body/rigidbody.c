@@ -61,9 +61,11 @@ PetscErrorCode BodyRigidSetFromOptions(Body b, const char prefix[])
   PetscCall(PetscStrncpy(r->rotOpt, "0", sizeof(r->rotOpt)));
   PetscCall(PetscStrncpy(r->prefix, prefix, sizeof(r->prefix)));
   r->ncentre = 3;
+  r->nmom    = 3 * CONTACT_MAX_STAGES + 1;
   PetscOptionsBegin(b->comm, prefix, "Rigid body options", NULL);
   PetscCall(PetscOptionsRealArray("-rigid_centre", "Reference point x,y (3D: x,y,z) of a rigid body's rotation (default the centroid of its curves, weighted by length; 3D of its surfaces, weighted by area)", NULL, r->centreOpt, &r->ncentre, &r->setCentre));
   PetscCall(ContactOptionsString(PetscOptionsObject, "-rigid_rotation", "A rigid body's rotation about its reference point at the full load, radians, counterclockwise (0: held; with -load_stages S, S values, each stage's end), or free (held by the contact alone: the contact's moment about the reference point is zero). 3D: a rotation vector ax,ay,az per stage (its direction the axis, its length the angle), each component a number or free, or free (all three)", NULL, r->rotOpt, r->rotOpt, sizeof(r->rotOpt), &r->setRot));
+  PetscCall(PetscOptionsRealArray("-rigid_moment", "The moment on a rigid body's free rotation about its reference point at the full load, counterclockwise (with -load_stages S, S values, each stage's end): its potential -M theta, so that the contact's moment balances M. 3D: mx,my,mz per stage (stage-major), on the components -<body>_rigid_rotation leaves free; -M . theta, theta the rotation vector: the contact's moment about the reference point is T(theta)^-T M, M itself for a rotation about a fixed axis along M", NULL, r->momOpt, &r->nmom, &r->setMom));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
@@ -294,6 +296,37 @@ static PetscErrorCode RigidSetUpCurves(Body b, BodyRigid *r)
   PetscFunctionReturn(0);
 }
 
+/* -rigid_moment: per stage the moment on the rotation's components
+   (2D: one, 3D: three), once the body's size L is known. A component that
+   carries a moment in some stage is moment-controlled: an unknown of force
+   M / L (its unknown is the arc L theta, so that the potential -F U is
+   -M theta); it must be free, a held or prescribed rotation having no
+   moment to balance. A component whose moment is 0 at every stage stays
+   free (held by the contact alone, as without the option). */
+static PetscErrorCode RigidParseMoment(Body b, BodyRigid *r)
+{
+  const PetscInt nc = r->dim == 3 ? 3 : 1, S = b->nstages;
+  const char    *axis[3] = {"x", "y", "z"};
+  char           opt[2 * CONTACT_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  if (!r->setMom) PetscFunctionReturn(0);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%srigid_moment", r->prefix));
+  PetscCheck(r->nmom <= 3 * CONTACT_MAX_STAGES, b->comm, PETSC_ERR_USER_INPUT, "option %s: more than %d values", opt, 3 * CONTACT_MAX_STAGES);
+  PetscCall(BodyStagedValues(b, opt, r->nmom, nc, r->momOpt, 3, &r->momEnd[0][0]));
+  for (PetscInt c = 0; c < nc; ++c) {
+    const PetscInt q = r->dim + c;
+    PetscBool      given = PETSC_FALSE;
+    for (PetscInt s = 0; s < S; ++s) given = (PetscBool)(given || r->momEnd[s][c] != 0.0);
+    if (!given) continue;
+    PetscCheck(!b->axisym, b->comm, PETSC_ERR_USER_INPUT, "option %s: a rigid body in r-z moves along the axis only, and a moment has nothing to turn", opt);
+    PetscCheck(r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "option %s: body %s's rotation%s%s is held or prescribed, so a moment on it has nothing to turn; make it free (-%srigid_rotation%s)", opt, b->name, nc == 3 ? " about " : "", nc == 3 ? axis[c] : "", r->prefix, nc == 3 ? ", that component free" : " free");
+    r->control[q] = PETSC_TRUE;
+    r->qforce[q]  = r->momEnd[S - 1][c] / r->L;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BodyRigidSetUp(Body b)
 {
   BodyRigid *r = b->rg;
@@ -309,6 +342,7 @@ PetscErrorCode BodyRigidSetUp(Body b)
   if (is3) PetscCall(Rigid3dSetUpSurfaces(b, r));
   else PetscCall(RigidSetUpCurves(b, r));
   PetscCall(RigidConditions(b, r));
+  PetscCall(RigidParseMoment(b, r));
   b->dim     = r->dim;
   b->nlocal  = 0;
   b->nglobal = 0;
@@ -580,7 +614,7 @@ static PetscErrorCode BodyCheckHeld_Rigid(Body b, PetscBool contact)
 
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < r->nq && !contact && r->dim == 3; ++q)
-    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and its %s is %s, so the problem is singular; hold it with -%s_bc or -%s_rigid_rotation", b->name, BodyGetControlComponent_Rigid(b, -1, q), r->control[q] ? "force-controlled" : "free", b->name, b->name);
+    PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and its %s is %s, so the problem is singular; hold it with -%s_bc or -%s_rigid_rotation", b->name, BodyGetControlComponent_Rigid(b, -1, q), r->control[q] ? (q >= 3 ? "moment-controlled" : "force-controlled") : "free", b->name, b->name);
   for (PetscInt q = 0; q < 3 && !contact; ++q)
     PetscCheck(!r->unknown[q], b->comm, PETSC_ERR_USER_INPUT, "body %s is rigid and in no contact pair, and %s, so the problem is singular; hold it with -%s_bc%s", b->name,
                q == 2 ? "its rotation is free" : (r->control[q] ? (q ? "a force controls its translation in y" : "a force controls its translation in x") : (q ? "no condition holds its translation in y" : "no condition holds its translation in x")), b->name, q == 2 ? " and -<body>_rigid_rotation" : "");

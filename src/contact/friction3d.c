@@ -107,6 +107,8 @@ struct _n_Friction3d {
   PetscReal  *stageR;          /* [nstageMax] the stick radius at each stage's end */
   PetscReal  *stageSet;        /* [nstageMax][7 nn]: shear, slip, stick */
   PetscInt    nstage, nstageMax;
+  Friction3dBlockFn rigidBlock; /* the pair's hook for a rigid body's part of each block (Friction3dSetRigidBlock), or NULL */
+  void             *rigidCtx;
 };
 
 static PetscLogEvent FRICTION3D_EnergyGrad, FRICTION3D_Hessian, FRICTION3D_Lag;
@@ -524,12 +526,28 @@ PetscErrorCode Friction3dAddHessian(Friction3d f, const ContactSurface3d S[2], P
     }
     for (PetscInt a = 0; a < 3 * n; ++a)
       for (PetscInt b = 0; b < 3 * n; ++b) K[a * 3 * n + b] = cf[a / 3] * cf[b / 3] * B[3 * (a % 3) + b % 3];
+    if (f->rigidBlock) PetscCall(f->rigidBlock(f->rigidCtx, 3 * n, idx, K)); /* a rigid body's components (codes below -1): its unknowns' border */
     for (PetscInt a = 0; a < 3 * n; ++a)
-      if (idx[a] < 0) idx[a] = -1; /* a constrained dof: MatSetValues skips it */
+      if (idx[a] < 0) idx[a] = -1; /* a constrained dof or a rigid body's: MatSetValues skips it */
     PetscCall(MatSetValues(H, 3 * n, idx, 3 * n, idx, K, ADD_VALUES));
   }
   PetscCall(PetscFree3(idx, cf, K));
   PetscCall(PetscLogEventEnd(FRICTION3D_Hessian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* A rigid body's part of the Hessian: each node's block K over its joined
+   indices, a rigid body's surface components among them as codes below -1
+   (rigiddof.h), goes to fn as well as into H, so that the body maps it to
+   its unknowns, J^T K J and the coupling K J (the chain rule through
+   x(q), as the normal part's blocks: mortar3d.c). The rest of the second
+   derivative, the friction's gradient times d2x/dq2, the body takes with
+   the contact's whole gradient at its surface nodes (rigid3d.c). */
+PetscErrorCode Friction3dSetRigidBlock(Friction3d f, Friction3dBlockFn fn, void *ctx)
+{
+  PetscFunctionBeginUser;
+  f->rigidBlock = fn;
+  f->rigidCtx   = ctx;
   PetscFunctionReturn(0);
 }
 

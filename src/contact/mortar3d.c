@@ -1690,11 +1690,20 @@ static PetscErrorCode Mortar3dFrictionResults(Mortar3d *m)
   PetscFunctionReturn(0);
 }
 
+/* Friction3d's blocks' rigid part into the rigid body's border, as the normal part's (Mortar3dAddRigidBlock). */
+static PetscErrorCode Mortar3dFrictionRigidBlock(void *ctx, PetscInt n, const PetscInt idx[], const PetscScalar K[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(Mortar3dAddRigidBlock((Mortar3d *)ctx, n, idx, K));
+  PetscFunctionReturn(0);
+}
+
 /* A frictional pair's ops (the lifecycle of its state: energyterm.h). */
 static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *m, EnergyTerm t)
 {
   PetscFunctionBeginUser;
   PetscCall(Friction3dCreate(t->comm, m->spec.friction, m->spec.frictionPenalty, &m->fr));
+  PetscCall(Friction3dSetRigidBlock(m->fr, Mortar3dFrictionRigidBlock, m));
   t->ops.lag            = Mortar3dFrictionLag;
   t->ops.accept         = Mortar3dFrictionAccept;
   t->ops.begin          = Mortar3dFrictionBegin;
