@@ -51,10 +51,17 @@
    face wide along the borders between the ranks' parts of the surface:
    Mortar3dSetUpHessianFaces); C_j, Q_j are summed over ranks from the
    faces' owners as for the gradient. The search's queries are made from
-   the faces that share a node with those integrated. What stays whole on
-   every rank, O(surface) a rank: the surfaces' coordinates (gathered at
-   each evaluation), the sums of C_j, Q_j and the gradient over ranks, and
-   the master's tree (built over all its faces).
+   the faces that share a node with those integrated, and each rank's tree
+   holds only the master faces that can meet them: the ranks exchange the
+   boxes of the slave faces they search from and each master face is sent
+   by the rank that gave it to the ranks whose box it meets
+   (Mortar3dBuildTree, at each update, following the current
+   coordinates). Friction's rows: each rank lags its own faces, the rows'
+   entries gathered on every rank (Mortar3dFrictionLag). What stays whole
+   on every rank, O(surface) a rank: the surfaces' coordinates (gathered
+   at each evaluation), the sums of C_j, Q_j and the gradient over ranks,
+   friction's rows (gathered) and the Hessian's pattern's search
+   (Mortar3dGetPattern, once, on the reference coordinates).
 
    Master faces near a slave face: a bounding-volume tree over the master
    faces' boxes (current coordinates), queried with the slave face's box
@@ -130,7 +137,7 @@ typedef struct {
   ContactReport3d report; /* the whole model's figures and Hertz's (report3d.c) */
 } Mortar3d;
 
-static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
+static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian, MORTAR3D_FrictionLag;
 static PetscErrorCode Mortar3dFrictionResults(Mortar3d *);
 static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *, EnergyTerm);
 static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *, Body[], PetscViewer, MPI_Comm, PetscInt);
@@ -1682,6 +1689,7 @@ static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal
 
   PetscFunctionBeginUser;
   (void)bodies;
+  PetscCall(PetscLogEventBegin(MORTAR3D_FrictionLag, 0, 0, 0, 0));
   PetscCall(Mortar3dUpdate(m));
   PetscCall(PetscCalloc1(S->nown + 1, &all));
   PetscCall(PetscCalloc1(2 * S->nn, &buf));
@@ -1710,6 +1718,7 @@ static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal
   PetscCall(Friction3dLagEnd(m->fr, m->A, m->C, change ? change : &dummy));
   PetscCall(PetscFree(p));
   PetscCall(PetscFree(all));
+  PetscCall(PetscLogEventEnd(MORTAR3D_FrictionLag, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -1831,6 +1840,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
     PetscCall(PetscClassIdRegister("ContactMortar3d", &id));
     PetscCall(PetscLogEventRegister("Mortar3dEnergyGrad", id, &MORTAR3D_EnergyGrad));
     PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
+    PetscCall(PetscLogEventRegister("Mortar3dFrictionLag", id, &MORTAR3D_FrictionLag));
   }
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
   PetscCall(PetscNew(&m));
