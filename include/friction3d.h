@@ -26,7 +26,6 @@ PetscErrorCode Friction3dSetUp(Friction3d, const ContactSurface3d S[2], PetscInt
 PetscErrorCode Friction3dLagBegin(Friction3d, const PetscReal p[]);
 PetscErrorCode Friction3dLagFace(Friction3d, const ContactSurface3d S[2], PetscInt f, const PetscReal Adual[], PetscInt nm, const PetscInt mf[], PetscInt np, const Segment3dPoint pts[]);
 PetscErrorCode Friction3dLagExchange(Friction3d);
-PetscErrorCode Friction3dLagExchange(Friction3d);
 PetscErrorCode Friction3dLagEnd(Friction3d, const PetscReal A[], const PetscReal C[], PetscReal *change);
 /* This rank's nodes' energy, and their gradient into S[*].g, at the surfaces' current coordinates. */
 PetscErrorCode Friction3dAddEnergyGradient(Friction3d, ContactSurface3d S[2], PetscReal kp, PetscReal *energy);
