@@ -16,14 +16,16 @@ PetscErrorCode Friction3dCreate(MPI_Comm, PetscReal mu, PetscReal ktScale, Frict
 PetscErrorCode Friction3dDestroy(Friction3d *);
 /* The surfaces S (set up), s the slave. */
 PetscErrorCode Friction3dSetUp(Friction3d, const ContactSurface3d S[2], PetscInt s);
-/* The lag, in three calls (every rank alike, every slave face): Begin with
-   the slave's nodal pressures p_j (NULL: the bound kept, the rows rebuilt),
-   Face for each slave face f with its dual coefficients, the master faces
-   mf[nm] it met and its points (their eta the closest points at the
-   current coordinates), End with the covered weights C_j; change: the
-   largest change of the bound mu p_j against mu p_max. */
+/* The lag, in four calls: Begin with the slave's nodal pressures p_j
+   (every rank alike; NULL: the bound kept, the rows rebuilt), Face for
+   each of this rank's slave faces f with its dual coefficients, the master
+   faces mf[nm] it met and its points (their eta the closest points at the
+   current coordinates), Exchange (collective) to gather every rank's, End
+   with the covered weights C_j; change: the largest change of the bound
+   mu p_j against mu p_max. */
 PetscErrorCode Friction3dLagBegin(Friction3d, const PetscReal p[]);
 PetscErrorCode Friction3dLagFace(Friction3d, const ContactSurface3d S[2], PetscInt f, const PetscReal Adual[], PetscInt nm, const PetscInt mf[], PetscInt np, const Segment3dPoint pts[]);
+PetscErrorCode Friction3dLagExchange(Friction3d);
 PetscErrorCode Friction3dLagEnd(Friction3d, const PetscReal A[], const PetscReal C[], PetscReal *change);
 /* This rank's nodes' energy, and their gradient into S[*].g, at the surfaces' current coordinates. */
 PetscErrorCode Friction3dAddEnergyGradient(Friction3d, ContactSurface3d S[2], PetscReal kp, PetscReal *energy);

@@ -31,13 +31,6 @@ static inline PetscReal Centre(const PetscReal *b, PetscInt d)
   return 0.5 * (b[d] + b[3 + d]);
 }
 
-static inline PetscBool Meet(const PetscReal a[6], const PetscReal b[6])
-{
-  for (PetscInt d = 0; d < 3; ++d)
-    if (a[3 + d] < b[d] || b[3 + d] < a[d]) return PETSC_FALSE;
-  return PETSC_TRUE;
-}
-
 /* Puts the k-th smallest centre (along d) of items[lo, hi) at lo + k, the
    smaller before it and the larger after (Hoare's selection). */
 static void Select(const PetscReal *boxes, PetscInt *items, PetscInt lo, PetscInt hi, PetscInt k, PetscInt d)
@@ -126,10 +119,10 @@ PetscErrorCode BvhQuery(Bvh t, const PetscReal box[6], PetscInt *nfound, const P
   if (t->n) stack[top++] = 0;
   while (top) {
     const BvhNode *nd = &t->nodes[stack[--top]];
-    if (!Meet(nd->box, box)) continue;
+    if (!BvhBoxesMeet(nd->box, box)) continue;
     if (nd->left < 0) {
       for (PetscInt i = nd->start; i < nd->start + nd->count; ++i)
-        if (Meet(&t->boxes[6 * t->items[i]], box)) t->found[t->nfound++] = t->items[i];
+        if (BvhBoxesMeet(&t->boxes[6 * t->items[i]], box)) t->found[t->nfound++] = t->items[i];
     } else {
       PetscCheck(top + 2 <= 128, PETSC_COMM_SELF, PETSC_ERR_PLIB, "tree deeper than 64 levels");
       stack[top++] = nd->right;

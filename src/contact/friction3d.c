@@ -74,9 +74,10 @@
    the first solve from rest is frictionless, and its lag gives every node
    in contact mu p_j.
 
-   Parallel: every rank builds every row (the lag integrates every slave
-   face on every rank, as the Hessian does); energy, gradient and Hessian
-   are each rank's nodes j = rank mod size, summed by the caller. */
+   Parallel: each rank lags its own slave faces (mortar3d.c) and the rows'
+   entries are gathered on every rank (Friction3dLagExchange), so that
+   every rank holds every row; energy, gradient and Hessian are each
+   rank's nodes j = rank mod size, summed by the caller. */
 #include "friction3d.h"
 
 struct _n_Friction3d {
@@ -361,6 +362,43 @@ PetscErrorCode Friction3dLagFace(Friction3d f, const ContactSurface3d S[2], Pets
       f->rval[f->nraw++] = coef[i * ncol + c];
     }
   }
+  PetscCall(PetscLogEventEnd(FRICTION3D_Lag, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Collective: every rank's raw entries (those of the faces it lagged, its
+   own: Friction3dLagFace) gathered on every rank, in rank order (the
+   ranks' own faces are consecutive runs of the surface's, so the entries
+   come in the order one rank gives them), and the sums int W_j n_m dS
+   summed over ranks: each rank integrates its own faces, O(surface /
+   ranks), and receives the rows' entries, so that every rank holds every
+   row (Friction3dAccept, Friction3dSlipState, Friction3dShearForce read
+   them all). One rank: nothing to do. */
+PetscErrorCode Friction3dLagExchange(Friction3d f)
+{
+  PetscMPIInt n = (PetscMPIInt)f->nraw, *cnt, *disp;
+  PetscInt   *key;
+  PetscReal  *val, *nu;
+
+  PetscFunctionBeginUser;
+  if (f->size == 1) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(FRICTION3D_Lag, 0, 0, 0, 0));
+  PetscCall(PetscMalloc2(f->size, &cnt, f->size + 1, &disp));
+  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, cnt, 1, MPI_INT, f->comm));
+  disp[0] = 0;
+  for (PetscMPIInt r = 0; r < f->size; ++r) disp[r + 1] = disp[r] + cnt[r];
+  PetscCall(PetscMalloc3(disp[f->size] + 1, &key, disp[f->size] + 1, &val, 3 * f->nn + 1, &nu));
+  PetscCallMPI(MPI_Allgatherv(f->rkey, n, MPIU_INT, key, cnt, disp, MPIU_INT, f->comm));
+  PetscCallMPI(MPI_Allgatherv(f->rval, n, MPIU_REAL, val, cnt, disp, MPIU_REAL, f->comm));
+  PetscCall(MPIU_Allreduce(f->nu, nu, 3 * f->nn, MPIU_REAL, MPIU_SUM, f->comm));
+  f->nraw = 0;
+  PetscCall(Friction3dRawReserve(f, disp[f->size]));
+  PetscCall(PetscArraycpy(f->rkey, key, disp[f->size]));
+  PetscCall(PetscArraycpy(f->rval, val, disp[f->size]));
+  PetscCall(PetscArraycpy(f->nu, nu, 3 * f->nn));
+  f->nraw = disp[f->size];
+  PetscCall(PetscFree3(key, val, nu));
+  PetscCall(PetscFree2(cnt, disp));
   PetscCall(PetscLogEventEnd(FRICTION3D_Lag, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -51,10 +51,17 @@
    face wide along the borders between the ranks' parts of the surface:
    Mortar3dSetUpHessianFaces); C_j, Q_j are summed over ranks from the
    faces' owners as for the gradient. The search's queries are made from
-   the faces that share a node with those integrated. What stays whole on
-   every rank, O(surface) a rank: the surfaces' coordinates (gathered at
-   each evaluation), the sums of C_j, Q_j and the gradient over ranks, and
-   the master's tree (built over all its faces).
+   the faces that share a node with those integrated, and each rank's tree
+   holds only the master faces that can meet them: the ranks exchange the
+   boxes of the slave faces they search from and each master face is sent
+   by the rank that gave it to the ranks whose box it meets
+   (Mortar3dBuildTree, at each update, following the current
+   coordinates). Friction's rows: each rank lags its own faces, the rows'
+   entries gathered on every rank (Mortar3dFrictionLag). What stays whole
+   on every rank, O(surface) a rank: the surfaces' coordinates (gathered
+   at each evaluation), the sums of C_j, Q_j and the gradient over ranks,
+   friction's rows (gathered) and the Hessian's pattern's search
+   (Mortar3dGetPattern, once, on the reference coordinates).
 
    Master faces near a slave face: a bounding-volume tree over the master
    faces' boxes (current coordinates), queried with the slave face's box
@@ -107,8 +114,10 @@ typedef struct {
   PetscBool       *active;       /* [slave nn] C_j >= A_j / 2 */
   PetscBool       *nearNode, *integrate; /* [slave nn], [slave nf]: Mortar3dUpdate */
   PetscInt        *nodeFaceStart, *nodeFace; /* the slave faces at each slave node */
-  Bvh              tree;
-  PetscReal       *boxes;        /* [master nf][6] */
+  Bvh              tree;         /* over the master faces this rank's search needs (Mortar3dBuildTree) */
+  PetscInt         nmaster, nmasterMax, nmasterCap; /* their number: now, the most so far; room */
+  PetscInt        *mlocal, *mfound; /* [nmaster] their numbers (the tree's items), a query's answers */
+  PetscReal       *boxes;        /* [master nf][6] (those of the mlocal faces current) */
   PetscReal       *xm;           /* [MORTAR3D_MAX_MASTER][27] work */
   Mortar3dFace    *own;          /* [slave nown] the last evaluation of this rank's faces */
   PetscBool        ownFresh, ownDeriv, ownPts; /* own[] is at the current coordinates; with dQ; with its points */
@@ -128,7 +137,7 @@ typedef struct {
   ContactReport3d report; /* the whole model's figures and Hertz's (report3d.c) */
 } Mortar3d;
 
-static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian;
+static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian, MORTAR3D_FrictionLag;
 static PetscErrorCode Mortar3dFrictionResults(Mortar3d *);
 static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *, EnergyTerm);
 static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *, Body[], PetscViewer, MPI_Comm, PetscInt);
@@ -162,19 +171,128 @@ static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscRe
   }
 }
 
-/* The boxes of the master faces and their tree at the current coordinates. */
-static PetscErrorCode Mortar3dBuildTree(Mortar3d *m)
+/* The box of the slave faces this rank searches from (faces[nq], or the
+   first nq where faces is NULL), each widened by its size (the widest of
+   the searches' margins, Mortar3dFaceEvaluate's; Mortar3dUpdateFaces' is
+   MORTAR3D_NEAR): a master face whose box misses it meets none of their
+   queries. Empty (low ends above high ends) where nq is 0. */
+static void Mortar3dRankBox(const Mortar3d *m, PetscInt nq, const PetscInt faces[], PetscReal rbox[6])
 {
-  const ContactSurface3d *M = &m->S[1 - m->s];
+  const ContactSurface3d *S = &m->S[m->s];
+
+  for (PetscInt d = 0; d < 3; ++d) {
+    rbox[d]     = PETSC_MAX_REAL;
+    rbox[3 + d] = -PETSC_MAX_REAL;
+  }
+  for (PetscInt q = 0; q < nq; ++q) {
+    PetscReal xs[27], box[6];
+    Mortar3dWideBox(S, faces ? faces[q] : q, S->x, 1.0, xs, box);
+    for (PetscInt d = 0; d < 3; ++d) {
+      rbox[d]     = PetscMin(rbox[d], box[d]);
+      rbox[3 + d] = PetscMax(rbox[3 + d], box[3 + d]);
+    }
+  }
+}
+
+/* Collective. The master faces this rank's search needs and their tree,
+   at the current coordinates: the ranks' boxes (Mortar3dRankBox over the
+   slave faces each searches from) are exchanged, each rank computes the
+   boxes of the master faces it gave (M->ownFaces) and sends to every rank
+   those that meet its box (their numbers and boxes), and the tree is built
+   over the faces received (m->mlocal, in increasing number; their boxes
+   also at m->boxes[6 face] for Mortar3dKeepNearest). The search costs a
+   rank O(k log k) for the k faces near its part of the slave, not
+   O(master): the faces a rank holds follow the slave's motion, as the
+   exchange is made at each update. */
+static PetscErrorCode Mortar3dBuildTree(Mortar3d *m, PetscInt nq, const PetscInt faces[])
+{
+  const ContactSurface3d *M    = &m->S[1 - m->s];
+  MPI_Comm                comm = BodyGetComm(m->body[0]);
+  PetscMPIInt             size, rank, *scnt, *sdsp, *rcnt, *rdsp, *scnt6, *sdsp6, *rcnt6, *rdsp6;
+  PetscReal               rbox[6], *all, *obox, *sbox, *rboxes, *lboxes;
+  PetscInt               *sid, *rid, *perm, nsend = 0, nrecv;
 
   PetscFunctionBeginUser;
   PetscCall(BvhDestroy(&m->tree));
-  for (PetscInt f = 0; f < M->nf; ++f) {
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  Mortar3dRankBox(m, nq, faces, rbox);
+  PetscCall(PetscMalloc1(6 * size, &all));
+  PetscCallMPI(MPI_Allgather(rbox, 6, MPIU_REAL, all, 6, MPIU_REAL, comm));
+  PetscCall(PetscMalloc1(6 * M->nown + 1, &obox));
+  for (PetscInt k = 0; k < M->nown; ++k) {
     PetscReal xf[27];
-    ContactSurface3dFaceCoords(M, f, M->x, xf);
-    Face3dBox(M->type, xf, &m->boxes[6 * f]);
+    ContactSurface3dFaceCoords(M, M->ownFaces[k], M->x, xf);
+    Face3dBox(M->type, xf, &obox[6 * k]);
   }
-  PetscCall(BvhCreate(M->nf, m->boxes, &m->tree));
+  PetscCall(PetscMalloc4(size, &scnt, size + 1, &sdsp, size, &rcnt, size + 1, &rdsp));
+  PetscCall(PetscMalloc4(size, &scnt6, size, &sdsp6, size, &rcnt6, size, &rdsp6));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    scnt[r] = 0;
+    for (PetscInt k = 0; k < M->nown; ++k) scnt[r] += BvhBoxesMeet(&obox[6 * k], &all[6 * r]) ? 1 : 0;
+    nsend += scnt[r];
+  }
+  PetscCall(PetscMalloc2(nsend + 1, &sid, 6 * nsend + 1, &sbox));
+  sdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    PetscInt n = sdsp[r];
+    for (PetscInt k = 0; k < M->nown; ++k)
+      if (BvhBoxesMeet(&obox[6 * k], &all[6 * r])) {
+        sid[n] = M->ownFaces[k];
+        PetscCall(PetscArraycpy(&sbox[6 * n], &obox[6 * k], 6));
+        n++;
+      }
+    sdsp[r + 1] = (PetscMPIInt)n;
+  }
+  PetscCallMPI(MPI_Alltoall(scnt, 1, MPI_INT, rcnt, 1, MPI_INT, comm));
+  rdsp[0] = 0;
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    rdsp[r + 1] = rdsp[r] + rcnt[r];
+    scnt6[r]    = 6 * scnt[r];
+    sdsp6[r]    = 6 * sdsp[r];
+    rcnt6[r]    = 6 * rcnt[r];
+    rdsp6[r]    = 6 * rdsp[r];
+  }
+  nrecv = rdsp[size];
+  PetscCall(PetscMalloc4(nrecv + 1, &rid, 6 * nrecv + 1, &rboxes, nrecv + 1, &perm, 6 * nrecv + 1, &lboxes));
+  PetscCallMPI(MPI_Alltoallv(sid, scnt, sdsp, MPIU_INT, rid, rcnt, rdsp, MPIU_INT, comm));
+  PetscCallMPI(MPI_Alltoallv(sbox, scnt6, sdsp6, MPIU_REAL, rboxes, rcnt6, rdsp6, MPIU_REAL, comm));
+  for (PetscInt k = 0; k < nrecv; ++k) perm[k] = k;
+  PetscCall(PetscSortIntWithPermutation(nrecv, rid, perm));
+  if (nrecv > m->nmasterCap) {
+    PetscCall(PetscFree2(m->mlocal, m->mfound));
+    m->nmasterCap = nrecv;
+    PetscCall(PetscMalloc2(nrecv, &m->mlocal, nrecv, &m->mfound));
+  }
+  for (PetscInt k = 0; k < nrecv; ++k) {
+    m->mlocal[k] = rid[perm[k]];
+    PetscCall(PetscArraycpy(&lboxes[6 * k], &rboxes[6 * perm[k]], 6));
+    PetscCall(PetscArraycpy(&m->boxes[6 * m->mlocal[k]], &rboxes[6 * perm[k]], 6));
+  }
+  m->nmaster    = nrecv;
+  m->nmasterMax = PetscMax(m->nmasterMax, nrecv);
+  PetscCall(BvhCreate(nrecv, lboxes, &m->tree));
+  PetscCall(PetscFree4(rid, rboxes, perm, lboxes));
+  PetscCall(PetscFree2(sid, sbox));
+  PetscCall(PetscFree4(scnt, sdsp, rcnt, rdsp));
+  PetscCall(PetscFree4(scnt6, sdsp6, rcnt6, rdsp6));
+  PetscCall(PetscFree(obox));
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+/* The master faces (their numbers, increasing: the order whatever the
+   tree's shape, the same on any number of ranks) whose boxes meet box, in
+   m->mfound until the next query. */
+static PetscErrorCode Mortar3dQuery(Mortar3d *m, const PetscReal box[6], PetscInt *nfound, const PetscInt **found)
+{
+  const PetscInt *loc;
+
+  PetscFunctionBeginUser;
+  PetscCall(BvhQuery(m->tree, box, nfound, &loc));
+  for (PetscInt k = 0; k < *nfound; ++k) m->mfound[k] = m->mlocal[loc[k]];
+  PetscCall(PetscSortInt(*nfound, m->mfound));
+  *found = m->mfound;
   PetscFunctionReturn(0);
 }
 
@@ -233,7 +351,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   }
   Mortar3dWideBox(S, f, S->x, 1.0, xs, box);
   ContactSurface3dFaceCoords(S, f, S->X, Xs);
-  PetscCall(BvhQuery(m->tree, box, &nfound, &found));
+  PetscCall(Mortar3dQuery(m, box, &nfound, &found));
   if (nfound > MORTAR3D_MAX_MASTER) PetscCall(Mortar3dKeepNearest(m, xs, nfound, found, E->mf));
   else PetscCall(PetscArraycpy(E->mf, found, nfound));
   nfound  = PetscMin(nfound, MORTAR3D_MAX_MASTER);
@@ -298,7 +416,7 @@ static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
     PetscCall(ContactSurface3dUpdateCoordinates(&m->S[k], m->body[k], &changed));
     if (changed) m->ownFresh = PETSC_FALSE;
   }
-  PetscCall(Mortar3dBuildTree(m));
+  PetscCall(Mortar3dBuildTree(m, nq, every ? NULL : m->queryFaces));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
   for (PetscInt q = 0; q < nq; ++q) {
     const PetscInt  f = every ? q : m->queryFaces[q];
@@ -306,7 +424,7 @@ static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
     const PetscInt *found;
     PetscInt        nfound;
     Mortar3dWideBox(S, f, S->x, MORTAR3D_NEAR, xs, box);
-    PetscCall(BvhQuery(m->tree, box, &nfound, &found));
+    PetscCall(Mortar3dQuery(m, box, &nfound, &found));
     if (nfound)
       for (PetscInt i = 0; i < S->nb; ++i) m->nearNode[S->fnodes[S->nb * f + i]] = PETSC_TRUE;
   }
@@ -1039,6 +1157,7 @@ static PetscErrorCode Mortar3dPostProcess(EnergyTerm t, Body bodies[])
   }
   if (!m->ncontact) m->pmin = 0.0;
   if (m->fr) PetscCall(Mortar3dFrictionResults(m));
+  PetscCall(PetscInfo(NULL, "pair %s: this rank's search held up to %" PetscInt_FMT " of the %" PetscInt_FMT " master faces (%" PetscInt_FMT " now)\n", m->spec.name, m->nmasterMax, m->S[1 - m->s].nf, m->nmaster));
   PetscCall(Mortar3dReport(m));
   if (m->fr) ContactReport3dFriction(Friction3dGetCoefficient(m->fr), m->stickArea, &m->report);
   m->done = PETSC_TRUE;
@@ -1543,6 +1662,7 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
     }
   PetscCall(PetscFree(m->own));
   PetscCall(BvhDestroy(&m->tree));
+  PetscCall(PetscFree2(m->mlocal, m->mfound));
   PetscCall(PetscFree2(m->boxes, m->xm));
   PetscCall(PetscFree(m->Adual));
   PetscCall(PetscFree5(m->A, m->C, m->Q, m->gj, m->active));
@@ -1559,42 +1679,52 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
-/* Friction's fixed-point lag at the bodies' state (friction3d.c): every
-   slave face integrated on every rank with its points kept (each rank
-   builds every row, as the Hessian's G_j), the nodal pressures p_j =
-   k_p <-g_j>_+ (NULL change: the rows alone, the bound kept). */
+/* Friction's fixed-point lag at the bodies' state (friction3d.c): this
+   rank's slave faces integrated with their points kept (the search of
+   Mortar3dUpdate, which decides them), C_j and Q_j summed over ranks as
+   for the energy, the nodal pressures p_j = k_p <-g_j>_+ (NULL change:
+   the rows alone, the bound kept); the faces' rows' entries gathered on
+   every rank (Friction3dLagExchange), each rank integrating its own faces
+   alone, as the gradient does. */
 static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal *change)
 {
   Mortar3d         *m = (Mortar3d *)t->data;
   ContactSurface3d *S = &m->S[m->s];
   Mortar3dFace     *all;
-  PetscReal        *p, dummy;
+  PetscReal        *p, *buf, dummy;
 
   PetscFunctionBeginUser;
   (void)bodies;
-  PetscCall(Mortar3dUpdateFaces(m, PETSC_TRUE)); /* every slave face: each rank builds the friction rows whole */
-  PetscCall(PetscCalloc1(S->nf + 1, &all));
-  PetscCall(PetscArrayzero(m->C, S->nn));
-  PetscCall(PetscArrayzero(m->Q, S->nn));
-  for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_FALSE, PETSC_TRUE, &all[f]));
+  PetscCall(PetscLogEventBegin(MORTAR3D_FrictionLag, 0, 0, 0, 0));
+  PetscCall(Mortar3dUpdate(m));
+  PetscCall(PetscCalloc1(S->nown + 1, &all));
+  PetscCall(PetscCalloc1(2 * S->nn, &buf));
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt f = S->ownFaces[k];
+    PetscCall(Mortar3dFaceEvaluate(m, f, PETSC_FALSE, PETSC_TRUE, &all[k]));
     for (PetscInt i = 0; i < S->nb; ++i) {
-      m->C[S->fnodes[S->nb * f + i]] += all[f].a[i];
-      m->Q[S->fnodes[S->nb * f + i]] += all[f].q[i];
+      buf[S->fnodes[S->nb * f + i]] += all[k].a[i];
+      buf[S->nn + S->fnodes[S->nb * f + i]] += all[k].q[i];
     }
   }
+  PetscCall(MPIU_Allreduce(buf, m->C, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(MPIU_Allreduce(buf + S->nn, m->Q, S->nn, MPIU_REAL, MPIU_SUM, t->comm));
+  PetscCall(PetscFree(buf));
   Mortar3dNodalGaps(m);
   PetscCall(PetscMalloc1(S->nn, &p));
   for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
   PetscCall(Friction3dLagBegin(m->fr, change ? p : NULL));
-  for (PetscInt f = 0; f < S->nf; ++f) {
-    PetscCall(Friction3dLagFace(m->fr, m->S, f, &m->Adual[81 * f], all[f].nm, all[f].mf, all[f].np, all[f].pts));
-    PetscCall(PetscFree(all[f].pts));
-    PetscCall(PetscFree(all[f].dQ));
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt f = S->ownFaces[k];
+    PetscCall(Friction3dLagFace(m->fr, m->S, f, &m->Adual[81 * f], all[k].nm, all[k].mf, all[k].np, all[k].pts));
+    PetscCall(PetscFree(all[k].pts));
+    PetscCall(PetscFree(all[k].dQ));
   }
+  PetscCall(Friction3dLagExchange(m->fr));
   PetscCall(Friction3dLagEnd(m->fr, m->A, m->C, change ? change : &dummy));
   PetscCall(PetscFree(p));
   PetscCall(PetscFree(all));
+  PetscCall(PetscLogEventEnd(MORTAR3D_FrictionLag, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -1725,6 +1855,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
     PetscCall(PetscClassIdRegister("ContactMortar3d", &id));
     PetscCall(PetscLogEventRegister("Mortar3dEnergyGrad", id, &MORTAR3D_EnergyGrad));
     PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
+    PetscCall(PetscLogEventRegister("Mortar3dFrictionLag", id, &MORTAR3D_FrictionLag));
   }
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
   PetscCall(PetscNew(&m));
