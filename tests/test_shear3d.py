@@ -12,9 +12,13 @@ The scene: tests/test_friction3d.py's flat patch, a Tet10 box [0, 1]^2 x
 0.3), the upper's top given P = 5 down in stage 1 and (Q, 5 down) in stage
 2 by force control, its faces y = 0 and y = 1 on rollers (held in y, normal
 to the partner's plane z = 0)."""
+import math
+
+import numpy as np
 import pytest
 
-from conftest import run_contact
+from conftest import figure, run_contact
+from test_friction3d import contact_radius, stage_sets, stick_radius
 
 MU, P = 0.3, 5.0
 BOX = "tests/meshes/contact3d/box.geo"
@@ -65,3 +69,63 @@ def test_not_refused(extra, tmp_path):
     r = run_contact(patch_forces(Q) + ["-load_steps", 1, "-tao_max_it", 1, "-load_cutbacks", 0] + extra, tmp_path, check=False)
     assert "more than friction holds" not in r.stderr, r.stderr
     assert r.returncode in (0, 2), r.stderr
+
+
+# Cattaneo-Mindlin for a sphere where Mindlin's assumptions hold as well as
+# 2D's verification (tests/test_friction_similar.py: a/hc 12, a/R 0.1): the
+# half ball on the half block of tests/test_friction3d.py (R = 1, cut at z =
+# 0.5; the block 1.2 x 0.6 x 0.6; E 1000, nu 0.3 both; mu 0.3; the symmetry
+# plane y = 0 on rollers, parallel to Q; pressed 0.01 at the top, a/R =
+# 0.106, then moved along x in three stages of one increment to Q/(mu P)
+# about 0.2, 0.5, 0.8), both meshes graded to h within rc = 0.11 of the first
+# contact point and within rc/4 of the plane z = 0 (zs = 4: the size field's
+# distance stretched 4 times across the contact plane), growing to hm = 0.04
+# within 0.2 and to 0.2 beyond. h = 0.01 (a/h = 10.6, 38,103 dofs) is the
+# verification (make stress); h = 0.02 (a/h = 5.3) the quick one (make test).
+G3 = "tests/meshes/friction3d"
+SLAVE = "contact/c/ball_cap"
+DX = (6.1e-4, 1.65e-3, 3.0e-3)
+
+
+def graded_args(h):
+    top = ",".join(f"{x},-0.01" for x in (0.0,) + DX)
+    grade = "rc=0.11,zs=4,hm=0.04,rm=0.2"
+    return ["-bodies", "ball,block",
+            "-ball_geo", f"{G3}/halfball.geo", "-ball_geo_params", f"zc=0.05,{grade}", "-ball_mesh_size", h,
+            "-ball_E", 1000, "-ball_nu", 0.3, "-ball_bc", "top,symy", "-ball_bc_top_components", "x,z",
+            "-ball_bc_symy_components", "y", "-ball_bc_top_values", top,
+            "-block_geo", f"{G3}/halfblock.geo", "-block_geo_params", f"c=0.2,{grade}", "-block_mesh_size", h,
+            "-block_E", 1000, "-block_nu", 0.3, "-block_bc", "bottom,symy", "-block_bc_bottom_components", "x,y,z",
+            "-block_bc_symy_components", "y",
+            "-contact_pairs", "c", "-contact_c_surfaces", "ball:cap,block:top", "-contact_c_friction", MU,
+            "-load_stages", 4, "-load_steps", 1, "-contact_friction_lag_rtol", "1e-6"]
+
+
+def mindlin_figures(res):
+    """Per tangential stage k = 2, 3, 4: Q/(mu P), c/a from Mindlin's (1 -
+    Q/(mu P))^(1/3) (c the half disc of the stuck nodes' area, a the
+    pressures' second moment about the first contact point), the shear along
+    Q against Mindlin's mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)) in
+    relative L2 over the slave's nodes (weights A_j; his p0, a, c from the
+    computed a and the top's reactions), the same for the shear the normal
+    stage left (stage 1's, along x: what is locked in before any Q), and the
+    traction's component across Q relative to the whole in L2."""
+    sets = stage_sets(res)
+    a = contact_radius(sets[-1])
+    q1 = -sets[0]["shear"][:, 0]
+    out = {}
+    for k in (2, 3, 4):
+        s = sets[k - 1]
+        rho = s["Q"] / (MU * s["P"])
+        r = np.hypot(s["X"][:, 0], s["X"][:, 1])
+        p0 = 3 * s["P"] / (2 * math.pi * a * a)
+        cm = a * (1 - rho) ** (1 / 3)
+        qm = MU * p0 / a * (np.sqrt(np.maximum(a * a - r * r, 0)) - np.sqrt(np.maximum(cm * cm - r * r, 0)))
+        q = -s["shear"][:, 0]  # the ball moves along +x: the block's traction on it is along -x
+        norm = np.sum(s["A"] * qm ** 2)
+        t = np.linalg.norm(s["shear"], axis=1)
+        out[k] = dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
+                      l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
+                      locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
+                      across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)))
+    return a, out
