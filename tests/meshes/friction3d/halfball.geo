@@ -1,9 +1,12 @@
 // The half y >= 0 of the lower part z <= zt of a ball of radius R centred
 // at (0, 0, R), touching the plane z = 0 at the origin: Tet10, of size h
-// (-mesh_size) within rc of the origin, growing to hf at 3 rc. Its curved
-// surface is two: "cap" (z <= zc, the contact surface) and "side". Groups:
-// symy (y = 0), top (z = zt), cap, side; the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zc.
+// (-mesh_size) within rc of the origin, growing to hf at 3 rc, the distance
+// stretched zs times along z (zs > 1: a layer of size h along the contact
+// plane, rc/zs thick), and at most hm within rm of the origin (growing to hf
+// at 3 rm; hm = hf: no such zone). Its curved surface is two: "cap" (z <= zc,
+// the contact surface) and "side". Groups: symy (y = 0), top (z = zt), cap,
+// side; the volume "body".
+// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zs, hm, rm, zc.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(zt)) zt = 0.5; EndIf

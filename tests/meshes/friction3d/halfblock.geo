@@ -1,9 +1,10 @@
 // A block [-W, W] x [0, W] x [-H, 0] under the half ball (halfball.geo):
 // Tet10, of size h (-mesh_size) within rc of the origin, growing to hf at
-// 3 rc. Its top is two surfaces: "top" ([-c, c] x [0, c], the contact
+// 3 rc, the distance stretched zs times along z, and at most hm within rm of
+// the origin (halfball.geo's). Its top is two surfaces: "top" ([-c, c] x [0, c], the contact
 // surface) and "topout". Groups: symy (y = 0), bottom (z = -H), top,
 // topout, sides (x = -W, x = W, y = W); the volume "body".
-// Parameters: W, H, h, rc, hf, c.
+// Parameters: W, H, h, rc, hf, zs, hm, rm, c.
 SetFactory("OpenCASCADE");
 If (!Exists(W)) W = 0.6; EndIf
 If (!Exists(H)) H = 0.6; EndIf
