@@ -1,6 +1,7 @@
 #pragma once
 #include "segment3d.h"
 #include "surface3d.h"
+#include "support.h"
 
 /* Coulomb friction on the slave surface of a 3D mortar pair (friction3d.c;
    derivation there): 2D's tangential penalty and return map (friction.c)
@@ -56,3 +57,9 @@ PetscErrorCode Friction3dGetNodal(Friction3d, PetscInt k, const PetscReal **shea
 PetscErrorCode Friction3dShearForce(Friction3d, PetscReal F[3]);
 /* At the surfaces' current coordinates: the nodes that carry a bound, those of them that stick, the largest trial slip. */
 PetscErrorCode Friction3dSlipState(Friction3d, const ContactSurface3d S[2], PetscReal kp, PetscInt *stuck, PetscInt *loaded, PetscReal *slip);
+/* Collective, after Friction3dSetUp, before solving: a body held by this
+   frictional pair alone against a flat partner (body[2] the surfaces'),
+   given forces alone (rollers normal to the partner's plane allowed), whose
+   tangential force exceeds mu times its normal one at some stage, is one
+   line naming the pair, the body, the stage and the forces (status 1). */
+PetscErrorCode Friction3dCheckGivenForces(Friction3d, const char pair[], const Body body[2]);

@@ -12,6 +12,9 @@ PetscErrorCode BodyAddContactNormals(Body, PetscInt n, const PetscReal nrm[], Pe
 PetscErrorCode BodyCheckSupport(Body);
 /* Whether the body is given forces alone (every Dirichlet component
    force-controlled, or none; no pressure or traction), and then the force
-   controls' sum F[k] at the end of each stage k. */
-PetscBool      BodyGivenForcesAlone(const Body, PetscReal F[][2]);
+   controls' sum F[k] at the end of each stage k. With held (3D: a
+   component some condition holds by a displacement reacts any force along
+   its axis, a symmetry plane's roller) such components are marked there
+   instead of answering no. */
+PetscBool      BodyGivenForcesAlone(const Body, PetscReal F[][3], PetscBool held[3]);
 PetscErrorCode BodySupportDestroy(Body);

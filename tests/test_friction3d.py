@@ -256,9 +256,8 @@ def test_full_sliding(tmp_path):
     node in contact to round-off (`slip_error` = 2.0e-16 of mu p_max, bound
     1e-12), and the pair's tangential force is mu times its normal one:
     `q_over_mu_p` = 0.99997 (bound 1e-3 from 1). A force
-    above mu P given on a body held by friction alone is not checked before
-    the solve in 3D (2D's givenforces.c is 2D's), and the first solve from
-    rest, frictionless, does not hold it: status 2."""
+    above mu P given on a body held by friction alone is refused before the
+    solve (tests/test_shear3d.py)."""
     res = run_contact(patch_args(dx=0.03), tmp_path)
     c = res.summary["contact"]["p"]
     with h5py.File(res.output_path, "r") as f:

@@ -55,13 +55,18 @@ PetscErrorCode BodySupportDestroy(Body b)
   PetscFunctionReturn(0);
 }
 
-PetscBool BodyGivenForcesAlone(const Body b, PetscReal F[][2])
+PetscBool BodyGivenForcesAlone(const Body b, PetscReal F[][3], PetscBool held[3])
 {
-  for (PetscInt k = 0; k < b->nstages; ++k) F[k][0] = F[k][1] = 0.0;
+  for (PetscInt k = 0; k < b->nstages; ++k) F[k][0] = F[k][1] = F[k][2] = 0.0;
+  if (held) held[0] = held[1] = held[2] = PETSC_FALSE;
   if (b->nload > 0) return PETSC_FALSE;
   for (PetscInt i = 0; i < b->nbc; ++i) {
     const BodyBC *bc = &b->bc[i];
     for (PetscInt j = 0; j < bc->ncomp; ++j) {
+      if (!bc->control[j] && held) {
+        held[bc->comps[j]] = PETSC_TRUE;
+        continue;
+      }
       if (!bc->control[j]) return PETSC_FALSE; /* a displacement held reacts any force */
       for (PetscInt k = 0; k < b->nstages; ++k) F[k][bc->comps[j]] += bc->stage[k][j];
     }
@@ -113,10 +118,10 @@ static PetscErrorCode NormalsArc(const Body b, PetscReal *a, PetscReal *L)
 
 PetscErrorCode BodyCheckSupport(Body b)
 {
-  PetscReal F[CONTACT_MAX_STAGES][2], a = 0.0, L = 0.0, w;
+  PetscReal F[CONTACT_MAX_STAGES][3], a = 0.0, L = 0.0, w;
 
   PetscFunctionBeginUser;
-  if (!b->npairs || !BodyGivenForcesAlone(b, F)) PetscFunctionReturn(0);
+  if (!b->npairs || !BodyGivenForcesAlone(b, F, NULL)) PetscFunctionReturn(0);
   PetscCall(NormalsArc(b, &a, &L));
   if (L < 0) PetscFunctionReturn(0);
   w = PetscAtanReal(b->supportMu); /* the friction cone's half-angle */

@@ -702,3 +702,67 @@ PetscErrorCode Friction3dSlipState(Friction3d f, const ContactSurface3d S[2], Pe
   }
   PetscFunctionReturn(0);
 }
+
+/* Whether the surface is flat in the reference configuration: its unit
+   normals at every face's nodes parallel to 1e-9 (n, the first face's). */
+static PetscBool Friction3dFlatNormal(const ContactSurface3d *M, PetscReal n[3])
+{
+  for (PetscInt face = 0; face < M->nf; ++face) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(M, face, M->X, xf);
+    for (PetscInt i = 0; i < M->nb; ++i) {
+      PetscReal xi[2], X[3], T[6], m[3], c[3];
+      Face3dNodeXi(M->type, i, xi);
+      Face3dEval(M->type, xf, xi, X, T, NULL);
+      if (!(Face3dNormal(T, m) > 0)) return PETSC_FALSE;
+      if (!face && !i) {
+        n[0] = m[0], n[1] = m[1], n[2] = m[2];
+        continue;
+      }
+      c[0] = n[1] * m[2] - n[2] * m[1], c[1] = n[2] * m[0] - n[0] * m[2], c[2] = n[0] * m[1] - n[1] * m[0];
+      if (PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) > 1e-9) return PETSC_FALSE;
+    }
+  }
+  return M->nf > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The forces a scene gives against what friction can hold, before solving:
+   givenforces.c's check of a 2D pair, for a 3D one. A body held along a
+   partner flat in the reference configuration (outward normal n) by this
+   pair alone, with no pressure or traction, whose Dirichlet components are
+   each force-controlled (their sum F at each stage's end) or held by a
+   displacement along an axis e normal to n (a symmetry plane's roller: its
+   reaction R along e is any), is in equilibrium only if the contact's
+   force -(F + R) has a tangential part within mu times its normal part
+   |F.n| (Q <= mu P). The least tangential part over R is F's with its
+   held axes' components taken out, the rest of it along the plane:
+   Ft = |F' - (F'.n) n|, F' = F less its held components (held axes normal
+   to n: F'.n = F.n). A held axis not normal to n may take the normal force
+   itself: no check. Where Ft > mu |F.n| at some stage no state holds it
+   (the body slides without end; the solve learns it after its cutbacks):
+   one line naming the pair, the body, the stage and both forces. */
+PetscErrorCode Friction3dCheckGivenForces(Friction3d f, const char pair[], const Body body[2])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2; ++s) {
+    const Body B = body[s];
+    PetscReal  F[CONTACT_MAX_STAGES][3], n[3];
+    PetscBool  held[3], normal = PETSC_TRUE;
+
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, held) || !Friction3dFlatNormal(&f->S[1 - s], n)) continue;
+    for (PetscInt c = 0; c < 3; ++c)
+      if (held[c] && PetscAbsReal(n[c]) > 1e-9) normal = PETSC_FALSE;
+    if (!normal) continue;
+    for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
+      PetscReal Fp[3], Fn, Ft = 0.0;
+      for (PetscInt c = 0; c < 3; ++c) Fp[c] = held[c] ? 0.0 : F[k][c];
+      Fn = Fp[0] * n[0] + Fp[1] * n[1] + Fp[2] * n[2];
+      for (PetscInt c = 0; c < 3; ++c) Ft += PetscSqr(Fp[c] - Fn * n[c]);
+      Ft = PetscSqrtReal(Ft);
+      PetscCheck(Ft <= f->mu * PetscAbsReal(Fn) * (1.0 + 1e-12), f->comm, PETSC_ERR_USER_INPUT,
+                 "pair %s: the forces given on body %s at stage %" PetscInt_FMT " are %g along %s:%s and %g across it, more than friction holds (mu = %g times %g = %g; Q/(mu P) = %.6g): it would slide without end; lower the tangential force or raise -contact_%s_friction",
+                 pair, BodyGetName(B), k + 1, (double)Ft, BodyGetName(body[1 - s]), f->S[1 - s].group, (double)PetscAbsReal(Fn), (double)f->mu, (double)PetscAbsReal(Fn), (double)(f->mu * PetscAbsReal(Fn)), (double)(PetscAbsReal(Fn) > 0 ? Ft / (f->mu * PetscAbsReal(Fn)) : PETSC_INFINITY), pair);
+    }
+  }
+  PetscFunctionReturn(0);
+}

@@ -57,9 +57,9 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
   if (mu <= 0 || spec->axisym || spec->mirror) PetscFunctionReturn(0);
   for (PetscInt s = 0; s < 2; ++s) {
     const Body B = bodies[b->S[s].body];
-    PetscReal  F[CONTACT_MAX_STAGES][2], n[2];
+    PetscReal  F[CONTACT_MAX_STAGES][3], n[2];
 
-    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, NULL) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
     for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
       const PetscReal Fn = F[k][0] * n[0] + F[k][1] * n[1];
       const PetscReal Ft = PetscSqrtReal(PetscSqr(F[k][0] - Fn * n[0]) + PetscSqr(F[k][1] - Fn * n[1]));

@@ -1105,6 +1105,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(Mortar3dSetUpSlave(m));
   PetscCall(Mortar3dSetUpHessianFaces(m, t->comm));
   if (m->fr) PetscCall(Friction3dSetUp(m->fr, m->S, m->s));
+  if (m->fr) PetscCall(Friction3dCheckGivenForces(m->fr, m->spec.name, m->body));
   PetscFunctionReturn(0);
 }
 

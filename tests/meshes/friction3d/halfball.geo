@@ -1,15 +1,21 @@
 // The half y >= 0 of the lower part z <= zt of a ball of radius R centred
 // at (0, 0, R), touching the plane z = 0 at the origin: Tet10, of size h
-// (-mesh_size) within rc of the origin, growing to hf at 3 rc. Its curved
-// surface is two: "cap" (z <= zc, the contact surface) and "side". Groups:
-// symy (y = 0), top (z = zt), cap, side; the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zc.
+// (-mesh_size) within rc of the origin, growing to hf at 3 rc, the distance
+// stretched zs times along z (zs > 1: a layer of size h along the contact
+// plane, rc/zs thick), and at most hm within rm of the origin (growing to hf
+// at 3 rm; hm = hf: no such zone). Its curved surface is two: "cap" (z <= zc,
+// the contact surface) and "side". Groups: symy (y = 0), top (z = zt), cap,
+// side; the volume "body".
+// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zs, hm, rm, zc.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(zt)) zt = 0.5; EndIf
 If (!Exists(h)) h = 0.05; EndIf
 If (!Exists(rc)) rc = 0.15; EndIf
 If (!Exists(hf)) hf = 0.2; EndIf
+If (!Exists(zs)) zs = 1; EndIf
+If (!Exists(hm)) hm = hf; EndIf
+If (!Exists(rm)) rm = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.05; EndIf
 
 Sphere(1) = {0, 0, R, R};
@@ -37,14 +43,24 @@ Physical Surface("side") = {side[]};
 Physical Volume("body") = {ball[]};
 
 Field[1] = MathEval;
-Field[1].F = "Sqrt(x * x + y * y + z * z)";
+Field[1].F = Sprintf("Sqrt(x * x + y * y + %g * z * z)", zs * zs);
 Field[2] = Threshold;
 Field[2].InField = 1;
 Field[2].SizeMin = h;
 Field[2].SizeMax = hf;
 Field[2].DistMin = rc;
 Field[2].DistMax = 3 * rc;
-Background Field = 2;
+Field[3] = MathEval;
+Field[3].F = "Sqrt(x * x + y * y + z * z)";
+Field[4] = Threshold;
+Field[4].InField = 3;
+Field[4].SizeMin = hm;
+Field[4].SizeMax = hf;
+Field[4].DistMin = rm;
+Field[4].DistMax = 3 * rm;
+Field[5] = Min;
+Field[5].FieldsList = {2, 4};
+Background Field = 5;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
