@@ -8,7 +8,6 @@ contact step, CG stalled at 1e-3 of the residual for thousands of
 iterations). The stop is pinned to an absolute gradient of 1e-10 in both
 steps, so that their answers differ by what the stop leaves, not by where
 each stops."""
-import pytest
 
 from conftest import figure, run_contact
 from test_contact3d import hertz_args
@@ -21,7 +20,6 @@ def force(res):
     return res.summary["contact"]["c"]["force"][2]
 
 
-@pytest.mark.roundoff
 def test_iterative_meets_direct(tmp_path):
     """CG + GAMG (forced by -newton_iterative 1, one rank and two) against the
     direct step: the pair's force agrees to `iterative_vs_direct` = 6.3e-14 and

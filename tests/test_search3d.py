@@ -12,8 +12,6 @@ the slave (144 Quad9 faces), the lower's top the master (100)."""
 import math
 import re
 
-import pytest
-
 from conftest import figure, run_contact
 import test_contact3d as c3
 
@@ -26,7 +24,6 @@ def split_args():
             + ["-contact_pairs", "p", "-contact_p_surfaces", "upper:bottom,lower:top", "-output", "none"] + c3.SOLVE)
 
 
-@pytest.mark.roundoff
 def test_master_share(tmp_path):
     """On 1, 2 and 3 ranks (-info: each rank's Mortar3dPostProcess line):
     one rank holds every master face; on 2 and 3 ranks no rank holds them
