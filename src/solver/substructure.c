@@ -74,6 +74,7 @@
    costs, where eliminating by m solves cost m + 1. On several ranks X_k^T
    r_u is one more sum over ranks of m numbers. */
 #include "substructure.h"
+#include "denselu.h"
 #include <petscblaslapack.h>
 #include <dmumps_c.h>
 #include <petsc/private/petscimpl.h> /* PetscUseMethod */
@@ -135,10 +136,15 @@ typedef struct {
   PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
   PetscScalar  *MA, *GAA, *tA; /* [nA x nA] LU of I + G_AA C_AA; G_AA; [nA] work */
   PetscBLASInt *ipiv;
+  PetscInt      splitLU;  /* on several ranks, from this |A| on (-newton_schur_split_lu), */
+  DenseLU       lu;       /* I + G_AA C_AA factored in parts (denselu.c) */
   SubBorder     border;
 } SubCtx;
 
+
 static PetscLogEvent SubFactor = 0, SubInterface, SubStep, SubSolve, SubBorderCols, SubBorderStep, SubBorderSolve;
+/* the phases of SubstrInterface (S_B's blocks summed, eliminated, broadcast) and of SubstrStep (C gathered, the capacitance matrix formed, factored) */
+static PetscLogEvent SubIfSum, SubIfDense, SubIfBcast, SubCapGather, SubCapForm, SubCapFactor;
 
 static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
 {
@@ -394,8 +400,9 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
    eliminated (L_G, W, S_K) and S_K inverted (potrf, potri); the results are
    then broadcast to every rank. The blocks are independent: no redundant
    dense work while there are at least as many bodies as ranks. */
-static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
+static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
 {
+  const PetscScalar *Sr = *Srp;
   const PetscInt    nBr = ctx->nBr;
   PetscScalar      *SB[CONTACT_MAX_BODIES];
   PetscMPIInt       rank, size;
@@ -404,6 +411,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(PetscLogEventBegin(SubIfSum, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) {
     const PetscInt nb = ctx->body[b].nG + ctx->body[b].nc;
     PetscCall(PetscCalloc1(nb * nb + 1, &SB[b]));
@@ -418,6 +426,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
       SB[b][lj * nb + li] += s;
       if (i != j) SB[b][li * nb + lj] += s;
     }
+  PetscCall(PetscFree(*Srp)); /* S^r summed into the blocks */
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* every body's block onto its root first, */
     const PetscInt    nb   = ctx->body[b].nG + ctx->body[b].nc;
     const PetscMPIInt root = (PetscMPIInt)(b % size);
@@ -426,7 +435,10 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
       PetscCall(PetscMPIIntCast(PetscMin(nb * nb - off, PETSC_MPI_INT_MAX / 2), &len));
       PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + off, SB[b] + off, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
     }
+    if (rank != root) PetscCall(PetscFree(SB[b])); /* sent: the memory's peak is the roots' */
   }
+  PetscCall(PetscLogEventEnd(SubIfSum, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubIfDense, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* then the roots work at once, */
     SubBody       *B  = &ctx->body[b];
     const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
@@ -441,6 +453,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
       for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG, SB[b] + j * nb, nG));
       for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + (nG + j) * nb, nG));
       for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->Ginv + j * nc, SB[b] + (nG + j) * nb + nG, nc));
+      PetscCall(PetscFree(SB[b]));
       if (nG) {
         PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, B->LG, &bG, &info));
         PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "interface Schur complement not positive definite (potrf info %d)", (int)info);
@@ -460,8 +473,9 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
         PetscCall(PetscLogFlops((double)nc * nc * nc));
       }
     }
-    PetscCall(PetscFree(SB[b]));
   }
+  PetscCall(PetscLogEventEnd(SubIfDense, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubIfBcast, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* and every rank receives every body's */
     SubBody          *B    = &ctx->body[b];
     const PetscMPIInt root = (PetscMPIInt)(b % size);
@@ -473,6 +487,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
     PetscCallMPI(MPI_Bcast(B->W, n[1], MPIU_SCALAR, root, ctx->comm));
     PetscCallMPI(MPI_Bcast(B->Ginv, n[2], MPIU_SCALAR, root, ctx->comm));
   }
+  PetscCall(PetscLogEventEnd(SubIfBcast, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -590,13 +605,18 @@ static PetscErrorCode SubPCSetUp(PC pc)
   Mat          H;
   PetscBLASInt bA, info;
   PetscInt     nA;
+  PetscMPIInt  size;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &ctx));
   PetscCall(PCGetOperators(pc, NULL, &H));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCall(PetscLogEventBegin(SubStep, 0, 0, 0, 0));
   ctx->border.condensed = PETSC_FALSE;
+  PetscCall(PetscLogEventBegin(SubCapGather, 0, 0, 0, 0));
   PetscCall(SubGatherContactHessian(ctx, H));
+  PetscCall(PetscLogEventEnd(SubCapGather, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubCapForm, 0, 0, 0, 0));
   nA = ctx->nA;
   if (nA > ctx->capA) {
     PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
@@ -615,21 +635,55 @@ static PetscErrorCode SubPCSetUp(PC pc)
       ga[a] = ctx->bBody[ca] == b ? Gk[ctx->bLocal[ca] - B->nG] : 0.0;
     }
   }
-  PetscCall(PetscArrayzero(ctx->MA, nA * nA));
-  for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
-  for (PetscInt k = 0; k < ctx->nC; ++k) {
-    const PetscScalar *ga  = ctx->GAA + ctx->Ci[k] * nA;
-    PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
-    const PetscScalar  c   = ctx->Cv[k];
-    for (PetscInt a = 0; a < nA; ++a) col[a] += ga[a] * c;
+  if (size > 1 && nA >= ctx->splitLU) { /* this rank's columns only, the factorisation shared */
+    PetscInt        nloc;
+    const PetscInt *cols;
+    PetscScalar    *a;
+    PetscInt       *loc = ctx->inA; /* reused: column j's place among this rank's, or -1 */
+
+    if (!ctx->lu) PetscCall(DenseLUCreate(ctx->comm, &ctx->lu));
+    PetscCall(DenseLUGetLocalColumns(ctx->lu, nA, &nloc, &cols, &a));
+    PetscCall(PetscArrayzero(a, nA * nloc));
+    for (PetscInt j = 0; j < nA; ++j) loc[j] = -1;
+    for (PetscInt l = 0; l < nloc; ++l) {
+      loc[cols[l]]            = l;
+      a[l * nA + cols[l]]     = 1.0;
+    }
+    for (PetscInt k = 0; k < ctx->nC; ++k) {
+      const PetscScalar *ga = ctx->GAA + ctx->Ci[k] * nA;
+      const PetscScalar  c  = ctx->Cv[k];
+      PetscScalar       *col;
+      if (loc[ctx->Cj[k]] < 0) continue;
+      col = a + loc[ctx->Cj[k]] * nA;
+      for (PetscInt i = 0; i < nA; ++i) col[i] += ga[i] * c;
+    }
+    PetscCall(PetscLogEventEnd(SubCapForm, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(SubCapFactor, 0, 0, 0, 0));
+    PetscCall(DenseLUFactor(ctx->lu, ctx->MA, ctx->ipiv));
+    for (PetscInt k = 0; k < ctx->nc; ++k) ctx->inA[k] = -1; /* inA back */
+    for (PetscInt k = 0; k < nA; ++k) ctx->inA[ctx->A[k]] = k;
+    PetscCall(PetscLogEventEnd(SubCapFactor, 0, 0, 0, 0));
+  } else {
+    PetscCall(PetscArrayzero(ctx->MA, nA * nA));
+    for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
+    for (PetscInt k = 0; k < ctx->nC; ++k) {
+      const PetscScalar *ga  = ctx->GAA + ctx->Ci[k] * nA;
+      PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
+      const PetscScalar  c   = ctx->Cv[k];
+      for (PetscInt a = 0; a < nA; ++a) col[a] += ga[a] * c;
+    }
+    PetscCall(PetscLogEventEnd(SubCapForm, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(SubCapFactor, 0, 0, 0, 0));
+    PetscCall(PetscBLASIntCast(nA, &bA));
+    if (nA) {
+      PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bA, &bA, ctx->MA, &bA, ctx->ipiv, &info));
+      PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "the surface block of the Hessian is singular (getrf info %d)", (int)info);
+    }
+    PetscCall(PetscLogFlops(2.0 / 3.0 * nA * nA * nA));
+    PetscCall(PetscLogEventEnd(SubCapFactor, 0, 0, 0, 0));
   }
-  PetscCall(PetscBLASIntCast(nA, &bA));
-  if (nA) {
-    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bA, &bA, ctx->MA, &bA, ctx->ipiv, &info));
-    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "the surface block of the Hessian is singular (getrf info %d)", (int)info);
-  }
-  PetscCall(PetscInfo(pc, "contact Hessian: %" PetscInt_FMT " entries coupling %" PetscInt_FMT " of %" PetscInt_FMT " surface dofs\n", ctx->nC, nA, ctx->nc));
-  PetscCall(PetscLogFlops(2.0 * ctx->nC * nA + 2.0 / 3.0 * nA * nA * nA));
+  PetscCall(PetscInfo(pc, "contact Hessian: %" PetscInt_FMT " entries coupling %" PetscInt_FMT " of %" PetscInt_FMT " surface dofs; capacitance matrix factored by %s\n", ctx->nC, nA, ctx->nc, ctx->lu && size > 1 && nA >= ctx->splitLU ? "the ranks together" : "each rank"));
+  PetscCall(PetscLogFlops(2.0 * ctx->nC * nA));
   PetscCall(PetscLogEventEnd(SubStep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -1022,6 +1076,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
   PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
+  PetscCall(DenseLUDestroy(&ctx->lu));
   PetscCall(PetscFree6(ctx->border.red, ctx->border.v, ctx->border.X, ctx->border.Q, ctx->border.Zc, ctx->border.xr));
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCSetColumns_C", NULL));
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCGetCoupling_C", NULL));
@@ -1032,7 +1087,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], Subdomain *sub)
+PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], PetscInt splitLU, Subdomain *sub)
 {
   SubCtx      *ctx;
   PetscScalar *Sr;
@@ -1048,9 +1103,16 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
     PetscCall(PetscLogEventRegister("SubstrBordCols", id, &SubBorderCols));
     PetscCall(PetscLogEventRegister("SubstrBordStep", id, &SubBorderStep));
     PetscCall(PetscLogEventRegister("SubstrBordSolve", id, &SubBorderSolve));
+    PetscCall(PetscLogEventRegister("SubstrIfSum", id, &SubIfSum));
+    PetscCall(PetscLogEventRegister("SubstrIfDense", id, &SubIfDense));
+    PetscCall(PetscLogEventRegister("SubstrIfBcast", id, &SubIfBcast));
+    PetscCall(PetscLogEventRegister("SubstrCapGather", id, &SubCapGather));
+    PetscCall(PetscLogEventRegister("SubstrCapForm", id, &SubCapForm));
+    PetscCall(PetscLogEventRegister("SubstrCapFactor", id, &SubCapFactor));
   }
   PetscCall(PetscNew(&ctx));
-  ctx->comm = PetscObjectComm((PetscObject)K);
+  ctx->comm    = PetscObjectComm((PetscObject)K);
+  ctx->splitLU = splitLU;
   PetscCall(PetscObjectReference((PetscObject)surface));
   ctx->isc = surface;
   PetscCall(ISGetIndices(ctx->isc, &ctx->surf));
@@ -1073,8 +1135,7 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
   }
   PetscCall(PetscLogEventEnd(SubFactor, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(SubInterface, 0, 0, 0, 0));
-  PetscCall(SubCondenseInterface(ctx, Sr));
-  PetscCall(PetscFree(Sr));
+  PetscCall(SubCondenseInterface(ctx, &Sr)); /* frees Sr once summed */
   PetscCall(PetscMalloc3(ctx->nB + 1, &ctx->gB, ctx->nc + 1, &ctx->zc, 2 * ctx->nc + 1, &ctx->tmp));
   PetscCall(PetscMalloc2(ctx->nc, &ctx->A, ctx->nc, &ctx->inA));
   PetscCall(PetscLogEventEnd(SubInterface, 0, 0, 0, 0));
