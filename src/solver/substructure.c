@@ -395,16 +395,32 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
   PetscFunctionReturn(0);
 }
 
+/* Where entry (r, t) of body b's block of S_B (positions in its [G_b; c_b],
+   r >= t or r < nG <= t) is kept in the block's packed array: only what the
+   root reads, column by column: in a column t of G_b its rows t..nG-1 (L_G's
+   lower triangle), in a column t of c_b its rows in G_b (S_Gc) and t..nb-1
+   (S_cc's lower triangle); about half of the nb^2 numbers. off[t]: column
+   t's start. */
+static inline PetscInt SubPacked(const PetscInt off[], PetscInt nG, PetscInt r, PetscInt t)
+{
+  return off[t] + (t < nG ? r - t : (r < nG ? r : nG + r - t));
+}
+
 /* Each body's block of S_B, summed over ranks onto the rank that owns the
    body's dense work (body b on rank b mod size), where its interface is
    eliminated (L_G, W, S_K) and S_K inverted (potrf, potri); the results are
    then broadcast to every rank. The blocks are independent: no redundant
-   dense work while there are at least as many bodies as ranks. */
+   dense work while there are at least as many bodies as ranks. Each entry
+   of S^r (its lower triangle) is added once, where the root reads it
+   (SubPacked): the interface-surface pairs as S_Gc (row in G, column in
+   c), the others in the lower triangle; the sums are those of the whole
+   block's, in half its memory and messages. S^r is freed once summed. */
 static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
 {
   const PetscScalar *Sr = *Srp;
   const PetscInt    nBr = ctx->nBr;
   PetscScalar      *SB[CONTACT_MAX_BODIES];
+  PetscInt         *off[CONTACT_MAX_BODIES];
   PetscMPIInt       rank, size;
   const PetscScalar one = 1.0, mone = -1.0;
 
@@ -413,27 +429,31 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCall(PetscLogEventBegin(SubIfSum, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) {
-    const PetscInt nb = ctx->body[b].nG + ctx->body[b].nc;
-    PetscCall(PetscCalloc1(nb * nb + 1, &SB[b]));
+    const PetscInt nG = ctx->body[b].nG, nb = nG + ctx->body[b].nc;
+    PetscCall(PetscMalloc1(nb + 1, &off[b]));
+    off[b][0] = 0;
+    for (PetscInt t = 0; t < nb; ++t) off[b][t + 1] = off[b][t] + (t < nG ? nG - t : nG + nb - t);
+    PetscCall(PetscCalloc1(off[b][nb] + 1, &SB[b]));
   }
   for (PetscInt j = 0; j < nBr; ++j)
     for (PetscInt i = j; i < nBr; ++i) {
       const PetscScalar s  = Sr[j * nBr + i];
       const PetscInt    bi = ctx->Bpos[i], bj = ctx->Bpos[j], b = ctx->bBody[bi];
-      const PetscInt    nb = ctx->body[b].nG + ctx->body[b].nc, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+      const PetscInt    nG = ctx->body[b].nG, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+      const PetscInt    lo = PetscMin(li, lj), hi = PetscMax(li, lj);
 
       if (ctx->bBody[bj] != b) continue; /* the bodies' stiffnesses do not couple */
-      SB[b][lj * nb + li] += s;
-      if (i != j) SB[b][li * nb + lj] += s;
+      if (lo < nG && hi >= nG) SB[b][SubPacked(off[b], nG, lo, hi)] += s;
+      else SB[b][SubPacked(off[b], nG, hi, lo)] += s;
     }
-  PetscCall(PetscFree(*Srp)); /* S^r summed into the blocks */
+  PetscCall(PetscFree(*Srp));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* every body's block onto its root first, */
-    const PetscInt    nb   = ctx->body[b].nG + ctx->body[b].nc;
+    const PetscInt    len0 = off[b][ctx->body[b].nG + ctx->body[b].nc];
     const PetscMPIInt root = (PetscMPIInt)(b % size);
-    for (PetscInt off = 0; off < nb * nb; off += PETSC_MPI_INT_MAX / 2) {
+    for (PetscInt o = 0; o < len0; o += PETSC_MPI_INT_MAX / 2) {
       PetscMPIInt len;
-      PetscCall(PetscMPIIntCast(PetscMin(nb * nb - off, PETSC_MPI_INT_MAX / 2), &len));
-      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + off, SB[b] + off, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
+      PetscCall(PetscMPIIntCast(PetscMin(len0 - o, PETSC_MPI_INT_MAX / 2), &len));
+      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + o, SB[b] + o, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
     }
     if (rank != root) PetscCall(PetscFree(SB[b])); /* sent: the memory's peak is the roots' */
   }
@@ -441,7 +461,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
   PetscCall(PetscLogEventBegin(SubIfDense, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* then the roots work at once, */
     SubBody       *B  = &ctx->body[b];
-    const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
+    const PetscInt nG = B->nG, nc = B->nc;
     PetscBLASInt   bG, bc, info;
 
     PetscCall(PetscInfo(NULL, "body %" PetscInt_FMT ": %" PetscInt_FMT " interface and %" PetscInt_FMT " surface dofs, dense work on rank %d\n", b, nG, nc, (int)(b % size)));
@@ -450,9 +470,12 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
     if (rank == (PetscMPIInt)(b % size)) {
       PetscCall(PetscBLASIntCast(nG, &bG));
       PetscCall(PetscBLASIntCast(nc, &bc));
-      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG, SB[b] + j * nb, nG));
-      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + (nG + j) * nb, nG));
-      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->Ginv + j * nc, SB[b] + (nG + j) * nb + nG, nc));
+      PetscCall(PetscArrayzero(B->LG, nG * nG)); /* its upper triangle unread */
+      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG + j, SB[b] + off[b][j], nG - j));
+      for (PetscInt j = 0; j < nc; ++j) {
+        PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + off[b][nG + j], nG));
+        PetscCall(PetscArraycpy(B->Ginv + j * nc + j, SB[b] + off[b][nG + j] + nG, nc - j)); /* its upper triangle set after potri */
+      }
       PetscCall(PetscFree(SB[b]));
       if (nG) {
         PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, B->LG, &bG, &info));
@@ -487,6 +510,7 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
     PetscCallMPI(MPI_Bcast(B->W, n[1], MPIU_SCALAR, root, ctx->comm));
     PetscCallMPI(MPI_Bcast(B->Ginv, n[2], MPIU_SCALAR, root, ctx->comm));
   }
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) PetscCall(PetscFree(off[b]));
   PetscCall(PetscLogEventEnd(SubIfBcast, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
