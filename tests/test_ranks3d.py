@@ -13,8 +13,8 @@ from test_contact3d import hertz_args
 def test_split_lu_agrees(tmp_path):
     """The quarter Hertz ball at h = 0.04 on 1 rank, on 2 ranks each
     factoring the capacitance matrix whole, and on 2 ranks sharing its
-    factorisation (-newton_schur_split_lu 1: from any order; by default
-    from 1000, past this scene's): the pair's force and the peak pressure
+    factorisation (-newton_schur_split_lu 1: from any order; off by
+    default): the pair's force and the peak pressure
     agree to what the stop guarantees (test_contact3d.py::test_ranks_agree's
     bound: each run's residual gradient moves a nodal force by at most
     that): `dF_whole` = 4.9e-14 and `dF_split` = 2.1e-14 of P, `dp_whole`
