@@ -46,7 +46,7 @@ def write(out, cmdline, info, runs):
         json.dump({"command": cmdline, "info": info, "runs": runs}, f, indent=1)
     L = ["# 3D contact: 1 against 2 ranks\n",
          f"`{cmdline}`, commit {info['commit']}. The quarter Hertz ball (tests/test_contact3d.py's scene) at h = {info['h']}, "
-         f"{info.get('dofs', '?')} dofs, `-output none`; Newton step: {'; '.join(sorted(info.get('steps', []))) or '?'}. Rounds interleaved (1 rank, then 2, each round); "
+         f"{info.get('dofs', '?')} dofs, `-output none`; {'; '.join(sorted(info.get('steps', []))) or 'Newton step: ?'}. Rounds interleaved (1 rank, then 2, each round); "
          "the machine is shared (2 cores; the load average before each run is listed), so each round's ratio is the figure, "
          "not one run's time. Events: -log_view's time, the largest over the ranks, summed over the stages.\n",
          "| round | ranks | load before | wall [s] | solve [s] | Newton its (energy evals) | "
