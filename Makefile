@@ -7,7 +7,7 @@ CC      = mpicc
 PETSC_CFLAGS = $(shell pkg-config --cflags petsc hdf5-openmpi)
 PETSC_LIBS   = $(shell pkg-config --libs petsc hdf5-openmpi)
 CFLAGS  = -O2 -g -std=gnu11 -Wall -Wextra -Werror -Iinclude $(PETSC_CFLAGS)
-LDLIBS  = $(PETSC_LIBS) -ldmumps -llapack -lblas -lmetis -lm
+LDLIBS  = $(PETSC_LIBS) -ldmumps -lscalapack-openmpi -llapack -lblas -lmetis -lm
 SRCS    = $(wildcard src/*.c src/*/*.c)
 OBJS    = $(patsubst src/%.c,build/obj/%.o,$(SRCS))
 DEPS_STAMP = build/.deps-installed

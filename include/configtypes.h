@@ -80,6 +80,7 @@ typedef struct {
   PetscBool iterativeTwoLevels; /* -newton_iterative_two_levels: 3D, one rank, by nodes: the vertices' level first */
   PetscBool iterativeTwoLevelsSet; /* -newton_iterative_two_levels given (else off with contact: newtonstep.c) */
   PCMGCycleType iterativeCycle; /* -newton_iterative_cycle: by nodes, the multigrid cycle */
+  PetscInt  splitLU;            /* -newton_schur_split_lu: on several ranks, the capacitance matrix's LU shared from this order on (substructure.c) */
 } NewtonOptions;
 
 /* Load stepping and the load history (schedule.c: "Load stepping options"). */

@@ -6,6 +6,15 @@
    and the direct factorisation at or below (-newton_iterative_dofs): where
    the two cross on 3D elastic blocks, bench/solid3d/RESULTS.md. */
 #define NEWTON_ITERATIVE_DOFS 50000
+/* On several ranks the substructured step's capacitance matrix (order |A|,
+   the surface dofs in contact) is factored by the ranks together from this
+   order on (-newton_schur_split_lu; denselu.c: ScaLAPACK), by each whole
+   below. Off by default: on this shared machine under load (8 to 12 on 2
+   cores) pdgetrf on 2 ranks took 48.9 s for the quarter Hertz ball's 9
+   factorisations of order 3,050 where one rank's getrf took 10.1 s: its
+   many messages each wait for a rank the system has descheduled. What the
+   ranks do split is the matrix's formation (substructure.c). */
+#define NEWTON_SCHUR_SPLIT_LU 1000000000
 /* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several or for a matrix that may be indefinite. */
 PetscErrorCode ContactPCSetCholesky(PC, MPI_Comm, PetscBool indefinite);
 /* The Schur complement on the contact surfaces of the set-up K (schur.c on

@@ -8,9 +8,11 @@
    surfaces, and per step factors only the dense surface block plus the
    contact Hessian (substructure.c). K: the joined elastic stiffness, whose
    rows on each rank are its bodies' dofs, body b's from offset[b]; sub:
-   this rank's subdomain on several ranks (consumed), NULL on one. Assumption:
-   K does not depend on u. */
-PetscErrorCode ContactSubstructurePCSetUp(PC, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], Subdomain *sub);
+   this rank's subdomain on several ranks (consumed), NULL on one; splitLU:
+   on several ranks, the order of the capacitance matrix from which the
+   ranks share its factorisation (denselu.c). Assumption: K does not depend
+   on u. */
+PetscErrorCode ContactSubstructurePCSetUp(PC, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], PetscInt splitLU, Subdomain *sub);
 /* Coupled force control's bordered step [H B; B^T D] through the PC of H
    (forceborder.c), where the PC can (the substructuring's does; any other
    leaves *has false and the border falls back on m solves of H): the m

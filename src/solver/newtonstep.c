@@ -75,7 +75,7 @@ PetscErrorCode ProblemSchurPCSetUp(Problem p, PC pc)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   if (p->cfg->newton.schurType == SCHUR_MUMPS && size == 1) PetscCall(ContactSchurPCSetUp(pc, p->K, p->surfaceDofs, &p->exactHessian));
-  else PetscCall(ContactSubstructurePCSetUp(pc, p->K, p->surfaceDofs, p->nbodies, p->offset, &p->sub));
+  else PetscCall(ContactSubstructurePCSetUp(pc, p->K, p->surfaceDofs, p->nbodies, p->offset, p->cfg->newton.splitLU, &p->sub));
   PetscFunctionReturn(0);
 }
 
@@ -210,6 +210,7 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   o->iterativeTwoLevels = PETSC_TRUE;
   o->iterativeTwoLevelsSet = PETSC_FALSE;
   o->iterativeCycle     = PC_MG_CYCLE_W;
+  o->splitLU            = NEWTON_SCHUR_SPLIT_LU;
   PetscOptionsBegin(comm, NULL, "Newton step options", NULL);
   PetscCall(PetscOptionsBool("-newton_iterative", "Newton steps by CG preconditioned by GAMG with the bodies' rigid motions as near-nullspace (no factorisation; for problems a direct solver cannot hold); 0 forces the direct step. Default: 2D and r-z scenes and 3D scenes with contact direct; other 3D scenes CG + GAMG above -newton_iterative_dofs, direct at or below", NULL, o->iterative, &o->iterative, &o->iterativeSet));
   PetscCall(PetscOptionsInt("-newton_iterative_dofs", "3D scenes without -newton_iterative: Newton steps by CG + GAMG above this many dofs, by the direct factorisation at or below (bench/solid3d/RESULTS.md)", NULL, o->iterativeDofs, &o->iterativeDofs, NULL));
@@ -217,11 +218,13 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes. Default: true without contact, false with contact pairs (the vertices cannot meet the penalty)", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, &o->iterativeTwoLevelsSet));
   PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)o->iterativeCycle, (PetscEnum *)&o->iterativeCycle, NULL));
   PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, o->schur, &o->schur, NULL));
+  PetscCall(PetscOptionsInt("-newton_schur_split_lu", "Substructured Newton step on several ranks: the ranks share the factorisation of the contact zone's capacitance matrix (ScaLAPACK) when its order is at least this, each repeats it whole (LAPACK) below", NULL, o->splitLU, &o->splitLU, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)o->schurType, (PetscEnum *)&o->schurType, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, o->tangentAtRest, &o->tangentAtRest, &o->tangentAtRestSet));
   PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, o->tangentIts, &o->tangentIts, NULL));
   PetscOptionsEnd();
   PetscCheck(o->iterativeDofs >= 0, comm, PETSC_ERR_USER_INPUT, "option -newton_iterative_dofs: must be at least 0, got %" PetscInt_FMT, o->iterativeDofs);
+  PetscCheck(o->splitLU >= 1, comm, PETSC_ERR_USER_INPUT, "option -newton_schur_split_lu: must be at least 1, got %" PetscInt_FMT, o->splitLU);
   PetscCheck(o->tangentIts >= 0, comm, PETSC_ERR_USER_INPUT, "option -tangent_at_rest_its: must be at least 0, got %" PetscInt_FMT, o->tangentIts);
   PetscFunctionReturn(0);
 }

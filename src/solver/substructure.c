@@ -74,6 +74,7 @@
    costs, where eliminating by m solves cost m + 1. On several ranks X_k^T
    r_u is one more sum over ranks of m numbers. */
 #include "substructure.h"
+#include "denselu.h"
 #include <petscblaslapack.h>
 #include <dmumps_c.h>
 #include <petsc/private/petscimpl.h> /* PetscUseMethod */
@@ -135,10 +136,15 @@ typedef struct {
   PetscInt     *A, *inA;  /* [nA] positions in c; [nc] position in A or -1 */
   PetscScalar  *MA, *GAA, *tA; /* [nA x nA] LU of I + G_AA C_AA; G_AA; [nA] work */
   PetscBLASInt *ipiv;
+  PetscInt      splitLU;  /* on several ranks, from this |A| on (-newton_schur_split_lu), */
+  DenseLU       lu;       /* I + G_AA C_AA factored in parts (denselu.c) */
   SubBorder     border;
 } SubCtx;
 
+
 static PetscLogEvent SubFactor = 0, SubInterface, SubStep, SubSolve, SubBorderCols, SubBorderStep, SubBorderSolve;
+/* the phases of SubstrInterface (S_B's blocks summed, eliminated, broadcast) and of SubstrStep (C gathered, the capacitance matrix formed, factored) */
+static PetscLogEvent SubIfSum, SubIfDense, SubIfBcast, SubCapGather, SubCapForm, SubCapFactor;
 
 static PetscErrorCode SubMumps(SubCtx *ctx, MUMPS_INT job)
 {
@@ -389,47 +395,73 @@ static PetscErrorCode SubFactorSubdomain(SubCtx *ctx, Mat Kr, PetscScalar Sr[])
   PetscFunctionReturn(0);
 }
 
+/* Where entry (r, t) of body b's block of S_B (positions in its [G_b; c_b],
+   r >= t or r < nG <= t) is kept in the block's packed array: only what the
+   root reads, column by column: in a column t of G_b its rows t..nG-1 (L_G's
+   lower triangle), in a column t of c_b its rows in G_b (S_Gc) and t..nb-1
+   (S_cc's lower triangle); about half of the nb^2 numbers. off[t]: column
+   t's start. */
+static inline PetscInt SubPacked(const PetscInt off[], PetscInt nG, PetscInt r, PetscInt t)
+{
+  return off[t] + (t < nG ? r - t : (r < nG ? r : nG + r - t));
+}
+
 /* Each body's block of S_B, summed over ranks onto the rank that owns the
    body's dense work (body b on rank b mod size), where its interface is
    eliminated (L_G, W, S_K) and S_K inverted (potrf, potri); the results are
    then broadcast to every rank. The blocks are independent: no redundant
-   dense work while there are at least as many bodies as ranks. */
-static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
+   dense work while there are at least as many bodies as ranks. Each entry
+   of S^r (its lower triangle) is added once, where the root reads it
+   (SubPacked): the interface-surface pairs as S_Gc (row in G, column in
+   c), the others in the lower triangle; the sums are those of the whole
+   block's, in half its memory and messages. S^r is freed once summed. */
+static PetscErrorCode SubCondenseInterface(SubCtx *ctx, PetscScalar **Srp)
 {
+  const PetscScalar *Sr = *Srp;
   const PetscInt    nBr = ctx->nBr;
   PetscScalar      *SB[CONTACT_MAX_BODIES];
+  PetscInt         *off[CONTACT_MAX_BODIES];
   PetscMPIInt       rank, size;
   const PetscScalar one = 1.0, mone = -1.0;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(PetscLogEventBegin(SubIfSum, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) {
-    const PetscInt nb = ctx->body[b].nG + ctx->body[b].nc;
-    PetscCall(PetscCalloc1(nb * nb + 1, &SB[b]));
+    const PetscInt nG = ctx->body[b].nG, nb = nG + ctx->body[b].nc;
+    PetscCall(PetscMalloc1(nb + 1, &off[b]));
+    off[b][0] = 0;
+    for (PetscInt t = 0; t < nb; ++t) off[b][t + 1] = off[b][t] + (t < nG ? nG - t : nG + nb - t);
+    PetscCall(PetscCalloc1(off[b][nb] + 1, &SB[b]));
   }
   for (PetscInt j = 0; j < nBr; ++j)
     for (PetscInt i = j; i < nBr; ++i) {
       const PetscScalar s  = Sr[j * nBr + i];
       const PetscInt    bi = ctx->Bpos[i], bj = ctx->Bpos[j], b = ctx->bBody[bi];
-      const PetscInt    nb = ctx->body[b].nG + ctx->body[b].nc, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+      const PetscInt    nG = ctx->body[b].nG, li = ctx->bLocal[bi], lj = ctx->bLocal[bj];
+      const PetscInt    lo = PetscMin(li, lj), hi = PetscMax(li, lj);
 
       if (ctx->bBody[bj] != b) continue; /* the bodies' stiffnesses do not couple */
-      SB[b][lj * nb + li] += s;
-      if (i != j) SB[b][li * nb + lj] += s;
+      if (lo < nG && hi >= nG) SB[b][SubPacked(off[b], nG, lo, hi)] += s;
+      else SB[b][SubPacked(off[b], nG, hi, lo)] += s;
     }
+  PetscCall(PetscFree(*Srp));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* every body's block onto its root first, */
-    const PetscInt    nb   = ctx->body[b].nG + ctx->body[b].nc;
+    const PetscInt    len0 = off[b][ctx->body[b].nG + ctx->body[b].nc];
     const PetscMPIInt root = (PetscMPIInt)(b % size);
-    for (PetscInt off = 0; off < nb * nb; off += PETSC_MPI_INT_MAX / 2) {
+    for (PetscInt o = 0; o < len0; o += PETSC_MPI_INT_MAX / 2) {
       PetscMPIInt len;
-      PetscCall(PetscMPIIntCast(PetscMin(nb * nb - off, PETSC_MPI_INT_MAX / 2), &len));
-      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + off, SB[b] + off, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
+      PetscCall(PetscMPIIntCast(PetscMin(len0 - o, PETSC_MPI_INT_MAX / 2), &len));
+      PetscCallMPI(MPI_Reduce(rank == root ? MPI_IN_PLACE : SB[b] + o, SB[b] + o, len, MPIU_SCALAR, MPIU_SUM, root, ctx->comm));
     }
+    if (rank != root) PetscCall(PetscFree(SB[b])); /* sent: the memory's peak is the roots' */
   }
+  PetscCall(PetscLogEventEnd(SubIfSum, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubIfDense, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* then the roots work at once, */
     SubBody       *B  = &ctx->body[b];
-    const PetscInt nG = B->nG, nc = B->nc, nb = nG + nc;
+    const PetscInt nG = B->nG, nc = B->nc;
     PetscBLASInt   bG, bc, info;
 
     PetscCall(PetscInfo(NULL, "body %" PetscInt_FMT ": %" PetscInt_FMT " interface and %" PetscInt_FMT " surface dofs, dense work on rank %d\n", b, nG, nc, (int)(b % size)));
@@ -438,9 +470,13 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
     if (rank == (PetscMPIInt)(b % size)) {
       PetscCall(PetscBLASIntCast(nG, &bG));
       PetscCall(PetscBLASIntCast(nc, &bc));
-      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG, SB[b] + j * nb, nG));
-      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + (nG + j) * nb, nG));
-      for (PetscInt j = 0; j < nc; ++j) PetscCall(PetscArraycpy(B->Ginv + j * nc, SB[b] + (nG + j) * nb + nG, nc));
+      PetscCall(PetscArrayzero(B->LG, nG * nG)); /* its upper triangle unread */
+      for (PetscInt j = 0; j < nG; ++j) PetscCall(PetscArraycpy(B->LG + j * nG + j, SB[b] + off[b][j], nG - j));
+      for (PetscInt j = 0; j < nc; ++j) {
+        PetscCall(PetscArraycpy(B->W + j * nG, SB[b] + off[b][nG + j], nG));
+        PetscCall(PetscArraycpy(B->Ginv + j * nc + j, SB[b] + off[b][nG + j] + nG, nc - j)); /* its upper triangle set after potri */
+      }
+      PetscCall(PetscFree(SB[b]));
       if (nG) {
         PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &bG, B->LG, &bG, &info));
         PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "interface Schur complement not positive definite (potrf info %d)", (int)info);
@@ -460,8 +496,9 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
         PetscCall(PetscLogFlops((double)nc * nc * nc));
       }
     }
-    PetscCall(PetscFree(SB[b]));
   }
+  PetscCall(PetscLogEventEnd(SubIfDense, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubIfBcast, 0, 0, 0, 0));
   for (PetscInt b = 0; b < ctx->nbodies; ++b) { /* and every rank receives every body's */
     SubBody          *B    = &ctx->body[b];
     const PetscMPIInt root = (PetscMPIInt)(b % size);
@@ -473,6 +510,8 @@ static PetscErrorCode SubCondenseInterface(SubCtx *ctx, const PetscScalar Sr[])
     PetscCallMPI(MPI_Bcast(B->W, n[1], MPIU_SCALAR, root, ctx->comm));
     PetscCallMPI(MPI_Bcast(B->Ginv, n[2], MPIU_SCALAR, root, ctx->comm));
   }
+  for (PetscInt b = 0; b < ctx->nbodies; ++b) PetscCall(PetscFree(off[b]));
+  PetscCall(PetscLogEventEnd(SubIfBcast, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -578,6 +617,61 @@ static PetscErrorCode SubGatherContactHessian(SubCtx *ctx, Mat H)
   PetscFunctionReturn(0);
 }
 
+/* Columns cols[0..ncols-1] of I + G_AA C_AA into M (nA x ncols, by columns):
+   column j is e_j plus C_kj times column k of G_AA over the entries of C
+   in column j, added in the order they were gathered. G_AA (nA^2 numbers,
+   90 MB at |A| = 3,300) is far larger than the caches and C has some 300
+   entries a column, so entry by entry every column of G_AA came from
+   memory again (1e6 entries: 25 GB read a step, 85 % of the step on one
+   rank). Here the rows go by blocks of SUB_FORM_ROWS: a block of G_AA
+   (|A| SUB_FORM_ROWS numbers, 3 MB) stays in cache while every entry
+   reads its piece of it, the entries copied first in column order so that
+   each pass reads them in sequence. The same sums in the same order: the
+   same matrix. loc: [nA] work. */
+#define SUB_FORM_ROWS 128
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("tree-vectorize"))) /* the axpy below in vectors (-O2 leaves it scalar); a multiply then an add, as scalar: the same bits */
+#endif
+static PetscErrorCode SubCapacitanceColumns(SubCtx *ctx, PetscInt ncols, const PetscInt cols[], PetscInt loc[], PetscScalar M[])
+{
+  const PetscInt nA = ctx->nA;
+  PetscInt      *start, *ci, n = 0;
+  PetscScalar   *cv;
+
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < nA; ++j) loc[j] = -1;
+  for (PetscInt l = 0; l < ncols; ++l) loc[cols[l]] = l;
+  for (PetscInt k = 0; k < ctx->nC; ++k) n += loc[ctx->Cj[k]] >= 0;
+  PetscCall(PetscMalloc3(ncols + 1, &start, n + 1, &ci, n + 1, &cv));
+  PetscCall(PetscArrayzero(start, ncols + 1));
+  for (PetscInt k = 0; k < ctx->nC; ++k)
+    if (loc[ctx->Cj[k]] >= 0) start[loc[ctx->Cj[k]] + 1]++;
+  for (PetscInt l = 0; l < ncols; ++l) start[l + 1] += start[l];
+  for (PetscInt k = 0; k < ctx->nC; ++k) /* by column, each column's entries in their order, read in sequence below */
+    if (loc[ctx->Cj[k]] >= 0) {
+      const PetscInt q = start[loc[ctx->Cj[k]]]++;
+      ci[q]            = ctx->Ci[k];
+      cv[q]            = ctx->Cv[k];
+    }
+  for (PetscInt l = ncols; l > 0; --l) start[l] = start[l - 1];
+  start[0] = 0;
+  PetscCall(PetscArrayzero(M, nA * ncols));
+  for (PetscInt l = 0; l < ncols; ++l) M[l * nA + cols[l]] = 1.0;
+  for (PetscInt r0 = 0; r0 < nA; r0 += SUB_FORM_ROWS) {
+    const PetscInt r1 = PetscMin(nA, r0 + SUB_FORM_ROWS);
+    for (PetscInt l = 0; l < ncols; ++l) {
+      PetscScalar *PETSC_RESTRICT col = M + l * nA;
+      for (PetscInt q = start[l]; q < start[l + 1]; ++q) {
+        const PetscScalar *PETSC_RESTRICT ga = ctx->GAA + ci[q] * nA;
+        const PetscScalar                 c  = cv[q];
+        for (PetscInt a = r0; a < r1; ++a) col[a] += ga[a] * c;
+      }
+    }
+  }
+  PetscCall(PetscFree3(start, ci, cv));
+  PetscFunctionReturn(0);
+}
+
 /* Per Newton step, on every rank: the contact Hessian's entries and support
    A, and the LU factors of the capacitance matrix I + G_AA C_AA (|A| is the
    part of the surfaces in contact, a fraction of |c|). With z_c = G (g_c -
@@ -590,13 +684,18 @@ static PetscErrorCode SubPCSetUp(PC pc)
   Mat          H;
   PetscBLASInt bA, info;
   PetscInt     nA;
+  PetscMPIInt  size;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &ctx));
   PetscCall(PCGetOperators(pc, NULL, &H));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCall(PetscLogEventBegin(SubStep, 0, 0, 0, 0));
   ctx->border.condensed = PETSC_FALSE;
+  PetscCall(PetscLogEventBegin(SubCapGather, 0, 0, 0, 0));
   PetscCall(SubGatherContactHessian(ctx, H));
+  PetscCall(PetscLogEventEnd(SubCapGather, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(SubCapForm, 0, 0, 0, 0));
   nA = ctx->nA;
   if (nA > ctx->capA) {
     PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
@@ -615,21 +714,57 @@ static PetscErrorCode SubPCSetUp(PC pc)
       ga[a] = ctx->bBody[ca] == b ? Gk[ctx->bLocal[ca] - B->nG] : 0.0;
     }
   }
-  PetscCall(PetscArrayzero(ctx->MA, nA * nA));
-  for (PetscInt a = 0; a < nA; ++a) ctx->MA[a * nA + a] = 1.0;
-  for (PetscInt k = 0; k < ctx->nC; ++k) {
-    const PetscScalar *ga  = ctx->GAA + ctx->Ci[k] * nA;
-    PetscScalar       *col = ctx->MA + ctx->Cj[k] * nA;
-    const PetscScalar  c   = ctx->Cv[k];
-    for (PetscInt a = 0; a < nA; ++a) col[a] += ga[a] * c;
+  if (size > 1 && nA >= ctx->splitLU) { /* this rank's columns only, the factorisation shared */
+    PetscInt        nloc;
+    const PetscInt *cols;
+    PetscScalar    *a;
+    PetscInt       *loc = ctx->inA; /* reused: column j's place among this rank's, or -1 */
+
+    if (!ctx->lu) PetscCall(DenseLUCreate(ctx->comm, &ctx->lu));
+    PetscCall(DenseLUGetLocalColumns(ctx->lu, nA, &nloc, &cols, &a));
+    PetscCall(SubCapacitanceColumns(ctx, nloc, cols, loc, a));
+    PetscCall(PetscLogEventEnd(SubCapForm, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(SubCapFactor, 0, 0, 0, 0));
+    PetscCall(DenseLUFactor(ctx->lu, ctx->MA, ctx->ipiv));
+    for (PetscInt k = 0; k < ctx->nc; ++k) ctx->inA[k] = -1; /* inA back */
+    for (PetscInt k = 0; k < nA; ++k) ctx->inA[ctx->A[k]] = k;
+    PetscCall(PetscLogEventEnd(SubCapFactor, 0, 0, 0, 0));
+  } else { /* on several ranks each forms a block of columns, gathered; every rank factors it whole */
+    PetscInt    *all, j0 = 0, j1 = nA;
+    PetscMPIInt *counts = NULL, *displs = NULL, rank;
+
+    if (size > 1) { /* 2 |C| |A| flops split; |A|^2 numbers gathered; the same matrix, to the last bit */
+      PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+      j0 = (nA * rank) / size;
+      j1 = (nA * (rank + 1)) / size;
+    }
+    PetscCall(PetscMalloc1(nA + 1, &all));
+    for (PetscInt j = j0; j < j1; ++j) all[j - j0] = j;
+    PetscCall(SubCapacitanceColumns(ctx, j1 - j0, all, ctx->inA, ctx->MA + j0 * nA));
+    PetscCall(PetscFree(all));
+    if (j1 - j0 < nA) {
+      PetscCall(PetscMalloc2(size, &counts, size, &displs));
+      for (PetscMPIInt q = 0; q < size; ++q) {
+        PetscCall(PetscMPIIntCast(((nA * (q + 1)) / size - (nA * q) / size) * nA, &counts[q]));
+        PetscCall(PetscMPIIntCast(((nA * q) / size) * nA, &displs[q]));
+      }
+      PetscCallMPI(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, ctx->MA, counts, displs, MPIU_SCALAR, ctx->comm));
+      PetscCall(PetscFree2(counts, displs));
+    }
+    for (PetscInt k = 0; k < ctx->nc; ++k) ctx->inA[k] = -1; /* inA back */
+    for (PetscInt k = 0; k < nA; ++k) ctx->inA[ctx->A[k]] = k;
+    PetscCall(PetscLogEventEnd(SubCapForm, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(SubCapFactor, 0, 0, 0, 0));
+    PetscCall(PetscBLASIntCast(nA, &bA));
+    if (nA) {
+      PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bA, &bA, ctx->MA, &bA, ctx->ipiv, &info));
+      PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "the surface block of the Hessian is singular (getrf info %d)", (int)info);
+    }
+    PetscCall(PetscLogFlops(2.0 / 3.0 * nA * nA * nA));
+    PetscCall(PetscLogEventEnd(SubCapFactor, 0, 0, 0, 0));
   }
-  PetscCall(PetscBLASIntCast(nA, &bA));
-  if (nA) {
-    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bA, &bA, ctx->MA, &bA, ctx->ipiv, &info));
-    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "the surface block of the Hessian is singular (getrf info %d)", (int)info);
-  }
-  PetscCall(PetscInfo(pc, "contact Hessian: %" PetscInt_FMT " entries coupling %" PetscInt_FMT " of %" PetscInt_FMT " surface dofs\n", ctx->nC, nA, ctx->nc));
-  PetscCall(PetscLogFlops(2.0 * ctx->nC * nA + 2.0 / 3.0 * nA * nA * nA));
+  PetscCall(PetscInfo(pc, "contact Hessian: %" PetscInt_FMT " entries coupling %" PetscInt_FMT " of %" PetscInt_FMT " surface dofs; capacitance matrix factored by %s\n", ctx->nC, nA, ctx->nc, ctx->lu && size > 1 && nA >= ctx->splitLU ? "the ranks together" : "each rank"));
+  PetscCall(PetscLogFlops(2.0 * ctx->nC * nA));
   PetscCall(PetscLogEventEnd(SubStep, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -1022,6 +1157,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscCall(PetscFree3(ctx->Ci, ctx->Cj, ctx->Cv));
   PetscCall(PetscFree2(ctx->A, ctx->inA));
   PetscCall(PetscFree4(ctx->MA, ctx->GAA, ctx->tA, ctx->ipiv));
+  PetscCall(DenseLUDestroy(&ctx->lu));
   PetscCall(PetscFree6(ctx->border.red, ctx->border.v, ctx->border.X, ctx->border.Q, ctx->border.Zc, ctx->border.xr));
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCSetColumns_C", NULL));
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "ContactBorderPCGetCoupling_C", NULL));
@@ -1032,7 +1168,7 @@ static PetscErrorCode SubPCDestroy(PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], Subdomain *sub)
+PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbodies, const PetscInt offset[], PetscInt splitLU, Subdomain *sub)
 {
   SubCtx      *ctx;
   PetscScalar *Sr;
@@ -1048,9 +1184,16 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
     PetscCall(PetscLogEventRegister("SubstrBordCols", id, &SubBorderCols));
     PetscCall(PetscLogEventRegister("SubstrBordStep", id, &SubBorderStep));
     PetscCall(PetscLogEventRegister("SubstrBordSolve", id, &SubBorderSolve));
+    PetscCall(PetscLogEventRegister("SubstrIfSum", id, &SubIfSum));
+    PetscCall(PetscLogEventRegister("SubstrIfDense", id, &SubIfDense));
+    PetscCall(PetscLogEventRegister("SubstrIfBcast", id, &SubIfBcast));
+    PetscCall(PetscLogEventRegister("SubstrCapGather", id, &SubCapGather));
+    PetscCall(PetscLogEventRegister("SubstrCapForm", id, &SubCapForm));
+    PetscCall(PetscLogEventRegister("SubstrCapFactor", id, &SubCapFactor));
   }
   PetscCall(PetscNew(&ctx));
-  ctx->comm = PetscObjectComm((PetscObject)K);
+  ctx->comm    = PetscObjectComm((PetscObject)K);
+  ctx->splitLU = splitLU;
   PetscCall(PetscObjectReference((PetscObject)surface));
   ctx->isc = surface;
   PetscCall(ISGetIndices(ctx->isc, &ctx->surf));
@@ -1073,8 +1216,7 @@ PetscErrorCode ContactSubstructurePCSetUp(PC pc, Mat K, IS surface, PetscInt nbo
   }
   PetscCall(PetscLogEventEnd(SubFactor, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(SubInterface, 0, 0, 0, 0));
-  PetscCall(SubCondenseInterface(ctx, Sr));
-  PetscCall(PetscFree(Sr));
+  PetscCall(SubCondenseInterface(ctx, &Sr)); /* frees Sr once summed */
   PetscCall(PetscMalloc3(ctx->nB + 1, &ctx->gB, ctx->nc + 1, &ctx->zc, 2 * ctx->nc + 1, &ctx->tmp));
   PetscCall(PetscMalloc2(ctx->nc, &ctx->A, ctx->nc, &ctx->inA));
   PetscCall(PetscLogEventEnd(SubInterface, 0, 0, 0, 0));
