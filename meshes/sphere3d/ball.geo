@@ -1,16 +1,17 @@
 // The lower half of a ball of radius R centred at (0, 0, R), touching the
 // plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
 // the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
-// origin, growing to hf at 3 rc. The ball is cut at z = zc so that its
+// origin, growing to hf at rf (3 rc unless given). The ball is cut at z = zc so that its
 // curved surface is two: "cap" (z <= zc, the contact surface) and "side".
 // Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
 // symy (y = 0); the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, zc, whole.
+// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, rf, zc, whole.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(h)) h = 0.05; EndIf
 If (!Exists(rc)) rc = 0.3; EndIf
 If (!Exists(hf)) hf = 0.25; EndIf
+If (!Exists(rf)) rf = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.15; EndIf
 If (!Exists(whole)) whole = 0; EndIf
 
@@ -55,7 +56,7 @@ Field[2].InField = 1;
 Field[2].SizeMin = h;
 Field[2].SizeMax = hf;
 Field[2].DistMin = rc;
-Field[2].DistMax = 3 * rc;
+Field[2].DistMax = rf;
 Background Field = 2;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
