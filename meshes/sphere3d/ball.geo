@@ -22,7 +22,14 @@ Sphere(1) = {0, 0, R, R};
 If (whole) Rotate {{1, 0, 0}, {0, 0, R}, Pi / 2} { Volume{1}; } EndIf
 Box(2) = {x0, x0, 0, 2 * R, 2 * R, R};
 BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
-Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
+// the slab that cuts the cap off reaches past the ball's bounding box, so
+// that its part outside the ball is not selected with the ball (the whole
+// ball's slab of the ball's width was: a flat bottom z = 0 over [-R, R]^2)
+If (whole)
+  Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
+Else
+  Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
+EndIf
 BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
 e = 1e-6 * R;
 all[] = Volume{:};
