@@ -14,6 +14,10 @@ If (!Exists(hf)) hf = 0.25; EndIf
 If (!Exists(rf)) rf = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.15; EndIf
 If (!Exists(whole)) whole = 0; EndIf
+// the whole ball's surfaces (patches of the turned sphere) are picked by
+// bounding boxes of their triangulations: OpenCASCADE's own boxes for them
+// are wider than the patches, and no box picked the cap
+If (whole) Geometry.OCCBoundsUseStl = 1; EndIf
 
 x0 = whole ? -R : 0;
 Sphere(1) = {0, 0, R, R};
@@ -28,10 +32,17 @@ BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
 If (whole)
   Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
 Else
+  // the slab that cuts the cap off reaches past the ball's bounding box, so
+// that its part outside the ball is not picked with the ball (the whole
+// ball's slab of the ball's width was: a flat bottom z = 0 over [-R, R]^2)
+If (whole)
+  Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
+Else
   Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
 EndIf
+EndIf
 BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
-e = 1e-6 * R;
+e = whole ? 1e-2 * R : 1e-6 * R;  // the triangulations' boxes: a looser margin
 all[] = Volume{:};
 ball[] = Volume In BoundingBox{x0 - e, x0 - e, -e, R + e, R + e, R + e};
 out[] = all[];
