@@ -1,8 +1,8 @@
 // The lower half of a ball of radius R centred at (0, 0, R), touching the
 // plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
 // the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
-// origin, growing to hf at rf (3 rc unless given). The ball is cut at z = zc so that its
-// curved surface is two: "cap" (z <= zc, the contact surface) and "side".
+// origin, growing to hf at rf (3 rc unless given). The ball is cut at z = zc
+// so that its curved surface is two: "cap" (z <= zc, the contact surface) and "side".
 // Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
 // symy (y = 0); the volume "body".
 // Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, rf, zc, whole.
@@ -27,19 +27,12 @@ If (whole) Rotate {{1, 0, 0}, {0, 0, R}, Pi / 2} { Volume{1}; } EndIf
 Box(2) = {x0, x0, 0, 2 * R, 2 * R, R};
 BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
 // the slab that cuts the cap off reaches past the ball's bounding box, so
-// that its part outside the ball is not selected with the ball (the whole
-// ball's slab of the ball's width was: a flat bottom z = 0 over [-R, R]^2)
-If (whole)
-  Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
-Else
-  // the slab that cuts the cap off reaches past the ball's bounding box, so
 // that its part outside the ball is not picked with the ball (the whole
 // ball's slab of the ball's width was: a flat bottom z = 0 over [-R, R]^2)
 If (whole)
   Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
 Else
   Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
-EndIf
 EndIf
 BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
 e = whole ? 1e-2 * R : 1e-6 * R;  // the triangulations' boxes: a looser margin
