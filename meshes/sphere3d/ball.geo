@@ -1,18 +1,23 @@
 // The lower half of a ball of radius R centred at (0, 0, R), touching the
 // plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
 // the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
-// origin, growing to hf at 3 rc. The ball is cut at z = zc so that its
-// curved surface is two: "cap" (z <= zc, the contact surface) and "side".
+// origin, growing to hf at rf (3 rc unless given). The ball is cut at z = zc
+// so that its curved surface is two: "cap" (z <= zc, the contact surface) and "side".
 // Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
 // symy (y = 0); the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, zc, whole.
+// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, rf, zc, whole.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(h)) h = 0.05; EndIf
 If (!Exists(rc)) rc = 0.3; EndIf
 If (!Exists(hf)) hf = 0.25; EndIf
+If (!Exists(rf)) rf = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.15; EndIf
 If (!Exists(whole)) whole = 0; EndIf
+// the whole ball's surfaces (patches of the turned sphere) are picked by
+// bounding boxes of their triangulations: OpenCASCADE's own boxes for them
+// are wider than the patches, and no box picked the cap
+If (whole) Geometry.OCCBoundsUseStl = 1; EndIf
 
 x0 = whole ? -R : 0;
 Sphere(1) = {0, 0, R, R};
@@ -21,9 +26,16 @@ Sphere(1) = {0, 0, R, R};
 If (whole) Rotate {{1, 0, 0}, {0, 0, R}, Pi / 2} { Volume{1}; } EndIf
 Box(2) = {x0, x0, 0, 2 * R, 2 * R, R};
 BooleanIntersection(3) = {Volume{1}; Delete;}{Volume{2}; Delete;};
-Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
+// the slab that cuts the cap off reaches past the ball's bounding box, so
+// that its part outside the ball is not picked with the ball (the whole
+// ball's slab of the ball's width was: a flat bottom z = 0 over [-R, R]^2)
+If (whole)
+  Box(4) = {-2 * R, -2 * R, 0, 4 * R, 4 * R, zc};
+Else
+  Box(4) = {x0, x0, 0, 2 * R, 2 * R, zc};
+EndIf
 BooleanFragments{Volume{3}; Delete;}{Volume{4}; Delete;}
-e = 1e-6 * R;
+e = whole ? 1e-2 * R : 1e-6 * R;  // the triangulations' boxes: a looser margin
 all[] = Volume{:};
 ball[] = Volume In BoundingBox{x0 - e, x0 - e, -e, R + e, R + e, R + e};
 out[] = all[];
@@ -55,7 +67,7 @@ Field[2].InField = 1;
 Field[2].SizeMin = h;
 Field[2].SizeMax = hf;
 Field[2].DistMin = rc;
-Field[2].DistMax = 3 * rc;
+Field[2].DistMax = rf;
 Background Field = 2;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
