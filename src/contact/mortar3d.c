@@ -171,9 +171,9 @@ static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscRe
   }
 }
 
-/* The box of the slave faces this rank searches from (faces[nq], or the
-   first nq where faces is NULL), each widened by its size (the widest of
-   the searches' margins, Mortar3dFaceEvaluate's; Mortar3dUpdateFaces' is
+/* The box of the slave faces this rank searches from (faces[nq]), each
+   widened by its size (the widest of the searches' margins,
+   Mortar3dFaceEvaluate's; Mortar3dUpdate's is
    MORTAR3D_NEAR): a master face whose box misses it meets none of their
    queries. Empty (low ends above high ends) where nq is 0. */
 static void Mortar3dRankBox(const Mortar3d *m, PetscInt nq, const PetscInt faces[], PetscReal rbox[6])
@@ -186,7 +186,7 @@ static void Mortar3dRankBox(const Mortar3d *m, PetscInt nq, const PetscInt faces
   }
   for (PetscInt q = 0; q < nq; ++q) {
     PetscReal xs[27], box[6];
-    Mortar3dWideBox(S, faces ? faces[q] : q, S->x, 1.0, xs, box);
+    Mortar3dWideBox(S, faces[q], S->x, 1.0, xs, box);
     for (PetscInt d = 0; d < 3; ++d) {
       rbox[d]     = PetscMin(rbox[d], box[d]);
       rbox[3 + d] = PetscMax(rbox[3 + d], box[3 + d]);
@@ -401,14 +401,13 @@ static inline void Mortar3dColumn(const Mortar3d *m, PetscInt f, const Mortar3dF
    box, widened by MORTAR3D_NEAR of its size, meets a master face's box),
    so that a node near the master has every face around it integrated
    (its C_j and Q_j whole) and a node far from it none (C_j = 0: not
-   counted, as its gap is positive wherever its faces are); every: all
-   the slave faces searched, else those this rank's evaluations need
-   (m->queryFaces). */
+   counted, as its gap is positive wherever its faces are); the slave
+   faces searched are those this rank's evaluations need (m->queryFaces). */
 #define MORTAR3D_NEAR 0.25
-static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
+static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
 {
   const ContactSurface3d *S = &m->S[m->s];
-  const PetscInt          nq = every ? S->nf : m->nquery;
+  const PetscInt          nq = m->nquery;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < 2; ++k) {
@@ -416,10 +415,10 @@ static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
     PetscCall(ContactSurface3dUpdateCoordinates(&m->S[k], m->body[k], &changed));
     if (changed) m->ownFresh = PETSC_FALSE;
   }
-  PetscCall(Mortar3dBuildTree(m, nq, every ? NULL : m->queryFaces));
+  PetscCall(Mortar3dBuildTree(m, nq, m->queryFaces));
   PetscCall(PetscArrayzero(m->nearNode, S->nn));
   for (PetscInt q = 0; q < nq; ++q) {
-    const PetscInt  f = every ? q : m->queryFaces[q];
+    const PetscInt  f = m->queryFaces[q];
     PetscReal       xs[27], box[6];
     const PetscInt *found;
     PetscInt        nfound;
@@ -433,14 +432,6 @@ static PetscErrorCode Mortar3dUpdateFaces(Mortar3d *m, PetscBool every)
     for (PetscInt i = 0; i < S->nb; ++i)
       if (m->nearNode[S->fnodes[S->nb * f + i]]) m->integrate[f] = PETSC_TRUE;
   }
-  PetscFunctionReturn(0);
-}
-
-/* The faces this rank's evaluations need (m->queryFaces) searched. */
-static PetscErrorCode Mortar3dUpdate(Mortar3d *m)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Mortar3dUpdateFaces(m, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
