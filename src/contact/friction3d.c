@@ -110,6 +110,8 @@ struct _n_Friction3d {
   PetscInt    nstage, nstageMax;
   Friction3dBlockFn rigidBlock; /* the pair's hook for a rigid body's part of each block (Friction3dSetRigidBlock), or NULL */
   void             *rigidCtx;
+  PetscBool         tie;         /* an increment from rest starts tied (Friction3dChooseStart) */
+  PetscBool         rowsPending; /* tied at rest, its rows not built yet (Friction3dRowsPending) */
 };
 
 static PetscLogEvent FRICTION3D_EnergyGrad, FRICTION3D_Hessian, FRICTION3D_Lag;
@@ -174,6 +176,18 @@ PetscErrorCode Friction3dSetUp(Friction3d f, const ContactSurface3d S[2], PetscI
   PetscFunctionReturn(0);
 }
 
+/* The tied start of an increment from rest (Friction3dChooseStart): the
+   accepted bound infinite at every node, so that the first solve holds each
+   node whose points meet the master by the tangential penalty alone,
+   psi = k_t/2 |e|^2 with e its tangential motion against the master since
+   rest, and the rows built at the first state the pair evaluates
+   (Friction3dRowsPending) or where a cut-back restores rest. */
+static void Friction3dTieAtRest(Friction3d f)
+{
+  for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY;
+  f->rowsPending = PETSC_TRUE;
+}
+
 PetscErrorCode Friction3dReset(Friction3d f, const ContactSurface3d S[2])
 {
   PetscFunctionBeginUser;
@@ -185,9 +199,11 @@ PetscErrorCode Friction3dReset(Friction3d f, const ContactSurface3d S[2])
   PetscCall(PetscArrayzero(f->bound, f->nn));
   PetscCall(PetscArrayzero(f->boundAcc, f->nn));
   PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
+  PetscCall(PetscArrayzero(f->off, 2 * f->nn));
   f->nent    = 0;
   f->nstage  = 0;
   f->pending = PETSC_FALSE;
+  if (f->tie) Friction3dTieAtRest(f);
   PetscFunctionReturn(0);
 }
 
@@ -425,6 +441,7 @@ PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscRe
   const PetscInt stride = 2 * PetscMax(f->nn, f->nmn);
   PetscInt      *perm;
   PetscReal      dmax = 0.0, bmax = 0.0;
+  PetscBool      tied = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(FRICTION3D_Lag, 0, 0, 0, 0));
@@ -461,13 +478,15 @@ PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscRe
       for (PetscInt c = 0; c < 3; ++c) nj[c] = n[c] / l;
     Friction3dBasis(nj, &f->T[6 * j]);
     for (PetscInt c = 0; c < 3; ++c) f->nu[3 * j + c] = nj[c];
-    dmax       = PetscMax(dmax, PetscAbsReal(f->bnew[j] - f->bound[j]));
+    if (PetscIsInfReal(f->bound[j])) tied = PETSC_TRUE;
+    else dmax = PetscMax(dmax, PetscAbsReal(f->bnew[j] - f->bound[j]));
     bmax       = PetscMax(bmax, f->bnew[j]);
     f->bound[j] = (C[j] > 0 && l > 0) ? f->bnew[j] : 0.0;
     f->A[j]     = A[j];
   }
   Friction3dOffsets(f);
-  *change = bmax > 0 ? dmax / bmax : 0.0;
+  f->rowsPending = PETSC_FALSE;
+  *change = tied ? 1.0 : bmax > 0 ? dmax / bmax : 0.0; /* from a tied solve: all of the bound changed (it held a node apart too) */
   PetscCall(PetscLogEventEnd(FRICTION3D_Lag, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -765,4 +784,47 @@ PetscErrorCode Friction3dCheckGivenForces(Friction3d f, const char pair[], const
     }
   }
   PetscFunctionReturn(0);
+}
+
+/* Where an increment from rest starts. Its first solve has no lagged
+   pressure yet: with the bound 0 of rest it is frictionless, and a body
+   that friction alone holds along the contact (given forces alone, held by
+   this pair alone: Friction3dCheckGivenForces' bodies) with a force along
+   it has no equilibrium there, its Newton steps carry it off until the line
+   search fails (the flat patch pushed by Q = 0.5 mu P with P from rest:
+   DIVERGED_LS_FAILURE, four cutbacks, status 2). For such a pair, the
+   first solve from rest is tied instead (Friction3dTieAtRest): every node
+   whose points meet the master is held along it by k_t, a stick
+   everywhere, which has an equilibrium whatever the tangential force; its
+   lag then gives each node its bound mu p_j (0 where open: a node the tie
+   held apart lets go) and the fixed point goes on as from a frictionless
+   first solve (its change from the tied bound counted whole, so that it
+   is solved again at least once). The tangential force: the stages' F with
+   the held axes' components taken out, its part along a flat partner's
+   plane (Friction3dFlatNormal), all of it against a curved one. */
+PetscErrorCode Friction3dChooseStart(Friction3d f, const Body body[2])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2 && !f->tie; ++s) {
+    const Body B = body[s];
+    PetscReal  F[CONTACT_MAX_STAGES][3], n[3] = {0.0, 0.0, 0.0};
+    PetscBool  held[3];
+
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, held)) continue;
+    if (!Friction3dFlatNormal(&f->S[1 - s], n)) n[0] = n[1] = n[2] = 0.0;
+    for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
+      PetscReal Fp[3], Fn, Ft = 0.0, Fa = 0.0;
+      for (PetscInt c = 0; c < 3; ++c) Fp[c] = held[c] ? 0.0 : F[k][c];
+      Fn = Fp[0] * n[0] + Fp[1] * n[1] + Fp[2] * n[2];
+      for (PetscInt c = 0; c < 3; ++c) Ft += PetscSqr(Fp[c] - Fn * n[c]), Fa += PetscSqr(Fp[c]);
+      if (PetscSqrtReal(Ft) > 1e-12 * PetscSqrtReal(Fa)) f->tie = PETSC_TRUE;
+    }
+  }
+  if (f->tie) Friction3dTieAtRest(f);
+  PetscFunctionReturn(0);
+}
+
+PetscBool Friction3dRowsPending(Friction3d f)
+{
+  return f->rowsPending;
 }
