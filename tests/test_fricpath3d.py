@@ -33,7 +33,7 @@ def patch_from_rest(Q, extra=()):
 
 def test_tangential_force_from_rest(tmp_path):
     """Q = 0.5 mu P and P given together from rest, one stage: it converges;
-    the contact's force on the upper balances Q along x to `dQ` = 2.1e-8 of Q
+    the contact's force on the upper balances Q along x to `dQ` = 4.9e-9 of Q
     (bound: 3 times the stop, -stop_force_rtol 1e-6 of the contact's force
     over Q) and P across; the shear's resultant (Friction3dShearForce, the
     friction's part) is Q to `shear_gap` = 1.4e-3 of it (bound 1 %: the
@@ -71,7 +71,7 @@ def test_above_mu_P_from_rest(tmp_path):
 def test_from_rest_ranks(tmp_path):
     """The tangential force from rest on 1 and 2 ranks (the tied start's rows
     built on each rank's faces and gathered): the nodal shear apart by `dq`
-    = 5.4e-11 of its largest, the stick area by `dA` = 0 (relative), the
+    = 7.7e-11 of its largest, the stick area by `dA` = 0 (relative), the
     same nodes stuck (matched by their reference coordinates). Bound from
     the stops, as tests/test_friction3d.py's: each run's lagged bound is its
     pressure's to -contact_friction_lag_rtol 1e-8 of mu p_max, two runs'
