@@ -72,7 +72,8 @@
    is infinite, tying what rows there are; in 3D the segments pair the
    surfaces before they touch, so an infinite bound would tie nodes apart):
    the first solve from rest is frictionless, and its lag gives every node
-   in contact mu p_j.
+   in contact mu p_j; tied instead where a body is held along the contact
+   by friction alone and given a force along it (Friction3dChooseStart).
 
    Parallel: each rank lags its own slave faces (mortar3d.c) and the rows'
    entries are gathered on every rank (Friction3dLagExchange), so that
