@@ -790,19 +790,20 @@ PetscErrorCode Friction3dCheckGivenForces(Friction3d f, const char pair[], const
 /* Where an increment from rest starts. Its first solve has no lagged
    pressure yet: with the bound 0 of rest it is frictionless, and a body
    that friction alone holds along the contact (given forces alone, held by
-   this pair alone: Friction3dCheckGivenForces' bodies) with a force along
-   it has no equilibrium there, its Newton steps carry it off until the line
-   search fails (the flat patch pushed by Q = 0.5 mu P with P from rest:
-   DIVERGED_LS_FAILURE, four cutbacks, status 2). For such a pair, the
+   this pair alone: Friction3dCheckGivenForces' bodies; an axis neither
+   held nor along a flat partner's normal, whatever its force) is free
+   along it there: with a force along it no equilibrium, its Newton steps
+   carry it off until the line search fails (the flat patch pushed by
+   Q = 0.5 mu P with P from rest: DIVERGED_LS_FAILURE, four cutbacks,
+   status 2), with none a singular Hessian. For such a pair, the
    first solve from rest is tied instead (Friction3dTieAtRest): every node
    whose points meet the master is held along it by k_t, a stick
    everywhere, which has an equilibrium whatever the tangential force; its
    lag then gives each node its bound mu p_j (0 where open: a node the tie
    held apart lets go) and the fixed point goes on as from a frictionless
    first solve (its change from the tied bound counted whole, so that it
-   is solved again at least once). The tangential force: the stages' F with
-   the held axes' components taken out, its part along a flat partner's
-   plane (Friction3dFlatNormal), all of it against a curved one. */
+   is solved again at least once). Against a curved partner every free
+   axis counts. */
 PetscErrorCode Friction3dChooseStart(Friction3d f, const Body body[2])
 {
   PetscFunctionBeginUser;
@@ -813,13 +814,8 @@ PetscErrorCode Friction3dChooseStart(Friction3d f, const Body body[2])
 
     if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, held)) continue;
     if (!Friction3dFlatNormal(&f->S[1 - s], n)) n[0] = n[1] = n[2] = 0.0;
-    for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
-      PetscReal Fp[3], Fn, Ft = 0.0, Fa = 0.0;
-      for (PetscInt c = 0; c < 3; ++c) Fp[c] = held[c] ? 0.0 : F[k][c];
-      Fn = Fp[0] * n[0] + Fp[1] * n[1] + Fp[2] * n[2];
-      for (PetscInt c = 0; c < 3; ++c) Ft += PetscSqr(Fp[c] - Fn * n[c]), Fa += PetscSqr(Fp[c]);
-      if (PetscSqrtReal(Ft) > 1e-12 * PetscSqrtReal(Fa)) f->tie = PETSC_TRUE;
-    }
+    for (PetscInt c = 0; c < 3; ++c)
+      if (!held[c] && PetscAbsReal(n[c]) < 1.0 - 1e-12) f->tie = PETSC_TRUE; /* an axis free of the partner's normal: the body slides along it */
   }
   if (f->tie) Friction3dTieAtRest(f);
   PetscFunctionReturn(0);
