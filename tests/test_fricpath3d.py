@@ -6,13 +6,17 @@ E 1000, nu 0.3, mu 0.3; the upper's faces y = 0 and y = 1 on rollers) given
 (Q, -P) at its top by force control in one stage from rest. The first solve
 of an increment from rest has no lagged pressure: frictionless, the upper is
 free along x and the solve ended DIVERGED_LS_FAILURE after four cutbacks
-(status 2). Now it starts tied (Friction3dChooseStart)."""
+(status 2). Now it starts tied (Friction3dChooseStart); so does a half ball
+pressed by a displacement and pushed by a force from rest. The rigid cube's
+Newton path with friction: tests/test_rigidm3d.py (staging.c's
+ProblemStateLagSofter)."""
 import numpy as np
 import pytest
 
 from conftest import figure, run_contact
 from test_friction3d import LAG_RTOL, patch_nodes
 from test_shear3d import MU, P, patch_forces
+from test_view3d import scene_args
 
 FORCE_RTOL = 1e-6   # -stop_force_rtol's default: the stop's gradient against the contacts' nodal forces
 
@@ -104,3 +108,28 @@ def test_from_rest_ranks(tmp_path):
     a1, a2 = one.summary["contact"]["p"]["stick_area"], two.summary["contact"]["p"]["stick_area"]
     assert figure("dA", abs(a1 / a2 - 1)) <= bound
     assert np.array_equal(s1, s2)
+
+
+def test_ball_pushed_from_rest(tmp_path):
+    """A curved contact from rest: tests/test_view3d.py's half ball (R = 1,
+    h = 0.04) pressed 0.01 into its half block at its top and given Q =
+    0.055 along x there (force control) in the same increment, mu 0.3. At
+    rest the segments pair the cap's nodes around the first contact point,
+    apart from the block but for it: the tied start holds them all, and the
+    lag lets the open ones go. It converges, Q/(mu P) = `q_ratio` = 0.43
+    (bounds 0.1 to 0.9), the contact's force balances Q to `dQ` = 8.7e-8 of
+    it (bound: 3 times the stop, as above) and part of the contact sticks,
+    `stick_fraction` = 0.34 of its area (bounds 0.05 to 0.95: in one
+    increment from rest the stuck zone's shear would peak at its edge, where
+    the pressure falls to 0, so its rim slips)."""
+    args = scene_args()
+    args[args.index("-ball_bc_top_values") + 1] = "0.055,-0.01"
+    i = args.index("-load_stages")
+    args = args[:i] + args[i + 2:] + ["-ball_bc_top_control", "force,displacement", "-output", "none"]
+    s = run_contact(args, tmp_path, timeout=1200).summary
+    c = s["contact"]["c"]
+    F = np.array(c["surfaces"][0]["force"])  # the slave's: the ball's cap
+    assert s["converged"] and c["surfaces"][0]["body"] == "ball"
+    assert 0.1 < figure("q_ratio", 0.055 / (MU * F[2])) < 0.9
+    assert figure("dQ", abs(F[0] + 0.055) / 0.055) <= 3 * FORCE_RTOL * np.linalg.norm(F) / 0.055
+    assert 0.05 < figure("stick_fraction", c["stick_area"] / c["contact_area"]) < 0.95
