@@ -63,3 +63,9 @@ PetscErrorCode Friction3dSlipState(Friction3d, const ContactSurface3d S[2], Pets
    tangential force exceeds mu times its normal one at some stage, is one
    line naming the pair, the body, the stage and the forces (status 1). */
 PetscErrorCode Friction3dCheckGivenForces(Friction3d, const char pair[], const Body body[2]);
+/* Collective, after Friction3dSetUp: whether an increment from rest starts
+   tied (a body held along the contact by friction alone: friction3d.c). */
+PetscErrorCode Friction3dChooseStart(Friction3d, const Body body[2]);
+/* Tied at rest with no rows yet: the caller lags the rows (a NULL pressure)
+   at the state it evaluates first. */
+PetscBool      Friction3dRowsPending(Friction3d);

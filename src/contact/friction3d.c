@@ -72,7 +72,8 @@
    is infinite, tying what rows there are; in 3D the segments pair the
    surfaces before they touch, so an infinite bound would tie nodes apart):
    the first solve from rest is frictionless, and its lag gives every node
-   in contact mu p_j.
+   in contact mu p_j; tied instead where a body is held along the contact
+   by friction alone and given a force along it (Friction3dChooseStart).
 
    Parallel: each rank lags its own slave faces (mortar3d.c) and the rows'
    entries are gathered on every rank (Friction3dLagExchange), so that
@@ -110,6 +111,8 @@ struct _n_Friction3d {
   PetscInt    nstage, nstageMax;
   Friction3dBlockFn rigidBlock; /* the pair's hook for a rigid body's part of each block (Friction3dSetRigidBlock), or NULL */
   void             *rigidCtx;
+  PetscBool         tie;         /* an increment from rest starts tied (Friction3dChooseStart) */
+  PetscBool         rowsPending; /* tied at rest, its rows not built yet (Friction3dRowsPending) */
 };
 
 static PetscLogEvent FRICTION3D_EnergyGrad, FRICTION3D_Hessian, FRICTION3D_Lag;
@@ -174,6 +177,18 @@ PetscErrorCode Friction3dSetUp(Friction3d f, const ContactSurface3d S[2], PetscI
   PetscFunctionReturn(0);
 }
 
+/* The tied start of an increment from rest (Friction3dChooseStart): the
+   accepted bound infinite at every node, so that the first solve holds each
+   node whose points meet the master by the tangential penalty alone,
+   psi = k_t/2 |e|^2 with e its tangential motion against the master since
+   rest, and the rows built at the first state the pair evaluates
+   (Friction3dRowsPending) or where a cut-back restores rest. */
+static void Friction3dTieAtRest(Friction3d f)
+{
+  for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY;
+  f->rowsPending = PETSC_TRUE;
+}
+
 PetscErrorCode Friction3dReset(Friction3d f, const ContactSurface3d S[2])
 {
   PetscFunctionBeginUser;
@@ -185,9 +200,11 @@ PetscErrorCode Friction3dReset(Friction3d f, const ContactSurface3d S[2])
   PetscCall(PetscArrayzero(f->bound, f->nn));
   PetscCall(PetscArrayzero(f->boundAcc, f->nn));
   PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
+  PetscCall(PetscArrayzero(f->off, 2 * f->nn));
   f->nent    = 0;
   f->nstage  = 0;
   f->pending = PETSC_FALSE;
+  if (f->tie) Friction3dTieAtRest(f);
   PetscFunctionReturn(0);
 }
 
@@ -425,6 +442,7 @@ PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscRe
   const PetscInt stride = 2 * PetscMax(f->nn, f->nmn);
   PetscInt      *perm;
   PetscReal      dmax = 0.0, bmax = 0.0;
+  PetscBool      tied = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(FRICTION3D_Lag, 0, 0, 0, 0));
@@ -461,13 +479,15 @@ PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscRe
       for (PetscInt c = 0; c < 3; ++c) nj[c] = n[c] / l;
     Friction3dBasis(nj, &f->T[6 * j]);
     for (PetscInt c = 0; c < 3; ++c) f->nu[3 * j + c] = nj[c];
-    dmax       = PetscMax(dmax, PetscAbsReal(f->bnew[j] - f->bound[j]));
+    if (PetscIsInfReal(f->bound[j])) tied = PETSC_TRUE;
+    else dmax = PetscMax(dmax, PetscAbsReal(f->bnew[j] - f->bound[j]));
     bmax       = PetscMax(bmax, f->bnew[j]);
     f->bound[j] = (C[j] > 0 && l > 0) ? f->bnew[j] : 0.0;
     f->A[j]     = A[j];
   }
   Friction3dOffsets(f);
-  *change = bmax > 0 ? dmax / bmax : 0.0;
+  f->rowsPending = PETSC_FALSE;
+  *change = tied ? 1.0 : bmax > 0 ? dmax / bmax : 0.0; /* from a tied solve: all of the bound changed (it held a node apart too) */
   PetscCall(PetscLogEventEnd(FRICTION3D_Lag, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -765,4 +785,43 @@ PetscErrorCode Friction3dCheckGivenForces(Friction3d f, const char pair[], const
     }
   }
   PetscFunctionReturn(0);
+}
+
+/* Where an increment from rest starts. Its first solve has no lagged
+   pressure yet: with the bound 0 of rest it is frictionless, and a body
+   that friction alone holds along the contact (given forces alone, held by
+   this pair alone: Friction3dCheckGivenForces' bodies; an axis neither
+   held nor along a flat partner's normal, whatever its force) is free
+   along it there: with a force along it no equilibrium, its Newton steps
+   carry it off until the line search fails (the flat patch pushed by
+   Q = 0.5 mu P with P from rest: DIVERGED_LS_FAILURE, four cutbacks,
+   status 2), with none a singular Hessian. For such a pair, the
+   first solve from rest is tied instead (Friction3dTieAtRest): every node
+   whose points meet the master is held along it by k_t, a stick
+   everywhere, which has an equilibrium whatever the tangential force; its
+   lag then gives each node its bound mu p_j (0 where open: a node the tie
+   held apart lets go) and the fixed point goes on as from a frictionless
+   first solve (its change from the tied bound counted whole, so that it
+   is solved again at least once). Against a curved partner every free
+   axis counts. */
+PetscErrorCode Friction3dChooseStart(Friction3d f, const Body body[2])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < 2 && !f->tie; ++s) {
+    const Body B = body[s];
+    PetscReal  F[CONTACT_MAX_STAGES][3], n[3] = {0.0, 0.0, 0.0};
+    PetscBool  held[3];
+
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, held)) continue;
+    if (!Friction3dFlatNormal(&f->S[1 - s], n)) n[0] = n[1] = n[2] = 0.0;
+    for (PetscInt c = 0; c < 3; ++c)
+      if (!held[c] && PetscAbsReal(n[c]) < 1.0 - 1e-12) f->tie = PETSC_TRUE; /* an axis free of the partner's normal: the body slides along it */
+  }
+  if (f->tie) Friction3dTieAtRest(f);
+  PetscFunctionReturn(0);
+}
+
+PetscBool Friction3dRowsPending(Friction3d f)
+{
+  return f->rowsPending;
 }

@@ -513,12 +513,14 @@ static PetscErrorCode Mortar3dEvaluate(Mortar3d *m, PetscBool gradient, PetscBoo
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode Mortar3dFrictionLag(EnergyTerm, Body[], PetscReal *);
+
 static PetscErrorCode Mortar3dEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
 {
   Mortar3d *m = (Mortar3d *)t->data;
 
   PetscFunctionBeginUser;
-  (void)bodies;
+  if (m->fr && Friction3dRowsPending(m->fr)) PetscCall(Mortar3dFrictionLag(t, bodies, NULL)); /* a tied start's rows (friction3d.c) */
   PetscCall(PetscLogEventBegin(MORTAR3D_EnergyGrad, 0, 0, 0, 0));
   PetscCall(Mortar3dEvaluate(m, PETSC_TRUE, PETSC_TRUE, energy));
   PetscCall(PetscLogEventEnd(MORTAR3D_EnergyGrad, 0, 0, 0, 0));
@@ -1097,6 +1099,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCall(Mortar3dSetUpHessianFaces(m, t->comm));
   if (m->fr) PetscCall(Friction3dSetUp(m->fr, m->S, m->s));
   if (m->fr) PetscCall(Friction3dCheckGivenForces(m->fr, m->spec.name, m->body));
+  if (m->fr) PetscCall(Friction3dChooseStart(m->fr, m->body));
   PetscFunctionReturn(0);
 }
 
