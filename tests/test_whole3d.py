@@ -144,15 +144,16 @@ def test_ring_against_axisymmetric(tmp_path):
     run at h = 0.002 (172,064 dofs, its profile 0.26 % from Hertz's, as at
     h = 0.001): the profile's L2 distance `profile_l2_axi` = 0.0071
     (bound 0.015; not the 0.5 % asked) from the r-z nodal profile, falling
-    with the ring's size (0.0137, 0.0097, 0.0086, 0.0071 at hr = 0.009,
+    with the ring's size (0.0137, 0.0097, 0.0085, 0.0071 at hr = 0.009,
     0.006, 0.0045, 0.003: as hr^0.6), the rest the faces of 0.009 inside
-    (r < 0.9 a: 0.0045 of it); from Hertz `profile_l2` = 0.0072 (bound
-    0.015); P `dP` = +0.0009, a `da` = +0.0007, p_max `dpmax` = -0.0008 from
-    the r-z run's (bounds 0.003). Against the same reference read as the
-    pair reads pressure (its consistent nodal averages int Nt_j p dS /
-    A_j: nodal_averages, whose A_j are the program's to `A_check` = 1e-12,
-    bound 1e-9) the distance is `profile_l2_axi_avg` = 0.0071 (bound
-    0.015): the nodes' reading of the reference is not what parts them."""
+    (0.0043 from r < 0.9 a); from Hertz `profile_l2` = 0.0072 (bound
+    0.015); P `dP` = +0.0008, a `da` = +0.0010, p_max `dpmax` = -0.0003
+    from the r-z run's (bounds 0.003). Against the same reference read as
+    the pair reads pressure (its consistent nodal averages int Nt_j p dS /
+    A_j: nodal_averages, whose A_j are the program's to `A_check` =
+    5.5e-13, bound 1e-9) the distance is `profile_l2_axi_avg` = 0.0073
+    (bound 0.015): the nodes' reading of the reference is not what parts
+    them."""
     axi = axisymmetric(0.002, tmp_path)
     quarter = run_contact(SCENE + RING, tmp_path, name="ring")
     ca, cq = axi.summary["contact"]["ball"], quarter.summary["contact"]["ball"]
@@ -172,24 +173,30 @@ def test_ring_against_axisymmetric(tmp_path):
 def test_whole_ball_fine(tmp_path):
     """The whole ball (whole=1, no symmetry plane, its top and the block's
     bottom held in x, y and z) graded as the fine quarter (h = 0.009 within
-    0.11, a/h = 11.3; 151,977 dofs, the direct step: 10 GB, SECONDS s on
-    the shared machine) against Hertz: a from the second moment
-    `a_moment_error` = AME and p_max `pmax_error` = PME (bounds 0.01, the
-    issue's), the profile `profile_l2` = PL2 (bound 0.02, the issue's), the
-    pair's force along z (its x and y part `lateral` = LAT of P, bound
-    LATB). Against the quarter of the same mesh and supports: P `dP` = DP,
-    a `da` = DA, p_max `dpmax` = DPM (bounds 0.003), the profile's L2
-    `dl2` = DL2 (bound 0.006)."""
+    0.11, a/h = 11.3; 151,977 dofs, the direct step: 8 Newton iterations,
+    284 s of CPU, 9.9 GB, 12 minutes on the shared machine) against Hertz:
+    a from the second moment `a_moment_error` = +0.0014 and p_max
+    `pmax_error` = -0.0028 (bounds 0.004 and 0.008, within the issue's
+    0.01), the profile `profile_l2` = 0.0161 (bound 0.02, the issue's), the
+    pair's force along z (its x and y part `lateral` = 5.9e-8 of P, bound
+    1e-6: the mesh's asymmetry and the stop; 6.9e-7 at h = 0.025). Against
+    the quarter of the same mesh and supports (tests/test_sphere3d_fine.py's
+    FINE with the top and bottom held: P +1.8 % over the rollers'): P `dP`
+    = +0.0003, a `da` = +0.0002, p_max `dpmax` = +0.0005 (bounds 0.001,
+    0.001, 0.0015), the profile's L2 `dl2` = -0.0004 (bound 0.0015): the
+    whole mesh and the quarter's four images read the same contact at
+    this h, where at h = 0.025 p_max differed by 0.9 %
+    (test_sphere3d.py::test_whole_ball)."""
     args = whole_args(0.025) + ["-ball_geo_params", GRADED + ",whole=1", "-ball_mesh_size", 0.009]
     c = run_contact(args, tmp_path, name="whole", timeout=3600).summary["contact"]["ball"]
     assert "model_share" not in c and c["P"] == pytest.approx(math.hypot(*c["force"]), rel=1e-12)
-    assert figure("lateral", math.hypot(*c["force"][:2]) / c["P"]) <= 1e-3
+    assert figure("lateral", math.hypot(*c["force"][:2]) / c["P"]) <= 1e-6
     da, dp, _ = errors(c)
-    assert abs(figure("a_moment_error", da)) <= 0.01
-    assert abs(figure("pmax_error", dp)) <= 0.01
+    assert abs(figure("a_moment_error", da)) <= 0.004
+    assert abs(figure("pmax_error", dp)) <= 0.008
     assert figure("profile_l2", c["pressure_l2_error"]) <= 0.02
     q = run_contact(SCENE + FINE + HELD + ["-output", "none"], tmp_path, name="quarter").summary["contact"]["ball"]
-    assert abs(figure("dP", c["P"] / q["P"] - 1)) <= 0.003
-    assert abs(figure("da", c["fem_a_moment"] / q["fem_a_moment"] - 1)) <= 0.003
-    assert abs(figure("dpmax", c["fem_pmax"] / q["fem_pmax"] - 1)) <= 0.003
-    assert abs(figure("dl2", c["pressure_l2_error"] - q["pressure_l2_error"])) <= 0.006
+    assert abs(figure("dP", c["P"] / q["P"] - 1)) <= 0.001
+    assert abs(figure("da", c["fem_a_moment"] / q["fem_a_moment"] - 1)) <= 0.001
+    assert abs(figure("dpmax", c["fem_pmax"] / q["fem_pmax"] - 1)) <= 0.0015
+    assert abs(figure("dl2", c["pressure_l2_error"] - q["pressure_l2_error"])) <= 0.0015
