@@ -50,12 +50,11 @@ def axisymmetric(h, tmp_path):
 
 def axisymmetric_profile(res):
     """The r-z run's nodal profile as a function of r: linear between its
-    nodes, its first node's value on the axis (whose corner has no weight
-    and no pressure of its own), 0 past its last."""
+    nodes, its first node's value towards the axis (whose corner has no
+    weight and no pressure of its own), 0 past its last."""
     r, p, _, _ = profile(res.output_path, "ball_contact")
     order = np.argsort(r)
-    r, p = np.r_[0.0, r[order]], np.r_[p[order][0], p[order]]
-    return lambda x: np.interp(x, r, p, right=0.0)
+    return lambda x: np.interp(x, r[order], p[order], right=0.0)
 
 
 def tri6_rule(n):
