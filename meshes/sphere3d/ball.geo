@@ -2,8 +2,9 @@
 // plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
 // the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
 // origin, growing to hf at rf (3 rc unless given); with ra > 0 also of size hr
-// within wr of the circle of radius ra in the plane z = 0 (a ring around the
-// contact's edge, r = a), growing to hf at rf. The ball is cut at z = zc
+// (h unless given) within wr (2 hr) of the circle of radius ra in the plane
+// z = 0 (a ring around the contact's edge, r = a), growing to hf at rf
+// (tests/test_whole3d.py). The ball is cut at z = zc
 // so that its curved surface is two: "cap" (z <= zc, the contact surface) and "side".
 // Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
 // symy (y = 0); the volume "body".
