@@ -1,11 +1,14 @@
 // The lower half of a ball of radius R centred at (0, 0, R), touching the
 // plane z = 0 at the origin: a quarter of it (x >= 0, y >= 0; whole = 0) or
 // the whole half (whole = 1). Tet10 of size h (-mesh_size) within rc of the
-// origin, growing to hf at rf (3 rc unless given). The ball is cut at z = zc
+// origin, growing to hf at rf (3 rc unless given); with ra > 0 also of size hr
+// (h unless given) within wr (2 hr) of the circle of radius ra in the plane
+// z = 0 (a ring around the contact's edge, r = a), growing to hf at rf
+// (tests/test_whole3d.py). The ball is cut at z = zc
 // so that its curved surface is two: "cap" (z <= zc, the contact surface) and "side".
 // Groups: top (z = R), cap, side, and for the quarter symx (x = 0) and
 // symy (y = 0); the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, rf, zc, whole.
+// Parameters (gmsh -setnumber NAME VALUE): R, h, rc, hf, rf, zc, whole, ra, hr, wr.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(h)) h = 0.05; EndIf
@@ -14,6 +17,9 @@ If (!Exists(hf)) hf = 0.25; EndIf
 If (!Exists(rf)) rf = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.15; EndIf
 If (!Exists(whole)) whole = 0; EndIf
+If (!Exists(ra)) ra = 0; EndIf
+If (!Exists(hr)) hr = h; EndIf
+If (!Exists(wr)) wr = 2 * hr; EndIf
 // the whole ball's surfaces (patches of the turned sphere) are picked by
 // bounding boxes of their triangulations: OpenCASCADE's own boxes for them
 // are wider than the patches, and no box picked the cap
@@ -69,6 +75,19 @@ Field[2].SizeMax = hf;
 Field[2].DistMin = rc;
 Field[2].DistMax = rf;
 Background Field = 2;
+If (ra > 0)
+  Field[3] = MathEval;
+  Field[3].F = Sprintf("Sqrt((Sqrt(x * x + y * y) - %g) * (Sqrt(x * x + y * y) - %g) + z * z)", ra, ra);
+  Field[4] = Threshold;
+  Field[4].InField = 3;
+  Field[4].SizeMin = hr;
+  Field[4].SizeMax = hf;
+  Field[4].DistMin = wr;
+  Field[4].DistMax = rf;
+  Field[5] = Min;
+  Field[5].FieldsList = {2, 4};
+  Background Field = 5;
+EndIf
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
