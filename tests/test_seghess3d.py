@@ -1,0 +1,108 @@
+"""The 3D mortar's Hessian where its segments move, and Newton on a rigid
+cube square to a box (src/contact/mortar3d.c, segment3d.c). Scenes of our
+own: the rigid cube (tests/meshes/rigid3d/cube.geo) pressed by a force 1 at
+c, 0.05 off its bottom face's centre, onto an elastic box
+(tests/meshes/contact3d/box.geo, Hex27 6 x 6 x 3, held at its bottom), the
+cube's edges parallel to the box's mesh lines (theta_z = 0), free to turn
+about x and y. Two cubes: one of side 0.5 whose bottom (the master) ends
+inside the box's top (the slave), its edges on the box's midside nodes, and
+one of side 1.2 whose bottom covers the box's top whole (the slave's
+surface ends inside the master's: S', the slave's part facing the master,
+is then the slave's fixed faces, and no end of S' moves).
+
+Measured: the Hessian's Taylor remainder levels at 8.0e-4 of |H v| where the
+master ends inside the slave and at 3e-8 to 1.2e-7 where it covers the slave (same
+box, a like tilt); the cube covering the box converges in 6 Newton steps,
+the other never (the line search rejects every step once the gradient is
+near 1e-4: the energy rises along the Newton direction while the gradient
+says it falls). The missing term is the end of S' moving with the master's
+border (docs/formulations.md, "mortar between 3D bodies")."""
+import math
+
+import pytest
+
+from conftest import figure, run_contact
+
+BOX = "tests/meshes/contact3d/box.geo"
+CUBE = "tests/meshes/rigid3d/cube.geo"
+SMALL = "x0=0.25,y0=0.25,z0=0.5,s=0.5,n=4"     # its edges on the box's midside nodes (x, y = 0.25, 0.75)
+LARGE = "x0=-0.1,y0=-0.1,z0=0.5,s=1.2,n=4"     # beyond the box's top (0..1) on every side
+
+ENDS = ("the master's border inside the slave moves the end of S' (the slave's part facing the master): "
+        "the gradient leaves out W_j g there times its motion (O(p g)) and the Hessian the force's "
+        "redistribution as the end moves (O(p)); the square cube's Newton stalls with the gradient near 1e-4 "
+        "of the force and its Hessian remainder levels at 8.0e-4 of |H v| (an open defect, not a bound)")
+
+
+def square_cube(centre, cube, extra=()):
+    return (["-bodies", "block,cube", "-block_geo", BOX, "-block_geo_params", "hex=1,n=6,m=3", "-block_E", "1000",
+             "-block_nu", "0.3", "-block_bc", "bottom",
+             "-cube_rigid", "-cube_geo", CUBE, "-cube_geo_params", cube,
+             "-cube_bc", "top", "-cube_bc_top_control", "displacement,displacement,force", "-cube_bc_top_values", "0,0,-1",
+             "-cube_rigid_centre", centre, "-cube_rigid_rotation", "free,free,0",
+             "-contact_pairs", "c", "-contact_c_surfaces", "block:top,cube:bottom", "-output", "none"] + list(extra))
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("centre", ["0.55,0.5,0.75", "0.551,0.5,0.75"])
+def test_covering_cube_converges(centre, tmp_path):
+    """The cube whose bottom covers the box's top, square to it and pressed
+    0.05 (and 0.051) off centre: Newton converges (6 steps measured, not
+    asserted), the contact carries the force (`dF_cover` = up to 1.4e-10
+    over the five kernels, bound 1e-7: the force control's tolerance) and
+    the cube tilts towards +x about +y (`tilt_cover` = 2.8e-4 rad, 2.9e-4
+    at c_x 0.551) with no turn about x (y symmetric: `tilt_x_cover` = up to
+    1.1e-16, bound 1e-9)."""
+    res = run_contact(square_cube(centre, LARGE), tmp_path)
+    cube = res.summary["bodies"]["cube"]
+    assert res.summary["converged"]
+    assert figure("dF_cover", abs(cube["force"][2] - 1.0)) <= 1e-7
+    assert figure("tilt_cover", cube["rotation"][1]) > 1e-4
+    assert figure("tilt_x_cover", abs(cube["rotation"][0])) <= 1e-9
+
+
+@pytest.mark.xfail(reason=ENDS, strict=False)
+@pytest.mark.parametrize("centre", ["0.55,0.5,0.75", "0.551,0.5,0.75"])
+def test_square_cube_converges(centre, tmp_path):
+    """The cube of side 0.5 square to the box, its bottom ending inside the
+    box's top on the box's midside nodes, pressed 0.05 (and 0.051) off
+    centre (test_rigid3d.py's moment-balance scene with theta_z = 0):
+    Newton should converge as it does with theta_z = 0.5 and with the
+    covering cube (above). It does not: from the 4th step the line search
+    rejects the unit step (the energy measured to rise linearly along the
+    Newton direction, +1.1e-12 a unit step, where the gradient gives
+    -8.6e-13) and the gradient stalls near 1e-6 after 500 steps
+    (DIVERGED_MAXITS). Failing: the end term (module docstring)."""
+    res = run_contact(square_cube(centre, SMALL, ["-tao_max_it", "40"]), tmp_path, check=False)
+    assert res.summary["converged"]
+
+
+@pytest.mark.roundoff
+def test_taylor_covering(tmp_path):
+    """The Taylor test (-taylor_test, -taylor_scale 1e-3) at the covering
+    cube's solution: the gradient's remainder at order 2
+    (`gradient_order_cover` = 2.000) and the Hessian's relative remainder,
+    from the fourth halving on (the steps before cross nodes entering the
+    contact), at most `hessian_level_cover` = 6.4e-8 to 1.2e-7 of |H v|
+    over the five kernels (bound 3e-7):
+    no end of S' moves, the box's faces stay nearly flat, and what is left
+    is the Gauss rule's motion with the segments (mortar3d.c)."""
+    res = run_contact(square_cube("0.55,0.5,0.75", LARGE, ["-taylor_test", "-taylor_scale", "1e-3"]), tmp_path)
+    t = res.summary["taylor"]
+    assert 1.9 <= figure("gradient_order_cover", t["gradient_order"]) <= 2.1
+    assert figure("hessian_level_cover", max(t["hessian_relative_remainder"][3:])) <= 3e-7
+
+
+@pytest.mark.roundoff
+@pytest.mark.xfail(reason=ENDS, strict=False)
+def test_taylor_square(tmp_path):
+    """The same Taylor test at the square cube's iterate (-tao_gatol 1e-3,
+    the solve stopped before the stall): the gradient's remainder at order 2
+    (measured 2.011: its missing end term is O(p g)), the Hessian's relative
+    remainder levels at 8.0e-4 of |H v| (4.7e-4 with theta_z = 0.5).
+    Failing: it should be at most 3e-7 as the covering cube's (above)."""
+    res = run_contact(square_cube("0.55,0.5,0.75", SMALL, ["-tao_gatol", "1e-3", "-taylor_test", "-taylor_scale", "1e-3"]),
+                      tmp_path)
+    t = res.summary["taylor"]
+    assert 1.9 <= t["gradient_order"] <= 2.1
+    assert max(t["hessian_relative_remainder"][3:]) <= 3e-7
