@@ -1,0 +1,166 @@
+"""The 3D mortar's Hessian where its segments move, and Newton on a rigid
+cube square to a box (src/contact/mortar3d.c, segment3d.c). Scenes of our
+own: the rigid cube (tests/meshes/rigid3d/cube.geo) pressed by a force 1 at
+c, 0.05 off its bottom face's centre, onto an elastic box
+(tests/meshes/contact3d/box.geo, Hex27 6 x 6 x 3, held at its bottom), the
+cube's edges parallel to the box's mesh lines (theta_z = 0), free to turn
+about x and y. Two cubes: one of side 0.5 whose bottom (the master) ends
+inside the box's top (the slave), its edges on the box's midside nodes, and
+one of side 1.2 whose bottom covers the box's top whole (the slave's
+surface ends inside the master's: S', the slave's part facing the master,
+is then the slave's fixed faces, and no end of S' moves).
+
+Measured: the Hessian's Taylor remainder levels at 8.0e-4 of |H v| where the
+master ends inside the slave and at 3e-8 to 1.2e-7 where it covers the slave (same
+box, a like tilt); the cube covering the box converges in 6 Newton steps,
+the other never (the line search rejects every step once the gradient is
+near 1e-4: the energy rises along the Newton direction while the gradient
+says it falls), but does in 10 with the line search off. The missing term
+is the end of S' moving with the master's border (docs/formulations.md,
+"mortar between 3D bodies")."""
+import math
+
+import pytest
+
+from conftest import figure, run_contact
+from test_contact3d import hertz_args
+
+BOX = "tests/meshes/contact3d/box.geo"
+CUBE = "tests/meshes/rigid3d/cube.geo"
+SMALL = "x0=0.25,y0=0.25,z0=0.5,s=0.5,n=4"     # its edges on the box's midside nodes (x, y = 0.25, 0.75)
+LARGE = "x0=-0.1,y0=-0.1,z0=0.5,s=1.2,n=4"     # beyond the box's top (0..1) on every side
+
+ENDS = ("the master's border inside the slave moves the end of S' (the slave's part facing the master): "
+        "the gradient leaves out W_j g there times its motion (O(p g)) and the Hessian the force's "
+        "redistribution as the end moves (O(p)); the square cube's Newton stalls with the gradient near 1e-4 "
+        "of the force and its Hessian remainder levels at 8.0e-4 of |H v| (an open defect, not a bound)")
+
+
+def square_cube(centre, cube, extra=()):
+    return (["-bodies", "block,cube", "-block_geo", BOX, "-block_geo_params", "hex=1,n=6,m=3", "-block_E", "1000",
+             "-block_nu", "0.3", "-block_bc", "bottom",
+             "-cube_rigid", "-cube_geo", CUBE, "-cube_geo_params", cube,
+             "-cube_bc", "top", "-cube_bc_top_control", "displacement,displacement,force", "-cube_bc_top_values", "0,0,-1",
+             "-cube_rigid_centre", centre, "-cube_rigid_rotation", "free,free,0",
+             "-contact_pairs", "c", "-contact_c_surfaces", "block:top,cube:bottom", "-output", "none"] + list(extra))
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("centre", ["0.55,0.5,0.75", "0.551,0.5,0.75"])
+def test_covering_cube_converges(centre, tmp_path):
+    """The cube whose bottom covers the box's top, square to it and pressed
+    0.05 (and 0.051) off centre: Newton converges (6 steps measured, not
+    asserted), the contact carries the force (`dF_cover` = up to 1.4e-10
+    over the five kernels, bound 1e-7: the force control's tolerance) and
+    the cube tilts towards +x about +y (`tilt_cover` = 2.8e-4 rad, 2.9e-4
+    at c_x 0.551) with no turn about x (y symmetric: `tilt_x_cover` = up to
+    1.1e-16, bound 1e-9)."""
+    res = run_contact(square_cube(centre, LARGE), tmp_path)
+    cube = res.summary["bodies"]["cube"]
+    assert res.summary["converged"]
+    assert figure("dF_cover", abs(cube["force"][2] - 1.0)) <= 1e-7
+    assert figure("tilt_cover", cube["rotation"][1]) > 1e-4
+    assert figure("tilt_x_cover", abs(cube["rotation"][0])) <= 1e-9
+
+
+@pytest.mark.xfail(reason=ENDS, strict=False)
+@pytest.mark.parametrize("centre", ["0.55,0.5,0.75", "0.551,0.5,0.75"])
+def test_square_cube_converges(centre, tmp_path):
+    """The cube of side 0.5 square to the box, its bottom ending inside the
+    box's top on the box's midside nodes, pressed 0.05 (and 0.051) off
+    centre (test_rigid3d.py's moment-balance scene with theta_z = 0):
+    Newton should converge as it does with theta_z = 0.5 and with the
+    covering cube (above). It does not: from the 4th step the line search
+    rejects the unit step (the energy measured to rise linearly along the
+    Newton direction, +1.1e-12 a unit step, where the gradient gives
+    -8.6e-13) and the gradient stalls near 1e-6 after 500 steps
+    (DIVERGED_MAXITS). Failing: the end term (module docstring)."""
+    res = run_contact(square_cube(centre, SMALL, ["-tao_max_it", "40"]), tmp_path, check=False)
+    assert res.summary["converged"]
+
+
+@pytest.mark.roundoff
+@pytest.mark.parametrize("centre", ["0.55,0.5,0.75", "0.551,0.5,0.75"])
+def test_square_cube_unit_step(centre, tmp_path):
+    """The square cube (above) with the line search off (-tao_ls_type unit,
+    every Newton step taken whole): Newton converges (10 steps measured,
+    the gradient 3.0e-4, 6.8e-6, 1.4e-7, 3.4e-11 over its last four: the
+    Hessian, whatever its missing end term, is near enough), so what stops
+    the default solve is the line search on an energy whose gradient leaves
+    out the end term (O(p g)), not the Hessian. At the gradient's root the
+    contact carries the force (`dF_unit` = up to 6.0e-11 over the five
+    kernels, bound 1e-7) and its moment about the loaded point is nil
+    (`moment_unit` = up to 4.1e-12 of F L, bound 1e-7), the cube tilted
+    about +y (`tilt_unit` = 1.8e-3 rad, 1.9e-3 at c_x 0.551)."""
+    res = run_contact(square_cube(centre, SMALL, ["-tao_ls_type", "unit"]), tmp_path)
+    cube = res.summary["bodies"]["cube"]
+    L = math.sqrt(3) * 0.5
+    assert res.summary["converged"]
+    assert figure("dF_unit", abs(cube["force"][2] - 1.0)) <= 1e-7
+    assert figure("moment_unit", math.sqrt(sum(m * m for m in cube["moment"])) / L) <= 1e-7
+    assert figure("tilt_unit", cube["rotation"][1]) > 1e-3
+
+
+@pytest.mark.roundoff
+def test_taylor_covering(tmp_path):
+    """The Taylor test (-taylor_test, -taylor_scale 1e-3) at the covering
+    cube's solution: the gradient's remainder at order 2
+    (`gradient_order_cover` = 2.000) and the Hessian's relative remainder,
+    from the fourth halving on (the steps before cross nodes entering the
+    contact), at most `hessian_level_cover` = 6.4e-8 to 1.2e-7 of |H v|
+    over the five kernels (bound 3e-7):
+    no end of S' moves, the box's faces stay nearly flat, and what is left
+    is the Gauss rule's motion with the segments (mortar3d.c)."""
+    res = run_contact(square_cube("0.55,0.5,0.75", LARGE, ["-taylor_test", "-taylor_scale", "1e-3"]), tmp_path)
+    t = res.summary["taylor"]
+    assert 1.9 <= figure("gradient_order_cover", t["gradient_order"]) <= 2.1
+    assert figure("hessian_level_cover", max(t["hessian_relative_remainder"][3:])) <= 3e-7
+
+
+@pytest.mark.roundoff
+@pytest.mark.xfail(reason=ENDS, strict=False)
+def test_taylor_square(tmp_path):
+    """The same Taylor test at the square cube's iterate (-tao_gatol 1e-3,
+    the solve stopped before the stall): the gradient's remainder at order 2
+    (measured 2.011: its missing end term is O(p g)), the Hessian's relative
+    remainder levels at 8.0e-4 of |H v| (4.7e-4 with theta_z = 0.5).
+    Failing: it should be at most 3e-7 as the covering cube's (above)."""
+    res = run_contact(square_cube("0.55,0.5,0.75", SMALL, ["-tao_gatol", "1e-3", "-taylor_test", "-taylor_scale", "1e-3"]),
+                      tmp_path)
+    t = res.summary["taylor"]
+    assert 1.9 <= t["gradient_order"] <= 2.1
+    assert max(t["hessian_relative_remainder"][3:]) <= 3e-7
+
+
+@pytest.mark.roundoff
+def test_hertz_level_not_the_rule(tmp_path):
+    """The curved slave on an elastic master with no end inside the slave:
+    test_contact3d.py's quarter ball's cap (Tet10, h 0.04) on the block's
+    top, the Taylor test at the solution (-taylor_scale 1e-6, as there).
+    The Hessian's relative remainder levels at `hertz_level_q4` = 2.9e-6
+    of |H v| with the pieces' Gauss rule of degree 7 (4 points a side) and
+    the same with degree 15 (8 points: `hertz_level_ratio` = 1.0004 to
+    1.0005 over the five kernels, the ratio of the two, bound 0.9 to 1.1;
+    2.8846e-6 at degree 11): a Gauss rule's error on a smooth integrand
+    would fall by orders of magnitude from degree 7 to 15, so the term left
+    out is not the rule's motion on smooth pieces. The likely source, not
+    yet shown: the pieces follow the master's flat sub-triangles projected
+    along the slave's chord normals, not the closest-point images of the
+    curved master's face edges where g has its kinks; a kink inside a piece
+    leaves an error no rule removes, and its change as the pieces move is
+    not differentiated (docs/formulations.md). In keeping with it, the level
+    follows the master's deformation: with the block 100 times stiffer (E
+    1e7, the penalty unchanged, set by the ball) it is `hertz_level_ratio_E`
+    = 0.0102 times as high (bound 0.005 to 0.02; 2.9e-10 of |H v| at E
+    1e9): the more the master's faces bend, the larger the term left out."""
+    level = {}
+    for q in (4, 8):
+        t = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-contact_quadrature_points", q],
+                        tmp_path, name=f"q{q}").summary["taylor"]
+        assert 1.9 <= t["gradient_order"] <= 2.1
+        level[q] = t["hessian_relative_remainder"][-1]
+    t = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-base_E", "1e7"],
+                    tmp_path, name="stiff").summary["taylor"]
+    assert 0.005 <= figure("hertz_level_ratio_E", t["hessian_relative_remainder"][-1] / level[4]) <= 0.02
+    figure("hertz_level_q4", level[4])
+    assert 0.9 <= figure("hertz_level_ratio", level[8] / level[4]) <= 1.1
