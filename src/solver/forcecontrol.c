@@ -116,15 +116,6 @@ PetscErrorCode ProblemCollectControls(Problem p)
   PetscFunctionReturn(0);
 }
 
-/* A force's length over the body's dim components (a 3D body's z counts). */
-static PetscReal SceneForceNorm(PetscInt dim, const PetscReal f[])
-{
-  PetscReal s = 0;
-
-  for (PetscInt d = 0; d < dim; ++d) s += PetscSqr(f[d]);
-  return PetscSqrtReal(s);
-}
-
 /* The largest force of the scene at the evaluation whose local gradients
    the bodies hold: every load's resultant, every force control's force,
    every Dirichlet group's reaction (anchors' included). */
@@ -133,20 +124,15 @@ PetscErrorCode ProblemControlSceneForce(Problem p, PetscReal *S)
   PetscFunctionBeginUser;
   *S = 0;
   for (PetscInt i = 0; i < p->nbodies; ++i) {
-    const Body     b   = p->bodies[i];
-    const PetscInt dim = BodyGetDimension(b);
+    const Body b = p->bodies[i];
     PetscCall(BodyComputeReactions(b, BodyGetLocalGradient(b)));
-    for (PetscInt l = 0; l < BodyGetNumLoads(b); ++l) *S = PetscMax(*S, SceneForceNorm(dim, BodyGetLoad(b, l)->force));
+    for (PetscInt l = 0; l < BodyGetNumLoads(b); ++l) *S = PetscMax(*S, PetscSqrtReal(PetscSqr(BodyGetLoad(b, l)->force[0]) + PetscSqr(BodyGetLoad(b, l)->force[1])));
     for (PetscInt j = 0; j < BodyGetNumConditions(b); ++j) {
       const BodyBC *bc = BodyGetCondition(b, j);
-      *S               = PetscMax(*S, SceneForceNorm(dim, bc->reaction));
+      *S               = PetscMax(*S, PetscSqrtReal(PetscSqr(bc->reaction[0]) + PetscSqr(bc->reaction[1])));
       for (PetscInt c = 0; c < bc->ncomp; ++c)
         if (bc->control[c]) *S = PetscMax(*S, PetscAbsReal(BodyControlForce(b, j, c)));
     }
-  }
-  for (PetscInt k = 0; k < p->fc.n; ++k) { /* every control's force: a rigid body's moment over its size L too */
-    const ForceControl *fc = &p->fc.c[k];
-    *S                     = PetscMax(*S, PetscAbsReal(BodyGetControlForce(p->bodies[fc->body], fc->bc, fc->c)));
   }
   PetscFunctionReturn(0);
 }
