@@ -366,16 +366,31 @@ def table(out):
               "`ranks` the MPI ranks (the times then each event's largest over the ranks, `peak MB` the largest process's); "
               "`CG its` the CG iterations over the Newton steps; `Hessian max/min` Mortar3dHessian's time on its slowest rank over "
               "its fastest's. The `CG + GAMG` rows are `-newton_iterative 1` (GAMG by nodes on one level, as with contact).", "",
-              "| scene | ranks | dofs | slave faces | nodes in contact | step | Newton its | CG its | contact / step [s] | linear / step [s] | contact / linear | contact / step / slave face [ms] | factor (once) [s] | Hessian max/min | wall [s] | user [s] | peak MB | a vs Hertz | p_max vs p0 | load |",
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+              "| scene | ranks | dofs | slave faces | nodes in contact | step | Newton its | energy evaluations | CG its | contact / step [s] | linear / step [s] | contact / linear | contact / step / slave face [ms] | factor (once) [s] | Hessian max/min | wall [s] | user [s] | peak MB | a vs Hertz | p_max vs p0 | load |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for name, r in co.items():
             c, l, fac = per_step(r)
             hr = r["events"].get("Mortar3dHessian", [0, 0, None])
             L.append(f"| {name} | {r.get('ranks', 1)} | {r['dofs']:,} | {r['slave_faces']} | {r['nodes_in_contact']} | {r['step']} | {r['iterations']} | "
-                     f"{fmt(r.get('cg'), '{:d}')} | {c:.3f} | {l:.3f} | {c / l if l else float('nan'):.2f} | {1e3 * c / r['slave_faces']:.2f} | {fmt(fac if fac else None, '{:.2f}')} | "
+                     f"{r['evaluations']} | {fmt(r.get('cg'), '{:d}')} | {c:.3f} | {l:.3f} | {c / l if l else float('nan'):.2f} | {1e3 * c / r['slave_faces']:.2f} | {fmt(fac if fac else None, '{:.2f}')} | "
                      f"{fmt(hr[2] if len(hr) > 2 else None, '{:.2f}')} | {r['wall']:.1f} | "
                      f"{fmt(r.get('user'), '{:.2f}')} | {r['rss_mb']:.0f} | {fmt(r.get('a_error'), '{:+.2%}')} | {fmt(r.get('pmax_error'), '{:+.2%}')} | "
                      f"{r['load']:.1f} |")
+        cg = {k: r for k, r in co.items() if r["step"] == "CG + GAMG"}
+        if cg:
+            L += ["", "The same runs' unit costs (the CG + GAMG rows): the contact's per evaluation and slave face, the linear "
+                  "step's per Newton step and dof, and the share of the machine each run had (`wall / user`, the whole process's wall time over its CPU time a rank: "
+                  "roughly the load's inflation of every event time, by which to divide a time to compare rows).", "",
+                  "| scene | ranks | energy evaluation / slave face [ms] | Hessian / slave face [ms] | linear / step / dof [us] | "
+                  "CG its / step | peak KB / dof | wall / user |",
+                  "|---|---|---|---|---|---|---|---|"]
+            for name, r in cg.items():
+                e, F = r["events"], r["slave_faces"]
+                eg, hs = e["Mortar3dEnergyGrad"], e["Mortar3dHessian"]
+                _, lin, _ = per_step(r)
+                L.append(f"| {name} | {r.get('ranks', 1)} | {1e3 * eg[1] / eg[0] / F:.3f} | {1e3 * hs[1] / hs[0] / F:.3f} | "
+                         f"{1e6 * lin / r['dofs']:.1f} | {r['cg'] / max(r['iterations'], 1):.1f} | {r['rss_mb'] * 1024 / r['dofs']:.1f} | "
+                         f"{r['wall'] * r.get('ranks', 1) / r['user']:.2f} |")
     notes = os.path.join(out, "NOTES.md")
     if os.path.exists(notes):
         L += ["", open(notes).read()]
