@@ -358,8 +358,8 @@ def table(out):
     co = R.get("cost", {})
     if co:
         L += ["", "## The cost of a Newton step against the linear solve's, by size", "",
-              "One run each with `-log_view`, the program's default step (the direct Schur step at or below 50,000 dofs, "
-              "CG + GAMG above). Per Newton iteration: `contact` the contact's Hessian and its energy and gradient "
+              "One run each with `-log_view`; the `direct` rows by the direct Schur step (h 0.04, 0.025 and the patch by the program's "
+              "default of their time, h 0.015 forced), the `CG + GAMG` rows by `-newton_iterative 1`. Per Newton iteration: `contact` the contact's Hessian and its energy and gradient "
               "evaluations (line search included), `linear` the step's own set-up and solve (direct: the capacitance "
               "factorisation and the substitutions; CG: GAMG's set-up and the CG solve); `factor` the direct step's one-off "
               "condensation of the stiffness.", "",
