@@ -37,9 +37,18 @@ the linear solve's (the step's set-up and solve: SubstrStep + SubstrSolve
 for the direct Schur step, PCSetUp + KSPSolve for CG; the one-off
 factorisation SubstrFactor apart).
 
+--cost-cg H,H,...: the ball at these h by CG + GAMG (-newton_iterative 1:
+GAMG by nodes on one level, as with contact), on --cost-ranks ranks, one
+run each with -log_view: the same figures, the linear step's PCSetUp +
+KSPSolve, the CG iterations, and Mortar3dHessian's time on its slowest rank
+over its fastest's. h 0.04, 0.02, 0.0125, 0.008, 0.005 give 1.0e4, 3.4e4,
+1.0e5, 3.1e5 and 1.2e6 dofs (the ball's cap, the contact surface, graded
+to h: its slave faces grow as h^-2).
+
     python3 scripts/bench_contact3d.py --side-by-side 3 [--before OLD/bin/contact]
     python3 scripts/bench_contact3d.py --lmvm 3
     python3 scripts/bench_contact3d.py --cost [--cost-hmin 0.01]
+    python3 scripts/bench_contact3d.py --cost-cg 0.04,0.02,0.0125,0.008 [--cost-ranks 2]
     python3 scripts/bench_contact3d.py --table      # RESULTS.md from results.json
 """
 import argparse
@@ -95,19 +104,21 @@ def hertz_errors(s):
                 slave_faces=c["surfaces"][0]["faces"] if c["surfaces"][0]["slave"] else c["surfaces"][1]["faces"])
 
 
-def ours(args, binary=None, log_view=False):
-    """One run of the program: its figures (and -log_view's events where asked)."""
+def ours(args, binary=None, log_view=False, ranks=1):
+    """One run of the program (on ranks MPI ranks): its figures (and -log_view's events where asked)."""
     with tempfile.TemporaryDirectory() as tmp:
         summary = os.path.join(tmp, "s.json")
         extra = ["-output", "none", "-summary", summary] + (["-log_view", ":" + os.path.join(tmp, "log.txt")] if log_view else [])
-        p, wall, user, rss, ld = timed([binary or os.path.join(ROOT, "bin", "contact")] + strs(args) + extra, tmp)
+        mpi = ["mpiexec", "-n", str(ranks)] if ranks > 1 else []
+        p, wall, user, rss, ld = timed(mpi + [binary or os.path.join(ROOT, "bin", "contact")] + strs(args) + extra, tmp)
         if p.returncode:
             raise RuntimeError(f"status {p.returncode}: {p.stdout[-1500:]}\n{p.stderr[-1500:]}")
         s = json.load(open(summary))
-        events = parse_log(open(os.path.join(tmp, "log.txt")).read()) if log_view else None
+        log = open(os.path.join(tmp, "log.txt")).read() if log_view else None
+        events, stages = (parse_log(log), parse_stages(log)) if log_view else (None, None)
     r = dict(dofs=s["dofs"], wall=wall, user=user, rss_mb=rss, load=ld, setup=s["time"]["setup"], solve=s["time"]["solve"],
              iterations=s["iterations"], evaluations=s["function_evaluations"], converged=s["converged"], reason=s["tao_reason"],
-             step="CG + GAMG" if "Newton step: CG" in p.stdout else "direct")
+             step="CG + GAMG" if "Newton step: CG" in p.stdout or "-newton_iterative 1" in " ".join(strs(args)) else "direct")
     if s.get("contact"):
         c = next(iter(s["contact"].values()))
         r.update(hertz_errors(s) if str(args[1]) == "ball,base" else {})
@@ -117,21 +128,32 @@ def ours(args, binary=None, log_view=False):
     m = re.search(r"(\d+) CG iterations", p.stdout)
     r["cg"] = int(m.group(1)) if m else None
     if events is not None:
-        r["events"] = events
+        r["events"], r["stages"], r["ranks"] = events, stages, ranks
     return r
 
 
 def parse_log(text):
-    """-log_view's events: {name: [count, time]} (the first line of each name, the whole run's)."""
+    """-log_view's events: {name: [count, time, time's max/min over ranks]} (the first line of each name:
+    the first stage that has it; the contact's and the step's events are all in the Solve stage)."""
     ev = {}
     for line in text.splitlines():
         f = line.split()
         if len(f) > 5 and re.match(r"^[A-Za-z][A-Za-z0-9_]*$", f[0]) and re.match(r"^\d+$", f[1]) and f[0] not in ev:
             try:
-                ev[f[0]] = [int(f[1]), float(f[3])]
+                ev[f[0]] = [int(f[1]), float(f[3]), float(f[4])]
             except ValueError:
                 continue
     return ev
+
+
+def parse_stages(text):
+    """-log_view's summary of stages: {name: time [s]} (the first table's, its lines up to a blank one)."""
+    st = {}
+    for line in text.split("Summary of Stages", 1)[-1].split("\n\n", 1)[0].splitlines()[2:]:
+        m = re.match(r"^\s*\d+:\s+([^:]+): ([0-9.e+-]+)", line)
+        if m:
+            st[m.group(1).strip()] = float(m.group(2))
+    return st
 
 
 def mesh_files(h, mesh_dir):
@@ -236,6 +258,26 @@ def cost(results, hmin, mesh_dir):
         yield
 
 
+def cost_cg(results, hs, ranks, mesh_dir, force=False):
+    """The ball at each h by CG + GAMG (-newton_iterative 1, GAMG by nodes on one level with
+    contact) on ranks MPI ranks, one run each with -log_view (kept where already in results)."""
+    for h in hs:
+        name = f"hertz-h{h:g}, CG + GAMG" + (f", {ranks} ranks" if ranks > 1 else "")
+        if name in results.get("cost", {}) and not force:
+            continue
+        files = mesh_files(h, mesh_dir)
+        try:
+            r = ours(hertz_on(files, h) + ["-newton_iterative", 1], log_view=True, ranks=ranks)
+        except RuntimeError as e:
+            print(f"{name}: failed: {e}", file=sys.stderr)
+            break
+        results.setdefault("cost", {})[name] = r
+        c, l, _ = per_step(r)
+        print(f"{name}: {r['dofs']} dofs, {r['slave_faces']} slave faces, wall {r['wall']:.1f} s, its {r['iterations']}, "
+              f"contact/linear {c / l:.3f}, peak {r['rss_mb']:.0f} MB, load {r['load']:.1f}", flush=True)
+        yield
+
+
 def patch_cost():
     """The finer patch (every slave face in contact) with -log_view."""
     lower, upper = FINE_PATCH
@@ -316,19 +358,39 @@ def table(out):
     co = R.get("cost", {})
     if co:
         L += ["", "## The cost of a Newton step against the linear solve's, by size", "",
-              "One run each with `-log_view`, the program's default step (the direct Schur step at or below 50,000 dofs, "
-              "CG + GAMG above). Per Newton iteration: `contact` the contact's Hessian and its energy and gradient "
+              "One run each with `-log_view`; the `direct` rows by the direct Schur step (h 0.04, 0.025 and the patch by the program's "
+              "default of their time, h 0.015 forced), the `CG + GAMG` rows by `-newton_iterative 1`. Per Newton iteration: `contact` the contact's Hessian and its energy and gradient "
               "evaluations (line search included), `linear` the step's own set-up and solve (direct: the capacitance "
               "factorisation and the substitutions; CG: GAMG's set-up and the CG solve); `factor` the direct step's one-off "
               "condensation of the stiffness.", "",
-              "| scene | dofs | slave faces | nodes in contact | step | Newton its | contact / step [s] | linear / step [s] | contact / linear | factor (once) [s] | wall [s] | user [s] | peak MB | a vs Hertz | p_max vs p0 | load |",
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+              "`ranks` the MPI ranks (the times then each event's largest over the ranks, `peak MB` the largest process's); "
+              "`CG its` the CG iterations over the Newton steps; `Hessian max/min` Mortar3dHessian's time on its slowest rank over "
+              "its fastest's. The `CG + GAMG` rows are `-newton_iterative 1` (GAMG by nodes on one level, as with contact).", "",
+              "| scene | ranks | dofs | slave faces | nodes in contact | step | Newton its | energy evaluations | CG its | contact / step [s] | linear / step [s] | contact / linear | contact / step / slave face [ms] | factor (once) [s] | Hessian max/min | wall [s] | user [s] | peak MB | a vs Hertz | p_max vs p0 | load |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for name, r in co.items():
             c, l, fac = per_step(r)
-            L.append(f"| {name} | {r['dofs']:,} | {r['slave_faces']} | {r['nodes_in_contact']} | {r['step']} | {r['iterations']} | "
-                     f"{c:.3f} | {l:.3f} | {c / l if l else float('nan'):.2f} | {fmt(fac if fac else None, '{:.2f}')} | {r['wall']:.1f} | "
+            hr = r["events"].get("Mortar3dHessian", [0, 0, None])
+            L.append(f"| {name} | {r.get('ranks', 1)} | {r['dofs']:,} | {r['slave_faces']} | {r['nodes_in_contact']} | {r['step']} | {r['iterations']} | "
+                     f"{r['evaluations']} | {fmt(r.get('cg'), '{:d}')} | {c:.3f} | {l:.3f} | {c / l if l else float('nan'):.2f} | {1e3 * c / r['slave_faces']:.2f} | {fmt(fac if fac else None, '{:.2f}')} | "
+                     f"{fmt(hr[2] if len(hr) > 2 else None, '{:.2f}')} | {r['wall']:.1f} | "
                      f"{fmt(r.get('user'), '{:.2f}')} | {r['rss_mb']:.0f} | {fmt(r.get('a_error'), '{:+.2%}')} | {fmt(r.get('pmax_error'), '{:+.2%}')} | "
                      f"{r['load']:.1f} |")
+        cg = {k: r for k, r in co.items() if r["step"] == "CG + GAMG"}
+        if cg:
+            L += ["", "The same runs' unit costs (the CG + GAMG rows): the contact's per evaluation and slave face, the linear "
+                  "step's per Newton step and dof, and the share of the machine each run had (`wall / user`, the whole process's wall time over its CPU time a rank: "
+                  "roughly the load's inflation of every event time, by which to divide a time to compare rows).", "",
+                  "| scene | ranks | energy evaluation / slave face [ms] | Hessian / slave face [ms] | linear / step / dof [us] | "
+                  "CG its / step | peak KB / dof | wall / user |",
+                  "|---|---|---|---|---|---|---|---|"]
+            for name, r in cg.items():
+                e, F = r["events"], r["slave_faces"]
+                eg, hs = e["Mortar3dEnergyGrad"], e["Mortar3dHessian"]
+                _, lin, _ = per_step(r)
+                L.append(f"| {name} | {r.get('ranks', 1)} | {1e3 * eg[1] / eg[0] / F:.3f} | {1e3 * hs[1] / hs[0] / F:.3f} | "
+                         f"{1e6 * lin / r['dofs']:.1f} | {r['cg'] / max(r['iterations'], 1):.1f} | {r['rss_mb'] * 1024 / r['dofs']:.1f} | "
+                         f"{r['wall'] * r.get('ranks', 1) / r['user']:.2f} |")
     notes = os.path.join(out, "NOTES.md")
     if os.path.exists(notes):
         L += ["", open(notes).read()]
@@ -347,6 +409,9 @@ def main():
     ap.add_argument("--lmvm-scenes", help="with --lmvm: these scenes only (names separated by ;)")
     ap.add_argument("--cost", action="store_true")
     ap.add_argument("--cost-hmin", type=float, default=0.01)
+    ap.add_argument("--cost-cg", metavar="H,H,...", help="the ball at these h by CG + GAMG (-newton_iterative 1), with -log_view")
+    ap.add_argument("--cost-ranks", type=int, default=1, help="with --cost-cg: MPI ranks")
+    ap.add_argument("--force", action="store_true", help="with --cost-cg: run again where results.json has the case")
     ap.add_argument("--table", action="store_true")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -364,6 +429,9 @@ def main():
         lmvm(results, a.lmvm, a.mesh_dir, a.lmvm_scenes.split(";") if a.lmvm_scenes else None, save)
     if a.cost:
         for _ in cost(results, a.cost_hmin, a.mesh_dir):
+            save()
+    if a.cost_cg:
+        for _ in cost_cg(results, [float(h) for h in a.cost_cg.split(",")], a.cost_ranks, a.mesh_dir, a.force):
             save()
     table(a.out)
 
