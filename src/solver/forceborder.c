@@ -54,6 +54,7 @@
    With mu = 0, the step is Newton's. */
 #include "forceborder.h"
 #include "substructure.h"
+#include "forcereach.h"
 #include <petscblaslapack.h>
 #include <petsc/private/petscimpl.h> /* PetscObjectStateGet */
 
@@ -361,6 +362,14 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
     PetscCall(PetscObjectReference((PetscObject)p->fc.B[k]));
     c->B[k]   = p->fc.B[k];
     c->cap[k] = p->cfg->control.step * p->fc.c[k].L;
+  }
+  for (PetscInt k = 0; k < c->m; ++k) { /* 3D: within the contact's reach (forcereach.c) */
+    PetscReal reach;
+    PetscCall(ForceControlContactReach(p, k, &reach));
+    if (reach > 0.0 && reach < c->cap[k]) {
+      PetscCall(PetscInfo(NULL, "force control: control %" PetscInt_FMT "'s step held to the contact's reach %g (not %g)\n", k, (double)reach, (double)c->cap[k]));
+      c->cap[k] = reach;
+    }
   }
   c->solves = p->cfg->control.borderSolves;
   c->D = p->fc.D;
