@@ -19,11 +19,14 @@
        reach_k = max over the pairs of body k (d_own + d_partner),
 
    d the depth of a surface along the control's component (the extent of
-   its reference nodes' coordinate c), and at least 1e-2 of the body's size
-   (a flat face pressed normal to itself has no depth). Within it the
-   surface stays in its partner's range and the line search finds where the
-   contact takes the force (the energy falls like -F U until it does).
-   2D keeps its cap (its scenes' surfaces are whole sides). */
+   its reference nodes' coordinate c), and at least 1e-2 of the body's size.
+   Within it the surface stays in its partner's range and the line search
+   finds where the contact takes the force (the energy falls like -F U
+   until it does). A body starting apart from its partner closes the gap by
+   steps of at most the reach. Two faces flat across the control (both
+   depths 0) keep the cap alone: they touch along a face, which has its
+   normal stiffness from the first contact. 2D keeps its cap (its scenes'
+   surfaces are whole sides). */
 #include "forcereach.h"
 #include "bodyfaces.h"
 #include "contactspec.h"
