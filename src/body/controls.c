@@ -107,7 +107,8 @@ PetscReal BodyGetControlReaction_Elastic(Body b, PetscInt bc, PetscInt c)
 
 const char *BodyGetControlComponent_Elastic(Body b, PetscInt bc, PetscInt c)
 {
-  return b->bc[bc].comps[c] ? "y" : "x";
+  static const char *const axis[3] = {"x", "y", "z"}; /* the condition's component c is axis comps[c] (3D: z too) */
+  return axis[b->bc[bc].comps[c]];
 }
 
 PetscErrorCode BodyControlColumn(Body b, PetscInt bc, PetscInt c, Vec Xl, Vec *E, Vec y, PetscReal R[][3])

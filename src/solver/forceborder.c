@@ -41,7 +41,8 @@
    regularised (S + mu diag(D)) dU = r_U, mu >= 0 the least (from 0, 1e-12,
    then times 4) for which the matrix is positive definite (scaled pivots
    above 1e-9) and every |dU_k| is at most its cap, -force_control_step
-   times the size of control k's body (0.3 by default: measured with
+   times the size of control k's body (in 3D at most the contact's reach
+   along it, forcereach.c; 0.3 by default: measured with
    scripts/force_control_table.py on 1 rank, Newton iterations at 0.003,
    0.01, 0.1, 0.3, 1: hertz 19, 15, 11, 11, 12; sphere 9, 11, 11, 10, 10;
    sphere pushed by 0.05 16, 12, 14, 13, 13; softdisc at hc = 0.0007 8, 10,
@@ -54,6 +55,7 @@
    With mu = 0, the step is Newton's. */
 #include "forceborder.h"
 #include "substructure.h"
+#include "forcereach.h"
 #include <petscblaslapack.h>
 #include <petsc/private/petscimpl.h> /* PetscObjectStateGet */
 
@@ -361,6 +363,14 @@ PetscErrorCode ForceBorderMatCreate(Problem p, Mat Hin, KSP kin, Mat *M)
     PetscCall(PetscObjectReference((PetscObject)p->fc.B[k]));
     c->B[k]   = p->fc.B[k];
     c->cap[k] = p->cfg->control.step * p->fc.c[k].L;
+  }
+  for (PetscInt k = 0; k < c->m; ++k) { /* 3D: within the contact's reach (forcereach.c) */
+    PetscReal reach;
+    PetscCall(ForceControlContactReach(p, k, &reach));
+    if (reach > 0.0 && reach < c->cap[k]) {
+      PetscCall(PetscInfo(NULL, "force control: control %" PetscInt_FMT "'s step held to the contact's reach %g (not %g)\n", k, (double)reach, (double)c->cap[k]));
+      c->cap[k] = reach;
+    }
   }
   c->solves = p->cfg->control.borderSolves;
   c->D = p->fc.D;
