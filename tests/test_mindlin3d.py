@@ -1,0 +1,109 @@
+"""Cattaneo-Mindlin for two identical spheres (issue 49's verification of the
+3D pair's friction, src/contact/friction3d.c on src/contact/mortar3d.c).
+
+draft"""
+import math
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import figure, run_contact
+
+MU = 0.3
+G3 = "tests/meshes/friction3d"
+SLAVE = "contact/c/upper_cap"
+GRADE = "rc=0.11,zs=4,hm=0.04,rm=0.2"
+PRESS = 0.02                      # the upper top's approach to the lower's: a/R about 0.1
+DX = (1.25e-3, 3.3e-3, 5.9e-3)   # the upper top's x at stages 2-4: Q/(mu P) about 0.2, 0.5, 0.8
+DX0 = (9.7e-4, 2.6e-3, 4.6e-3)   # the same at nu = 0
+
+
+def scene_args(h, nu=0.3, dx=DX, press=PRESS, grade=GRADE, extra=()):
+    """Two half balls R = 1 cut at z = +-0.5 (tests/meshes/friction3d/halfball.geo,
+    the lower its mirror image, dir=-1), E 1000, nu, y = 0 on rollers; the lower's
+    top held, the upper's pressed by press, then moved along x by dx in three stages."""
+    top = ",".join(f"{x!r},{-press!r}" for x in (0.0,) + tuple(dx))
+    args = []
+    for b, d in (("upper", 1), ("lower", -1)):
+        args += [f"-{b}_geo", f"{G3}/halfball.geo", f"-{b}_geo_params", f"zc=0.05,dir={d},{grade}",
+                 f"-{b}_mesh_size", h, f"-{b}_E", 1000, f"-{b}_nu", nu,
+                 f"-{b}_bc", "top,symy", f"-{b}_bc_symy_components", "y"]
+    args += ["-bodies", "upper,lower", "-upper_bc_top_components", "x,z", "-upper_bc_top_values", top,
+             "-lower_bc_top_components", "x,y,z",
+             "-contact_pairs", "c", "-contact_c_surfaces", "upper:cap,lower:cap", "-contact_c_friction", MU,
+             "-load_stages", 4, "-load_steps", 1, "-contact_friction_lag_rtol", "1e-6"]
+    return args + list(extra)
+
+
+def stage_sets(res):
+    """Per stage 1..4: reference coordinates, the final pressure and weight,
+    that stage's shear (n x 3, the lower's traction on the upper) and stick,
+    and its P and Q (the upper top's reactions, doubled: half model)."""
+    out = []
+    with h5py.File(res.output_path, "r") as f:
+        g = f[SLAVE]
+        X, p, A = g["node_X"][:], g["node_pressure"][:], g["node_weight"][:]
+        n = len(res.summary["load_stages"])
+        for k, st in enumerate(res.summary["load_stages"], 1):
+            h = f[f"stages/{k}/{SLAVE}"] if k < n else g
+            R = st["reactions"]["upper:top"]
+            out.append(dict(X=X, p=p, A=A, shear=h["node_shear"][:], stick=h["node_stick"][:],
+                            P=2 * abs(R[2]), Q=2 * abs(R[0])))
+    return out
+
+
+def contact_radius(s):
+    """a from the nodal pressures' second moment about the first contact point
+    (sum p A r^2 / sum p A = 2 a^2 / 5 for Hertz's profile)."""
+    r2 = s["X"][:, 0] ** 2 + s["X"][:, 1] ** 2
+    return math.sqrt(2.5 * np.sum(s["p"] * s["A"] * r2) / np.sum(s["p"] * s["A"]))
+
+
+def stick_radius(s):
+    """c: the radius of the half disc of the stuck nodes' area."""
+    return math.sqrt(2 * np.sum(s["A"][s["stick"] > 0.5]) / math.pi)
+
+
+def rings(s, a, p0, edges=(0.25, 0.45, 0.65, 0.85)):
+    """The shear's radial component (outward on the upper ball) over mu p0,
+    its mean over rings of the slave's nodes between edges (r/a), at the
+    rings' middles 0.35, 0.55, 0.75."""
+    r = np.hypot(s["X"][:, 0], s["X"][:, 1])
+    tr = (s["shear"][:, 0] * s["X"][:, 0] + s["shear"][:, 1] * s["X"][:, 1]) / np.maximum(r, 1e-300)
+    return [float(np.mean(tr[(r >= lo * a) & (r < hi * a)]) / (MU * p0)) for lo, hi in zip(edges, edges[1:])]
+
+
+def mindlin_figures(res):
+    """Stage 1's (normal) radial shear rings and per tangential stage k = 2, 3, 4:
+    Q/(mu P), c/a from Mindlin's (1 - Q/(mu P))^(1/3), the shear along Q
+    against Mindlin's mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)) in relative
+    L2 over the slave's nodes (weights A_j; his p0, a, c from the computed a
+    and the reactions), the normal stage's x shear against it (locked), the
+    traction's component across Q relative to the whole in L2, and Coulomb:
+    the largest (|t| - mu p)/(mu p_max) and ||t| - mu p|/(mu p_max) where a
+    node in contact slips."""
+    sets = stage_sets(res)
+    a = contact_radius(sets[-1])
+    out = dict(a=a, rings=rings(sets[0], a, 3 * sets[0]["P"] / (2 * math.pi * a * a)))
+    q1 = -sets[0]["shear"][:, 0]
+    for k in range(2, len(sets) + 1):
+        s = sets[k - 1]
+        rho = s["Q"] / (MU * s["P"])
+        r = np.hypot(s["X"][:, 0], s["X"][:, 1])
+        p0 = 3 * s["P"] / (2 * math.pi * a * a)
+        cm = a * (1 - rho) ** (1 / 3)
+        qm = MU * p0 / a * (np.sqrt(np.maximum(a * a - r * r, 0)) - np.sqrt(np.maximum(cm * cm - r * r, 0)))
+        q = -s["shear"][:, 0]  # the upper moves along +x: the lower's traction on it is along -x
+        norm = np.sum(s["A"] * qm ** 2)
+        t = np.linalg.norm(s["shear"], axis=1)
+        bmax = MU * s["p"].max()
+        slipping = (s["p"] > 0) & (s["stick"] < 0.5)
+        out[k] = dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
+                      l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
+                      locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
+                      across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)),
+                      excess=float(np.max(t - MU * s["p"]) / bmax),
+                      slip_error=float(np.max(np.abs(t[slipping] - MU * s["p"][slipping])) / bmax) if slipping.any() else 0.0,
+                      slipping=int(slipping.sum()), stuck=int((s["stick"] > 0.5).sum()))
+    return out
