@@ -86,7 +86,7 @@ def mindlin_figures(res):
     sets = stage_sets(res)
     a = contact_radius(sets[-1])
     out = dict(a=a, rings=rings(sets[0], a, 3 * sets[0]["P"] / (2 * math.pi * a * a)))
-    q1 = -sets[0]["shear"][:, 0]
+    q1, y1 = -sets[0]["shear"][:, 0], sets[0]["shear"][:, 1]
     for k in range(2, len(sets) + 1):
         s = sets[k - 1]
         rho = s["Q"] / (MU * s["P"])
@@ -97,13 +97,108 @@ def mindlin_figures(res):
         q = -s["shear"][:, 0]  # the upper moves along +x: the lower's traction on it is along -x
         norm = np.sum(s["A"] * qm ** 2)
         t = np.linalg.norm(s["shear"], axis=1)
-        bmax = MU * s["p"].max()
-        slipping = (s["p"] > 0) & (s["stick"] < 0.5)
         out[k] = dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
                       l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
                       locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
+                      less=math.sqrt(np.sum(s["A"] * (q - q1 - qm) ** 2) / norm),
                       across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)),
-                      excess=float(np.max(t - MU * s["p"]) / bmax),
-                      slip_error=float(np.max(np.abs(t[slipping] - MU * s["p"][slipping])) / bmax) if slipping.any() else 0.0,
-                      slipping=int(slipping.sum()), stuck=int((s["stick"] > 0.5).sum()))
+                      across_less=math.sqrt(np.sum(s["A"] * (s["shear"][:, 1] - y1) ** 2) / np.sum(s["A"] * t ** 2)))
+    # Coulomb at the last stage's end, against its pressure (the stages' own are not written)
+    s = sets[-1]
+    t, bmax = np.linalg.norm(s["shear"], axis=1), MU * s["p"].max()
+    slipping = (s["p"] > 0) & (s["stick"] < 0.5)
+    out["coulomb"] = dict(excess=float(np.max(t - MU * s["p"]) / bmax),
+                          slip_error=float(np.max(np.abs(t[slipping] - MU * s["p"][slipping])) / bmax),
+                          slipping=int(slipping.sum()), stuck=int((s["stick"] > 0.5).sum()),
+                          open_shear=float(np.max(t[s["p"] == 0], initial=0.0)))
     return out
+
+
+# The issue's bounds: c/a within 2 % of Mindlin's, his shear within 10 % (L2).
+C_BOUND, L2_BOUND = 0.02, 0.10
+COARSE_H, FINE_H = 0.04, 0.01
+# figures measured (mindlin_figures) per tangential stage; the tests' bounds
+# 3 times these, never beyond the issue's (xfail strict where a figure is)
+COARSE = {2: dict(c_err=0.0231, l2=0.347), 3: dict(c_err=0.0216, l2=0.177), 4: dict(c_err=-0.0171, l2=0.112, across=0.049)}
+
+
+def within(figs, k, key, bound):
+    """Stage k's case, xfail (strict) where the measured figure is beyond the issue's bound."""
+    if abs(figs[k][key]) <= bound:
+        return k
+    return pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=f"{key} {figs[k][key]:+.3f} beyond the issue's {bound:g} at a/h {'2.7' if figs is COARSE else '10.6'}"))
+
+
+@pytest.fixture(scope="module")
+def coarse(tmp_path_factory):
+    return run_contact(scene_args(COARSE_H), tmp_path_factory.mktemp("mindlin3d"), timeout=3600)
+
+
+def test_normal_stage(coarse):
+    """The normal stage (P alone) locks no shear in: the mean over rings of
+    the slave's nodes of the shear's radial component (outward on the upper
+    ball), over mu p0, at r/a = 0.35, 0.55, 0.75: `ring_1` = 0.0044,
+    `ring_2` = 0.0059, `ring_3` = -0.018 at a/h = 2.7 (h = 0.04), bound
+    0.054 (3 times the largest). Read in the master's plane (as before
+    friction3d.c's Friction3dClosingNormal) the same scene locked in 0.060,
+    0.045, -0.167, and the ball on the flat block (tests/test_shear3d.py)
+    0.054, 0.066, 0.075 at the same a/h."""
+    f = mindlin_figures(coarse)
+    rings = [figure(f"ring_{i}", v) for i, v in enumerate(f["rings"], 1)]
+    assert max(abs(v) for v in rings) <= 0.054
+
+
+@pytest.mark.parametrize("k", [within(COARSE, k, "c_err", C_BOUND) for k in (2, 3, 4)])
+def test_stick_radius(coarse, k):
+    """At a/h = 2.7, stage k's c/a from Mindlin's (1 - Q/(mu P))^(1/3) (c
+    the half disc of the stuck nodes' area, a the pressures' second moment):
+    `c_over_a_error` = -0.0171 to +0.0231 (+0.0231, +0.0216, -0.0171 at
+    `ratio` = 0.205, 0.497, 0.798), bound the issue's 2 % (3 times the figure
+    where tighter): met at 0.8, not at 0.2 and 0.5 on this mesh (xfail,
+    strict; a/h = 10.6: test_fine_stick_radius)."""
+    f = mindlin_figures(coarse)
+    figure("ratio", f[k]["ratio"])
+    err = figure("c_over_a_error", f[k]["c_err"])
+    assert abs(err) <= min(C_BOUND, 3 * abs(COARSE[k]["c_err"]))
+
+
+@pytest.mark.parametrize("k", [within(COARSE, k, "l2", L2_BOUND) for k in (2, 3, 4)])
+def test_shear(coarse, k):
+    """At a/h = 2.7, stage k's shear along Q against Mindlin's mu p0/a
+    (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)), relative L2 over the slave's nodes
+    (weights A_j; his p0, a, c from the computed a and the top's reactions):
+    `l2` = 0.112 to 0.347 (0.347, 0.177, 0.112 at Q/(mu P) = 0.2, 0.5, 0.8;
+    the ball on the block gave 0.43, 0.21, 0.13 at this a/h), not within
+    the issue's 10 % on this mesh (xfail, strict; a/h = 10.6:
+    test_fine_shear)."""
+    f = mindlin_figures(coarse)
+    l2 = figure("l2", f[k]["l2"])
+    assert l2 <= min(L2_BOUND, 3 * COARSE[k]["l2"])
+
+
+@pytest.mark.roundoff
+def test_coulomb(coarse):
+    """At the last stage's end (Q/(mu P) = 0.8), against the written
+    pressure p: |t_j| <= mu p_j at every node and |t_j| = mu p_j where a
+    node in contact slips, to round-off: `excess` = 2.4e-16, the largest
+    (|t| - mu p) / (mu p_max), `slip_error` = 2.4e-16, the largest ||t| - mu
+    p| / (mu p_max) over the `slipping` = 52 nodes (25 stick) (bounds 1e-12;
+    at least 10 slip and 10 stick); no shear where p = 0."""
+    c = mindlin_figures(coarse)["coulomb"]
+    figure("slipping", c["slipping"])
+    assert c["slipping"] >= 10 and c["stuck"] >= 10
+    assert figure("excess", c["excess"]) <= 1e-12
+    assert figure("slip_error", c["slip_error"]) <= 1e-12
+    assert c["open_shear"] == 0
+
+
+def test_across(coarse):
+    """The traction's component across Q (y), relative L2 to the whole
+    traction's, at Q/(mu P) = 0.8: `across` = 0.049 at a/h = 2.7 (bound 3
+    times); less the normal stage's y shear `across_less` = 0.058. At 0.2 and
+    0.5 it is 0.21 and 0.088, 0.067 and 0.065 less the normal stage's: the
+    mesh's share of the normal stage's shear, small against mu p but not
+    against the small Q (docs/formulations.md)."""
+    f = mindlin_figures(coarse)
+    figure("across_less", f[4]["across_less"])
+    assert figure("across", f[4]["across"]) <= 3 * COARSE[4]["across"]

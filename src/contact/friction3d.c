@@ -29,15 +29,16 @@
      e_j = T_j^T d_j(x) - R_j^T (d_j(xa) - s_j)     (2 components)
 
    with s_j the elastic slip of the accepted state (a vector of its plane).
-   This is 2D's reading (friction.c) where the master is flat at rest: the
+   This is 2D's reading (friction.c): where the master is flat at rest the
    gap a ball closes from rest on a flat closes along the flat's normal, so
    the accepted offset is read in the master's plane as it was (a normal
    turned with the indented surface, r/2R on similar bodies, would read the
    closing r^2/2R as a slip of r^3/4R^2: 2.5e-4 at r = a = 0.1 R, 8 times
    the stick range mu p / k_t of a first try, whose normal stage slipped
-   at 7 of 65 nodes, its radial shear 68 % of the shear in L2). 2D's
-   weighting of the two tangents by the curvatures at rest, for a slave flat
-   against a curved master, is not carried over. A node in contact at the
+   at 7 of 65 nodes, its radial shear 68 % of the shear in L2); where the
+   master is curved, in the plane normal to the direction the gaps close in,
+   the two surfaces' normals weighted by their curvatures at rest
+   (Friction3dClosingNormal, 2D's weighting of the tangents). A node in contact at the
    accepted state has no gap to misread: its offset is its elastic slip, the
    same in either plane to the square of their angle. Within one
    fixed-point iterate the points, eta*, C_j, T_j and R_j are those of the
