@@ -188,7 +188,9 @@ static void Friction3dNodalNormals(const ContactSurface3d *S, const PetscReal x[
    x_1.x_2, G = x_2.x_2, e = n.x_11, f = n.x_12, g = n.x_22 and
    H = (e G - 2 f F + g E) / (2 (E G - F^2)), the mean of the principal
    curvatures: 1/R on a sphere of radius R, 0 on a plane whose mid-edge nodes
-   are the edges' midpoints. */
+   are the edges' midpoints (a face's |H| below 1e-10 of 1/hmax, the round-off
+   of a plane's coordinates, counted 0: a flat master reads as before, to the
+   bit). */
 static PetscErrorCode Friction3dCurvatures(const ContactSurface3d *S, const PetscReal x[], PetscReal kap[])
 {
   PetscInt *cnt;
@@ -212,7 +214,8 @@ static PetscErrorCode Friction3dCurvatures(const ContactSurface3d *S, const Pets
       if (det > 0) {
         const PetscReal e = n[0] * H[0] + n[1] * H[1] + n[2] * H[2], fm = n[0] * H[3] + n[1] * H[4] + n[2] * H[5];
         const PetscReal g = n[0] * H[6] + n[1] * H[7] + n[2] * H[8];
-        kap[v] += PetscAbsReal((e * G - 2.0 * fm * F + g * E) / (2.0 * det));
+        const PetscReal H2 = PetscAbsReal((e * G - 2.0 * fm * F + g * E) / (2.0 * det));
+        kap[v] += H2 * S->hmax > 1e-10 ? H2 : 0.0;
         cnt[v]++;
       }
     }
