@@ -1,7 +1,25 @@
-"""Cattaneo-Mindlin for two identical spheres (issue 49's verification of the
-3D pair's friction, src/contact/friction3d.c on src/contact/mortar3d.c).
+"""Cattaneo-Mindlin for two identical spheres: the 3D pair's friction
+(src/contact/friction3d.c on src/contact/mortar3d.c) where Mindlin's
+assumptions hold (docs/formulations.md, "Friction between 3D bodies").
 
-draft"""
+The scene: two half balls R = 1 (tests/meshes/friction3d/halfball.geo, y >=
+0, cut at z = +-0.5, the lower the upper's mirror image about the contact
+plane z = 0, dir=-1: 1/R* = 2/R), E 1000, both nu 0.3 (or both 0), mu 0.3,
+the planes y = 0 on rollers, parallel to Q. Elastically similar and
+mirror-symmetric, the normal problem locks no shear in (equal radial
+displacements: Mindlin's similar spheres). The lower's top is held, the
+upper's pressed by 0.02 (a/R = 0.105 to 0.107) in a first stage, then moved
+along x in three stages of one increment each to Q/(mu P) about 0.2, 0.5
+and 0.8, Q and P the upper top's reactions (doubled: half model). Both
+meshes graded as tests/test_shear3d.py's (rc = 0.11, zs = 4, hm = 0.04,
+rm = 0.2) and meshed apart (not mirror images node for node).
+
+Mindlin: a disc of radius c = a (1 - Q/(mu P))^(1/3) sticks, the shear
+along Q is mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)) (the second term
+within c), p0 = 3 P/(2 pi a^2), exactly parallel to Q at nu = 0 (Johnson,
+Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 1 min
+of one core); make stress: a/h = 5.3 (h = 0.02, 20,739 dofs) at nu 0.3 and
+0, and h = 0.04 at nu = 0."""
 import math
 
 import h5py
@@ -122,11 +140,11 @@ COARSE_H, FINE_H = 0.04, 0.01
 COARSE = {2: dict(c_err=0.0231, l2=0.347), 3: dict(c_err=0.0216, l2=0.177), 4: dict(c_err=-0.0171, l2=0.112, across=0.049)}
 
 
-def within(figs, k, key, bound):
+def within(figs, k, key, bound, ah="2.7"):
     """Stage k's case, xfail (strict) where the measured figure is beyond the issue's bound."""
     if abs(figs[k][key]) <= bound:
         return k
-    return pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=f"{key} {figs[k][key]:+.3f} beyond the issue's {bound:g} at a/h {'2.7' if figs is COARSE else '10.6'}"))
+    return pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=f"{key} {figs[k][key]:+.3f} beyond the issue's {bound:g} at a/h {ah}"))
 
 
 @pytest.fixture(scope="module")
@@ -209,7 +227,8 @@ def test_across(coarse):
 # the mesh at nu = 0 (Mindlin's traction parallel to Q exact), and at nu =
 # 0.3 stays above it by what is physics (Johnson, Contact Mechanics 7.2).
 MEDIUM_H = 0.02
-MEDIUM = {}
+MEDIUM = {2: dict(c_err=0.0066, l2=0.309), 3: dict(c_err=0.0019, l2=0.133), 4: dict(c_err=0.0023, l2=0.085, across=0.040)}
+MEDIUM0 = {2: dict(across=0.174), 3: dict(across=0.048), 4: dict(across=0.014)}
 
 
 def run_scene(tmp_path_factory, h, nu):
@@ -229,3 +248,82 @@ def medium0(tmp_path_factory):
 @pytest.fixture(scope="module")
 def medium(tmp_path_factory):
     return run_scene(tmp_path_factory, MEDIUM_H, 0.3)
+
+
+@pytest.mark.stress
+def test_medium_normal_stage(medium):
+    """At a/h = 5.3 (h = 0.02, 20,739 dofs), the normal stage's radial shear
+    as test_normal_stage measures it: `ring_1` = -0.0010, `ring_2` = 0.0022,
+    `ring_3` = 0.0041 of mu p0 (bound 0.0123, 3 times the largest; the ball
+    on the block: 0.049, 0.064, 0.072 at this a/h). Its rms over the nodes
+    within r < a/2 falls with the mesh (0.030 mu p0 at a/h 2.7, 0.008 here);
+    within 0.8 a < r < a it does not (0.037 and 0.065): see
+    docs/formulations.md."""
+    f = mindlin_figures(medium)
+    rings = [figure(f"ring_{i}", v) for i, v in enumerate(f["rings"], 1)]
+    assert max(abs(v) for v in rings) <= 0.0123
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MEDIUM, k, "c_err", C_BOUND, "5.3") for k in (2, 3, 4)])
+def test_medium_stick_radius(medium, k):
+    """At a/h = 5.3 (h = 0.02), stage k's c/a from Mindlin's:
+    `c_over_a_error` = +0.0019 to +0.0066 (+0.0066, +0.0019, +0.0023 at
+    `ratio` = 0.203, 0.500, 0.801), bound the issue's 2 % or 3 times the
+    figure where tighter."""
+    f = mindlin_figures(medium)
+    figure("ratio", f[k]["ratio"])
+    err = figure("c_over_a_error", f[k]["c_err"])
+    assert abs(err) <= min(C_BOUND, 3 * abs(MEDIUM[k]["c_err"]))
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MEDIUM, k, "l2", L2_BOUND, "5.3") for k in (2, 3, 4)])
+def test_medium_shear(medium, k):
+    """At a/h = 5.3 (h = 0.02), stage k's shear along Q against Mindlin's,
+    relative L2 (as test_shear): `l2` = 0.085 to 0.309 (0.309, 0.133, 0.085
+    at Q/(mu P) = 0.2, 0.5, 0.8; the ball on the block 0.32, 0.15, 0.093 at
+    this a/h), the issue's 10 % met at 0.8, not at 0.2 and 0.5 (xfail,
+    strict): at 0.2 Mindlin's shear beyond its peak lies in the annulus c <
+    r < a, 0.07 a = 0.4 h wide here, where the normal stage's edge shear
+    (test_medium_normal_stage) is most of it. The normal stage's x shear
+    against Mindlin's is `locked` = 0.053 to 0.189."""
+    f = mindlin_figures(medium)
+    figure("locked", f[k]["locked"])
+    l2 = figure("l2", f[k]["l2"])
+    assert l2 <= min(L2_BOUND, 3 * MEDIUM[k]["l2"])
+
+
+@pytest.mark.stress
+@pytest.mark.roundoff
+def test_medium_coulomb(medium):
+    """At a/h = 5.3, Coulomb at the last stage's end as test_coulomb:
+    `excess` = 2.4e-16, `slip_error` = 3.2e-16 over `slipping` = 147 nodes
+    (92 stick) (bounds 1e-12)."""
+    c = mindlin_figures(medium)["coulomb"]
+    figure("slipping", c["slipping"])
+    assert c["slipping"] >= 10 and c["stuck"] >= 10
+    assert figure("excess", c["excess"]) <= 1e-12
+    assert figure("slip_error", c["slip_error"]) <= 1e-12
+    assert c["open_shear"] == 0
+
+
+@pytest.mark.stress
+def test_across_nu(coarse0, medium0, medium):
+    """The traction's component across Q (relative L2, as test_across) at
+    Q/(mu P) = 0.5 and 0.8. At nu = 0, where Mindlin's traction parallel to
+    Q is exact, it falls with the mesh: `across0_coarse_3` = 0.092,
+    `across0_coarse_4` = 0.033 at a/h 2.7, `across0_3` = 0.048, `across0_4`
+    = 0.014 at a/h 5.3 (bounds: below the coarse figure, and 3 times the
+    figure). At nu = 0.3 `across_3` = 0.061, `across_4` = 0.040 at a/h 5.3
+    (0.088, 0.049 at 2.7): at 0.8 about 0.035 of it is not the mesh's but
+    the slip's own direction off Q's where nu > 0 (Johnson, Contact
+    Mechanics 7.2), bound 3 times. At 0.2 the normal stage's edge shear
+    (0.17 at both nu at a/h 5.3) is most of it."""
+    c0, m0, m = mindlin_figures(coarse0), mindlin_figures(medium0), mindlin_figures(medium)
+    for k in (3, 4):
+        cc = figure(f"across0_coarse_{k}", c0[k]["across"])
+        a0 = figure(f"across0_{k}", m0[k]["across"])
+        assert a0 < cc and a0 <= 3 * MEDIUM0[k]["across"]
+        figure(f"across_{k}", m[k]["across"])
+    assert m[4]["across"] <= 3 * MEDIUM[4]["across"]
