@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 from conftest import figure, run_contact
+from test_friction3d import contact_radius, stick_radius
 
 MU = 0.3
 G3 = "tests/meshes/friction3d"
@@ -69,18 +70,6 @@ def stage_sets(res):
             out.append(dict(X=X, p=p, A=A, shear=h["node_shear"][:], stick=h["node_stick"][:],
                             P=2 * abs(R[2]), Q=2 * abs(R[0])))
     return out
-
-
-def contact_radius(s):
-    """a from the nodal pressures' second moment about the first contact point
-    (sum p A r^2 / sum p A = 2 a^2 / 5 for Hertz's profile)."""
-    r2 = s["X"][:, 0] ** 2 + s["X"][:, 1] ** 2
-    return math.sqrt(2.5 * np.sum(s["p"] * s["A"] * r2) / np.sum(s["p"] * s["A"]))
-
-
-def stick_radius(s):
-    """c: the radius of the half disc of the stuck nodes' area."""
-    return math.sqrt(2 * np.sum(s["A"][s["stick"] > 0.5]) / math.pi)
 
 
 def rings(s, a, p0, edges=(0.25, 0.45, 0.65, 0.85)):
