@@ -21,12 +21,13 @@ Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 1 min
 of one core); make stress: a/h = 5.3 (h = 0.02, 20,739 dofs) at nu 0.3 and
 0, and h = 0.04 at nu = 0."""
 import math
+import subprocess
 
 import h5py
 import numpy as np
 import pytest
 
-from conftest import figure, run_contact
+from conftest import ROOT, figure, run_contact
 from test_friction3d import contact_radius, stick_radius
 
 MU = 0.3
@@ -38,21 +39,51 @@ DX = (1.25e-3, 3.3e-3, 5.9e-3)   # the upper top's x at stages 2-4: Q/(mu P) abo
 DX0 = (9.7e-4, 2.6e-3, 4.6e-3)   # the same at nu = 0
 
 
-def scene_args(h, nu=0.3, dx=DX, press=PRESS, grade=GRADE, extra=()):
+def scene_args(h, nu=0.3, dx=DX, press=PRESS, grade=GRADE, meshes=None, extra=()):
     """Two half balls R = 1 cut at z = +-0.5 (tests/meshes/friction3d/halfball.geo,
-    the lower its mirror image, dir=-1), E 1000, nu, y = 0 on rollers; the lower's
-    top held, the upper's pressed by press, then moved along x by dx in three stages."""
+    the lower its mirror image, dir=-1; or the ready-made meshes (upper, lower)),
+    E 1000, nu, y = 0 on rollers; the lower's top held, the upper's pressed by
+    press, then moved along x by dx in three stages."""
     top = ",".join(f"{x!r},{-press!r}" for x in (0.0,) + tuple(dx))
     args = []
-    for b, d in (("upper", 1), ("lower", -1)):
-        args += [f"-{b}_geo", f"{G3}/halfball.geo", f"-{b}_geo_params", f"zc=0.05,dir={d},{grade}",
-                 f"-{b}_mesh_size", h, f"-{b}_E", 1000, f"-{b}_nu", nu,
-                 f"-{b}_bc", "top,symy", f"-{b}_bc_symy_components", "y"]
+    for i, (b, d) in enumerate((("upper", 1), ("lower", -1))):
+        args += ([f"-{b}_geo", f"{G3}/halfball.geo", f"-{b}_geo_params", f"zc=0.05,dir={d},{grade}", f"-{b}_mesh_size", h]
+                 if meshes is None else [f"-{b}_mesh", meshes[i]])
+        args += [f"-{b}_E", 1000, f"-{b}_nu", nu, f"-{b}_bc", "top,symy", f"-{b}_bc_symy_components", "y"]
     args += ["-bodies", "upper,lower", "-upper_bc_top_components", "x,z", "-upper_bc_top_values", top,
              "-lower_bc_top_components", "x,y,z",
              "-contact_pairs", "c", "-contact_c_surfaces", "upper:cap,lower:cap", "-contact_c_friction", MU,
              "-load_stages", 4, "-load_steps", 1, "-contact_friction_lag_rtol", "1e-6"]
     return args + list(extra)
+
+
+# A Tet10 (Triangle6) turned inside out by the reflection z -> -z: Gmsh's
+# order with its nodes 1 and 2 swapped (corners 0 2 1 3, edges 0-2 2-1 1-0
+# 3-0 3-1 3-2; 0 2 1, edges 0-2 2-1 1-0).
+REFLECT = {11: [0, 2, 1, 3, 6, 5, 4, 7, 9, 8], 9: [0, 2, 1, 5, 4, 3]}
+
+
+def mirrored_meshes(tmp_path, h, grade=GRADE):
+    """The upper half ball meshed by Gmsh (halfball.geo) and its reflection
+    about z = 0, node for node: (upper.msh, lower.msh) in tmp_path."""
+    up, lo = tmp_path / "upper.msh", tmp_path / "lower.msh"
+    cmd = ["gmsh", "-3", "-v", "0", "-format", "msh22", str(ROOT / G3 / "halfball.geo"), "-setnumber", "h", str(h),
+           "-setnumber", "zc", "0.05"]
+    for kv in grade.split(","):
+        cmd += ["-setnumber"] + kv.split("=")
+    subprocess.run(cmd + ["-o", str(up)], check=True, capture_output=True)
+    lines = up.read_text().split("\n")
+    i, j = lines.index("$Nodes"), lines.index("$Elements")
+    for k in range(i + 2, i + 2 + int(lines[i + 1])):
+        n, x, y, z = lines[k].split()
+        lines[k] = f"{n} {x} {y} {-float(z)!r}"
+    for k in range(j + 2, j + 2 + int(lines[j + 1])):
+        e = lines[k].split()
+        t, head = int(e[1]), 3 + int(e[2])
+        if t in REFLECT:
+            lines[k] = " ".join(e[:head] + [e[head + q] for q in REFLECT[t]])
+    lo.write_text("\n".join(lines))
+    return up, lo
 
 
 def stage_sets(res):
@@ -153,6 +184,31 @@ def test_normal_stage(coarse):
     f = mindlin_figures(coarse)
     rings = [figure(f"ring_{i}", v) for i, v in enumerate(f["rings"], 1)]
     assert max(abs(v) for v in rings) <= 0.054
+
+
+@pytest.fixture(scope="module")
+def mirrored(tmp_path_factory):
+    d = tmp_path_factory.mktemp("mindlin3d_mirrored")
+    return run_contact(scene_args(COARSE_H, meshes=mirrored_meshes(d, COARSE_H)), d, timeout=3600)
+
+
+def test_mirrored_normal_stage(mirrored):
+    """The lower ball's mesh the upper's reflected node for node
+    (mirrored_meshes), at a/h = 2.7: the normal stage's radial shear (as
+    test_normal_stage) `ring_1` = 0.00033, `ring_2` = 0.00054, `ring_3` =
+    0.00047 of mu p0 (bound 0.0016, 3 times the largest), and its x part
+    against Mindlin's shear at Q/(mu P) = 0.2 `locked` = 0.016 in L2 (bound
+    0.048; 0.175 where the balls are meshed apart): what the normal stage
+    locks in on test_normal_stage's scene is the two meshes' difference, at
+    the contact's edge. The shear along Q against Mindlin's: `l2_2` = 0.280,
+    `l2_3` = 0.178, `l2_4` = 0.109 (0.347, 0.177, 0.112 meshed apart): at
+    a/h = 2.7 the mesh's."""
+    f = mindlin_figures(mirrored)
+    rings = [figure(f"ring_{i}", v) for i, v in enumerate(f["rings"], 1)]
+    for k in (2, 3, 4):
+        figure(f"l2_{k}", f[k]["l2"])
+    assert max(abs(v) for v in rings) <= 0.0016
+    assert figure("locked", f[2]["locked"]) <= 0.048
 
 
 @pytest.mark.parametrize("k", [within(COARSE, k, "c_err", C_BOUND) for k in (2, 3, 4)])
