@@ -372,3 +372,81 @@ def test_across_nu(coarse0, medium0, medium):
         assert a0 < cc and a0 <= 3 * MEDIUM0[k]["across"]
         figure(f"across_{k}", m[k]["across"])
     assert m[4]["across"] <= 3 * MEDIUM[4]["across"]
+
+
+# make stress: the mirrored meshes at a/h = 5.3 (h = 0.02, 20,802 dofs,
+# 7.5 min on the loaded machine), nu 0.3 and 0
+MIRRORED = {2: dict(c_err=0.0120, l2=0.254, across=0.057), 3: dict(c_err=0.0045, l2=0.119, across=0.044),
+            4: dict(c_err=0.0088, l2=0.077, across=0.038)}
+MIRRORED0 = {2: dict(c_err=0.0194, l2=0.234, across=0.040), 3: dict(c_err=0.0194, l2=0.109, across=0.019),
+             4: dict(c_err=0.0038, l2=0.079, across=0.0077)}
+
+
+def run_mirrored(tmp_path_factory, h, nu):
+    d = tmp_path_factory.mktemp(f"mindlin3d_mirrored_{h}_{nu}")
+    return run_contact(scene_args(h, nu=nu, dx=DX if nu else DX0, meshes=mirrored_meshes(d, h)), d, timeout=7200)
+
+
+@pytest.fixture(scope="module")
+def mirrored_medium(tmp_path_factory):
+    return run_mirrored(tmp_path_factory, MEDIUM_H, 0.3)
+
+
+@pytest.fixture(scope="module")
+def mirrored_medium0(tmp_path_factory):
+    return run_mirrored(tmp_path_factory, MEDIUM_H, 0.0)
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MIRRORED, k, "c_err", C_BOUND, "5.3") for k in (2, 3, 4)])
+def test_mirrored_stick_radius(mirrored_medium, k):
+    """Mirrored meshes at a/h = 5.3 (h = 0.02), nu 0.3, stage k's c/a from
+    Mindlin's: `c_over_a_error` = +0.0045 to +0.0120 (+0.0120, +0.0045,
+    +0.0088 at `ratio` = 0.204, 0.500, 0.801), bound the issue's 2 % (3
+    times the figure where tighter). The normal stage's ring means
+    `ring_max` = 0.00064 of mu p0 at most."""
+    f = mindlin_figures(mirrored_medium)
+    figure("ring_max", max(abs(v) for v in f["rings"]))
+    figure("ratio", f[k]["ratio"])
+    err = figure("c_over_a_error", f[k]["c_err"])
+    assert abs(err) <= min(C_BOUND, 3 * abs(MIRRORED[k]["c_err"]))
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MIRRORED, k, "l2", L2_BOUND, "5.3") for k in (2, 3, 4)])
+def test_mirrored_shear(mirrored_medium, k):
+    """Mirrored meshes at a/h = 5.3, nu 0.3, stage k's shear along Q
+    against Mindlin's (as test_shear): `l2` = 0.077 to 0.254 (0.254, 0.119,
+    0.077 at Q/(mu P) = 0.2, 0.5, 0.8; meshed apart 0.309, 0.133, 0.085),
+    the issue's 10 % met at 0.8, not at 0.5 and 0.2 (xfail, strict): the
+    annulus c < r < a is 0.4 h wide at 0.2 here, and the normal stage locks
+    in `locked` = 0.0065 to 0.023 of Mindlin's shear."""
+    f = mindlin_figures(mirrored_medium)
+    figure("locked", f[k]["locked"])
+    l2 = figure("l2", f[k]["l2"])
+    assert l2 <= min(L2_BOUND, 3 * MIRRORED[k]["l2"])
+
+
+@pytest.mark.stress
+def test_mirrored_across(mirrored_medium0, mirrored_medium):
+    """Mirrored meshes at a/h = 5.3, the traction's component across Q
+    (relative L2, as test_across). At nu = 0 (Mindlin's traction parallel to
+    Q exact): `across0_2` = 0.040, `across0_3` = 0.019, `across0_4` =
+    0.0077, the mesh's (meshed apart: 0.033 at 0.8 and a/h 2.7, 0.014 at
+    5.3), bound 3 times each. At nu = 0.3: `across_2` = 0.057, `across_3` =
+    0.044, `across_4` = 0.038 (0.068, 0.048, 0.040 at a/h 2.7), about 0.04
+    at every Q and barely falling with the mesh: the slip's direction off
+    Q's where nu > 0 (Johnson, Contact Mechanics 7.2), physics; bound 3
+    times each, and above nu = 0's at 0.5 and 0.8. c/a at nu = 0:
+    `c_over_a_error0_2` = +0.0194, `c_over_a_error0_3` = +0.0194,
+    `c_over_a_error0_4` = +0.0038 (bound 2 %); its shear L2 `l2_0_4` =
+    0.079 at 0.8 (bound 10 %; 0.234, 0.109 at 0.2, 0.5)."""
+    f0, f = mindlin_figures(mirrored_medium0), mindlin_figures(mirrored_medium)
+    for k in (2, 3, 4):
+        a0 = figure(f"across0_{k}", f0[k]["across"])
+        a = figure(f"across_{k}", f[k]["across"])
+        assert a0 <= 3 * MIRRORED0[k]["across"] and a <= 3 * MIRRORED[k]["across"]
+        assert abs(figure(f"c_over_a_error0_{k}", f0[k]["c_err"])) <= C_BOUND
+        if k > 2:
+            assert a > a0
+    assert figure("l2_0_4", f0[4]["l2"]) <= L2_BOUND
