@@ -12,14 +12,16 @@ upper's pressed by 0.02 (a/R = 0.105 to 0.107) in a first stage, then moved
 along x in three stages of one increment each to Q/(mu P) about 0.2, 0.5
 and 0.8, Q and P the upper top's reactions (doubled: half model). Both
 meshes graded as tests/test_shear3d.py's (rc = 0.11, zs = 4, hm = 0.04,
-rm = 0.2) and meshed apart (not mirror images node for node).
+rm = 0.2) and meshed apart (not mirror images node for node), or the lower's
+the upper's reflected node for node (mirrored_meshes).
 
 Mindlin: a disc of radius c = a (1 - Q/(mu P))^(1/3) sticks, the shear
 along Q is mu p0/a (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)) (the second term
 within c), p0 = 3 P/(2 pi a^2), exactly parallel to Q at nu = 0 (Johnson,
-Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 1 min
-of one core); make stress: a/h = 5.3 (h = 0.02, 20,739 dofs) at nu 0.3 and
-0, and h = 0.04 at nu = 0."""
+Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 2 to 3
+min each on the loaded machine), meshed apart and mirrored; make stress: a/h
+= 5.3 (h = 0.02, 20,739 and 20,802 dofs, 8 min each) at nu 0.3 and 0, and h
+= 0.04 at nu = 0. The a/h >= 10 run (h = 0.01, 35,304 dofs) is not here yet."""
 import math
 import subprocess
 
