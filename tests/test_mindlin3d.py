@@ -21,7 +21,8 @@ within c), p0 = 3 P/(2 pi a^2), exactly parallel to Q at nu = 0 (Johnson,
 Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 2 to 3
 min each on the loaded machine), meshed apart and mirrored; make stress: a/h
 = 5.3 (h = 0.02, 20,739 and 20,802 dofs, 8 min each) at nu 0.3 and 0, and h
-= 0.04 at nu = 0. The a/h >= 10 run (h = 0.01, 35,304 dofs) is not here yet."""
+= 0.04 at nu = 0, and a/h = 10.5 (h = 0.01, 35,304 dofs, meshed apart, nu
+0.3: 61 min on the loaded machine)."""
 import math
 import subprocess
 
@@ -452,3 +453,61 @@ def test_mirrored_across(mirrored_medium0, mirrored_medium):
         if k > 2:
             assert a > a0
     assert figure("l2_0_4", f0[4]["l2"]) <= L2_BOUND
+
+
+# make stress: a/h = 10.5 (h = 0.01, meshed apart, nu 0.3; 35,304 dofs, 61
+# min on the machine loaded 8 times over its 2 cores)
+FINE = {2: dict(c_err=0.0030, l2=0.121), 3: dict(c_err=0.0030, l2=0.060), 4: dict(c_err=-0.0159, l2=0.050, across=0.038)}
+
+
+@pytest.fixture(scope="module")
+def fine(tmp_path_factory):
+    return run_contact(scene_args(FINE_H), tmp_path_factory.mktemp("mindlin3d_fine"), timeout=10800)
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(FINE, k, "c_err", C_BOUND, "10.5") for k in (2, 3, 4)])
+def test_fine_stick_radius(fine, k):
+    """At a/h = 10.5 (h = 0.01), stage k's c/a from Mindlin's:
+    `c_over_a_error` = -0.0159 to +0.0030 (+0.0030, +0.0030, -0.0159 at
+    `ratio` = 0.203, 0.501, 0.803), bound the issue's 2 % (3 times the figure
+    where tighter)."""
+    f = mindlin_figures(fine)
+    figure("ratio", f[k]["ratio"])
+    err = figure("c_over_a_error", f[k]["c_err"])
+    assert abs(err) <= min(C_BOUND, 3 * abs(FINE[k]["c_err"]))
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(FINE, k, "l2", L2_BOUND, "10.5") for k in (2, 3, 4)])
+def test_fine_shear(fine, k):
+    """At a/h = 10.5 (h = 0.01), stage k's shear along Q against Mindlin's
+    (as test_shear): `l2` = 0.050 to 0.121 (0.121, 0.060, 0.050 at Q/(mu P)
+    = 0.2, 0.5, 0.8; the ball on the block 0.27, 0.13, 0.082 at a/h 10.6),
+    the issue's 10 % met at 0.5 and 0.8, not at 0.2 (xfail, strict). The
+    normal stage's x shear against Mindlin's, the two meshes' difference
+    (test_mirrored_normal_stage): `locked` = 0.027 to 0.099 (0.099, 0.043,
+    0.027)."""
+    f = mindlin_figures(fine)
+    figure("locked", f[k]["locked"])
+    l2 = figure("l2", f[k]["l2"])
+    assert l2 <= min(L2_BOUND, 3 * FINE[k]["l2"])
+
+
+@pytest.mark.stress
+@pytest.mark.roundoff
+def test_fine_coulomb(fine):
+    """At a/h = 10.5, Coulomb at the last stage's end (as test_coulomb):
+    `excess` = 3.2e-16, `slip_error` = 3.2e-16 over `slipping` = 569 nodes
+    (296 stick) (bounds 1e-12); the normal stage's ring means at most
+    `ring_max` = 0.00084 of mu p0 (bound 0.0025); the traction across Q at
+    0.8 `across` = 0.038 (bound 3 times; 0.087, 0.037 at 0.2, 0.5)."""
+    f = mindlin_figures(fine)
+    c = f["coulomb"]
+    figure("slipping", c["slipping"])
+    assert c["slipping"] >= 10 and c["stuck"] >= 10
+    assert figure("excess", c["excess"]) <= 1e-12
+    assert figure("slip_error", c["slip_error"]) <= 1e-12
+    assert c["open_shear"] == 0
+    assert figure("ring_max", max(abs(v) for v in f["rings"])) <= 0.0025
+    assert figure("across", f[4]["across"]) <= 3 * FINE[4]["across"]
