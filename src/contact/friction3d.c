@@ -29,15 +29,16 @@
      e_j = T_j^T d_j(x) - R_j^T (d_j(xa) - s_j)     (2 components)
 
    with s_j the elastic slip of the accepted state (a vector of its plane).
-   This is 2D's reading (friction.c) where the master is flat at rest: the
+   This is 2D's reading (friction.c): where the master is flat at rest the
    gap a ball closes from rest on a flat closes along the flat's normal, so
    the accepted offset is read in the master's plane as it was (a normal
    turned with the indented surface, r/2R on similar bodies, would read the
    closing r^2/2R as a slip of r^3/4R^2: 2.5e-4 at r = a = 0.1 R, 8 times
    the stick range mu p / k_t of a first try, whose normal stage slipped
-   at 7 of 65 nodes, its radial shear 68 % of the shear in L2). 2D's
-   weighting of the two tangents by the curvatures at rest, for a slave flat
-   against a curved master, is not carried over. A node in contact at the
+   at 7 of 65 nodes, its radial shear 68 % of the shear in L2); where the
+   master is curved, in the plane normal to the direction the gaps close in,
+   the two surfaces' normals weighted by their curvatures at rest
+   (Friction3dClosingNormal, 2D's weighting of the tangents). A node in contact at the
    accepted state has no gap to misread: its offset is its elastic slip, the
    same in either plane to the square of their angle. Within one
    fixed-point iterate the points, eta*, C_j, T_j and R_j are those of the
@@ -91,6 +92,8 @@ struct _n_Friction3d {
   PetscReal  *T;               /* [nn][6] t1, t2 at the lag */
   PetscReal  *R;               /* [nn][6] T's axes turned into the master's plane at the accepted state (Friction3dOffsets) */
   PetscReal  *mnrm;            /* [master nn][3] the master's nodal normals at the accepted state */
+  PetscReal  *snrm;            /* [nn][3] the slave's nodal normals at the accepted state (Friction3dClosingNormals) */
+  PetscReal  *kap[2];          /* [n] each surface's nodal mean curvature at rest, |H| */
   PetscReal  *nu;              /* [nn][3] the master's normal at node j's points, at the lag */
   PetscReal  *off;             /* [nn][2] o_j */
   PetscReal  *bound, *bnew;    /* [nn] mu p_j at the lag; the next */
@@ -155,7 +158,74 @@ PetscErrorCode Friction3dDestroy(Friction3d *fr)
   PetscCall(PetscFree(f->stageR));
   PetscCall(PetscFree(f->stageSet));
   PetscCall(PetscFree2(f->R, f->mnrm));
+  PetscCall(PetscFree3(f->snrm, f->kap[0], f->kap[1]));
   PetscCall(PetscFree(*fr));
+  PetscFunctionReturn(0);
+}
+
+/* Each node's unit normal of the surface S at the coordinates x: the mean
+   of its faces' normals there, normalised. */
+static void Friction3dNodalNormals(const ContactSurface3d *S, const PetscReal x[], PetscReal nrm[])
+{
+  for (PetscInt v = 0; v < 3 * S->nn; ++v) nrm[v] = 0.0;
+  for (PetscInt face = 0; face < S->nf; ++face) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(S, face, x, xf);
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      PetscReal xi[2], X[3], T[6], n[3];
+      Face3dNodeXi(S->type, i, xi);
+      Face3dEval(S->type, xf, xi, X, T, NULL);
+      Face3dNormal(T, n);
+      for (PetscInt c = 0; c < 3; ++c) nrm[3 * S->fnodes[S->nb * face + i] + c] += n[c];
+    }
+  }
+  for (PetscInt v = 0; v < S->nn; ++v) {
+    PetscReal *n = &nrm[3 * v], l = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (l > 0) n[0] /= l, n[1] /= l, n[2] /= l;
+  }
+}
+
+/* Each node's mean curvature |H| of the surface S at the coordinates x,
+   averaged over its faces. On a face, with the tangents x_1, x_2, the second
+   derivatives x_ab and the unit normal n at the node, E = x_1.x_1, F =
+   x_1.x_2, G = x_2.x_2, e = n.x_11, f = n.x_12, g = n.x_22 and
+   H = (e G - 2 f F + g E) / (2 (E G - F^2)), the mean of the principal
+   curvatures: 1/R on a sphere of radius R, 0 on a plane whose mid-edge nodes
+   are the edges' midpoints (a face's |H| below 1e-10 of 1/hmax, the round-off
+   of a plane's coordinates, counted 0: a flat master reads as before, to the
+   bit). */
+static PetscErrorCode Friction3dCurvatures(const ContactSurface3d *S, const PetscReal x[], PetscReal kap[])
+{
+  PetscInt *cnt;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(S->nn, &cnt));
+  for (PetscInt v = 0; v < S->nn; ++v) kap[v] = 0.0;
+  for (PetscInt face = 0; face < S->nf; ++face) {
+    PetscReal xf[27];
+    ContactSurface3dFaceCoords(S, face, x, xf);
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt v = S->fnodes[S->nb * face + i];
+      PetscReal      xi[2], X[3], T[6], H[9], n[3], E, F, G, det;
+      Face3dNodeXi(S->type, i, xi);
+      Face3dEval(S->type, xf, xi, X, T, H);
+      Face3dNormal(T, n);
+      E   = T[0] * T[0] + T[1] * T[1] + T[2] * T[2];
+      F   = T[0] * T[3] + T[1] * T[4] + T[2] * T[5];
+      G   = T[3] * T[3] + T[4] * T[4] + T[5] * T[5];
+      det = E * G - F * F;
+      if (det > 0) {
+        const PetscReal e = n[0] * H[0] + n[1] * H[1] + n[2] * H[2], fm = n[0] * H[3] + n[1] * H[4] + n[2] * H[5];
+        const PetscReal g = n[0] * H[6] + n[1] * H[7] + n[2] * H[8];
+        const PetscReal H2 = PetscAbsReal((e * G - 2.0 * fm * F + g * E) / (2.0 * det));
+        kap[v] += H2 * S->hmax > 1e-10 ? H2 : 0.0;
+        cnt[v]++;
+      }
+    }
+  }
+  for (PetscInt v = 0; v < S->nn; ++v)
+    if (cnt[v]) kap[v] /= cnt[v];
+  PetscCall(PetscFree(cnt));
   PetscFunctionReturn(0);
 }
 
@@ -170,6 +240,8 @@ PetscErrorCode Friction3dSetUp(Friction3d f, const ContactSurface3d S[2], PetscI
   PetscCall(PetscCalloc6(f->nn, &f->A, 6 * f->nn, &f->T, 3 * f->nn, &f->nu, 2 * f->nn, &f->off, f->nn, &f->bound, f->nn, &f->bnew));
   PetscCall(PetscCalloc1(f->nn + 1, &f->rowStart));
   PetscCall(PetscCalloc2(6 * f->nn, &f->R, 3 * f->nmn, &f->mnrm));
+  PetscCall(PetscCalloc3(3 * f->nn, &f->snrm, S[0].nn, &f->kap[0], S[1].nn, &f->kap[1]));
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(Friction3dCurvatures(&S[k], S[k].X, f->kap[k]));
   PetscCall(PetscMalloc4(3 * S[0].nn, &f->xacc[0], 3 * S[1].nn, &f->xacc[1], 3 * S[0].nn, &f->xaccN[0], 3 * S[1].nn, &f->xaccN[1]));
   PetscCall(PetscCalloc4(3 * f->nn, &f->sel, 3 * f->nn, &f->slip, 3 * f->nn, &f->selN, 3 * f->nn, &f->slipN));
   PetscCall(PetscCalloc4(f->nn, &f->boundAcc, f->nn, &f->boundN, 3 * f->nn, &f->shear, f->nn, &f->stick));
@@ -218,31 +290,6 @@ static void Friction3dRowVector(Friction3d f, PetscInt j, PetscReal *const x[2],
   }
 }
 
-/* The master's unit normals at its nodes at the accepted coordinates (each
-   the mean of its faces' normals there). */
-static void Friction3dMasterNormals(Friction3d f)
-{
-  const ContactSurface3d *M = &f->S[1 - f->s];
-  const PetscReal        *x = f->xacc[1 - f->s];
-
-  for (PetscInt v = 0; v < 3 * M->nn; ++v) f->mnrm[v] = 0.0;
-  for (PetscInt face = 0; face < M->nf; ++face) {
-    PetscReal xf[27];
-    ContactSurface3dFaceCoords(M, face, x, xf);
-    for (PetscInt i = 0; i < M->nb; ++i) {
-      PetscReal xi[2], X[3], T[6], n[3];
-      Face3dNodeXi(M->type, i, xi);
-      Face3dEval(M->type, xf, xi, X, T, NULL);
-      Face3dNormal(T, n);
-      for (PetscInt c = 0; c < 3; ++c) f->mnrm[3 * M->fnodes[M->nb * face + i] + c] += n[c];
-    }
-  }
-  for (PetscInt v = 0; v < M->nn; ++v) {
-    PetscReal *n = &f->mnrm[3 * v], l = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (l > 0) n[0] /= l, n[1] /= l, n[2] /= l;
-  }
-}
-
 /* x turned by the rotation that takes the unit vector b to the unit vector
    a about their common normal (Rodrigues: v = b x a, c = b . a); x itself
    where they are opposite. */
@@ -260,23 +307,61 @@ static void Friction3dTurn(const PetscReal b[3], const PetscReal a[3], const Pet
   y[2] = c * x[2] + v[0] * x[1] - v[1] * x[0] + v[2] * vx / (1.0 + c);
 }
 
-/* The offsets o_j = R_j^T (s_j - d_j(xa)) at the lag, R_j = T_j turned from
-   nu_j to the master's normal at the accepted state where node j's points
-   meet it (its nodal normals weighted as the row's master entries are). */
-static void Friction3dOffsets(Friction3d f)
+/* The normal of the plane node j's accepted offset is read in (see the
+   derivation): the master's normal n_m where node j's points meet it at the
+   accepted state (its nodal normals weighted as the row's master entries
+   are), turned towards the direction the gaps close in where the master is
+   curved. Two bodies pressed together close their gaps along their common
+   normal (Hertz's, Mindlin's); at r from the first contact the slave's
+   outward normal n_s is turned by r kappa_s from it and the master's n_m by
+   -r kappa_m, so that
+     w_j = (kappa_s n_m - kappa_m n_s) / |kappa_s n_m - kappa_m n_s|
+   turns by r (kappa_s kappa_m - kappa_m kappa_s) / (kappa_s + kappa_m) = 0
+   (2D's FrictionOffsets in 3D: kappa the surfaces' mean curvatures |H| at
+   rest, Friction3dCurvatures, the master's weighted as its row entries; n_s
+   the slave's nodal normal at the accepted state). n_m itself where the
+   master is flat (kappa_m = 0: a ball on a plane), the slave's -n_s where
+   the slave is, the bisector between equal balls, where n_m would read the
+   closing of the gap r^2/R from rest as a slip of r^3/R^2 (1e-3 at r = a =
+   0.1 R: the normal stage of tests/test_mindlin3d.py's two balls locked in a
+   radial shear 1.8 times Mindlin's at Q/(mu P) = 0.1). */
+static void Friction3dClosingNormal(Friction3d f, PetscInt j, PetscReal na[3])
 {
   const PetscInt m = 1 - f->s;
+  PetscReal      km = 0.0, wm = 0.0, l;
 
-  Friction3dMasterNormals(f);
+  na[0] = na[1] = na[2] = 0.0;
+  for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k)
+    if (f->eside[k] == m) {
+      for (PetscInt c = 0; c < 3; ++c) na[c] -= f->ecoef[k] * f->mnrm[3 * f->enode[k] + c];
+      km += PetscAbsReal(f->ecoef[k]) * f->kap[m][f->enode[k]], wm += PetscAbsReal(f->ecoef[k]);
+    }
+  l = PetscSqrtReal(na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
+  if (!(l > 0)) return;
+  for (PetscInt c = 0; c < 3; ++c) na[c] /= l;
+  km = wm > 0 ? km / wm : 0.0;
+  if (km > 0) {
+    const PetscReal ks = f->kap[f->s][j], *ns = &f->snrm[3 * j];
+    PetscReal       w[3];
+    for (PetscInt c = 0; c < 3; ++c) w[c] = ks * na[c] - km * ns[c];
+    l = PetscSqrtReal(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    if (l > 0)
+      for (PetscInt c = 0; c < 3; ++c) na[c] = w[c] / l;
+  }
+}
+
+/* The offsets o_j = R_j^T (s_j - d_j(xa)) at the lag, R_j = T_j turned from
+   nu_j to the normal node j's accepted offset is read along
+   (Friction3dClosingNormal). */
+static void Friction3dOffsets(Friction3d f)
+{
+  Friction3dNodalNormals(&f->S[1 - f->s], f->xacc[1 - f->s], f->mnrm);
+  Friction3dNodalNormals(&f->S[f->s], f->xacc[f->s], f->snrm);
   for (PetscInt j = 0; j < f->nn; ++j) {
     const PetscReal *T = &f->T[6 * j], *nu = &f->nu[3 * j];
-    PetscReal       *R = &f->R[6 * j], d[3], v[3], na[3] = {0.0, 0.0, 0.0}, l;
-    for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1]; ++k)
-      if (f->eside[k] == m)
-        for (PetscInt c = 0; c < 3; ++c) na[c] -= f->ecoef[k] * f->mnrm[3 * f->enode[k] + c];
-    l = PetscSqrtReal(na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
-    if (l > 0) {
-      for (PetscInt c = 0; c < 3; ++c) na[c] /= l;
+    PetscReal       *R = &f->R[6 * j], d[3], v[3], na[3];
+    Friction3dClosingNormal(f, j, na);
+    if (na[0] != 0.0 || na[1] != 0.0 || na[2] != 0.0) {
       Friction3dTurn(nu, na, T, R);
       Friction3dTurn(nu, na, T + 3, R + 3);
     } else

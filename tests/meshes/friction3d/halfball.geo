@@ -5,8 +5,10 @@
 // plane, rc/zs thick), and at most hm within rm of the origin (growing to hf
 // at 3 rm; hm = hf: no such zone). Its curved surface is two: "cap" (z <= zc,
 // the contact surface) and "side". Groups: symy (y = 0), top (z = zt), cap,
-// side; the volume "body".
-// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zs, hm, rm, zc.
+// side; the volume "body". dir = -1 mirrors it about the plane z = 0 (the
+// ball centred at (0, 0, -R), its top z = -zt, its cap z >= -zc: the lower of
+// two identical balls touching at the origin; the size field is even in z).
+// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zs, hm, rm, zc, dir.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(zt)) zt = 0.5; EndIf
@@ -17,6 +19,7 @@ If (!Exists(zs)) zs = 1; EndIf
 If (!Exists(hm)) hm = hf; EndIf
 If (!Exists(rm)) rm = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.05; EndIf
+If (!Exists(dir)) dir = 1; EndIf
 
 Sphere(1) = {0, 0, R, R};
 Box(2) = {-2 * R, 0, 0, 4 * R, 2 * R, zt};
@@ -29,10 +32,16 @@ ball[] = Volume In BoundingBox{-R - e, -e, -e, R + e, R + e, zt + e};
 out[] = all[];
 out[] -= {ball[]};
 Recursive Delete{Volume{out[]};}
-symy[] = Surface In BoundingBox{-R - e, -e, -e, R + e, e, zt + e};
-top[] = Surface In BoundingBox{-R - e, -e, zt - e, R + e, R + e, zt + e};
-cut[] = Surface In BoundingBox{-R - e, -e, zc - e, R + e, R + e, zc + e};
-cap[] = Surface In BoundingBox{-R - e, -e, -e, R + e, R + e, zc + e};
+s = 1;
+If (dir < 0)
+  Symmetry {0, 0, 1, 0} { Volume{ball[]}; }
+  s = -1;
+EndIf
+// z in [a, b] mirrored: [Min(s a, s b), Max(s a, s b)]
+symy[] = Surface In BoundingBox{-R - e, -e, Min(-s * e, s * (zt + e)), R + e, e, Max(-s * e, s * (zt + e))};
+top[] = Surface In BoundingBox{-R - e, -e, Min(s * (zt - e), s * (zt + e)), R + e, R + e, Max(s * (zt - e), s * (zt + e))};
+cut[] = Surface In BoundingBox{-R - e, -e, Min(s * (zc - e), s * (zc + e)), R + e, R + e, Max(s * (zc - e), s * (zc + e))};
+cap[] = Surface In BoundingBox{-R - e, -e, Min(-s * e, s * (zc + e)), R + e, R + e, Max(-s * e, s * (zc + e))};
 cap[] -= {symy[], cut[]};
 side[] = Surface{:};
 side[] -= {symy[], top[], cut[], cap[]};
