@@ -242,14 +242,15 @@ def test_shear(coarse, k):
     assert l2 <= min(L2_BOUND, 3 * COARSE[k]["l2"])
 
 
-@pytest.mark.roundoff
 def test_coulomb(coarse):
     """At the last stage's end (Q/(mu P) = 0.8), against the written
     pressure p: |t_j| <= mu p_j at every node and |t_j| = mu p_j where a
     node in contact slips, to round-off: `excess` = 2.4e-16, the largest
     (|t| - mu p) / (mu p_max), `slip_error` = 2.4e-16, the largest ||t| - mu
     p| / (mu p_max) over the `slipping` = 52 nodes (25 stick) (bounds 1e-12;
-    at least 10 slip and 10 stick); no shear where p = 0."""
+    at least 10 slip and 10 stick); no shear where p = 0. Its bounds are
+    4000 times the round-off measured, so it runs in make test only, not
+    under every BLAS kernel (its fixture's two runs take 2-3 min each)."""
     c = mindlin_figures(coarse)["coulomb"]
     figure("slipping", c["slipping"])
     assert c["slipping"] >= 10 and c["stuck"] >= 10
