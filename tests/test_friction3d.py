@@ -76,6 +76,29 @@ def stick_radius(s):
     return math.sqrt(2 * np.sum(s["A"][s["stick"] > 0.5]) / math.pi)
 
 
+def mindlin_stage(s, a, q1, mu):
+    """One tangential stage's figures against Cattaneo-Mindlin, the upper
+    body moved along +x (the lower's traction on it along -x): Q/(mu P), c/a
+    from (1 - Q/(mu P))^(1/3), the shear along Q against mu p0/a (sqrt(a^2 -
+    r^2) - sqrt(c^2 - r^2)) in relative L2 over the slave's nodes (weights
+    A_j; p0 and c from a and the reactions), q1 the normal stage's shear
+    along Q against it (locked) and the shear less it (less), and the
+    traction's component across Q relative to the whole in L2 (across)."""
+    rho = s["Q"] / (mu * s["P"])
+    r = np.hypot(s["X"][:, 0], s["X"][:, 1])
+    p0 = 3 * s["P"] / (2 * math.pi * a * a)
+    cm = a * (1 - rho) ** (1 / 3)
+    qm = mu * p0 / a * (np.sqrt(np.maximum(a * a - r * r, 0)) - np.sqrt(np.maximum(cm * cm - r * r, 0)))
+    q = -s["shear"][:, 0]
+    norm = np.sum(s["A"] * qm ** 2)
+    t = np.linalg.norm(s["shear"], axis=1)
+    return dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
+                l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
+                locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
+                less=math.sqrt(np.sum(s["A"] * (q - q1 - qm) ** 2) / norm),
+                across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)))
+
+
 def test_cattaneo_mindlin(cattaneo):
     """At each tangential stage's end c/a against Mindlin's (1 - Q/(mu P))^(1/3)
     at that stage's Q/(mu P) (`ratio_2` = 0.2018, `ratio_3` = 0.5071,

@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, figure, run_contact
-from test_friction3d import contact_radius, stick_radius
+from test_friction3d import contact_radius, mindlin_stage, stick_radius
 
 MU = 0.3
 G3 = "tests/meshes/friction3d"
@@ -130,19 +130,8 @@ def mindlin_figures(res):
     q1, y1 = -sets[0]["shear"][:, 0], sets[0]["shear"][:, 1]
     for k in range(2, len(sets) + 1):
         s = sets[k - 1]
-        rho = s["Q"] / (MU * s["P"])
-        r = np.hypot(s["X"][:, 0], s["X"][:, 1])
-        p0 = 3 * s["P"] / (2 * math.pi * a * a)
-        cm = a * (1 - rho) ** (1 / 3)
-        qm = MU * p0 / a * (np.sqrt(np.maximum(a * a - r * r, 0)) - np.sqrt(np.maximum(cm * cm - r * r, 0)))
-        q = -s["shear"][:, 0]  # the upper moves along +x: the lower's traction on it is along -x
-        norm = np.sum(s["A"] * qm ** 2)
         t = np.linalg.norm(s["shear"], axis=1)
-        out[k] = dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
-                      l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
-                      locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
-                      less=math.sqrt(np.sum(s["A"] * (q - q1 - qm) ** 2) / norm),
-                      across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)),
+        out[k] = dict(mindlin_stage(s, a, q1, MU),
                       across_less=math.sqrt(np.sum(s["A"] * (s["shear"][:, 1] - y1) ** 2) / np.sum(s["A"] * t ** 2)))
     # Coulomb at the last stage's end, against its pressure (the stages' own are not written)
     s = sets[-1]

@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 from conftest import figure, run_contact
-from test_friction3d import contact_radius, stage_sets, stick_radius
+from test_friction3d import contact_radius, mindlin_stage, stage_sets
 
 MU, P = 0.3, 5.0
 BOX = "tests/meshes/contact3d/box.geo"
@@ -122,18 +122,7 @@ def mindlin_figures(res):
     out = {}
     for k in (2, 3, 4):
         s = sets[k - 1]
-        rho = s["Q"] / (MU * s["P"])
-        r = np.hypot(s["X"][:, 0], s["X"][:, 1])
-        p0 = 3 * s["P"] / (2 * math.pi * a * a)
-        cm = a * (1 - rho) ** (1 / 3)
-        qm = MU * p0 / a * (np.sqrt(np.maximum(a * a - r * r, 0)) - np.sqrt(np.maximum(cm * cm - r * r, 0)))
-        q = -s["shear"][:, 0]  # the ball moves along +x: the block's traction on it is along -x
-        norm = np.sum(s["A"] * qm ** 2)
-        t = np.linalg.norm(s["shear"], axis=1)
-        out[k] = dict(ratio=rho, c_err=stick_radius(s) / a / (1 - rho) ** (1 / 3) - 1,
-                      l2=math.sqrt(np.sum(s["A"] * (q - qm) ** 2) / norm),
-                      locked=math.sqrt(np.sum(s["A"] * q1 ** 2) / norm),
-                      across=math.sqrt(np.sum(s["A"] * s["shear"][:, 1] ** 2) / np.sum(s["A"] * t ** 2)))
+        out[k] = mindlin_stage(s, a, q1, MU)
     return a, out
 
 
