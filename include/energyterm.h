@@ -41,6 +41,8 @@ struct _n_EnergyTerm {
   char          name[CONTACT_NAME_LEN], type[CONTACT_NAME_LEN];
   MPI_Comm      comm;
   PetscBool     couples[CONTACT_MAX_BODIES]; /* bodies whose motion the term resists */
+  PetscInt      body[2];                     /* a contact pair's two bodies and their surfaces' groups (contactpair.c) */
+  char          group[2][CONTACT_NAME_LEN];
   void         *data;                        /* the implementation's, opaque to everyone else */
   EnergyTermOps ops;
 };

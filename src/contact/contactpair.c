@@ -91,6 +91,10 @@ static PetscErrorCode ContactFormulationCreateTerm(MPI_Comm comm, const ContactP
   PetscCall(PetscStrncpy((*term)->type, spec->formulation, sizeof((*term)->type)));
   (*term)->couples[spec->body[0]] = PETSC_TRUE;
   (*term)->couples[spec->body[1]] = PETSC_TRUE;
+  for (PetscInt k = 0; k < 2; ++k) {
+    (*term)->body[k] = spec->body[k];
+    PetscCall(PetscStrncpy((*term)->group[k], spec->group[k], sizeof((*term)->group[k])));
+  }
   PetscCall((*create)(spec, *term));
   PetscFunctionReturn(0);
 }

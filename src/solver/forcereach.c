@@ -29,7 +29,6 @@
    surfaces are whole sides). */
 #include "forcereach.h"
 #include "bodyfaces.h"
-#include "contactspec.h"
 #include "energyterm.h"
 #include "controls.h"
 
@@ -61,22 +60,18 @@ PetscErrorCode ForceControlContactReach(Problem p, PetscInt k, PetscReal *reach)
 {
   const ForceControl *fc = &p->fc.c[k];
   Body                b  = p->bodies[fc->body];
-  const char         *name;
   PetscInt            axis;
 
   PetscFunctionBeginUser;
   *reach = 0.0;
   if (BodyGetDimension(b) != 3 || fc->motion || fc->anchor) PetscFunctionReturn(0);
-  name = BodyGetControlComponent(b, fc->bc, fc->c); /* c indexes the condition's components: its axis by name */
-  if (!name || name[0] < 'x' || name[0] > 'z' || name[1]) PetscFunctionReturn(0);
-  axis = name[0] - 'x';
+  axis = BodyGetCondition(b, fc->bc)->comps[fc->c]; /* c indexes the condition's components */
   for (PetscInt t = 0; t < p->nterms; ++t) {
-    const ContactPairSpec *spec = (const ContactPairSpec *)p->terms[t]->data; /* every formulation's context starts with its pair's (ContactTerm's, Mortar3d's) */
-    PetscReal              d[2];
-    if (!spec) continue;
-    if (spec->body[0] != fc->body && spec->body[1] != fc->body) continue;
-    for (PetscInt s = 0; s < 2; ++s) PetscCall(GroupDepth(p->comm, p->bodies[spec->body[s]], spec->group[s], axis, &d[s]));
-    PetscCall(PetscInfo(NULL, "force control %" PetscInt_FMT ": pair %s's surfaces %g and %g deep along %s\n", k, spec->name, (double)d[0], (double)d[1], name));
+    const EnergyTerm term = p->terms[t];
+    PetscReal        d[2];
+    if (term->body[0] != fc->body && term->body[1] != fc->body) continue;
+    for (PetscInt s = 0; s < 2; ++s) PetscCall(GroupDepth(p->comm, p->bodies[term->body[s]], term->group[s], axis, &d[s]));
+    PetscCall(PetscInfo(NULL, "force control %" PetscInt_FMT ": pair %s's surfaces %g and %g deep along %s\n", k, term->name, (double)d[0], (double)d[1], BodyGetControlComponent(b, fc->bc, fc->c)));
     *reach = PetscMax(*reach, d[0] + d[1]);
   }
   if (*reach > 0.0) *reach = PetscMax(*reach, 1e-2 * fc->L);
