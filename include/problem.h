@@ -27,6 +27,8 @@ PetscErrorCode HessianOptionsSetFromOptions(MPI_Comm, HessianOptions *);
 PetscErrorCode ProblemGenerateMeshes(Problem);
 /* Adds an energy term; the problem takes the reference and destroys it. */
 PetscErrorCode ProblemAddTerm(Problem, EnergyTerm);
+/* The scene's dimension, 2 or 3 (its bodies agree: ProblemSetUp checks it); 2 with no body. */
+PetscInt ProblemGetDimension(Problem);
 PetscErrorCode ProblemGetPenaltyStiffness(Problem, PetscReal *stiff);
 PetscErrorCode ProblemSetNewtonContinuation(Problem);
 /* The first iterate of ProblemSolve (after ProblemSetUp; referenced). */

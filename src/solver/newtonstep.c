@@ -153,7 +153,7 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   PetscInt N;
 
   PetscFunctionBeginUser;
-  if (!p->Xb || p->nbodies == 0 || BodyGetDimension(p->bodies[0]) != 3) PetscFunctionReturn(0);
+  if (!p->Xb || ProblemGetDimension(p) != 3) PetscFunctionReturn(0);
   if (p->nterms > 0 && !p->cfg->newton.iterativeTwoLevelsSet) p->cfg->newton.iterativeTwoLevels = PETSC_FALSE;
   if (p->cfg->newton.iterativeSet) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));

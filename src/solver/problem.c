@@ -598,6 +598,11 @@ static PetscErrorCode ProblemIsLoaded(Problem p, PetscBool *loaded)
 
 /* A scene's bodies are all 2D (a rigid body's curves included) or all 3D,
    and a pair of 3D bodies is mortar's (mortar3d.c). */
+PetscInt ProblemGetDimension(Problem p)
+{
+  return p->nbodies > 0 ? BodyGetDimension(p->bodies[0]) : 2;
+}
+
 static PetscErrorCode ProblemCheckDimensions(Problem p)
 {
   PetscFunctionBeginUser;

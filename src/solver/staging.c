@@ -217,7 +217,7 @@ static PetscErrorCode ProblemStageSolveLagged(Problem p, PetscBool converge, Pet
    keeps the last stage's k_p (the cattaneo disc's figures, friction.c). */
 static PetscErrorCode ProblemStateLagSofter(Problem p, PetscReal load, PetscReal softer, PetscReal penalty)
 {
-  const PetscBool three = (PetscBool)(p->nbodies > 0 && BodyGetDimension(p->bodies[0]) == 3);
+  const PetscBool three = (PetscBool)(ProblemGetDimension(p) == 3);
   PetscReal       change;
 
   PetscFunctionBeginUser;
