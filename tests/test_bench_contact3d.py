@@ -9,6 +9,7 @@ import sys
 import pytest
 
 from conftest import run_contact
+import hertz
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 import bench_contact3d as bench  # noqa: E402
@@ -21,9 +22,7 @@ def test_hertz_errors():
     profile's second moment 2 a^2 / 5): a_error and pmax_error 0 to
     round-off; P is four times the quarter's F_z."""
     P = 2.0
-    Es = 1 / ((1 - NU ** 2) / E_BALL + (1 - NU ** 2) / E_BASE)
-    a = (3 * P / (4 * Es)) ** (1 / 3)
-    p0 = 3 * P / (2 * math.pi * a * a)
+    a, p0 = hertz.sphere(P, hertz.plane_strain_modulus(E_BALL, NU, E_BASE, NU))
     r = a * math.sqrt(0.4)   # a single ring: sum p A r^2 / sum p A = r^2 = 2 a^2 / 5
     rows = [[r, 0, 0, p0 * math.sqrt(0.6), 1.0], [0, r, 0, p0 * math.sqrt(0.6), 1.0]]
     s = {"contact": {"c": {"force": [0, 0, P / 4], "pmax": p0, "contact_nodes": {"rows": rows}, "nodes_in_contact": 2,

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from conftest import figure, run_contact
+from hertz import sphere
 from test_view3d import MU, scene_args
 
 P = 0.35            # the half model's force (whole ball 0.7: a/R about 0.1)
@@ -39,8 +40,7 @@ def pressed(friction=False, top=("force", -P)):
 
 def hertz(Pw):
     """Hertz's a and p0 under the whole ball's force Pw (R* = 1, the block flat)."""
-    a = (3 * Pw / (4 * ES)) ** (1 / 3)
-    return a, 3 * Pw / (2 * np.pi * a * a)
+    return sphere(Pw, ES)
 
 
 def force_run(tmp_path, name, friction=False, ranks=1):

@@ -31,6 +31,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, figure, run_contact
+import hertz
 from test_friction3d import contact_radius, mindlin_stage, stick_radius
 
 MU = 0.3
@@ -126,7 +127,7 @@ def mindlin_figures(res):
     node in contact slips."""
     sets = stage_sets(res)
     a = contact_radius(sets[-1])
-    out = dict(a=a, rings=rings(sets[0], a, 3 * sets[0]["P"] / (2 * math.pi * a * a)))
+    out = dict(a=a, rings=rings(sets[0], a, hertz.peak(sets[0]["P"], a)))
     q1, y1 = -sets[0]["shear"][:, 0], sets[0]["shear"][:, 1]
     for k in range(2, len(sets) + 1):
         s = sets[k - 1]

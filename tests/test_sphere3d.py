@@ -13,27 +13,19 @@ from pathlib import Path
 import pytest
 
 from conftest import figure, run_contact
+from hertz import moment_radius, plane_strain_modulus, sphere
 
 SCENE = ["-options_file", "meshes/sphere3d/sphere3d.opts"]
 E_BALL, E_BLOCK, NU, R = 1000.0, 1e5, 0.3, 1.0
-ES = 1 / ((1 - NU**2) / E_BALL + (1 - NU**2) / E_BLOCK)
+ES = plane_strain_modulus(E_BALL, NU, E_BLOCK, NU)
 
 
-def hertz(P):
-    a = (3 * P * R / (4 * ES)) ** (1 / 3)
-    return a, 3 * P / (2 * math.pi * a * a)
-
-
-def moment_radius(rows):
-    """sqrt(5/2 sum p A r^2 / sum p A) from the pair's contact_nodes rows (X,
-    Y, Z, p, A), r the distance from the z axis (the quarter's centre lies
-    on both symmetry planes, the whole ball's on the axis by symmetry)."""
-    w = sum(r[3] * r[4] for r in rows)
-    return math.sqrt(2.5 * sum(r[3] * r[4] * (r[0] ** 2 + r[1] ** 2) for r in rows) / w)
+def hertz_at(P):
+    return sphere(P, ES, R)
 
 
 def errors(c):
-    a, p0 = hertz(c["P"])
+    a, p0 = hertz_at(c["P"])
     return c["fem_a_moment"] / a - 1, c["fem_pmax"] / p0 - 1, c["fem_a"] / a - 1
 
 
@@ -61,7 +53,7 @@ def test_scene_against_hertz(scene):
     assert c["contact_area"] == pytest.approx(4 * sum(r[4] for r in rows), rel=1e-12)
     assert c["fem_a"] == pytest.approx(math.sqrt(c["contact_area"] / math.pi), rel=1e-12)
     assert c["fem_a_moment"] == pytest.approx(moment_radius(rows), rel=1e-12)
-    a, p0 = hertz(c["P"])
+    a, p0 = hertz_at(c["P"])
     assert c["hertz_a"] == pytest.approx(a, rel=1e-12) and c["hertz_pmax"] == pytest.approx(p0, rel=1e-12)
     assert c["E_star"] == pytest.approx(ES, rel=1e-12) and c["R_star"] == R
     for key in ("fem_a", "fem_a_moment", "fem_pmax", "hertz_a", "hertz_pmax", "contact_area", "pressure_l2_error"):
@@ -146,7 +138,7 @@ def test_quarter_against_axisymmetric(tmp_path):
     about 0.2 %)."""
     axi = run_contact(axisymmetric_args() + ["-output", "none"], tmp_path, name="axi").summary["contact"]["ball"]
     q = run_contact(SCENE + ["-mesh_size", 0.02, "-output", "none"], tmp_path, name="quarter").summary["contact"]["ball"]
-    a, p0 = hertz(axi["P"])
+    a, p0 = hertz_at(axi["P"])
     figure("axi_a_error", axi["fem_a_moment"] / a - 1)
     figure("axi_pmax_error", axi["fem_pmax"] / p0 - 1)
     assert abs(figure("dP", q["P"] / axi["P"] - 1)) <= 0.005
