@@ -22,6 +22,7 @@ typedef struct {
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
 #define SEGMENT3D_END_TOL 1e-12    /* an end shorter than this (a fraction of the master edge) is dropped */
 #define SEGMENT3D_END_POINTS 5     /* Gauss points along an end (degree 9) */
+#define SEGMENT3D_ALONG 0.1        /* an end this near (of the edge's length) a slave border edge runs along it: no end term */
 #define SEGMENT3D_EDGE_MARGIN 0.0   /* a closest point this far inside the piece's master face is its (no other face tried) */
 
 /* An end of S' inside the slave face: the part s in [s0, s1] of the edge
@@ -36,7 +37,7 @@ typedef struct {
   PetscReal s0, s1;
 } Segment3dEnd;
 
-PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **, PetscInt *, Segment3dEnd **);
+PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
 PetscErrorCode Segment3dEndEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dEnd[], PetscReal[]);
 PetscErrorCode Segment3dEndHessian(const Face3d *, const PetscReal[], const PetscReal[], const PetscReal[], const Face3d *, const Segment3dEnd *, PetscReal[], PetscBool *);

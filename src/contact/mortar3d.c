@@ -30,7 +30,9 @@
    behind a master edge, in the fan, keeps the Gauss-Newton part). The
    segments are found again at every evaluation (current coordinates);
    their motion is not differentiated (segment3d.c: no term where the
-   integrand is continuous across the master's face edges), which on
+   integrand is continuous across the master's face edges; where the
+   master's border lies inside the slave, the end's term is in G_j and its
+   leading second-order part in the exact Hessian, Mortar3dHessianEnds), which on
    curved faces leaves the Gauss rule's motion out: the Hessian's Taylor
    remainder is second order on the flat patch test and levels at 2.9e-6
    of |H v| on the curved Hertz cap (tests/test_contact3d.py).
@@ -328,6 +330,49 @@ static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], Pet
   PetscFunctionReturn(0);
 }
 
+/* Whether side k of slave face g (from corner k to corner k + 1, its
+   mid-side node nc + k) lies on the slave surface's border: no other slave
+   face holds both its corners. */
+static PetscBool Mortar3dSideOnBorder(const Mortar3d *m, PetscInt g, PetscInt k)
+{
+  const ContactSurface3d *S  = &m->S[m->s];
+  const PetscInt          nc = S->type == FACE3D_TRI6 ? 3 : 4;
+  const PetscInt          a = S->fnodes[S->nb * g + k], b = S->fnodes[S->nb * g + (k + 1) % nc];
+
+  for (PetscInt r = m->nodeFaceStart[a]; r < m->nodeFaceStart[a + 1]; ++r) {
+    const PetscInt h = m->nodeFace[r];
+    if (h == g) continue;
+    for (PetscInt i = 0; i < S->nb; ++i)
+      if (S->fnodes[S->nb * h + i] == b) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* The nodes of slave face f on the slave surface's border, a bit each (node
+   i of the face: bit i): those on a side of a slave face around them that
+   lies on the border (Mortar3dSideOnBorder). */
+static PetscInt Mortar3dSlaveBorder(const Mortar3d *m, PetscInt f)
+{
+  const ContactSurface3d *S  = &m->S[m->s];
+  const PetscInt          nc = S->type == FACE3D_TRI6 ? 3 : 4;
+  PetscInt                border = 0;
+
+  for (PetscInt i = 0; i < S->nb; ++i) {
+    const PetscInt j = S->fnodes[S->nb * f + i];
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1] && !(border & (1 << i)); ++r) {
+      const PetscInt g = m->nodeFace[r];
+      for (PetscInt k = 0; k < nc; ++k) {
+        const PetscInt *side = &S->fnodes[S->nb * g];
+        if ((side[k] == j || side[(k + 1) % nc] == j || side[nc + k] == j) && Mortar3dSideOnBorder(m, g, k)) {
+          border |= 1 << i;
+          break;
+        }
+      }
+    }
+  }
+  return border;
+}
+
 /* Slave face f against the master faces near it (deriv: with dQ; keep:
    its points kept in E, PetscFree(E->pts)). */
 static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, PetscBool keep, Mortar3dFace *E)
@@ -376,7 +421,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts, &nend, &ends));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
   if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
   if (keep) {

@@ -45,7 +45,7 @@
    xi (the segments are not differentiated: the exact integral of an
    integrand continuous across the master's face edges has no term there;
    where the master ends inside S, the end moves and its term, W_j g on the
-   end times its motion, is left out as 2D leaves its end cuts). At the
+   end times its motion, is Segment3dEndEvaluate's, below). At the
    closest point x_s - x_m = g n, t_a . n = 0 and dn . n = 0, so the
    motions of eta* and of n drop out:
      dg = n . (sum_i N_i(xi) dx_i - sum_k M_k(eta*) dx_k),
@@ -295,21 +295,34 @@ static PetscErrorCode EndListPush(EndList *L, const Segment3dEnd *q)
   PetscFunctionReturn(0);
 }
 
+/* Whether node a of a face lies on its side k (from corner k to corner
+   k + 1). */
+static PetscBool Segment3dOnSide(Face3dType type, PetscInt a, PetscInt k)
+{
+  PetscReal x[2];
+
+  Face3dNodeXi(type, a, x);
+  if (type == FACE3D_TRI6) return (PetscBool)(k == 0 ? x[1] == 0 : (k == 1 ? x[0] + x[1] == 1 : x[0] == 0));
+  return (PetscBool)(k == 0 ? x[1] == -1 : (k == 1 ? x[0] == 1 : (k == 2 ? x[1] == 1 : x[0] == -1)));
+}
+
+/* The side of a face that holds its nodes a and b, or -1. */
+static PetscInt Segment3dFaceSide(Face3dType type, PetscInt a, PetscInt b)
+{
+  for (PetscInt k = 0; k < (type == FACE3D_TRI6 ? 3 : 4); ++k)
+    if (Segment3dOnSide(type, a, k) && Segment3dOnSide(type, b, k)) return k;
+  return -1;
+}
+
 /* Whether the edge between nodes a and b of master face m (a sub-triangle's
    edge) lies on the master surface's border: on the face's own boundary
-   (both nodes on one side of the reference domain) and no other face given
-   has both points (the same coordinates: the same nodes). */
+   and no other face given has both points (the same coordinates: the same
+   nodes). */
 static PetscBool Segment3dBorderEdge(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b)
 {
   const Face3d *F = &master[m];
-  PetscReal     xa[2], xb[2];
-  PetscBool     side;
 
-  Face3dNodeXi(F->type, a, xa);
-  Face3dNodeXi(F->type, b, xb);
-  if (F->type == FACE3D_TRI6) side = (PetscBool)((xa[0] == 0 && xb[0] == 0) || (xa[1] == 0 && xb[1] == 0) || (xa[0] + xa[1] == 1 && xb[0] + xb[1] == 1));
-  else side = (PetscBool)((xa[0] == xb[0] && PetscAbsReal(xa[0]) == 1) || (xa[1] == xb[1] && PetscAbsReal(xa[1]) == 1));
-  if (!side) return PETSC_FALSE;
+  if (Segment3dFaceSide(F->type, a, b) < 0) return PETSC_FALSE;
   for (PetscInt k = 0; k < nm; ++k) {
     PetscBool hasA = PETSC_FALSE, hasB = PETSC_FALSE;
     if (k == m) continue;
@@ -340,9 +353,46 @@ static void Segment3dSegmentInTriangle(const PetscReal t[6], const PetscReal p[2
   }
 }
 
+/* Whether a point x of the plane P lies on the slave surface's border, to
+   tol: near a vertex of P's sub-triangle on the border (slaveBorder: a bit
+   per node of the slave face), or near an edge between two such vertices
+   on one side of the face. */
+static PetscBool Segment3dNearSlaveBorder(Face3dType stype, PetscInt slaveBorder, const PetscInt tsub[3], const SubPlane *P, const PetscReal x[2], PetscReal tol)
+{
+  for (PetscInt i = 0; i < 3; ++i) {
+    const PetscInt   i1 = (i + 1) % 3;
+    const PetscReal *a = &P->v2d[2 * i], *b = &P->v2d[2 * i1];
+    const PetscReal  ex = b[0] - a[0], ey = b[1] - a[1];
+    if (!(slaveBorder & (1 << tsub[i]))) continue;
+    if (PetscSqr(x[0] - a[0]) + PetscSqr(x[1] - a[1]) <= tol * tol) return PETSC_TRUE;
+    if ((slaveBorder & (1 << tsub[i1])) && Segment3dFaceSide(stype, tsub[i], tsub[i1]) >= 0 && PetscAbsReal(ex * (x[1] - a[1]) - ey * (x[0] - a[0])) <= tol * PetscSqrtReal(ex * ex + ey * ey)) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
+}
+
+/* Whether the part [s0, s1] of the segment p -> q of the plane P lies on
+   the slave surface's border (both its ends within SEGMENT3D_ALONG of P's
+   longest edge of it, Segment3dNearSlaveBorder): both surfaces end there
+   (a symmetry plane that cuts both), S' ends with the slave, and no end of
+   it moves; the master's border, projected on the slave's sub-triangles
+   each along its own normal, only grazes their edges and corners there. */
+static PetscBool Segment3dAlongSlaveBorder(Face3dType stype, PetscInt slaveBorder, const PetscInt tsub[3], const SubPlane *P, const PetscReal p[2], const PetscReal q[2], PetscReal s0, PetscReal s1)
+{
+  PetscReal tol = 0.0;
+
+  if (!slaveBorder) return PETSC_FALSE;
+  for (PetscInt i = 0; i < 3; ++i) tol = PetscMax(tol, PetscSqr(P->v2d[2 * ((i + 1) % 3)] - P->v2d[2 * i]) + PetscSqr(P->v2d[2 * ((i + 1) % 3) + 1] - P->v2d[2 * i + 1]));
+  tol = SEGMENT3D_ALONG * PetscSqrtReal(tol);
+  for (PetscInt k = 0; k < 2; ++k) {
+    const PetscReal s = k ? s1 : s0, x[2] = {p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])};
+    if (!Segment3dNearSlaveBorder(stype, slaveBorder, tsub, P, x, tol)) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
 /* The ends of S' on the slave plane P from master face m's sub-triangle u
    (mt2d its vertices in the plane, as given: either orientation). */
-static PetscErrorCode Segment3dSubEnds(PetscInt nm, const Face3d master[], PetscInt m, const PetscInt msub[3], const PetscInt tsub[3], const SubPlane *P, const PetscReal mt2d[6], EndList *L)
+static PetscErrorCode Segment3dSubEnds(Face3dType stype, PetscInt slaveBorder, PetscInt nm, const Face3d master[], PetscInt m, const PetscInt msub[3], const PetscInt tsub[3], const SubPlane *P, const PetscReal mt2d[6], EndList *L)
 {
   const PetscBool ccw = (PetscBool)(ClipSignedArea(3, mt2d) > 0);
 
@@ -353,6 +403,7 @@ static PetscErrorCode Segment3dSubEnds(PetscInt nm, const Face3d master[], Petsc
     if (!Segment3dBorderEdge(nm, master, m, msub[a], msub[b])) continue;
     Segment3dSegmentInTriangle(P->v2d, &mt2d[2 * a], &mt2d[2 * b], &E.s0, &E.s1);
     if (!(E.s1 - E.s0 > SEGMENT3D_END_TOL)) continue;
+    if (Segment3dAlongSlaveBorder(stype, slaveBorder, tsub, P, &mt2d[2 * a], &mt2d[2 * b], E.s0, E.s1)) continue;
     E.m    = m;
     E.e[0] = msub[a];
     E.e[1] = msub[b];
@@ -366,8 +417,9 @@ static PetscErrorCode Segment3dSubEnds(PetscInt nm, const Face3d master[], Petsc
    (current coordinates), the rule on the unit triangle (weights summing
    to 1/2) for each clipped piece; *pts allocated (PetscFree). With ends
    (or NULL), the ends of S' inside the face (Segment3dEnd), *ends
-   allocated (PetscFree). */
-PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt *np, Segment3dPoint **pts, PetscInt *nend, Segment3dEnd **ends)
+   allocated (PetscFree); slaveBorder: a bit per node of the slave face on
+   the slave surface's border (bit i: node i). */
+PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends)
 {
   PointList       L = {0, 0, NULL};
   EndList         EL = {0, 0, NULL};
@@ -403,7 +455,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
-        if (ends) PetscCall(Segment3dSubEnds(nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
+        if (ends) PetscCall(Segment3dSubEnds(slave->type, slaveBorder, nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
         if (ClipSignedArea(3, mt2d) < 0) { /* the master's parameters follow its vertices in the plane: keep them anticlockwise too */
           PetscReal t2[6], te[6];
           for (PetscInt k = 0; k < 3; ++k)
