@@ -38,10 +38,12 @@ def test_square_cube_converges(centre, tmp_path):
     stalled without the end term), the contact carries the force (`dF` =
     up to 1.1e-9 over the five kernels, bound 1e-7: the force control's
     tolerance), the cube tilts about +y (`tilt` = 1.8e-3 rad) and the
-    moment's free components about c are balanced to what the stop
-    guarantees: they are the gradient's entries along the cube's rotation
-    unknowns (L theta), so |M_xy| / L is at most the gradient's norm at the
-    stop (`moment_over_gradient` = up to 0.04 over the kernels, bound 1)."""
+    contact's moment about c is balanced along the free rotations to what
+    the stop guarantees: (T^T M)_x,y / L (test_rigid3d.free_moment, L the
+    cube's diagonal, sqrt(3) 0.5) are the gradient's entries along the
+    cube's unknowns L theta_x, L theta_y (rigid3d.c), so at most the
+    gradient's norm at the stop (`moment_over_gradient` = up to 0.04 of it
+    over the kernels, bound 1)."""
     res = run_contact(square_cube(centre, SMALL), tmp_path)
     cube = res.summary["bodies"]["cube"]
     assert res.summary["converged"]
