@@ -139,13 +139,13 @@ def test_moment_balance(tmp_path):
     0.5 about z and free to turn about x and y: it tilts towards +x about
     +y (`tilt` = 1.6e-3 rad) until the contact's moment about its current
     reference point is zero along its free rotations (free_moment's x and y:
-    `moment` = up to 3.4e-9 of F L over the kernels, bound 1e-7; the
+    `moment` = up to 2.8e-11 of F L over the kernels, bound 1e-7; the
     stop's gradient bounds it; about z, held, a reaction of 2.3e-5 F L,
     the end of S' at the cube's border, test_border3d.py), the contact
-    carries the force (`dF` = up to 1.3e-8, bound 1e-7: the force control's
+    carries the force (`dF` = up to 1.4e-10, bound 1e-7: the force control's
     tolerance), and the box's own nodal forces, summed independently from
     the HDF5 output at their nodes' current positions, have the same free
-    moment about c + t (`lever` = up to 6.0e-9 of the face's size, bound
+    moment about c + t (`lever` = up to 4.8e-11 of the face's size, bound
     1e-4: the slave's nodes carry them, the master's a gap of 2e-6 apart)."""
     res = run_contact(pressed_cube("0.55,0.5,0.75", "free,free,0.5", "hex=1,n=6,m=3", ["-block_bc", "bottom"]), tmp_path)
     cube = res.summary["bodies"]["cube"]

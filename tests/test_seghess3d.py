@@ -64,9 +64,9 @@ def test_square_cube_unit_step(centre, tmp_path):
     default line search), with the line search off (-tao_ls_type unit, every
     Newton step taken whole): Newton converges (8 steps measured; 10 before
     the end term, when the line search stopped the default solve). At the gradient's root the
-    contact carries the force (`dF_unit` = up to 6.0e-11 over the five
+    contact carries the force (`dF_unit` = up to 1.2e-9 over the five
     kernels, bound 1e-7) and its moment about the loaded point is nil about
-    x and y (`moment_unit` = up to 4.1e-12 of F L, bound 1e-7; about z, held,
+    x and y (`moment_unit` = up to 4.2e-11 of F L, bound 1e-7; about z, held,
     it is a reaction), the cube tilted
     about +y (`tilt_unit` = 1.8e-3 rad, 1.9e-3 at c_x 0.551)."""
     res = run_contact(square_cube(centre, SMALL, ["-tao_ls_type", "unit"]), tmp_path)
