@@ -230,12 +230,14 @@ def test_boussinesq_punch(h, tmp_path):
 @pytest.mark.roundoff
 def test_ranks_agree(tmp_path):
     """The tilted cube (test_moment_balance) on 1 and 2 ranks at the default
-    stop (each run's gradient 2.2e-9, 1.1e-8 of the contact's nodal
-    forces): the force on the cube agrees to `dF` = up to 9.3e-11 (bound: the two
-    runs' gradient norms summed, 4.5e-9, each bounding its force's miss),
-    the motion to `dt` = up to 1.5e-13 of the translation and `drot` = up
-    to 6.8e-13 of the tilt (bound 1e-6: the residual, 1.1e-8 of the nodal forces,
-    through a stiffness 100 times below the contact's)."""
+    stop (each run's gradient 6.8e-11 and 7.3e-11, 3.4e-10 and 3.7e-10 of
+    the contact's nodal forces): the force on the cube agrees to `dF` = up
+    to 7.2e-11 over the kernels, its z part (bound: each run's miss of the
+    force asked, |F_z - 1|, its force control's stop, plus its gradient's
+    norm, summed over the two runs: 3.2e-10), the motion to `dt` = up to
+    2.4e-14 of the translation and `drot` = up to 4.6e-14 of the tilt (bound
+    1e-6: the residual, 3.7e-10 of the nodal forces, through a stiffness 100
+    times below the contact's)."""
     args = pressed_cube("0.55,0.5,0.75", "free,free,0.5", "hex=1,n=6,m=3", ["-block_bc", "bottom", "-output", "none"])
     s1 = run_contact(args, tmp_path, name="one").summary
     s2 = run_contact(args, tmp_path, ranks=2, name="two").summary
@@ -244,7 +246,8 @@ def test_ranks_agree(tmp_path):
     dt = np.abs(np.subtract(one["translation"], two["translation"])).max() / abs(one["translation"][2])
     drot = np.abs(np.subtract(one["rotation"], two["rotation"]))[:2].max() / abs(one["rotation"][1])
     dF = np.abs(np.subtract(one["force"], two["force"])).max()
-    assert figure("dF", dF) <= s1["gradient_norm"] + s2["gradient_norm"]
+    miss = abs(one["force"][2] - 1) + abs(two["force"][2] - 1)
+    assert figure("dF", dF) <= miss + s1["gradient_norm"] + s2["gradient_norm"]
     assert figure("dt", dt) <= 1e-6
     assert figure("drot", drot) <= 1e-6
 
