@@ -20,10 +20,27 @@ typedef struct {
 
 #define SEGMENT3D_MAX_MASTER 64 /* master faces against one slave face, at most */
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
+#define SEGMENT3D_END_TOL 1e-12    /* an end shorter than this (a fraction of the master edge) is dropped */
+#define SEGMENT3D_END_POINTS 5     /* Gauss points along an end (degree 9) */
+#define SEGMENT3D_ALONG 0.1        /* an end this near (of the edge's length) a slave border edge runs along it: no end term */
 #define SEGMENT3D_EDGE_MARGIN 0.0   /* a closest point this far inside the piece's master face is its (no other face tried) */
 
-PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **);
+/* An end of S' inside the slave face: the part s in [s0, s1] of the edge
+   P -> Q of a master face's sub-triangle that lies on the master surface's
+   border (no other master face given shares it), projected on the plane of
+   the slave's sub-triangle of vertices t[] (slave node numbers) and inside
+   it; P -> Q anticlockwise about the master's piece in that plane (the
+   covered part on its left). m: the master face (index into the caller's
+   list); e[]: P's and Q's node numbers in it. */
+typedef struct {
+  PetscInt  m, t[3], e[2];
+  PetscReal s0, s1;
+} Segment3dEnd;
+
+PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
+PetscErrorCode Segment3dEndEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dEnd[], PetscReal[]);
+PetscErrorCode Segment3dEndHessian(const Face3d *, const PetscReal[], const PetscReal[], const PetscReal[], const Face3d *, const Segment3dEnd *, PetscReal[], PetscBool *);
 /* A slave point's closest point on a master face (Segment3dClosestPointAt). */
 typedef struct {
   PetscReal N[FACE3D_MAX_NODES], M[FACE3D_MAX_NODES], dM[2 * FACE3D_MAX_NODES]; /* slave, master shapes; master's derivatives */

@@ -30,7 +30,9 @@
    behind a master edge, in the fan, keeps the Gauss-Newton part). The
    segments are found again at every evaluation (current coordinates);
    their motion is not differentiated (segment3d.c: no term where the
-   integrand is continuous across the master's face edges), which on
+   integrand is continuous across the master's face edges; where the
+   master's border lies inside the slave, the end's term is in G_j and its
+   leading second-order part in the exact Hessian, Mortar3dHessianEnds), which on
    curved faces leaves the Gauss rule's motion out: the Hessian's Taylor
    remainder is second order on the flat patch test and levels at 2.9e-6
    of |H v| on the curved Hertz cap (tests/test_contact3d.py).
@@ -98,6 +100,8 @@ typedef struct {
   PetscReal      *dQ;
   PetscInt        np;  /* its points, kept where keep (the exact Hessian's second-order term) */
   Segment3dPoint *pts;
+  PetscInt        nend; /* the ends of S' inside it (segment3d.c), kept where keep */
+  Segment3dEnd   *ends;
 } Mortar3dFace;
 
 typedef struct {
@@ -326,6 +330,49 @@ static PetscErrorCode Mortar3dKeepNearest(Mortar3d *m, const PetscReal xs[], Pet
   PetscFunctionReturn(0);
 }
 
+/* Whether side k of slave face g (from corner k to corner k + 1, its
+   mid-side node nc + k) lies on the slave surface's border: no other slave
+   face holds both its corners. */
+static PetscBool Mortar3dSideOnBorder(const Mortar3d *m, PetscInt g, PetscInt k)
+{
+  const ContactSurface3d *S  = &m->S[m->s];
+  const PetscInt          nc = S->type == FACE3D_TRI6 ? 3 : 4;
+  const PetscInt          a = S->fnodes[S->nb * g + k], b = S->fnodes[S->nb * g + (k + 1) % nc];
+
+  for (PetscInt r = m->nodeFaceStart[a]; r < m->nodeFaceStart[a + 1]; ++r) {
+    const PetscInt h = m->nodeFace[r];
+    if (h == g) continue;
+    for (PetscInt i = 0; i < S->nb; ++i)
+      if (S->fnodes[S->nb * h + i] == b) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* The nodes of slave face f on the slave surface's border, a bit each (node
+   i of the face: bit i): those on a side of a slave face around them that
+   lies on the border (Mortar3dSideOnBorder). */
+static PetscInt Mortar3dSlaveBorder(const Mortar3d *m, PetscInt f)
+{
+  const ContactSurface3d *S  = &m->S[m->s];
+  const PetscInt          nc = S->type == FACE3D_TRI6 ? 3 : 4;
+  PetscInt                border = 0;
+
+  for (PetscInt i = 0; i < S->nb; ++i) {
+    const PetscInt j = S->fnodes[S->nb * f + i];
+    for (PetscInt r = m->nodeFaceStart[j]; r < m->nodeFaceStart[j + 1] && !(border & (1 << i)); ++r) {
+      const PetscInt g = m->nodeFace[r];
+      for (PetscInt k = 0; k < nc; ++k) {
+        const PetscInt *side = &S->fnodes[S->nb * g];
+        if ((side[k] == j || side[(k + 1) % nc] == j || side[nc + k] == j) && Mortar3dSideOnBorder(m, g, k)) {
+          border |= 1 << i;
+          break;
+        }
+      }
+    }
+  }
+  return border;
+}
+
 /* Slave face f against the master faces near it (deriv: with dQ; keep:
    its points kept in E, PetscFree(E->pts)). */
 static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool deriv, PetscBool keep, Mortar3dFace *E)
@@ -334,12 +381,15 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscReal               xs[27], Xs[27], box[6];
   Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
   const PetscInt         *found;
-  PetscInt                nfound, np;
+  PetscInt                nfound, np, nend = 0;
   Segment3dPoint         *pts;
+  Segment3dEnd           *ends = NULL;
 
   PetscFunctionBeginUser;
-  E->np = 0;
+  E->np   = 0;
+  E->nend = 0;
   PetscCall(PetscFree(E->pts));
+  PetscCall(PetscFree(E->ends));
   if (!m->integrate[f]) { /* far from the master */
     E->nm   = 0;
     E->ndof = 3 * S->nb;
@@ -371,12 +421,18 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
+  if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
   if (keep) {
-    E->np  = np;
-    E->pts = pts;
-  } else PetscCall(PetscFree(pts));
+    E->np   = np;
+    E->pts  = pts;
+    E->nend = nend;
+    E->ends = ends;
+  } else {
+    PetscCall(PetscFree(pts));
+    PetscCall(PetscFree(ends));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -668,6 +724,54 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
   PetscFunctionReturn(0);
 }
 
+/* The exact Hessian's end part: where the master's border lies inside a
+   slave face of this rank's, the leading part of k_p sum_j g_j d2Q_j's
+   end term, sum_j k_p g_j int_end W_j (dg v^T + v dg^T) (segment3d.c,
+   Segment3dEndHessian), one block per end over the slave face's and its
+   master face's dofs; all[] as Mortar3dHessianSecondOrder's. */
+static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[], Mat H)
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+  const PetscInt          n = 3 * (S->nb + M->nb);
+  PetscReal               xs[27], Xs[27], xm[27], K[54 * 54], lam[FACE3D_MAX_NODES];
+  PetscInt                idx[54];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < S->nown; ++k) {
+    const PetscInt      f = S->ownFaces[k];
+    const Mortar3dFace *E = &all[m->hessSlot[f]];
+    Face3d              ref, mf;
+    PetscBool           any = PETSC_FALSE;
+    if (!E->nend) continue;
+    for (PetscInt i = 0; i < S->nb; ++i) {
+      const PetscInt j = S->fnodes[S->nb * f + i];
+      lam[i]           = m->active[j] && m->gj[j] < 0 ? m->kp * m->gj[j] : 0.0;
+      if (lam[i] != 0.0) any = PETSC_TRUE;
+    }
+    if (!any) continue;
+    ContactSurface3dFaceCoords(S, f, S->x, xs);
+    ContactSurface3dFaceCoords(S, f, S->X, Xs);
+    ref.type = S->type;
+    ref.x    = Xs;
+    mf.type  = M->type;
+    mf.x     = xm;
+    for (PetscInt e = 0; e < E->nend; ++e) {
+      const PetscInt face = E->mf[E->ends[e].m];
+      ContactSurface3dFaceCoords(M, face, M->x, xm);
+      PetscCall(PetscArrayzero(K, n * n));
+      any = PETSC_FALSE;
+      PetscCall(Segment3dEndHessian(&ref, xs, &m->Adual[81 * f], lam, &mf, &E->ends[e], K, &any));
+      if (!any) continue;
+      for (PetscInt i = 0; i < S->nb; ++i)
+        for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
+      for (PetscInt i = 0; i < M->nb; ++i)
+        for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
+      PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The Gauss-Newton part k_p sum_j G_j G_j^T / A_j over the nodes j in
    contact this rank assembles (m->nodeRank), G_j's entries by joined index
    summed over the faces around j (all[] by m->hessSlot). The blocks of neighbouring nodes overlap
@@ -782,6 +886,7 @@ static PetscErrorCode Mortar3dHessianAdd(Mortar3d *m, const Mortar3dFace all[], 
   PetscFunctionBeginUser;
   PetscCall(Mortar3dAddGaussNewton(m, all, rank, H));
   if (m->exactHessian) PetscCall(Mortar3dHessianSecondOrder(m, all, H));
+  if (m->exactHessian) PetscCall(Mortar3dHessianEnds(m, all, H));
   if (m->fr) PetscCall(Friction3dAddHessian(m->fr, m->S, m->spec.kp, H));
   PetscFunctionReturn(0);
 }
@@ -915,6 +1020,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
     for (PetscInt k = 0; k < m->nhess; ++k) {
       PetscCall(PetscFree(all[k].dQ));
       PetscCall(PetscFree(all[k].pts));
+      PetscCall(PetscFree(all[k].ends));
     }
   PetscCall(PetscFree(all));
   PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
@@ -1654,6 +1760,7 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
     for (PetscInt k = 0; k < m->S[m->s].nown; ++k) {
       PetscCall(PetscFree(m->own[k].dQ));
       PetscCall(PetscFree(m->own[k].pts));
+      PetscCall(PetscFree(m->own[k].ends));
     }
   PetscCall(PetscFree(m->own));
   PetscCall(BvhDestroy(&m->tree));
@@ -1713,6 +1820,7 @@ static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal
     const PetscInt f = S->ownFaces[k];
     PetscCall(Friction3dLagFace(m->fr, m->S, f, &m->Adual[81 * f], all[k].nm, all[k].mf, all[k].np, all[k].pts));
     PetscCall(PetscFree(all[k].pts));
+    PetscCall(PetscFree(all[k].ends));
     PetscCall(PetscFree(all[k].dQ));
   }
   PetscCall(Friction3dLagExchange(m->fr));

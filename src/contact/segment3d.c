@@ -45,7 +45,7 @@
    xi (the segments are not differentiated: the exact integral of an
    integrand continuous across the master's face edges has no term there;
    where the master ends inside S, the end moves and its term, W_j g on the
-   end times its motion, is left out as 2D leaves its end cuts). At the
+   end times its motion, is Segment3dEndEvaluate's, below). At the
    closest point x_s - x_m = g n, t_a . n = 0 and dn . n = 0, so the
    motions of eta* and of n drop out:
      dg = n . (sum_i N_i(xi) dx_i - sum_k M_k(eta*) dx_k),
@@ -60,6 +60,7 @@
    edge, orthogonal to x_s - x_m = g n, so dg has the same form with that
    n; Segment3dProjectionDerivative is the interior's. */
 #include "segment3d.h"
+#include <petscdt.h>
 #include "clip.h"
 
 static inline PetscReal Dot3(const PetscReal a[3], const PetscReal b[3])
@@ -274,12 +275,154 @@ static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *
   PetscFunctionReturn(0);
 }
 
+typedef struct {
+  PetscInt      n, cap;
+  Segment3dEnd *e;
+} EndList;
+
+static PetscErrorCode EndListPush(EndList *L, const Segment3dEnd *q)
+{
+  PetscFunctionBeginUser;
+  if (L->n == L->cap) {
+    Segment3dEnd *e;
+    L->cap = L->cap ? 2 * L->cap : 8;
+    PetscCall(PetscMalloc1(L->cap, &e));
+    if (L->n) PetscCall(PetscArraycpy(e, L->e, L->n));
+    PetscCall(PetscFree(L->e));
+    L->e = e;
+  }
+  L->e[L->n++] = *q;
+  PetscFunctionReturn(0);
+}
+
+/* Whether node a of a face lies on its side k (from corner k to corner
+   k + 1). */
+static PetscBool Segment3dOnSide(Face3dType type, PetscInt a, PetscInt k)
+{
+  PetscReal x[2];
+
+  Face3dNodeXi(type, a, x);
+  if (type == FACE3D_TRI6) return (PetscBool)(k == 0 ? x[1] == 0 : (k == 1 ? x[0] + x[1] == 1 : x[0] == 0));
+  return (PetscBool)(k == 0 ? x[1] == -1 : (k == 1 ? x[0] == 1 : (k == 2 ? x[1] == 1 : x[0] == -1)));
+}
+
+/* The side of a face that holds its nodes a and b, or -1. */
+static PetscInt Segment3dFaceSide(Face3dType type, PetscInt a, PetscInt b)
+{
+  for (PetscInt k = 0; k < (type == FACE3D_TRI6 ? 3 : 4); ++k)
+    if (Segment3dOnSide(type, a, k) && Segment3dOnSide(type, b, k)) return k;
+  return -1;
+}
+
+/* Whether the edge between nodes a and b of master face m (a sub-triangle's
+   edge) lies on the master surface's border: on the face's own boundary
+   and no other face given has both points (the same coordinates: the same
+   nodes). */
+static PetscBool Segment3dBorderEdge(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b)
+{
+  const Face3d *F = &master[m];
+
+  if (Segment3dFaceSide(F->type, a, b) < 0) return PETSC_FALSE;
+  for (PetscInt k = 0; k < nm; ++k) {
+    PetscBool hasA = PETSC_FALSE, hasB = PETSC_FALSE;
+    if (k == m) continue;
+    for (PetscInt i = 0; i < Face3dNodes(master[k].type); ++i) {
+      const PetscReal *y = &master[k].x[3 * i];
+      if (y[0] == F->x[3 * a] && y[1] == F->x[3 * a + 1] && y[2] == F->x[3 * a + 2]) hasA = PETSC_TRUE;
+      if (y[0] == F->x[3 * b] && y[1] == F->x[3 * b + 1] && y[2] == F->x[3 * b + 2]) hasB = PETSC_TRUE;
+    }
+    if (hasA && hasB) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* The part [*s0, *s1] of the segment p + s (q - p), s in [0, 1], inside the
+   anticlockwise triangle t[6] (Cyrus-Beck; *s1 <= *s0 where none). */
+static void Segment3dSegmentInTriangle(const PetscReal t[6], const PetscReal p[2], const PetscReal q[2], PetscReal *s0, PetscReal *s1)
+{
+  *s0 = 0.0;
+  *s1 = 1.0;
+  for (PetscInt k = 0; k < 3; ++k) {
+    const PetscReal *a = &t[2 * k], *b = &t[2 * ((k + 1) % 3)];
+    const PetscReal  ex = b[0] - a[0], ey = b[1] - a[1];
+    const PetscReal  sp = ex * (p[1] - a[1]) - ey * (p[0] - a[0]), sq = ex * (q[1] - a[1]) - ey * (q[0] - a[0]);
+    if (sp == sq) {
+      if (sp < 0) *s1 = -1.0;
+    } else if (sq > sp) *s0 = PetscMax(*s0, sp / (sp - sq));
+    else *s1 = PetscMin(*s1, sp / (sp - sq));
+  }
+}
+
+/* Whether a point x of the plane P lies on the slave surface's border, to
+   tol: near a vertex of P's sub-triangle on the border (slaveBorder: a bit
+   per node of the slave face), or near an edge between two such vertices
+   on one side of the face. */
+static PetscBool Segment3dNearSlaveBorder(Face3dType stype, PetscInt slaveBorder, const PetscInt tsub[3], const SubPlane *P, const PetscReal x[2], PetscReal tol)
+{
+  for (PetscInt i = 0; i < 3; ++i) {
+    const PetscInt   i1 = (i + 1) % 3;
+    const PetscReal *a = &P->v2d[2 * i], *b = &P->v2d[2 * i1];
+    const PetscReal  ex = b[0] - a[0], ey = b[1] - a[1];
+    if (!(slaveBorder & (1 << tsub[i]))) continue;
+    if (PetscSqr(x[0] - a[0]) + PetscSqr(x[1] - a[1]) <= tol * tol) return PETSC_TRUE;
+    if ((slaveBorder & (1 << tsub[i1])) && Segment3dFaceSide(stype, tsub[i], tsub[i1]) >= 0 && PetscAbsReal(ex * (x[1] - a[1]) - ey * (x[0] - a[0])) <= tol * PetscSqrtReal(ex * ex + ey * ey)) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
+}
+
+/* Whether the part [s0, s1] of the segment p -> q of the plane P lies on
+   the slave surface's border (both its ends within SEGMENT3D_ALONG of P's
+   longest edge of it, Segment3dNearSlaveBorder): both surfaces end there
+   (a symmetry plane that cuts both), S' ends with the slave, and no end of
+   it moves; the master's border, projected on the slave's sub-triangles
+   each along its own normal, only grazes their edges and corners there. */
+static PetscBool Segment3dAlongSlaveBorder(Face3dType stype, PetscInt slaveBorder, const PetscInt tsub[3], const SubPlane *P, const PetscReal p[2], const PetscReal q[2], PetscReal s0, PetscReal s1)
+{
+  PetscReal tol = 0.0;
+
+  if (!slaveBorder) return PETSC_FALSE;
+  for (PetscInt i = 0; i < 3; ++i) tol = PetscMax(tol, PetscSqr(P->v2d[2 * ((i + 1) % 3)] - P->v2d[2 * i]) + PetscSqr(P->v2d[2 * ((i + 1) % 3) + 1] - P->v2d[2 * i + 1]));
+  tol = SEGMENT3D_ALONG * PetscSqrtReal(tol);
+  for (PetscInt k = 0; k < 2; ++k) {
+    const PetscReal s = k ? s1 : s0, x[2] = {p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])};
+    if (!Segment3dNearSlaveBorder(stype, slaveBorder, tsub, P, x, tol)) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* The ends of S' on the slave plane P from master face m's sub-triangle u
+   (mt2d its vertices in the plane, as given: either orientation). */
+static PetscErrorCode Segment3dSubEnds(Face3dType stype, PetscInt slaveBorder, PetscInt nm, const Face3d master[], PetscInt m, const PetscInt msub[3], const PetscInt tsub[3], const SubPlane *P, const PetscReal mt2d[6], EndList *L)
+{
+  const PetscBool ccw = (PetscBool)(ClipSignedArea(3, mt2d) > 0);
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 3; ++k) {
+    const PetscInt a = ccw ? k : (k + 1) % 3, b = ccw ? (k + 1) % 3 : k; /* the piece on the left of a -> b */
+    Segment3dEnd   E;
+    if (!Segment3dBorderEdge(nm, master, m, msub[a], msub[b])) continue;
+    Segment3dSegmentInTriangle(P->v2d, &mt2d[2 * a], &mt2d[2 * b], &E.s0, &E.s1);
+    if (!(E.s1 - E.s0 > SEGMENT3D_END_TOL)) continue;
+    if (Segment3dAlongSlaveBorder(stype, slaveBorder, tsub, P, &mt2d[2 * a], &mt2d[2 * b], E.s0, E.s1)) continue;
+    E.m    = m;
+    E.e[0] = msub[a];
+    E.e[1] = msub[b];
+    for (PetscInt i = 0; i < 3; ++i) E.t[i] = tsub[i];
+    PetscCall(EndListPush(L, &E));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The integration points of the slave face against the nm master faces
    (current coordinates), the rule on the unit triangle (weights summing
-   to 1/2) for each clipped piece; *pts allocated (PetscFree). */
-PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt *np, Segment3dPoint **pts)
+   to 1/2) for each clipped piece; *pts allocated (PetscFree). With ends
+   (or NULL), the ends of S' inside the face (Segment3dEnd), *ends
+   allocated (PetscFree); slaveBorder: a bit per node of the slave face on
+   the slave surface's border (bit i: node i). */
+PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends)
 {
   PointList       L = {0, 0, NULL};
+  EndList         EL = {0, 0, NULL};
   PetscInt        ns, nsm;
   const PetscInt(*sub)[3], (*msub)[3];
   PetscReal      *boxes;
@@ -312,6 +455,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
+        if (ends) PetscCall(Segment3dSubEnds(slave->type, slaveBorder, nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
         if (ClipSignedArea(3, mt2d) < 0) { /* the master's parameters follow its vertices in the plane: keep them anticlockwise too */
           PetscReal t2[6], te[6];
           for (PetscInt k = 0; k < 3; ++k)
@@ -330,6 +474,10 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PetscCall(PetscFree(boxes));
   *np  = L.n;
   *pts = L.p;
+  if (ends) {
+    *nend = EL.n;
+    *ends = EL.e;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -426,4 +574,184 @@ void Segment3dProjectionDerivative(const Segment3dClosest *c, PetscInt ns, Petsc
     deta[col]     = -(Ki[0] * r[0] + Ki[1] * r[1]);
     deta[n + col] = -(Ki[1] * r[0] + Ki[2] * r[1]);
   }
+}
+
+/* The end term (Segment3dEnd). Q_j = int_R W_j g J dxi over the part R of
+   the slave's parameter plane that the pieces tile; on one slave
+   sub-triangle T (vertices x0, x1, x2, a = x1 - x0, b = x2 - x0, c = a x b,
+   n = c / |c|) a point's slave parameters are affine in its barycentric
+   coordinates l = (l1, l2) in T, dxi = D dl, D = 2 (T's area in xi), and a
+   master point y projects on T's plane at
+     y - x0 = l1 a + l2 b + t n,  l1 = (y - x0) . beta1, l2 = (y - x0) . beta2,
+     beta1 = (b x n) / |c|,  beta2 = (n x a) / |c|.
+   Where R ends on a master border edge P -> Q (its projection inside T,
+   y(s) = x_P + s (x_Q - x_P), the covered part on its left), the edge moves
+   in l with the nodes, and the derivative of the integral over a moving
+   domain adds the flux through it (outward normal motion times the
+   integrand; in l the outward normal motion times the length is the 2D
+   cross product dl x l', l' = dl/ds = l(Q) - l(P)):
+     dQ_j += int_s0^s1 W_j g J D (dl(s) x l') ds.
+   dl from varying y - x0 = l1 a + l2 b + t n and dotting with beta1 and
+   beta2 (a . beta1 = b . beta2 = 1, b . beta1 = a . beta2 = n . beta = 0):
+     dl_k = beta_k . (dy - (1 - l1 - l2) dx0 - l1 dx1 - l2 dx2 - t dn),
+   dn = (I - n n^T) (da x b + a x db) / |c|, so that
+     t dn . beta1 = t (-|b|^2 n . da + (a . b) n . db) / |c|^2,
+     t dn . beta2 = t ((a . b) n . da - |a|^2 n . db) / |c|^2,
+   da = dx1 - dx0, db = dx2 - dx0, dy = (1 - s) dx_P + s dx_Q. The other
+   edges of R (T's edges, fixed in l; the master's edges shared by two
+   faces or inside a face, across which the integrand is continuous, the
+   two sides' fluxes cancelling) have no term. The flux integrand is O(g)
+   (the gradient's term is O(p g)); its derivative's leading part, with
+   the points' dg as inside,
+     d2Q_j += int_end W_j J D (dg v^T + v dg^T) ds,  v = dl x l',
+   the rest O(g) (left out: O(p g) in the Hessian). */
+typedef struct {
+  PetscReal xi[2], w, g, n[3], N[FACE3D_MAX_NODES], Nm[FACE3D_MAX_NODES], W[FACE3D_MAX_NODES], v[15];
+} Segment3dEndPt;
+
+/* The end E at s (master face M, current slave coordinates xs, reference
+   face Xref, dual coefficients Adual): the point's slave parameters, the
+   weight J D ds (ds the Gauss weight wq times the end's length in s), W_j,
+   g and n at its closest point on M, the shapes, and v[5][3] (over T's
+   vertices, then P, Q). */
+static void Segment3dEndPointAt(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], const Face3d *M, const Segment3dEnd *E, PetscReal s, PetscReal wq, Segment3dEndPt *q)
+{
+  PetscReal x[3][3], xP[3], xQ[3], a[3], b[3], c[3], n[3], b1[3], b2[3], y[3], r[3], dy[3], txi[6], lp[2], l1, l2, t, cc, ab, aa, bb, D, X[3], T[6], nr[3], xsp[3], xm[3], eta[2], eP[2], eQ[2];
+  PetscBool clamped;
+
+  for (PetscInt k = 0; k < 3; ++k) {
+    for (PetscInt d = 0; d < 3; ++d) x[k][d] = xs[3 * E->t[k] + d];
+    Face3dNodeXi(Xref->type, E->t[k], &txi[2 * k]);
+  }
+  for (PetscInt d = 0; d < 3; ++d) {
+    xP[d] = M->x[3 * E->e[0] + d];
+    xQ[d] = M->x[3 * E->e[1] + d];
+    a[d]  = x[1][d] - x[0][d];
+    b[d]  = x[2][d] - x[0][d];
+    y[d]  = xP[d] + s * (xQ[d] - xP[d]);
+    r[d]  = y[d] - x[0][d];
+    dy[d] = xQ[d] - xP[d];
+  }
+  Cross3(a, b, c);
+  cc = Dot3(c, c);
+  for (PetscInt d = 0; d < 3; ++d) n[d] = c[d] / PetscSqrtReal(cc);
+  Cross3(b, n, b1);
+  Cross3(n, a, b2);
+  for (PetscInt d = 0; d < 3; ++d) {
+    b1[d] /= PetscSqrtReal(cc);
+    b2[d] /= PetscSqrtReal(cc);
+  }
+  l1    = Dot3(r, b1);
+  l2    = Dot3(r, b2);
+  t     = Dot3(r, n);
+  lp[0] = Dot3(dy, b1);
+  lp[1] = Dot3(dy, b2);
+  ab    = Dot3(a, b);
+  aa    = Dot3(a, a);
+  bb    = Dot3(b, b);
+  D     = PetscAbsReal((txi[2] - txi[0]) * (txi[5] - txi[1]) - (txi[3] - txi[1]) * (txi[4] - txi[0]));
+  for (PetscInt k = 0; k < 2; ++k) q->xi[k] = txi[k] + l1 * (txi[2 + k] - txi[k]) + l2 * (txi[4 + k] - txi[k]);
+  for (PetscInt d = 0; d < 3; ++d) { /* v = dl1 l'_2 - dl2 l'_1 over x0, x1, x2, x_P, x_Q */
+    const PetscReal beta = b1[d] * lp[1] - b2[d] * lp[0];
+    const PetscReal t1   = t * (bb * lp[1] + ab * lp[0]) / cc; /* -t dn . (beta1 l'_2 - beta2 l'_1) on n . dx1 */
+    const PetscReal t2   = -t * (ab * lp[1] + aa * lp[0]) / cc; /* on n . dx2 */
+    q->v[3 * 0 + d] = -(1 - l1 - l2) * beta - (t1 + t2) * n[d];
+    q->v[3 * 1 + d] = -l1 * beta + t1 * n[d];
+    q->v[3 * 2 + d] = -l2 * beta + t2 * n[d];
+    q->v[3 * 3 + d] = (1 - s) * beta;
+    q->v[3 * 4 + d] = s * beta;
+  }
+  Face3dEval(Xref->type, Xref->x, q->xi, X, T, NULL);
+  q->w = Face3dNormal(T, nr) * D * wq * (E->s1 - E->s0);
+  Face3dWeights(Xref->type, Adual, q->xi, q->W);
+  Face3dShape(Xref->type, q->xi, q->N, NULL, NULL);
+  Face3dEval(Xref->type, xs, q->xi, xsp, NULL, NULL);
+  Face3dNodeXi(M->type, E->e[0], eP);
+  Face3dNodeXi(M->type, E->e[1], eQ);
+  for (PetscInt k = 0; k < 2; ++k) eta[k] = eP[k] + s * (eQ[k] - eP[k]);
+  Face3dClosestPointOnFace(M->type, M->x, xsp, SEGMENT3D_IN_TOL, eta, &clamped);
+  Face3dEval(M->type, M->x, eta, xm, T, NULL);
+  Face3dNormal(T, q->n);
+  Face3dShape(M->type, eta, q->Nm, NULL, NULL);
+  q->g = (xsp[0] - xm[0]) * q->n[0] + (xsp[1] - xm[1]) * q->n[1] + (xsp[2] - xm[2]) * q->n[2];
+}
+
+/* The Gauss-Legendre rule of SEGMENT3D_END_POINTS points on [0, 1]. */
+static PetscErrorCode Segment3dEndRule(PetscReal s[], PetscReal w[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscDTGaussQuadrature(SEGMENT3D_END_POINTS, 0.0, 1.0, s, w));
+  PetscFunctionReturn(0);
+}
+
+/* The ends' term of dQ (Segment3dEvaluate's layout: dQ[j ndof + c], the
+   slave's dofs, then the nm master faces'), added. */
+PetscErrorCode Segment3dEndEvaluate(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], PetscInt nm, const Face3d master[], PetscInt nend, const Segment3dEnd ends[], PetscReal dQ[])
+{
+  const PetscInt ns = Face3dNodes(Xref->type);
+  PetscInt       ndof = 3 * ns, off[SEGMENT3D_MAX_MASTER];
+  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
+
+  PetscFunctionBeginUser;
+  if (!nend) PetscFunctionReturn(0);
+  for (PetscInt m = 0; m < nm; ++m) {
+    off[m] = ndof;
+    ndof += 3 * Face3dNodes(master[m].type);
+  }
+  PetscCall(Segment3dEndRule(sq, wq));
+  for (PetscInt e = 0; e < nend; ++e) {
+    const Segment3dEnd *E = &ends[e];
+    for (PetscInt q = 0; q < SEGMENT3D_END_POINTS; ++q) {
+      Segment3dEndPt pt;
+      PetscInt       col[5];
+      Segment3dEndPointAt(Xref, xs, Adual, &master[E->m], E, E->s0 + sq[q] * (E->s1 - E->s0), wq[q], &pt);
+      for (PetscInt k = 0; k < 3; ++k) col[k] = 3 * E->t[k];
+      col[3] = off[E->m] + 3 * E->e[0];
+      col[4] = off[E->m] + 3 * E->e[1];
+      for (PetscInt j = 0; j < ns; ++j) {
+        const PetscReal f = pt.W[j] * pt.w * pt.g;
+        for (PetscInt k = 0; k < 5; ++k)
+          for (PetscInt d = 0; d < 3; ++d) dQ[j * ndof + col[k] + d] += f * pt.v[3 * k + d];
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The end E's leading Hessian part, sum_j lam_j d2Q_j's O(1) end term,
+   lam[j] per slave node (k_p g_j where in contact, else 0), added into
+   K[n][n] over the slave face's and the master face M's dofs (n = 3 (ns +
+   nm), the slave's first); *any: whether it added. */
+PetscErrorCode Segment3dEndHessian(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], const PetscReal lam[], const Face3d *M, const Segment3dEnd *E, PetscReal K[], PetscBool *any)
+{
+  const PetscInt ns = Face3dNodes(Xref->type), n = 3 * (ns + Face3dNodes(M->type));
+  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
+  PetscInt       col[5];
+
+  PetscFunctionBeginUser;
+  PetscCall(Segment3dEndRule(sq, wq));
+  for (PetscInt k = 0; k < 3; ++k) col[k] = 3 * E->t[k];
+  col[3] = 3 * (ns + E->e[0]);
+  col[4] = 3 * (ns + E->e[1]);
+  for (PetscInt q = 0; q < SEGMENT3D_END_POINTS; ++q) {
+    Segment3dEndPt pt;
+    PetscReal      L = 0.0, dg[3 * 2 * FACE3D_MAX_NODES];
+    Segment3dEndPointAt(Xref, xs, Adual, M, E, E->s0 + sq[q] * (E->s1 - E->s0), wq[q], &pt);
+    for (PetscInt j = 0; j < ns; ++j) L += lam[j] * pt.W[j] * pt.w;
+    if (L == 0.0) continue;
+    *any = PETSC_TRUE;
+    for (PetscInt i = 0; i < ns; ++i)
+      for (PetscInt d = 0; d < 3; ++d) dg[3 * i + d] = pt.N[i] * pt.n[d];
+    for (PetscInt i = 0; i < Face3dNodes(M->type); ++i)
+      for (PetscInt d = 0; d < 3; ++d) dg[3 * (ns + i) + d] = -pt.Nm[i] * pt.n[d];
+    for (PetscInt k = 0; k < 5; ++k)
+      for (PetscInt d = 0; d < 3; ++d) {
+        const PetscReal vk = L * pt.v[3 * k + d];
+        for (PetscInt c = 0; c < n; ++c) {
+          K[(col[k] + d) * n + c] += vk * dg[c];
+          K[c * n + col[k] + d] += vk * dg[c];
+        }
+      }
+  }
+  PetscFunctionReturn(0);
 }
