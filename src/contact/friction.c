@@ -154,6 +154,8 @@ struct _n_Friction {
   PetscReal  *stageC;             /* [nstageMax] stick half-width at each stage's end */
   PetscReal  *stageSet;           /* [nstageMax][3][nn] shear, accumulated slip and stick at each stage's end */
   PetscInt    nstage, nstageMax;
+  PetscBool   tie;                /* an increment from rest builds its rows at its first state (FrictionSetTieAtRest) */
+  PetscBool   rowsPending;        /* at rest, tied, its rows not built yet (FrictionRowsPending) */
 };
 
 static PetscLogEvent FRICTION_EnergyGrad, FRICTION_Hessian, FRICTION_Lag;
@@ -250,10 +252,33 @@ PetscErrorCode FrictionReset(Friction f, const ContactSurface S[2])
   for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY; /* whatever rows there are tied: see above */
   PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
   PetscCall(PetscArrayzero(f->off, f->nn));
-  f->nent    = 0;
-  f->nstage  = 0;
-  f->pending = PETSC_FALSE;
+  f->nent        = 0;
+  f->nstage      = 0;
+  f->pending     = PETSC_FALSE;
+  f->rowsPending = f->tie;
   PetscFunctionReturn(0);
+}
+
+/* The tied start of an increment from rest: the bound at rest is already
+   infinite (FrictionReset), and the rows are built at the first state the
+   pair evaluates (FrictionRowsPending; the caller lags with no pressures)
+   instead of at the first lag, so that every node whose points meet the
+   master is held along it by k_t from the first solve: a stick everywhere,
+   with an equilibrium whatever the tangential force given (a node the tie
+   held apart lets go at the next lag, its bound mu p_j = 0). For pairs where
+   a body given forces alone would otherwise be free along the contact in
+   its first solve (ContactTermTiesAtRest). */
+PetscErrorCode FrictionSetTieAtRest(Friction f, const ContactSurface S[2])
+{
+  PetscFunctionBeginUser;
+  f->tie = PETSC_TRUE;
+  PetscCall(FrictionReset(f, S));
+  PetscFunctionReturn(0);
+}
+
+PetscBool FrictionRowsPending(Friction f)
+{
+  return f->rowsPending;
 }
 
 PetscErrorCode FrictionBegin(Friction f)
@@ -264,6 +289,8 @@ PetscErrorCode FrictionBegin(Friction f)
   PetscCall(PetscArraycpy(f->sel, f->selN, f->nn));
   PetscCall(PetscArraycpy(f->slip, f->slipN, f->nn));
   PetscCall(PetscArraycpy(f->boundAcc, f->boundN, f->nn));
+  if (f->tie)
+    for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY; /* every increment starts tied (FrictionSetTieAtRest) */
   f->pending = PETSC_FALSE;
   FrictionOffsets(f); /* the rows of the last lag, measured from the new accepted state */
   PetscFunctionReturn(0);
@@ -439,6 +466,7 @@ PetscErrorCode FrictionLag(Friction f, const ContactSurface S[2], PetscInt np, c
   PetscCall(PetscLogEventBegin(FRICTION_Lag, 0, 0, 0, 0));
   ContactSurfaceNodalTangents(&S[f->slave], f->tau);
   PetscCall(FrictionBuildRows(f, S, np, pts, cover));
+  f->rowsPending = PETSC_FALSE;
   for (PetscInt j = 0; j < f->nn; ++j) {
     const PetscReal b = p ? f->mu * p[j] : f->bound[j];
     dmax              = PetscIsInfReal(f->bound[j]) ? PETSC_INFINITY : PetscMax(dmax, PetscAbsReal(b - f->bound[j]));
