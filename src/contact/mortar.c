@@ -1768,6 +1768,13 @@ static PetscErrorCode MortarFrictionBegin(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MortarFrictionScaleBound(EnergyTerm t, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  PetscCall(FrictionScaleBound(((Mortar *)t->data)->fr, growth));
+  PetscFunctionReturn(0);
+}
+
 /* The slave's shear (surface s as slave) at point x of the other surface,
    as the traction it puts there per unit current measure, -q tau_s (the
    slave's is -q tau_s on itself, the master's the opposite), into t[2]: q
@@ -1997,6 +2004,7 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
     t->ops.lag     = MortarFrictionLag;
     t->ops.accept  = MortarFrictionAccept;
     t->ops.begin   = MortarFrictionBegin;
+    t->ops.scalebound = MortarFrictionScaleBound;
     t->ops.restore = MortarFrictionRestore;
     t->ops.reset   = MortarFrictionReset;
     t->ops.writehdf5 = MortarWriteHDF5;
