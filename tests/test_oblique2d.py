@@ -86,3 +86,15 @@ def test_oblique_above_mu_refused(tmp_path):
     assert len(lines) == 1 and lines[0].startswith("contact: error: pair interface: the forces given on body disc at stage 1 ")
     assert "Q/(mu P) = 1.1" in lines[0]
     assert not res.output_path.exists() and not res.summary_path.exists()
+
+
+@pytest.mark.roundoff
+def test_oblique_ranks_agree(tmp_path):
+    """4 increments on 1 and 2 ranks (the scaled bound is every rank's
+    whole, friction.c): c/a, P and Q agree within 1e-8 relative, the fixed
+    point's stop (-contact_friction_lag_rtol). Measured:
+    `oblique_ranks_gap` = 5.9e-13."""
+    runs = [run_contact(SCENE + ["-load_steps", "4"], tmp_path, ranks=r, name=f"r{r}").summary["contact"]["interface"] for r in (1, 2)]
+    gap = max(abs(runs[0][k] - runs[1][k]) / abs(runs[0][k]) for k in ("stick_half_width", "tangential_load", "P", "fem_a_moment"))
+    figure("oblique_ranks_gap", gap)
+    assert gap < 1e-8
