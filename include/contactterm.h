@@ -40,6 +40,8 @@ PetscErrorCode ContactTermAddHessian(const ContactTerm *, Mat H, PetscInt n, con
    across it) at some stage, is one line naming the pair, the body, the stage
    and the forces. */
 PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *, Body[]);
+/* Whether the pair's friction starts an increment from rest tied (givenforces.c). */
+PetscBool ContactTermTiesAtRest(const ContactTerm *, Body[]);
 /* Each surface's inward normals handed to its body, for the check of what
    holds it (support.h), before solving. */
 PetscErrorCode ContactTermAddSupport(const ContactTerm *, Body[]);

@@ -31,6 +31,7 @@ typedef struct {
   PetscErrorCode (*lag)(EnergyTerm, Body[], PetscReal *change);
   PetscErrorCode (*accept)(EnergyTerm, Body[], PetscReal load);
   PetscErrorCode (*begin)(EnergyTerm);
+  PetscErrorCode (*scalebound)(EnergyTerm, PetscReal growth);
   PetscErrorCode (*stickhalfwidth)(EnergyTerm, PetscInt stage, PetscReal *c, PetscBool *has);
   PetscErrorCode (*restore)(EnergyTerm, Body[]);
   PetscErrorCode (*reset)(EnergyTerm, Body[]);
@@ -101,6 +102,10 @@ PetscBool      EnergyTermHasState(EnergyTerm);
 PetscErrorCode EnergyTermLag(EnergyTerm, Body[], PetscReal *change);
 PetscErrorCode EnergyTermAccept(EnergyTerm, Body[], PetscReal load);
 PetscErrorCode EnergyTermBegin(EnergyTerm);
+/* A term whose increment from rest starts tied (friction.c, FrictionSetTieAtRest):
+   the next increments' first solve with the accepted bound times growth, the
+   given forces' (a no-op for any other term). */
+PetscErrorCode EnergyTermScaleBound(EnergyTerm, PetscReal growth);
 PetscErrorCode EnergyTermRestore(EnergyTerm, Body[]);
 PetscErrorCode EnergyTermReset(EnergyTerm, Body[]);
 /* A frictional term's stick zone half-width at the end of load stage k

@@ -47,6 +47,12 @@ PetscErrorCode FrictionBegin(Friction);
 PetscErrorCode FrictionRestore(Friction);
 /* Back to rest: no slip, no pressure, the reference coordinates. */
 PetscErrorCode FrictionReset(Friction, const ContactSurface S[2]);
+/* An increment from rest starts tied: its rows built at the first state
+   evaluated (FrictionRowsPending: the caller then lags with no pressures). */
+PetscErrorCode FrictionSetTieAtRest(Friction, const ContactSurface S[2]);
+PetscBool      FrictionRowsPending(Friction);
+/* A tied pair's next increments start from the accepted bound times growth (the given forces'). */
+PetscErrorCode FrictionScaleBound(Friction, PetscReal growth);
 /* The last converged increment's stick zone half-width (its ends between
    nodes where the shear reaches Coulomb's bound; r-z: its radius), and the
    number of stage ends recorded with the half-width at each. */

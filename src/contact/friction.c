@@ -154,6 +154,8 @@ struct _n_Friction {
   PetscReal  *stageC;             /* [nstageMax] stick half-width at each stage's end */
   PetscReal  *stageSet;           /* [nstageMax][3][nn] shear, accumulated slip and stick at each stage's end */
   PetscInt    nstage, nstageMax;
+  PetscBool   tie;                /* an increment from rest builds its rows at its first state (FrictionSetTieAtRest) */
+  PetscBool   rowsPending;        /* at rest, tied, its rows not built yet (FrictionRowsPending) */
 };
 
 static PetscLogEvent FRICTION_EnergyGrad, FRICTION_Hessian, FRICTION_Lag;
@@ -250,9 +252,59 @@ PetscErrorCode FrictionReset(Friction f, const ContactSurface S[2])
   for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = f->boundAcc[j] = PETSC_INFINITY; /* whatever rows there are tied: see above */
   PetscCall(PetscArrayzero(f->rowStart, f->nn + 1));
   PetscCall(PetscArrayzero(f->off, f->nn));
-  f->nent    = 0;
-  f->nstage  = 0;
-  f->pending = PETSC_FALSE;
+  f->nent        = 0;
+  f->nstage      = 0;
+  f->pending     = PETSC_FALSE;
+  f->rowsPending = f->tie;
+  PetscFunctionReturn(0);
+}
+
+/* The tied start of an increment from rest: the bound at rest is already
+   infinite (FrictionReset), and the rows are built at the first state the
+   pair evaluates (FrictionRowsPending; the caller lags with no pressures)
+   instead of at the first lag, so that every node whose points meet the
+   master is held along it by k_t from the first solve: a stick everywhere,
+   with an equilibrium whatever the tangential force given (a node the tie
+   held apart lets go at the next lag, its bound mu p_j = 0). For pairs where
+   a body given forces alone would otherwise be free along the contact in
+   its first solve (ContactTermTiesAtRest). The increments after it start
+   from the bound scaled by the load (FrictionScaleBound). */
+PetscErrorCode FrictionSetTieAtRest(Friction f, const ContactSurface S[2])
+{
+  PetscFunctionBeginUser;
+  f->tie = PETSC_TRUE;
+  PetscCall(FrictionReset(f, S));
+  PetscFunctionReturn(0);
+}
+
+PetscBool FrictionRowsPending(Friction f)
+{
+  return f->rowsPending;
+}
+
+/* A tied pair's increment after the first (staging.c; growth the given
+   forces' over the increment: load / accepted load within the first stage,
+   1 after it): its first solve's bound is the accepted one times growth,
+   mu p_j as the pressure would be where the contact is loaded in
+   proportion, and the fixed point goes on from there (its answer does not
+   depend on that start: the disc of tests/test_oblique2d.py in 8
+   increments gave the same c/a and shear to the digits printed either
+   way). Every increment used to start tied, the bound infinite, as the one
+   from rest: with the force control's penalty continuation each
+   increment's softer stage then moved the tied nodes 1000 times as far
+   along, the full penalty's stage began with their shear k_t e that many
+   times the bound (energy 5.3e4 against 660) and its line search failed
+   (the cattaneo scene given P and Q = 0.5 mu P in one stage, in 4, 12, 16
+   or 32 increments: DIVERGED_LS_FAILURE or DIVERGED_MAXITS after 70-420
+   s). Tied at the full penalty alone it converged, but its first solve put
+   pressures 5 times the answer's where the tie held open nodes, and the
+   fixed point took 7 lags an increment (4 increments: 232 Newton
+   iterations, 14 s; scaled, the softer stage kept: 137, 9 s). */
+PetscErrorCode FrictionScaleBound(Friction f, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  if (!f->tie) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = growth * f->boundAcc[j];
   PetscFunctionReturn(0);
 }
 
@@ -439,6 +491,7 @@ PetscErrorCode FrictionLag(Friction f, const ContactSurface S[2], PetscInt np, c
   PetscCall(PetscLogEventBegin(FRICTION_Lag, 0, 0, 0, 0));
   ContactSurfaceNodalTangents(&S[f->slave], f->tau);
   PetscCall(FrictionBuildRows(f, S, np, pts, cover));
+  f->rowsPending = PETSC_FALSE;
   for (PetscInt j = 0; j < f->nn; ++j) {
     const PetscReal b = p ? f->mu * p[j] : f->bound[j];
     dmax              = PetscIsInfReal(f->bound[j]) ? PETSC_INFINITY : PetscMax(dmax, PetscAbsReal(b - f->bound[j]));

@@ -72,6 +72,31 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
   PetscFunctionReturn(0);
 }
 
+/* Whether an increment from rest must start tied (friction.c,
+   FrictionSetTieAtRest): a body of the pair given forces alone, in no
+   other pair, pressed against a flat partner and given at the first stage
+   a force with a part along it. Its first solve from rest has no rows and
+   so no friction: nothing holds it along the contact, and the force given
+   there carries it off (the cattaneo scene given P and Q = 0.5 mu P at one
+   stage: DIVERGED_USER after its cutbacks, "slides"). Not against a curved
+   partner (its normal depends on where the contact lands: as before). */
+PetscBool ContactTermTiesAtRest(const ContactTerm *b, Body bodies[])
+{
+  const ContactPairSpec *spec = &b->spec;
+
+  if (spec->friction <= 0 || spec->axisym || spec->mirror) return PETSC_FALSE;
+  for (PetscInt s = 0; s < 2; ++s) {
+    const Body B = bodies[b->S[s].body];
+    PetscReal  F[CONTACT_MAX_STAGES][3], n[2], Fn, Ft;
+
+    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, NULL) || !FlatNormal(&b->S[1 - s], n)) continue;
+    Fn = F[0][0] * n[0] + F[0][1] * n[1];
+    Ft = PetscSqrtReal(PetscSqr(F[0][0] - Fn * n[0]) + PetscSqr(F[0][1] - Fn * n[1]));
+    if (Ft > 1e-12 * PetscAbsReal(Fn)) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
+}
+
 /* Each surface's inward unit normals at its edges' ends and middles
    (reference configuration), handed to its body (support.c). On a
    quadratic edge x(eta) = N0 X0 + N1 X1 + N2 Xm, the tangent is

@@ -1122,11 +1122,14 @@ static PetscErrorCode MortarAccumulateGradient(Mortar *m, PetscReal *energy)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MortarFrictionLag(EnergyTerm, Body[], PetscReal *);
+
 static PetscErrorCode MortarEnergyGradient(EnergyTerm t, Body bodies[], PetscReal *energy)
 {
   Mortar *m = (Mortar *)t->data;
 
   PetscFunctionBeginUser;
+  if (m->fr && FrictionRowsPending(m->fr)) PetscCall(MortarFrictionLag(t, bodies, NULL)); /* a tied start's rows (friction.c) */
   PetscCall(PetscLogEventBegin(MORTAR_EnergyGrad, 0, 0, 0, 0));
   PetscCall(MortarUpdate(m, bodies, t->comm));
   PetscCall(MortarAccumulateGradient(m, energy));
@@ -1695,6 +1698,7 @@ static PetscErrorCode MortarSetUp(EnergyTerm t, Body bodies[])
     PetscCheck(m->slave[0] + m->slave[1] == 1, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction needs one slave surface, not -contact_mortar_slave both", m->b.spec.name, (double)m->b.spec.friction);
     PetscCheck(!m->b.spec.mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_friction %g: friction in a mirrored half model is not implemented (a tangential load breaks the symmetry)", m->b.spec.name, (double)m->b.spec.friction);
     PetscCall(FrictionSetUp(m->fr, m->b.S, m->slave[0] ? 0 : 1));
+    if (ContactTermTiesAtRest(&m->b, bodies)) PetscCall(FrictionSetTieAtRest(m->fr, m->b.S));
   }
   PetscFunctionReturn(0);
 }
@@ -1711,6 +1715,7 @@ static PetscErrorCode MortarFrictionLag(EnergyTerm t, Body bodies[], PetscReal *
 
   PetscFunctionBeginUser;
   PetscCall(MortarUpdate(m, bodies, t->comm));
+  if (FrictionRowsPending(m->fr)) PetscCall(MortarUpdatePoints(m, t->comm)); /* at rest the first update may have been made before the slave was chosen */
   if (D->np > m->nfmax) {
     PetscCall(PetscFree(m->fpts));
     m->nfmax = 2 * D->np;
@@ -1760,6 +1765,13 @@ static PetscErrorCode MortarFrictionBegin(EnergyTerm t)
 
   PetscFunctionBeginUser;
   PetscCall(FrictionBegin(m->fr));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MortarFrictionScaleBound(EnergyTerm t, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  PetscCall(FrictionScaleBound(((Mortar *)t->data)->fr, growth));
   PetscFunctionReturn(0);
 }
 
@@ -1992,6 +2004,7 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *spec, EnergyTerm 
     t->ops.lag     = MortarFrictionLag;
     t->ops.accept  = MortarFrictionAccept;
     t->ops.begin   = MortarFrictionBegin;
+    t->ops.scalebound = MortarFrictionScaleBound;
     t->ops.restore = MortarFrictionRestore;
     t->ops.reset   = MortarFrictionReset;
     t->ops.writehdf5 = MortarWriteHDF5;

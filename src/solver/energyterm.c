@@ -175,6 +175,13 @@ PetscErrorCode EnergyTermBegin(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode EnergyTermScaleBound(EnergyTerm t, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  if (t->ops.scalebound) PetscCall(t->ops.scalebound(t, growth));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode EnergyTermRestore(EnergyTerm t, Body bodies[])
 {
   PetscFunctionBeginUser;

@@ -434,6 +434,8 @@ static PetscErrorCode ProblemSolveLoad(Problem p, PetscReal load, PetscBool last
 
   PetscFunctionBeginUser;
   PetscCall(ProblemStateBegin(p));
+  if (p->res.loadDone > 0) /* a tied start's next increments (friction.c): the given forces grow as the load within the first stage */
+    for (PetscInt t = 0; t < p->nterms; ++t) PetscCall(EnergyTermScaleBound(p->terms[t], load <= 1.0 ? load / p->res.loadDone : 1.0));
   for (PetscInt s = 1; s <= sc->penaltyStages; ++s) {
     const PetscBool last    = (PetscBool)(lastLoad && s == sc->penaltyStages);
     const PetscBool tight   = (PetscBool)((lastLoad || stageEnd || p->cfg->load.path || ProblemHasState(p) || ProblemBodiesHaveState(p)) && s == sc->penaltyStages); /* stops at the final tolerance (every load where a term or a body keeps its state from it) */
