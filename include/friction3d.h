@@ -41,6 +41,8 @@ PetscErrorCode Friction3dSetRigidBlock(Friction3d, Friction3dBlockFn fn, void *c
    the next begins, restore the bound of the accepted one, reset to rest. */
 PetscErrorCode Friction3dAccept(Friction3d, const ContactSurface3d S[2], PetscReal kp, PetscReal load);
 PetscErrorCode Friction3dBegin(Friction3d);
+/* A tied pair's (Friction3dChooseStart) next increment starts from the accepted bound times growth. */
+PetscErrorCode Friction3dScaleBound(Friction3d, PetscReal growth);
 PetscErrorCode Friction3dRestore(Friction3d);
 PetscErrorCode Friction3dReset(Friction3d, const ContactSurface3d S[2]);
 PetscReal      Friction3dGetCoefficient(Friction3d);

@@ -133,3 +133,26 @@ def test_ball_pushed_from_rest(tmp_path):
     assert 0.1 < figure("q_ratio", 0.055 / (MU * F[2])) < 0.9
     assert figure("dQ", abs(F[0] + 0.055) / 0.055) <= 3 * FORCE_RTOL * np.linalg.norm(F) / 0.055
     assert 0.05 < figure("stick_fraction", c["stick_area"] / c["contact_area"]) < 0.95
+
+
+def test_proportional_increments(tmp_path):
+    """P and Q = 0.5 mu P given together from rest in 4 increments of one
+    stage (the flat patch above). The second increment's first solve used to
+    hold the last increment's bound mu p_j, which the force given in
+    proportion outgrows (Q_2/(mu P_1) = 1: "none of its 101 nodes in contact
+    sticks", DIVERGED_USER); it now starts from that bound times the given
+    forces' growth (Friction3dScaleBound, as 2D's FrictionScaleBound). It
+    converges; the contact balances Q to `dQ4` = 1.3e-8 of it (bound 3 times
+    the stop); on a flat patch the contact's area does not grow and the load
+    is proportional, so the answer is the one-increment run's but for the
+    finite sliding's geometry: the same nodes stick, and the nodal shear
+    differs by `dq4` = 5.2e-4 of its largest (bound 2e-3)."""
+    args = patch_from_rest(0.5 * MU * P)
+    one = run_contact(args, tmp_path, name="one")
+    four = run_contact(args + ["-load_steps", 4], tmp_path, name="four")
+    assert one.summary["converged"] and four.summary["converged"]
+    F = np.array(four.summary["contact"]["p"]["surfaces"][0]["force"])
+    assert figure("dQ4", abs(F[0] + 0.5 * MU * P) / (0.5 * MU * P)) <= 3 * FORCE_RTOL * np.linalg.norm(F) / (0.5 * MU * P)
+    (X1, q1, s1, _), (X4, q4, s4, _) = patch_nodes(one), patch_nodes(four)
+    assert np.abs(X1 - X4).max() <= 1e-12 and np.array_equal(s1, s4)
+    assert figure("dq4", np.abs(q1 - q4).max() / np.abs(q1).max()) <= 2e-3

@@ -386,6 +386,21 @@ PetscErrorCode Friction3dBegin(Friction3d f)
   PetscFunctionReturn(0);
 }
 
+/* A tied pair's increment after the first (staging.c, growth the given
+   forces' over the increment): its first solve's bound is the accepted one
+   times growth, as friction.c's FrictionScaleBound and for its reason:
+   with the last increment's bound mu p_j the force given in proportion
+   outgrows what the contact held (the flat patch given P and Q = 0.5 mu P
+   in one stage of 4 increments: the second's first solve at Q_2/(mu P_1)
+   = 1, "none of its 101 nodes in contact sticks", DIVERGED_USER). */
+PetscErrorCode Friction3dScaleBound(Friction3d f, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  if (!f->tie) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < f->nn; ++j) f->bound[j] = growth * f->boundAcc[j];
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Friction3dRestore(Friction3d f)
 {
   PetscFunctionBeginUser;

@@ -1860,6 +1860,13 @@ static PetscErrorCode Mortar3dFrictionBegin(EnergyTerm t)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode Mortar3dFrictionScaleBound(EnergyTerm t, PetscReal growth)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Friction3dScaleBound(((Mortar3d *)t->data)->fr, growth));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Mortar3dFrictionReset(EnergyTerm t, Body bodies[])
 {
   Mortar3d *m = (Mortar3d *)t->data;
@@ -1940,6 +1947,7 @@ static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *m, EnergyTerm t)
   t->ops.lag            = Mortar3dFrictionLag;
   t->ops.accept         = Mortar3dFrictionAccept;
   t->ops.begin          = Mortar3dFrictionBegin;
+  t->ops.scalebound     = Mortar3dFrictionScaleBound;
   t->ops.restore        = Mortar3dFrictionRestore;
   t->ops.reset          = Mortar3dFrictionReset;
   t->ops.stickhalfwidth = Mortar3dStickRadius;
