@@ -1035,7 +1035,7 @@ PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
   PetscFunctionBeginUser;
   *margin = 2.0;
   PetscOptionsBegin(comm, NULL, "3D mortar contact options", NULL);
-  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it, at rest (the solve's sliding; beyond it the Hessian's preallocation is widened; negative: the faces' own boxes shrunk)", NULL, *margin, margin, NULL));
+  PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it (the smaller of the two faces'), at rest (the solve's sliding; beyond it the Hessian's preallocation is widened; negative: the faces' own boxes shrunk)", NULL, *margin, margin, NULL));
   PetscOptionsEnd();
   PetscCheck(!PetscIsInfOrNanReal(*margin), comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number, got %g", (double)*margin);
   PetscFunctionReturn(0);
