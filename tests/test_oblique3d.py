@@ -153,14 +153,14 @@ def sorted_nodes(res):
         return X[o], g["node_shear"][:][o], g["node_stick"][:][o], g["node_pressure"][:][o]
 
 
-@pytest.mark.roundoff
 def test_ranks_agree(tmp_path):
-    """4 increments on 1 and 2 ranks (the tied start's rows and the scaled
-    bound each rank's whole): the nodal shear apart by `dq_ranks` = 1.0e-9 of
-    its largest, the same nodes stuck. Bound from the stops: each run's
-    lagged bound is its pressure's to -contact_friction_lag_rtol 1e-6 of mu
-    p_max, two runs' shear 2e-6 mu p_max apart; times 3."""
-    args = oblique_args(4)
+    """2 increments on 1 and 2 ranks (the tied start's rows and the scaled
+    bound each rank's whole): the nodal shear apart by `dq_ranks` = 8.5e-12
+    of its largest, the same nodes stuck. Bound from the stops, far above
+    round-off (make test alone): each run's lagged bound is its pressure's
+    to -contact_friction_lag_rtol 1e-6 of mu p_max, two runs' shear 2e-6 mu
+    p_max apart; times 3."""
+    args = oblique_args(2)
     one = run_contact(args, tmp_path, name="one", timeout=1800)
     two = run_contact(args, tmp_path, ranks=2, name="two", timeout=1800)
     assert one.summary["converged"] and two.summary["converged"] and two.summary["ranks"] == 2
