@@ -663,6 +663,17 @@ static PetscErrorCode Mortar3dAddHessianBlock(Mortar3d *m, Mat H, PetscInt n, co
   PetscFunctionReturn(0);
 }
 
+/* The joined indices of a block over slave face f's dofs, then master face face's. */
+static void Mortar3dBlockIndices(const Mortar3d *m, PetscInt f, PetscInt face, PetscInt idx[])
+{
+  const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
+
+  for (PetscInt i = 0; i < S->nb; ++i)
+    for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
+  for (PetscInt i = 0; i < M->nb; ++i)
+    for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
+}
+
 /* The exact Hessian's second-order part, k_p sum_j g_j d2Q_j = sum over the
    points of this rank's slave faces of lambda d2g, lambda = k_p sum_j g_j
    W_j dS over the face's nodes in contact (Mortar3dGapHessian; a point
@@ -714,10 +725,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
         for (PetscInt r = 0; r < n * n; ++r) Ksum[r] += lam * K[r];
       }
       if (!any) continue;
-      for (PetscInt i = 0; i < S->nb; ++i)
-        for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
-      for (PetscInt i = 0; i < M->nb; ++i)
-        for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
+      Mortar3dBlockIndices(m, f, face, idx);
       PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, Ksum));
     }
   }
@@ -762,10 +770,7 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
       any = PETSC_FALSE;
       PetscCall(Segment3dEndHessian(&ref, xs, &m->Adual[81 * f], lam, &mf, &E->ends[e], K, &any));
       if (!any) continue;
-      for (PetscInt i = 0; i < S->nb; ++i)
-        for (PetscInt d = 0; d < 3; ++d) idx[3 * i + d] = S->big[3 * S->fnodes[S->nb * f + i] + d];
-      for (PetscInt i = 0; i < M->nb; ++i)
-        for (PetscInt d = 0; d < 3; ++d) idx[3 * (S->nb + i) + d] = M->big[3 * M->fnodes[M->nb * face + i] + d];
+      Mortar3dBlockIndices(m, f, face, idx);
       PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
     }
   }
