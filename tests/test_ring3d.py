@@ -1,13 +1,8 @@
-"""Rings of fine faces over the contact's edge, where the mesh's resolution of
-the edge is what is left of two of issue 49's 3D bounds
-(docs/formulations.md, "Friction between 3D bodies" and "Hertz in 3D").
-
-Cattaneo-Mindlin: tests/test_mindlin3d.py's two identical half balls
-(mirrored meshes, nu 0.3), the base mesh h = 0.02 (a/h = 5.3) with a ring
-of size hr = 0.0035 within wr = 0.004 of the circle r = ra = 0.103 on the
-ball's surface (halfball.geo's ra, hr, wr, gr), over Mindlin's slip
-annulus c < r < a at Q/(mu P) = 0.2 (0.93 a to a, 0.0076 wide). A separate,
-stated scene: the shipped scenes and their bounds stay as they are.
+"""A ring of fine faces over the contact's edge, where the mesh's resolution
+of the edge is what is left of issue 49's bound on the Hertz profile against
+the axisymmetric run (docs/formulations.md, "Hertz in 3D"; the same ring on
+tests/test_mindlin3d.py's half balls, halfball.geo's ra, hr, wr, gr, is not
+tested yet: its run did not finish, "Friction between 3D bodies").
 
 Hertz: the sphere3d quarter graded with tests/test_whole3d.py's ring (hr =
 0.003 within 0.006 of r = 0.102, a = 0.102, 0.009 elsewhere within 0.11)
@@ -21,7 +16,6 @@ import numpy as np
 import pytest
 
 from conftest import figure, run_contact
-from test_mindlin3d import C_BOUND, L2_BOUND, mindlin_figures, mirrored_meshes, scene_args, within
 from test_sphere3d import SCENE, axisymmetric_args
 from test_sphere3d_fine import l2, profile
 from test_whole3d import GRADED, RING, axisymmetric_profile
@@ -131,42 +125,3 @@ def test_ring_matched_issue(ring_quarter):
     quarter, axi = ring_quarter
     assert figure("profile_l2_matched", profile_against_axisymmetric(quarter, axi)["l2"]) <= 0.005
 
-
-# Cattaneo-Mindlin: the mirrored half balls at h = 0.02 with a ring of 0.0035
-# over the slip annulus at Q/(mu P) = 0.2 (a = 0.106, c = 0.93 a = 0.098)
-MINDLIN_H = 0.02
-MINDLIN_RING = "rc=0.11,zs=4,hm=0.04,rm=0.2,ra=0.103,hr=0.0035,wr=0.004,gr=0.008"
-# figures measured (mindlin_figures) per tangential stage
-MINDLIN_FIGS = {2: dict(c_err=None, l2=None), 3: dict(c_err=None, l2=None), 4: dict(c_err=None, l2=None)}
-
-
-@pytest.fixture(scope="module")
-def mindlin_ring(tmp_path_factory):
-    d = tmp_path_factory.mktemp("ring3d_mindlin")
-    return run_contact(scene_args(MINDLIN_H, grade=MINDLIN_RING, meshes=mirrored_meshes(d, MINDLIN_H, MINDLIN_RING)),
-                       d, timeout=14400)
-
-
-@pytest.mark.stress
-@pytest.mark.parametrize("k", [within(MINDLIN_FIGS, k, "c_err", C_BOUND, "5.3 with the ring") for k in (2, 3, 4)])
-def test_mindlin_ring_stick_radius(mindlin_ring, k):
-    """With the ring, stage k's c/a from Mindlin's (1 - Q/(mu P))^(1/3)
-    (as tests/test_mindlin3d.py's test_stick_radius): `c_over_a_error` =
-    TBD at `ratio` = TBD, bound the issue's 2 % (3 times the figure where
-    tighter)."""
-    f = mindlin_figures(mindlin_ring)
-    figure("ratio", f[k]["ratio"])
-    err = figure("c_over_a_error", f[k]["c_err"])
-    assert abs(err) <= min(C_BOUND, 3 * abs(MINDLIN_FIGS[k]["c_err"]))
-
-
-@pytest.mark.stress
-@pytest.mark.parametrize("k", [within(MINDLIN_FIGS, k, "l2", L2_BOUND, "5.3 with the ring") for k in (2, 3, 4)])
-def test_mindlin_ring_shear(mindlin_ring, k):
-    """With the ring, stage k's shear along Q against Mindlin's mu p0/a
-    (sqrt(a^2 - r^2) - sqrt(c^2 - r^2)), relative L2 over the slave's nodes
-    (as test_mindlin3d.py's test_shear): `l2` = TBD."""
-    f = mindlin_figures(mindlin_ring)
-    figure("locked", f[k]["locked"])
-    l2 = figure("l2", f[k]["l2"])
-    assert l2 <= min(L2_BOUND, 3 * MINDLIN_FIGS[k]["l2"])
