@@ -8,7 +8,11 @@
 // side; the volume "body". dir = -1 mirrors it about the plane z = 0 (the
 // ball centred at (0, 0, -R), its top z = -zt, its cap z >= -zc: the lower of
 // two identical balls touching at the origin; the size field is even in z).
-// Parameters (gmsh -setnumber NAME VALUE): R, zt, h, rc, hf, zs, hm, rm, zc, dir.
+// With ra > 0 also of size hr within wr of the circle of radius ra on the
+// ball's surface (at |z| = R - sqrt(R^2 - ra^2): a ring over the contact's
+// edge or Mindlin's slip annulus, tests/test_ring3d.py), growing to hf at
+// wr + gr from it (the distance even in z as the rest). Parameters (gmsh -setnumber NAME VALUE):
+// R, zt, h, rc, hf, zs, hm, rm, zc, dir, ra, hr, wr, gr.
 SetFactory("OpenCASCADE");
 If (!Exists(R)) R = 1; EndIf
 If (!Exists(zt)) zt = 0.5; EndIf
@@ -20,6 +24,10 @@ If (!Exists(hm)) hm = hf; EndIf
 If (!Exists(rm)) rm = 3 * rc; EndIf
 If (!Exists(zc)) zc = 0.05; EndIf
 If (!Exists(dir)) dir = 1; EndIf
+If (!Exists(ra)) ra = 0; EndIf
+If (!Exists(hr)) hr = h; EndIf
+If (!Exists(wr)) wr = 2 * hr; EndIf
+If (!Exists(gr)) gr = rc; EndIf
 
 Sphere(1) = {0, 0, R, R};
 Box(2) = {-2 * R, 0, 0, 4 * R, 2 * R, zt};
@@ -70,6 +78,23 @@ Field[4].DistMax = 3 * rm;
 Field[5] = Min;
 Field[5].FieldsList = {2, 4};
 Background Field = 5;
+If (ra > 0)
+  Field[6] = MathEval;
+  zr = R - Sqrt(R * R - ra * ra);
+  Field[6].F = Sprintf("Sqrt((Sqrt(x * x + y * y) - %g) * (Sqrt(x * x + y * y) - %g) + (Sqrt(z * z) - %g) * (Sqrt(z * z) - %g))", ra, ra, zr, zr);
+  Field[7] = Threshold;
+  Field[7].InField = 6;
+  Field[7].SizeMin = hr;
+  Field[7].SizeMax = hf;
+  Field[7].DistMin = wr;
+  Field[7].DistMax = wr + gr;
+  Field[8] = Min;
+  Field[8].FieldsList = {2, 4, 7};
+  Background Field = 8;
+  // the default Frontal-Delaunay meshes the cap (about the sphere's pole) at
+  // 2-3 times hr; MeshAdapt keeps to the field
+  Mesh.Algorithm = 1;
+EndIf
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
