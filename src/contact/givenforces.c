@@ -48,22 +48,41 @@ static PetscBool FlatNormal(const ContactSurface *M, PetscReal n[2])
   return M->ne > 0 ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* Whether side s's body is one whose given forces the check can judge
+   (above): a plane-strain frictional pair, the body given forces alone in
+   no other pair, its partner flat (its outward normal into n); its forces
+   per stage into F. */
+static PetscBool GivenForcesOnFlat(const ContactTerm *b, Body bodies[], PetscInt s, PetscReal F[][3], PetscReal n[2])
+{
+  const ContactPairSpec *spec = &b->spec;
+  const Body             B    = bodies[b->S[s].body];
+
+  if (spec->friction <= 0 || spec->axisym || spec->mirror) return PETSC_FALSE;
+  return (PetscBool)(BodyGetNumContactPairs(B) == 1 && BodyGivenForcesAlone(B, F, NULL) && FlatNormal(&b->S[1 - s], n));
+}
+
+/* A force's parts across the normal n (Fn, signed) and along it (Ft >= 0). */
+static void ForceParts(const PetscReal F[3], const PetscReal n[2], PetscReal *Fn, PetscReal *Ft)
+{
+  *Fn = F[0] * n[0] + F[1] * n[1];
+  *Ft = PetscSqrtReal(PetscSqr(F[0] - *Fn * n[0]) + PetscSqr(F[1] - *Fn * n[1]));
+}
+
 PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
 {
   const ContactPairSpec *spec = &b->spec;
   const PetscReal        mu   = spec->friction;
 
   PetscFunctionBeginUser;
-  if (mu <= 0 || spec->axisym || spec->mirror) PetscFunctionReturn(0);
   for (PetscInt s = 0; s < 2; ++s) {
     const Body B = bodies[b->S[s].body];
     PetscReal  F[CONTACT_MAX_STAGES][3], n[2];
 
-    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, NULL) || !FlatNormal(&b->S[1 - s], n)) continue; /* none given: 0 <= mu 0 */
+    if (!GivenForcesOnFlat(b, bodies, s, F, n)) continue; /* none given: 0 <= mu 0 */
     for (PetscInt k = 0; k < BodyGetNumStages(B); ++k) {
-      const PetscReal Fn = F[k][0] * n[0] + F[k][1] * n[1];
-      const PetscReal Ft = PetscSqrtReal(PetscSqr(F[k][0] - Fn * n[0]) + PetscSqr(F[k][1] - Fn * n[1]));
+      PetscReal Fn, Ft;
 
+      ForceParts(F[k], n, &Fn, &Ft);
       PetscCheck(Ft <= mu * PetscAbsReal(Fn) * (1.0 + 1e-12), BodyGetComm(B), PETSC_ERR_USER_INPUT,
                  "pair %s: the forces given on body %s at stage %" PetscInt_FMT " are %g along %s:%s and %g across it, more than friction holds (mu = %g times %g = %g; Q/(mu P) = %.6g): it would slide without end; lower the tangential force or raise -contact_%s_friction",
                  spec->name, BodyGetName(B), k + 1, (double)Ft, BodyGetName(bodies[b->S[1 - s].body]), b->S[1 - s].group, (double)PetscAbsReal(Fn), (double)mu, (double)PetscAbsReal(Fn), (double)(mu * PetscAbsReal(Fn)), (double)(Ft / (mu * PetscAbsReal(Fn))), spec->name);
@@ -82,16 +101,11 @@ PetscErrorCode ContactTermCheckGivenForces(const ContactTerm *b, Body bodies[])
    partner (its normal depends on where the contact lands: as before). */
 PetscBool ContactTermTiesAtRest(const ContactTerm *b, Body bodies[])
 {
-  const ContactPairSpec *spec = &b->spec;
-
-  if (spec->friction <= 0 || spec->axisym || spec->mirror) return PETSC_FALSE;
   for (PetscInt s = 0; s < 2; ++s) {
-    const Body B = bodies[b->S[s].body];
-    PetscReal  F[CONTACT_MAX_STAGES][3], n[2], Fn, Ft;
+    PetscReal F[CONTACT_MAX_STAGES][3], n[2], Fn, Ft;
 
-    if (BodyGetNumContactPairs(B) != 1 || !BodyGivenForcesAlone(B, F, NULL) || !FlatNormal(&b->S[1 - s], n)) continue;
-    Fn = F[0][0] * n[0] + F[0][1] * n[1];
-    Ft = PetscSqrtReal(PetscSqr(F[0][0] - Fn * n[0]) + PetscSqr(F[0][1] - Fn * n[1]));
+    if (!GivenForcesOnFlat(b, bodies, s, F, n)) continue;
+    ForceParts(F[0], n, &Fn, &Ft);
     if (Ft > 1e-12 * PetscAbsReal(Fn)) return PETSC_TRUE;
   }
   return PETSC_FALSE;
