@@ -1715,7 +1715,7 @@ static PetscErrorCode MortarFrictionLag(EnergyTerm t, Body bodies[], PetscReal *
 
   PetscFunctionBeginUser;
   PetscCall(MortarUpdate(m, bodies, t->comm));
-  if (FrictionRowsPending(m->fr)) PetscCall(MortarUpdatePoints(m, t->comm)); /* at rest the first update may have been made before the slave was chosen */
+  if (FrictionRowsPending(m->fr)) PetscCall(MortarUpdatePoints(m, t->comm)); /* at rest MortarUpdate kept no points (the cattaneo disc: 0, then 1900 built here); why it kept none is not found */
   if (D->np > m->nfmax) {
     PetscCall(PetscFree(m->fpts));
     m->nfmax = 2 * D->np;
