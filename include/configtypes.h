@@ -73,6 +73,8 @@ typedef struct {
   PetscBool iterativeSet;     /* -newton_iterative given (else chosen by size in 3D: newtonstep.c) */
   PetscInt  iterativeDofs;    /* -newton_iterative_dofs: a 3D scene above this many dofs takes CG + GAMG by default */
   PetscBool schur;            /* Newton through the contact-surface Schur complement */
+  PetscBool schurSet;         /* -newton_schur given (else chosen by the surfaces' size in 3D: newtonstep.c) */
+  PetscInt  schurSurfaceDofs; /* -newton_schur_surface_dofs: a 3D scene with more contact-surface dofs factors the whole Hessian by default */
   SchurType schurType;
   PetscBool tangentAtRest, tangentAtRestSet; /* -tangent_at_rest: K, the stiffness at rest, in place of a neohookean body's tangent (and whether given) */
   PetscInt  tangentIts;       /* Newton without -tangent_at_rest: K for this many iterations of each solve, then the tangent (-tangent_at_rest_its) */

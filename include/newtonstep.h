@@ -15,6 +15,13 @@
    many messages each wait for a rank the system has descheduled. What the
    ranks do split is the matrix's formation (substructure.c). */
 #define NEWTON_SCHUR_SPLIT_LU 1000000000
+/* A 3D scene with contact pairs and without -newton_schur or
+   -newton_iterative takes the Schur step (its dense surface blocks of
+   order the contact surfaces' dofs nc: MUMPS's Schur complement of both
+   bodies, 8 nc^2 bytes, then each body's) at most this many surface dofs,
+   the whole Hessian's factorisation above (-newton_schur_surface_dofs;
+   newtonstep.c, ProblemChooseNewtonStep). */
+#define NEWTON_SCHUR_SURFACE_DOFS 12000
 /* A direct solve by Cholesky: CHOLMOD on one rank, MUMPS on several or for a matrix that may be indefinite. */
 PetscErrorCode ContactPCSetCholesky(PC, MPI_Comm, PetscBool indefinite);
 /* The Schur complement on the contact surfaces of the set-up K (schur.c on

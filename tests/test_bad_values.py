@@ -59,7 +59,7 @@ DOMAINS = {
     "indenter_bc_clamp_values": ("reals", None, False), "block_bc_push_values": ("reals", None, False),
     "indenter_exact_params": ("reals", None, False), "block_exact_params": ("reals", None, False),
     "partitioner": ("choice",), "lmvm_h0": ("choice",), "lmvm_h0_refresh": ("int", 1, False),
-    "lmvm_restarts": ("int", 0, False), "tangent_at_rest_its": ("int", 0, False), "newton_iterative_dofs": ("int", 0, False), "newton_schur_split_lu": ("int", 1, False), "lmvm_pair_ratio": ("real", 1.0, False), "lmvm_decrement_floor": ("real", 1.0, False), "lmvm_decrement_rtol": REAL_NONNEG, "contact_hessian": ("choice",),
+    "lmvm_restarts": ("int", 0, False), "tangent_at_rest_its": ("int", 0, False), "newton_iterative_dofs": ("int", 0, False), "newton_schur_split_lu": ("int", 1, False), "newton_schur_surface_dofs": ("int", 0, False), "lmvm_pair_ratio": ("real", 1.0, False), "lmvm_decrement_floor": ("real", 1.0, False), "lmvm_decrement_rtol": REAL_NONNEG, "contact_hessian": ("choice",),
     "contact_formulation": ("choice",), "contact_interface_formulation": ("choice",),
     "contact_mortar_basis": ("choice",), "contact_mortar_slave": ("choice",),
     "indenter_exact": ("choice",), "block_exact": ("choice",), "indenter_material": ("choice",), "block_material": ("choice",),

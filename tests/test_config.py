@@ -21,7 +21,7 @@ GROUPS = {
     "Partitioning options": ["partitioner", "partition_view"],
     "L-BFGS options": ["lmvm_h0", "lmvm_h0_refresh", "lmvm_restarts", "lmvm_decrement_rtol", "lmvm_decrement_floor", "lmvm_pair_ratio"],
     "Taylor test options": ["taylor_test", "taylor_scale"],
-    "Newton step options": ["newton_iterative", "newton_iterative_dofs", "newton_iterative_nodal", "newton_iterative_two_levels", "newton_iterative_cycle", "newton_schur", "newton_schur_split_lu", "newton_schur_type", "tangent_at_rest", "tangent_at_rest_its"],
+    "Newton step options": ["newton_iterative", "newton_iterative_dofs", "newton_iterative_nodal", "newton_iterative_two_levels", "newton_iterative_cycle", "newton_schur", "newton_schur_surface_dofs", "newton_schur_split_lu", "newton_schur_type", "tangent_at_rest", "tangent_at_rest_its"],
     "Load stepping options": ["load_steps", "load_stages", "load_cutbacks", "load_path"],
     "Penalty continuation options": ["penalty_stages", "penalty_start"],
     "Stopping options": ["stage_rtol", "stop_force_rtol"],

@@ -142,3 +142,43 @@ def test_nodal_gamg_matches(ranks, tmp_path):
         assert figure("nodal_dE", abs(bn["energy"] / bo["energy"] - 1)) <= 1e-9
         assert figure("nodal_derr", abs(bn["l2_error"] / bo["l2_error"] - 1)) <= 1e-6
     assert n["bodies"]["sh"]["l2_error"] / n["bodies"]["sh"]["l2_norm"] < 3e-3  # the discretisation's
+
+
+def schur_choice(res):
+    """A 3D contact run's 'Newton step:' line: 'whole' (the whole Hessian
+    factored, with the contact-surface dofs it names) or 'schur'."""
+    m = re.search(r"Newton step: direct factorisation of the whole Hessian \(3D, \d+ dofs, with contact pairs on (\d+) surface dofs", res.stdout)
+    if m:
+        return "whole", int(m.group(1))
+    return ("schur" if re.search(r"Newton step: direct factorisation \(3D, \d+ dofs, with contact pairs;", res.stdout) else None), None
+
+
+def test_schur_by_surface(tmp_path):
+    """With contact pairs the default 3D step is the Schur step on the
+    contact surfaces up to -newton_schur_surface_dofs of them and the whole
+    Hessian's factorisation above (its dense surface blocks grow as the
+    surfaces' dofs squared: tests/test_mindlin3d.py's half balls with an
+    edge ring, 24,568 surface dofs, held 16.8 GB that way, 2.3 GB factoring
+    the whole Hessian; docs/solver.md). The quarter Hertz ball at h = 0.04
+    (test_contact3d.py's hertz_args) by the default and with the limit
+    below its surface dofs, both to -tao_gttol 1e-12: the same step
+    otherwise (Newton on the same Hessian), so the answers differ by H^-1
+    of the gradients the stops leave: the contact force and the energy
+    `dP` = 2.6e-14 and `dE` = 1.1e-16 apart (relative; bound 1e-9). The
+    limit at the surface dofs keeps the Schur step; -newton_schur 1 forces
+    it below."""
+    from test_contact3d import hertz_args
+    common = [str(a) for a in hertz_args(0.04)] + ["-tao_gttol", "1e-12"]
+    schur = run_contact(common, tmp_path, name="schur")
+    assert schur_choice(schur) == ("schur", None)
+    whole = run_contact(common + ["-newton_schur_surface_dofs", "100"], tmp_path, name="whole")
+    kind, nc = schur_choice(whole)
+    assert kind == "whole" and nc > 100
+    s, w = schur.summary, whole.summary
+    assert s["dofs"] == w["dofs"]
+    assert figure("dP", abs(w["contact_force"] / s["contact_force"] - 1)) <= 1e-9
+    assert figure("dE", abs(w["energy"] / s["energy"] - 1)) <= 1e-9
+    at = run_contact(common + ["-newton_schur_surface_dofs", str(nc), "-tao_max_it", "1"], tmp_path, name="at", check=False)
+    assert schur_choice(at) == ("schur", None)
+    forced = run_contact(common + ["-newton_schur_surface_dofs", "100", "-newton_schur", "1", "-tao_max_it", "1"], tmp_path, name="forced", check=False)
+    assert schur_choice(forced) == ("schur", None)

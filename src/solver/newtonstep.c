@@ -158,7 +158,15 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   if (p->cfg->newton.iterativeSet) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
   if (p->nterms > 0) {
+    PetscInt nc = 0;
     p->cfg->newton.iterative = PETSC_FALSE;
+    if (p->surfaceDofs) PetscCall(ISGetSize(p->surfaceDofs, &nc));
+    if (!p->cfg->newton.schurSet && p->cfg->newton.schur && nc > p->cfg->newton.schurSurfaceDofs) {
+      p->cfg->newton.schur = PETSC_FALSE;
+      PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation of the whole Hessian (3D, %" PetscInt_FMT " dofs, with contact pairs on %" PetscInt_FMT " surface dofs, above -newton_schur_surface_dofs %" PetscInt_FMT ": the Schur step's dense surface blocks would take some %.0f MB; -newton_schur 1 forces it, -newton_iterative 1 CG + GAMG)\n", N, nc,
+                            p->cfg->newton.schurSurfaceDofs, 8.0 * (double)nc * (double)nc / 1048576.0));
+      PetscFunctionReturn(0);
+    }
     PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation (3D, %" PetscInt_FMT " dofs, with contact pairs; -newton_iterative 1 forces CG + GAMG)\n", N));
     PetscFunctionReturn(0);
   }
@@ -202,6 +210,8 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   o->iterativeSet     = PETSC_FALSE;
   o->iterativeDofs    = NEWTON_ITERATIVE_DOFS;
   o->schur            = PETSC_TRUE;
+  o->schurSet         = PETSC_FALSE;
+  o->schurSurfaceDofs = NEWTON_SCHUR_SURFACE_DOFS;
   o->schurType        = SCHUR_SUBSTRUCTURE;
   o->tangentAtRest    = PETSC_FALSE;
   o->tangentAtRestSet = PETSC_FALSE;
@@ -217,13 +227,15 @@ PetscErrorCode NewtonOptionsSetFromOptions(MPI_Comm comm, NewtonOptions *o)
   PetscCall(PetscOptionsBool("-newton_iterative_nodal", "3D bodies, CG + GAMG: GAMG aggregates nodes, on the Hessian with each node's 3 components (a constrained one an identity row); 0: on the Hessian's free dofs alone", NULL, o->iterativeNodal, &o->iterativeNodal, NULL));
   PetscCall(PetscOptionsBool("-newton_iterative_two_levels", "3D bodies on one rank, GAMG by nodes: first a level of the cells' vertices (linear interpolation to the quadratic nodes, Chebyshev on the nodes), GAMG (smoothed aggregation) on it; 0: GAMG on the nodes. Default: true without contact, false with contact pairs (the vertices cannot meet the penalty)", NULL, o->iterativeTwoLevels, &o->iterativeTwoLevels, &o->iterativeTwoLevelsSet));
   PetscCall(PetscOptionsEnum("-newton_iterative_cycle", "3D bodies, GAMG by nodes: its multigrid cycle (v or w)", NULL, PCMGCycleTypes, (PetscEnum)o->iterativeCycle, (PetscEnum *)&o->iterativeCycle, NULL));
-  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step)", NULL, o->schur, &o->schur, NULL));
+  PetscCall(PetscOptionsBool("-newton_schur", "Newton steps through the Schur complement on the contact surfaces (K condensed once, a dense surface block per step); 0: the whole Hessian factored at each step. Default: true, except a 3D scene with more than -newton_schur_surface_dofs contact-surface dofs", NULL, o->schur, &o->schur, &o->schurSet));
+  PetscCall(PetscOptionsInt("-newton_schur_surface_dofs", "3D scenes with contact pairs, without -newton_schur or -newton_iterative: the Schur step up to this many contact-surface dofs (its dense blocks take 8 bytes times their square and more), the whole Hessian factored at each step above", NULL, o->schurSurfaceDofs, &o->schurSurfaceDofs, NULL));
   PetscCall(PetscOptionsInt("-newton_schur_split_lu", "Substructured Newton step on several ranks: the ranks share the factorisation of the contact zone's capacitance matrix (ScaLAPACK) when its order is at least this, each repeats it whole (LAPACK) below", NULL, o->splitLU, &o->splitLU, NULL));
   PetscCall(PetscOptionsEnum("-newton_schur_type", "Schur complement of the Newton step: substructure (each rank condenses its subdomain; any number of ranks) or mumps (K factored by MUMPS with the surfaces as Schur block; one rank)", NULL, SchurTypes, (PetscEnum)o->schurType, (PetscEnum *)&o->schurType, NULL));
   PetscCall(PetscOptionsBool("-tangent_at_rest", "Newton's step and L-BFGS's H0 take the bodies' stiffness at rest in place of a neohookean body's tangent (modified Newton: the linear bodies' Schur step, K condensed once, the gradient still the material's; for small strain); false: the tangent at every step. Default: with Newton the stiffness at rest for -tangent_at_rest_its iterations, then the tangent; true with lmvm/blmvm (H0 then has the contact's Hessian)", NULL, o->tangentAtRest, &o->tangentAtRest, &o->tangentAtRestSet));
   PetscCall(PetscOptionsInt("-tangent_at_rest_its", "Newton without -tangent_at_rest: the stiffness at rest for at most this many iterations of each solve, and only while two steps divide the gradient by more than 2, then a neohookean body's tangent (modified Newton while it converges fast, Newton's quadratic convergence where it would be slow)", NULL, o->tangentIts, &o->tangentIts, NULL));
   PetscOptionsEnd();
   PetscCheck(o->iterativeDofs >= 0, comm, PETSC_ERR_USER_INPUT, "option -newton_iterative_dofs: must be at least 0, got %" PetscInt_FMT, o->iterativeDofs);
+  PetscCheck(o->schurSurfaceDofs >= 0, comm, PETSC_ERR_USER_INPUT, "option -newton_schur_surface_dofs: must be at least 0, got %" PetscInt_FMT, o->schurSurfaceDofs);
   PetscCheck(o->splitLU >= 1, comm, PETSC_ERR_USER_INPUT, "option -newton_schur_split_lu: must be at least 1, got %" PetscInt_FMT, o->splitLU);
   PetscCheck(o->tangentIts >= 0, comm, PETSC_ERR_USER_INPUT, "option -tangent_at_rest_its: must be at least 0, got %" PetscInt_FMT, o->tangentIts);
   PetscFunctionReturn(0);
