@@ -140,7 +140,11 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
    with contact pairs keeps the direct step at any size: on the quarter
    Hertz ball the direct step took a third of CG + GAMG's CPU time at 22k
    and 66k dofs (2.7 s against 9.5 s, 19 s against 54 s, one rank:
-   docs/solver.md). Said in one line.
+   docs/solver.md), by the Schur step up to -newton_schur_surface_dofs
+   contact-surface dofs and by the whole Hessian's factorisation above,
+   where the Schur step's dense blocks (8 nc^2 bytes and more) would not
+   fit (docs/solver.md, "3D contact: the Schur step or the whole
+   Hessian"). Said in one line.
    With contact, CG + GAMG (forced) aggregates the nodes on one level, not
    on the cells' vertices first (-newton_iterative_two_levels), unless that
    is given: the vertices' linear displacements cannot meet the mortar's
