@@ -27,7 +27,7 @@ import pytest
 from conftest import figure, run_contact
 from test_sphere3d import SCENE, axisymmetric_args
 from test_sphere3d_fine import l2, profile
-from test_whole3d import GRADED, RING, axisymmetric, axisymmetric_profile, hertz_profile, nodal_averages
+from test_whole3d import ALPHA, GRADED, RING, axisymmetric_profile, hertz_profile, nodal_averages
 
 # Hertz: the r-z run meshed as the 3D quarter near the contact (ball: h =
 # 0.009 within 0.11 growing to 0.2 at 0.6; flat: 0.025 within 0.2 growing to
@@ -204,6 +204,104 @@ def test_ring_supports(ring_quarter):
     assert 0.002 <= figure("mid_dual", w["mid"]) <= 0.01
     assert figure("profile_l2_dual", w["l2"]) <= 0.016
     assert 0 < figure("split", interior_split(quarter)) <= 0.004
+
+
+# Tet10's edges (topology order: 4 corners, then the mid-edge nodes of 01,
+# 12, 02, 03, 13, 23), for the block's top faces
+TET10_EDGE = {(0, 1): 4, (1, 2): 5, (0, 2): 6, (0, 3): 7, (1, 3): 8, (2, 3): 9}
+
+
+def point_gaps(quarter):
+    """Each cap node's own gap: its current position's distance along the
+    block's normal from the block's top, the curved Tri6 face under it
+    (the block's Tet10 faces on z = 0 at the current coordinates, found by
+    Newton on the face's map in x and y), with the cap's faces, the
+    program's weighted gaps g_j (node_gap) and pressures."""
+    import h5py
+    with h5py.File(quarter.output_path, "r") as f:
+        g, b = f["contact/ball/ball_cap"], f["bodies/block"]
+        xs, gw, p, cells = g["node_x"][:], g["node_gap"][:], g["node_pressure"][:], g["node_cells"][:]
+        X, x, T = b["geometry"][:], b["geometry"][:] + b["displacement"][:], b["topology"][:]
+    faces = []
+    for t in T:
+        top = [i for i in range(4) if abs(X[t[i], 2]) < 1e-12]
+        if len(top) == 3:
+            i, j, k = top
+            faces.append([t[i], t[j], t[k], t[TET10_EDGE[(i, j)]], t[TET10_EDGE[(j, k)]], t[TET10_EDGE[(i, k)]]])
+    faces = np.array(faces)
+    centre = X[faces[:, :3]].mean(1)[:, :2]
+
+    def tri6(r, s):
+        l0 = 1 - r - s
+        return (np.array([l0 * (2 * l0 - 1), r * (2 * r - 1), s * (2 * s - 1), 4 * l0 * r, 4 * r * s, 4 * s * l0]),
+                np.array([1 - 4 * l0, 4 * r - 1, 0, 4 * (l0 - r), 4 * s, -4 * s]),
+                np.array([1 - 4 * l0, 0, 4 * s - 1, -4 * r, 4 * r, 4 * (l0 - s)]))
+    gp = np.full(len(xs), np.nan)
+    for n, q in enumerate(xs):
+        for fi in np.argsort(np.sum((centre - q[:2]) ** 2, 1))[:6]:
+            xm, xi = x[faces[fi]], np.array([1 / 3, 1 / 3])
+            for _ in range(30):
+                N, dr, ds = tri6(*xi)
+                xi = xi - np.linalg.solve(np.stack([dr @ xm[:, :2], ds @ xm[:, :2]], 1), N @ xm[:, :2] - q[:2])
+            if xi.min() >= -1e-9 and xi.sum() <= 1 + 1e-9:
+                N, dr, ds = tri6(*xi)
+                nrm = np.cross(dr @ xm, ds @ xm)
+                gp[n] = (q - N @ xm) @ nrm / (np.linalg.norm(nrm) * np.sign(nrm[2]))
+                break
+    return gp, gw, p, cells
+
+
+@pytest.mark.stress
+def test_ring_midside_gaps(ring_quarter):
+    """What in the program lets a midside node near the edge carry more
+    (issue 49, 4): its weighted gap. On a flat master the gap is the face's
+    quadratic of the nodes' own gaps, and with the dual weights W_j
+    biorthogonal to Nt = T N (face3d.c) int W_j N_i dS = (T^-1)_ij A_j:
+    a corner's g_j is its own gap, a midside node's (g_e - alpha (g_a +
+    g_b)) / (1 - 2 alpha), a and b the corners of its edge (alpha = 1/5:
+    g_e + (g_e - (g_a + g_b)/2) / 1.5). Measured against the nodes' own
+    gaps to the block's curved top: over the active midside nodes whose
+    edge ends at an inactive corner (`open_mids` = 72, all of them lie in
+    0.987 a to 1.004 a) the program's g_j is the combination to
+    `stencil_error` = 0.075 of the deepest penetration (bound 0.2: the
+    block's faces of 0.025 kink under the cap's of 0.003), where their
+    own gaps are positive, from `open_gap_min` = 0.71 to `open_gap_max` =
+    59 times the deepest penetration (bounds above 0, below 200): the
+    open corner's gap, weighted by -alpha / (1 - 2 alpha), makes a midside
+    node whose own point is apart read a penetration and carry pressure. No
+    corner does (`open_corners` = 0 active corners with a positive own gap).
+    In 0.95 a < r < a those midside nodes lie `open_mid` = +0.0146 p0 above
+    the r-z run (bound 0.005 to 0.03), the other active midside nodes
+    there `other_mid` = +0.0061 (bound 0 to 0.015): about a third of the
+    midside nodes' excess (+0.0075 p0: test_ring_matched) is the
+    stencil's reach past the edge. Not a defect to mend: the gap weighted
+    by Nt itself in place of W (a build with the dual coefficients set to
+    the identity) puts the profile 3.8 % from the r-z run (the pressures'
+    split 0.017 p0 inside), and alpha = 0.1 and 0.3 0.87 % and 0.80 %
+    (test_ring_supports): the dual weights and alpha = 1/5 are the best
+    measured."""
+    quarter, axi = ring_quarter
+    gp, gw, p, cells = point_gaps(quarter)
+    r, _, _, at = profile(quarter.output_path, "ball_cap")
+    pen = quarter.summary["contact"]["ball"]["max_penetration"]
+    corner = node_classes(quarter)
+    ends = {}
+    for c in cells:
+        for e, (i, j) in zip(c[3:], ((0, 1), (1, 2), (0, 2))):
+            ends[e] = (c[i], c[j])
+    act = p > 0
+    mids = np.array([e for e in ends if act[e] and not (act[ends[e][0]] and act[ends[e][1]])])
+    comb = np.array([(gp[e] - ALPHA * (gp[ends[e][0]] + gp[ends[e][1]])) / (1 - 2 * ALPHA) for e in mids])
+    assert figure("open_mids", len(mids)) >= 20
+    assert figure("stencil_error", np.max(np.abs(gw[mids] - comb)) / pen) <= 0.2
+    assert 0 < figure("open_gap_min", np.min(gp[mids]) / pen) and figure("open_gap_max", np.max(gp[mids]) / pen) <= 200
+    assert figure("open_corners", np.sum(act & corner & (gp > 0))) == 0
+    d = (p - axisymmetric_profile(axi)(r)) / at["hertz_pmax"]
+    edge = (r >= 0.95 * at["hertz_a"]) & (r < at["hertz_a"])
+    opened = np.zeros(len(r), bool)
+    opened[mids] = True
+    assert 0.005 <= figure("open_mid", np.mean(d[edge & opened])) <= 0.03
+    assert 0 < figure("other_mid", np.mean(d[edge & ~corner & act & ~opened])) <= 0.015
 
 
 @pytest.mark.stress
