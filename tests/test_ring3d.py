@@ -162,7 +162,9 @@ def test_ring_matched(ring_quarter):
 @pytest.mark.stress
 def test_ring_supports(ring_quarter):
     """Why the midside nodes read high at the edge (issue 49, 4): the 3D
-    solution, not a node's reading of a smooth field. The r-z run's profile
+    discrete solution (its midside nodes' weighted gaps:
+    test_ring_midside_gaps), not a node's reading of a smooth field. The
+    r-z run's profile
     read over each 3D node's own support as the pair reads a pressure
     field, int Nt_j p dS / A_j (the consistent reading: the nodal forces of
     p are int N_i p dS, and p_j A_j = int Nt_j p dS for the pair's; the
