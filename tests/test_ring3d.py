@@ -15,10 +15,13 @@ What parts the two profiles is the 3D faces' midside nodes just inside the
 edge, above the r-z run where the corners are not (test_ring_matched). It
 is the 3D solution's nodal values, not how a node reads a smooth field: the
 r-z profile read over each 3D node's own support reads lower, not higher,
-at the midside nodes (test_ring_supports), and finer rings (hr 0.002,
-0.0015, and faces of 0.006 inside) bring the profile to 0.63 to 0.71 % of
-the r-z run meshed alike, not the 0.5 % asked, the midside nodes' excess at
-the edge staying (test_ring_finer)."""
+at the midside nodes (test_ring_supports); a midside node beside an open
+corner reads a penetration where its own point is apart
+(test_ring_midside_gaps). Finer narrow rings (hr 0.002, 0.0015, wr = 2 hr,
+and faces of 0.006 inside) bring the profile to 0.63 to 0.71 % of the r-z
+run meshed alike, the midside nodes' excess at the edge staying
+(test_ring_finer); a ring of 0.0015 four times as wide (0.96 a to 1.04 a)
+with faces of 0.006 inside meets the 0.5 % asked: 0.43 % (test_ring_wide)."""
 import math
 
 import numpy as np
@@ -27,7 +30,7 @@ import pytest
 from conftest import figure, run_contact
 from test_sphere3d import SCENE, axisymmetric_args
 from test_sphere3d_fine import l2, profile
-from test_whole3d import ALPHA, GRADED, RING, axisymmetric_profile, hertz_profile, nodal_averages
+from test_whole3d import ALPHA, GRADED, RING, axisymmetric, axisymmetric_profile, hertz_profile, nodal_averages
 
 # Hertz: the r-z run meshed as the 3D quarter near the contact (ball: h =
 # 0.009 within 0.11 growing to 0.2 at 0.6; flat: 0.025 within 0.2 growing to
@@ -342,7 +345,8 @@ def test_ring_midside_gaps(ring_quarter):
 def test_ring_matched_issue(ring_quarter):
     """The issue's bound, the profile within 0.5 % in L2 of the r-z run of
     the same sphere: not met with the ring (`profile_l2_matched` = 0.0075;
-    nor with finer rings: test_ring_finer)."""
+    nor with finer narrow rings, test_ring_finer; met with a wide ring of
+    0.0015 and faces of 0.006 inside, test_ring_wide)."""
     quarter, axi = ring_quarter
     assert figure("profile_l2_matched", profile_against_axisymmetric(quarter, axi)["l2"]) <= 0.005
 
@@ -388,7 +392,8 @@ def test_ring_finer(finer_rings):
     = +0.0057 p0 (bounds 0 to 0.02), the corners `corner_hr002` = -0.0042,
     `corner_hr0015` = +0.0004, `corner_hr0015_h006` = -0.0005 (bounds
     0.01): the edge's excess does not fall with hr, where the interior's
-    split (test_ring_supports) does with h: `split_h009` = +0.0017 at h =
+    split (test_ring_supports) does with h (the edge's excess falls with
+    a wider ring: test_ring_wide): `split_h009` = +0.0017 at h =
     0.009 (the ring of 0.0015), `split_h006` = +0.0009 at 0.006 (bounds 0
     to 0.004; their ratio `split_ratio` = 0.48, bound 0.7, (0.006/0.009)^2
     = 0.44)."""
@@ -406,9 +411,65 @@ def test_ring_finer(finer_rings):
 
 
 @pytest.mark.stress
-@pytest.mark.xfail(strict=True, reason="finer rings bring the 3D profile to 0.63 to 0.71 % of the r-z run meshed alike, "
-                   "not the issue's 0.5 %: the midside nodes' excess at the edge does not fall with the ring")
+@pytest.mark.xfail(strict=True, reason="finer narrow rings bring the 3D profile to 0.63 to 0.71 % of the r-z run meshed "
+                   "alike, not the issue's 0.5 %: the midside nodes' excess at the edge does not fall with the ring's hr "
+                   "(a wide ring meets it: test_ring_wide)")
 def test_ring_finer_issue(finer_rings):
-    """The issue's 0.5 % with the finest ring: not met (`l2_hr0015` =
-    0.0063, test_ring_finer)."""
+    """The issue's 0.5 % with the finest narrow ring: not met (`l2_hr0015`
+    = 0.0063, test_ring_finer; met with a wide ring: test_ring_wide)."""
     assert figure("l2_hr0015", profile_against_axisymmetric(*finer_rings["hr0015"])["l2"]) <= 0.005
+
+
+# The ring of 0.0015 four times as wide (wr = 0.006: 0.96 a to 1.04 a) with
+# faces of 0.006 inside, CG + GAMG steps
+WIDE = ["-ball_geo_params", GRADED + ",ra=0.102,hr=0.0015,wr=0.006", "-ball_mesh_size", 0.006, "-newton_iterative", 1]
+
+
+@pytest.fixture(scope="module")
+def wide_ring(tmp_path_factory):
+    """The graded quarter with the wide ring, the r-z run meshed alike, and
+    the r-z runs at h = 0.001 and 0.002."""
+    d = tmp_path_factory.mktemp("ring3d_wide")
+    return (run_contact(SCENE + WIDE, d, name="wide", timeout=3600),
+            axisymmetric_matched(d, "ra=0.102,hr=0.0015,wr=0.006,rr=0.6", "axi_wide", h=0.006),
+            axisymmetric(0.001, d), axisymmetric(0.002, d))
+
+
+@pytest.mark.stress
+def test_ring_wide(wide_ring):
+    """The issue's 0.5 % (issue 49, 4), met with a wide ring: faces of
+    0.0015 within 0.006 of r = a (0.96 a to 1.04 a, where the narrow rings
+    of test_ring_finer reach 0.98 a to 1.02 a) and of 0.006 inside
+    (`dofs` = 139918; 10 Newton iterations, 247 s and 2.1 GB with CG +
+    GAMG on the shared machine). The profile lies `l2_matched` = 0.0043
+    from the r-z run meshed alike (bound 0.005, the issue's) and `l2_h001`
+    = 0.0042 from the r-z run at h = 0.001 (bound 0.005), `profile_l2` =
+    0.0046 from Hertz (bound 0.01); the band 0.98 a < r < 1.02 a holds
+    `band` = 0.35 of its square (0.60 with the narrow ring), the part from
+    r < 0.9 a is `inner` = 0.0030 (bound 0.006), and the midside nodes in
+    0.95 a < r < a lie `mid` = +0.0011 p0 above the r-z run (bound 0 to
+    0.005; +0.0057 with the narrow ring), the corners `corner` = -0.0025
+    (bound 0.006). The narrow ring's transition to the coarser faces lay
+    just inside the edge. Against the r-z run at h = 0.002 the profile is
+    `l2_h002` = 0.0055 (bound 0.011: not within 0.5 %), as that run's own
+    nodal profile lies `axi_h002_h001` = 0.0028 from the r-z run's at h =
+    0.001 (bound 0.006; the r-z run meshed alike `axi_matched_h001` =
+    0.0014, bound 0.003): at 0.5 % the r-z reference's own nodes matter.
+    (The wide ring with faces of 0.009 inside, 96,234 dofs and 17 Newton
+    iterations, lay 0.56 % from its r-z run meshed alike, 0.44 % of it
+    from r < 0.9 a.)"""
+    quarter, axi, axi001, axi002 = wide_ring
+    figure("dofs", quarter.summary["dofs"])
+    f = profile_against_axisymmetric(quarter, axi)
+    assert figure("l2_matched", f["l2"]) <= 0.005
+    assert figure("l2_h001", profile_against_axisymmetric(quarter, axi001)["l2"]) <= 0.005
+    assert figure("profile_l2", f["hertz"]) <= 0.01
+    figure("band", f["band"])
+    assert figure("inner", f["inner"]) <= 0.006
+    assert 0 < figure("mid", f["mid"]) <= 0.005
+    assert abs(figure("corner", f["corner"])) <= 0.006
+    assert figure("l2_h002", profile_against_axisymmetric(quarter, axi002)["l2"]) <= 0.011
+    ref = axisymmetric_profile(axi001)
+    for name, res, bound in (("axi_h002_h001", axi002, 0.006), ("axi_matched_h001", axi, 0.003)):
+        r, p, A, _ = profile(res.output_path, "ball_contact")
+        assert figure(name, l2(p, A, ref(r))) <= bound
