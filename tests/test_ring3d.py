@@ -354,7 +354,9 @@ def test_ring_matched_issue(ring_quarter):
 
 # Finer rings (hr, wr = 2 hr) on the graded quarter (h inside), each against
 # the r-z run meshed alike; CG + GAMG steps (-newton_iterative 1: the same
-# minimiser, 1.1 to 1.5 GB where the direct step took 4.1 GB at hr 0.002)
+# minimiser, at hr 0.0015 the direct step's profile figures to 1e-6 and P to
+# 1e-11; 1.1 to 1.5 GB where the direct step took 4.1 GB at hr 0.002 and
+# 5.0 GB at 0.0015)
 FINER = (("hr002", 0.002, 0.009), ("hr0015", 0.0015, 0.009), ("hr0015_h006", 0.0015, 0.006))
 
 
