@@ -77,14 +77,17 @@ def tri6_rule(n):
     return np.array(pts), np.array(wts)
 
 
-def nodal_averages(path, ref, n=6):
+def nodal_averages(path, ref, n=6, dual=False):
     """A reference profile ref(r) read as the pair reads pressure: for each
     slave node int Nt_j ref dS / int Nt_j dS over the Tri6 faces of the
     cap (reference coordinates; Nt face3d.c's transformed basis, alpha =
     1/5), and the int Nt_j dS (= the program's A_j). A pressure field p
     gives the nodal forces int N_i p dS; the pair's are sum_j p_j int W_j
     N_i dS, and since the dual weights W_j are biorthogonal to Nt, T f =
-    (p_j A_j) (Nt = T N): p_j A_j = int Nt_j p dS."""
+    (p_j A_j) (Nt = T N): p_j A_j = int Nt_j p dS. With dual, int W_j ref
+    dS / int W_j dS with the dual weights themselves (face3d.c: W = A Nt,
+    A = D M^-1 face by face), how the pair averages the gap into g_j: the
+    reference read as if it were -k_p g."""
     import h5py
     with h5py.File(path, "r") as f:
         g = f["contact/ball/ball_cap"]
@@ -102,8 +105,11 @@ def nodal_averages(path, ref, n=6):
         x = X[c]
         xq = N @ x
         w = wq * np.linalg.norm(np.cross(dr @ x, ds @ x), axis=1)
-        A[c] += Nt.T @ w
-        Q[c] += Nt.T @ (w * ref(np.hypot(xq[:, 0], xq[:, 1])))
+        W = Nt
+        if dual:
+            W = Nt @ ((Nt.T @ w)[:, None] * np.linalg.inv(Nt.T @ (w[:, None] * Nt))).T
+        A[c] += W.T @ w
+        Q[c] += W.T @ (w * ref(np.hypot(xq[:, 0], xq[:, 1])))
     return Q / A, A
 
 
