@@ -213,7 +213,7 @@ PetscErrorCode ContactReportView(const ContactReport *R, const ContactPairSpec *
     PetscCall(PetscPrintf(comm, "  friction mu = %g: shear force (%.6e, %.6e); the whole force %.6e along the contact zone's normal, Q = %.6e across, Q/(mu P) = %.4f; stick zone %s c = %.6g", (double)spec->friction, (double)R->shearForce[0], (double)R->shearForce[1], (double)R->normalLoad, (double)R->tangentialLoad, (double)(R->normalLoad > 0 ? R->tangentialLoad / (spec->friction * R->normalLoad) : 0.0), spec->axisym ? "radius" : "half-width", (double)R->stickHalfWidth));
     if (spec->hertz && R->mindlinC > 0) {
       const PetscReal beta = ContactDundursBeta(bodies[spec->body[0]], bodies[spec->body[1]]);
-      PetscCall(PetscPrintf(comm, ", Mindlin's %.6g (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
+      PetscCall(PetscPrintf(comm, ", Mindlin's %.6g for Q after P at constant P (%+.2f %%)", (double)R->mindlinC, (double)(100.0 * (R->stickHalfWidth / R->mindlinC - 1.0))));
       if (PetscAbsReal(beta) > 1e-3) PetscCall(PetscPrintf(comm, " (his is for elastically similar bodies; these have Dundurs' beta = %.3g)", (double)beta));
     }
     PetscCall(PetscPrintf(comm, "\n"));

@@ -177,7 +177,7 @@ PetscErrorCode ContactReport3dView(const ContactReport3d *R, const ContactPairSp
   }
   PetscCall(PetscPrintf(comm, "  contact radius a = %.6g from the contact area (sqrt(area/pi)), %.6g from the pressure's second moment (sum p A r^2 / sum p A = 2 a^2/5, reference positions, centre (%.4g, %.4g, %.4g)); p_max = %.6g\n", (double)R->aArea, (double)R->aMoment, (double)R->centre[0], (double)R->centre[1], (double)R->centre[2], (double)R->pmax));
   if (R->friction) {
-    PetscCall(PetscPrintf(comm, "  %s: P = %.6g (the normal load), Q = %.6g, Q/(mu P) = %.6g; a = %.6g (area), %.6g (second moment); p_max = %.6g; stick radius c = %.6g (sqrt(stick area/pi), c/a = %.4f, a the second moment's); Mindlin's c = %.6g (c/a = (1 - Q/(mu P))^(1/3) = %.4f)\n", spec->nsym ? "the whole model" : "the pair",
+    PetscCall(PetscPrintf(comm, "  %s: P = %.6g (the normal load), Q = %.6g, Q/(mu P) = %.6g; a = %.6g (area), %.6g (second moment); p_max = %.6g; stick radius c = %.6g (sqrt(stick area/pi), c/a = %.4f, a the second moment's); Mindlin's c = %.6g (c/a = (1 - Q/(mu P))^(1/3) = %.4f, for Q after P at constant P)\n", spec->nsym ? "the whole model" : "the pair",
                           (double)R->N, (double)R->Q, (double)(R->N > 0 ? R->Q / (R->mu * R->N) : 0.0), (double)R->aArea, (double)R->aMoment, (double)R->pmax, (double)R->stickRadius, (double)(R->aMoment > 0 ? R->stickRadius / R->aMoment : 0.0), (double)R->mindlinC,
                           (double)(R->aMoment > 0 ? R->mindlinC / R->aMoment : 0.0)));
   }
