@@ -30,7 +30,7 @@ import pytest
 from conftest import figure, run_contact
 from test_sphere3d import SCENE, axisymmetric_args
 from test_sphere3d_fine import l2, profile
-from test_whole3d import ALPHA, GRADED, RING, axisymmetric, axisymmetric_profile, hertz_profile, nodal_averages
+from test_whole3d import ALPHA, GRADED, RING, axisymmetric, axisymmetric_profile, hertz_profile, nodal_averages, tri6_basis
 
 # Hertz: the r-z run meshed as the 3D quarter near the contact (ball: h =
 # 0.009 within 0.11 growing to 0.2 at 0.6; flat: 0.025 within 0.2 growing to
@@ -236,20 +236,15 @@ def point_gaps(quarter):
     faces = np.array(faces)
     centre = X[faces[:, :3]].mean(1)[:, :2]
 
-    def tri6(r, s):
-        l0 = 1 - r - s
-        return (np.array([l0 * (2 * l0 - 1), r * (2 * r - 1), s * (2 * s - 1), 4 * l0 * r, 4 * r * s, 4 * s * l0]),
-                np.array([1 - 4 * l0, 4 * r - 1, 0, 4 * (l0 - r), 4 * s, -4 * s]),
-                np.array([1 - 4 * l0, 0, 4 * s - 1, -4 * r, 4 * r, 4 * (l0 - s)]))
     gp = np.full(len(xs), np.nan)
     for n, q in enumerate(xs):
         for fi in np.argsort(np.sum((centre - q[:2]) ** 2, 1))[:6]:
             xm, xi = x[faces[fi]], np.array([1 / 3, 1 / 3])
             for _ in range(30):
-                N, dr, ds = tri6(*xi)
+                N, dr, ds = tri6_basis(*xi)
                 xi = xi - np.linalg.solve(np.stack([dr @ xm[:, :2], ds @ xm[:, :2]], 1), N @ xm[:, :2] - q[:2])
             if xi.min() >= -1e-9 and xi.sum() <= 1 + 1e-9:
-                N, dr, ds = tri6(*xi)
+                N, dr, ds = tri6_basis(*xi)
                 nrm = np.cross(dr @ xm, ds @ xm)
                 gp[n] = (q - N @ xm) @ nrm / (np.linalg.norm(nrm) * np.sign(nrm[2]))
                 break

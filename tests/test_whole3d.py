@@ -77,6 +77,15 @@ def tri6_rule(n):
     return np.array(pts), np.array(wts)
 
 
+def tri6_basis(r, s):
+    """Gmsh's Triangle6 shape functions and their r and s derivatives at (r, s)
+    (numbers or arrays of points: the last axis the 6 nodes)."""
+    l0 = 1 - r - s
+    return (np.stack([l0 * (2 * l0 - 1), r * (2 * r - 1), s * (2 * s - 1), 4 * l0 * r, 4 * r * s, 4 * s * l0], -1),
+            np.stack([1 - 4 * l0, 4 * r - 1, 0 * r, 4 * (l0 - r), 4 * s, -4 * s], -1),
+            np.stack([1 - 4 * l0, 0 * r, 4 * s - 1, -4 * r, 4 * r, 4 * (l0 - s)], -1))
+
+
 def nodal_averages(path, ref, n=6, dual=False):
     """A reference profile ref(r) read as the pair reads pressure: for each
     slave node int Nt_j ref dS / int Nt_j dS over the Tri6 faces of the
@@ -93,11 +102,7 @@ def nodal_averages(path, ref, n=6, dual=False):
         g = f["contact/ball/ball_cap"]
         X, cells = g["node_X"][:], g["node_cells"][:]
     P, wq = tri6_rule(n)
-    r_, s_ = P[:, 0], P[:, 1]
-    l0 = 1 - r_ - s_
-    N = np.stack([l0 * (2 * l0 - 1), r_ * (2 * r_ - 1), s_ * (2 * s_ - 1), 4 * l0 * r_, 4 * r_ * s_, 4 * s_ * l0], -1)
-    dr = np.stack([1 - 4 * l0, 4 * r_ - 1, 0 * r_, 4 * (l0 - r_), 4 * s_, -4 * s_], -1)
-    ds = np.stack([1 - 4 * l0, 0 * r_, 4 * s_ - 1, -4 * r_, 4 * r_, 4 * (l0 - s_)], -1)
+    N, dr, ds = tri6_basis(P[:, 0], P[:, 1])
     Nt = np.stack([N[:, 0] + ALPHA * (N[:, 3] + N[:, 5]), N[:, 1] + ALPHA * (N[:, 3] + N[:, 4]),
                    N[:, 2] + ALPHA * (N[:, 4] + N[:, 5])] + [(1 - 2 * ALPHA) * N[:, k] for k in (3, 4, 5)], -1)
     A, Q = np.zeros(len(X)), np.zeros(len(X))
