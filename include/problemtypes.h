@@ -144,7 +144,9 @@ struct _n_Problem {
   Vec            X0;   /* the first iterate (NULL: rest; ignored with load or penalty stages) */
   Mat            H, K; /* Hessian, elastic stiffness of the bodies */
   IS             surfaceDofs; /* contact-surface dofs (the contact Hessian's block), or NULL */
-  PetscBool      hessianGrown; /* a term's Hessian left K's pattern (its own, 3D): H copies K by rows since */
+  PetscBool      hessianGrown; /* a term's Hessian left K's pattern (its own, 3D): H starts from Kh since */
+  Mat            Kh;           /* after a growth: K laid out in H's pattern, copied into H as it stands (or NULL) */
+  PetscObjectState khState;    /* H's nonzero state when Kh was laid out: H grown again lays it out anew */
   Subdomain      sub;         /* several ranks: this rank's cells and their stiffness, until the Newton step takes it */
   Tao            tao;
   PetscBool      exactHessian; /* the second-order term is in the current Hessian (may be indefinite) */
