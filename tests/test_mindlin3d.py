@@ -22,7 +22,7 @@ Contact Mechanics 7.2). make test: a/h = 2.7 (h = 0.04, 17,983 dofs, 2 to 3
 min each on the loaded machine), meshed apart and mirrored; make stress: a/h
 = 5.3 (h = 0.02, 20,739 and 20,802 dofs, 8 min each) at nu 0.3 and 0, and h
 = 0.04 at nu = 0, and a/h = 10.5 (h = 0.01, 35,304 dofs, meshed apart, nu
-0.3: 61 min on the loaded machine)."""
+0.3: 61 min on the loaded machine; mirrored, nu 0.3: 15 min)."""
 import math
 import subprocess
 
@@ -502,3 +502,47 @@ def test_fine_coulomb(fine):
     assert c["open_shear"] == 0
     assert figure("ring_max", max(abs(v) for v in f["rings"])) <= 0.0025
     assert figure("across", f[4]["across"]) <= 3 * FINE[4]["across"]
+
+
+# make stress: the mirrored meshes at a/h = 10.5 (h = 0.01, nu 0.3; 15 min,
+# 3.1 GB, beside another run on the 2 cores)
+MIRRORED_FINE = {2: dict(c_err=0.0021, l2=0.101), 3: dict(c_err=0.0061, l2=0.054), 4: dict(c_err=-0.0160, l2=0.048)}
+
+
+@pytest.fixture(scope="module")
+def mirrored_fine(tmp_path_factory):
+    return run_mirrored(tmp_path_factory, FINE_H, 0.3)
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MIRRORED_FINE, k, "c_err", C_BOUND, "10.5") for k in (2, 3, 4)])
+def test_mirrored_fine_stick_radius(mirrored_fine, k):
+    """Mirrored meshes at a/h = 10.5 (h = 0.01), nu 0.3, stage k's c/a from
+    Mindlin's: `c_over_a_error` = -0.0160 to +0.0061 (+0.0021, +0.0061,
+    -0.0160 at `ratio` = 0.203, 0.501, 0.803), bound the issue's 2 % (3
+    times the figure where tighter). The normal stage's ring means
+    `ring_max` = 0.00083 of mu p0 at most (bound 0.0025); Coulomb where a
+    node slips at the last stage's end: `slip_error` = 3.2e-16 of mu p_max
+    (bound 1e-12)."""
+    f = mindlin_figures(mirrored_fine)
+    assert figure("ring_max", max(abs(v) for v in f["rings"])) <= 0.0025
+    assert figure("slip_error", f["coulomb"]["slip_error"]) <= 1e-12
+    figure("ratio", f[k]["ratio"])
+    err = figure("c_over_a_error", f[k]["c_err"])
+    assert abs(err) <= min(C_BOUND, 3 * abs(MIRRORED_FINE[k]["c_err"]))
+
+
+@pytest.mark.stress
+@pytest.mark.parametrize("k", [within(MIRRORED_FINE, k, "l2", L2_BOUND, "10.5") for k in (2, 3, 4)])
+def test_mirrored_fine_shear(mirrored_fine, k):
+    """Mirrored meshes at a/h = 10.5, nu 0.3, stage k's shear along Q
+    against Mindlin's (as test_shear): `l2` = 0.048 to 0.101 (0.101, 0.054,
+    0.048 at Q/(mu P) = 0.2, 0.5, 0.8; meshed apart 0.121, 0.060, 0.050),
+    the issue's 10 % met at 0.5 and 0.8, not at 0.2 (xfail, strict), where
+    the normal stage locks in `locked` = 0.0068 to 0.025 of Mindlin's shear
+    (meshed apart 0.099 at 0.2): what is left at 0.2 is the mesh's across
+    the annulus c < r < a, 0.7 h wide."""
+    f = mindlin_figures(mirrored_fine)
+    figure("locked", f[k]["locked"])
+    l2 = figure("l2", f[k]["l2"])
+    assert l2 <= min(L2_BOUND, 3 * MIRRORED_FINE[k]["l2"])
