@@ -780,18 +780,17 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
 /* The Gauss-Newton part k_p sum_j G_j G_j^T / A_j over the nodes j in
    contact this rank assembles (m->nodeRank), G_j's entries by joined index
    summed over the faces around j (all[] by m->hessSlot). The blocks of neighbouring nodes overlap
-   (a master node faces many slave nodes), so they are summed first, rows by
-   chunks of a dense buffer over the dofs they touch (at most
-   MORTAR3D_GN_BUFFER numbers), and each row of the sum is added once, its
-   columns in order: one MatSetValues entry per nonzero of the sum, not one
-   per node and pair of its dofs. */
-#define MORTAR3D_GN_BUFFER 4000000
+   (a master node faces many slave nodes), so they are summed first, row by
+   row from the nodes whose G_j holds the row's dof (the work the nonzeros',
+   sum_j n_j^2, not the square of the number of dofs touched, as a dense
+   buffer over them would cost), and each row of the sum is added
+   once, its columns in order: one MatSetValues entry per nonzero of the sum,
+   not one per node and pair of its dofs. */
 static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
-  PetscInt                nj = 0, total = 0, nU = 0, *start, *idx, *loc, *U, *cols;
-  PetscReal              *val, *w, *buf, *rowv, *Kr;
-  char                   *hit;
+  PetscInt                nj = 0, total = 0, nU = 0, *start, *idx, *loc, *U;
+  PetscReal              *val, *w, *Kr;
   const PetscBool         rigid = (PetscBool)(!BodyHasCells(m->body[0]) || !BodyHasCells(m->body[1]));
 
   PetscFunctionBeginUser;
@@ -845,38 +844,48 @@ static PetscErrorCode Mortar3dAddGaussNewton(Mortar3d *m, const Mortar3dFace all
   nU = total;
   PetscCall(PetscSortRemoveDupsInt(&nU, U));
   for (PetscInt l = 0; l < total; ++l) PetscCall(PetscFindInt(idx[l], nU, U, &loc[l]));
-  {
-    const PetscInt B = PetscMax(1, PetscMin(nU, MORTAR3D_GN_BUFFER / PetscMax(nU, 1)));
-    PetscCall(PetscMalloc4(B * nU + 1, &buf, B * nU + 1, &hit, nU + 1, &cols, nU + 1, &rowv));
-    for (PetscInt r0 = 0; r0 < nU; r0 += B) {
-      const PetscInt r1 = PetscMin(nU, r0 + B);
-      PetscCall(PetscArrayzero(buf, (r1 - r0) * nU));
-      PetscCall(PetscArrayzero(hit, (r1 - r0) * nU));
-      for (PetscInt q = 0; q < nj; ++q)
-        for (PetscInt a = start[q]; a < start[q + 1]; ++a) {
-          PetscReal *row;
-          char      *h;
-          PetscReal  wa;
-          if (loc[a] < r0 || loc[a] >= r1) continue;
-          row = &buf[(loc[a] - r0) * nU];
-          h   = &hit[(loc[a] - r0) * nU];
-          wa  = w[q] * val[a];
-          for (PetscInt b = start[q]; b < start[q + 1]; ++b) {
-            row[loc[b]] += wa * val[b];
-            h[loc[b]] = 1;
-          }
-        }
-      for (PetscInt r = r0; r < r1; ++r) {
-        PetscInt nc = 0;
-        for (PetscInt b = 0; b < nU; ++b)
-          if (hit[(r - r0) * nU + b]) {
-            cols[nc]   = U[b];
-            rowv[nc++] = buf[(r - r0) * nU + b];
-          }
-        if (nc) PetscCall(MatSetValues(H, 1, &U[r], nc, cols, rowv, ADD_VALUES));
-      }
+  { /* each row r of the sum from the nodes whose G_j holds U[r] (rq, ra by row, nodes ascending), its columns marked in acc */
+    PetscInt  *rs, *cur, *rq, *ra, *mark, *touched, *cols;
+    PetscReal *acc, *rowv;
+    PetscCall(PetscCalloc2(nU + 1, &rs, nU + 1, &cur));
+    PetscCall(PetscMalloc2(total + 1, &rq, total + 1, &ra));
+    PetscCall(PetscMalloc5(nU + 1, &mark, nU + 1, &touched, nU + 1, &cols, nU + 1, &acc, nU + 1, &rowv));
+    for (PetscInt a = 0; a < total; ++a) ++rs[loc[a] + 1];
+    for (PetscInt r = 0; r < nU; ++r) {
+      rs[r + 1] += rs[r];
+      cur[r] = rs[r];
+      mark[r] = -1;
     }
-    PetscCall(PetscFree4(buf, hit, cols, rowv));
+    for (PetscInt q = 0; q < nj; ++q)
+      for (PetscInt a = start[q]; a < start[q + 1]; ++a) {
+        rq[cur[loc[a]]]   = q;
+        ra[cur[loc[a]]++] = a;
+      }
+    for (PetscInt r = 0; r < nU; ++r) {
+      PetscInt nt = 0;
+      for (PetscInt e = rs[r]; e < rs[r + 1]; ++e) {
+        const PetscInt  q  = rq[e];
+        const PetscReal wa = w[q] * val[ra[e]];
+        for (PetscInt b = start[q]; b < start[q + 1]; ++b) {
+          const PetscInt c = loc[b];
+          if (mark[c] != r) {
+            mark[c]       = r;
+            acc[c]        = 0.0;
+            touched[nt++] = c;
+          }
+          acc[c] += wa * val[b];
+        }
+      }
+      PetscCall(PetscSortInt(nt, touched));
+      for (PetscInt i = 0; i < nt; ++i) {
+        cols[i] = U[touched[i]];
+        rowv[i] = acc[touched[i]];
+      }
+      if (nt) PetscCall(MatSetValues(H, 1, &U[r], nt, cols, rowv, ADD_VALUES));
+    }
+    PetscCall(PetscFree5(mark, touched, cols, acc, rowv));
+    PetscCall(PetscFree2(rq, ra));
+    PetscCall(PetscFree2(rs, cur));
   }
   PetscCall(PetscFree(U));
   PetscCall(PetscFree5(start, idx, val, loc, w));
