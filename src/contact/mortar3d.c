@@ -141,7 +141,7 @@ typedef struct {
   ContactReport3d report; /* the whole model's figures and Hertz's (report3d.c) */
 } Mortar3d;
 
-static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian, MORTAR3D_FrictionLag;
+static PetscLogEvent MORTAR3D_EnergyGrad, MORTAR3D_Hessian, MORTAR3D_FrictionLag, MORTAR3D_Grow;
 static PetscErrorCode Mortar3dFrictionResults(Mortar3d *);
 static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *, EnergyTerm);
 static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *, Body[], PetscViewer, MPI_Comm, PetscInt);
@@ -927,22 +927,30 @@ static PetscErrorCode Mortar3dPatternCovers(Mortar3d *m, const Mortar3dFace all[
 
 /* Collective. The pair has slid past the pattern reserved for its Hessian
    (Mortar3dGetPattern's margin): H's preallocation is made again, once, as
-   the union of its pattern and the entries this Hessian adds (counted by a
-   MATPREALLOCATOR), its values so far kept, in place of PETSc's growth
-   entry by entry, which copies the whole matrix at each row that overflows
-   (minutes for one Hessian at 2e4 dofs once a ball has slid by its contact
-   width). The master faces met join m->covered. */
+   the union of its pattern and the entries this Hessian adds, its values
+   so far kept, in place of PETSc's growth entry by entry, which copies the
+   whole matrix at each row that overflows (minutes for one Hessian at 2e4
+   dofs once a ball has slid by its contact width). The entries added are
+   counted by a MATPREALLOCATOR over this pair's Hessian alone and laid out
+   in an AIJ matrix (C); H's rows are then merged with C's row by row into
+   one CSR (H's values, zeros at the new entries) that becomes H's
+   preallocation and values at once. A MATPREALLOCATOR over the whole of H
+   (every entry hashed) cost some 3 s a growth at 1e5 dofs, ten Hessians'
+   worth. The master faces met join m->covered. */
 static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[], PetscMPIInt rank, Mat H)
 {
-  Mat      save, pre;
-  MPI_Comm comm;
-  PetscInt rstart, rend, mloc, nloc, M, N, rbs, cbs;
+  Mat          pre, C;
+  MPI_Comm     comm;
+  PetscInt     rstart, rend, mloc, nloc, M, N, rbs, cbs, *ia, *ja;
+  PetscScalar *va;
+  PetscMPIInt  size;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(MORTAR3D_Grow, 0, 0, 0, 0));
   PetscCall(PetscObjectGetComm((PetscObject)H, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &save));
   PetscCall(MatGetLocalSize(H, &mloc, &nloc));
   PetscCall(MatGetSize(H, &M, &N));
   PetscCall(MatGetBlockSizes(H, &rbs, &cbs));
@@ -951,25 +959,53 @@ static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[],
   PetscCall(MatSetBlockSizes(pre, rbs, cbs));
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
   PetscCall(MatSetUp(pre));
-  PetscCall(MatGetOwnershipRange(save, &rstart, &rend));
-  for (PetscInt r = rstart; r < rend; ++r) {
-    const PetscInt    *cols;
-    const PetscScalar *vals;
-    PetscInt           nc;
-    PetscCall(MatGetRow(save, r, &nc, &cols, &vals));
-    PetscCall(MatSetValues(pre, 1, &r, nc, cols, vals, ADD_VALUES));
-    PetscCall(MatRestoreRow(save, r, &nc, &cols, &vals));
-  }
   m->counting = PETSC_TRUE;
   PetscCall(Mortar3dHessianAdd(m, all, rank, pre));
   m->counting = PETSC_FALSE;
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, H));
-  PetscCall(MatCopy(save, H, DIFFERENT_NONZERO_PATTERN));
-  PetscCall(MatSetOption(H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatCreate(comm, &C));
+  PetscCall(MatSetSizes(C, mloc, nloc, M, N));
+  PetscCall(MatSetBlockSizes(C, rbs, cbs));
+  PetscCall(MatSetType(C, size > 1 ? MATMPIAIJ : MATSEQAIJ));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, C));
   PetscCall(MatDestroy(&pre));
-  PetscCall(MatDestroy(&save));
+  PetscCall(MatAssemblyBegin(C, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(C, MAT_FINAL_ASSEMBLY));
+  /* the union row by row: counted, then filled (both rows' columns sorted) */
+  PetscCall(MatGetOwnershipRange(H, &rstart, &rend));
+  PetscCall(PetscMalloc1(rend - rstart + 1, &ia));
+  ia[0] = 0;
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    if (pass) PetscCall(PetscMalloc2(ia[rend - rstart] + 1, &ja, ia[rend - rstart] + 1, &va));
+    for (PetscInt r = rstart; r < rend; ++r) {
+      const PetscInt    *hc, *cc;
+      const PetscScalar *hv;
+      PetscInt           nh, nc, i = 0, j = 0, n = pass ? ia[r - rstart] : 0;
+      PetscCall(MatGetRow(H, r, &nh, &hc, pass ? &hv : NULL));
+      PetscCall(MatGetRow(C, r, &nc, &cc, NULL));
+      while (i < nh || j < nc) {
+        const PetscBool fromH = (PetscBool)(j == nc || (i < nh && hc[i] <= cc[j]));
+        if (pass) {
+          ja[n] = fromH ? hc[i] : cc[j];
+          va[n] = fromH ? hv[i] : 0.0;
+        }
+        ++n;
+        if (fromH && j < nc && hc[i] == cc[j]) ++j;
+        if (fromH) ++i;
+        else ++j;
+      }
+      if (!pass) ia[r - rstart + 1] = ia[r - rstart] + n;
+      PetscCall(MatRestoreRow(C, r, &nc, &cc, NULL));
+      PetscCall(MatRestoreRow(H, r, &nh, &hc, pass ? &hv : NULL));
+    }
+  }
+  PetscCall(MatDestroy(&C));
+  PetscCall(MatSeqAIJSetPreallocationCSR(H, ia, ja, va));
+  PetscCall(MatMPIAIJSetPreallocationCSR(H, ia, ja, va));
+  PetscCall(MatSetOption(H, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(PetscFree2(ja, va));
+  PetscCall(PetscFree(ia));
   for (PetscInt k = 0; k < m->nhess; ++k)
     for (PetscInt i = 0; i < all[k].nm; ++i) {
       PetscHashIJKey key;
@@ -978,6 +1014,7 @@ static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[],
       PetscCall(PetscHSetIJAdd(m->covered, key));
     }
   PetscCall(PetscInfo(NULL, "pair %s: slid past the Hessian's pattern (-contact_mortar_pattern_margin %g): its preallocation widened\n", m->spec.name, (double)m->patternMargin));
+  PetscCall(PetscLogEventEnd(MORTAR3D_Grow, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -2009,6 +2046,7 @@ PetscErrorCode ContactTermCreate_Mortar3d(const ContactPairSpec *spec, EnergyTer
     PetscCall(PetscLogEventRegister("Mortar3dEnergyGrad", id, &MORTAR3D_EnergyGrad));
     PetscCall(PetscLogEventRegister("Mortar3dHessian", id, &MORTAR3D_Hessian));
     PetscCall(PetscLogEventRegister("Mortar3dFrictionLag", id, &MORTAR3D_FrictionLag));
+    PetscCall(PetscLogEventRegister("Mortar3dGrow", id, &MORTAR3D_Grow));
   }
   PetscCheck(!spec->mirror, t->comm, PETSC_ERR_USER_INPUT, "option -contact_%s_mirror_y: a 2D half model's mirror; contact pair %s is 3D (hold symmetry planes on rollers instead)", spec->name, spec->name);
   PetscCall(PetscNew(&m));
