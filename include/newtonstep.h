@@ -28,6 +28,10 @@ PetscErrorCode ContactPCSetCholesky(PC, MPI_Comm, PetscBool indefinite);
    one rank with -newton_schur_type mumps, else substructure.c): the Newton
    step's, and L-BFGS's H0 = K + C (lmvm.c). */
 PetscErrorCode ProblemSchurPCSetUp(Problem, PC);
+/* 3D scenes with contact pairs: the contact surfaces' dofs, and whether
+   the Schur step fits (at most -newton_schur_surface_dofs of them, or
+   -newton_schur given); the Newton step's choice and L-BFGS's H0's. */
+PetscErrorCode ProblemSchurStepFits(Problem, PetscInt *nc, PetscBool *fits);
 /* Newton types (nls, ntr), before TaoSetFromOptions(): TAO's KSP with the
    step's preconditioner; with coupled force control the Hessian TAO sees
    (p->Htao) bordered by the controls, around a KSP of H (p->fc.ksp). */

@@ -182,3 +182,28 @@ def test_schur_by_surface(tmp_path):
     assert schur_choice(at) == ("schur", None)
     forced = run_contact(common + ["-newton_schur_surface_dofs", "100", "-newton_schur", "1", "-tao_max_it", "1"], tmp_path, name="forced", check=False)
     assert schur_choice(forced) == ("schur", None)
+
+
+def test_lmvm_h0_by_surface(tmp_path):
+    """L-BFGS's H0 (the stiffness and the contact's Gauss-Newton Hessian)
+    takes the Newton step's choice: the Schur step up to
+    -newton_schur_surface_dofs contact-surface dofs, the whole H0 factored
+    by Cholesky at each refresh above (where the Schur step's dense blocks
+    would not fit), said in one line. The quarter Hertz ball at h = 0.04 by
+    -tao_type lmvm, by default and with the limit below its surface dofs:
+    the same H0 factored otherwise, so the answers differ by what the stops
+    leave: the contact force and the energy `dP` = 1.8e-14 and `dE` = 6.7e-16
+    apart (relative; bound 1e-9)."""
+    from test_contact3d import hertz_args
+    common = [str(a) for a in hertz_args(0.04)] + ["-tao_type", "lmvm"]
+    schur = run_contact(common, tmp_path, name="schur")
+    assert "L-BFGS H0: direct factorisation of the whole H0" not in schur.stdout
+    whole = run_contact(common + ["-newton_schur_surface_dofs", "100"], tmp_path, name="whole")
+    m = re.search(r"L-BFGS H0: direct factorisation of the whole H0 at each refresh \(3D, with contact pairs on (\d+) surface dofs", whole.stdout)
+    assert m and int(m.group(1)) > 100
+    s, w = schur.summary, whole.summary
+    assert s["converged"] and w["converged"]
+    assert figure("dP", abs(w["contact_force"] / s["contact_force"] - 1)) <= 1e-9
+    assert figure("dE", abs(w["energy"] / s["energy"] - 1)) <= 1e-9
+    forced = run_contact(common + ["-newton_schur_surface_dofs", "100", "-newton_schur", "1", "-tao_max_it", "1"], tmp_path, name="forced", check=False)
+    assert "L-BFGS H0: direct factorisation" not in forced.stdout

@@ -10,7 +10,11 @@
    the contact's Gauss-Newton Hessian at the current iterate (positive
    semi-definite, so H0 stays SPD whatever -contact_hessian says). H0^-1 is
    the Newton step's Schur-complement solve (schur.c, substructure.c): K is
-   condensed once, each set-up of H0 redoes only the dense contact block.
+   condensed once, each set-up of H0 redoes only the dense contact block;
+   where the Newton step would not take it (-newton_schur 0, or a 3D scene
+   with more contact-surface dofs than -newton_schur_surface_dofs, whose
+   dense blocks would not fit: ProblemSchurStepFits), H0 is factored whole
+   by Cholesky at each set-up.
    H0 is set up at the first iterate of every TAO solve and then every
    -lmvm_h0_refresh iterations (the JSON's h0_refreshes counts them). What
    H0 leaves out is the second-order term of the gap (the tangential,
@@ -568,8 +572,16 @@ PetscErrorCode ProblemSetLMVMInitialHessian(Problem p)
   ksp = kin;
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (contact) PetscCall(ProblemSchurPCSetUp(p, pc));
-  else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
+  if (contact) {
+    PetscInt  nc;
+    PetscBool fits;
+    PetscCall(ProblemSchurStepFits(p, &nc, &fits));
+    if (p->cfg->newton.schur && fits) PetscCall(ProblemSchurPCSetUp(p, pc));
+    else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE)); /* H0 = K + C is SPD: refactored at each refresh */
+    if (!fits)
+      PetscCall(PetscPrintf(p->comm, "L-BFGS H0: direct factorisation of the whole H0 at each refresh (3D, with contact pairs on %" PetscInt_FMT " surface dofs, above -newton_schur_surface_dofs %" PetscInt_FMT ": the Schur step's dense surface blocks would take some %.0f MB; -newton_schur 1 forces it)\n", nc,
+                            p->cfg->newton.schurSurfaceDofs, 8.0 * (double)nc * (double)nc / 1048576.0));
+  } else PetscCall(ContactPCSetCholesky(pc, p->comm, PETSC_FALSE));
   if (p->fc.coupled) {
     PetscCall(ForceBorderMatCreate(p, H0, kin, &l->H0));
     PetscCall(TaoLMVMSetH0(p->tao, l->H0));
@@ -601,7 +613,7 @@ PetscErrorCode LMVMOptionsSetFromOptions(MPI_Comm comm, LMVMOptions *o)
   o->decrementFloor = 10.0;
   o->pairRatio      = 10.0;
   PetscOptionsBegin(comm, NULL, "L-BFGS options", NULL);
-  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)o->h0, (PetscEnum *)&o->h0, NULL));
+  PetscCall(PetscOptionsEnum("-lmvm_h0", "Initial Hessian of lmvm/blmvm: contact (the stiffness and the contact's Gauss-Newton Hessian, through the Newton step's Schur complement or, where that would not be taken, factored whole, refreshed every -lmvm_h0_refresh iterations; with one correction pair), elastic (the stiffness of the bodies, factorised once) or none", NULL, H0Types, (PetscEnum)o->h0, (PetscEnum *)&o->h0, NULL));
   PetscCall(PetscOptionsInt("-lmvm_h0_refresh", "-lmvm_h0 contact: recompute the contact part of H0 every this many iterations", NULL, o->h0Refresh, &o->h0Refresh, NULL));
   PetscCall(PetscOptionsInt("-lmvm_restarts", "-lmvm_h0 contact: restart an L-BFGS solve whose line search failed after it lowered the energy, with an empty history, at most this many times", NULL, o->restarts, &o->restarts, NULL));
   PetscCall(ContactOptionsRealNoDefault(PetscOptionsObject, "-lmvm_decrement_rtol", "-lmvm_h0 contact: the last stage stops when the Newton decrement in H0's norm, sqrt(g'H0^-1 g), has fallen by this factor from the first iterate's, instead of by the gradient tolerances (0: off)", "1e-13 where a pair's k_p h / E* exceeds 1e4 and no -tao_gatol, -tao_grtol or -tao_gttol is given, else 0", PETSC_FALSE, &o->decrementRtol, &setDecrement));

@@ -131,6 +131,20 @@ static PetscErrorCode ProblemSetUpStepKSP(Problem p, KSP ksp, PetscBool nls)
   PetscFunctionReturn(0);
 }
 
+/* 3D scenes with contact pairs: the contact surfaces' dofs nc, and whether
+   the Schur step's dense surface blocks fit (nc at most
+   -newton_schur_surface_dofs, or -newton_schur given); other scenes: 0, yes. */
+PetscErrorCode ProblemSchurStepFits(Problem p, PetscInt *nc, PetscBool *fits)
+{
+  PetscFunctionBeginUser;
+  *nc   = 0;
+  *fits = PETSC_TRUE;
+  if (!p->Xb || ProblemGetDimension(p) != 3 || p->nterms == 0) PetscFunctionReturn(0);
+  if (p->surfaceDofs) PetscCall(ISGetSize(p->surfaceDofs, nc));
+  *fits = (PetscBool)(p->cfg->newton.schurSet || *nc <= p->cfg->newton.schurSurfaceDofs);
+  PetscFunctionReturn(0);
+}
+
 /* The direct step or CG + GAMG where the user chose neither
    (-newton_iterative): 2D and r-z scenes keep the direct step (their
    results do not move); a 3D scene takes CG + GAMG above
@@ -162,10 +176,11 @@ static PetscErrorCode ProblemChooseNewtonStep(Problem p)
   if (p->cfg->newton.iterativeSet) PetscFunctionReturn(0);
   PetscCall(VecGetSize(p->Xb, &N));
   if (p->nterms > 0) {
-    PetscInt nc = 0;
+    PetscInt  nc;
+    PetscBool fits;
     p->cfg->newton.iterative = PETSC_FALSE;
-    if (p->surfaceDofs) PetscCall(ISGetSize(p->surfaceDofs, &nc));
-    if (!p->cfg->newton.schurSet && p->cfg->newton.schur && nc > p->cfg->newton.schurSurfaceDofs) {
+    PetscCall(ProblemSchurStepFits(p, &nc, &fits));
+    if (p->cfg->newton.schur && !fits) {
       p->cfg->newton.schur = PETSC_FALSE;
       PetscCall(PetscPrintf(p->comm, "Newton step: direct factorisation of the whole Hessian (3D, %" PetscInt_FMT " dofs, with contact pairs on %" PetscInt_FMT " surface dofs, above -newton_schur_surface_dofs %" PetscInt_FMT ": the Schur step's dense surface blocks would take some %.0f MB; -newton_schur 1 forces it, -newton_iterative 1 CG + GAMG)\n", N, nc,
                             p->cfg->newton.schurSurfaceDofs, 8.0 * (double)nc * (double)nc / 1048576.0));
