@@ -380,15 +380,18 @@ def table(out):
         if cg:
             L += ["", "The same runs' unit costs (the CG + GAMG rows): the contact's per evaluation and slave face, the linear "
                   "step's per Newton step and dof, and the share of the machine each run had (`wall / user`, the whole process's wall time over its CPU time a rank: "
-                  "roughly the load's inflation of every event time, by which to divide a time to compare rows).", "",
-                  "| scene | ranks | energy evaluation / slave face [ms] | Hessian / slave face [ms] | linear / step / dof [us] | "
+                  "roughly the load's inflation of every event time, by which to divide a time to compare rows). `pattern growths` the times the "
+                  "Hessian's pattern was widened and their time (the Mortar3dGrow event, part of the Hessian's; blank: a build before the event).", "",
+                  "| scene | ranks | energy evaluation / slave face [ms] | Hessian / slave face [ms] | pattern growths [s] | linear / step / dof [us] | "
                   "CG its / step | peak KB / dof | wall / user |",
-                  "|---|---|---|---|---|---|---|---|"]
+                  "|---|---|---|---|---|---|---|---|---|"]
             for name, r in cg.items():
                 e, F = r["events"], r["slave_faces"]
                 eg, hs = e["Mortar3dEnergyGrad"], e["Mortar3dHessian"]
                 _, lin, _ = per_step(r)
-                L.append(f"| {name} | {r.get('ranks', 1)} | {1e3 * eg[1] / eg[0] / F:.3f} | {1e3 * hs[1] / hs[0] / F:.3f} | "
+                gr = e.get("Mortar3dGrow")
+                grows = "" if gr is None else f"{gr[0]} ({gr[1]:.2f})"
+                L.append(f"| {name} | {r.get('ranks', 1)} | {1e3 * eg[1] / eg[0] / F:.3f} | {1e3 * hs[1] / hs[0] / F:.3f} | {grows} | "
                          f"{1e6 * lin / r['dofs']:.1f} | {r['cg'] / max(r['iterations'], 1):.1f} | {r['rss_mb'] * 1024 / r['dofs']:.1f} | "
                          f"{r['wall'] * r.get('ranks', 1) / r['user']:.2f} |")
     notes = os.path.join(out, "NOTES.md")
