@@ -155,11 +155,12 @@ COARSE_H, FINE_H = 0.04, 0.01
 COARSE = {2: dict(c_err=0.0231, l2=0.347), 3: dict(c_err=0.0216, l2=0.177), 4: dict(c_err=-0.0171, l2=0.112, across=0.049)}
 
 
-def within(figs, k, key, bound, ah="2.7"):
-    """Stage k's case, xfail (strict) where the measured figure is beyond the issue's bound."""
+def within(figs, k, key, bound, ah="2.7", run=None):
+    """Stage k's case (run's, where named), xfail (strict) where the measured figure is beyond the issue's bound."""
+    values = (k,) if run is None else (run, k)
     if abs(figs[k][key]) <= bound:
-        return k
-    return pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=f"{key} {figs[k][key]:+.3f} beyond the issue's {bound:g} at a/h {ah}"))
+        return pytest.param(*values)
+    return pytest.param(*values, marks=pytest.mark.xfail(strict=True, reason=f"{key} {figs[k][key]:+.3f} beyond the issue's {bound:g} at a/h {ah}"))
 
 
 def assert_stick_radius(f, figs, k):
@@ -529,14 +530,9 @@ MIRRORED_RUNS = {"mirrored_fine": (MIRRORED_FINE, "10.5"), "mirrored_finer": (MI
 
 
 def mirrored_cases(key, bound):
-    """(run, k) over the mirrored runs at a/h 10.5 and 13 and stages 2-4,
-    xfail (strict) where the run's figure is beyond the issue's bound."""
-    out = []
-    for run, (figs, ah) in MIRRORED_RUNS.items():
-        for k in (2, 3, 4):
-            case = within(figs, k, key, bound, ah)
-            out.append(pytest.param(run, k, marks=case.marks) if hasattr(case, "marks") else (run, k))
-    return out
+    """(run, k) over the mirrored runs (MIRRORED_RUNS) and stages 2-4, xfail
+    (strict) where the run's figure is beyond the issue's bound."""
+    return [within(figs, k, key, bound, ah, run) for run, (figs, ah) in MIRRORED_RUNS.items() for k in (2, 3, 4)]
 
 
 @pytest.fixture(scope="module")

@@ -943,12 +943,10 @@ static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[],
   MPI_Comm     comm;
   PetscInt     rstart, rend, mloc, nloc, M, N, rbs, cbs, *ia, *ja;
   PetscScalar *va;
-  PetscMPIInt  size;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(MORTAR3D_Grow, 0, 0, 0, 0));
   PetscCall(PetscObjectGetComm((PetscObject)H, &comm));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
   PetscCall(MatGetLocalSize(H, &mloc, &nloc));
@@ -967,7 +965,7 @@ static PetscErrorCode Mortar3dGrowPattern(Mortar3d *m, const Mortar3dFace all[],
   PetscCall(MatCreate(comm, &C));
   PetscCall(MatSetSizes(C, mloc, nloc, M, N));
   PetscCall(MatSetBlockSizes(C, rbs, cbs));
-  PetscCall(MatSetType(C, size > 1 ? MATMPIAIJ : MATSEQAIJ));
+  PetscCall(MatSetType(C, MATAIJ));
   PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, C));
   PetscCall(MatDestroy(&pre));
   PetscCall(MatAssemblyBegin(C, MAT_FINAL_ASSEMBLY));
