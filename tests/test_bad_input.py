@@ -6,6 +6,7 @@ output and summary paths hold sentinel files beforehand; they must come out
 byte for byte unchanged, and no other file may appear beside them."""
 import os
 import re
+import shutil
 import subprocess
 from pathlib import Path
 
@@ -288,6 +289,28 @@ def test_unconverged_writes_nothing(tmp_path):
     assert re.search(r"did not converge \(DIVERGED_MAXITS\)", proc.stderr)
     for f in ("out.h5", "out.json"):
         assert (tmp_path / f).read_text() == SENTINEL
+
+
+def test_gmsh_crash_named(tmp_path):
+    """Gmsh killed by a signal while it meshes (Gmsh 4.8.4 crashes so on a
+    half disc under Mesh.Algorithm 8 with a size field): one line naming the
+    file, the mesh size and the signal, where it said only "gmsh failed on
+    FILE (h = 0.3); see LOG" of an empty log. A stand-in gmsh on PATH parses
+    with the real one and dies of SIGSEGV when asked for a mesh."""
+    fake = tmp_path / "bin" / "gmsh"
+    fake.parent.mkdir()
+    fake.write_text("#!/bin/sh\nfor a in \"$@\"; do [ \"$a\" = -parse_and_exit ] && exec %s \"$@\"; done\nkill -SEGV $$\n"
+                    % shutil.which("gmsh"))
+    fake.chmod(0o755)
+    (tmp_path / "out.h5").write_text(SENTINEL)
+    proc = subprocess.run([str(BIN)] + SCENE + ["-output", str(tmp_path / "out.h5"), "-summary", "none",
+                                                "-mesh_dir", str(tmp_path / "meshes")],
+                          cwd=ROOT, env=dict(ENV, PATH=f"{fake.parent}:{ENV.get('PATH', os.environ['PATH'])}"),
+                          capture_output=True, text=True, timeout=120)
+    lines = [l for l in proc.stderr.splitlines() if l.strip()]
+    assert proc.returncode == 1 and len(lines) == 1, proc.stderr
+    assert "gmsh failed on meshes/hertz/indenter.geo (h = 0.3): Gmsh crashed (signal 11, " in lines[0], lines[0]
+    assert (tmp_path / "out.h5").read_text() == SENTINEL
 
 
 def test_max_funcs_no_limit_accepted(tmp_path):

@@ -49,5 +49,6 @@ int GmshRun(char *const argv[], const char log[], const char out[], const GmshGu
     if (errno != EINTR) break;
   ContactOutputSetChild(0, NULL);
   if (guard && tripped && WIFSIGNALED(st) && WTERMSIG(st) != SIGINT && WTERMSIG(st) != SIGTERM) *tripped = PETSC_TRUE;
+  if (WIFSIGNALED(st)) return GMSH_SIGNALLED + WTERMSIG(st);
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }

@@ -192,7 +192,7 @@ static int FileTag(const char path[], char tag[], size_t len)
 PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], PetscReal h, PetscInt nparams, char *params[], const char bgm[], const char dir[], PetscReal *maxDofs, const char limit[], PetscBool estimateOnly, char msh[], size_t len)
 {
   PetscMPIInt rank;
-  int         err = 0;
+  int         err = 0, r;
   char        errmsg[PETSC_MAX_PATH_LEN + 256] = "";
 
   PetscFunctionBeginUser;
@@ -291,7 +291,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], 
       argv[argc + 1] = (char *)"-o";
       argv[argc + 2] = tmp;
       argv[argc + 3] = NULL;
-      if (GmshRun(argv, log, tmp, NULL, NULL) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
+      if ((r = GmshRun(argv, log, tmp, NULL, NULL)) != 0 || stat(tmp, &sm) || sm.st_size == 0) {
         char gmsh[1024];
         err = 1;
         (void)unlink(tmp);
@@ -299,6 +299,7 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], 
         if (errmsg[0]) (void)unlink(log);
         else {
           PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
+          if (!gmsh[0] && r > GMSH_SIGNALLED) PetscCall(PetscSNPrintf(gmsh, sizeof(gmsh), "Gmsh crashed (signal %d, %s); another -%s_mesh_size or meshing algorithm in the file may pass", r - GMSH_SIGNALLED, strsignal(r - GMSH_SIGNALLED), body));
           PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g)%s%s; see %s", geo, (double)h, gmsh[0] ? ": " : "", gmsh, log));
         }
       } else if (rename(tmp, msh)) {
