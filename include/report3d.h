@@ -4,7 +4,8 @@
 /* A 3D pair's figures as the report gives them (report3d.c): the whole
    model's force and contact area where the scene is a symmetric part of it
    (-contact_<pair>_symmetry), the contact radius from the area and from the
-   pressure's second moment, the peak pressure, and with
+   pressure's second moment, the zone's half-axes where it is not a disc,
+   the peak pressure, and with
    -contact_<pair>_hertz_radii Hertz's a and p0 beside them. */
 typedef struct {
   PetscReal share;     /* the whole model over the scene's part: 2^(symmetry planes) */
@@ -16,6 +17,8 @@ typedef struct {
   PetscReal area;      /* the whole model's contact area, sum A_j over the nodes in contact */
   PetscReal aArea;     /* sqrt(area / pi) */
   PetscReal aMoment;   /* sqrt(5/2 sum p_j A_j r_j^2 / sum p_j A_j) */
+  PetscReal axes[2];   /* the zone's half-axes from the principal second moments, larger first: sqrt(5 lambda_i) */
+  PetscReal axisDir[2][3]; /* their directions (in the plane normal to the normal load) */
   PetscReal pmax;
   PetscReal hertzA, hertzP0, l2err; /* with Hertz radii; l2err the nodal pressures' relative L2 distance (weights A_j) */
   PetscBool friction;                /* a pair with friction: the whole model's figures below */
@@ -35,10 +38,10 @@ PetscErrorCode ContactReport3dView(const ContactReport3d *, const ContactPairSpe
    part's stuck area, giving the whole model's stick radius and Mindlin's. */
 void           ContactReport3dFriction(PetscReal mu, PetscReal stickArea, ContactReport3d *);
 /* The HDF5 attributes of the report a plot reads (names and values; at
-   most CONTACT_REPORT3D_ATTRS): the centre and axis r is measured from
-   and, with friction, the whole model's loads, stick radius, Mindlin's c
+   most CONTACT_REPORT3D_ATTRS): the centre and axis r is measured from,
+   the zone's half-axes and their directions, and, with friction, the whole model's loads, stick radius, Mindlin's c
    and the shear's direction. Returns their count. */
-#define CONTACT_REPORT3D_ATTRS 16
+#define CONTACT_REPORT3D_ATTRS 24
 PetscInt       ContactReport3dAttributes(const ContactReport3d *, const char *names[], PetscReal vals[]);
 /* JSON members, each preceded by sep: the summary's (forceKey
    "contact_force") or the pair object's ("P"). */

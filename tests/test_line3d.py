@@ -189,3 +189,18 @@ def test_line_friction_as_2d(sheared):
     assert figure("stick_differ", worst["stick_differ"]) == 0
     assert figure("shear_z", worst["shear_z"]) <= 1.5e-8
     assert figure("slip_error", np.max(np.abs(t[slipping] - MU * end["p"][slipping])) / (MU * end["p"].max())) <= 1e-12
+
+
+def test_line_report(pressed):
+    """The report of the 3D cylinder names the zone's half-axes, a strip not
+    a disc (report3d.c): along x 2/sqrt(5) of the larger is the second
+    moment's half-width b as this file computes it from the HDF5 file (to
+    1e-9), along (1, 0, 0) to 1e-6."""
+    r = pressed["3d"]
+    c = r.summary["contact"]["c"]
+    s = slave(r)
+    x = s["X"][:, 0] - np.sum(s["p"] * s["A"] * s["X"][:, 0]) / np.sum(s["p"] * s["A"])
+    b = math.sqrt(4 * np.sum(s["p"] * s["A"] * x ** 2) / np.sum(s["p"] * s["A"]))
+    assert "the zone is not a disc: half-axes" in r.stdout
+    assert c["fem_half_axes"][0] * 2 / math.sqrt(5) == pytest.approx(b, rel=1e-9)
+    assert np.allclose(c["fem_half_axis_1"], [1, 0, 0], atol=1e-6)

@@ -44,8 +44,9 @@ def test_scene_against_hertz(scene):
     weights A_j: an upper estimate) `a_area_error` = +0.036 (bound 0.1).
     The report's figures are what its inputs give: P, the contact area
     (4 sum A_j), a from the rows' second moment about the z axis and
-    Hertz's a and p0 from P each to 1e-12 (round-off), and the summary
-    repeats the pair's."""
+    Hertz's a and p0 from P each to 1e-12 (round-off), so are the zone's
+    half-axes (`half_axes_aspect` = 1.0055, bound 1.02: a disc), and the
+    summary repeats the pair's."""
     c = scene["contact"]["ball"]
     F, rows = c["force"], c["contact_nodes"]["rows"]
     assert c["model_share"] == 4 and c["symmetry"] == "x = 0, y = 0"
@@ -59,6 +60,13 @@ def test_scene_against_hertz(scene):
     for key in ("fem_a", "fem_a_moment", "fem_pmax", "hertz_a", "hertz_pmax", "contact_area", "pressure_l2_error"):
         assert scene[key] == c[key]
     assert scene["contact_force"] == c["P"]
+    # the zone's half-axes (report3d.c): the rows' second moments about the
+    # centre in x and y (the images across x = 0 and y = 0 cancel the xy
+    # product), sqrt(5 lambda), to round-off; a disc: no "not a disc" line
+    w = sum(r[3] * r[4] for r in rows)
+    mxx, myy = (sum(r[3] * r[4] * r[k] ** 2 for r in rows) / w for k in (0, 1))
+    assert sorted(c["fem_half_axes"]) == pytest.approx(sorted([math.sqrt(5 * mxx), math.sqrt(5 * myy)]), rel=1e-12)
+    assert figure("half_axes_aspect", c["fem_half_axes"][0] / c["fem_half_axes"][1]) <= 1.02
     da, dp, darea = errors(c)
     assert abs(figure("a_moment_error", da)) <= 0.015
     assert abs(figure("pmax_error", dp)) <= 0.03

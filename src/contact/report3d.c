@@ -22,7 +22,16 @@
              the whole profile, not from where its last node happens to be);
      r_j   the distance from X_j to the axis through the centre c along the
            normal load's direction n, c the centroid of p_j A_j X_j moved onto
-           each symmetry plane (where the whole model's centroid lies).
+           each symmetry plane (where the whole model's centroid lies);
+     a_1 >= a_2, the zone's half-axes: sqrt(5 lambda_i), lambda_i the
+           eigenvalues of sum p_j A_j d_j d_j^T / sum p_j A_j in the plane
+           normal to n (d_j = X_j - c there; about a symmetry plane the
+           images cancel the products across it), since Hertz's elliptical
+           profile has int p x_i^2 dA / int p dA = a_i^2 / 5 along its axes
+           (a_1 = a_2 = a_m on a disc; a line contact's half-width b, its
+           profile p0 sqrt(1 - x^2/b^2), is 2 sqrt(lambda_1) = a_1 / 1.118).
+           The report names them where a_1 > 1.2 a_2, a zone a disc's radius
+           does not describe (a cylinder's strip, crossed cylinders).
    Hertz, two spheres (1/R* = 1/R1 + 1/R2, E* of both bodies):
      a = (3 P R* / (4 E*))^(1/3),  p0 = 3 P / (2 pi a^2),
    P the whole model's normal load, and the relative L2 distance
@@ -89,6 +98,64 @@ static void Report3dForce(const ContactPairSpec *spec, const PetscReal F[3], con
   for (PetscInt k = 0; k < 3; ++k) R->normal[k] = R->N > 0 ? n[k] / R->N : (k == 2 ? 1.0 : 0.0);
 }
 
+/* The zone's half-axes and their directions (R->axes, R->axisDir) from the
+   second moments of p_j A_j about the centre in the plane normal to the
+   normal load; w = sum p_j A_j. */
+static void Report3dAxes(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], PetscReal w, ContactReport3d *R)
+{
+  PetscReal T[3][3] = {{0}}, e[2][3], m[3] = {0, 0, 0}, lam[2], phi, c, s;
+  PetscInt  k0 = 0;
+
+  if (!(w > 0)) return;
+  for (PetscInt j = 0; j < n; ++j) {
+    PetscReal d[3], dn = 0.0;
+    if (!(p[j] > 0)) continue;
+    for (PetscInt k = 0; k < 3; ++k) dn += (X[3 * j + k] - R->centre[k]) * R->normal[k];
+    for (PetscInt k = 0; k < 3; ++k) d[k] = X[3 * j + k] - R->centre[k] - dn * R->normal[k];
+    for (PetscInt a = 0; a < 3; ++a)
+      for (PetscInt b = 0; b < 3; ++b) T[a][b] += p[j] * A[j] * d[a] * d[b] / w;
+  }
+  for (PetscInt q = 0; q < spec->nsym; ++q) /* a mirror image flips its plane's coordinate */
+    for (PetscInt b = 0; b < 3; ++b)
+      if (b != spec->symAxis[q]) T[spec->symAxis[q]][b] = T[b][spec->symAxis[q]] = 0.0;
+  for (PetscInt k = 1; k < 3; ++k) /* e1: the unit axis least along n, made normal to it; e2 = n x e1 */
+    if (PetscAbsReal(R->normal[k]) < PetscAbsReal(R->normal[k0])) k0 = k;
+  for (PetscInt k = 0; k < 3; ++k) e[0][k] = (k == k0) - R->normal[k0] * R->normal[k];
+  c = PetscSqrtReal(e[0][0] * e[0][0] + e[0][1] * e[0][1] + e[0][2] * e[0][2]);
+  for (PetscInt k = 0; k < 3; ++k) e[0][k] /= c;
+  e[1][0] = R->normal[1] * e[0][2] - R->normal[2] * e[0][1];
+  e[1][1] = R->normal[2] * e[0][0] - R->normal[0] * e[0][2];
+  e[1][2] = R->normal[0] * e[0][1] - R->normal[1] * e[0][0];
+  for (PetscInt a = 0; a < 3; ++a) /* m = (e1 T e1, e1 T e2, e2 T e2) */
+    for (PetscInt b = 0; b < 3; ++b) {
+      m[0] += e[0][a] * T[a][b] * e[0][b];
+      m[1] += e[0][a] * T[a][b] * e[1][b];
+      m[2] += e[1][a] * T[a][b] * e[1][b];
+    }
+  c      = PetscSqrtReal(PetscSqr(m[0] - m[2]) + 4 * m[1] * m[1]);
+  lam[0] = 0.5 * (m[0] + m[2] + c);
+  lam[1] = PetscMax(0.5 * (m[0] + m[2] - c), 0.0);
+  phi    = 0.5 * PetscAtan2Real(2 * m[1], m[0] - m[2]);
+  c      = PetscCosReal(phi);
+  s      = PetscSinReal(phi);
+  for (PetscInt i = 0; i < 2; ++i) R->axes[i] = PetscSqrtReal(5 * lam[i]);
+  for (PetscInt k = 0; k < 3; ++k) {
+    R->axisDir[0][k] = c * e[0][k] + s * e[1][k];
+    R->axisDir[1][k] = -s * e[0][k] + c * e[1][k];
+  }
+  for (PetscInt i = 0; i < 2; ++i) { /* each direction's largest component positive */
+    PetscInt big = 0;
+    for (PetscInt k = 1; k < 3; ++k)
+      if (PetscAbsReal(R->axisDir[i][k]) > PetscAbsReal(R->axisDir[i][big])) big = k;
+    if (R->axisDir[i][big] < 0)
+      for (PetscInt k = 0; k < 3; ++k) R->axisDir[i][k] = -R->axisDir[i][k];
+  }
+}
+
+/* Where the zone's half-axes differ by more than this ratio the report
+   names them. */
+#define REPORT3D_ELONGATED 1.2
+
 void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], const PetscReal F[3], const PetscReal shear[], ContactReport3d *R)
 {
   PetscReal w = 0.0, m2 = 0.0, err = 0.0, nrm = 0.0;
@@ -106,6 +173,7 @@ void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const Petsc
   for (PetscInt s = 0; s < spec->nsym; ++s) R->centre[spec->symAxis[s]] = spec->symValue[s];
   for (PetscInt j = 0; j < n; ++j)
     if (p[j] > 0) m2 += p[j] * A[j] * Report3dRadius2(R, &X[3 * j]);
+  Report3dAxes(spec, n, X, p, A, w, R);
   R->area *= R->share;
   R->aArea   = PetscSqrtReal(R->area / PETSC_PI);
   R->aMoment = w > 0 ? PetscSqrtReal(2.5 * m2 / w) : 0.0;
@@ -130,7 +198,7 @@ void ContactReport3dFriction(PetscReal mu, PetscReal stickArea, ContactReport3d 
 
 PetscInt ContactReport3dAttributes(const ContactReport3d *R, const char *names[], PetscReal vals[])
 {
-  const char *fixed[] = {"centre_x", "centre_y", "centre_z", "axis_x", "axis_y", "axis_z"};
+  const char *fixed[] = {"centre_x", "centre_y", "centre_z", "axis_x", "axis_y", "axis_z", "half_axis_1", "half_axis_2", "half_axis_1_x", "half_axis_1_y", "half_axis_1_z"};
   const char *fric[]  = {"whole_normal_load", "whole_tangential_load", "whole_stick_area", "whole_stick_radius", "mindlin_c", "shear_axis_x", "shear_axis_y", "shear_axis_z"};
   PetscInt    n       = 0;
 
@@ -141,6 +209,14 @@ PetscInt ContactReport3dAttributes(const ContactReport3d *R, const char *names[]
   for (PetscInt k = 0; k < 3; ++k) {
     names[n]  = fixed[3 + k];
     vals[n++] = R->normal[k];
+  }
+  for (PetscInt k = 0; k < 2; ++k) {
+    names[n]  = fixed[6 + k];
+    vals[n++] = R->axes[k];
+  }
+  for (PetscInt k = 0; k < 3; ++k) {
+    names[n]  = fixed[8 + k];
+    vals[n++] = R->axisDir[0][k];
   }
   if (!R->friction) return n;
   {
@@ -176,6 +252,11 @@ PetscErrorCode ContactReport3dView(const ContactReport3d *R, const ContactPairSp
     PetscCall(PetscPrintf(comm, "  the whole model (symmetric about %s: %d times this part): force (%.6g, %.6g, %.6g), P = %.6g, contact area %.6g\n", planes, (int)R->share, (double)F[0], (double)F[1], (double)F[2], (double)R->P, (double)R->area));
   }
   PetscCall(PetscPrintf(comm, "  contact radius a = %.6g from the contact area (sqrt(area/pi)), %.6g from the pressure's second moment (sum p A r^2 / sum p A = 2 a^2/5, reference positions, centre (%.4g, %.4g, %.4g)); p_max = %.6g\n", (double)R->aArea, (double)R->aMoment, (double)R->centre[0], (double)R->centre[1], (double)R->centre[2], (double)R->pmax));
+  if (R->axes[0] > REPORT3D_ELONGATED * R->axes[1]) {
+    const PetscReal *d = R->axisDir[0], *e = R->axisDir[1];
+    PetscCall(PetscPrintf(comm, "  the zone is not a disc: half-axes %.6g along (%.3g, %.3g, %.3g) and %.6g along (%.3g, %.3g, %.3g) (sqrt(5 sum p A x_i^2 / sum p A), Hertz's ellipse; a line contact's half-width is %.6g, 2 sqrt(sum p A x^2 / sum p A)), so a disc's radius above is not its size\n", (double)R->axes[0], (double)d[0], (double)d[1], (double)d[2],
+                          (double)R->axes[1], (double)e[0], (double)e[1], (double)e[2], (double)(R->axes[0] * 2 / PetscSqrtReal(5.0))));
+  }
   if (R->friction) {
     PetscCall(PetscPrintf(comm, "  %s: P = %.6g (the normal load), Q = %.6g, Q/(mu P) = %.6g; a = %.6g (area), %.6g (second moment); p_max = %.6g; stick radius c = %.6g (sqrt(stick area/pi), c/a = %.4f, a the second moment's); Mindlin's c = %.6g (c/a = (1 - Q/(mu P))^(1/3) = %.4f, for Q after P at constant P)\n", spec->nsym ? "the whole model" : "the pair",
                           (double)R->N, (double)R->Q, (double)(R->N > 0 ? R->Q / (R->mu * R->N) : 0.0), (double)R->aArea, (double)R->aMoment, (double)R->pmax, (double)R->stickRadius, (double)(R->aMoment > 0 ? R->stickRadius / R->aMoment : 0.0), (double)R->mindlinC,
@@ -199,6 +280,8 @@ void ContactReport3dWriteJSON(const ContactReport3d *R, const ContactPairSpec *s
   ContactJSONKeyReal(fp, sep, "fem_a", R->aArea);
   ContactJSONKeyReal(fp, sep, "fem_a_moment", R->aMoment);
   ContactJSONKeyReal(fp, sep, "contact_area", R->area);
+  ContactJSONKeyVector(fp, sep, "fem_half_axes", 2, R->axes);
+  ContactJSONKeyVector(fp, sep, "fem_half_axis_1", 3, R->axisDir[0]);
   if (spec->nsym) {
     char planes[96];
     Report3dPlanes(spec, planes, sizeof(planes));
