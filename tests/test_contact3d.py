@@ -104,9 +104,9 @@ def test_taylor(scene, tmp_path):
     2.3e-5 of |H v|). The quarter Hertz ball at h = 0.04, in a direction
     small enough (-taylor_scale 1e-6) that no node enters or leaves the
     contact: the gradient's order 2.000 too, the Hessian's remainder levels
-    at `hessian_remainder` = 2.9e-6 of |H v| (order 1: on the curved cap
-    the pieces' Gauss rule moves with the segments, which are not
-    differentiated; Gauss-Newton alone 3.8e-6); bound 3e-5."""
+    at `hessian_remainder` = 2.9e-6 of |H v| (order 1: the slivers of S'
+    at the symmetry planes, whose end term is left out, test_seghess3d.py;
+    the whole ball's levels at 4.9e-9; Gauss-Newton alone 3.8e-6); bound 3e-5."""
     if scene == "patch":
         args = patch_args(UPPERS["tet10-on-hex27"], ["-taylor_test"])
     else:

@@ -23,6 +23,7 @@ import pytest
 
 from conftest import figure, run_contact
 from test_contact3d import hertz_args
+from test_sphere3d import whole_args
 
 BOX = "tests/meshes/contact3d/box.geo"
 CUBE = "tests/meshes/rigid3d/cube.geo"
@@ -105,16 +106,22 @@ def test_hertz_level_not_the_rule(tmp_path):
     1.0005 over the five kernels, the ratio of the two, bound 0.9 to 1.1;
     2.8846e-6 at degree 11): a Gauss rule's error on a smooth integrand
     would fall by orders of magnitude from degree 7 to 15, so the term left
-    out is not the rule's motion on smooth pieces. The likely source, not
-    yet shown: the pieces follow the master's flat sub-triangles projected
-    along the slave's chord normals, not the closest-point images of the
-    curved master's face edges where g has its kinks; a kink inside a piece
-    leaves an error no rule removes, and its change as the pieces move is
-    not differentiated (docs/formulations.md). In keeping with it, the level
-    follows the master's deformation: with the block 100 times stiffer (E
-    1e7, the penalty unchanged, set by the ball) it is `hertz_level_ratio_E`
-    = 0.0102 times as high (bound 0.005 to 0.02; 2.9e-10 of |H v| at E
-    1e9): the more the master's faces bend, the larger the term left out."""
+    out is not the rule's motion on smooth pieces. It follows the master's
+    deformation: with the block 100 times stiffer (E 1e7, the penalty
+    unchanged, set by the ball) it is `hertz_level_ratio_E` = 0.0102 times
+    as high (bound 0.005 to 0.02; 2.9e-10 of |H v| at E 1e9). Its source,
+    shown since (test_whole_ball_level): the symmetry planes. Both surfaces
+    end on x = 0 and y = 0, and the block's border, projected on a slave
+    sub-triangle along that triangle's own normal, falls inside it by a
+    sliver whose width moves with both surfaces (up to 7 % of the triangle
+    where they lie apart); the end term is left out along the slave's own
+    border (Segment3dAlongSlaveBorder). With it (the border's tolerance
+    0.1 -> 1e-9, tried) the level falls to 8.4e-9, but the energy's
+    derivative then jumps where a sliver opens (the end term is finite at a
+    zero width, nil outside): the squeezed rubber ball took 274 Newton
+    iterations and a cutback where it takes 179. The cure is an energy
+    without the slivers (the master continued across a symmetry plane), not
+    yet written."""
     level = {}
     for q in (4, 8):
         t = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-contact_quadrature_points", q],
@@ -126,3 +133,28 @@ def test_hertz_level_not_the_rule(tmp_path):
     assert 0.005 <= figure("hertz_level_ratio_E", t["hessian_relative_remainder"][-1] / level[4]) <= 0.02
     figure("hertz_level_q4", level[4])
     assert 0.9 <= figure("hertz_level_ratio", level[8] / level[4]) <= 1.1
+
+
+@pytest.mark.roundoff
+def test_whole_ball_level(tmp_path):
+    """The whole ball on the whole block (test_sphere3d.py's whole_args, h
+    0.04, no symmetry plane: no end of S' anywhere near the contact), the
+    Taylor test at the solution (-taylor_scale 1e-6): the Hessian's relative
+    remainder falls from 5.3e-8 at the first step to `whole_level` = 4.9e-9
+    of |H v| (4.4e-9 with 8 points a side; bound 1.5e-8), where the quarter
+    ball's stays at 2.9e-6 (test_hertz_level_not_the_rule; `level_ratio` =
+    the whole's over the quarter's, 1.7e-3, bound 0.01): the quarter's level
+    is its symmetry planes' slivers. With the segments frozen in xi over the
+    test (an experiment, not in the code) the remainder falls to round-off,
+    5.2e-10: the Hessian is exact for fixed segments, and what is left
+    (4.9e-9, following the master's deformation: 1.4e-11 with the block
+    100 times stiffer) is the segments' own motion."""
+    whole = run_contact(whole_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-output", "none"],
+                        tmp_path, name="whole").summary["taylor"]
+    quarter = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6"],
+                          tmp_path, name="quarter").summary["taylor"]
+    assert 1.9 <= whole["gradient_order"] <= 2.1
+    level = figure("whole_level", whole["hessian_relative_remainder"][-1])
+    assert level <= 1.5e-8
+    assert whole["hessian_relative_remainder"][0] >= 5 * level
+    assert figure("level_ratio", level / quarter["hessian_relative_remainder"][-1]) <= 0.01
