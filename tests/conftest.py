@@ -79,6 +79,19 @@ def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, en
     return res
 
 
+def info_args(tmp_path, name):
+    """-info into a file per rank (NAME.info.RANK in tmp_path): on a shared
+    stdout two ranks' block-buffered lines can interleave mid-line, and a
+    line a test looks for is lost (one run of the Nehalem kernel's under
+    load)."""
+    return ["-info", f"{tmp_path}/{name}.info:sys"]
+
+
+def info_text(tmp_path, name):
+    """Every rank's -info lines of info_args(tmp_path, name), rank by rank."""
+    return "".join(p.read_text() for p in sorted(Path(tmp_path).glob(f"{name}.info*")))
+
+
 # A figure a test measured, recorded by name: printed (pytest -s, or a
 # failure's captured output shows it) and, where CONTACT_FIGURES names a file,
 # appended to it as one JSON line {"test", "name", "value", "kernel"}.

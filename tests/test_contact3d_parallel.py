@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import ROOT, figure, run_contact
+from conftest import ROOT, figure, info_args, info_text, run_contact
 import hertz
 from test_contact3d import BASE, E_BALL, E_BASE, NU, SOLVE, UPPERS, hertz_args, patch_args
 
@@ -112,13 +112,14 @@ def test_hessian_ranks(scene, tmp_path):
     runs, sigs = {}, {}
     for n in (1, 2, 3):
         mat = Path(tmp_path) / f"H{n}.bin"
-        res = run_contact(args + ["-hessian_mat_view", f"binary:{mat}::append", "-info", ":sys"], tmp_path, ranks=n, name=f"r{n}")
+        res = run_contact(args + ["-hessian_mat_view", f"binary:{mat}::append"] + info_args(tmp_path, f"r{n}"), tmp_path, ranks=n, name=f"r{n}")
         runs[n] = res.summary
         sigs[n] = signatures(mat)
-        shared = [int(x) for x in re.findall(r"(\d+) slave nodes with faces on more than one rank", res.stdout)]
-        assert len(shared) == n, res.stdout[-2000:]
+        info = info_text(tmp_path, f"r{n}")
+        shared = [int(x) for x in re.findall(r"(\d+) slave nodes with faces on more than one rank", info)]
+        assert len(shared) == n, info[-2000:]
         assert (max(shared) > 0) == (n > 1)
-        work = [tuple(int(x) for x in w) for w in re.findall(r"integrates (\d+) faces for the Hessian \((\d+) its own\), searches from (\d+) of (\d+)", res.stdout)]
+        work = [tuple(int(x) for x in w) for w in re.findall(r"integrates (\d+) faces for the Hessian \((\d+) its own\), searches from (\d+) of (\d+)", info)]
         nf = work[0][3]
         assert len(work) == n and sum(w[1] for w in work) == nf
         if n > 1:
@@ -188,10 +189,11 @@ def test_slide(tmp_path):
     (its -info line, Mortar3dGrowPattern) rather than letting PETSc grow it
     entry by entry. 1 and 2 ranks agree at every stage to what the stops
     leave (`slide_dF` = up to 4.9e-15 of P)."""
-    args = slide_args(0.04) + ["-info", ":sys"]
-    runs = {n: run_contact(args, tmp_path, ranks=n, name=f"slide{n}", timeout=1800) for n in (1, 2)}
+    runs = {n: run_contact(slide_args(0.04) + info_args(tmp_path, f"slide{n}"), tmp_path, ranks=n, name=f"slide{n}", timeout=1800)
+            for n in (1, 2)}
     for n, res in runs.items():
-        assert WIDENED in res.stdout and GROWN in res.stdout
+        info = info_text(tmp_path, f"slide{n}")
+        assert WIDENED in info and GROWN in info
         s = res.summary
         R = [st["reactions"]["ball:top"] for st in s["load_stages"]]
         assert len(R) == STAGES

@@ -9,15 +9,18 @@ The scene: test_contact3d.py's patch test, Tet10 (h = 0.3) on Hex27, the
 stop pinned at a gradient of 1e-10."""
 import pytest
 
-from conftest import figure, run_contact
+from conftest import figure, info_args, info_text, run_contact
 from test_contact3d import SOLVE, UPPERS, patch_args
 
 GROWN = "a contact term left its pattern, H grows"
 
 
 def patch(tmp_path, name, extra=(), ranks=1):
-    args = patch_args(UPPERS["tet10-on-hex27"], SOLVE + ["-info", ":sys"] + list(extra))
-    return run_contact(args, tmp_path, name=name, ranks=ranks)
+    """The run, its -info lines (every rank's) as .info."""
+    args = patch_args(UPPERS["tet10-on-hex27"], SOLVE + info_args(tmp_path, name) + list(extra))
+    res = run_contact(args, tmp_path, name=name, ranks=ranks)
+    res.info = info_text(tmp_path, name)
+    return res
 
 
 @pytest.mark.roundoff
@@ -33,8 +36,8 @@ def test_outside_pattern(ranks, tmp_path):
     stop's gradient 1e-10 leaves on pressures of order 0.3 is 3e-10)."""
     ref = patch(tmp_path, "ref", ranks=ranks)
     grown = patch(tmp_path, "grown", ["-contact_mortar_pattern_margin", "-10"], ranks=ranks)
-    assert GROWN not in ref.stdout
-    assert GROWN in grown.stdout
+    assert GROWN not in ref.info
+    assert GROWN in grown.info
     a, b = ref.summary["contact"]["p"], grown.summary["contact"]["p"]
     P = abs(a["force"][2])
     assert figure("force_diff", max(abs(x - y) for x, y in zip(a["force"], b["force"])) / P) <= 1e-9

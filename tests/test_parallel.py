@@ -8,7 +8,7 @@ Expected values come from the other rank counts and the other Newton steps."""
 import numpy as np
 import pytest
 
-from conftest import figure, is_force_key, run_contact
+from conftest import figure, info_args, info_text, is_force_key, run_contact
 from test_contact import RANK_DEPENDENT, flatten
 
 EPS = np.finfo(float).eps
@@ -109,8 +109,8 @@ def test_substructure_tiny_subdomains(tmp_path):
     drops or doubles its surface rows."""
     base = HERTZ + ["-mesh_size", "0.5", "-tao_gttol", "1e-12"]
     one = run_contact(base, tmp_path, name="np1").summary
-    many = run_contact(base + ["-info", ":sys"], tmp_path, ranks=24, name="np24")
-    sizes = [line.split("subdomain:")[1] for line in many.stdout.splitlines() if "subdomain:" in line]
+    many = run_contact(base + info_args(tmp_path, "np24"), tmp_path, ranks=24, name="np24")
+    sizes = [line.split("subdomain:")[1] for line in info_text(tmp_path, "np24").splitlines() if "subdomain:" in line]
     assert len(sizes) == 24
     assert any(s.strip().startswith("0 dofs") for s in sizes)
     assert any(", 0 interior" in s and not s.strip().startswith("0 dofs") for s in sizes)

@@ -12,7 +12,7 @@ the slave (144 Quad9 faces), the lower's top the master (100)."""
 import math
 import re
 
-from conftest import figure, run_contact
+from conftest import figure, info_args, info_text, run_contact
 import test_contact3d as c3
 
 UPPER, LOWER = "hex=1,n=12,m=1,z0=0.5,H=0.25", "hex=1,n=10,m=1,H=0.5"
@@ -39,9 +39,10 @@ def test_master_share(tmp_path):
     bound 1e-8) on each."""
     runs = {}
     for n in (1, 2, 3):
-        res = run_contact(split_args() + ["-info", ":sys"], tmp_path, ranks=n, name=f"r{n}", timeout=1200)
-        held = [(int(a), int(b)) for a, b in HELD.findall(res.stdout)]
-        assert len(held) == n, res.stdout[-2000:]
+        res = run_contact(split_args() + info_args(tmp_path, f"r{n}"), tmp_path, ranks=n, name=f"r{n}", timeout=1200)
+        info = info_text(tmp_path, f"r{n}")
+        held = [(int(a), int(b)) for a, b in HELD.findall(info)]
+        assert len(held) == n, info[-2000:]
         nf = held[0][1]
         assert nf == 100
         if n == 1:
