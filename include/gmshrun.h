@@ -1,10 +1,10 @@
 #pragma once
 #include <petscsys.h>
 
-/* What a guarded run of Gmsh may take: CPU seconds and address space (bytes);
-   0: no limit on that one. */
 #define GMSH_SIGNALLED 128 /* as a shell reports a child a signal killed */
 
+/* What a guarded run of Gmsh may take: CPU seconds and address space (bytes);
+   0: no limit on that one. */
 typedef struct {
   int    cpuSeconds;
   double memoryBytes;
