@@ -142,8 +142,8 @@ def test_whole_ball_level(tmp_path):
     Taylor test at the solution (-taylor_scale 1e-6): the Hessian's relative
     remainder falls from 5.3e-8 at the first step to `whole_level` = 4.9e-9
     of |H v| (4.4e-9 with 8 points a side; bound 1.5e-8), where the quarter
-    ball's stays at 2.9e-6 (test_hertz_level_not_the_rule; `level_ratio` =
-    the whole's over the quarter's, 1.7e-3, bound 0.01): the quarter's level
+    ball's stays at 2.9e-6 (test_hertz_level_not_the_rule): the whole's over
+    the quarter's `level_ratio` = 1.7e-3 (bound 0.01). The quarter's level
     is its symmetry planes' slivers. With the segments frozen in xi over the
     test (an experiment, not in the code) the remainder falls to round-off,
     5.2e-10: the Hessian is exact for fixed segments, and what is left
