@@ -31,6 +31,9 @@ void      Face3dNodeXi(Face3dType, PetscInt, PetscReal[2]);
 void      Face3dShape(Face3dType, const PetscReal[2], PetscReal[], PetscReal[], PetscReal[]);
 void      Face3dEval(Face3dType, const PetscReal[], const PetscReal[2], PetscReal[3], PetscReal[6], PetscReal[9]);
 PetscReal Face3dNormal(const PetscReal[6], PetscReal[3]);
+/* An orthonormal basis t1 = T[0..2], t2 = T[3..5] of the plane normal to the unit vector n:
+   t1 from the axis least along n (the first of the least), t2 = n x t1. */
+void      Face3dPlaneBasis(const PetscReal[3], PetscReal[6]);
 PetscBool Face3dContains(Face3dType, const PetscReal[2], PetscReal);
 void      Face3dWeightBasis(Face3dType, const PetscReal[2], PetscReal[]);
 void      Face3dWeights(Face3dType, const PetscReal[], const PetscReal[2], PetscReal[]);

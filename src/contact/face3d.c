@@ -420,3 +420,18 @@ PetscErrorCode Face3dDualCoefficients(Face3dType t, const PetscReal x[], const F
     for (PetscInt k = 0; k < n; ++k) A[i * n + k] = D[i] * Mi[i * n + k];
   PetscFunctionReturn(0);
 }
+
+void Face3dPlaneBasis(const PetscReal n[3], PetscReal T[6])
+{
+  PetscInt  a = 0;
+  PetscReal l;
+
+  for (PetscInt c = 1; c < 3; ++c)
+    if (PetscAbsReal(n[c]) < PetscAbsReal(n[a])) a = c;
+  for (PetscInt c = 0; c < 3; ++c) T[c] = (c == a ? 1.0 : 0.0) - n[a] * n[c];
+  l = PetscSqrtReal(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
+  for (PetscInt c = 0; c < 3; ++c) T[c] /= l;
+  T[3] = n[1] * T[2] - n[2] * T[1];
+  T[4] = n[2] * T[0] - n[0] * T[2];
+  T[5] = n[0] * T[1] - n[1] * T[0];
+}

@@ -520,23 +520,6 @@ PetscErrorCode Friction3dLagExchange(Friction3d f)
   PetscFunctionReturn(0);
 }
 
-/* An orthonormal basis t1, t2 of the plane normal to the unit vector n:
-   t1 from the axis least along n (the first of the least), t2 = n x t1. */
-static void Friction3dBasis(const PetscReal n[3], PetscReal T[6])
-{
-  PetscInt  a = 0;
-  PetscReal l;
-
-  for (PetscInt c = 1; c < 3; ++c)
-    if (PetscAbsReal(n[c]) < PetscAbsReal(n[a])) a = c;
-  for (PetscInt c = 0; c < 3; ++c) T[c] = (c == a ? 1.0 : 0.0) - n[a] * n[c];
-  l = PetscSqrtReal(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
-  for (PetscInt c = 0; c < 3; ++c) T[c] /= l;
-  T[3] = n[1] * T[2] - n[2] * T[1];
-  T[4] = n[2] * T[0] - n[0] * T[2];
-  T[5] = n[0] * T[1] - n[1] * T[0];
-}
-
 PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscReal C[], PetscReal *change)
 {
   const PetscInt stride = 2 * PetscMax(f->nn, f->nmn);
@@ -577,7 +560,7 @@ PetscErrorCode Friction3dLagEnd(Friction3d f, const PetscReal A[], const PetscRe
     for (PetscInt k = f->rowStart[j]; k < f->rowStart[j + 1] && C[j] > 0; ++k) f->ecoef[k] /= C[j];
     if (l > 0)
       for (PetscInt c = 0; c < 3; ++c) nj[c] = n[c] / l;
-    Friction3dBasis(nj, &f->T[6 * j]);
+    Face3dPlaneBasis(nj, &f->T[6 * j]);
     for (PetscInt c = 0; c < 3; ++c) f->nu[3 * j + c] = nj[c];
     if (PetscIsInfReal(f->bound[j])) tied = PETSC_TRUE;
     else dmax = PetscMax(dmax, PetscAbsReal(f->bnew[j] - f->bound[j]));

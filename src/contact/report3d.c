@@ -53,6 +53,7 @@
    (the second moment's); 0 at Q >= mu N (full sliding). */
 #include "report3d.h"
 #include "contactreport.h"
+#include "face3d.h"
 
 static PetscReal Report3dRadius2(const ContactReport3d *R, const PetscReal X[3])
 {
@@ -103,8 +104,7 @@ static void Report3dForce(const ContactPairSpec *spec, const PetscReal F[3], con
    normal load; w = sum p_j A_j. */
 static void Report3dAxes(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], PetscReal w, ContactReport3d *R)
 {
-  PetscReal T[3][3] = {{0}}, e[2][3], m[3] = {0, 0, 0}, lam[2], phi, c, s;
-  PetscInt  k0 = 0;
+  PetscReal T[3][3] = {{0}}, e[6], m[3] = {0, 0, 0}, lam[2], phi, c, s;
 
   if (!(w > 0)) return;
   for (PetscInt j = 0; j < n; ++j) {
@@ -118,19 +118,12 @@ static void Report3dAxes(const ContactPairSpec *spec, PetscInt n, const PetscRea
   for (PetscInt q = 0; q < spec->nsym; ++q) /* a mirror image flips its plane's coordinate */
     for (PetscInt b = 0; b < 3; ++b)
       if (b != spec->symAxis[q]) T[spec->symAxis[q]][b] = T[b][spec->symAxis[q]] = 0.0;
-  for (PetscInt k = 1; k < 3; ++k) /* e1: the unit axis least along n, made normal to it; e2 = n x e1 */
-    if (PetscAbsReal(R->normal[k]) < PetscAbsReal(R->normal[k0])) k0 = k;
-  for (PetscInt k = 0; k < 3; ++k) e[0][k] = (k == k0) - R->normal[k0] * R->normal[k];
-  c = PetscSqrtReal(e[0][0] * e[0][0] + e[0][1] * e[0][1] + e[0][2] * e[0][2]);
-  for (PetscInt k = 0; k < 3; ++k) e[0][k] /= c;
-  e[1][0] = R->normal[1] * e[0][2] - R->normal[2] * e[0][1];
-  e[1][1] = R->normal[2] * e[0][0] - R->normal[0] * e[0][2];
-  e[1][2] = R->normal[0] * e[0][1] - R->normal[1] * e[0][0];
+  Face3dPlaneBasis(R->normal, e);
   for (PetscInt a = 0; a < 3; ++a) /* m = (e1 T e1, e1 T e2, e2 T e2) */
     for (PetscInt b = 0; b < 3; ++b) {
-      m[0] += e[0][a] * T[a][b] * e[0][b];
-      m[1] += e[0][a] * T[a][b] * e[1][b];
-      m[2] += e[1][a] * T[a][b] * e[1][b];
+      m[0] += e[a] * T[a][b] * e[b];
+      m[1] += e[a] * T[a][b] * e[3 + b];
+      m[2] += e[3 + a] * T[a][b] * e[3 + b];
     }
   c      = PetscSqrtReal(PetscSqr(m[0] - m[2]) + 4 * m[1] * m[1]);
   lam[0] = 0.5 * (m[0] + m[2] + c);
@@ -140,8 +133,8 @@ static void Report3dAxes(const ContactPairSpec *spec, PetscInt n, const PetscRea
   s      = PetscSinReal(phi);
   for (PetscInt i = 0; i < 2; ++i) R->axes[i] = PetscSqrtReal(5 * lam[i]);
   for (PetscInt k = 0; k < 3; ++k) {
-    R->axisDir[0][k] = c * e[0][k] + s * e[1][k];
-    R->axisDir[1][k] = -s * e[0][k] + c * e[1][k];
+    R->axisDir[0][k] = c * e[k] + s * e[3 + k];
+    R->axisDir[1][k] = -s * e[k] + c * e[3 + k];
   }
   for (PetscInt i = 0; i < 2; ++i) { /* each direction's largest component positive */
     PetscInt big = 0;
