@@ -79,12 +79,12 @@ def run_contact(args, tmp_path, ranks=1, name="run", timeout=600, check=True, en
     return res
 
 
-def info_args(tmp_path, name):
-    """-info into a file per rank (NAME.info.RANK in tmp_path): on a shared
-    stdout two ranks' block-buffered lines can interleave mid-line, and a
-    line a test looks for is lost (one run of the Nehalem kernel's under
-    load)."""
-    return ["-info", f"{tmp_path}/{name}.info:sys"]
+def info_args(tmp_path, name, classes="sys"):
+    """-info into a file per rank (NAME.info.RANK in tmp_path; PETSc's info
+    classes as -info takes them): on a shared stdout two ranks'
+    block-buffered lines can interleave mid-line, and a line a test looks
+    for is lost (one run of the Nehalem kernel's under load)."""
+    return ["-info", f"{tmp_path}/{name}.info:{classes}"]
 
 
 def info_text(tmp_path, name):

@@ -1,4 +1,5 @@
-"""Hertz's and Mindlin's closed forms for a sphere on a flat, as the 3D tests
+"""Hertz's and Mindlin's closed forms for a sphere on a flat (and Hertz's for a
+cylinder's line contact), as the 3D tests
 read them (Johnson, Contact Mechanics 4.2 and 7.2): written once here so that
 every test compares against the same formulas, not against the program's
 own (scripts/plot_hertz.py has its own, checked against these)."""
@@ -21,6 +22,13 @@ def sphere(P, Es, R=1.0):
     """The contact radius a = (3 P R / (4 E*))^(1/3) and the peak pressure p0."""
     a = (3 * P * R / (4 * Es)) ** (1 / 3)
     return a, peak(P, a)
+
+
+def line(P1, Es, R=1.0):
+    """A cylinder's line contact under a load P1 per unit length (Johnson 4.3):
+    the half-width b = sqrt(4 P1 R / (pi E*)) and the peak p0 = 2 P1 / (pi b)."""
+    b = math.sqrt(4 * P1 * R / (math.pi * Es))
+    return b, 2 * P1 / (math.pi * b)
 
 
 def moment_radius(rows):

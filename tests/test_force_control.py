@@ -13,7 +13,7 @@ import re
 import numpy as np
 import pytest
 
-from conftest import figure, run_contact
+from conftest import figure, info_args, run_contact
 
 HERTZ = ["-options_file", "meshes/hertz/hertz.opts"]
 PUSH = 0.15
@@ -192,8 +192,8 @@ def test_border_from_the_surfaces(ranks, tmp_path):
     bounds)."""
     tight = PINCH + ["-tao_gttol", "1e-12"]
     # -info into a file per rank, rank 0's read: on stdout two ranks' lines can interleave (one of 10 lost under load)
-    fast = run_contact(tight + ["-info", f"{tmp_path}/fast.info:sys"], tmp_path, ranks=ranks, name="fast")
-    slow = run_contact(tight + ["-info", f"{tmp_path}/solves.info:sys", "-force_control_border_solves"], tmp_path, ranks=ranks, name="solves")
+    fast = run_contact(tight + info_args(tmp_path, "fast"), tmp_path, ranks=ranks, name="fast")
+    slow = run_contact(tight + info_args(tmp_path, "solves") + ["-force_control_border_solves"], tmp_path, ranks=ranks, name="solves")
     (how_f, sf), (how_s, ss) = [border_info((tmp_path / f"{n}.info.0").read_text()) for n in ("fast", "solves")]
     assert how_f and all(h.startswith("by the PC") for h in how_f), how_f
     assert how_s == [], how_s  # never asked: the m solves

@@ -29,10 +29,11 @@ import h5py
 import numpy as np
 import pytest
 
+import hertz
 from conftest import figure, run_contact
 
 E, NU, R, LY, MU = 1000.0, 0.3, 1.0, 0.05, 0.3
-ESTAR = E / (2 * (1 - NU ** 2))
+ESTAR = hertz.plane_strain_modulus(E, NU, E, NU)
 G3 = "tests/meshes/contact3d"
 SLAVE = "contact/c/cyl_cap"
 STAGES = "0,-0.02,0.002,-0.02,0.005,-0.02,0.009,-0.02"   # the top's (x, y): pressed, then moved along x in 3 stages
@@ -89,16 +90,21 @@ def slave(res, stage=None):
     return out
 
 
+def moment_half_width(s):
+    """The slave nodes' x about the pressure's centroid and the half-width b
+    from the second moment, sum p A x^2 / sum p A = b^2 / 4 for Hertz's line
+    contact profile."""
+    x = s["X"][:, 0] - np.sum(s["p"] * s["A"] * s["X"][:, 0]) / np.sum(s["p"] * s["A"])
+    return x, math.sqrt(4 * np.sum(s["p"] * s["A"] * x ** 2) / np.sum(s["p"] * s["A"]))
+
+
 def line_figures(res, length):
     """p_max/p0 - 1, b/b_Hertz - 1 (second moment), the profile's relative L2
     against Hertz's (weights A_j), from the pair's force over length."""
     s = slave(res)
     c = res.summary["contact"]["c"]
-    P1 = abs(c["force"][1]) / length
-    b = math.sqrt(4 * P1 * R / (math.pi * ESTAR))
-    p0 = 2 * P1 / (math.pi * b)
-    x = s["X"][:, 0] - np.sum(s["p"] * s["A"] * s["X"][:, 0]) / np.sum(s["p"] * s["A"])
-    bm = math.sqrt(4 * np.sum(s["p"] * s["A"] * x ** 2) / np.sum(s["p"] * s["A"]))
+    b, p0 = hertz.line(abs(c["force"][1]) / length, ESTAR, R)
+    x, bm = moment_half_width(s)
     ph = p0 * np.sqrt(np.clip(1 - x ** 2 / b ** 2, 0, None))
     return dict(p=s["p"].max() / p0 - 1, b=bm / b - 1,
                 l2=math.sqrt(np.sum(s["A"] * (s["p"] - ph) ** 2) / np.sum(s["A"] * ph ** 2)))
@@ -198,9 +204,7 @@ def test_line_report(pressed):
     1e-9), along (1, 0, 0) to 1e-6."""
     r = pressed["3d"]
     c = r.summary["contact"]["c"]
-    s = slave(r)
-    x = s["X"][:, 0] - np.sum(s["p"] * s["A"] * s["X"][:, 0]) / np.sum(s["p"] * s["A"])
-    b = math.sqrt(4 * np.sum(s["p"] * s["A"] * x ** 2) / np.sum(s["p"] * s["A"]))
+    _, b = moment_half_width(slave(r))
     assert "the zone is not a disc: half-axes" in r.stdout
     assert c["fem_half_axes"][0] * 2 / math.sqrt(5) == pytest.approx(b, rel=1e-9)
     assert np.allclose(c["fem_half_axis_1"], [1, 0, 0], atol=1e-6)

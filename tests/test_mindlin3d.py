@@ -469,10 +469,11 @@ APART_RING = {2: dict(c_err=-0.0002, l2=0.1136), 3: dict(c_err=-0.0032, l2=0.055
 APART_RUNS = {"fine": (FINE, "10.5"), "apart_ring": (APART_RING, "10.5 with a ring")}
 
 
-def apart_cases(key, bound):
-    """(run, k) over the meshed-apart runs (APART_RUNS) and stages 2-4, xfail
-    (strict) where the run's figure is beyond the issue's bound."""
-    return [within(figs, k, key, bound, ah, run) for run, (figs, ah) in APART_RUNS.items() for k in (2, 3, 4)]
+def run_cases(runs, key, bound):
+    """(run, k) over the runs ({name: (figures, a/h)}: APART_RUNS,
+    MIRRORED_RUNS) and stages 2-4, xfail (strict) where the run's figure is
+    beyond the issue's bound."""
+    return [within(figs, k, key, bound, ah, run) for run, (figs, ah) in runs.items() for k in (2, 3, 4)]
 
 
 @pytest.fixture(scope="module")
@@ -487,7 +488,7 @@ def apart_ring(tmp_path_factory):
 
 
 @pytest.mark.stress
-@pytest.mark.parametrize("run,k", apart_cases("c_err", C_BOUND))
+@pytest.mark.parametrize("run,k", run_cases(APART_RUNS, "c_err", C_BOUND))
 def test_fine_stick_radius(request, run, k):
     """Meshed apart at a/h = 10.5 (h = 0.01), and with the ring of faces of
     0.0035 over the slip annulus, stage k's c/a from Mindlin's:
@@ -499,7 +500,7 @@ def test_fine_stick_radius(request, run, k):
 
 
 @pytest.mark.stress
-@pytest.mark.parametrize("run,k", apart_cases("l2", L2_BOUND))
+@pytest.mark.parametrize("run,k", run_cases(APART_RUNS, "l2", L2_BOUND))
 def test_fine_shear(request, run, k):
     """Meshed apart at a/h = 10.5 (h = 0.01), stage k's shear along Q
     against Mindlin's (as test_shear): `l2` = 0.049 to 0.121 (0.121, 0.060,
@@ -552,11 +553,6 @@ MIRRORED_RUNS = {"mirrored_fine": (MIRRORED_FINE, "10.5"), "mirrored_finer": (MI
                  "mirrored_ring": (MIRRORED_RING, "10.5 with a ring")}
 
 
-def mirrored_cases(key, bound):
-    """(run, k) over the mirrored runs (MIRRORED_RUNS) and stages 2-4, xfail
-    (strict) where the run's figure is beyond the issue's bound."""
-    return [within(figs, k, key, bound, ah, run) for run, (figs, ah) in MIRRORED_RUNS.items() for k in (2, 3, 4)]
-
 
 @pytest.fixture(scope="module")
 def mirrored_fine(tmp_path_factory):
@@ -575,7 +571,7 @@ def mirrored_ring(tmp_path_factory):
 
 
 @pytest.mark.stress
-@pytest.mark.parametrize("run,k", mirrored_cases("c_err", C_BOUND))
+@pytest.mark.parametrize("run,k", run_cases(MIRRORED_RUNS, "c_err", C_BOUND))
 def test_mirrored_fine_stick_radius(request, run, k):
     """Mirrored meshes at a/h = 10.5 (h = 0.01) and 13 (h = 0.008), and
     10.5 with a ring of faces of 0.0035 over the slip annulus, nu 0.3,
@@ -591,7 +587,7 @@ def test_mirrored_fine_stick_radius(request, run, k):
 
 
 @pytest.mark.stress
-@pytest.mark.parametrize("run,k", mirrored_cases("l2", L2_BOUND))
+@pytest.mark.parametrize("run,k", run_cases(MIRRORED_RUNS, "l2", L2_BOUND))
 def test_mirrored_fine_shear(request, run, k):
     """Mirrored meshes at a/h = 10.5 and 13, and 10.5 with the ring, nu
     0.3, stage k's shear along Q against Mindlin's (as test_shear): `l2` =

@@ -5,7 +5,7 @@ of one rank and of every rank factoring it whole. The speed-up at 2e5 dofs:
 bench/contact3d_ranks/RESULTS.md (scripts/bench_contact3d_ranks.py)."""
 import pytest
 
-from conftest import figure, info_text, run_contact
+from conftest import figure, info_args, info_text, run_contact
 from test_contact3d import hertz_args
 
 
@@ -23,7 +23,7 @@ def test_split_lu_agrees(tmp_path):
     args = hertz_args(0.04)
     one = run_contact(args, tmp_path, name="one").summary
     whole = run_contact(args, tmp_path, ranks=2, name="whole").summary
-    res = run_contact(args + ["-newton_schur_split_lu", "1", "-info", f"{tmp_path}/split.info:pc"], tmp_path, ranks=2, name="split")
+    res = run_contact(args + ["-newton_schur_split_lu", "1"] + info_args(tmp_path, "split", "pc"), tmp_path, ranks=2, name="split")
     split = res.summary
     assert "capacitance matrix factored by the ranks together" in info_text(tmp_path, "split")
     c1 = one["contact"]["c"]
