@@ -131,8 +131,8 @@ def test_whole_ball_level(tmp_path):
     0.04, no symmetry plane), the Taylor test at the solution (-taylor_scale
     1e-6): the Hessian's relative remainder falls from 5.3e-8 at the first
     step to `whole_level` = 4.9e-9 of |H v| (4.4e-9 with 8 points a side;
-    bound 1.5e-8), the quarter ball's to 8.0e-9 (`level_ratio` = the
-    whole's over the quarter's, 0.61, bound 0.2 to 5: the symmetry planes add
+    bound 1.5e-8), the quarter ball's to 8.0e-9: the whole's over the
+    quarter's `level_ratio` = 0.61 (bound 0.2 to 5: the symmetry planes add
     nothing now; 1.7e-3 while the quarter's slivers had no end term). With
     the segments frozen in xi over the test (an experiment, not in the code)
     the remainder falls to round-off, 5.2e-10: the Hessian is exact for
