@@ -14,7 +14,7 @@ typedef struct {
    parameter plane: int f dS = sum w f J), the master face m (an index into
    the caller's list) and the parameters eta of the closest point there. */
 typedef struct {
-  PetscInt  m;
+  PetscInt  m, ext; /* ext: beyond the master's border along the slave's own (a symmetry plane), eta on the face's extension */
   PetscReal xi[2], eta[2], w;
 } Segment3dPoint;
 

@@ -97,31 +97,21 @@ def test_taylor_covering(tmp_path):
 
 @pytest.mark.roundoff
 def test_hertz_level_not_the_rule(tmp_path):
-    """The curved slave on an elastic master with no end inside the slave:
-    test_contact3d.py's quarter ball's cap (Tet10, h 0.04) on the block's
-    top, the Taylor test at the solution (-taylor_scale 1e-6, as there).
-    The Hessian's relative remainder levels at `hertz_level_q4` = 2.9e-6
-    of |H v| with the pieces' Gauss rule of degree 7 (4 points a side) and
-    the same with degree 15 (8 points: `hertz_level_ratio` = 1.0004 to
-    1.0005 over the five kernels, the ratio of the two, bound 0.9 to 1.1;
-    2.8846e-6 at degree 11): a Gauss rule's error on a smooth integrand
-    would fall by orders of magnitude from degree 7 to 15, so the term left
-    out is not the rule's motion on smooth pieces. It follows the master's
-    deformation: with the block 100 times stiffer (E 1e7, the penalty
-    unchanged, set by the ball) it is `hertz_level_ratio_E` = 0.0102 times
-    as high (bound 0.005 to 0.02; 2.9e-10 of |H v| at E 1e9). Its source,
-    shown since (test_whole_ball_level): the symmetry planes. Both surfaces
-    end on x = 0 and y = 0, and the block's border, projected on a slave
-    sub-triangle along that triangle's own normal, falls inside it by a
-    sliver whose width moves with both surfaces (up to 7 % of the triangle
-    where they lie apart); the end term is left out along the slave's own
-    border (Segment3dAlongSlaveBorder). With it (the border's tolerance
-    0.1 -> 1e-9, tried) the level falls to 8.4e-9, but the energy's
-    derivative then jumps where a sliver opens (the end term is finite at a
-    zero width, nil outside): the squeezed rubber ball took 274 Newton
-    iterations and a cutback where it takes 179. The cure is an energy
-    without the slivers (the master continued across a symmetry plane), not
-    yet written."""
+    """The curved slave on an elastic master: test_contact3d.py's quarter
+    ball's cap (Tet10, h 0.04) on the block's top, the Taylor test at the
+    solution (-taylor_scale 1e-6, as there). The Hessian's relative
+    remainder falls from 5.4e-8 to `hertz_level_q4` = 8.0e-9 of |H v| with
+    the pieces' Gauss rule of degree 7 (4 points a side; bound 2.5e-8), as
+    the whole ball's (test_whole_ball_level), and about the same with degree
+    15 (`hertz_level_ratio` = 0.83, bound 0.5 to 1.5): not the rule's error.
+    It follows the master's deformation: with the block 100 times stiffer
+    (E 1e7, the penalty unchanged, set by the ball) it is
+    `hertz_level_ratio_E` = 0.0024 times as high (bound 0.001 to 0.01). It
+    stood at 2.9e-6 while the quarter's energy had slivers of S' along its
+    symmetry planes (the block's border projected inside a slave
+    sub-triangle; their moving ends had no term): the pieces now reach the
+    slave's border there (segment3d.c, a strip beyond the master's border,
+    its points on the master face's extension)."""
     level = {}
     for q in (4, 8):
         t = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-contact_quadrature_points", q],
@@ -130,25 +120,24 @@ def test_hertz_level_not_the_rule(tmp_path):
         level[q] = t["hessian_relative_remainder"][-1]
     t = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-base_E", "1e7"],
                     tmp_path, name="stiff").summary["taylor"]
-    assert 0.005 <= figure("hertz_level_ratio_E", t["hessian_relative_remainder"][-1] / level[4]) <= 0.02
-    figure("hertz_level_q4", level[4])
-    assert 0.9 <= figure("hertz_level_ratio", level[8] / level[4]) <= 1.1
+    assert 0.001 <= figure("hertz_level_ratio_E", t["hessian_relative_remainder"][-1] / level[4]) <= 0.01
+    assert figure("hertz_level_q4", level[4]) <= 2.5e-8
+    assert 0.5 <= figure("hertz_level_ratio", level[8] / level[4]) <= 1.5
 
 
 @pytest.mark.roundoff
 def test_whole_ball_level(tmp_path):
     """The whole ball on the whole block (test_sphere3d.py's whole_args, h
-    0.04, no symmetry plane: no end of S' anywhere near the contact), the
-    Taylor test at the solution (-taylor_scale 1e-6): the Hessian's relative
-    remainder falls from 5.3e-8 at the first step to `whole_level` = 4.9e-9
-    of |H v| (4.4e-9 with 8 points a side; bound 1.5e-8), where the quarter
-    ball's stays at 2.9e-6 (test_hertz_level_not_the_rule): the whole's over
-    the quarter's `level_ratio` = 1.7e-3 (bound 0.01). The quarter's level
-    is its symmetry planes' slivers. With the segments frozen in xi over the
-    test (an experiment, not in the code) the remainder falls to round-off,
-    5.2e-10: the Hessian is exact for fixed segments, and what is left
-    (4.9e-9, following the master's deformation: 1.4e-11 with the block
-    100 times stiffer) is the segments' own motion."""
+    0.04, no symmetry plane), the Taylor test at the solution (-taylor_scale
+    1e-6): the Hessian's relative remainder falls from 5.3e-8 at the first
+    step to `whole_level` = 4.9e-9 of |H v| (4.4e-9 with 8 points a side;
+    bound 1.5e-8), the quarter ball's to 8.0e-9: the whole's over the
+    quarter's `level_ratio` = 0.61 (bound 0.2 to 5: the symmetry planes add
+    nothing now; 1.7e-3 while the quarter's slivers had no end term). With
+    the segments frozen in xi over the test (an experiment, not in the code)
+    the remainder falls to round-off, 5.2e-10: the Hessian is exact for
+    fixed segments, and what is left (following the master's deformation:
+    1.4e-11 with the block 100 times stiffer) is the segments' own motion."""
     whole = run_contact(whole_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-output", "none"],
                         tmp_path, name="whole").summary["taylor"]
     quarter = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6"],
@@ -157,4 +146,4 @@ def test_whole_ball_level(tmp_path):
     level = figure("whole_level", whole["hessian_relative_remainder"][-1])
     assert level <= 1.5e-8
     assert whole["hessian_relative_remainder"][0] >= 5 * level
-    assert figure("level_ratio", level / quarter["hessian_relative_remainder"][-1]) <= 0.01
+    assert 0.2 <= figure("level_ratio", level / quarter["hessian_relative_remainder"][-1]) <= 5
