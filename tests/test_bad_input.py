@@ -291,16 +291,24 @@ def test_unconverged_writes_nothing(tmp_path):
         assert (tmp_path / f).read_text() == SENTINEL
 
 
-def test_gmsh_crash_named(tmp_path):
+@pytest.mark.parametrize("stage", ["mesh", "parse", "exit"])
+def test_gmsh_crash_named(stage, tmp_path):
     """Gmsh killed by a signal while it meshes (Gmsh 4.8.4 crashes so on a
-    half disc under Mesh.Algorithm 8 with a size field): one line naming the
-    file, the mesh size and the signal, where it said only "gmsh failed on
-    FILE (h = 0.3); see LOG" of an empty log. A stand-in gmsh on PATH parses
-    with the real one and dies of SIGSEGV when asked for a mesh."""
+    half disc under Mesh.Algorithm 8 with a size field) or while it reads
+    the file: one line naming the file, the mesh size (meshing) and the
+    signal, where it said only "gmsh failed on FILE (h = 0.3); see LOG" of
+    an empty log, or "Gmsh cannot read geometry file FILE: no error
+    message". A stand-in gmsh on PATH dies of SIGSEGV when asked for a mesh
+    (mesh: it reads the file with the real one) or whatever it is asked
+    (parse: the failed mesh's check that Gmsh reads the file, -parse_and_exit,
+    dies too), or exits 3 without a word (exit: its status named); the
+    earlier output is kept."""
     fake = tmp_path / "bin" / "gmsh"
     fake.parent.mkdir()
-    fake.write_text("#!/bin/sh\nfor a in \"$@\"; do [ \"$a\" = -parse_and_exit ] && exec %s \"$@\"; done\nkill -SEGV $$\n"
-                    % shutil.which("gmsh"))
+    real = shutil.which("gmsh")
+    body = (f'for a in "$@"; do [ "$a" = -parse_and_exit ] && exec {real} "$@"; done\nkill -SEGV $$\n' if stage == "mesh"
+            else "kill -SEGV $$\n" if stage == "parse" else "exit 3\n")
+    fake.write_text("#!/bin/sh\n" + body)
     fake.chmod(0o755)
     (tmp_path / "out.h5").write_text(SENTINEL)
     proc = subprocess.run([str(BIN)] + SCENE + ["-output", str(tmp_path / "out.h5"), "-summary", "none",
@@ -309,7 +317,12 @@ def test_gmsh_crash_named(tmp_path):
                           capture_output=True, text=True, timeout=120)
     lines = [l for l in proc.stderr.splitlines() if l.strip()]
     assert proc.returncode == 1 and len(lines) == 1, proc.stderr
-    assert "gmsh failed on meshes/hertz/indenter.geo (h = 0.3): Gmsh crashed (signal 11, " in lines[0], lines[0]
+    if stage == "mesh":
+        assert "gmsh failed on meshes/hertz/indenter.geo (h = 0.3): Gmsh crashed (signal 11, " in lines[0], lines[0]
+    elif stage == "parse":
+        assert "Gmsh cannot read geometry file meshes/hertz/indenter.geo: Gmsh crashed (signal 11, " in lines[0], lines[0]
+    else:
+        assert "Gmsh cannot read geometry file meshes/hertz/indenter.geo: no error message (exit status 3)" in lines[0], lines[0]
     assert (tmp_path / "out.h5").read_text() == SENTINEL
 
 

@@ -150,6 +150,17 @@ static PetscErrorCode GmshLogFirstError(const char log[], const char geo[], char
   PetscFunctionReturn(0);
 }
 
+/* What Gmsh's exit r says where its log names no error: not run, killed
+   by a signal (named), or its exit status. */
+static PetscErrorCode GmshStatusText(int r, char text[], size_t len)
+{
+  PetscFunctionBeginUser;
+  if (r < 0) PetscCall(PetscStrncpy(text, "gmsh could not be run", len));
+  else if (r > GMSH_SIGNALLED) PetscCall(PetscSNPrintf(text, len, "Gmsh crashed (signal %d, %s)", r - GMSH_SIGNALLED, strsignal(r - GMSH_SIGNALLED)));
+  else PetscCall(PetscSNPrintf(text, len, "no error message (exit status %d)", r));
+  PetscFunctionReturn(0);
+}
+
 /* Whether Gmsh can read geo with the options of argv[1..argc) (gmsh
    -parse_and_exit: no mesh, no file): if not, errmsg names the file and
    Gmsh's first error. Its log is a temporary beside msh. */
@@ -168,7 +179,7 @@ static PetscErrorCode GeoCheckParse(char *argv[], PetscInt argc, const char geo[
   argv[1]        = mode;
   if (r != 0) {
     PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
-    if (!gmsh[0]) PetscCall(PetscStrncpy(gmsh, r < 0 ? "gmsh could not be run" : "no error message", sizeof(gmsh)));
+    if (!gmsh[0]) PetscCall(GmshStatusText(r, gmsh, sizeof(gmsh)));
     PetscCall(PetscSNPrintf(errmsg, len, "Gmsh cannot read geometry file %s: %s", geo, gmsh));
   }
   (void)unlink(log);
@@ -299,7 +310,12 @@ PetscErrorCode MeshGenerate(MPI_Comm comm, const char body[], const char geo[], 
         if (errmsg[0]) (void)unlink(log);
         else {
           PetscCall(GmshLogFirstError(log, geo, gmsh, sizeof(gmsh)));
-          if (!gmsh[0] && r > GMSH_SIGNALLED) PetscCall(PetscSNPrintf(gmsh, sizeof(gmsh), "Gmsh crashed (signal %d, %s); another -%s_mesh_size or meshing algorithm in the file may pass", r - GMSH_SIGNALLED, strsignal(r - GMSH_SIGNALLED), body));
+          if (!gmsh[0] && r != 0) { /* else Gmsh exited 0 and wrote no mesh */
+            size_t n;
+            PetscCall(GmshStatusText(r, gmsh, sizeof(gmsh)));
+            n = strlen(gmsh);
+            if (r > GMSH_SIGNALLED) PetscCall(PetscSNPrintf(gmsh + n, sizeof(gmsh) - n, "; another -%s_mesh_size or meshing algorithm in the file may pass", body));
+          }
           PetscCall(PetscSNPrintf(errmsg, sizeof(errmsg), "gmsh failed on %s (h = %g)%s%s; see %s", geo, (double)h, gmsh[0] ? ": " : "", gmsh, log));
         }
       } else if (rename(tmp, msh)) {
