@@ -31,6 +31,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, figure, run_contact
+import hertz
 
 ROLLER = ["-options_file", "meshes/roller/roller.opts", "-output", "none"]
 PRESSURE = ["-upper_bc_back_components", "x", "-upper_bc_back_values", "0", "-upper_bc_back_control", "displacement",
@@ -42,9 +43,7 @@ EPS = np.finfo(float).eps
 
 def hertz_cylinder(P, E=E, nu=NU, R=R):
     """Hertz's a and p_max for a cylinder of radius R on a flat of the same material."""
-    Es = E / (2 * (1 - nu ** 2))
-    a = math.sqrt(4 * P * R / (math.pi * Es))
-    return a, 2 * P / (math.pi * a)
+    return hertz.line(P, hertz.plane_strain_modulus(E, nu, E, nu), R)
 
 
 def contacts(s):
