@@ -133,7 +133,9 @@ def test_displacement_is_the_force_runs_reference(by_force, tmp_path):
     then meet other elements (p_max measured `dpmax` = 5.7e-5 apart, bound
     1e-3). Within the displacement run, the contacts carry its reaction to what
     its stop guarantees (balance_bound; `balance` = 3.0e-10 to 6.6e-10 of the
-    load, `balance_of_bound` = 2.1e-3 to 4.6e-3). The cost claim of issue 33:
+    load, `balance_of_bound` = 2.1e-3 to 4.6e-3), and each contact's p_max and
+    half-width are Hertz's for its own P to 2e-3 (`hertz_pmax` = 6.0e-4,
+    `hertz_a` = 5.3e-4). The cost claim of issue 33:
     the force run takes at most 1.5 times the displacement run's Newton
     iterations plus 2 (measured `iterations_ratio` = 0.591 of that allowance,
     the force run's over 1.5 d + 2)."""
