@@ -39,6 +39,7 @@ typedef struct {
 
 PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
+void           Segment3dPointClosest(const Segment3dPoint *, const Face3d *, const PetscReal[3], PetscReal[2], PetscBool *);
 PetscErrorCode Segment3dEndEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dEnd[], PetscReal[]);
 PetscErrorCode Segment3dEndHessian(const Face3d *, const PetscReal[], const PetscReal[], const PetscReal[], const Face3d *, const Segment3dEnd *, PetscReal[], PetscBool *);
 /* A slave point's closest point on a master face (Segment3dClosestPointAt). */

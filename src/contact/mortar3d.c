@@ -716,10 +716,7 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
         }
         if (lam == 0.0) continue;
         Face3dEval(S->type, xs, pt->xi, x, NULL, NULL);
-        if (pt->ext) {
-          clamped = PETSC_FALSE;
-          (void)Face3dClosestPoint(M->type, xm, x, e2, NULL);
-        } else Face3dClosestPointOnFace(M->type, xm, x, SEGMENT3D_IN_TOL, e2, &clamped);
+        Segment3dPointClosest(pt, &mf, x, e2, &clamped);
         if (clamped) continue;
         PetscCall(Mortar3dGapHessian(&sf, pt->xi, &mf, e2, K, &ok));
         if (!ok) continue;

@@ -127,6 +127,15 @@ static void SubPlaneSetUp(const Face3d *f, const PetscInt v[3], SubPlane *P)
   P->xiArea = ClipSignedArea(3, P->xi);
 }
 
+/* The longest edge of a sub-plane's triangle, in the plane. */
+static PetscReal SubPlaneLongestEdge(const SubPlane *P)
+{
+  PetscReal len2 = 0.0;
+
+  for (PetscInt i = 0; i < 3; ++i) len2 = PetscMax(len2, PetscSqr(P->v2d[2 * ((i + 1) % 3)] - P->v2d[2 * i]) + PetscSqr(P->v2d[2 * ((i + 1) % 3) + 1] - P->v2d[2 * i + 1]));
+  return PetscSqrtReal(len2);
+}
+
 /* The squared distance from p to the box b (lo[3], hi[3]): 0 inside, and no
    more than the distance to anything in it. */
 static inline PetscReal BoxDistance2(const PetscReal b[6], const PetscReal p[3])
@@ -261,6 +270,18 @@ static PetscErrorCode PointListPush(PointList *L, const Segment3dPoint *q)
   PetscFunctionReturn(0);
 }
 
+/* The closest point eta (updated) on master face M of the slave point x
+   of pt: on the face's polynomial extension where pt lies beyond the
+   master's border along the slave's own (ext: Newton, unclamped), else on
+   the face (*clamped: on its boundary, Face3dClosestPointOnFace). */
+void Segment3dPointClosest(const Segment3dPoint *pt, const Face3d *M, const PetscReal x[3], PetscReal eta[2], PetscBool *clamped)
+{
+  if (pt->ext) {
+    *clamped = PETSC_FALSE;
+    (void)Face3dClosestPoint(M->type, M->x, x, eta, NULL);
+  } else Face3dClosestPointOnFace(M->type, M->x, x, SEGMENT3D_IN_TOL, eta, clamped);
+}
+
 /* The points of one clipped triangle piece tri[6] of the slave plane P,
    master sub-triangle mt2d (its vertices' master parameters meta). */
 static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *P, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, const PetscReal tri[6], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PetscBool ext, PointList *L)
@@ -392,11 +413,10 @@ static PetscBool Segment3dNearSlaveBorder(Face3dType stype, PetscInt slaveBorder
    each along its own normal, only grazes their edges and corners there. */
 static PetscBool Segment3dAlongSlaveBorder(Face3dType stype, PetscInt slaveBorder, const PetscInt tsub[3], const SubPlane *P, const PetscReal p[2], const PetscReal q[2], PetscReal s0, PetscReal s1)
 {
-  PetscReal tol = 0.0;
+  PetscReal tol;
 
   if (!slaveBorder) return PETSC_FALSE;
-  for (PetscInt i = 0; i < 3; ++i) tol = PetscMax(tol, PetscSqr(P->v2d[2 * ((i + 1) % 3)] - P->v2d[2 * i]) + PetscSqr(P->v2d[2 * ((i + 1) % 3) + 1] - P->v2d[2 * i + 1]));
-  tol = SEGMENT3D_ALONG * PetscSqrtReal(tol);
+  tol = SEGMENT3D_ALONG * SubPlaneLongestEdge(P);
   for (PetscInt k = 0; k < 2; ++k) {
     const PetscReal s = k ? s1 : s0, x[2] = {p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])};
     if (!Segment3dNearSlaveBorder(stype, slaveBorder, tsub, P, x, tol)) return PETSC_FALSE;
@@ -453,7 +473,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
       Face3dSubTriangles(master[m].type, &nsm, &msub);
       for (PetscInt u = 0; u < nsm; ++u) {
         PetscReal a[3], b[3], nu[3], mt2d[6], meta[6], poly[2 * CLIP_MAX_VERTICES], tri[6 * CLIP_MAX_VERTICES];
-        PetscInt  npoly, ntri;
+        PetscInt  npoly, ntri, mnode[3] = {msub[u][0], msub[u][1], msub[u][2]}; /* mt2d's vertices' master nodes */
         for (PetscInt d = 0; d < 3; ++d) {
           a[d] = master[m].x[3 * msub[u][1] + d] - master[m].x[3 * msub[u][0] + d];
           b[d] = master[m].x[3 * msub[u][2] + d] - master[m].x[3 * msub[u][0] + d];
@@ -479,26 +499,19 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
             }
           PetscCall(PetscArraycpy(mt2d, t2, 6));
           PetscCall(PetscArraycpy(meta, te, 6));
+          mnode[0] = msub[u][2];
+          mnode[2] = msub[u][0];
         }
         ntri = ClipTriangulate(npoly, poly, 1e-14 * ClipSignedArea(3, P.v2d), tri);
         for (PetscInt k = 0; k < ntri; ++k) PetscCall(Segment3dPiecePoints(slave, &P, nm, master, boxes, m, &tri[6 * k], mt2d, meta, rule, PETSC_FALSE, &L));
         if (slaveBorder) { /* the master's border along the slave's own: a strip beyond it, to T's edge */
-          PetscReal len2 = 0.0;
-          for (PetscInt i = 0; i < 3; ++i) len2 = PetscMax(len2, PetscSqr(P.v2d[2 * ((i + 1) % 3)] - P.v2d[2 * i]) + PetscSqr(P.v2d[2 * ((i + 1) % 3) + 1] - P.v2d[2 * i + 1]));
+          const PetscReal width = 0.25 * SubPlaneLongestEdge(&P);
           for (PetscInt k = 0; k < 3; ++k) {
             const PetscInt   k1 = (k + 1) % 3, k2 = (k + 2) % 3;
             const PetscReal *pa = &mt2d[2 * k], *pb = &mt2d[2 * k1], *pc = &mt2d[2 * k2];
             PetscReal        s0, s1, nx, ny, nn, strip[8], spoly[2 * CLIP_MAX_VERTICES], stri[6 * CLIP_MAX_VERTICES];
-            PetscInt         ns2, nst, na = -1, nb = -1;
-            for (PetscInt i = 0; i < Face3dNodes(master[m].type); ++i) { /* the edge's master nodes, by position */
-              PetscReal r[3], x2, y2;
-              for (PetscInt d = 0; d < 3; ++d) r[d] = master[m].x[3 * i + d] - P.o[d];
-              x2 = Dot3(r, &P.e[0]);
-              y2 = Dot3(r, &P.e[3]);
-              if (x2 == pa[0] && y2 == pa[1]) na = i;
-              if (x2 == pb[0] && y2 == pb[1]) nb = i;
-            }
-            if (na < 0 || nb < 0 || Segment3dFaceSide(master[m].type, na, nb) < 0 || !Segment3dBorderEdge(nm, master, m, na, nb)) continue;
+            PetscInt         ns2, nst;
+            if (Segment3dFaceSide(master[m].type, mnode[k], mnode[k1]) < 0 || !Segment3dBorderEdge(nm, master, m, mnode[k], mnode[k1])) continue;
             Segment3dSegmentInTriangle(P.v2d, pa, pb, &s0, &s1);
             if (!(s1 - s0 > SEGMENT3D_END_TOL) || !Segment3dAlongSlaveBorder(slave->type, slaveBorder, sub[t], &P, pa, pb, s0, s1)) continue;
             nx = pb[1] - pa[1];
@@ -508,8 +521,8 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
               ny = -ny;
             }
             nn = PetscSqrtReal(nx * nx + ny * ny);
-            nx *= 0.25 * PetscSqrtReal(len2) / nn;
-            ny *= 0.25 * PetscSqrtReal(len2) / nn;
+            nx *= width / nn;
+            ny *= width / nn;
             strip[0] = pa[0];
             strip[1] = pa[1];
             strip[2] = pa[0] + nx;
@@ -567,10 +580,7 @@ PetscErrorCode Segment3dEvaluate(const Face3d *Xref, const PetscReal xs[], const
     Face3dShape(Xref->type, pt->xi, N, NULL, NULL);
     Face3dWeights(Xref->type, Adual, pt->xi, W);
     Face3dEval(Xref->type, xs, pt->xi, x, NULL, NULL);
-    if (pt->ext) {
-      clamped = PETSC_FALSE;
-      (void)Face3dClosestPoint(M->type, M->x, x, pt->eta, NULL);
-    } else Face3dClosestPointOnFace(M->type, M->x, x, SEGMENT3D_IN_TOL, pt->eta, &clamped);
+    Segment3dPointClosest(pt, M, x, pt->eta, &clamped);
     Face3dEval(M->type, M->x, pt->eta, xm, T, NULL);
     Face3dNormal(T, n);
     Face3dShape(M->type, pt->eta, Nm, NULL, NULL);
