@@ -136,8 +136,12 @@ def test_line_as_2d(pressed):
     0.02): the pair's force per unit length `dP` = 2.3e-9 of P' (bound 1e-7),
     each slave node's pressure `dp` = 2.6e-8 of p_max from the 2D node's
     (bound 1e-6), and along z, over each column of 3D nodes, `dp_z` =
-    1.0e-10 of p_max (bound 1e-8: plane strain); the same to 2 digits under
-    the five BLAS kernels."""
+    3.0e-8 of p_max (bound 1e-7: plane strain; the block's border nodes, at
+    the ends, are projected on the slave along its sub-triangles' normals
+    and the others along their mean normals, segment3d.c, so the end
+    columns' pieces are not the middle's and their quadratures of the gap's
+    bends differ by about what 3D's and 2D's do, dp; 1.0e-10 while all were
+    projected alike); the same to 2 digits under the five BLAS kernels."""
     r3, r2 = pressed["3d"], pressed["2d"]
     P3 = abs(r3.summary["contact"]["c"]["force"][1]) / LY
     P2 = abs(r2.summary["contact"]["c"]["force"][1])
@@ -149,7 +153,7 @@ def test_line_as_2d(pressed):
     dpz = max(np.ptp(s3["p"][c]) for c in cols) / pmax
     assert figure("dP", abs(P3 - P2) / P2) <= 1e-7
     assert figure("dp", dp) <= 1e-6
-    assert figure("dp_z", dpz) <= 1e-8
+    assert figure("dp_z", dpz) <= 1e-7
 
 
 @pytest.mark.roundoff
@@ -162,7 +166,8 @@ def test_line_friction_as_2d(sheared):
     1e-10: not the fixed point's stop but the two formulations' slip
     measures, 2D's along the master's tangent, 3D's in the closing plane's
     basis turned between accepted states), the same nodes stuck (`stick_differ`
-    = 0), the shear along z `shear_z` = 4.8e-9 of the peak at most (bound 1.5e-8),
+    = 0), the shear along z `shear_z` = 7.3e-8 of the peak at most (bound 2e-7:
+    the end columns' pieces, as dp_z in test_line_as_2d; 4.8e-9 before),
     and Coulomb exact where a 3D node slips at the end (`slip_error` =
     1.9e-16, bound 1e-12). Not Cattaneo's: c/b 3.98 %, -0.19 %, -4.3 % from
     sqrt(1 - Q/(mu P')), because the cylinder on the block is not Mindlin's
@@ -193,7 +198,7 @@ def test_line_friction_as_2d(sheared):
     assert figure("dQ", worst["dQ"]) <= 3e-5
     assert figure("dshear", worst["dshear"]) <= 1e-3
     assert figure("stick_differ", worst["stick_differ"]) == 0
-    assert figure("shear_z", worst["shear_z"]) <= 1.5e-8
+    assert figure("shear_z", worst["shear_z"]) <= 2e-7
     assert figure("slip_error", np.max(np.abs(t[slipping] - MU * end["p"][slipping])) / (MU * end["p"].max())) <= 1e-12
 
 

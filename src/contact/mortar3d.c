@@ -34,8 +34,9 @@
    master's border lies inside the slave, the end's term is in G_j and its
    leading second-order part in the exact Hessian, Mortar3dHessianEnds), which on
    curved faces leaves the Gauss rule's motion out: the Hessian's Taylor
-   remainder is second order on the flat patch test and levels at 2.9e-6
-   of |H v| on the curved Hertz cap (tests/test_contact3d.py).
+   remainder is second order on the flat patch test and levels at 2.4e-9
+   of |H v| on the curved Hertz cap (the quarter ball; the whole one
+   1.6e-9: tests/test_seghess3d.py).
 
    Slave: -contact_mortar_slave first|second, or auto (the default): as in
    2D, a surface that ends on the other (ContactSurface3dEndsOn), else the

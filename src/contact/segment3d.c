@@ -17,8 +17,25 @@
    face. Each slave sub-triangle T defines a plane (origin at its first
    vertex, normal (v1 - v0) x (v2 - v0), axes e1 along v1 - v0 and
    e2 = n x e1); each master sub-triangle whose normal opposes T's is
-   projected on it along n and clipped by T (clip.c), and the clipped
-   polygon is cut into triangles. A point p of T's plane has barycentric
+   projected on it and clipped by T (clip.c), and the clipped polygon is
+   cut into triangles. Its vertices, master nodes, are projected node by
+   node (so the projected sub-triangles still tile): a node inside the
+   master surface along the mean of its faces' normals there, to the point
+   of T's plane whose barycentric coordinates in T are the slave's
+   parameters where that line meets the curved slave face
+   (Segment3dNodeDirections, Segment3dSlaveHit): an edge between two master
+   faces then falls, at its nodes, where a slave point's closest point
+   passes from one face to the other, and the kink of the gap there on a
+   piece's border, not inside a piece (along T's normal it fell inside by
+   the gap times the two normals' angle, plus the slave's bulge off T: the
+   Hertz balls' Taylor level 4.9e-9 and 8.0e-9 of |H v|, now 1.6e-9 and
+   2.4e-9: docs/formulations.md). The hit is weighed out (to the line onto
+   T's plane) more than half a face outside the slave face, and where the
+   node's faces are larger than the slave face (to SEGMENT3D_HIT_COARSE
+   times it): a coarse master's edge from a node on its hit to one far off
+   on the plane would cross T askew. A node on the master's border goes
+   along n (the ends' term below and the strip take it so). A point p of
+   T's plane has barycentric
    coordinates (l1, l2) in T, the same in the slave's parameters since T's
    vertices are nodes and the map of T is affine in xi: xi = xi_0 + l1
    (xi_1 - xi_0) + l2 (xi_2 - xi_0). A piece's Gauss points (the rule
@@ -85,6 +102,14 @@ static inline void Cross3(const PetscReal a[3], const PetscReal b[3], PetscReal 
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
   c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* 0 below 0, 1 above 1, the cubic 3 s^2 - 2 s^3 between. */
+static inline PetscReal SmoothStep(PetscReal s)
+{
+  if (s <= 0) return 0.0;
+  if (s >= 1) return 1.0;
+  return s * s * (3.0 - 2.0 * s);
 }
 
 /* Barycentric (l1, l2) of p in the triangle t[6] of the plane. */
@@ -447,6 +472,107 @@ static PetscErrorCode Segment3dSubEnds(Face3dType stype, PetscInt slaveBorder, P
   PetscFunctionReturn(0);
 }
 
+/* A face's longest side, corner to corner. */
+static PetscReal Segment3dFaceSize(const Face3d *F)
+{
+  const PetscInt nc = F->type == FACE3D_TRI6 ? 3 : 4;
+  PetscReal      size = 0.0;
+
+  for (PetscInt k = 0; k < nc; ++k) {
+    const PetscReal *a = &F->x[3 * k], *b = &F->x[3 * ((k + 1) % nc)];
+    size = PetscMax(size, PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]) + PetscSqr(b[2] - a[2])));
+  }
+  return size;
+}
+
+/* The directions the master faces' nodes inside the master surface are
+   projected along (dir[27 m + 3 a], node a of face m): the mean of
+   the unit normals there of the faces given that hold the node (the same
+   coordinates: the same node), so that an edge between two faces projects
+   where the closest point passes from one to the other (the bisector of a
+   concave edge, the middle of a convex edge's fan) and the gap's kink
+   there falls on the pieces' border, not inside a piece. border[9 m + a]:
+   the node lies on the master surface's border (on a side of a face that
+   no other face given shares: Segment3dBorderEdge), projected along the
+   sub-triangle's normal as the ends' term and the strip beyond the border
+   take it (on the line's hit a point near the border, whose closest point
+   falls just beyond it, would drop out: a sliver again); size[9 m + a]: the
+   longest side of the faces that hold the node; side[] is scratch. A
+   node's direction is the same for every face that holds it, so the
+   projected sub-triangles still tile. */
+static void Segment3dNodeDirections(PetscInt nm, const Face3d master[], PetscBool side[], PetscBool border[], PetscReal dir[], PetscReal size[])
+{
+  for (PetscInt m = 0; m < nm; ++m) { /* the nodes on a side of their face on the border */
+    const Face3d  *F  = &master[m];
+    const PetscInt nn = Face3dNodes(F->type), nc = F->type == FACE3D_TRI6 ? 3 : 4;
+    for (PetscInt a = 0; a < nn; ++a) side[9 * m + a] = PETSC_FALSE;
+    for (PetscInt k = 0; k < nc; ++k) {
+      if (!Segment3dBorderEdge(nm, master, m, k, (k + 1) % nc)) continue;
+      for (PetscInt a = 0; a < nn; ++a)
+        if (Segment3dOnSide(F->type, a, k)) side[9 * m + a] = PETSC_TRUE;
+    }
+  }
+  for (PetscInt m = 0; m < nm; ++m)
+    for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a) {
+      const PetscReal *y = &master[m].x[3 * a];
+      PetscReal       *d = &dir[27 * m + 3 * a], len;
+      d[0] = d[1] = d[2] = 0.0;
+      border[9 * m + a] = PETSC_FALSE;
+      size[9 * m + a]   = 0.0;
+      for (PetscInt k = 0; k < nm; ++k)
+        for (PetscInt i = 0; i < Face3dNodes(master[k].type); ++i) {
+          const PetscReal *z = &master[k].x[3 * i];
+          PetscReal        xi[2], X[3], T[6], n[3];
+          if (z[0] != y[0] || z[1] != y[1] || z[2] != y[2]) continue;
+          if (side[9 * k + i]) border[9 * m + a] = PETSC_TRUE;
+          size[9 * m + a] = PetscMax(size[9 * m + a], Segment3dFaceSize(&master[k]));
+          Face3dNodeXi(master[k].type, i, xi);
+          Face3dEval(master[k].type, master[k].x, xi, X, T, NULL);
+          (void)Face3dNormal(T, n);
+          for (PetscInt c = 0; c < 3; ++c) d[c] += n[c];
+        }
+      len = PetscSqrtReal(Dot3(d, d));
+      for (PetscInt c = 0; c < 3; ++c) d[c] = len > 0 ? d[c] / len : 0.0;
+    }
+}
+
+/* Where the line y + t d meets the curved slave face S (its polynomial,
+   extended): the slave parameters xi, by Newton on x_S(xi) - y - t d = 0
+   from S's centre, and the weight (returned) the hit is taken with against
+   the projection on a sub-triangle's plane: 1 within half the face's size
+   of its domain, 0 beyond the whole size or where Newton does not converge,
+   a smooth step between (far out the extended polynomial is not the
+   surface, and may fold). */
+static PetscReal Segment3dSlaveHit(const Face3d *S, const PetscReal y[3], const PetscReal d[3], PetscReal xi[2])
+{
+  const PetscBool tri = (PetscBool)(S->type == FACE3D_TRI6);
+  PetscReal       t = 0.0, out;
+
+  xi[0] = xi[1] = tri ? 1.0 / 3.0 : 0.0;
+  for (PetscInt it = 0;; ++it) {
+    PetscReal X[3], T[6], F[3], c[3], det, dx[3];
+    if (it == SEGMENT3D_HIT_ITS) return 0.0;
+    Face3dEval(S->type, S->x, xi, X, T, NULL);
+    for (PetscInt k = 0; k < 3; ++k) F[k] = X[k] - y[k] - t * d[k];
+    Cross3(&T[3], d, c); /* [t1 t2 -d] (dxi, dt) = -F by Cramer's rule, det = -t1 . (t2 x d) */
+    det = -Dot3(T, c);
+    if (!(PetscAbsReal(det) > 0)) return 0.0;
+    dx[0] = Dot3(F, c) / det;
+    Cross3(d, T, c);
+    dx[1] = Dot3(F, c) / det;
+    Cross3(T, &T[3], c);
+    dx[2] = -Dot3(F, c) / det;
+    xi[0] += dx[0];
+    xi[1] += dx[1];
+    t += dx[2];
+    if (!(PetscAbsReal(xi[0]) < 1e3 && PetscAbsReal(xi[1]) < 1e3)) return 0.0;
+    if (PetscAbsReal(dx[0]) + PetscAbsReal(dx[1]) < SEGMENT3D_HIT_TOL) break;
+  }
+  /* how far outside the domain, in its sides' lengths (Tri6 1, Quad9 2) */
+  out = tri ? PetscMax(PetscMax(-xi[0], -xi[1]), xi[0] + xi[1] - 1.0) : 0.5 * (PetscMax(PetscAbsReal(xi[0]), PetscAbsReal(xi[1])) - 1.0);
+  return SmoothStep(2.0 * (1.0 - out));
+}
+
 /* The integration points of the slave face against the nm master faces
    (current coordinates), the rule on the unit triangle (weights summing
    to 1/2) for each clipped piece; *pts allocated (PetscFree). With ends
@@ -459,12 +585,20 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   EndList         EL = {0, 0, NULL};
   PetscInt        ns, nsm;
   const PetscInt(*sub)[3], (*msub)[3];
-  PetscReal      *boxes;
+  PetscReal      *boxes, *dir, *hxi, *hw, *size, ssize;
+  PetscBool      *border;
 
   PetscFunctionBeginUser;
   PetscCheck(nm <= SEGMENT3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: %d at most", nm, SEGMENT3D_MAX_MASTER);
-  PetscCall(PetscMalloc1(6 * nm + 1, &boxes));
+  PetscCall(PetscMalloc6(6 * nm + 1, &boxes, 27 * nm + 1, &dir, 18 * nm + 1, &hxi, 9 * nm + 1, &hw, 18 * nm + 1, &border, 9 * nm + 1, &size));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
+  ssize = Segment3dFaceSize(slave);
+  Segment3dNodeDirections(nm, master, &border[9 * nm], border, dir, size);
+  for (PetscInt m = 0; m < nm; ++m)
+    for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a) {
+      const PetscReal *d = &dir[27 * m + 3 * a];
+      hw[9 * m + a]      = border[9 * m + a] || (d[0] == 0 && d[1] == 0 && d[2] == 0) ? 0.0 : Segment3dSlaveHit(slave, &master[m].x[3 * a], d, &hxi[18 * m + 2 * a]) * SmoothStep((SEGMENT3D_HIT_COARSE - size[9 * m + a] / ssize) / (SEGMENT3D_HIT_COARSE - 1.0));
+    }
   Face3dSubTriangles(slave->type, &ns, &sub);
   for (PetscInt t = 0; t < ns; ++t) {
     SubPlane P;
@@ -480,12 +614,22 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         }
         Cross3(a, b, nu);
         if (Dot3(nu, &P.e[6]) >= 0) continue; /* not facing the slave */
-        for (PetscInt k = 0; k < 3; ++k) {
-          PetscReal r[3];
-          for (PetscInt d = 0; d < 3; ++d) r[d] = master[m].x[3 * msub[u][k] + d] - P.o[d];
+        for (PetscInt k = 0; k < 3; ++k) { /* where the node's line meets the slave, or along the line (Segment3dNodeDirections), or T's normal */
+          const PetscInt   a = msub[u][k];
+          const PetscReal *dv = &dir[27 * m + 3 * a], dn = Dot3(dv, &P.e[6]);
+          PetscReal        r[3], l[2], w = hw[9 * m + a];
+          for (PetscInt d = 0; d < 3; ++d) r[d] = master[m].x[3 * a + d] - P.o[d];
+          if (!border[9 * m + a] && dn < -SEGMENT3D_DIR_COS) {
+            const PetscReal t = Dot3(r, &P.e[6]) / dn;
+            for (PetscInt d = 0; d < 3; ++d) r[d] -= t * dv[d];
+          }
           mt2d[2 * k]     = Dot3(r, &P.e[0]);
           mt2d[2 * k + 1] = Dot3(r, &P.e[3]);
-          Face3dNodeXi(master[m].type, msub[u][k], &meta[2 * k]);
+          if (!border[9 * m + a] && w > 0) {
+            Barycentric(P.xi, &hxi[18 * m + 2 * a], l);
+            for (PetscInt c = 0; c < 2; ++c) mt2d[2 * k + c] = w * (P.v2d[c] + l[0] * (P.v2d[2 + c] - P.v2d[c]) + l[1] * (P.v2d[4 + c] - P.v2d[c])) + (1.0 - w) * mt2d[2 * k + c];
+          }
+          Face3dNodeXi(master[m].type, a, &meta[2 * k]);
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
@@ -544,7 +688,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
       }
     }
   }
-  PetscCall(PetscFree(boxes));
+  PetscCall(PetscFree6(boxes, dir, hxi, hw, border, size));
   *np  = L.n;
   *pts = L.p;
   if (ends) {
