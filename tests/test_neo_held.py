@@ -139,7 +139,10 @@ def test_two_ranks(kind, coarse, tmp_path):
     way, by an angle the path decides, and the last bits of a 2-rank
     factorisation can send it to another of the discretisation's
     equilibria (measured: B_x - A_x 0.076 in most runs, -0.149 in about 1
-    of 12 on 2 ranks, with P 5.2e-4 lower, the anchors' reactions 1e-14).
+    of 12 on 2 ranks, with P 5.2e-4 lower, the anchors' reactions 1e-14;
+    the two runs' difference in B_x - A_x, `rotation` = up to 0.23: 0 for
+    the half disc, round-off for the disc where both end alike, 0.225 where
+    one turns, and then `dP_turned` = 5.2e-4).
     Each such equilibrium is the discretisation's answer at h = 0.2, so two
     of them differ by at most twice its error; that error is estimated by
     the half disc (its rotation held by the symmetry) at h = 0.2 against h =
