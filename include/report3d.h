@@ -26,6 +26,9 @@ typedef struct {
   PetscReal Q;                       /* the tangential load |shear| */
   PetscReal stickArea, stickRadius;  /* the stuck nodes' A_j summed, sqrt(stickArea / pi) */
   PetscReal mindlinC;                /* Mindlin's stick radius aMoment (1 - Q/(mu N))^(1/3), 0 at Q >= mu N */
+  PetscInt  ncut;                    /* planes not declared symmetric that cut the zone where both surfaces end (ContactReport3dCuts) */
+  PetscInt  cutAxis[3];
+  PetscReal cutValue[3], cutP[3];    /* the plane x_axis = value; the largest pressure on it over p_max */
 } ContactReport3d;
 
 /* From the slave's n nodes (reference positions X[3n], pressures p[n] >= 0,
@@ -33,6 +36,14 @@ typedef struct {
    friction (shear not NULL) the friction's part of F, so that r is
    measured from the normal load's axis and Hertz takes the normal load. */
 void           ContactReport3dCompute(const ContactPairSpec *, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscReal A[], const PetscReal F[3], const PetscReal shear[], ContactReport3d *);
+/* After ContactReport3dCompute: the coordinate planes along the normal
+   load, not declared by -contact_<pair>_symmetry, on which the zone ends
+   at nodes of the slave's border (sbnd[n]) carrying at least half p_max
+   and on which nodes of the master's border lie (Xb[3 nb], reference),
+   the zone's other side along that axis not so: a part of a symmetric
+   model, cut through its zone, whose report would be the part's
+   (ContactReport3dView names the option). */
+void           ContactReport3dCuts(const ContactPairSpec *, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscBool sbnd[], PetscInt nb, const PetscReal Xb[], ContactReport3d *);
 PetscErrorCode ContactReport3dView(const ContactReport3d *, const ContactPairSpec *, MPI_Comm);
 /* With friction, after ContactReport3dCompute: the coefficient and the
    part's stuck area, giving the whole model's stick radius and Mindlin's. */

@@ -208,10 +208,15 @@ def test_hertz_quarter(tmp_path):
     pieces' rule integrates W_j over a node's faces, C_j, to 3e-4 of the
     faces' own rule's A_j at worst, and the block's top tilts under the
     load; bound 1e-5). At h = 0.025 (docs/formulations.md) the errors are
-    -0.95 % and +0.52 %."""
+    -0.95 % and +0.52 %. The scene declares no symmetry plane: the report
+    notes that x = 0 and y = 0 cut the zone where both surfaces end, and
+    names -contact_c_symmetry x=0,y=0 (report3d.c)."""
     import math
-    s = run_contact(hertz_args(0.04), tmp_path).summary
+    r = run_contact(hertz_args(0.04), tmp_path)
+    s = r.summary
     c = s["contact"]["c"]
+    note = next(line for line in r.stdout.splitlines() if "note: the zone is cut" in line)  # no symmetry declared
+    assert "the planes x = 0 (up to 1.00 p_max on it), y = 0" in note and "-contact_c_symmetry x=0,y=0" in note
     assert c["surfaces"][0]["slave"]
     P = 4 * c["force"][2]
     a, p0 = hertz.sphere(P, hertz.plane_strain_modulus(E_BALL, NU, E_BASE, NU))

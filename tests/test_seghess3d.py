@@ -144,8 +144,9 @@ def test_whole_ball_level(tmp_path):
     remainder fell to 5.2e-10: the Hessian is exact for fixed segments, and
     what is left (following the master's deformation: 7.2e-12 with the
     block 100 times stiffer) is the segments' own motion."""
-    whole = run_contact(whole_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-output", "none"],
-                        tmp_path, name="whole").summary["taylor"]
+    run = run_contact(whole_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6", "-output", "none"], tmp_path, name="whole")
+    assert "note: the zone is cut" not in run.stdout  # no plane cuts the whole ball's zone (report3d.c)
+    whole = run.summary["taylor"]
     quarter = run_contact(hertz_args(0.04) + ["-taylor_test", "-taylor_scale", "1e-6"],
                           tmp_path, name="quarter").summary["taylor"]
     assert 1.9 <= whole["gradient_order"] <= 2.1

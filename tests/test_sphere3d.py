@@ -195,6 +195,23 @@ def test_accuracy_refused(tmp_path):
     assert "option -accuracy" in line and "body ball is 3D" in line
 
 
+def test_cut_noted(tmp_path):
+    """A part of a symmetric model with a symmetry plane left undeclared:
+    the report's note names the plane that cuts the zone where both
+    surfaces end (its nodes there carrying p_max) and the option that
+    reports the whole model, with the plane declared added to it; with both
+    declared, no note (the whole ball, no plane: test_seghess3d.py's
+    test_whole_ball_level; none declared: test_contact3d.py's
+    test_hertz_quarter)."""
+    coarse = SCENE + ["-mesh_size", 0.05, "-output", "none"]
+    one = run_contact(coarse + ["-contact_ball_symmetry", "x=0"], tmp_path, name="one")
+    notes = [line for line in one.stdout.splitlines() if "note: the zone is cut" in line]
+    assert len(notes) == 1 and "by the plane y = 0 (up to 1.00 p_max on it)" in notes[0]
+    assert "-contact_ball_symmetry x=0,y=0 reports the whole model" in notes[0]
+    both = run_contact(coarse, tmp_path, name="both")
+    assert both.returncode == 0 and "note: the zone is cut" not in both.stdout
+
+
 def test_symmetry_refused(tmp_path):
     """A bad -contact_<pair>_symmetry (not axis=value, an axis twice) and
     the option on a 2D pair (the sphere's r-z section; a 2D half model has

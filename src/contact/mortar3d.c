@@ -1270,6 +1270,22 @@ static PetscErrorCode Mortar3dReport(Mortar3d *m)
   PetscCall(PetscMalloc1(S->nn + 1, &p));
   for (PetscInt j = 0; j < S->nn; ++j) p[j] = m->active[j] && m->gj[j] < 0 ? -m->kp * m->gj[j] : 0.0;
   ContactReport3dCompute(&m->spec, S->nn, S->X, p, m->A, m->force[0], m->fr ? m->shearForce : NULL, &m->report);
+  {
+    const ContactSurface3d *M = &m->S[1 - m->s];
+    PetscBool              *bnd[2];
+    PetscReal              *Xb;
+    PetscInt                nb = 0;
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dBorderNodes(&m->S[k], &bnd[k]));
+    PetscCall(PetscMalloc1(3 * M->nn + 1, &Xb));
+    for (PetscInt j = 0; j < M->nn; ++j)
+      if (bnd[1 - m->s][j]) {
+        for (PetscInt d = 0; d < 3; ++d) Xb[3 * nb + d] = M->X[3 * j + d];
+        nb++;
+      }
+    ContactReport3dCuts(&m->spec, S->nn, S->X, p, bnd[m->s], nb, Xb, &m->report);
+    PetscCall(PetscFree(Xb));
+    for (PetscInt k = 0; k < 2; ++k) PetscCall(PetscFree(bnd[k]));
+  }
   PetscCall(PetscFree(p));
   PetscFunctionReturn(0);
 }

@@ -50,7 +50,16 @@
    Hertz's a. The stuck nodes' area, times share, gives the stick radius
    c = sqrt(stick area / pi) (a disc of that area, as a_area is), beside
    Mindlin's c = a (1 - Q/(mu N))^(1/3) of a sphere with the computed a
-   (the second moment's); 0 at Q >= mu N (full sliding). */
+   (the second moment's); 0 at Q >= mu N (full sliding).
+
+   A part of a symmetric model whose plane is not declared reports the
+   part's figures: ContactReport3dCuts finds a coordinate plane along the
+   load (not declared) on which the zone ends at nodes of the slave's
+   border carrying half p_max or more, and on which nodes of the master's
+   border lie (both surfaces end there: a punch's edge on a larger block
+   is not such a plane), the zone's other side along that axis not so (a
+   patch test's blocks end flush on both), and the report names it and
+   the option. */
 #include "report3d.h"
 #include "contactreport.h"
 #include "face3d.h"
@@ -181,6 +190,43 @@ void ContactReport3dCompute(const ContactPairSpec *spec, PetscInt n, const Petsc
   R->l2err = nrm > 0 ? PetscSqrtReal(err / nrm) : (PetscReal)NAN;
 }
 
+/* Nodes within this fraction of the zone's extent of a plane lie on it. */
+#define REPORT3D_CUT_TOL 1e-8
+
+void ContactReport3dCuts(const ContactPairSpec *spec, PetscInt n, const PetscReal X[], const PetscReal p[], const PetscBool sbnd[], PetscInt nb, const PetscReal Xb[], ContactReport3d *R)
+{
+  R->ncut = 0;
+  if (!(R->pmax > 0)) return;
+  for (PetscInt k = 0; k < 3; ++k) {
+    PetscReal lo = PETSC_MAX_REAL, hi = -PETSC_MAX_REAL, tol, pv[2] = {0.0, 0.0};
+    PetscBool declared = PETSC_FALSE, cut[2];
+    for (PetscInt s = 0; s < spec->nsym; ++s) declared = (PetscBool)(declared || spec->symAxis[s] == k);
+    if (declared || PetscAbsReal(R->normal[k]) > 0.5) continue;
+    for (PetscInt j = 0; j < n; ++j)
+      if (p[j] > 0) {
+        lo = PetscMin(lo, X[3 * j + k]);
+        hi = PetscMax(hi, X[3 * j + k]);
+      }
+    if (!(hi > lo)) continue;
+    tol = REPORT3D_CUT_TOL * (hi - lo);
+    for (PetscInt e = 0; e < 2; ++e) {
+      const PetscReal v  = e ? hi : lo;
+      PetscInt        ns = 0, nm = 0;
+      for (PetscInt j = 0; j < n; ++j)
+        if (p[j] > 0 && sbnd[j] && PetscAbsReal(X[3 * j + k] - v) <= tol) {
+          ns++;
+          pv[e] = PetscMax(pv[e], p[j]);
+        }
+      for (PetscInt j = 0; j < nb; ++j) nm += PetscAbsReal(Xb[3 * j + k] - v) <= tol;
+      cut[e] = (PetscBool)(ns >= 2 && nm >= 2 && pv[e] >= 0.5 * R->pmax);
+    }
+    if (cut[0] == cut[1]) continue; /* a zone the surfaces' ends bound on both sides (a patch test's blocks end flush) is not a half */
+    R->cutAxis[R->ncut]  = k;
+    R->cutValue[R->ncut] = cut[0] ? (PetscAbsReal(lo) <= tol ? 0.0 : lo) : (PetscAbsReal(hi) <= tol ? 0.0 : hi); /* a plane through the origin, not its round-off */
+    R->cutP[R->ncut++]   = pv[cut[0] ? 0 : 1] / R->pmax;
+  }
+}
+
 void ContactReport3dFriction(PetscReal mu, PetscReal stickArea, ContactReport3d *R)
 {
   R->mu          = mu;
@@ -245,6 +291,16 @@ PetscErrorCode ContactReport3dView(const ContactReport3d *R, const ContactPairSp
     PetscCall(PetscPrintf(comm, "  the whole model (symmetric about %s: %d times this part): force (%.6g, %.6g, %.6g), P = %.6g, contact area %.6g\n", planes, (int)R->share, (double)F[0], (double)F[1], (double)F[2], (double)R->P, (double)R->area));
   }
   PetscCall(PetscPrintf(comm, "  contact radius a = %.6g from the contact area (sqrt(area/pi)), %.6g from the pressure's second moment (sum p A r^2 / sum p A = 2 a^2/5, reference positions, centre (%.4g, %.4g, %.4g)); p_max = %.6g\n", (double)R->aArea, (double)R->aMoment, (double)R->centre[0], (double)R->centre[1], (double)R->centre[2], (double)R->pmax));
+  if (R->ncut) {
+    char   planes[96], opt[64];
+    size_t k = 0, o = 0;
+    for (PetscInt c = 0; c < spec->nsym; ++c) o += (size_t)snprintf(opt + o, sizeof(opt) - o, "%c=%g,", "xyz"[spec->symAxis[c]], (double)spec->symValue[c]);
+    for (PetscInt c = 0; c < R->ncut; ++c) {
+      k += (size_t)snprintf(planes + k, sizeof(planes) - k, "%s%c = %g (up to %.2f p_max on it)", c ? ", " : "", "xyz"[R->cutAxis[c]], (double)R->cutValue[c], (double)R->cutP[c]);
+      o += (size_t)snprintf(opt + o, sizeof(opt) - o, "%s%c=%g", c ? "," : "", "xyz"[R->cutAxis[c]], (double)R->cutValue[c]);
+    }
+    PetscCall(PetscPrintf(comm, "  note: the zone is cut by the plane%s %s, where both surfaces end: if the scene is a part of a symmetric model, -contact_%s_symmetry %s reports the whole model (its load, contact radius and Hertz's figures), which the part's above are not\n", R->ncut > 1 ? "s" : "", planes, spec->name, opt));
+  }
   if (R->axes[0] > REPORT3D_ELONGATED * R->axes[1]) {
     const PetscReal *d = R->axisDir[0], *e = R->axisDir[1];
     PetscCall(PetscPrintf(comm, "  the zone is not a disc: half-axes %.6g along (%.3g, %.3g, %.3g) and %.6g along (%.3g, %.3g, %.3g) (sqrt(5 sum p A x_i^2 / sum p A), Hertz's ellipse; a line contact's half-width is %.6g, 2 sqrt(sum p A x^2 / sum p A)), so a disc's radius above is not its size\n", (double)R->axes[0], (double)d[0], (double)d[1], (double)d[2],
