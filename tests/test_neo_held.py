@@ -142,7 +142,7 @@ def test_two_ranks(kind, coarse, tmp_path):
     of 12 on 2 ranks, with P 5.2e-4 lower, the anchors' reactions 1e-14;
     the two runs' difference in B_x - A_x, `rotation` = up to 0.23: 0 for
     the half disc, round-off for the disc where both end alike, 0.225 where
-    one turns, and then `dP_turned` = 5.2e-4).
+    one turns, P then 5.2e-4 apart, recorded as dP_turned).
     Each such equilibrium is the discretisation's answer at h = 0.2, so two
     of them differ by at most twice its error; that error is estimated by
     the half disc (its rotation held by the symmetry) at h = 0.2 against h =
