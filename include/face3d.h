@@ -41,6 +41,8 @@ PetscBool Face3dClosestPoint(Face3dType, const PetscReal[], const PetscReal[3], 
 void      Face3dClosestBoundaryPoint(Face3dType, const PetscReal[], const PetscReal[3], PetscReal[2]);
 void      Face3dClosestPointOnFace(Face3dType, const PetscReal[], const PetscReal[3], PetscReal, PetscReal[2], PetscBool *);
 void      Face3dBox(Face3dType, const PetscReal[], PetscReal[6]);
+/* The face's size: its longest side, corner to corner. */
+PetscReal Face3dSize(Face3dType, const PetscReal[]);
 void      Face3dSubTriangles(Face3dType, PetscInt *, const PetscInt (**)[3]);
 
 PetscErrorCode Face3dRuleCreate(Face3dType, PetscInt, Face3dRule *);

@@ -22,8 +22,8 @@ typedef struct {
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
 #define SEGMENT3D_DIR_COS 0.5 /* a master node's own direction where it meets the slave's sub-triangle within 60 degrees, else the sub-triangle's normal */
 #define SEGMENT3D_HIT_ITS 30   /* Newton's iterations for a master node's line on the slave face, at most */
-#define SEGMENT3D_HIT_COARSE 2.0 /* a master node's line's hit is weighed out (1 to 0) as its faces' size goes from the slave face's to this many times it */
 #define SEGMENT3D_HIT_TOL 1e-12 /* ... and its step in the slave's parameters when converged */
+#define SEGMENT3D_HIT_COARSE 2.0 /* a master node's line's hit is weighed out (1 to 0) as its faces' size goes from the slave face's to this many times it */
 #define SEGMENT3D_END_TOL 1e-12    /* an end shorter than this (a fraction of the master edge) is dropped */
 #define SEGMENT3D_END_POINTS 5     /* Gauss points along an end (degree 9) */
 #define SEGMENT3D_ALONG 0.1        /* an end this near (of the edge's length) a slave border edge runs along it: no end term */

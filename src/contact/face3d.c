@@ -303,6 +303,19 @@ void Face3dClosestPointOnFace(Face3dType t, const PetscReal x[], const PetscReal
   *clamped = PETSC_TRUE;
 }
 
+PetscReal Face3dSize(Face3dType t, const PetscReal x[])
+{
+  const PetscInt nc = t == FACE3D_TRI6 ? 3 : 4;
+  PetscReal      h  = 0.0;
+
+  for (PetscInt j = 0; j < nc; ++j) {
+    PetscReal l = 0.0;
+    for (PetscInt d = 0; d < 3; ++d) l += PetscSqr(x[3 * j + d] - x[3 * ((j + 1) % nc) + d]);
+    h = PetscMax(h, l);
+  }
+  return PetscSqrtReal(h);
+}
+
 /* The box (lo[3], hi[3]) of the face's Bezier control points. */
 void Face3dBox(Face3dType t, const PetscReal x[], PetscReal box[6])
 {

@@ -147,20 +147,6 @@ static PetscErrorCode Mortar3dFrictionResults(Mortar3d *);
 static PetscErrorCode Mortar3dFrictionCreate(Mortar3d *, EnergyTerm);
 static PetscErrorCode Mortar3dWriteFrictionHDF5(const Mortar3d *, Body[], PetscViewer, MPI_Comm, PetscInt);
 
-/* A face's size: its longest chord between corners. */
-static PetscReal Mortar3dFaceSize(Face3dType t, const PetscReal x[])
-{
-  const PetscInt nc = t == FACE3D_TRI6 ? 3 : 4;
-  PetscReal      h  = 0.0;
-
-  for (PetscInt j = 0; j < nc; ++j) {
-    PetscReal l = 0.0;
-    for (PetscInt d = 0; d < 3; ++d) l += PetscSqr(x[3 * j + d] - x[3 * ((j + 1) % nc) + d]);
-    h = PetscMax(h, l);
-  }
-  return PetscSqrtReal(h);
-}
-
 /* Face f's coordinates xs from c and its box widened on every side by
    factor times the face's size. */
 static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscReal c[], PetscReal factor, PetscReal xs[], PetscReal box[6])
@@ -169,7 +155,7 @@ static void Mortar3dWideBox(const ContactSurface3d *S, PetscInt f, const PetscRe
 
   ContactSurface3dFaceCoords(S, f, c, xs);
   Face3dBox(S->type, xs, box);
-  margin = factor * Mortar3dFaceSize(S->type, xs);
+  margin = factor * Face3dSize(S->type, xs);
   for (PetscInt d = 0; d < 3; ++d) {
     box[d] -= margin;
     box[3 + d] += margin;
@@ -1688,7 +1674,7 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
     PetscReal xf[27];
     ContactSurface3dFaceCoords(M, f, M->X, xf);
     Face3dBox(M->type, xf, &boxes[6 * f]);
-    msize[f] = Mortar3dFaceSize(M->type, xf);
+    msize[f] = Face3dSize(M->type, xf);
   }
   PetscCall(BvhCreate(M->nf, boxes, &tree));
   cap = 16 * S->nf + 1;
@@ -1701,7 +1687,7 @@ static PetscErrorCode Mortar3dGetPattern(EnergyTerm t, PetscInt *nrows, PetscInt
     PetscInt        nfound, nkept = 0;
     Mortar3dWideBox(S, f, S->X, m->patternMargin, xs, box);
     Face3dBox(S->type, xs, sbox);
-    hs = Mortar3dFaceSize(S->type, xs);
+    hs = Face3dSize(S->type, xs);
     PetscCall(BvhQuery(tree, box, &nfound, &found));
     if (nearStart[f] + nfound > cap) {
       cap = 2 * (nearStart[f] + nfound);

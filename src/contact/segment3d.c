@@ -472,19 +472,6 @@ static PetscErrorCode Segment3dSubEnds(Face3dType stype, PetscInt slaveBorder, P
   PetscFunctionReturn(0);
 }
 
-/* A face's longest side, corner to corner. */
-static PetscReal Segment3dFaceSize(const Face3d *F)
-{
-  const PetscInt nc = F->type == FACE3D_TRI6 ? 3 : 4;
-  PetscReal      size = 0.0;
-
-  for (PetscInt k = 0; k < nc; ++k) {
-    const PetscReal *a = &F->x[3 * k], *b = &F->x[3 * ((k + 1) % nc)];
-    size = PetscMax(size, PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]) + PetscSqr(b[2] - a[2])));
-  }
-  return size;
-}
-
 /* The directions the master faces' nodes inside the master surface are
    projected along (dir[27 m + 3 a], node a of face m): the mean of
    the unit normals there of the faces given that hold the node (the same
@@ -502,10 +489,19 @@ static PetscReal Segment3dFaceSize(const Face3d *F)
    projected sub-triangles still tile. */
 static void Segment3dNodeDirections(PetscInt nm, const Face3d master[], PetscBool side[], PetscBool border[], PetscReal dir[], PetscReal size[])
 {
-  for (PetscInt m = 0; m < nm; ++m) { /* the nodes on a side of their face on the border */
+  PetscReal nrm[27 * SEGMENT3D_MAX_MASTER], fsize[SEGMENT3D_MAX_MASTER];
+
+  for (PetscInt m = 0; m < nm; ++m) { /* each face's size, its unit normal at its nodes, and its nodes on a side of it on the border */
     const Face3d  *F  = &master[m];
     const PetscInt nn = Face3dNodes(F->type), nc = F->type == FACE3D_TRI6 ? 3 : 4;
-    for (PetscInt a = 0; a < nn; ++a) side[9 * m + a] = PETSC_FALSE;
+    fsize[m] = Face3dSize(F->type, F->x);
+    for (PetscInt a = 0; a < nn; ++a) {
+      PetscReal xi[2], X[3], T[6];
+      Face3dNodeXi(F->type, a, xi);
+      Face3dEval(F->type, F->x, xi, X, T, NULL);
+      (void)Face3dNormal(T, &nrm[27 * m + 3 * a]);
+      side[9 * m + a] = PETSC_FALSE;
+    }
     for (PetscInt k = 0; k < nc; ++k) {
       if (!Segment3dBorderEdge(nm, master, m, k, (k + 1) % nc)) continue;
       for (PetscInt a = 0; a < nn; ++a)
@@ -522,14 +518,10 @@ static void Segment3dNodeDirections(PetscInt nm, const Face3d master[], PetscBoo
       for (PetscInt k = 0; k < nm; ++k)
         for (PetscInt i = 0; i < Face3dNodes(master[k].type); ++i) {
           const PetscReal *z = &master[k].x[3 * i];
-          PetscReal        xi[2], X[3], T[6], n[3];
           if (z[0] != y[0] || z[1] != y[1] || z[2] != y[2]) continue;
           if (side[9 * k + i]) border[9 * m + a] = PETSC_TRUE;
-          size[9 * m + a] = PetscMax(size[9 * m + a], Segment3dFaceSize(&master[k]));
-          Face3dNodeXi(master[k].type, i, xi);
-          Face3dEval(master[k].type, master[k].x, xi, X, T, NULL);
-          (void)Face3dNormal(T, n);
-          for (PetscInt c = 0; c < 3; ++c) d[c] += n[c];
+          size[9 * m + a] = PetscMax(size[9 * m + a], fsize[k]);
+          for (PetscInt c = 0; c < 3; ++c) d[c] += nrm[27 * k + 3 * i + c];
         }
       len = PetscSqrtReal(Dot3(d, d));
       for (PetscInt c = 0; c < 3; ++c) d[c] = len > 0 ? d[c] / len : 0.0;
@@ -592,7 +584,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PetscCheck(nm <= SEGMENT3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: %d at most", nm, SEGMENT3D_MAX_MASTER);
   PetscCall(PetscMalloc6(6 * nm + 1, &boxes, 27 * nm + 1, &dir, 18 * nm + 1, &hxi, 9 * nm + 1, &hw, 18 * nm + 1, &border, 9 * nm + 1, &size));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
-  ssize = Segment3dFaceSize(slave);
+  ssize = Face3dSize(slave->type, slave->x);
   Segment3dNodeDirections(nm, master, &border[9 * nm], border, dir, size);
   for (PetscInt m = 0; m < nm; ++m)
     for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a) {
@@ -625,7 +617,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
           }
           mt2d[2 * k]     = Dot3(r, &P.e[0]);
           mt2d[2 * k + 1] = Dot3(r, &P.e[3]);
-          if (!border[9 * m + a] && w > 0) {
+          if (w > 0) { /* 0 on the border */
             Barycentric(P.xi, &hxi[18 * m + 2 * a], l);
             for (PetscInt c = 0; c < 2; ++c) mt2d[2 * k + c] = w * (P.v2d[c] + l[0] * (P.v2d[2 + c] - P.v2d[c]) + l[1] * (P.v2d[4 + c] - P.v2d[c])) + (1.0 - w) * mt2d[2 * k + c];
           }
