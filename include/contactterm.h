@@ -54,4 +54,4 @@ PetscErrorCode ContactTermCreate_Mortar(const ContactPairSpec *, EnergyTerm);
 /* -help: lists mortar's options (-contact_mortar_slave, -contact_mortar_basis)
    with their defaults whatever the scene's formulations (listed once). */
 PetscErrorCode ContactMortarOptionsHelp(MPI_Comm);
-PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm, PetscReal *);
+PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm, PetscReal *, PetscInt *);

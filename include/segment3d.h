@@ -19,6 +19,7 @@ typedef struct {
 } Segment3dPoint;
 
 #define SEGMENT3D_MAX_MASTER 64 /* master faces against one slave face, at most */
+#define SEGMENT3D_MAX_EDGE_POINTS 8 /* points along a master edge bending the pieces' borders (-contact_mortar_edge_points), at most */
 #define SEGMENT3D_IN_TOL 1e-10 /* the in/out test's tolerance in the master's parameters */
 #define SEGMENT3D_DIR_COS 0.5 /* a master node's own direction where it meets the slave's sub-triangle within 60 degrees, else the sub-triangle's normal */
 #define SEGMENT3D_HIT_ITS 30   /* Newton's iterations for a master node's line on the slave face, at most */
@@ -41,7 +42,7 @@ typedef struct {
   PetscReal s0, s1;
 } Segment3dEnd;
 
-PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
+PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
 void           Segment3dPointClosest(const Segment3dPoint *, const Face3d *, const PetscReal[3], PetscReal[2], PetscBool *);
 PetscErrorCode Segment3dEndEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dEnd[], PetscReal[]);

@@ -105,7 +105,9 @@ def test_taylor(scene, tmp_path):
     small enough (-taylor_scale 1e-6) that no node enters or leaves the
     contact: the gradient's order 2.000 too, the Hessian's remainder falls
     to `hessian_remainder` = 2.4e-9 of |H v| and levels there (the
-    segments' own motion, not differentiated, test_seghess3d.py; the whole
+    pieces' borders straight between the master's nodes, where the gap's
+    gradient jumps along a curve: with -contact_mortar_edge_points 3 it
+    falls at order 2 to round-off, test_seghess3d.py; the whole
     ball's 1.55e-9; 8.0e-9 while the master's nodes were projected along
     the slave sub-triangles' normals, 2.9e-6 before the symmetry planes'
     slivers were closed; Gauss-Newton alone 3.8e-6); bound 7.5e-9."""

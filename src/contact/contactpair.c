@@ -224,8 +224,9 @@ PetscErrorCode ContactPairsCreateFromOptions(MPI_Comm comm, PetscInt nbodies, Bo
   }
   if (help) { /* listed once, whether or not a pair is mortar, 2D or 3D */
     PetscReal margin;
+    PetscInt  edgePoints;
     PetscCall(ContactMortarOptionsHelp(comm));
-    PetscCall(ContactMortar3dOptionsRead(comm, &margin));
+    PetscCall(ContactMortar3dOptionsRead(comm, &margin, &edgePoints));
   }
   PetscFunctionReturn(0);
 }

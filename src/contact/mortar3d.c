@@ -113,6 +113,7 @@ typedef struct {
   PetscReal        kp;           /* the penalty in use (continuation) */
   PetscBool        exactHessian; /* asked for: the Hessian stays Gauss-Newton (above) */
   PetscReal        patternMargin; /* -contact_mortar_pattern_margin (Mortar3dGetPattern) */
+  PetscInt         edgePoints;    /* -contact_mortar_edge_points (segment3d.c) */
   Face3dRule       rule, frule;  /* the clipped pieces' rule; the slave faces' own (dual coefficients, A_j) */
   PetscReal       *Adual;        /* [slave nf][81] the dual weights' coefficients */
   PetscReal       *A, *C, *Q, *gj; /* [slave nn] */
@@ -408,7 +409,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
   if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
   if (keep) {
@@ -1172,14 +1173,17 @@ static PetscErrorCode Mortar3dSetUpSlave(Mortar3d *m)
 }
 
 /* The 3D pairs' own options (listed by -help whether or not a pair is 3D). */
-PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin)
+PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin, PetscInt *edgePoints)
 {
   PetscFunctionBeginUser;
-  *margin = 2.0;
+  *margin     = 2.0;
+  *edgePoints = 0;
   PetscOptionsBegin(comm, NULL, "3D mortar contact options", NULL);
   PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it (the smaller of the two faces'), at rest (the solve's sliding; beyond it the Hessian's preallocation is widened; negative: the faces' own boxes shrunk)", NULL, *margin, margin, NULL));
+  PetscCall(PetscOptionsInt("-contact_mortar_edge_points", "3D pairs: points along each master edge between two faces, projected onto the slave as its nodes are, so that the pieces' borders follow the edge's curved image, where the gap's gradient jumps (the Hessian's Taylor test then of order 2 to round-off on a stiff master; about 1.3 times the mortar's cost at 3); 0: straight between the nodes", NULL, *edgePoints, edgePoints, NULL));
   PetscOptionsEnd();
   PetscCheck(!PetscIsInfOrNanReal(*margin), comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number, got %g", (double)*margin);
+  PetscCheck(*edgePoints >= 0 && *edgePoints <= SEGMENT3D_MAX_EDGE_POINTS, comm, PETSC_ERR_USER_INPUT, "option -contact_mortar_edge_points: must be in [0, %d], got %" PetscInt_FMT, SEGMENT3D_MAX_EDGE_POINTS, *edgePoints);
   PetscFunctionReturn(0);
 }
 
@@ -1233,7 +1237,7 @@ static PetscErrorCode Mortar3dSetUp(EnergyTerm t, Body bodies[])
   PetscCheck(BodyHasCells(m->body[0]) || BodyHasCells(m->body[1]), t->comm, PETSC_ERR_USER_INPUT, "contact pair %s: bodies %s and %s are both rigid: a contact between them has no elastic side", m->spec.name, BodyGetName(m->body[0]), BodyGetName(m->body[1]));
   for (PetscInt k = 0; k < 2; ++k) PetscCall(ContactSurface3dSetUp(&m->S[k], m->body[k], m->spec.name));
   PetscCall(Mortar3dChooseSlave(m));
-  PetscCall(ContactMortar3dOptionsRead(t->comm, &m->patternMargin));
+  PetscCall(ContactMortar3dOptionsRead(t->comm, &m->patternMargin, &m->edgePoints));
   PetscCall(Face3dRuleCreate(FACE3D_TRI6, 2 * m->spec.nqp - 1 > 6 ? 2 * m->spec.nqp - 1 : 6, &m->rule)); /* the pieces': degree 7 at the default 4 points */
   PetscCall(Face3dRuleCreate(m->S[m->s].type, 10, &m->frule));
   PetscCall(PetscMalloc2(6 * m->S[1 - m->s].nf, &m->boxes, 27 * MORTAR3D_MAX_MASTER, &m->xm));

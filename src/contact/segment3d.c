@@ -34,8 +34,19 @@
    node's faces are larger than the slave face (to SEGMENT3D_HIT_COARSE
    times it): a coarse master's edge from a node on its hit to one far off
    on the plane would cross T askew. A node on the master's border goes
-   along n (the ends' term below and the strip take it so). A point p of
-   T's plane has barycentric
+   along n (the ends' term below and the strip take it so). Between the
+   nodes the projected edge is straight where the closest point's passage
+   from one face to the next is a curve: with nedge > 0
+   (-contact_mortar_edge_points) nedge points of each edge that two faces
+   given share go as the nodes do (along the two faces' mean unit normal
+   there, onto the curved slave: Segment3dEdgePoints) and bend the
+   sub-triangle's side, cut into a fan (Segment3dBentPieces); and where S'
+   has no end inside the slave face (Segment3dHasEnd: the master's border,
+   if any, runs along the slave's) the border nodes go along their lines
+   too. The gap's gradient, which jumps across that curve, is then
+   integrated on either side of it: the Hessian's Taylor remainder falls at
+   order 2 to round-off where the master is stiff (docs/formulations.md).
+   A point p of T's plane has barycentric
    coordinates (l1, l2) in T, the same in the slave's parameters since T's
    vertices are nodes and the map of T is affine in xi: xi = xi_0 + l1
    (xi_1 - xi_0) + l2 (xi_2 - xi_0). A piece's Gauss points (the rule
@@ -91,6 +102,8 @@
 #include "segment3d.h"
 #include <petscdt.h>
 #include "clip.h"
+
+static PetscReal Segment3dSlaveHit(const Face3d *, const PetscReal[3], const PetscReal[3], PetscReal[2]);
 
 static inline PetscReal Dot3(const PetscReal a[3], const PetscReal b[3])
 {
@@ -449,6 +462,120 @@ static PetscBool Segment3dAlongSlaveBorder(Face3dType stype, PetscInt slaveBorde
   return PETSC_TRUE;
 }
 
+/* The point of T's plane P a master vertex y goes to: along its direction
+   dv where that meets the plane within 60 degrees of its normal, else (and
+   on the master's border: along) along the normal; then blended, by the
+   hit's weight w, with the point of P whose barycentric coordinates in T
+   are the slave parameters hxi where the line y + t dv meets the curved
+   slave face. */
+static void Segment3dProjectVertex(const SubPlane *P, const PetscReal y[3], const PetscReal dv[3], PetscBool border, PetscReal w, const PetscReal hxi[2], PetscReal out[2])
+{
+  const PetscReal dn = Dot3(dv, &P->e[6]);
+  PetscReal       r[3], l[2];
+
+  for (PetscInt d = 0; d < 3; ++d) r[d] = y[d] - P->o[d];
+  if (!border && dn < -SEGMENT3D_DIR_COS) {
+    const PetscReal t = Dot3(r, &P->e[6]) / dn;
+    for (PetscInt d = 0; d < 3; ++d) r[d] -= t * dv[d];
+  }
+  out[0] = Dot3(r, &P->e[0]);
+  out[1] = Dot3(r, &P->e[3]);
+  if (w > 0) {
+    Barycentric(P->xi, hxi, l);
+    for (PetscInt c = 0; c < 2; ++c) out[c] = w * (P->v2d[c] + l[0] * (P->v2d[2 + c] - P->v2d[c]) + l[1] * (P->v2d[4 + c] - P->v2d[c])) + (1.0 - w) * out[c];
+  }
+}
+
+/* The other face given that holds master face m's nodes a and b (the same
+   coordinates): *k, and the two nodes' numbers *ia, *ib there; false if
+   none (the edge lies on the master surface's border). */
+static PetscBool Segment3dNeighbour(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt *k, PetscInt *ia, PetscInt *ib)
+{
+  const PetscReal *ya = &master[m].x[3 * a], *yb = &master[m].x[3 * b];
+
+  for (PetscInt f = 0; f < nm; ++f) {
+    PetscInt fa = -1, fb = -1;
+    if (f == m) continue;
+    for (PetscInt i = 0; i < Face3dNodes(master[f].type); ++i) {
+      const PetscReal *z = &master[f].x[3 * i];
+      if (z[0] == ya[0] && z[1] == ya[1] && z[2] == ya[2]) fa = i;
+      if (z[0] == yb[0] && z[1] == yb[1] && z[2] == yb[2]) fb = i;
+    }
+    if (fa >= 0 && fb >= 0) {
+      *k  = f;
+      *ia = fa;
+      *ib = fb;
+      return PETSC_TRUE;
+    }
+  }
+  return PETSC_FALSE;
+}
+
+/* The points of the edge between master faces m and k (nodes a -> b of m,
+   ia -> ib of k, a sub-triangle's side) at s = j/(nedge + 1), j = 1..nedge,
+   projected on P as the nodes are (along the mean of the two faces' unit
+   normals there, onto the curved slave), into out[2 nedge]. */
+static void Segment3dEdgePoints(const SubPlane *P, const Face3d *slave, PetscReal ssize, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt k, PetscInt ia, PetscInt ib, PetscInt nedge, PetscReal out[])
+{
+  const PetscReal sz = PetscMax(Face3dSize(master[m].type, master[m].x), Face3dSize(master[k].type, master[k].x));
+  PetscReal       ea[2], eb[2], fa[2], fb[2];
+
+  Face3dNodeXi(master[m].type, a, ea);
+  Face3dNodeXi(master[m].type, b, eb);
+  Face3dNodeXi(master[k].type, ia, fa);
+  Face3dNodeXi(master[k].type, ib, fb);
+  for (PetscInt j = 1; j <= nedge; ++j) {
+    const PetscReal s = j / (PetscReal)(nedge + 1);
+    PetscReal       eta[2], eta2[2], X[3], T[6], n1[3], n2[3], d[3], hx[2], len, w;
+    for (PetscInt c = 0; c < 2; ++c) {
+      eta[c]  = ea[c] + s * (eb[c] - ea[c]); /* a side is straight in a face's parameters, the same curve in both faces' */
+      eta2[c] = fa[c] + s * (fb[c] - fa[c]);
+    }
+    Face3dEval(master[k].type, master[k].x, eta2, X, T, NULL);
+    (void)Face3dNormal(T, n2);
+    Face3dEval(master[m].type, master[m].x, eta, X, T, NULL);
+    (void)Face3dNormal(T, n1);
+    for (PetscInt c = 0; c < 3; ++c) d[c] = n1[c] + n2[c];
+    len = PetscSqrtReal(Dot3(d, d));
+    for (PetscInt c = 0; c < 3; ++c) d[c] = len > 0 ? d[c] / len : 0.0;
+    w = len > 0 ? Segment3dSlaveHit(slave, X, d, hx) * SmoothStep((SEGMENT3D_HIT_COARSE - sz / ssize) / (SEGMENT3D_HIT_COARSE - 1.0)) : 0.0;
+    Segment3dProjectVertex(P, X, d, PETSC_FALSE, w, hx, &out[2 * (j - 1)]);
+  }
+}
+
+/* Whether S' ends inside the slave face: a side of a master face's
+   sub-triangle on the master surface's border, its nodes projected along
+   the slave sub-triangles' normals, crosses a sub-triangle and does not run
+   along the slave's border (as Segment3dSubEnds finds the ends). */
+static PetscErrorCode Segment3dHasEnd(const Face3d *slave, PetscInt slaveBorder, PetscInt nm, const Face3d master[], const PetscBool border[], PetscBool *hasEnd)
+{
+  PetscInt ns, nsm;
+  const PetscInt(*sub)[3], (*msub)[3];
+  const PetscReal zero[3] = {0, 0, 0}, nohit[2] = {0, 0};
+
+  PetscFunctionBeginUser;
+  *hasEnd = PETSC_FALSE;
+  Face3dSubTriangles(slave->type, &ns, &sub);
+  for (PetscInt t = 0; t < ns && !*hasEnd; ++t) {
+    SubPlane P;
+    SubPlaneSetUp(slave, sub[t], &P);
+    for (PetscInt m = 0; m < nm && !*hasEnd; ++m) {
+      Face3dSubTriangles(master[m].type, &nsm, &msub);
+      for (PetscInt u = 0; u < nsm && !*hasEnd; ++u)
+        for (PetscInt k = 0; k < 3 && !*hasEnd; ++k) {
+          const PetscInt a = msub[u][k], b = msub[u][(k + 1) % 3];
+          PetscReal      pa[2], pb[2], s0, s1;
+          if (!border[9 * m + a] || !border[9 * m + b] || !Segment3dBorderEdge(nm, master, m, a, b)) continue;
+          Segment3dProjectVertex(&P, &master[m].x[3 * a], zero, PETSC_TRUE, 0.0, nohit, pa);
+          Segment3dProjectVertex(&P, &master[m].x[3 * b], zero, PETSC_TRUE, 0.0, nohit, pb);
+          Segment3dSegmentInTriangle(P.v2d, pa, pb, &s0, &s1);
+          if (s1 - s0 > SEGMENT3D_END_TOL && !Segment3dAlongSlaveBorder(slave->type, slaveBorder, sub[t], &P, pa, pb, s0, s1)) *hasEnd = PETSC_TRUE;
+        }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The ends of S' on the slave plane P from master face m's sub-triangle u
    (mt2d its vertices in the plane, as given: either orientation). */
 static PetscErrorCode Segment3dSubEnds(Face3dType stype, PetscInt slaveBorder, PetscInt nm, const Face3d master[], PetscInt m, const PetscInt msub[3], const PetscInt tsub[3], const SubPlane *P, const PetscReal mt2d[6], EndList *L)
@@ -565,13 +692,64 @@ static PetscReal Segment3dSlaveHit(const Face3d *S, const PetscReal y[3], const 
   return SmoothStep(2.0 * (1.0 - out));
 }
 
+/* With nedge points along each master edge: master face m's sub-triangle
+   (msub, mt2d its vertices on P, meta their parameters) with its sides
+   that lie on an edge to another face given bent through those edges'
+   points projected as the nodes are (Segment3dEdgePoints), cut into a fan
+   (from the vertex across where one side bends, else from the centroid),
+   each triangle clipped by T and its points added; *bent: whether a side
+   bent (else the caller clips the straight sub-triangle). */
+static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P, PetscReal ssize, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, const PetscInt msub[3], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PetscInt nedge, PetscBool *bent, PointList *L)
+{
+  PetscReal poly[2 * 3 * (SEGMENT3D_MAX_EDGE_POINTS + 1)], apex[2];
+  PetscInt  n = 0, nbent = 0, first = -1, sideStart[3];
+
+  PetscFunctionBeginUser;
+  *bent = PETSC_FALSE;
+  for (PetscInt k = 0; k < 3; ++k) {
+    const PetscInt k1 = (k + 1) % 3;
+    PetscInt       mk, ia, ib;
+    sideStart[k]    = n;
+    poly[2 * n]     = mt2d[2 * k];
+    poly[2 * n + 1] = mt2d[2 * k + 1];
+    ++n;
+    if (Segment3dFaceSide(master[m].type, msub[k], msub[k1]) < 0 || !Segment3dNeighbour(nm, master, m, msub[k], msub[k1], &mk, &ia, &ib)) continue;
+    Segment3dEdgePoints(P, slave, ssize, master, m, msub[k], msub[k1], mk, ia, ib, nedge, &poly[2 * n]);
+    n += nedge;
+    if (first < 0) first = k;
+    ++nbent;
+  }
+  if (!nbent) PetscFunctionReturn(0);
+  *bent = PETSC_TRUE;
+  if (nbent == 1) { /* from the vertex across the bent side: its nedge + 1 triangles */
+    const PetscInt k2 = (first + 2) % 3;
+    apex[0] = mt2d[2 * k2];
+    apex[1] = mt2d[2 * k2 + 1];
+  } else {
+    apex[0] = (mt2d[0] + mt2d[2] + mt2d[4]) / 3.0;
+    apex[1] = (mt2d[1] + mt2d[3] + mt2d[5]) / 3.0;
+  }
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscInt  i1     = (i + 1) % n;
+    const PetscReal fan[6] = {apex[0], apex[1], poly[2 * i], poly[2 * i + 1], poly[2 * i1], poly[2 * i1 + 1]};
+    PetscReal       fpoly[2 * CLIP_MAX_VERTICES], ftri[6 * CLIP_MAX_VERTICES];
+    PetscInt        nfp, nft;
+    if (nbent == 1 && (i == sideStart[(first + 2) % 3] || i1 == sideStart[(first + 2) % 3])) continue; /* the sides at the apex */
+    PetscCall(ClipConvex(3, fan, 3, P->v2d, &nfp, fpoly));
+    if (nfp < 3) continue;
+    nft = ClipTriangulate(nfp, fpoly, 1e-14 * ClipSignedArea(3, P->v2d), ftri);
+    for (PetscInt q = 0; q < nft; ++q) PetscCall(Segment3dPiecePoints(slave, P, nm, master, boxes, m, &ftri[6 * q], mt2d, meta, rule, PETSC_FALSE, L));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The integration points of the slave face against the nm master faces
    (current coordinates), the rule on the unit triangle (weights summing
    to 1/2) for each clipped piece; *pts allocated (PetscFree). With ends
    (or NULL), the ends of S' inside the face (Segment3dEnd), *ends
    allocated (PetscFree); slaveBorder: a bit per node of the slave face on
    the slave surface's border (bit i: node i). */
-PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends)
+PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt nedge, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends)
 {
   PointList       L = {0, 0, NULL};
   EndList         EL = {0, 0, NULL};
@@ -582,6 +760,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
 
   PetscFunctionBeginUser;
   PetscCheck(nm <= SEGMENT3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: %d at most", nm, SEGMENT3D_MAX_MASTER);
+  PetscCheck(nedge >= 0 && nedge <= SEGMENT3D_MAX_EDGE_POINTS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " points along a master edge: 0 to %d", nedge, SEGMENT3D_MAX_EDGE_POINTS);
   PetscCall(PetscMalloc6(6 * nm + 1, &boxes, 27 * nm + 1, &dir, 18 * nm + 1, &hxi, 9 * nm + 1, &hw, 18 * nm + 1, &border, 9 * nm + 1, &size));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
   ssize = Face3dSize(slave->type, slave->x);
@@ -589,8 +768,18 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   for (PetscInt m = 0; m < nm; ++m)
     for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a) {
       const PetscReal *d = &dir[27 * m + 3 * a];
-      hw[9 * m + a]      = border[9 * m + a] || (d[0] == 0 && d[1] == 0 && d[2] == 0) ? 0.0 : Segment3dSlaveHit(slave, &master[m].x[3 * a], d, &hxi[18 * m + 2 * a]) * SmoothStep((SEGMENT3D_HIT_COARSE - size[9 * m + a] / ssize) / (SEGMENT3D_HIT_COARSE - 1.0));
+      hw[9 * m + a]      = (border[9 * m + a] && !nedge) || (d[0] == 0 && d[1] == 0 && d[2] == 0) ? 0.0 : Segment3dSlaveHit(slave, &master[m].x[3 * a], d, &hxi[18 * m + 2 * a]) * SmoothStep((SEGMENT3D_HIT_COARSE - size[9 * m + a] / ssize) / (SEGMENT3D_HIT_COARSE - 1.0));
     }
+  if (nedge) { /* with edge points, the border nodes too go along their lines where S' has no end inside the slave face (the master's border, if any, runs along the slave's: a symmetry plane) */
+    PetscBool hasEnd;
+    PetscCall(Segment3dHasEnd(slave, slaveBorder, nm, master, border, &hasEnd));
+    for (PetscInt m = 0; m < nm; ++m)
+      for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a)
+        if (border[9 * m + a]) {
+          if (hasEnd) hw[9 * m + a] = 0.0;
+          else border[9 * m + a] = PETSC_FALSE;
+        }
+  }
   Face3dSubTriangles(slave->type, &ns, &sub);
   for (PetscInt t = 0; t < ns; ++t) {
     SubPlane P;
@@ -600,6 +789,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
       for (PetscInt u = 0; u < nsm; ++u) {
         PetscReal a[3], b[3], nu[3], mt2d[6], meta[6], poly[2 * CLIP_MAX_VERTICES], tri[6 * CLIP_MAX_VERTICES];
         PetscInt  npoly, ntri, mnode[3] = {msub[u][0], msub[u][1], msub[u][2]}; /* mt2d's vertices' master nodes */
+        PetscBool bent = PETSC_FALSE;
         for (PetscInt d = 0; d < 3; ++d) {
           a[d] = master[m].x[3 * msub[u][1] + d] - master[m].x[3 * msub[u][0] + d];
           b[d] = master[m].x[3 * msub[u][2] + d] - master[m].x[3 * msub[u][0] + d];
@@ -607,24 +797,13 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         Cross3(a, b, nu);
         if (Dot3(nu, &P.e[6]) >= 0) continue; /* not facing the slave */
         for (PetscInt k = 0; k < 3; ++k) { /* where the node's line meets the slave, or along the line (Segment3dNodeDirections), or T's normal */
-          const PetscInt   a = msub[u][k];
-          const PetscReal *dv = &dir[27 * m + 3 * a], dn = Dot3(dv, &P.e[6]);
-          PetscReal        r[3], l[2], w = hw[9 * m + a];
-          for (PetscInt d = 0; d < 3; ++d) r[d] = master[m].x[3 * a + d] - P.o[d];
-          if (!border[9 * m + a] && dn < -SEGMENT3D_DIR_COS) {
-            const PetscReal t = Dot3(r, &P.e[6]) / dn;
-            for (PetscInt d = 0; d < 3; ++d) r[d] -= t * dv[d];
-          }
-          mt2d[2 * k]     = Dot3(r, &P.e[0]);
-          mt2d[2 * k + 1] = Dot3(r, &P.e[3]);
-          if (w > 0) { /* 0 on the border */
-            Barycentric(P.xi, &hxi[18 * m + 2 * a], l);
-            for (PetscInt c = 0; c < 2; ++c) mt2d[2 * k + c] = w * (P.v2d[c] + l[0] * (P.v2d[2 + c] - P.v2d[c]) + l[1] * (P.v2d[4 + c] - P.v2d[c])) + (1.0 - w) * mt2d[2 * k + c];
-          }
+          const PetscInt a = msub[u][k];
+          Segment3dProjectVertex(&P, &master[m].x[3 * a], &dir[27 * m + 3 * a], border[9 * m + a], hw[9 * m + a], &hxi[18 * m + 2 * a], &mt2d[2 * k]);
           Face3dNodeXi(master[m].type, a, &meta[2 * k]);
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
+        if (nedge) PetscCall(Segment3dBentPieces(slave, &P, ssize, nm, master, boxes, m, msub[u], mt2d, meta, rule, nedge, &bent, &L));
         if (ends) PetscCall(Segment3dSubEnds(slave->type, slaveBorder, nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
         if (ClipSignedArea(3, mt2d) < 0) { /* the master's parameters follow its vertices in the plane: keep them anticlockwise too */
           PetscReal t2[6], te[6];
@@ -638,7 +817,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
           mnode[0] = msub[u][2];
           mnode[2] = msub[u][0];
         }
-        ntri = ClipTriangulate(npoly, poly, 1e-14 * ClipSignedArea(3, P.v2d), tri);
+        ntri = bent ? 0 : ClipTriangulate(npoly, poly, 1e-14 * ClipSignedArea(3, P.v2d), tri);
         for (PetscInt k = 0; k < ntri; ++k) PetscCall(Segment3dPiecePoints(slave, &P, nm, master, boxes, m, &tri[6 * k], mt2d, meta, rule, PETSC_FALSE, &L));
         if (slaveBorder) { /* the master's border along the slave's own: a strip beyond it, to T's edge */
           const PetscReal width = 0.25 * SubPlaneLongestEdge(&P);
