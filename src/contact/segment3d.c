@@ -39,7 +39,7 @@
    from one face to the next is a curve: with nedge > 0
    (-contact_mortar_edge_points) nedge points of each edge that two faces
    given share go as the nodes do (along the two faces' mean unit normal
-   there, onto the curved slave: Segment3dEdgePoints) and bend the
+   there, onto the curved slave: Segment3dEdgeLines) and bend the
    sub-triangle's side, cut into a fan (Segment3dBentPieces); and where S'
    has no end inside the slave face (Segment3dHasEnd: the master's border,
    if any, runs along the slave's) the border nodes go along their lines
@@ -511,11 +511,12 @@ static PetscBool Segment3dNeighbour(PetscInt nm, const Face3d master[], PetscInt
   return PETSC_FALSE;
 }
 
-/* The points of the edge between master faces m and k (nodes a -> b of m,
-   ia -> ib of k, a sub-triangle's side) at s = j/(nedge + 1), j = 1..nedge,
-   projected on P as the nodes are (along the mean of the two faces' unit
-   normals there, onto the curved slave), into out[2 nedge]. */
-static void Segment3dEdgePoints(const SubPlane *P, const Face3d *slave, PetscReal ssize, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt k, PetscInt ia, PetscInt ib, PetscInt nedge, PetscReal out[])
+/* The lines of the edge between master faces m and k (nodes a -> b of m,
+   ia -> ib of k, a sub-triangle's side) at s = j/(nedge + 1), j = 1..nedge:
+   line[9 (j - 1) + ...] its point (3), direction (3, the mean of the two
+   faces' unit normals there), where it meets the curved slave (2) and that
+   hit's weight (1), as the nodes' (Segment3dNodeDirections). */
+static void Segment3dEdgeLines(const Face3d *slave, PetscReal ssize, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt k, PetscInt ia, PetscInt ib, PetscInt nedge, PetscReal line[])
 {
   const PetscReal sz = PetscMax(Face3dSize(master[m].type, master[m].x), Face3dSize(master[k].type, master[k].x));
   PetscReal       ea[2], eb[2], fa[2], fb[2];
@@ -526,20 +527,20 @@ static void Segment3dEdgePoints(const SubPlane *P, const Face3d *slave, PetscRea
   Face3dNodeXi(master[k].type, ib, fb);
   for (PetscInt j = 1; j <= nedge; ++j) {
     const PetscReal s = j / (PetscReal)(nedge + 1);
-    PetscReal       eta[2], eta2[2], X[3], T[6], n1[3], n2[3], d[3], hx[2], len, w;
+    PetscReal      *X = &line[9 * (j - 1)], *d = X + 3, *hx = X + 6;
+    PetscReal       eta[2], eta2[2], Y[3], T[6], n1[3], n2[3], len;
     for (PetscInt c = 0; c < 2; ++c) {
       eta[c]  = ea[c] + s * (eb[c] - ea[c]); /* a side is straight in a face's parameters, the same curve in both faces' */
       eta2[c] = fa[c] + s * (fb[c] - fa[c]);
     }
-    Face3dEval(master[k].type, master[k].x, eta2, X, T, NULL);
+    Face3dEval(master[k].type, master[k].x, eta2, Y, T, NULL);
     (void)Face3dNormal(T, n2);
     Face3dEval(master[m].type, master[m].x, eta, X, T, NULL);
     (void)Face3dNormal(T, n1);
     for (PetscInt c = 0; c < 3; ++c) d[c] = n1[c] + n2[c];
     len = PetscSqrtReal(Dot3(d, d));
     for (PetscInt c = 0; c < 3; ++c) d[c] = len > 0 ? d[c] / len : 0.0;
-    w = len > 0 ? Segment3dSlaveHit(slave, X, d, hx) * SmoothStep((SEGMENT3D_HIT_COARSE - sz / ssize) / (SEGMENT3D_HIT_COARSE - 1.0)) : 0.0;
-    Segment3dProjectVertex(P, X, d, PETSC_FALSE, w, hx, &out[2 * (j - 1)]);
+    X[8] = len > 0 ? Segment3dSlaveHit(slave, X, d, hx) * SmoothStep((SEGMENT3D_HIT_COARSE - sz / ssize) / (SEGMENT3D_HIT_COARSE - 1.0)) : 0.0;
   }
 }
 
@@ -692,30 +693,48 @@ static PetscReal Segment3dSlaveHit(const Face3d *S, const PetscReal y[3], const 
   return SmoothStep(2.0 * (1.0 - out));
 }
 
-/* With nedge points along each master edge: master face m's sub-triangle
-   (msub, mt2d its vertices on P, meta their parameters) with its sides
-   that lie on an edge to another face given bent through those edges'
-   points projected as the nodes are (Segment3dEdgePoints), cut into a fan
-   (from the vertex across where one side bends, else from the centroid),
-   each triangle clipped by T and its points added; *bent: whether a side
-   bent (else the caller clips the straight sub-triangle). */
-static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P, PetscReal ssize, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, const PetscInt msub[3], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PetscInt nedge, PetscBool *bent, PointList *L)
+/* The lines of the master sub-triangles' sides that bend (Segment3dEdgeLines),
+   made at a side's first use and kept for the slave face's other
+   sub-triangles: state[3 (8 m + u) + k] 0 not yet, 1 straight, 2 bent,
+   line[] nedge lines of 9 per side. */
+typedef struct {
+  PetscInt   nedge;
+  char      *state;
+  PetscReal *line;
+} EdgeCache;
+
+/* With nedge points along each master edge: master face m's sub-triangle u
+   (msub its nodes, mt2d their points on P, meta their parameters) with its
+   sides that lie on an edge to another face given bent through those
+   edges' points projected as the nodes are, cut into a fan (from the
+   vertex across where one side bends, else from the centroid), each
+   triangle clipped by T and its points added; *bent: whether a side bent
+   (else the caller clips the straight sub-triangle). */
+static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P, PetscReal ssize, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, PetscInt u, const PetscInt msub[3], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, EdgeCache *C, PetscBool *bent, PointList *L)
 {
-  PetscReal poly[2 * 3 * (SEGMENT3D_MAX_EDGE_POINTS + 1)], apex[2];
-  PetscInt  n = 0, nbent = 0, first = -1, sideStart[3];
+  const PetscInt nedge = C->nedge;
+  PetscReal      poly[2 * 3 * (SEGMENT3D_MAX_EDGE_POINTS + 1)], apex[2];
+  PetscInt       n = 0, nbent = 0, first = -1, sideStart[3];
 
   PetscFunctionBeginUser;
   *bent = PETSC_FALSE;
   for (PetscInt k = 0; k < 3; ++k) {
-    const PetscInt k1 = (k + 1) % 3;
-    PetscInt       mk, ia, ib;
+    const PetscInt k1 = (k + 1) % 3, c = 3 * (8 * m + u) + k;
+    PetscReal     *line = &C->line[9 * nedge * c];
     sideStart[k]    = n;
     poly[2 * n]     = mt2d[2 * k];
     poly[2 * n + 1] = mt2d[2 * k + 1];
     ++n;
-    if (Segment3dFaceSide(master[m].type, msub[k], msub[k1]) < 0 || !Segment3dNeighbour(nm, master, m, msub[k], msub[k1], &mk, &ia, &ib)) continue;
-    Segment3dEdgePoints(P, slave, ssize, master, m, msub[k], msub[k1], mk, ia, ib, nedge, &poly[2 * n]);
-    n += nedge;
+    if (!C->state[c]) {
+      PetscInt mk, ia, ib;
+      C->state[c] = 1;
+      if (Segment3dFaceSide(master[m].type, msub[k], msub[k1]) >= 0 && Segment3dNeighbour(nm, master, m, msub[k], msub[k1], &mk, &ia, &ib)) {
+        Segment3dEdgeLines(slave, ssize, master, m, msub[k], msub[k1], mk, ia, ib, nedge, line);
+        C->state[c] = 2;
+      }
+    }
+    if (C->state[c] != 2) continue;
+    for (PetscInt j = 0; j < nedge; ++j, ++n) Segment3dProjectVertex(P, &line[9 * j], &line[9 * j + 3], PETSC_FALSE, line[9 * j + 8], &line[9 * j + 6], &poly[2 * n]);
     if (first < 0) first = k;
     ++nbent;
   }
@@ -757,11 +776,14 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   const PetscInt(*sub)[3], (*msub)[3];
   PetscReal      *boxes, *dir, *hxi, *hw, *size, ssize;
   PetscBool      *border;
+  EdgeCache       EC;
 
   PetscFunctionBeginUser;
   PetscCheck(nm <= SEGMENT3D_MAX_MASTER, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: %d at most", nm, SEGMENT3D_MAX_MASTER);
   PetscCheck(nedge >= 0 && nedge <= SEGMENT3D_MAX_EDGE_POINTS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " points along a master edge: 0 to %d", nedge, SEGMENT3D_MAX_EDGE_POINTS);
   PetscCall(PetscMalloc6(6 * nm + 1, &boxes, 27 * nm + 1, &dir, 18 * nm + 1, &hxi, 9 * nm + 1, &hw, 18 * nm + 1, &border, 9 * nm + 1, &size));
+  EC.nedge = nedge;
+  PetscCall(PetscCalloc2(nedge ? 24 * nm : 0, &EC.state, nedge ? 216 * nm * nedge : 0, &EC.line));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
   ssize = Face3dSize(slave->type, slave->x);
   Segment3dNodeDirections(nm, master, &border[9 * nm], border, dir, size);
@@ -803,7 +825,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
-        if (nedge) PetscCall(Segment3dBentPieces(slave, &P, ssize, nm, master, boxes, m, msub[u], mt2d, meta, rule, nedge, &bent, &L));
+        if (nedge) PetscCall(Segment3dBentPieces(slave, &P, ssize, nm, master, boxes, m, u, msub[u], mt2d, meta, rule, &EC, &bent, &L));
         if (ends) PetscCall(Segment3dSubEnds(slave->type, slaveBorder, nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
         if (ClipSignedArea(3, mt2d) < 0) { /* the master's parameters follow its vertices in the plane: keep them anticlockwise too */
           PetscReal t2[6], te[6];
@@ -860,6 +882,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
     }
   }
   PetscCall(PetscFree6(boxes, dir, hxi, hw, border, size));
+  PetscCall(PetscFree2(EC.state, EC.line));
   *np  = L.n;
   *pts = L.p;
   if (ends) {
