@@ -42,7 +42,20 @@ typedef struct {
   PetscReal s0, s1;
 } Segment3dEnd;
 
-PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **);
+/* A kink line of S' inside the slave face (with edge points, -contact_mortar_edge_points):
+   where a slave point's closest point passes from master face m to m2 across
+   their shared edge the gap's gradient jumps (the master's normal turns). A
+   straight part of the bent side P -> Q of m's sub-triangle (e[]: P's and
+   Q's nodes in m, e2[] in m2), between its edge parameters s0 and s1 (0 at
+   P, 1 at Q), at the slave parameters xi0 and xi1, inside the slave's
+   sub-triangle. */
+typedef struct {
+  PetscInt  m, m2, e[2], e2[2];
+  PetscReal s0, s1, xi0[2], xi1[2];
+} Segment3dKink;
+
+PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **, PetscInt *, Segment3dKink **);
+PetscErrorCode Segment3dKinkHessian(const Face3d *, const PetscReal[], const PetscReal[], const PetscReal[], const Face3d *, const Face3d *, const Segment3dKink *, PetscReal[], PetscBool *);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
 void           Segment3dPointClosest(const Segment3dPoint *, const Face3d *, const PetscReal[3], PetscReal[2], PetscBool *);
 PetscErrorCode Segment3dEndEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dEnd[], PetscReal[]);

@@ -193,15 +193,17 @@ def test_edge_points_order2(scene, tmp_path):
     and the whole Hertz balls and the half ball sheared with Coulomb
     friction (stuck and slipping nodes; the friction's rows are fixed within
     a lag, its Hessian exact there: test_friction3d.py's patch), the Taylor
-    test at the solution (-taylor_scale 1e-6). From 1/4 to 1/32 of the
-    direction (above round-off) the order is `edge_order` = 1.97 to 1.99
-    (bound 1.93); the default's `default_order` is 1.47 (friction) to 1.84
-    (whole) (bound below 1.9). The remainder at 1/128 of the direction,
-    `edge_remainder`, is 5.9e-10 to 2.1e-9 of |H v| (bound 3e-9), near
-    round-off (the same run along -taylor_scale 1e-7 rises again from about
-    6e-10, as 1/eps); the default's `default_remainder` 1.55e-9 to 1.5e-8.
-    The answers move by the quadrature's gain alone (P by `dP_edges` = 2.6e-10
-    to 3.1e-9 of itself, bound 1e-8)."""
+    test at the solution (-taylor_scale 1e-6); the Hessian takes the kink
+    lines' motion (segment3d.c, Segment3dKinkHessian). From 1/4 to 1/32 of
+    the direction (above round-off) the order is `edge_order` = 1.98 to 2.00
+    (bound 1.93); the default's `default_order` = 1.47 to 1.84 (friction,
+    quarter, whole; bound below 1.9). The remainder at 1/128 of the
+    direction, `edge_remainder` = 4.8e-10 to 2.0e-9 of |H v| (bound 3e-9),
+    is near round-off (along -taylor_scale 1e-7 it rises again from about
+    5e-10, as 1/eps); the default's `default_remainder` = 1.55e-9 to 1.5e-8
+    (whole, quarter, friction). The answers
+    move by the quadrature's gain and the stop (P by `dP_edges` = 2.6e-10 to
+    3.1e-9 of itself, bound 1e-8)."""
     base = EDGE_SCENES[scene]() + ["-taylor_test", "-taylor_scale", "1e-6"]
     edge = run_contact(base + ["-contact_mortar_edge_points", 3], tmp_path, name="edges").summary
     plain = run_contact(base, tmp_path, name="plain").summary
@@ -220,15 +222,14 @@ def test_edge_points_soft_master(tmp_path):
     """Where it does not reach round-off: the same half ball pressed on a
     block as soft as itself (E 1000 both, test_friction3d.py's scene, one
     stage with friction): the master bends between its faces 100 times as
-    much, and the remainder levels at `soft_level` = 1.9e-7 of |H v| with
-    -contact_mortar_edge_points 3 (1.1e-6 without; the whole ball on a
-    block of E 1000 likewise, 1.8e-7 and 9.2e-7). With the segments frozen
-    over the test (an experiment, not in the code) it falls at order 2 to
-    9e-9: what is left is the pieces' motion; the term of the kink lines'
-    motion (the gradient's jump where the closest point passes from one
-    face to the next, times the line's speed) took it to 6.8e-8 in an
-    experiment, and is not in the code. Bound: order 1.85 over the first
-    three halvings, as test_edge_points_order2's."""
+    much, and with -contact_mortar_edge_points 3 the remainder levels at
+    `soft_level` = 8.9e-8 of |H v| (1.9e-7 without the kink lines' term,
+    1.1e-6 with the pieces straight; the whole ball on a block of E 1000
+    likewise, 1.1e-7, 1.8e-7 and 9.2e-7). With the segments frozen over
+    the test (an experiment, not in the code) it falls at order 2 to 9e-9:
+    what is left is the pieces' motion, falling with more points (the whole
+    ball's 2.9e-7, 1.1e-7, 7.3e-8, 6.6e-8 with 1, 3, 5, 7). Bound: order
+    1.93 from 1/4 to 1/32 of the direction, as test_edge_points_order2's."""
     args = friction_ball_args(h=0.04) + ["-output", "none", "-taylor_test", "-taylor_scale", "1e-6",
                                          "-contact_mortar_edge_points", 3]
     args[args.index("-load_stages") + 1] = 1

@@ -103,6 +103,8 @@ typedef struct {
   Segment3dPoint *pts;
   PetscInt        nend; /* the ends of S' inside it (segment3d.c), kept where keep */
   Segment3dEnd   *ends;
+  PetscInt        nkink; /* its kink lines (with edge points), kept where keep */
+  Segment3dKink  *kinks;
 } Mortar3dFace;
 
 typedef struct {
@@ -369,15 +371,18 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscReal               xs[27], Xs[27], box[6];
   Face3d                  sf, ref, mf[MORTAR3D_MAX_MASTER];
   const PetscInt         *found;
-  PetscInt                nfound, np, nend = 0;
+  PetscInt                nfound, np, nend = 0, nkink = 0;
   Segment3dPoint         *pts;
-  Segment3dEnd           *ends = NULL;
+  Segment3dEnd           *ends  = NULL;
+  Segment3dKink          *kinks = NULL;
 
   PetscFunctionBeginUser;
   E->np   = 0;
-  E->nend = 0;
+  E->nend  = 0;
+  E->nkink = 0;
   PetscCall(PetscFree(E->pts));
   PetscCall(PetscFree(E->ends));
+  PetscCall(PetscFree(E->kinks));
   if (!m->integrate[f]) { /* far from the master */
     E->nm   = 0;
     E->ndof = 3 * S->nb;
@@ -409,14 +414,16 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends, &nkink, keep ? &kinks : NULL));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
   if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
   if (keep) {
     E->np   = np;
     E->pts  = pts;
-    E->nend = nend;
-    E->ends = ends;
+    E->nend  = nend;
+    E->ends  = ends;
+    E->nkink = nkink;
+    E->kinks = kinks;
   } else {
     PetscCall(PetscFree(pts));
     PetscCall(PetscFree(ends));
@@ -724,12 +731,16 @@ static PetscErrorCode Mortar3dHessianSecondOrder(Mortar3d *m, const Mortar3dFace
    slave face of this rank's, the leading part of k_p sum_j g_j d2Q_j's
    end term, sum_j k_p g_j int_end W_j (dg v^T + v dg^T) (segment3d.c,
    Segment3dEndHessian), one block per end over the slave face's and its
-   master face's dofs; all[] as Mortar3dHessianSecondOrder's. */
+   master face's dofs; and with edge points (-contact_mortar_edge_points),
+   where a slave point's closest point passes from one master face to the
+   next, the term of that kink line's motion (Segment3dKinkHessian), one
+   block per kink over the slave face's and the line's first face's dofs;
+   all[] as Mortar3dHessianSecondOrder's. */
 static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[], Mat H)
 {
   const ContactSurface3d *S = &m->S[m->s], *M = &m->S[1 - m->s];
   const PetscInt          n = 3 * (S->nb + M->nb);
-  PetscReal               xs[27], Xs[27], xm[27], K[54 * 54], lam[FACE3D_MAX_NODES];
+  PetscReal               xs[27], Xs[27], xm[27], xm2[27], K[54 * 54], lam[FACE3D_MAX_NODES];
   PetscInt                idx[54];
 
   PetscFunctionBeginUser;
@@ -738,7 +749,7 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
     const Mortar3dFace *E = &all[m->hessSlot[f]];
     Face3d              ref, mf;
     PetscBool           any = PETSC_FALSE;
-    if (!E->nend) continue;
+    if (!E->nend && !E->nkink) continue;
     for (PetscInt i = 0; i < S->nb; ++i) {
       const PetscInt j = S->fnodes[S->nb * f + i];
       lam[i]           = m->active[j] && m->gj[j] < 0 ? m->kp * m->gj[j] : 0.0;
@@ -757,6 +768,20 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
       PetscCall(PetscArrayzero(K, n * n));
       any = PETSC_FALSE;
       PetscCall(Segment3dEndHessian(&ref, xs, &m->Adual[81 * f], lam, &mf, &E->ends[e], K, &any));
+      if (!any) continue;
+      Mortar3dBlockIndices(m, f, face, idx);
+      PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
+    }
+    for (PetscInt e = 0; e < E->nkink; ++e) { /* the kink lines (edge points): the gradient's jump moving */
+      const PetscInt face = E->mf[E->kinks[e].m];
+      Face3d         mf2;
+      mf2.type = M->type;
+      mf2.x    = xm2;
+      ContactSurface3dFaceCoords(M, face, M->x, xm);
+      ContactSurface3dFaceCoords(M, E->mf[E->kinks[e].m2], M->x, xm2);
+      PetscCall(PetscArrayzero(K, n * n));
+      any = PETSC_FALSE;
+      PetscCall(Segment3dKinkHessian(&ref, xs, &m->Adual[81 * f], lam, &mf, &mf2, &E->kinks[e], K, &any));
       if (!any) continue;
       Mortar3dBlockIndices(m, f, face, idx);
       PetscCall(Mortar3dAddHessianBlock(m, H, n, idx, K));
@@ -1058,6 +1083,7 @@ static PetscErrorCode Mortar3dHessian(EnergyTerm t, Body bodies[], Mat H)
       PetscCall(PetscFree(all[k].dQ));
       PetscCall(PetscFree(all[k].pts));
       PetscCall(PetscFree(all[k].ends));
+      PetscCall(PetscFree(all[k].kinks));
     }
   PetscCall(PetscFree(all));
   PetscCall(PetscLogEventEnd(MORTAR3D_Hessian, 0, 0, 0, 0));
@@ -1845,6 +1871,7 @@ static PetscErrorCode Mortar3dDestroy(EnergyTerm t)
       PetscCall(PetscFree(m->own[k].dQ));
       PetscCall(PetscFree(m->own[k].pts));
       PetscCall(PetscFree(m->own[k].ends));
+      PetscCall(PetscFree(m->own[k].kinks));
     }
   PetscCall(PetscFree(m->own));
   PetscCall(BvhDestroy(&m->tree));
@@ -1905,6 +1932,7 @@ static PetscErrorCode Mortar3dFrictionLag(EnergyTerm t, Body bodies[], PetscReal
     PetscCall(Friction3dLagFace(m->fr, m->S, f, &m->Adual[81 * f], all[k].nm, all[k].mf, all[k].np, all[k].pts));
     PetscCall(PetscFree(all[k].pts));
     PetscCall(PetscFree(all[k].ends));
+    PetscCall(PetscFree(all[k].kinks));
     PetscCall(PetscFree(all[k].dQ));
   }
   PetscCall(Friction3dLagExchange(m->fr));

@@ -44,8 +44,10 @@
    has no end inside the slave face (Segment3dHasEnd: the master's border,
    if any, runs along the slave's) the border nodes go along their lines
    too. The gap's gradient, which jumps across that curve, is then
-   integrated on either side of it: the Hessian's Taylor remainder falls at
-   order 2 to round-off where the master is stiff (docs/formulations.md).
+   integrated on either side of it, and the line's motion is the Hessian's
+   (Segment3dKinkHessian, the kink lines Segment3dKink): the Hessian's
+   Taylor remainder falls at order 2 to round-off where the master is stiff
+   (docs/formulations.md).
    A point p of T's plane has barycentric
    coordinates (l1, l2) in T, the same in the slave's parameters since T's
    vertices are nodes and the map of T is affine in xi: xi = xi_0 + l1
@@ -288,6 +290,22 @@ static PetscInt Segment3dOwner(PetscInt nm, const Face3d master[], const PetscRe
   return -1;
 }
 
+/* Room in a growing list (*p, *cap items of size bytes, n in use) for one
+   more item: its room doubled (first items at the start) when full. */
+static PetscErrorCode ListGrow(PetscInt n, PetscInt *cap, PetscInt first, size_t size, void **p)
+{
+  void *q;
+
+  PetscFunctionBeginUser;
+  if (n < *cap) PetscFunctionReturn(0);
+  *cap = *cap ? 2 * *cap : first;
+  PetscCall(PetscMalloc((size_t)*cap * size, &q));
+  if (n) PetscCall(PetscMemcpy(q, *p, (size_t)n * size));
+  PetscCall(PetscFree(*p));
+  *p = q;
+  PetscFunctionReturn(0);
+}
+
 typedef struct {
   PetscInt        n, cap;
   Segment3dPoint *p;
@@ -296,14 +314,7 @@ typedef struct {
 static PetscErrorCode PointListPush(PointList *L, const Segment3dPoint *q)
 {
   PetscFunctionBeginUser;
-  if (L->n == L->cap) {
-    Segment3dPoint *p;
-    L->cap = L->cap ? 2 * L->cap : 64;
-    PetscCall(PetscMalloc1(L->cap, &p));
-    if (L->n) PetscCall(PetscArraycpy(p, L->p, L->n));
-    PetscCall(PetscFree(L->p));
-    L->p = p;
-  }
+  PetscCall(ListGrow(L->n, &L->cap, 64, sizeof(*L->p), (void **)&L->p));
   L->p[L->n++] = *q;
   PetscFunctionReturn(0);
 }
@@ -356,15 +367,21 @@ typedef struct {
 static PetscErrorCode EndListPush(EndList *L, const Segment3dEnd *q)
 {
   PetscFunctionBeginUser;
-  if (L->n == L->cap) {
-    Segment3dEnd *e;
-    L->cap = L->cap ? 2 * L->cap : 8;
-    PetscCall(PetscMalloc1(L->cap, &e));
-    if (L->n) PetscCall(PetscArraycpy(e, L->e, L->n));
-    PetscCall(PetscFree(L->e));
-    L->e = e;
-  }
+  PetscCall(ListGrow(L->n, &L->cap, 8, sizeof(*L->e), (void **)&L->e));
   L->e[L->n++] = *q;
+  PetscFunctionReturn(0);
+}
+
+typedef struct {
+  PetscInt       n, cap;
+  Segment3dKink *k;
+} KinkList;
+
+static PetscErrorCode KinkListPush(KinkList *L, const Segment3dKink *q)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ListGrow(L->n, &L->cap, 16, sizeof(*L->k), (void **)&L->k));
+  L->k[L->n++] = *q;
   PetscFunctionReturn(0);
 }
 
@@ -701,6 +718,7 @@ typedef struct {
   PetscInt   nedge;
   char      *state;
   PetscReal *line;
+  PetscInt  *nb; /* [3 (8 m + u) + k][3]: the other face, and the side's two nodes there */
 } EdgeCache;
 
 /* With nedge points along each master edge: master face m's sub-triangle u
@@ -709,8 +727,10 @@ typedef struct {
    edges' points projected as the nodes are, cut into a fan (from the
    vertex across where one side bends, else from the centroid), each
    triangle clipped by T and its points added; *bent: whether a side bent
-   (else the caller clips the straight sub-triangle). */
-static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P, PetscReal ssize, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, PetscInt u, const PetscInt msub[3], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, EdgeCache *C, PetscBool *bent, PointList *L)
+   (else the caller clips the straight sub-triangle). With KL, the kink
+   lines of the bent sides (Segment3dKink) inside T, each edge's from the
+   face of the lower index. */
+static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P, PetscReal ssize, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, PetscInt u, const PetscInt msub[3], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, EdgeCache *C, PetscBool *bent, PointList *L, KinkList *KL)
 {
   const PetscInt nedge = C->nedge;
   PetscReal      poly[2 * 3 * (SEGMENT3D_MAX_EDGE_POINTS + 1)], apex[2];
@@ -726,15 +746,40 @@ static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P
     poly[2 * n + 1] = mt2d[2 * k + 1];
     ++n;
     if (!C->state[c]) {
-      PetscInt mk, ia, ib;
+      PetscInt *nb = &C->nb[3 * c];
       C->state[c] = 1;
-      if (Segment3dFaceSide(master[m].type, msub[k], msub[k1]) >= 0 && Segment3dNeighbour(nm, master, m, msub[k], msub[k1], &mk, &ia, &ib)) {
-        Segment3dEdgeLines(slave, ssize, master, m, msub[k], msub[k1], mk, ia, ib, nedge, line);
+      if (Segment3dFaceSide(master[m].type, msub[k], msub[k1]) >= 0 && Segment3dNeighbour(nm, master, m, msub[k], msub[k1], &nb[0], &nb[1], &nb[2])) {
+        Segment3dEdgeLines(slave, ssize, master, m, msub[k], msub[k1], nb[0], nb[1], nb[2], nedge, line);
         C->state[c] = 2;
       }
     }
     if (C->state[c] != 2) continue;
     for (PetscInt j = 0; j < nedge; ++j, ++n) Segment3dProjectVertex(P, &line[9 * j], &line[9 * j + 3], PETSC_FALSE, line[9 * j + 8], &line[9 * j + 6], &poly[2 * n]);
+    if (KL && m < C->nb[3 * c]) { /* the kink line, once per edge: the bent side's straight parts inside T */
+      for (PetscInt i = 0; i <= nedge; ++i) {
+        const PetscReal *q0 = &poly[2 * (sideStart[k] + i)], *q1 = i < nedge ? &poly[2 * (sideStart[k] + i + 1)] : &mt2d[2 * k1];
+        PetscReal        t0, t1, l[2], x[2];
+        Segment3dKink    K;
+        Segment3dSegmentInTriangle(P->v2d, q0, q1, &t0, &t1);
+        if (!(t1 - t0 > SEGMENT3D_END_TOL)) continue;
+        K.m     = m;
+        K.m2    = C->nb[3 * c];
+        K.e[0]  = msub[k];
+        K.e[1]  = msub[k1];
+        K.e2[0] = C->nb[3 * c + 1];
+        K.e2[1] = C->nb[3 * c + 2];
+        K.s0    = (i + t0) / (nedge + 1);
+        K.s1    = (i + t1) / (nedge + 1);
+        for (PetscInt e = 0; e < 2; ++e) {
+          const PetscReal t = e ? t1 : t0;
+          PetscReal      *xi = e ? K.xi1 : K.xi0;
+          for (PetscInt d = 0; d < 2; ++d) x[d] = q0[d] + t * (q1[d] - q0[d]);
+          Barycentric(P->v2d, x, l);
+          for (PetscInt d = 0; d < 2; ++d) xi[d] = P->xi[d] + l[0] * (P->xi[2 + d] - P->xi[d]) + l[1] * (P->xi[4 + d] - P->xi[d]);
+        }
+        PetscCall(KinkListPush(KL, &K));
+      }
+    }
     if (first < 0) first = k;
     ++nbent;
   }
@@ -767,11 +812,13 @@ static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P
    to 1/2) for each clipped piece; *pts allocated (PetscFree). With ends
    (or NULL), the ends of S' inside the face (Segment3dEnd), *ends
    allocated (PetscFree); slaveBorder: a bit per node of the slave face on
-   the slave surface's border (bit i: node i). */
-PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt nedge, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends)
+   the slave surface's border (bit i: node i). With kinks (or NULL) and
+   nedge > 0, the kink lines (Segment3dKink), *kinks allocated (PetscFree). */
+PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d master[], const Face3dRule *rule, PetscInt nedge, PetscInt *np, Segment3dPoint **pts, PetscInt slaveBorder, PetscInt *nend, Segment3dEnd **ends, PetscInt *nkink, Segment3dKink **kinks)
 {
-  PointList       L = {0, 0, NULL};
+  PointList       L  = {0, 0, NULL};
   EndList         EL = {0, 0, NULL};
+  KinkList        KL = {0, 0, NULL};
   PetscInt        ns, nsm;
   const PetscInt(*sub)[3], (*msub)[3];
   PetscReal      *boxes, *dir, *hxi, *hw, *size, ssize;
@@ -783,7 +830,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PetscCheck(nedge >= 0 && nedge <= SEGMENT3D_MAX_EDGE_POINTS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " points along a master edge: 0 to %d", nedge, SEGMENT3D_MAX_EDGE_POINTS);
   PetscCall(PetscMalloc6(6 * nm + 1, &boxes, 27 * nm + 1, &dir, 18 * nm + 1, &hxi, 9 * nm + 1, &hw, 18 * nm + 1, &border, 9 * nm + 1, &size));
   EC.nedge = nedge;
-  PetscCall(PetscCalloc2(nedge ? 24 * nm : 0, &EC.state, nedge ? 216 * nm * nedge : 0, &EC.line));
+  PetscCall(PetscCalloc3(nedge ? 24 * nm : 0, &EC.state, nedge ? 216 * nm * nedge : 0, &EC.line, nedge ? 72 * nm : 0, &EC.nb));
   for (PetscInt m = 0; m < nm; ++m) Face3dBox(master[m].type, master[m].x, &boxes[6 * m]);
   ssize = Face3dSize(slave->type, slave->x);
   Segment3dNodeDirections(nm, master, &border[9 * nm], border, dir, size);
@@ -825,7 +872,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
         }
         PetscCall(ClipConvex(3, mt2d, 3, P.v2d, &npoly, poly));
         if (npoly < 3) continue;
-        if (nedge) PetscCall(Segment3dBentPieces(slave, &P, ssize, nm, master, boxes, m, u, msub[u], mt2d, meta, rule, &EC, &bent, &L));
+        if (nedge) PetscCall(Segment3dBentPieces(slave, &P, ssize, nm, master, boxes, m, u, msub[u], mt2d, meta, rule, &EC, &bent, &L, kinks ? &KL : NULL));
         if (ends) PetscCall(Segment3dSubEnds(slave->type, slaveBorder, nm, master, m, msub[u], sub[t], &P, mt2d, &EL));
         if (ClipSignedArea(3, mt2d) < 0) { /* the master's parameters follow its vertices in the plane: keep them anticlockwise too */
           PetscReal t2[6], te[6];
@@ -882,12 +929,16 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
     }
   }
   PetscCall(PetscFree6(boxes, dir, hxi, hw, border, size));
-  PetscCall(PetscFree2(EC.state, EC.line));
+  PetscCall(PetscFree3(EC.state, EC.line, EC.nb));
   *np  = L.n;
   *pts = L.p;
   if (ends) {
     *nend = EL.n;
     *ends = EL.e;
+  }
+  if (kinks) {
+    *nkink = KL.n;
+    *kinks = KL.k;
   }
   PetscFunctionReturn(0);
 }
@@ -1163,6 +1214,81 @@ PetscErrorCode Segment3dEndHessian(const Face3d *Xref, const PetscReal xs[], con
           K[c * n + col[k] + d] += vk * dg[c];
         }
       }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* A kink line's Hessian term, added into K[n][n] over the slave face's and
+   master face M's dofs (n = 3 (ns + nm), the slave's first; M the line's
+   face m, M2 its m2): where a slave point passes from M to M2 the gap's
+   gradient W_j J n . du jumps by W_j J (n1 - n2) . du, and the line moves
+   as phi = b . (x_s(xi) - x_e) = 0 does (x_e the edge's point, b the unit
+   vector normal to the edge and to the faces' mean normal, towards M2), at
+   -dphi/|grad phi| in xi; with n1 - n2 = beta b (both normals are normal to
+   the edge and n1 + n2 to b), the leading part of sum_j lam_j d2Q_j is
+     -sum_j lam_j int W_j J beta (c . du)(c . dv) |det(xi', grad phi)| / |grad phi|^2 ds,
+   c = b over the slave's N_i and -b over M's shapes, xi' = dxi/ds along
+   the line (grad phi the slave tangents dotted with b); *any: whether it
+   added. (Where the edge is convex to the slave the gradient turns across
+   the fan behind it, the same term in the limit of a thin fan.) */
+PetscErrorCode Segment3dKinkHessian(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], const PetscReal lam[], const Face3d *M, const Face3d *M2, const Segment3dKink *Kk, PetscReal K[], PetscBool *any)
+{
+  const PetscInt ns = Face3dNodes(Xref->type), nmn = Face3dNodes(M->type), n = 3 * (ns + nmn);
+  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS], e0[2], e1[2], f0[2], f1[2], c2[3] = {0, 0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(Segment3dEndRule(sq, wq));
+  Face3dNodeXi(M->type, Kk->e[0], e0);
+  Face3dNodeXi(M->type, Kk->e[1], e1);
+  Face3dNodeXi(M2->type, Kk->e2[0], f0);
+  Face3dNodeXi(M2->type, Kk->e2[1], f1);
+  for (PetscInt i = 0; i < Face3dNodes(M2->type); ++i)
+    for (PetscInt d = 0; d < 3; ++d) c2[d] += M2->x[3 * i + d] / Face3dNodes(M2->type);
+  for (PetscInt q = 0; q < SEGMENT3D_END_POINTS; ++q) {
+    const PetscReal se = Kk->s0 + sq[q] * (Kk->s1 - Kk->s0);
+    PetscReal       xi[2], dxi[2], eta[2], eta2[2], xe[3], X[3], T[6], T2[6], n1[3], n2[3], nb[3], te[3], b[3], r[3], gp[2], len, meas, beta, L = 0.0, J;
+    PetscReal       W[FACE3D_MAX_NODES], N[FACE3D_MAX_NODES], Mk[FACE3D_MAX_NODES], c[3 * 2 * FACE3D_MAX_NODES];
+    for (PetscInt a = 0; a < 2; ++a) {
+      xi[a]   = Kk->xi0[a] + sq[q] * (Kk->xi1[a] - Kk->xi0[a]);
+      dxi[a]  = Kk->xi1[a] - Kk->xi0[a];
+      eta[a]  = e0[a] + se * (e1[a] - e0[a]);
+      eta2[a] = f0[a] + se * (f1[a] - f0[a]);
+    }
+    Face3dWeights(Xref->type, Adual, xi, W);
+    for (PetscInt j = 0; j < ns; ++j) L += lam[j] * W[j];
+    if (L == 0.0) continue;
+    Face3dEval(M2->type, M2->x, eta2, X, T2, NULL);
+    (void)Face3dNormal(T2, n2);
+    Face3dEval(M->type, M->x, eta, xe, T, NULL);
+    (void)Face3dNormal(T, n1);
+    for (PetscInt d = 0; d < 3; ++d) {
+      nb[d] = n1[d] + n2[d];
+      te[d] = T[d] * (e1[0] - e0[0]) + T[3 + d] * (e1[1] - e0[1]);
+      r[d]  = c2[d] - xe[d];
+    }
+    Cross3(te, nb, b);
+    len = PetscSqrtReal(Dot3(b, b));
+    if (!(len > 0)) continue;
+    for (PetscInt d = 0; d < 3; ++d) b[d] = (Dot3(b, r) < 0 ? -b[d] : b[d]) / len;
+    for (PetscInt d = 0; d < 3; ++d) r[d] = n1[d] - n2[d];
+    beta = Dot3(r, b);
+    Face3dEval(Xref->type, xs, xi, X, T, NULL);
+    gp[0] = Dot3(b, T);
+    gp[1] = Dot3(b, &T[3]);
+    if (!(gp[0] * gp[0] + gp[1] * gp[1] > 0)) continue;
+    meas = PetscAbsReal(dxi[0] * gp[1] - dxi[1] * gp[0]) / (gp[0] * gp[0] + gp[1] * gp[1]) * wq[q];
+    Face3dEval(Xref->type, Xref->x, xi, X, T, NULL);
+    J = Face3dNormal(T, r);
+    Face3dShape(Xref->type, xi, N, NULL, NULL);
+    Face3dShape(M->type, eta, Mk, NULL, NULL);
+    for (PetscInt i = 0; i < ns; ++i)
+      for (PetscInt d = 0; d < 3; ++d) c[3 * i + d] = N[i] * b[d];
+    for (PetscInt i = 0; i < nmn; ++i)
+      for (PetscInt d = 0; d < 3; ++d) c[3 * (ns + i) + d] = -Mk[i] * b[d];
+    L *= -J * meas * beta;
+    *any = PETSC_TRUE;
+    for (PetscInt r0 = 0; r0 < n; ++r0)
+      for (PetscInt c0 = 0; c0 < n; ++c0) K[r0 * n + c0] += L * c[r0] * c[c0];
   }
   PetscFunctionReturn(0);
 }

@@ -348,7 +348,7 @@ static PetscErrorCode Integrate(const Mesh *S, const Mesh *M, PetscReal margin, 
     }
     (void)nm;
     PetscCall(Face3dDualCoefficients(S->type, xs, frule, Ad));
-    PetscCall(Segment3dPoints(&sf, nfound, mf, rule, 0, &np, &pts, 0, NULL, NULL));
+    PetscCall(Segment3dPoints(&sf, nfound, mf, rule, 0, &np, &pts, 0, NULL, NULL, NULL, NULL));
     PetscCall(Segment3dEvaluate(&sf, xs, Ad, nfound, mf, np, pts, a, q, NULL));
     for (PetscInt i = 0; i < ns; ++i) {
       A[S->conn[ns * f + i]] += a[i];
@@ -590,7 +590,7 @@ static PetscErrorCode CheckDerivatives(const char *name, Face3dType st, Face3dTy
   PetscCall(PetscArraycpy(X0, xs, 3 * ns)); /* the reference configuration: dS and the weights held */
   PetscCall(PetscCalloc2(ns * ndof, &dQ, ns * ndof, &fd));
   PetscCall(Face3dDualCoefficients(st, xs, frule, Ad));
-  PetscCall(Segment3dPoints(&sf, mt == FACE3D_TRI6 ? 1 : nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL));
+  PetscCall(Segment3dPoints(&sf, mt == FACE3D_TRI6 ? 1 : nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL, NULL, NULL));
   PetscCheck(np > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no points");
   PetscCall(PetscMalloc1(np, &p0));
   PetscCall(PetscArraycpy(p0, pts, np));
@@ -689,7 +689,7 @@ static PetscErrorCode CheckDerivativeWhole(const char *name, Mesh *S, Mesh *M, P
   PetscCall(Face3dDualCoefficients(FACE3D_TRI6, xs, frule, Ad));
   PetscCall(PetscArrayzero(a, 6));
   PetscCall(PetscArrayzero(q, 6));
-  PetscCall(Segment3dPoints(&sf, nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL));
+  PetscCall(Segment3dPoints(&sf, nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL, NULL, NULL));
   PetscCall(Segment3dEvaluate(&ref, xs, Ad, nmf, mf, np, pts, a, q, dQ));
   PetscCall(PetscFree(pts));
   for (PetscInt v = -6; v < M->nv; ++v) /* the slave's 6 nodes (v < 0), then the masters' */
@@ -710,7 +710,7 @@ static PetscErrorCode CheckDerivativeWhole(const char *name, Mesh *S, Mesh *M, P
       for (PetscInt s = 0; s < 2; ++s) {
         *x = x0 + (s ? -h : h);
         for (PetscInt f = 0; f < nmf; ++f) FaceCoords(M, fid[f], &xm[27 * f]);
-        PetscCall(Segment3dPoints(&sf, nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL));
+        PetscCall(Segment3dPoints(&sf, nmf, mf, rule, 0, &np, &pts, 0, NULL, NULL, NULL, NULL));
         PetscCall(Segment3dEvaluate(&ref, xs, Ad, nmf, mf, np, pts, ap, s ? qm : qp, NULL));
         PetscCall(PetscFree(pts));
       }
