@@ -106,6 +106,7 @@
 #include "clip.h"
 
 static PetscReal Segment3dSlaveHit(const Face3d *, const PetscReal[3], const PetscReal[3], PetscReal[2]);
+static PetscReal Segment3dHitWeight(const Face3d *, const PetscReal[3], const PetscReal[3], PetscReal, PetscReal, PetscReal[2]);
 
 static inline PetscReal Dot3(const PetscReal a[3], const PetscReal b[3])
 {
@@ -331,6 +332,16 @@ void Segment3dPointClosest(const Segment3dPoint *pt, const Face3d *M, const Pets
   } else Face3dClosestPointOnFace(M->type, M->x, x, SEGMENT3D_IN_TOL, eta, clamped);
 }
 
+/* The slave parameters xi of the point x of T's plane P (its barycentric
+   coordinates in T, the same in xi). */
+static void SubPlaneXi(const SubPlane *P, const PetscReal x[2], PetscReal xi[2])
+{
+  PetscReal l[2];
+
+  Barycentric(P->v2d, x, l);
+  for (PetscInt a = 0; a < 2; ++a) xi[a] = P->xi[a] + l[0] * (P->xi[2 + a] - P->xi[a]) + l[1] * (P->xi[4 + a] - P->xi[a]);
+}
+
 /* The points of one clipped triangle piece tri[6] of the slave plane P,
    master sub-triangle mt2d (its vertices' master parameters meta). */
 static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *P, PetscInt nm, const Face3d master[], const PetscReal boxes[], PetscInt m, const PetscReal tri[6], const PetscReal mt2d[6], const PetscReal meta[6], const Face3dRule *rule, PetscBool ext, PointList *L)
@@ -341,14 +352,11 @@ static PetscErrorCode Segment3dPiecePoints(const Face3d *slave, const SubPlane *
   for (PetscInt q = 0; q < rule->nq; ++q) {
     const PetscReal r = rule->xi[2 * q], s = rule->xi[2 * q + 1];
     const PetscReal p[2] = {tri[0] + r * (tri[2] - tri[0]) + s * (tri[4] - tri[0]), tri[1] + r * (tri[3] - tri[1]) + s * (tri[5] - tri[1])};
-    PetscReal       l[2], lm[2], xs[3];
+    PetscReal       lm[2], xs[3];
     Segment3dPoint  pt;
-    Barycentric(P->v2d, p, l);
+    SubPlaneXi(P, p, pt.xi);
     Barycentric(mt2d, p, lm);
-    for (PetscInt a = 0; a < 2; ++a) {
-      pt.xi[a]  = P->xi[a] + l[0] * (P->xi[2 + a] - P->xi[a]) + l[1] * (P->xi[4 + a] - P->xi[a]);
-      pt.eta[a] = meta[a] + lm[0] * (meta[2 + a] - meta[a]) + lm[1] * (meta[4 + a] - meta[a]);
-    }
+    for (PetscInt a = 0; a < 2; ++a) pt.eta[a] = meta[a] + lm[0] * (meta[2 + a] - meta[a]) + lm[1] * (meta[4 + a] - meta[a]);
     pt.w = 2.0 * rule->w[q] * area * scale;
     Face3dEval(slave->type, slave->x, pt.xi, xs, NULL, NULL);
     pt.ext = ext ? 1 : 0;
@@ -404,26 +412,39 @@ static PetscInt Segment3dFaceSide(Face3dType type, PetscInt a, PetscInt b)
   return -1;
 }
 
+/* The other face given that holds master face m's nodes a and b (the same
+   coordinates): *k, and the two nodes' numbers *ia, *ib there; false if
+   none (the edge lies on the master surface's border). */
+static PetscBool Segment3dNeighbour(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt *k, PetscInt *ia, PetscInt *ib)
+{
+  const PetscReal *ya = &master[m].x[3 * a], *yb = &master[m].x[3 * b];
+
+  for (PetscInt f = 0; f < nm; ++f) {
+    PetscInt fa = -1, fb = -1;
+    if (f == m) continue;
+    for (PetscInt i = 0; i < Face3dNodes(master[f].type); ++i) {
+      const PetscReal *z = &master[f].x[3 * i];
+      if (z[0] == ya[0] && z[1] == ya[1] && z[2] == ya[2]) fa = i;
+      if (z[0] == yb[0] && z[1] == yb[1] && z[2] == yb[2]) fb = i;
+    }
+    if (fa >= 0 && fb >= 0) {
+      *k  = f;
+      *ia = fa;
+      *ib = fb;
+      return PETSC_TRUE;
+    }
+  }
+  return PETSC_FALSE;
+}
+
 /* Whether the edge between nodes a and b of master face m (a sub-triangle's
    edge) lies on the master surface's border: on the face's own boundary
-   and no other face given has both points (the same coordinates: the same
-   nodes). */
+   and no other face given has both points (Segment3dNeighbour). */
 static PetscBool Segment3dBorderEdge(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b)
 {
-  const Face3d *F = &master[m];
+  PetscInt k, ia, ib;
 
-  if (Segment3dFaceSide(F->type, a, b) < 0) return PETSC_FALSE;
-  for (PetscInt k = 0; k < nm; ++k) {
-    PetscBool hasA = PETSC_FALSE, hasB = PETSC_FALSE;
-    if (k == m) continue;
-    for (PetscInt i = 0; i < Face3dNodes(master[k].type); ++i) {
-      const PetscReal *y = &master[k].x[3 * i];
-      if (y[0] == F->x[3 * a] && y[1] == F->x[3 * a + 1] && y[2] == F->x[3 * a + 2]) hasA = PETSC_TRUE;
-      if (y[0] == F->x[3 * b] && y[1] == F->x[3 * b + 1] && y[2] == F->x[3 * b + 2]) hasB = PETSC_TRUE;
-    }
-    if (hasA && hasB) return PETSC_FALSE;
-  }
-  return PETSC_TRUE;
+  return (PetscBool)(Segment3dFaceSide(master[m].type, a, b) >= 0 && !Segment3dNeighbour(nm, master, m, a, b, &k, &ia, &ib));
 }
 
 /* The part [*s0, *s1] of the segment p + s (q - p), s in [0, 1], inside the
@@ -503,31 +524,6 @@ static void Segment3dProjectVertex(const SubPlane *P, const PetscReal y[3], cons
   }
 }
 
-/* The other face given that holds master face m's nodes a and b (the same
-   coordinates): *k, and the two nodes' numbers *ia, *ib there; false if
-   none (the edge lies on the master surface's border). */
-static PetscBool Segment3dNeighbour(PetscInt nm, const Face3d master[], PetscInt m, PetscInt a, PetscInt b, PetscInt *k, PetscInt *ia, PetscInt *ib)
-{
-  const PetscReal *ya = &master[m].x[3 * a], *yb = &master[m].x[3 * b];
-
-  for (PetscInt f = 0; f < nm; ++f) {
-    PetscInt fa = -1, fb = -1;
-    if (f == m) continue;
-    for (PetscInt i = 0; i < Face3dNodes(master[f].type); ++i) {
-      const PetscReal *z = &master[f].x[3 * i];
-      if (z[0] == ya[0] && z[1] == ya[1] && z[2] == ya[2]) fa = i;
-      if (z[0] == yb[0] && z[1] == yb[1] && z[2] == yb[2]) fb = i;
-    }
-    if (fa >= 0 && fb >= 0) {
-      *k  = f;
-      *ia = fa;
-      *ib = fb;
-      return PETSC_TRUE;
-    }
-  }
-  return PETSC_FALSE;
-}
-
 /* The lines of the edge between master faces m and k (nodes a -> b of m,
    ia -> ib of k, a sub-triangle's side) at s = j/(nedge + 1), j = 1..nedge:
    line[9 (j - 1) + ...] its point (3), direction (3, the mean of the two
@@ -557,7 +553,7 @@ static void Segment3dEdgeLines(const Face3d *slave, PetscReal ssize, const Face3
     for (PetscInt c = 0; c < 3; ++c) d[c] = n1[c] + n2[c];
     len = PetscSqrtReal(Dot3(d, d));
     for (PetscInt c = 0; c < 3; ++c) d[c] = len > 0 ? d[c] / len : 0.0;
-    X[8] = len > 0 ? Segment3dSlaveHit(slave, X, d, hx) * SmoothStep((SEGMENT3D_HIT_COARSE - sz / ssize) / (SEGMENT3D_HIT_COARSE - 1.0)) : 0.0;
+    X[8] = len > 0 ? Segment3dHitWeight(slave, X, d, sz, ssize, hx) : 0.0;
   }
 }
 
@@ -710,6 +706,15 @@ static PetscReal Segment3dSlaveHit(const Face3d *S, const PetscReal y[3], const 
   return SmoothStep(2.0 * (1.0 - out));
 }
 
+/* The weight a master vertex y (its faces' size fsize) is taken with on
+   its line y + t d's hit on the slave S (hxi, Segment3dSlaveHit), against
+   the projection on a sub-triangle's plane: the hit's own weight, times 1
+   to 0 as fsize goes from S's size ssize to SEGMENT3D_HIT_COARSE times it. */
+static PetscReal Segment3dHitWeight(const Face3d *S, const PetscReal y[3], const PetscReal d[3], PetscReal fsize, PetscReal ssize, PetscReal hxi[2])
+{
+  return Segment3dSlaveHit(S, y, d, hxi) * SmoothStep((SEGMENT3D_HIT_COARSE - fsize / ssize) / (SEGMENT3D_HIT_COARSE - 1.0));
+}
+
 /* The lines of the master sub-triangles' sides that bend (Segment3dEdgeLines),
    made at a side's first use and kept for the slave face's other
    sub-triangles: state[3 (8 m + u) + k] 0 not yet, 1 straight, 2 bent,
@@ -758,7 +763,7 @@ static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P
     if (KL && m < C->nb[3 * c]) { /* the kink line, once per edge: the bent side's straight parts inside T */
       for (PetscInt i = 0; i <= nedge; ++i) {
         const PetscReal *q0 = &poly[2 * (sideStart[k] + i)], *q1 = i < nedge ? &poly[2 * (sideStart[k] + i + 1)] : &mt2d[2 * k1];
-        PetscReal        t0, t1, l[2], x[2];
+        PetscReal        t0, t1, x[2];
         Segment3dKink    K;
         Segment3dSegmentInTriangle(P->v2d, q0, q1, &t0, &t1);
         if (!(t1 - t0 > SEGMENT3D_END_TOL)) continue;
@@ -772,10 +777,8 @@ static PetscErrorCode Segment3dBentPieces(const Face3d *slave, const SubPlane *P
         K.s1    = (i + t1) / (nedge + 1);
         for (PetscInt e = 0; e < 2; ++e) {
           const PetscReal t = e ? t1 : t0;
-          PetscReal      *xi = e ? K.xi1 : K.xi0;
           for (PetscInt d = 0; d < 2; ++d) x[d] = q0[d] + t * (q1[d] - q0[d]);
-          Barycentric(P->v2d, x, l);
-          for (PetscInt d = 0; d < 2; ++d) xi[d] = P->xi[d] + l[0] * (P->xi[2 + d] - P->xi[d]) + l[1] * (P->xi[4 + d] - P->xi[d]);
+          SubPlaneXi(P, x, e ? K.xi1 : K.xi0);
         }
         PetscCall(KinkListPush(KL, &K));
       }
@@ -837,7 +840,7 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   for (PetscInt m = 0; m < nm; ++m)
     for (PetscInt a = 0; a < Face3dNodes(master[m].type); ++a) {
       const PetscReal *d = &dir[27 * m + 3 * a];
-      hw[9 * m + a]      = (border[9 * m + a] && !nedge) || (d[0] == 0 && d[1] == 0 && d[2] == 0) ? 0.0 : Segment3dSlaveHit(slave, &master[m].x[3 * a], d, &hxi[18 * m + 2 * a]) * SmoothStep((SEGMENT3D_HIT_COARSE - size[9 * m + a] / ssize) / (SEGMENT3D_HIT_COARSE - 1.0));
+      hw[9 * m + a]      = (border[9 * m + a] && !nedge) || (d[0] == 0 && d[1] == 0 && d[2] == 0) ? 0.0 : Segment3dHitWeight(slave, &master[m].x[3 * a], d, size[9 * m + a], ssize, &hxi[18 * m + 2 * a]);
     }
   if (nedge) { /* with edge points, the border nodes too go along their lines where S' has no end inside the slave face (the master's border, if any, runs along the slave's: a symmetry plane) */
     PetscBool hasEnd;
