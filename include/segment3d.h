@@ -55,6 +55,7 @@ typedef struct {
 } Segment3dKink;
 
 PetscErrorCode Segment3dPoints(const Face3d *, PetscInt, const Face3d[], const Face3dRule *, PetscInt, PetscInt *, Segment3dPoint **, PetscInt, PetscInt *, Segment3dEnd **, PetscInt *, Segment3dKink **);
+PetscErrorCode Segment3dKinkEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, const Segment3dKink[], PetscReal[]);
 PetscErrorCode Segment3dKinkHessian(const Face3d *, const PetscReal[], const PetscReal[], const PetscReal[], const Face3d *, const Face3d *, const Segment3dKink *, PetscReal[], PetscBool *);
 PetscErrorCode Segment3dEvaluate(const Face3d *, const PetscReal[], const PetscReal[], PetscInt, const Face3d[], PetscInt, Segment3dPoint[], PetscReal[], PetscReal[], PetscReal[]);
 void           Segment3dPointClosest(const Segment3dPoint *, const Face3d *, const PetscReal[3], PetscReal[2], PetscBool *);

@@ -414,9 +414,10 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends, &nkink, keep ? &kinks : NULL));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends, &nkink, keep || deriv ? &kinks : NULL));
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
   if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
+  if (deriv) PetscCall(Segment3dKinkEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nkink, kinks, E->dQ));
   if (keep) {
     E->np   = np;
     E->pts  = pts;
@@ -427,6 +428,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   } else {
     PetscCall(PetscFree(pts));
     PetscCall(PetscFree(ends));
+    PetscCall(PetscFree(kinks));
   }
   PetscFunctionReturn(0);
 }
@@ -1206,7 +1208,7 @@ PetscErrorCode ContactMortar3dOptionsRead(MPI_Comm comm, PetscReal *margin, Pets
   *edgePoints = 0;
   PetscOptionsBegin(comm, NULL, "3D mortar contact options", NULL);
   PetscCall(PetscOptionsReal("-contact_mortar_pattern_margin", "3D pairs: the Hessian's preallocated pattern couples a slave face with the master faces within this many face sizes of it (the smaller of the two faces'), at rest (the solve's sliding; beyond it the Hessian's preallocation is widened; negative: the faces' own boxes shrunk)", NULL, *margin, margin, NULL));
-  PetscCall(PetscOptionsInt("-contact_mortar_edge_points", "3D pairs: points along each master edge between two faces, projected onto the slave as its nodes are, so that the pieces' borders follow the edge's curved image, where the gap's gradient jumps (the Hessian's Taylor test then of order 2 to round-off on a stiff master; at 3 the mortar's energy and gradient take about 2.5 times as long, the quarter Hertz ball's run 1.3 times); 0: straight between the nodes", NULL, *edgePoints, edgePoints, NULL));
+  PetscCall(PetscOptionsInt("-contact_mortar_edge_points", "3D pairs: points along each master edge between two faces, projected onto the slave as its nodes are, so that the pieces' borders follow the edge's curved image, where the gap's gradient jumps (the Hessian's Taylor test then of order 2 to round-off on a stiff master, to about 1e-8 on one as soft as the slave; at 3 the mortar's energy and gradient take about 2.5 times as long, the quarter Hertz ball's run 1.3 times); 0: straight between the nodes", NULL, *edgePoints, edgePoints, NULL));
   PetscOptionsEnd();
   PetscCheck(!PetscIsInfOrNanReal(*margin), comm, PETSC_ERR_ARG_OUTOFRANGE, "option -contact_mortar_pattern_margin: must be a finite number, got %g", (double)*margin);
   PetscCheck(*edgePoints >= 0 && *edgePoints <= SEGMENT3D_MAX_EDGE_POINTS, comm, PETSC_ERR_USER_INPUT, "option -contact_mortar_edge_points: must be in [0, %d], got %" PetscInt_FMT, SEGMENT3D_MAX_EDGE_POINTS, *edgePoints);

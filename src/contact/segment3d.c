@@ -45,9 +45,12 @@
    if any, runs along the slave's) the border nodes go along their lines
    too. The gap's gradient, which jumps across that curve, is then
    integrated on either side of it, and the line's motion is the Hessian's
-   (Segment3dKinkHessian, the kink lines Segment3dKink): the Hessian's
-   Taylor remainder falls at order 2 to round-off where the master is stiff
-   (docs/formulations.md).
+   (Segment3dKinkHessian, the kink lines Segment3dKink); between a piece's
+   straight border and that curve the pieces integrate the other face's
+   gap, so Q_j moves with the layout, and dQ_j takes that motion too
+   (Segment3dKinkEvaluate): the Hessian's Taylor remainder falls at order 2
+   to about 1e-8 of |H v| where the master is as soft as the slave, to
+   round-off where it is stiff (docs/formulations.md).
    A point p of T's plane has barycentric
    coordinates (l1, l2) in T, the same in the slave's parameters since T's
    vertices are nodes and the map of T is affine in xi: xi = xi_0 + l1
@@ -1221,6 +1224,122 @@ PetscErrorCode Segment3dEndHessian(const Face3d *Xref, const PetscReal xs[], con
   PetscFunctionReturn(0);
 }
 
+/* A point of the kink line Kk (faces M, M2) at sq of it, the line rule's
+   weight wq: its slave parameters xi, its edge point's parameters in M
+   (eta) and in M2 (eta2), the unit vector b normal to the edge and to the
+   faces' mean normal there (towards M2: from the edge's point to M2's
+   centroid), beta = (n1 - n2) . b, and meas = wq |det(xi', grad phi)| /
+   |grad phi|^2, grad phi = (b . t_1, b . t_2) the slave's tangents xs at
+   xi (xi' = dxi/ds along the line): the line's motion in xi per unit of
+   -b . (sum N_i du_i - sum M_k du_k). PETSC_FALSE where it has none (b or
+   grad phi zero). */
+typedef struct {
+  PetscReal xi[2], eta[2], eta2[2], b[3], beta, meas;
+} Segment3dKinkPt;
+
+static PetscBool Segment3dKinkPointAt(const Face3d *S, const Face3d *M, const Face3d *M2, const Segment3dKink *Kk, PetscReal sq, PetscReal wq, Segment3dKinkPt *p)
+{
+  const PetscReal se = Kk->s0 + sq * (Kk->s1 - Kk->s0);
+  PetscReal       e0[2], e1[2], f0[2], f1[2], c2[3] = {0, 0, 0}, dxi[2], X[3], xe[3], T[6], n1[3], n2[3], nb[3], te[3], r[3], gp[2], len, sg;
+
+  Face3dNodeXi(M->type, Kk->e[0], e0);
+  Face3dNodeXi(M->type, Kk->e[1], e1);
+  Face3dNodeXi(M2->type, Kk->e2[0], f0);
+  Face3dNodeXi(M2->type, Kk->e2[1], f1);
+  for (PetscInt i = 0; i < Face3dNodes(M2->type); ++i)
+    for (PetscInt d = 0; d < 3; ++d) c2[d] += M2->x[3 * i + d] / Face3dNodes(M2->type);
+  for (PetscInt a = 0; a < 2; ++a) {
+    p->xi[a]   = Kk->xi0[a] + sq * (Kk->xi1[a] - Kk->xi0[a]);
+    dxi[a]     = Kk->xi1[a] - Kk->xi0[a];
+    p->eta[a]  = e0[a] + se * (e1[a] - e0[a]);
+    p->eta2[a] = f0[a] + se * (f1[a] - f0[a]);
+  }
+  Face3dEval(M2->type, M2->x, p->eta2, X, T, NULL);
+  (void)Face3dNormal(T, n2);
+  Face3dEval(M->type, M->x, p->eta, xe, T, NULL);
+  (void)Face3dNormal(T, n1);
+  for (PetscInt d = 0; d < 3; ++d) {
+    nb[d] = n1[d] + n2[d];
+    te[d] = T[d] * (e1[0] - e0[0]) + T[3 + d] * (e1[1] - e0[1]);
+    r[d]  = c2[d] - xe[d];
+  }
+  Cross3(te, nb, p->b);
+  len = PetscSqrtReal(Dot3(p->b, p->b));
+  if (!(len > 0)) return PETSC_FALSE;
+  sg = Dot3(p->b, r) < 0 ? -1.0 : 1.0; /* the orientation once, for all three components */
+  for (PetscInt d = 0; d < 3; ++d) {
+    p->b[d] *= sg / len;
+    r[d] = n1[d] - n2[d];
+  }
+  p->beta = Dot3(r, p->b);
+  Face3dEval(S->type, S->x, p->xi, X, T, NULL);
+  gp[0] = Dot3(p->b, T);
+  gp[1] = Dot3(p->b, &T[3]);
+  if (!(gp[0] * gp[0] + gp[1] * gp[1] > 0)) return PETSC_FALSE;
+  p->meas = PetscAbsReal(dxi[0] * gp[1] - dxi[1] * gp[0]) / (gp[0] * gp[0] + gp[1] * gp[1]) * wq;
+  return PETSC_TRUE;
+}
+
+/* The kink lines' term of dQ (Segment3dEvaluate's layout), added: a piece's
+   border is a straight part of the bent side, the line where the closest
+   point passes from M to M2 a curve beside it, so between them a piece
+   integrates the other face's gap and Q_j moves with the pieces' layout
+   (by the sagitta's order: its exact value does not). As the border moves
+   with the line, dQ_j takes
+     int W_j J (g_1 - g_2) V ds along each kink line,
+   g_1 and g_2 the gaps to M's and M2's polynomial extensions there (their
+   closest points by Newton, unclamped) and V ds = -(c . du) meas
+   (Segment3dKinkPointAt, c as Segment3dKinkHessian's): the Gauss-Newton
+   part k_p dQ_j dQ_j^T then holds that motion too. */
+PetscErrorCode Segment3dKinkEvaluate(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], PetscInt nm, const Face3d master[], PetscInt nkink, const Segment3dKink kinks[], PetscReal dQ[])
+{
+  const PetscInt ns = Face3dNodes(Xref->type);
+  const Face3d   S  = {Xref->type, xs};
+  PetscInt       ndof = 3 * ns, off[SEGMENT3D_MAX_MASTER];
+  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
+
+  PetscFunctionBeginUser;
+  if (!nkink) PetscFunctionReturn(0);
+  for (PetscInt m = 0; m < nm; ++m) {
+    off[m] = ndof;
+    ndof += 3 * Face3dNodes(master[m].type);
+  }
+  PetscCall(Segment3dEndRule(sq, wq));
+  for (PetscInt e = 0; e < nkink; ++e) {
+    const Segment3dKink *Kk = &kinks[e];
+    const Face3d        *M = &master[Kk->m], *M2 = &master[Kk->m2];
+    for (PetscInt q = 0; q < SEGMENT3D_END_POINTS; ++q) {
+      Segment3dKinkPt pt;
+      PetscReal       x[3], X[3], T[6], nr[3], g[2], J, W[FACE3D_MAX_NODES], N[FACE3D_MAX_NODES], Mk[FACE3D_MAX_NODES];
+      PetscBool       ok = PETSC_TRUE;
+      if (!Segment3dKinkPointAt(&S, M, M2, Kk, sq[q], wq[q], &pt)) continue;
+      Face3dEval(S.type, xs, pt.xi, x, NULL, NULL);
+      for (PetscInt k = 0; k < 2; ++k) { /* the gap to each face's extension */
+        const Face3d *F = k ? M2 : M;
+        PetscReal     eta[2] = {k ? pt.eta2[0] : pt.eta[0], k ? pt.eta2[1] : pt.eta[1]}, xm[3];
+        if (!Face3dClosestPoint(F->type, F->x, x, eta, NULL)) ok = PETSC_FALSE;
+        Face3dEval(F->type, F->x, eta, xm, T, NULL);
+        (void)Face3dNormal(T, nr);
+        g[k] = (x[0] - xm[0]) * nr[0] + (x[1] - xm[1]) * nr[1] + (x[2] - xm[2]) * nr[2];
+      }
+      if (!ok) continue;
+      Face3dEval(Xref->type, Xref->x, pt.xi, X, T, NULL);
+      J = Face3dNormal(T, nr);
+      Face3dWeights(Xref->type, Adual, pt.xi, W);
+      Face3dShape(Xref->type, pt.xi, N, NULL, NULL);
+      Face3dShape(M->type, pt.eta, Mk, NULL, NULL);
+      for (PetscInt j = 0; j < ns; ++j) {
+        const PetscReal f = -W[j] * J * (g[0] - g[1]) * pt.meas;
+        for (PetscInt i = 0; i < ns; ++i)
+          for (PetscInt d = 0; d < 3; ++d) dQ[j * ndof + 3 * i + d] += f * N[i] * pt.b[d];
+        for (PetscInt i = 0; i < Face3dNodes(M->type); ++i)
+          for (PetscInt d = 0; d < 3; ++d) dQ[j * ndof + off[Kk->m] + 3 * i + d] -= f * Mk[i] * pt.b[d];
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* A kink line's Hessian term, added into K[n][n] over the slave face's and
    master face M's dofs (n = 3 (ns + nm), the slave's first; M the line's
    face m, M2 its m2): where a slave point passes from M to M2 the gap's
@@ -1231,64 +1350,36 @@ PetscErrorCode Segment3dEndHessian(const Face3d *Xref, const PetscReal xs[], con
    the edge and n1 + n2 to b), the leading part of sum_j lam_j d2Q_j is
      -sum_j lam_j int W_j J beta (c . du)(c . dv) |det(xi', grad phi)| / |grad phi|^2 ds,
    c = b over the slave's N_i and -b over M's shapes, xi' = dxi/ds along
-   the line (grad phi the slave tangents dotted with b); *any: whether it
-   added. (Where the edge is convex to the slave the gradient turns across
-   the fan behind it, the same term in the limit of a thin fan.) */
+   the line (grad phi the slave tangents dotted with b: Segment3dKinkPointAt);
+   *any: whether it added. (Where the edge is convex to the slave the
+   gradient turns across the fan behind it, the same term in the limit of a
+   thin fan.) */
 PetscErrorCode Segment3dKinkHessian(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], const PetscReal lam[], const Face3d *M, const Face3d *M2, const Segment3dKink *Kk, PetscReal K[], PetscBool *any)
 {
   const PetscInt ns = Face3dNodes(Xref->type), nmn = Face3dNodes(M->type), n = 3 * (ns + nmn);
-  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS], e0[2], e1[2], f0[2], f1[2], c2[3] = {0, 0, 0};
+  const Face3d   S  = {Xref->type, xs};
+  PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
 
   PetscFunctionBeginUser;
   PetscCall(Segment3dEndRule(sq, wq));
-  Face3dNodeXi(M->type, Kk->e[0], e0);
-  Face3dNodeXi(M->type, Kk->e[1], e1);
-  Face3dNodeXi(M2->type, Kk->e2[0], f0);
-  Face3dNodeXi(M2->type, Kk->e2[1], f1);
-  for (PetscInt i = 0; i < Face3dNodes(M2->type); ++i)
-    for (PetscInt d = 0; d < 3; ++d) c2[d] += M2->x[3 * i + d] / Face3dNodes(M2->type);
   for (PetscInt q = 0; q < SEGMENT3D_END_POINTS; ++q) {
-    const PetscReal se = Kk->s0 + sq[q] * (Kk->s1 - Kk->s0);
-    PetscReal       xi[2], dxi[2], eta[2], eta2[2], xe[3], X[3], T[6], T2[6], n1[3], n2[3], nb[3], te[3], b[3], r[3], gp[2], len, meas, beta, L = 0.0, J;
+    Segment3dKinkPt pt;
+    PetscReal       X[3], T[6], r[3], L = 0.0, J;
     PetscReal       W[FACE3D_MAX_NODES], N[FACE3D_MAX_NODES], Mk[FACE3D_MAX_NODES], c[3 * 2 * FACE3D_MAX_NODES];
-    for (PetscInt a = 0; a < 2; ++a) {
-      xi[a]   = Kk->xi0[a] + sq[q] * (Kk->xi1[a] - Kk->xi0[a]);
-      dxi[a]  = Kk->xi1[a] - Kk->xi0[a];
-      eta[a]  = e0[a] + se * (e1[a] - e0[a]);
-      eta2[a] = f0[a] + se * (f1[a] - f0[a]);
-    }
+    const PetscReal xi[2] = {Kk->xi0[0] + sq[q] * (Kk->xi1[0] - Kk->xi0[0]), Kk->xi0[1] + sq[q] * (Kk->xi1[1] - Kk->xi0[1])};
     Face3dWeights(Xref->type, Adual, xi, W);
     for (PetscInt j = 0; j < ns; ++j) L += lam[j] * W[j];
     if (L == 0.0) continue;
-    Face3dEval(M2->type, M2->x, eta2, X, T2, NULL);
-    (void)Face3dNormal(T2, n2);
-    Face3dEval(M->type, M->x, eta, xe, T, NULL);
-    (void)Face3dNormal(T, n1);
-    for (PetscInt d = 0; d < 3; ++d) {
-      nb[d] = n1[d] + n2[d];
-      te[d] = T[d] * (e1[0] - e0[0]) + T[3 + d] * (e1[1] - e0[1]);
-      r[d]  = c2[d] - xe[d];
-    }
-    Cross3(te, nb, b);
-    len = PetscSqrtReal(Dot3(b, b));
-    if (!(len > 0)) continue;
-    for (PetscInt d = 0; d < 3; ++d) b[d] = (Dot3(b, r) < 0 ? -b[d] : b[d]) / len;
-    for (PetscInt d = 0; d < 3; ++d) r[d] = n1[d] - n2[d];
-    beta = Dot3(r, b);
-    Face3dEval(Xref->type, xs, xi, X, T, NULL);
-    gp[0] = Dot3(b, T);
-    gp[1] = Dot3(b, &T[3]);
-    if (!(gp[0] * gp[0] + gp[1] * gp[1] > 0)) continue;
-    meas = PetscAbsReal(dxi[0] * gp[1] - dxi[1] * gp[0]) / (gp[0] * gp[0] + gp[1] * gp[1]) * wq[q];
-    Face3dEval(Xref->type, Xref->x, xi, X, T, NULL);
+    if (!Segment3dKinkPointAt(&S, M, M2, Kk, sq[q], wq[q], &pt)) continue;
+    Face3dEval(Xref->type, Xref->x, pt.xi, X, T, NULL);
     J = Face3dNormal(T, r);
-    Face3dShape(Xref->type, xi, N, NULL, NULL);
-    Face3dShape(M->type, eta, Mk, NULL, NULL);
+    Face3dShape(Xref->type, pt.xi, N, NULL, NULL);
+    Face3dShape(M->type, pt.eta, Mk, NULL, NULL);
     for (PetscInt i = 0; i < ns; ++i)
-      for (PetscInt d = 0; d < 3; ++d) c[3 * i + d] = N[i] * b[d];
+      for (PetscInt d = 0; d < 3; ++d) c[3 * i + d] = N[i] * pt.b[d];
     for (PetscInt i = 0; i < nmn; ++i)
-      for (PetscInt d = 0; d < 3; ++d) c[3 * (ns + i) + d] = -Mk[i] * b[d];
-    L *= -J * meas * beta;
+      for (PetscInt d = 0; d < 3; ++d) c[3 * (ns + i) + d] = -Mk[i] * pt.b[d];
+    L *= -J * pt.meas * pt.beta;
     *any = PETSC_TRUE;
     for (PetscInt r0 = 0; r0 < n; ++r0)
       for (PetscInt c0 = 0; c0 < n; ++c0) K[r0 * n + c0] += L * c[r0] * c[c0];
