@@ -949,6 +949,19 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
   PetscFunctionReturn(0);
 }
 
+/* The columns of dQ (Segment3dEvaluate's layout): the slave's 3 ns dofs,
+   then the nm master faces', face m's from off[m]; returns their number. */
+static PetscInt Segment3dColumns(PetscInt ns, PetscInt nm, const Face3d master[], PetscInt off[])
+{
+  PetscInt ndof = 3 * ns;
+
+  for (PetscInt m = 0; m < nm; ++m) {
+    off[m] = ndof;
+    ndof += 3 * Face3dNodes(master[m].type);
+  }
+  return ndof;
+}
+
 /* A_j and Q_j (added into A[], Q[]) over the points, their eta updated by
    Newton at the current coordinates (xs the slave's, master[] the
    masters'); Xref the slave's reference face (dS), Adual its weights'
@@ -957,14 +970,11 @@ PetscErrorCode Segment3dPoints(const Face3d *slave, PetscInt nm, const Face3d ma
 PetscErrorCode Segment3dEvaluate(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], PetscInt nm, const Face3d master[], PetscInt np, Segment3dPoint pts[], PetscReal A[], PetscReal Q[], PetscReal dQ[])
 {
   const PetscInt ns = Face3dNodes(Xref->type);
-  PetscInt       ndof = 3 * ns, off[64];
+  PetscInt       ndof, off[64];
 
   PetscFunctionBeginUser;
   PetscCheck(nm <= 64, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%" PetscInt_FMT " master faces for one slave face: 64 at most", nm);
-  for (PetscInt m = 0; m < nm; ++m) {
-    off[m] = ndof;
-    ndof += 3 * Face3dNodes(master[m].type);
-  }
+  ndof = Segment3dColumns(ns, nm, master, off);
   for (PetscInt q = 0; q < np; ++q) {
     Segment3dPoint *pt = &pts[q];
     const Face3d   *M  = &master[pt->m];
@@ -1157,15 +1167,12 @@ static PetscErrorCode Segment3dEndRule(PetscReal s[], PetscReal w[])
 PetscErrorCode Segment3dEndEvaluate(const Face3d *Xref, const PetscReal xs[], const PetscReal Adual[], PetscInt nm, const Face3d master[], PetscInt nend, const Segment3dEnd ends[], PetscReal dQ[])
 {
   const PetscInt ns = Face3dNodes(Xref->type);
-  PetscInt       ndof = 3 * ns, off[SEGMENT3D_MAX_MASTER];
+  PetscInt       ndof, off[SEGMENT3D_MAX_MASTER];
   PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
 
   PetscFunctionBeginUser;
   if (!nend) PetscFunctionReturn(0);
-  for (PetscInt m = 0; m < nm; ++m) {
-    off[m] = ndof;
-    ndof += 3 * Face3dNodes(master[m].type);
-  }
+  ndof = Segment3dColumns(ns, nm, master, off);
   PetscCall(Segment3dEndRule(sq, wq));
   for (PetscInt e = 0; e < nend; ++e) {
     const Segment3dEnd *E = &ends[e];
@@ -1295,15 +1302,12 @@ PetscErrorCode Segment3dKinkEvaluate(const Face3d *Xref, const PetscReal xs[], c
 {
   const PetscInt ns = Face3dNodes(Xref->type);
   const Face3d   S  = {Xref->type, xs};
-  PetscInt       ndof = 3 * ns, off[SEGMENT3D_MAX_MASTER];
+  PetscInt       ndof, off[SEGMENT3D_MAX_MASTER];
   PetscReal      sq[SEGMENT3D_END_POINTS], wq[SEGMENT3D_END_POINTS];
 
   PetscFunctionBeginUser;
   if (!nkink) PetscFunctionReturn(0);
-  for (PetscInt m = 0; m < nm; ++m) {
-    off[m] = ndof;
-    ndof += 3 * Face3dNodes(master[m].type);
-  }
+  ndof = Segment3dColumns(ns, nm, master, off);
   PetscCall(Segment3dEndRule(sq, wq));
   for (PetscInt e = 0; e < nkink; ++e) {
     const Segment3dKink *Kk = &kinks[e];
