@@ -227,8 +227,8 @@ def test_edge_points_soft_master(tmp_path):
     (Segment3dKinkEvaluate: the Gauss-Newton part k_p dQ_j dQ_j^T holds it)
     and with -contact_mortar_edge_points 3 the remainder falls at order 2
     (bound 1.93 from 1/4 to 1/32 of the direction, as
-    test_edge_points_order2's) to `soft_level` = 9.4e-9 of |H v| at 1/128
-    of it (bound 3e-8), where it levelled at 8.9e-8 without that term and
+    test_edge_points_order2's) to `soft_level` = 9.4e-9 to 1.0e-8 of |H v|
+    at 1/128 of it over the five BLAS kernels (bound 3e-8), where it levelled at 8.9e-8 without that term and
     1.1e-6 with the pieces straight (docs/formulations.md)."""
     args = friction_ball_args(h=0.04) + ["-output", "none", "-taylor_test", "-taylor_scale", "1e-6",
                                          "-contact_mortar_edge_points", 3]
