@@ -414,7 +414,7 @@ static PetscErrorCode Mortar3dFaceEvaluate(Mortar3d *m, PetscInt f, PetscBool de
   PetscCall(PetscFree(E->dQ));
   if (deriv) PetscCall(PetscCalloc1(S->nb * E->ndof + 1, &E->dQ));
   if (!nfound) PetscFunctionReturn(0);
-  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends, &nkink, keep || deriv ? &kinks : NULL));
+  PetscCall(Segment3dPoints(&sf, nfound, mf, &m->rule, m->edgePoints, &np, &pts, Mortar3dSlaveBorder(m, f), &nend, &ends, &nkink, deriv ? &kinks : NULL)); /* the kink lines: dQ's term and, kept, the Hessian's (which reuses only an evaluation with dQ) */
   PetscCall(Segment3dEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, np, pts, E->a, E->q, E->dQ));
   if (deriv) PetscCall(Segment3dEndEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nend, ends, E->dQ));
   if (deriv) PetscCall(Segment3dKinkEvaluate(&ref, xs, &m->Adual[81 * f], nfound, mf, nkink, kinks, E->dQ));
@@ -749,7 +749,7 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
   for (PetscInt k = 0; k < S->nown; ++k) {
     const PetscInt      f = S->ownFaces[k];
     const Mortar3dFace *E = &all[m->hessSlot[f]];
-    Face3d              ref, mf;
+    Face3d              ref, mf, mf2;
     PetscBool           any = PETSC_FALSE;
     if (!E->nend && !E->nkink) continue;
     for (PetscInt i = 0; i < S->nb; ++i) {
@@ -764,6 +764,8 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
     ref.x    = Xs;
     mf.type  = M->type;
     mf.x     = xm;
+    mf2.type = M->type;
+    mf2.x    = xm2;
     for (PetscInt e = 0; e < E->nend; ++e) {
       const PetscInt face = E->mf[E->ends[e].m];
       ContactSurface3dFaceCoords(M, face, M->x, xm);
@@ -776,9 +778,6 @@ static PetscErrorCode Mortar3dHessianEnds(Mortar3d *m, const Mortar3dFace all[],
     }
     for (PetscInt e = 0; e < E->nkink; ++e) { /* the kink lines (edge points): the gradient's jump moving */
       const PetscInt face = E->mf[E->kinks[e].m];
-      Face3d         mf2;
-      mf2.type = M->type;
-      mf2.x    = xm2;
       ContactSurface3dFaceCoords(M, face, M->x, xm);
       ContactSurface3dFaceCoords(M, E->mf[E->kinks[e].m2], M->x, xm2);
       PetscCall(PetscArrayzero(K, n * n));
